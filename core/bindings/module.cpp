@@ -1,0 +1,42 @@
+// Module-level bindings: version and the cubic basis matrices. Mesh and curve bindings live
+// in their own translation units next to this one and follow boundary.h.
+#include "boundary.h"
+
+#include "wingspline/curves/basis_matrix.h"
+#include "wingspline/version.h"
+
+namespace wingspline::bindings {
+namespace {
+
+val core_version() { return val(std::string(wingspline::version())); }
+
+// basis_matrix(kind) -> {ok, matrix: Float64Array(16) row-major}
+val basis_matrix(const std::string& kind) {
+    return guarded([&] {
+        const auto m = curves::basis_matrix(curves::parse_basis_kind(kind));
+        val r = val::object();
+        r.set("matrix", to_typed_array(m.data(), m.size()));
+        return r;
+    });
+}
+
+// hermite_from_constraints() -> the inverse of the lecture's constraint matrix, computed.
+val hermite_from_constraints() {
+    return guarded([] {
+        const auto m = curves::inverse(curves::hermite_constraint_matrix());
+        const auto c = curves::hermite_constraint_matrix();
+        val r = val::object();
+        r.set("constraints", to_typed_array(c.data(), c.size()));
+        r.set("matrix", to_typed_array(m.data(), m.size()));
+        return r;
+    });
+}
+
+} // namespace
+} // namespace wingspline::bindings
+
+EMSCRIPTEN_BINDINGS(wingspline_module) {
+    emscripten::function("version", &wingspline::bindings::core_version);
+    emscripten::function("basisMatrix", &wingspline::bindings::basis_matrix);
+    emscripten::function("hermiteFromConstraints", &wingspline::bindings::hermite_from_constraints);
+}

@@ -1,0 +1,31 @@
+#pragma once
+// Basis matrices of the cubic families, exactly as on the slides (lectures 000, 002, 003):
+//   P(u) = [u^3 u^2 u 1] . M . G        (000, 003, 004: row-vector convention)
+//   Q(t) = G . M^T . T,  T = [t^3 t^2 t 1]^T  (001: the same matrix, transposed)
+// Matrices are row-major: m[4*row + col].
+#include <array>
+#include <string>
+
+namespace wingspline::curves {
+
+using Mat4 = std::array<double, 16>;
+
+enum class BasisKind { Hermite, Bezier, BSpline, CatmullRom };
+
+// Parses 'hermite' | 'bezier' | 'bspline' | 'catmull-rom'; throws Error("unknown-basis").
+BasisKind parse_basis_kind(const std::string& name);
+const char* basis_kind_name(BasisKind kind);
+
+// The slide's matrix for P(u) = [u^3 u^2 u 1] M G.
+Mat4 basis_matrix(BasisKind kind);
+
+// Lecture 000, Hermite derivation: the rows [u^3 u^2 u 1] at u = 0 and u = 1 and their
+// derivatives [3u^2 2u 1 0] at u = 0 and u = 1. M_Hermite is the inverse of this matrix.
+Mat4 hermite_constraint_matrix();
+
+Mat4 multiply(const Mat4& a, const Mat4& b);
+Mat4 transpose(const Mat4& m);
+// Throws Error("singular-matrix") when the matrix has no inverse.
+Mat4 inverse(const Mat4& m);
+
+} // namespace wingspline::curves

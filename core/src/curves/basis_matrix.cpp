@@ -1,0 +1,87 @@
+#include "wingspline/curves/basis_matrix.h"
+
+#include "wingspline/error.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <cmath>
+
+namespace wingspline::curves {
+
+BasisKind parse_basis_kind(const std::string& name) {
+    if (name == "hermite") return BasisKind::Hermite;
+    if (name == "bezier") return BasisKind::Bezier;
+    if (name == "bspline") return BasisKind::BSpline;
+    if (name == "catmull-rom") return BasisKind::CatmullRom;
+    throw Error("unknown-basis", "unknown basis '" + name +
+                                     "'; expected hermite, bezier, bspline or catmull-rom");
+}
+
+const char* basis_kind_name(BasisKind kind) {
+    switch (kind) {
+    case BasisKind::Hermite: return "hermite";
+    case BasisKind::Bezier: return "bezier";
+    case BasisKind::BSpline: return "bspline";
+    case BasisKind::CatmullRom: return "catmull-rom";
+    }
+    return "hermite";
+}
+
+Mat4 basis_matrix(BasisKind kind) {
+    switch (kind) {
+    case BasisKind::Hermite: // lecture 000: G = [p_k, p_k+1, t_k, t_k+1]
+        return {2, -2, 1, 1,  -3, 3, -2, -1,  0, 0, 1, 0,  1, 0, 0, 0};
+    case BasisKind::Bezier: // lecture 003: G = [P0 P1 P2 P3]
+        return {-1, 3, -3, 1,  3, -6, 3, 0,  -3, 3, 0, 0,  1, 0, 0, 0};
+    case BasisKind::BSpline: // lecture 003: (1/6) [-1 3 -3 1; 3 -6 3 0; -3 0 3 0; 1 4 1 0]
+        return {-1.0 / 6, 3.0 / 6, -3.0 / 6, 1.0 / 6,   3.0 / 6, -6.0 / 6, 3.0 / 6, 0,
+                -3.0 / 6, 0, 3.0 / 6, 0,                 1.0 / 6, 4.0 / 6, 1.0 / 6, 0};
+    case BasisKind::CatmullRom: // lecture 003: (1/2) [-1 3 -3 1; 2 -5 4 -1; -1 0 1 0; 0 2 0 0]
+        return {-0.5, 1.5, -1.5, 0.5,  1, -2.5, 2, -0.5,  -0.5, 0, 0.5, 0,  0, 1, 0, 0};
+    }
+    throw Error("unknown-basis", "unknown basis");
+}
+
+Mat4 hermite_constraint_matrix() {
+    return {0, 0, 0, 1,   // P(0)  = d
+            1, 1, 1, 1,   // P(1)  = a + b + c + d
+            0, 0, 1, 0,   // P'(0) = c
+            3, 2, 1, 0};  // P'(1) = 3a + 2b + c
+}
+
+Mat4 multiply(const Mat4& a, const Mat4& b) {
+    Mat4 r{};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            double s = 0;
+            for (int k = 0; k < 4; ++k) s += a[4 * i + k] * b[4 * k + j];
+            r[4 * i + j] = s;
+        }
+    return r;
+}
+
+Mat4 transpose(const Mat4& m) {
+    Mat4 r{};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) r[4 * j + i] = m[4 * i + j];
+    return r;
+}
+
+Mat4 inverse(const Mat4& m) {
+    // GLM is column-major: glm_m[col][row].
+    glm::dmat4 g;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) g[j][i] = m[4 * i + j];
+    const double det = glm::determinant(g);
+    double scale = 0;
+    for (double v : m) scale = std::max(scale, std::abs(v));
+    require(std::isfinite(det) && std::abs(det) > 1e-12 * std::pow(scale, 4), "singular-matrix",
+            "the matrix is singular (determinant " + std::to_string(det) + "), so it has no inverse");
+    const glm::dmat4 inv = glm::inverse(g);
+    Mat4 r{};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) r[4 * i + j] = inv[j][i];
+    return r;
+}
+
+} // namespace wingspline::curves

@@ -1,0 +1,86 @@
+// Builds everything incrementally (CMake decides what is stale):
+//   build/native  the core + Catch2 tests + native benchmark (g++)
+//   build/wasm    the core + bindings -> wingspline-core.{js,wasm} (em++)
+//   dist/         the static site: web/ plus the wasm module under dist/wasm/
+import fs from 'node:fs';
+import path from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { repoRoot, log, must } from './lib/run.mjs';
+import { writeServiceWorkerManifest } from './lib/site-manifest.mjs';
+
+const jobs = ['-j', '2'];
+
+async function cmakeBuild(dir, configure) {
+  const buildDir = path.join(repoRoot, 'build', dir);
+  if (!fs.existsSync(path.join(buildDir, 'CMakeCache.txt'))) {
+    log(`configuring build/${dir}`);
+    await configure(buildDir);
+  }
+  log(`building build/${dir}`);
+  await must('cmake', ['--build', buildDir, ...jobs]);
+}
+
+export async function buildNative({ sanitize = false } = {}) {
+  const dir = sanitize ? 'native-asan' : 'native';
+  await cmakeBuild(dir, (buildDir) => must('cmake', ['-S', repoRoot, '-B', buildDir,
+    '-DCMAKE_BUILD_TYPE=' + (sanitize ? 'Debug' : 'Release'),
+    ...(sanitize ? ['-DWINGSPLINE_SANITIZE=ON'] : [])]));
+}
+
+export async function buildWasm() {
+  await cmakeBuild('wasm', (buildDir) => must('emcmake',
+    ['cmake', '-S', repoRoot, '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release']));
+}
+
+// Copies src into dst where size or mtime differ; removes what src no longer has.
+function mirror(src, dst, keep = new Set()) {
+  fs.mkdirSync(dst, { recursive: true });
+  const wanted = new Set(fs.readdirSync(src));
+  for (const name of fs.readdirSync(dst)) {
+    if (!wanted.has(name) && !keep.has(name)) fs.rmSync(path.join(dst, name), { recursive: true, force: true });
+  }
+  for (const name of wanted) {
+    const from = path.join(src, name);
+    const to = path.join(dst, name);
+    const st = fs.statSync(from);
+    if (st.isDirectory()) {
+      mirror(from, to);
+    } else {
+      const old = fs.existsSync(to) ? fs.statSync(to) : null;
+      if (!old || old.size !== st.size || old.mtimeMs < st.mtimeMs) {
+        fs.copyFileSync(from, to);
+      }
+    }
+  }
+}
+
+export function assembleSite() {
+  const dist = path.join(repoRoot, 'dist');
+  mirror(path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.json']));
+  const wasmOut = path.join(dist, 'wasm');
+  fs.mkdirSync(wasmOut, { recursive: true });
+  for (const file of ['wingspline-core.js', 'wingspline-core.wasm']) {
+    const from = path.join(repoRoot, 'build', 'wasm', file);
+    const to = path.join(wasmOut, file);
+    const old = fs.existsSync(to) ? fs.statSync(to) : null;
+    const st = fs.statSync(from);
+    if (!old || old.size !== st.size || old.mtimeMs < st.mtimeMs) fs.copyFileSync(from, to);
+  }
+  writeServiceWorkerManifest(dist);
+}
+
+export async function build() {
+  await buildNative();
+  await buildWasm();
+  assembleSite();
+  log('site assembled in dist/');
+}
+
+if (import.meta.url === pathToFileURL(process.argv[1]).href) {
+  try {
+    await build();
+  } catch (err) {
+    process.stderr.write(`[wingspline] build failed: ${err.message}\n`);
+    process.exit(1);
+  }
+}

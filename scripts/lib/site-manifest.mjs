@@ -1,0 +1,29 @@
+// The service worker's precache list: every file of dist/ with a content hash, so a new
+// deployment (any changed byte) installs a new cache and an unchanged one costs nothing.
+import crypto from 'node:crypto';
+import fs from 'node:fs';
+import path from 'node:path';
+
+function listFiles(dir, base = dir) {
+  const out = [];
+  for (const entry of fs.readdirSync(dir, { withFileTypes: true })) {
+    const full = path.join(dir, entry.name);
+    if (entry.isDirectory()) out.push(...listFiles(full, base));
+    else out.push(path.relative(base, full).split(path.sep).join('/'));
+  }
+  return out;
+}
+
+export function writeServiceWorkerManifest(dist) {
+  const files = listFiles(dist).filter((f) => f !== 'sw-manifest.json' && f !== 'sw.js').sort();
+  const hash = crypto.createHash('sha256');
+  for (const f of files) {
+    hash.update(f);
+    hash.update(fs.readFileSync(path.join(dist, f)));
+  }
+  const manifest = { version: hash.digest('hex').slice(0, 16), files };
+  const target = path.join(dist, 'sw-manifest.json');
+  const text = JSON.stringify(manifest, null, 1) + '\n';
+  if (!fs.existsSync(target) || fs.readFileSync(target, 'utf8') !== text) fs.writeFileSync(target, text);
+  return manifest;
+}

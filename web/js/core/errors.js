@@ -1,0 +1,51 @@
+// Errors from the core arrive as plain {ok:false, code, message} values; this module turns
+// them into Error objects with a stable `code`, and checks arguments before they reach
+// embind (which would silently turn a string into NaN).
+
+export class WingsplineError extends Error {
+  constructor(code, message, details = undefined) {
+    super(message);
+    this.name = 'WingsplineError';
+    this.code = code;
+    if (details !== undefined) this.details = details;
+  }
+}
+
+// Returns the result object when ok, throws a WingsplineError otherwise.
+export function unwrap(result) {
+  if (result && result.ok) return result;
+  const code = result?.code ?? 'internal-error';
+  const message = result?.message ?? 'the core returned no result';
+  throw new WingsplineError(code, message, result?.details);
+}
+
+export function fail(code, message) {
+  throw new WingsplineError(code, message);
+}
+
+export function isNumberArray(value) {
+  return ArrayBuffer.isView(value) && !(value instanceof DataView)
+    ? true
+    : Array.isArray(value) && value.every((x) => typeof x === 'number');
+}
+
+// A Float64Array copy of `value` (an array of numbers or a typed array), with every entry
+// finite; otherwise throws `code` naming the first bad entry.
+export function finiteArray(value, what, { code = 'invalid-argument', stride = 1 } = {}) {
+  if (!isNumberArray(value)) fail('invalid-argument', `${what} must be an array of numbers`);
+  const out = Float64Array.from(value);
+  for (let i = 0; i < out.length; i += 1) {
+    if (!Number.isFinite(out[i])) {
+      const where = stride > 1 ? `entry ${i} (item ${Math.floor(i / stride)}, component ${i % stride})` : `entry ${i}`;
+      fail(code, `${what} has a value that is not a finite number at ${where}: ${out[i]}`);
+    }
+  }
+  return out;
+}
+
+export function integerIn(value, what, min, max) {
+  if (!Number.isInteger(value) || value < min || value > max) {
+    fail('invalid-argument', `${what} must be a whole number from ${min} to ${max}, not ${String(value).slice(0, 40)}`);
+  }
+  return value;
+}

@@ -1,0 +1,54 @@
+// The one JavaScript entry to the Wingspline core: `import { loadWingspline } from
+// 'wingspline'` in Node, `import { loadWingspline } from './js/core/wingspline.js'` in a
+// page. It loads the wasm module once and returns a plain API object; the raw embind
+// names stay private to this folder.
+import createWingsplineCore from '../../wasm/wingspline-core.js';
+import { unwrap } from './errors.js';
+import { createMeshApi } from './mesh-api.js';
+import { createCurvesApi } from './curves-api.js';
+
+export { WingsplineError } from './errors.js';
+
+let loading = null;
+
+const isNode = typeof process !== 'undefined' && !!process.versions?.node && typeof window === 'undefined';
+
+async function instantiate() {
+  const options = {};
+  if (isNode) {
+    // Emscripten 3.1.6's glue would call Node's fetch() on a file path; hand it the bytes.
+    const { readFile } = await import('node:fs/promises');
+    options.wasmBinary = await readFile(new URL('../../wasm/wingspline-core.wasm', import.meta.url));
+  }
+  return createWingsplineCore(options);
+}
+
+function createApi(raw) {
+  const version = raw.version();
+  return Object.freeze({
+    version,
+    // The row-major 4x4 basis matrix M of P(u) = [u^3 u^2 u 1] M G (lectures 000, 003).
+    basisMatrix(kind) {
+      if (typeof kind !== 'string') return unwrap(raw.basisMatrix(String(kind))).matrix;
+      return unwrap(raw.basisMatrix(kind)).matrix;
+    },
+    // Lecture 000's Hermite derivation, computed: the constraint matrix and its inverse.
+    hermiteFromConstraints() {
+      const r = unwrap(raw.hermiteFromConstraints());
+      return { constraints: r.constraints, matrix: r.matrix };
+    },
+    ...createMeshApi(raw),
+    ...createCurvesApi(raw),
+  });
+}
+
+// Resolves to the API object; every call after the first returns the same object.
+export function loadWingspline() {
+  if (!loading) {
+    loading = instantiate().then(createApi).catch((err) => {
+      loading = null;
+      throw err;
+    });
+  }
+  return loading;
+}

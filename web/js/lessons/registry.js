@@ -1,0 +1,44 @@
+// The lesson registry: every lesson page the site has, in course order. The landing page
+// lists them; a lesson whose page is not built yet is shown as "coming".
+export const lessons = [
+  {
+    id: 'mesh',
+    title: 'Mesh representations',
+    page: 'mesh.html',
+    lectures: '000, 001, 003',
+    summary: 'Independent faces, vertex and face tables, adjacency lists, edge lists and the winged edge; watch the CCW traversal around a vertex.',
+    ready: false,
+  },
+  {
+    id: 'curves',
+    title: 'Curve explorer',
+    page: 'curves.html',
+    lectures: '000 to 004',
+    summary: 'Hermite, Bezier, B-splines, NURBS and Catmull-Rom: drag control points, watch the blending functions, the matrices and de Casteljau.',
+    ready: false,
+  },
+  {
+    id: 'continuity',
+    title: 'Continuity lab',
+    page: 'continuity.html',
+    lectures: '000, 001, 002, 004',
+    summary: 'C0, C1, C2 against G1, G2, measured at every joint of a piecewise curve.',
+    ready: false,
+  },
+  {
+    id: 'comparison',
+    title: 'Comparison lab',
+    page: 'comparison.html',
+    lectures: '001, 002, 003',
+    summary: 'One control polygon under several curve families; the comparison tables checked live; basis conversion.',
+    ready: false,
+  },
+  {
+    id: 'surfaces',
+    title: 'Surface patches',
+    page: 'surfaces.html',
+    lectures: '002',
+    summary: 'Bicubic Hermite and Bezier patches with their control nets and twist vectors.',
+    ready: false,
+  },
+];

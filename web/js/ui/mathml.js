@@ -1,0 +1,46 @@
+// MathML built with DOM calls (never from strings), so numbers and names are always text.
+const NS = 'http://www.w3.org/1998/Math/MathML';
+
+export function el(tag, ...children) {
+  const node = document.createElementNS(NS, tag);
+  for (const child of children) {
+    node.append(typeof child === 'string' ? document.createTextNode(child) : child);
+  }
+  return node;
+}
+
+export const mi = (text) => el('mi', text);
+export const mo = (text) => el('mo', text);
+export const mn = (text) => el('mn', text);
+
+// Formats a number for display: integers plainly, others with up to `digits` significant
+// digits, and -0 as 0.
+export function formatNumber(x, digits = 4) {
+  if (Object.is(x, -0) || Math.abs(x) < 1e-12) return '0';
+  if (Number.isInteger(x)) return String(x);
+  return String(Number(x.toPrecision(digits)));
+}
+
+// A bracketed matrix; `rows` is an array of arrays of numbers or strings.
+export function matrix(rows, { digits = 4 } = {}) {
+  const table = el('mtable');
+  for (const row of rows) {
+    const tr = el('mtr');
+    for (const cell of row) {
+      tr.append(el('mtd', typeof cell === 'number' ? mn(formatNumber(cell, digits)) : mi(String(cell))));
+    }
+    table.append(tr);
+  }
+  return el('mrow', mo('['), table, mo(']'));
+}
+
+export function math(...children) {
+  const node = el('math', ...children);
+  node.setAttribute('display', 'block');
+  return node;
+}
+
+// Splits a row-major 4x4 Float64Array into rows.
+export function rows4(m) {
+  return [0, 1, 2, 3].map((r) => Array.from(m.slice(4 * r, 4 * r + 4)));
+}
