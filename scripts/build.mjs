@@ -56,7 +56,7 @@ function mirror(src, dst, keep = new Set()) {
 
 export function assembleSite() {
   const dist = path.join(repoRoot, 'dist');
-  mirror(path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.json']));
+  mirror(path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.js']));
   const wasmOut = path.join(dist, 'wasm');
   fs.mkdirSync(wasmOut, { recursive: true });
   for (const file of ['wingspline-core.js', 'wingspline-core.wasm']) {

@@ -1,0 +1,98 @@
+// Keyboard map of a page: the lesson and the shell register actions; one listener runs
+// them; `?` opens a dialog that lists them (built from the same registry, so the list is
+// always right). Keys typed into a form field are left to the field.
+
+export function createKeymap() {
+  const bindings = [];
+  let dialog = null;
+
+  function describeKey(k) {
+    return k.replace('ArrowRight', '→').replace('ArrowLeft', '←').replace('ArrowUp', '↑').replace('ArrowDown', '↓')
+      .replace(' ', 'Space');
+  }
+
+  function matches(binding, event) {
+    return binding.keys.some((k) => {
+      const parts = k.split('+');
+      const key = parts.pop();
+      const want = new Set(parts);
+      if (want.has('Ctrl') !== (event.ctrlKey || event.metaKey)) return false;
+      if (want.has('Shift') && !event.shiftKey) return false;
+      if (want.has('Alt') !== event.altKey) return false;
+      return event.key === key || event.key.toLowerCase() === key.toLowerCase() && key.length === 1;
+    });
+  }
+
+  function onKeyDown(event) {
+    const target = event.target;
+    if (target instanceof HTMLElement && (target.isContentEditable || ['INPUT', 'TEXTAREA', 'SELECT'].includes(target.tagName))) {
+      if (event.key !== 'Escape') return;
+    }
+    // Buttons keep Space and Enter for themselves.
+    if (target instanceof HTMLButtonElement && (event.key === ' ' || event.key === 'Enter')) return;
+    for (const b of bindings) {
+      if (!b.action || (b.when && !b.when(event))) continue;
+      if (matches(b, event)) {
+        event.preventDefault();
+        b.action(event);
+        return;
+      }
+    }
+  }
+
+  function showDialog() {
+    if (!dialog) {
+      dialog = document.createElement('dialog');
+      dialog.className = 'keymap-dialog';
+      dialog.setAttribute('aria-labelledby', 'keymap-title');
+      document.body.append(dialog);
+    }
+    const groups = new Map();
+    for (const b of bindings) {
+      if (!b.label) continue;
+      if (!groups.has(b.group)) groups.set(b.group, []);
+      groups.get(b.group).push(b);
+    }
+    const title = document.createElement('h2');
+    title.id = 'keymap-title';
+    title.textContent = 'Keyboard';
+    const content = [title];
+    for (const [group, list] of groups) {
+      const h3 = document.createElement('h3');
+      h3.textContent = group;
+      const dl = document.createElement('dl');
+      for (const b of list) {
+        const dt = document.createElement('dt');
+        for (const k of b.keys) {
+          const kbd = document.createElement('kbd');
+          kbd.textContent = describeKey(k);
+          dt.append(kbd, ' ');
+        }
+        const dd = document.createElement('dd');
+        dd.textContent = b.label;
+        dl.append(dt, dd);
+      }
+      content.push(h3, dl);
+    }
+    const close = document.createElement('button');
+    close.type = 'button';
+    close.textContent = 'Close';
+    close.addEventListener('click', () => dialog.close());
+    content.push(close);
+    dialog.replaceChildren(...content);
+    if (!dialog.open) dialog.showModal();
+    close.focus();
+  }
+
+  document.addEventListener('keydown', onKeyDown);
+
+  return {
+    // keys: ['ArrowRight', 'PageDown'], label shown in the `?` dialog, group heading.
+    // Without an action the entry is only listed (keys another element handles).
+    add({ keys, label, action, group = 'Lesson', when }) {
+      bindings.push({ keys, label, action, group, when });
+    },
+    showDialog,
+    list: () => bindings.map(({ keys, label, group }) => ({ keys, label, group })),
+  };
+}

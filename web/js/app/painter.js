@@ -1,0 +1,216 @@
+// Drawing without mathematics: a painter draws what the core computed, in world
+// coordinates, through a view transform. Two painters share one interface, so a lesson's
+// draw() makes both the canvas picture and the exported SVG figure:
+//   clear(), line(ax,ay,bx,by,style), polyline(xy, style, stride=2), polygon(xy, style,
+//   stride=2), circle(x,y,radiusPx,style), text(x,y,string,style), arrow(ax,ay,bx,by,style)
+// `xy` is a flat array (x0, y0, x1, y1, ...) with the given stride (2 or 3: z ignored).
+// style: { stroke, fill, width (px), dash ([px]), font (px size), align, baseline, alpha }
+
+export class Transform {
+  // world (x, y) -> screen (cssX, cssY): y up in the world, down on screen.
+  constructor({ cx = 0, cy = 0, zoom = 100, width = 800, height = 600 } = {}) {
+    Object.assign(this, { cx, cy, zoom, width, height });
+  }
+  toScreen(x, y) { return [this.width / 2 + (x - this.cx) * this.zoom, this.height / 2 - (y - this.cy) * this.zoom]; }
+  toWorld(sx, sy) { return [this.cx + (sx - this.width / 2) / this.zoom, this.cy - (sy - this.height / 2) / this.zoom]; }
+}
+
+export class CanvasPainter {
+  constructor(ctx2d, transform, { scale = 1, background = '#fff' } = {}) {
+    this.g = ctx2d;
+    this.t = transform;
+    this.scale = scale; // presentation mode draws thicker lines and bigger handles
+    this.background = background;
+  }
+
+  #apply(style) {
+    const g = this.g;
+    g.globalAlpha = style.alpha ?? 1;
+    g.lineWidth = (style.width ?? 1.5) * this.scale;
+    g.setLineDash((style.dash ?? []).map((d) => d * this.scale));
+    g.lineJoin = 'round';
+    g.lineCap = 'round';
+    if (style.stroke) g.strokeStyle = style.stroke;
+    if (style.fill) g.fillStyle = style.fill;
+  }
+
+  #finish(style) {
+    if (style.fill) this.g.fill();
+    if (style.stroke) this.g.stroke();
+    this.g.globalAlpha = 1;
+  }
+
+  clear() {
+    const g = this.g;
+    g.save();
+    g.setTransform(1, 0, 0, 1, 0, 0);
+    g.fillStyle = this.background;
+    g.fillRect(0, 0, g.canvas.width, g.canvas.height);
+    g.restore();
+  }
+
+  line(ax, ay, bx, by, style = {}) {
+    const [x0, y0] = this.t.toScreen(ax, ay);
+    const [x1, y1] = this.t.toScreen(bx, by);
+    this.g.beginPath();
+    this.g.moveTo(x0, y0);
+    this.g.lineTo(x1, y1);
+    this.#apply({ stroke: '#000', ...style, fill: undefined });
+    this.#finish({ stroke: style.stroke ?? '#000' });
+  }
+
+  #path(xy, stride, close) {
+    const g = this.g;
+    g.beginPath();
+    for (let i = 0; i + 1 < xy.length; i += stride) {
+      const [sx, sy] = this.t.toScreen(xy[i], xy[i + 1]);
+      if (i === 0) g.moveTo(sx, sy); else g.lineTo(sx, sy);
+    }
+    if (close) g.closePath();
+  }
+
+  polyline(xy, style = {}, stride = 2) {
+    this.#path(xy, stride, false);
+    this.#apply(style);
+    this.#finish({ stroke: style.stroke ?? '#000' });
+  }
+
+  polygon(xy, style = {}, stride = 2) {
+    this.#path(xy, stride, true);
+    this.#apply(style);
+    this.#finish(style);
+  }
+
+  circle(x, y, radiusPx, style = {}) {
+    const [sx, sy] = this.t.toScreen(x, y);
+    this.g.beginPath();
+    this.g.arc(sx, sy, radiusPx * this.scale, 0, Math.PI * 2);
+    this.#apply(style);
+    this.#finish(style);
+  }
+
+  text(x, y, string, style = {}) {
+    const [sx, sy] = this.t.toScreen(x, y);
+    const g = this.g;
+    g.font = `${style.weight ?? 500} ${(style.font ?? 14) * this.scale}px system-ui, "DejaVu Sans", sans-serif`;
+    g.textAlign = style.align ?? 'center';
+    g.textBaseline = style.baseline ?? 'middle';
+    g.globalAlpha = style.alpha ?? 1;
+    const dx = (style.dx ?? 0) * this.scale;
+    const dy = (style.dy ?? 0) * this.scale;
+    if (style.halo) {
+      g.lineWidth = 4 * this.scale;
+      g.strokeStyle = style.halo;
+      g.lineJoin = 'round';
+      g.setLineDash([]);
+      g.strokeText(string, sx + dx, sy + dy);
+    }
+    g.fillStyle = style.fill ?? '#000';
+    g.fillText(string, sx + dx, sy + dy);
+    g.globalAlpha = 1;
+  }
+
+  arrow(ax, ay, bx, by, style = {}) {
+    this.line(ax, ay, bx, by, style);
+    const [x0, y0] = this.t.toScreen(ax, ay);
+    const [x1, y1] = this.t.toScreen(bx, by);
+    const len = Math.hypot(x1 - x0, y1 - y0);
+    if (len < 1e-9) return;
+    const head = Math.min(12 * this.scale, len * 0.4);
+    const ux = (x1 - x0) / len;
+    const uy = (y1 - y0) / len;
+    const g = this.g;
+    g.beginPath();
+    g.moveTo(x1, y1);
+    g.lineTo(x1 - head * ux + head * 0.45 * uy, y1 - head * uy - head * 0.45 * ux);
+    g.lineTo(x1 - head * ux - head * 0.45 * uy, y1 - head * uy + head * 0.45 * ux);
+    g.closePath();
+    g.globalAlpha = style.alpha ?? 1;
+    g.fillStyle = style.stroke ?? '#000';
+    g.fill();
+    g.globalAlpha = 1;
+  }
+}
+
+const svgNumber = (x) => (Math.round(x * 100) / 100).toString();
+const escapeXml = (s) => String(s).replace(/[<>&"']/g, (c) => ({ '<': '&lt;', '>': '&gt;', '&': '&amp;', '"': '&quot;', "'": '&apos;' })[c]);
+
+// Builds an SVG document as text. Every user-visible string goes through escapeXml, so a
+// label from a file cannot become markup.
+export class SvgPainter {
+  constructor(transform, { scale = 1, background = '#fff' } = {}) {
+    this.t = transform;
+    this.scale = scale;
+    this.background = background;
+    this.parts = [];
+  }
+
+  #style(style, { fill = 'none' } = {}) {
+    const attrs = [];
+    attrs.push(`fill="${escapeXml(style.fill ?? fill)}"`);
+    if (style.stroke) attrs.push(`stroke="${escapeXml(style.stroke)}"`, `stroke-width="${svgNumber((style.width ?? 1.5) * this.scale)}"`,
+      'stroke-linecap="round"', 'stroke-linejoin="round"');
+    if (style.dash?.length) attrs.push(`stroke-dasharray="${style.dash.map((d) => svgNumber(d * this.scale)).join(' ')}"`);
+    if (style.alpha !== undefined) attrs.push(`opacity="${svgNumber(style.alpha)}"`);
+    return attrs.join(' ');
+  }
+
+  #points(xy, stride) {
+    const out = [];
+    for (let i = 0; i + 1 < xy.length; i += stride) out.push(this.t.toScreen(xy[i], xy[i + 1]).map(svgNumber).join(','));
+    return out.join(' ');
+  }
+
+  clear() {
+    this.parts = [`<rect width="100%" height="100%" fill="${escapeXml(this.background)}"/>`];
+  }
+
+  line(ax, ay, bx, by, style = {}) {
+    const [x0, y0] = this.t.toScreen(ax, ay);
+    const [x1, y1] = this.t.toScreen(bx, by);
+    this.parts.push(`<line x1="${svgNumber(x0)}" y1="${svgNumber(y0)}" x2="${svgNumber(x1)}" y2="${svgNumber(y1)}" ${this.#style({ stroke: '#000', ...style, fill: undefined })}/>`);
+  }
+
+  polyline(xy, style = {}, stride = 2) {
+    this.parts.push(`<polyline points="${this.#points(xy, stride)}" ${this.#style({ stroke: '#000', ...style })}/>`);
+  }
+
+  polygon(xy, style = {}, stride = 2) {
+    this.parts.push(`<polygon points="${this.#points(xy, stride)}" ${this.#style(style)}/>`);
+  }
+
+  circle(x, y, radiusPx, style = {}) {
+    const [sx, sy] = this.t.toScreen(x, y);
+    this.parts.push(`<circle cx="${svgNumber(sx)}" cy="${svgNumber(sy)}" r="${svgNumber(radiusPx * this.scale)}" ${this.#style(style)}/>`);
+  }
+
+  text(x, y, string, style = {}) {
+    const [sx, sy] = this.t.toScreen(x, y);
+    const anchor = { left: 'start', right: 'end', center: 'middle', start: 'start', end: 'end' }[style.align ?? 'center'];
+    const baseline = { top: 'hanging', middle: 'central', bottom: 'text-after-edge', alphabetic: 'alphabetic' }[style.baseline ?? 'middle'];
+    const dx = (style.dx ?? 0) * this.scale;
+    const dy = (style.dy ?? 0) * this.scale;
+    const halo = style.halo ? ` stroke="${escapeXml(style.halo)}" stroke-width="${svgNumber(4 * this.scale)}" paint-order="stroke"` : '';
+    this.parts.push(`<text x="${svgNumber(sx + dx)}" y="${svgNumber(sy + dy)}" font-family="system-ui, sans-serif" font-size="${svgNumber((style.font ?? 14) * this.scale)}" font-weight="${style.weight ?? 500}" text-anchor="${anchor}" dominant-baseline="${baseline}" fill="${escapeXml(style.fill ?? '#000')}"${halo}>${escapeXml(string)}</text>`);
+  }
+
+  arrow(ax, ay, bx, by, style = {}) {
+    this.line(ax, ay, bx, by, style);
+    const [x0, y0] = this.t.toScreen(ax, ay);
+    const [x1, y1] = this.t.toScreen(bx, by);
+    const len = Math.hypot(x1 - x0, y1 - y0);
+    if (len < 1e-9) return;
+    const head = Math.min(12 * this.scale, len * 0.4);
+    const ux = (x1 - x0) / len;
+    const uy = (y1 - y0) / len;
+    const pts = [[x1, y1], [x1 - head * ux + head * 0.45 * uy, y1 - head * uy - head * 0.45 * ux],
+      [x1 - head * ux - head * 0.45 * uy, y1 - head * uy + head * 0.45 * ux]];
+    this.parts.push(`<polygon points="${pts.map((p) => p.map(svgNumber).join(',')).join(' ')}" fill="${escapeXml(style.stroke ?? '#000')}"/>`);
+  }
+
+  toString() {
+    const w = svgNumber(this.t.width);
+    const h = svgNumber(this.t.height);
+    return `<?xml version="1.0" encoding="UTF-8"?>\n<svg xmlns="http://www.w3.org/2000/svg" width="${w}" height="${h}" viewBox="0 0 ${w} ${h}">\n${this.parts.join('\n')}\n</svg>\n`;
+  }
+}

@@ -1,0 +1,92 @@
+// Validators for lesson state read from a share link, local storage or an imported file.
+// Each validator takes (value, path) and returns the clean value or throws a SchemaError
+// naming the path ("points[3].x is not a number"). Nothing from outside is used unchecked.
+
+export class SchemaError extends Error {
+  constructor(path, message) {
+    super(`${path || 'state'} ${message}`);
+    this.path = path;
+  }
+}
+
+const describe = (v) => {
+  if (typeof v === 'string') return `the text "${v.length > 24 ? v.slice(0, 24) + '…' : v}"`;
+  if (Array.isArray(v)) return `a list of ${v.length}`;
+  if (v === null) return 'null';
+  return typeof v === 'object' ? 'an object' : String(v);
+};
+
+export const number = ({ min = -1e9, max = 1e9 } = {}) => (v, path) => {
+  if (typeof v !== 'number' || !Number.isFinite(v)) throw new SchemaError(path, `must be a finite number, not ${describe(v)}`);
+  if (v < min || v > max) throw new SchemaError(path, `must be between ${min} and ${max}, not ${v}`);
+  return v;
+};
+
+export const integer = ({ min = 0, max = 1e6 } = {}) => (v, path) => {
+  if (!Number.isInteger(v)) throw new SchemaError(path, `must be a whole number, not ${describe(v)}`);
+  if (v < min || v > max) throw new SchemaError(path, `must be between ${min} and ${max}, not ${v}`);
+  return v;
+};
+
+export const boolean = () => (v, path) => {
+  if (typeof v !== 'boolean') throw new SchemaError(path, `must be true or false, not ${describe(v)}`);
+  return v;
+};
+
+export const oneOf = (...choices) => (v, path) => {
+  if (!choices.includes(v)) throw new SchemaError(path, `must be one of ${choices.join(', ')}, not ${describe(v)}`);
+  return v;
+};
+
+export const text = ({ maxLength = 200 } = {}) => (v, path) => {
+  if (typeof v !== 'string') throw new SchemaError(path, `must be text, not ${describe(v)}`);
+  if (v.length > maxLength) throw new SchemaError(path, `is longer than ${maxLength} characters`);
+  return v;
+};
+
+export const list = (item, { min = 0, max = 10000 } = {}) => (v, path) => {
+  if (!Array.isArray(v)) throw new SchemaError(path, `must be a list, not ${describe(v)}`);
+  if (v.length < min || v.length > max) throw new SchemaError(path, `must have ${min} to ${max} entries, not ${v.length}`);
+  return v.map((x, i) => item(x, `${path}[${i}]`));
+};
+
+// A fixed-shape object. Unknown keys are dropped; missing keys take `defaults[key]` when given.
+export const object = (shape, { optional = [] } = {}) => (v, path) => {
+  if (v === null || typeof v !== 'object' || Array.isArray(v)) throw new SchemaError(path, `must be an object, not ${describe(v)}`);
+  const out = {};
+  for (const [key, check] of Object.entries(shape)) {
+    const sub = path ? `${path}.${key}` : key;
+    if (!Object.prototype.hasOwnProperty.call(v, key)) {
+      if (optional.includes(key)) continue;
+      throw new SchemaError(sub, 'is missing');
+    }
+    out[key] = check(v[key], sub);
+  }
+  return out;
+};
+
+export const nullable = (inner) => (v, path) => (v === null ? null : inner(v, path));
+
+// Validates `raw` field by field against an object shape; a field that fails falls back to
+// the default's value and is reported, so a partly damaged link keeps its valid part.
+export function validatePartial(shape, raw, defaults) {
+  const problems = [];
+  if (raw === null || typeof raw !== 'object' || Array.isArray(raw)) {
+    return { state: structuredClone(defaults), problems: ['the state is not an object'] };
+  }
+  const state = {};
+  for (const [key, check] of Object.entries(shape)) {
+    if (!Object.prototype.hasOwnProperty.call(raw, key)) {
+      state[key] = structuredClone(defaults[key]);
+      continue;
+    }
+    try {
+      state[key] = check(raw[key], key);
+    } catch (err) {
+      if (!(err instanceof SchemaError)) throw err;
+      problems.push(err.message);
+      state[key] = structuredClone(defaults[key]);
+    }
+  }
+  return { state, problems };
+}

@@ -1,0 +1,86 @@
+// The lesson state as text: a versioned envelope {format, lesson, version, state}, written
+// as JSON (numbers round-trip exactly: JSON keeps the shortest text that reads back to the
+// same double), compressed with deflate-raw and base64url-encoded into the URL fragment
+// (#s=...), so a static host never sees it and the link stays short.
+// Reading goes: decode -> parse -> check the envelope -> migrate older versions -> validate
+// field by field. Every failure becomes one sentence for the message line.
+import { validatePartial } from './schema.js';
+
+export const FORMAT = 'wingspline';
+export const MAX_LINK_CHARS = 200000;
+
+function toBase64Url(bytes) {
+  let binary = '';
+  for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+  return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+
+function fromBase64Url(text) {
+  if (!/^[A-Za-z0-9_-]*$/.test(text)) throw new Error('it contains characters a share link never has');
+  const padded = text.replace(/-/g, '+').replace(/_/g, '/') + '='.repeat((4 - (text.length % 4)) % 4);
+  const binary = atob(padded);
+  const bytes = new Uint8Array(binary.length);
+  for (let i = 0; i < binary.length; i += 1) bytes[i] = binary.charCodeAt(i);
+  return bytes;
+}
+
+async function pipe(bytes, stream) {
+  const out = new Response(new Blob([bytes]).stream().pipeThrough(stream));
+  return new Uint8Array(await out.arrayBuffer());
+}
+
+export function envelope(lesson, state) {
+  return { format: FORMAT, lesson: lesson.id, version: lesson.stateVersion, state };
+}
+
+export async function encodeState(lesson, state) {
+  const json = JSON.stringify(envelope(lesson, state));
+  return toBase64Url(await pipe(new TextEncoder().encode(json), new CompressionStream('deflate-raw')));
+}
+
+// Checks and upgrades a parsed envelope. Returns { state, problems } (problems: sentences);
+// throws an Error whose message is one sentence when nothing of it can be used.
+export function readEnvelope(lesson, data) {
+  if (data === null || typeof data !== 'object' || Array.isArray(data)) throw new Error('it does not hold a lesson state');
+  if (data.format !== FORMAT) throw new Error('it is not a Wingspline state');
+  if (data.lesson !== lesson.id) {
+    throw new Error(`it belongs to the ${String(data.lesson).slice(0, 40)} lesson, not to ${lesson.title}`);
+  }
+  let { version, state } = data;
+  if (!Number.isInteger(version) || version < 1) throw new Error('its version number is missing or wrong');
+  if (version > lesson.stateVersion) {
+    throw new Error(`it was made by a newer Wingspline (state version ${version}; this page reads up to ${lesson.stateVersion})`);
+  }
+  // Older links keep working: apply each migration from their version up to ours.
+  for (; version < lesson.stateVersion; version += 1) {
+    const migrate = lesson.migrations?.[version];
+    if (!migrate) throw new Error(`state version ${version} can no longer be read`);
+    state = migrate(state);
+  }
+  const defaults = lesson.defaultState();
+  const result = validatePartial(lesson.schema, state, defaults);
+  if (result.problems.length === 0 && lesson.checkState) {
+    // Cross-field rules the per-field schema cannot express (knot count vs points...).
+    const problem = lesson.checkState(result.state);
+    if (problem) return { state: defaults, problems: [problem] };
+  }
+  return result;
+}
+
+export async function decodeState(lesson, text) {
+  if (typeof text !== 'string' || text.length === 0) throw new Error('it is empty');
+  if (text.length > MAX_LINK_CHARS) throw new Error('it is far longer than any lesson state');
+  let json;
+  try {
+    json = new TextDecoder('utf-8', { fatal: true }).decode(await pipe(fromBase64Url(text), new DecompressionStream('deflate-raw')));
+  } catch (err) {
+    throw new Error(err.message.startsWith('it ') ? err.message : 'it is truncated or damaged (it does not decompress)');
+  }
+  let data;
+  try {
+    data = JSON.parse(json);
+  } catch {
+    throw new Error('it is damaged (its contents are not valid JSON)');
+  }
+  return readEnvelope(lesson, data);
+}
