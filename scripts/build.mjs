@@ -76,7 +76,7 @@ export async function build() {
   log('site assembled in dist/');
 }
 
-if (import.meta.url === pathToFileURL(process.argv[1]).href) {
+if (process.argv[1] && import.meta.url === pathToFileURL(process.argv[1]).href) {
   try {
     await build();
   } catch (err) {

@@ -80,7 +80,7 @@ export async function setup() {
   }
 }
 
-if (import.meta.url === pathToFileURL(process.argv[1]).href) {
+if (process.argv[1] && import.meta.url === pathToFileURL(process.argv[1]).href) {
   await setup();
   log('setup complete: every Debian and npm package is present');
 }
