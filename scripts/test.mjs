@@ -2,7 +2,9 @@
 //   native   Catch2 through CTest (build/native)
 //   wasm     node --test tests/wasm   (the JS API over the wasm module)
 //   browser  node --test tests/browser (playwright-core + Debian's Chromium)
-// Further layers (sanitizers, fuzzing) are added in scripts/lib/test-layers.mjs.
+//   asan     the native suite again under ASan + UBSan (build/native-asan, built by the layer)
+//   fuzz     libFuzzer targets, a few seconds each (build/fuzz, clang++-14, built by the layer)
+// The layers are listed in scripts/lib/test-layers.mjs.
 import { setup } from './setup.mjs';
 import { build } from './build.mjs';
 import { log } from './lib/run.mjs';
