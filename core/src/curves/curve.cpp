@@ -130,6 +130,7 @@ void validate(const Curve& c) {
             "points has " + std::to_string(c.points.size()) + " numbers, which is not a multiple of dim = " +
                 std::to_string(c.dim));
     require_finite(c.points, "point", c.dim);
+    require(c.degree >= 0, "degree-out-of-range", "the degree must be from 1 to " + std::to_string(kMaxDegree) + ", not " + std::to_string(c.degree));
     const int K = control_point_count(c);
     const std::string kind = curve_kind_name(c.kind);
     auto need_points = [&](int n, const std::string& why) {

@@ -47,7 +47,7 @@ double to_number(const std::string& token, int line, const std::string& what) {
     errno = 0;
     char* end = nullptr;
     const double x = std::strtod(token.c_str(), &end);
-    if (end == token.c_str() || *end != '\0') throw ParseError("parse-error", line, "expected " + what + ", found " + quoted(token));
+    if (end == token.c_str() || end != token.c_str() + token.size()) throw ParseError("parse-error", line, "expected " + what + ", found " + quoted(token));
     return x;
 }
 
@@ -55,7 +55,7 @@ long to_integer(const std::string& token, int line, const std::string& what) {
     errno = 0;
     char* end = nullptr;
     const long x = std::strtol(token.c_str(), &end, 10);
-    if (end == token.c_str() || *end != '\0' || errno == ERANGE || x > 2147483647L || x < -2147483647L)
+    if (end == token.c_str() || end != token.c_str() + token.size() || errno == ERANGE || x > 2147483647L || x < -2147483647L)
         throw ParseError("parse-error", line, "expected " + what + ", found " + quoted(token));
     return x;
 }
