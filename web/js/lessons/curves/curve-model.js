@@ -7,7 +7,9 @@ import { convexHull } from './hull.js';
 
 export const SAMPLES_PER_CURVE = 1000;
 const COMB_SAMPLES = 120;
-const PLOT_PARAMS = 400;
+// One blending call serves the plot and the influence tint (the tint maps each curve sample
+// to the plot parameter at the same fraction of the domain; both are uniform in u).
+const PLOT_PARAMS = 250;
 
 // The parameters t_j = a + (b - a) j/(n-1): uniform in the parameter, as the lecture
 // samples a curve (the sample-points overlay shows how uneven that is along the curve).
@@ -30,9 +32,7 @@ function curvePart(api, state, spec) {
   const curve = api.evaluateCurve(spec, params);
   const plotParams = uniformParams(domain.start, domain.end, PLOT_PARAMS);
   const blending = api.blendingFunctions(spec, plotParams);
-  // The influence tint needs each point's weight at every curve sample.
-  const influence = api.blendingFunctions(spec, params);
-  const value = { domain, params, curve, plotParams, blending, influence };
+  const value = { domain, params, curve, plotParams, blending };
   cache = { key, value };
   return value;
 }
@@ -59,7 +59,6 @@ export function computeCurveModel(api, state) {
     samples: part.curve,
     params: part.params,
     plot: { params: part.plotParams, count: part.blending.count, values: part.blending.values },
-    influence: part.influence,
     point: [point[0], point[1]],
     d1: [d1[0], d1[1]],
     d2: [d2[0], d2[1]],
@@ -87,7 +86,7 @@ export function computeCurveModel(api, state) {
     model.joints = { params: joints, positions: api.evaluateCurve(spec, joints) };
   }
 
-  if (state.overlays.comb) model.comb = curvatureComb(api, spec, domain);
+  if (state.overlays.comb && typeof api.curvature === 'function') model.comb = curvatureComb(api, spec, domain);
   if (state.family === 'interpolation' && state.compare) model.compare = interpolatingSpline(api, state);
   if (state.family === 'nurbs') model.homogeneous = homogeneousView(api, state, spec, part, u);
   model.construction = construction(api, state, spec, u, degree);
@@ -170,7 +169,7 @@ function homogeneousView(api, state, spec, part, u) {
 // The construction being shown: computed whole, drawn up to the current step.
 function construction(api, state, spec, u, degree) {
   const c = state.construction;
-  if (c.kind === 'none') return null;
+  if (c.kind === 'none' || !constructionsFor(state.family, api).includes(c.kind)) return null;
   const K = state.points.length;
   if (c.kind === 'de-casteljau' && state.family === 'bezier') {
     const r = api.deCasteljau(spec.points, 2, u);
@@ -204,10 +203,13 @@ export function resetModelCache() {
   cache = { key: null, value: null };
 }
 
-// Which construction kinds a family offers.
-export function constructionsFor(family) {
-  if (family === 'bezier') return ['de-casteljau', 'subdivide', 'elevate'];
-  if (family === 'bspline' || family === 'nurbs') return ['de-boor', 'insert-knot'];
-  if (family === 'bspline-uniform') return ['de-boor'];
-  return [];
+// Which construction kinds a family offers (those the loaded core provides: the page
+// follows the core's API as it grows, issue 5).
+const CONSTRUCTION_CALLS = { 'de-casteljau': 'deCasteljau', subdivide: 'subdivideBezier', elevate: 'elevateDegree', 'de-boor': 'deBoor', 'insert-knot': 'insertKnot' };
+export function constructionsFor(family, api) {
+  let kinds = [];
+  if (family === 'bezier') kinds = ['de-casteljau', 'subdivide', 'elevate'];
+  else if (family === 'bspline' || family === 'nurbs') kinds = ['de-boor', 'insert-knot'];
+  else if (family === 'bspline-uniform') kinds = ['de-boor'];
+  return kinds.filter((k) => typeof api?.[CONSTRUCTION_CALLS[k]] === 'function');
 }

@@ -77,7 +77,7 @@ export function createKnotStrip(container, { onChange, label = 'Knot strip' } = 
       const top = AXIS_Y - (group.multiplicity - 1) * STACK_PX - 12;
       g.fillStyle = colors.ink;
       g.textBaseline = 'bottom';
-      const inside = group.value >= data.domain.start && group.value <= data.domain.end;
+      const inside = group.value > data.domain.start && group.value < data.domain.end;
       const text = inside ? continuityLabel(group.continuity) : '';
       g.fillText(group.multiplicity > 1 ? `${text} ×${group.multiplicity}`.trim() : text, x, top);
       g.fillStyle = colors.muted;

@@ -125,7 +125,7 @@ export const lesson = {
     }
     drawCurve(painter, model.samples, { stroke: c.ink, width: 3 });
     const item = hoveredItem(hovered, K, state.family);
-    if (o.influence && item !== null) drawInfluence(painter, model.samples, model.influence.values, model.influence.count, item, item >= K ? seriesOf(item - K) : seriesOf(item));
+    if (o.influence && item !== null) drawInfluence(painter, model.samples, model.plot.values, model.plot.count, item, item >= K ? seriesOf(item - K) : seriesOf(item));
     if (o.samples) drawSamples(painter, model.samples, 20, { fill: c.accent });
     if (o.comb && model.comb) drawComb(painter, model.comb, 60 / zoom, { stroke: c.series[3] });
     if (o.knots) {
@@ -211,11 +211,11 @@ export const lesson = {
       filename: 'blending-functions.csv',
       type: 'text/csv',
       make(model, state) {
-        const { count, values } = model.influence;
-        const names = blendingLabels(state, count);
+        const { count, values, params } = model.plot;
+        const names = blendingLabels(state, count).map((n) => n.replace(',', '_'));
         const lines = [['u', ...names].join(',')];
-        for (let j = 0; j < model.params.length; j += 1) {
-          const row = [model.params[j]];
+        for (let j = 0; j < params.length; j += 1) {
+          const row = [params[j]];
           for (let i = 0; i < count; i += 1) row.push(values[count * j + i]);
           lines.push(row.join(','));
         }

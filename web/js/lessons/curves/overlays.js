@@ -9,10 +9,12 @@ export function drawCurve(painter, xy, style) {
 }
 
 // The curve in segments whose width and opacity follow the influence (blending value) of
-// control item `item` at each sample: values[count*j + item]. Grouped into bands so a
-// 1,000-sample curve costs a few dozen strokes, not a thousand.
+// control item `item`: values[count*k + item] at m parameters spread like the n samples
+// (both uniform over the domain), so sample j reads value k = round(j (m-1)/(n-1)).
+// Grouped into bands so a 1,000-sample curve costs a few dozen strokes, not a thousand.
 export function drawInfluence(painter, xy, values, count, item, color) {
   const n = xy.length / 2;
+  const m = values.length / count;
   const BANDS = 12;
   let band = -1;
   let run = [];
@@ -20,7 +22,8 @@ export function drawInfluence(painter, xy, values, count, item, color) {
     if (run.length >= 4 && band > 0) painter.polyline(run, { stroke: color, width: 2 + 7 * (band / BANDS), alpha: 0.25 + 0.6 * (band / BANDS) });
   };
   for (let j = 0; j < n; j += 1) {
-    const w = Math.min(1, Math.abs(values[count * j + item]));
+    const k = Math.round((j * (m - 1)) / (n - 1));
+    const w = Math.min(1, Math.abs(values[count * k + item]));
     const b = Math.round(w * BANDS);
     if (b !== band) {
       run.push(xy[2 * j], xy[2 * j + 1]);

@@ -158,7 +158,10 @@ export function setupPanels(ctx, lesson) {
   for (const [key, text] of Object.entries(OVERLAYS)) {
     overlayBoxes[key] = h('input', { type: 'checkbox', id: `overlay-${key}`, 'data-overlay': key,
       onchange: (e) => commit({ ...state(), overlays: { ...state().overlays, [key]: e.target.checked } }, { recompute: key === 'comb' }) });
-    overlayBody.append(h('label', { class: 'check' }, overlayBoxes[key], ` ${text}`));
+    const row = h('label', { class: 'check' }, overlayBoxes[key], ` ${text}`);
+    // The comb needs the core's curvature (issue 5); without it the option is not offered.
+    row.hidden = key === 'comb' && typeof ctx.api.curvature !== 'function';
+    overlayBody.append(row);
   }
   const compare = h('input', { type: 'checkbox', id: 'compare-spline', onchange: (e) => commit({ ...state(), compare: e.target.checked }) });
   const compareLabel = h('label', { class: 'check' }, compare, ' Interpolation: also draw a cubic spline through the same points (dashed)');
@@ -320,7 +323,7 @@ export function updatePanels(model, state, ctx) {
   els.matrix.update({ segment: model.segment, u: model.u, point: model.point, transposed: state.transposed,
     title: `${familyInfo(state.family).label}, basis ${model.segment.basis ?? state.family}` });
   // constructions
-  const kinds = constructionsFor(state.family);
+  const kinds = constructionsFor(state.family, ctx.api);
   const wanted = ['none', ...kinds].join();
   if (els.conKind.dataset.kinds !== wanted) {
     els.conKind.dataset.kinds = wanted;
@@ -395,6 +398,9 @@ function constructionText(con, step, model) {
 function knotGroupTable(model, state, ctx) {
   const groups = model.knots.groups;
   const inDomain = (g) => g.value >= model.domain.start && g.value <= model.domain.end;
+  // Continuity is a property of a joint between two segments: strictly inside the domain.
+  const joint = (g) => g.value > model.domain.start && g.value < model.domain.end;
+  const where = (g) => (joint(g) ? continuityLabel(g.continuity) : inDomain(g) ? 'end of the domain' : 'outside the domain');
   const editable = usesKnots(state.family);
   const tbl = h('table', { class: 'data-table knot-groups' },
     h('caption', {}, `Degree p = ${state.degree}: a knot of multiplicity m gives continuity C^(p-m) there.`),
@@ -402,10 +408,10 @@ function knotGroupTable(model, state, ctx) {
     h('tbody', {}, groups.map((g) => h('tr', { 'data-knot': String(g.value) },
       h('th', { scope: 'row' }, formatNumber(g.value, 4)),
       h('td', {}, String(g.multiplicity)),
-      h('td', { class: 'continuity' }, inDomain(g) ? continuityLabel(g.continuity) : 'outside the domain'),
+      h('td', { class: 'continuity' }, where(g)),
       editable ? h('td', {},
         h('button', { type: 'button', class: 'tool small', 'data-action': 'raise-multiplicity', 'aria-label': `raise the multiplicity of knot ${formatNumber(g.value, 4)}`,
-          disabled: !inDomain(g) || g.multiplicity >= state.degree || state.points.length >= 24, onclick: () => raiseMultiplicity(g.value, ctx) }, '+'),
+          disabled: !joint(g) || g.multiplicity >= state.degree || state.points.length >= 24 || typeof ctx.api.insertKnot !== 'function', onclick: () => raiseMultiplicity(g.value, ctx) }, '+'),
         ' ',
         h('button', { type: 'button', class: 'tool small', 'data-action': 'lower-multiplicity', 'aria-label': `lower the multiplicity of knot ${formatNumber(g.value, 4)}`,
           disabled: g.multiplicity <= 1 || state.points.length <= state.degree + 1, onclick: () => lowerMultiplicity(g, ctx) }, '−')) : null))));
