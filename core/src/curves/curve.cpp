@@ -296,17 +296,18 @@ std::vector<double> CurveEvaluator::checked_params(const double* params, std::si
     return out;
 }
 
-void CurveEvaluator::check_params(double* out, std::size_t n) const {
+void CurveEvaluator::check_params(double* out, std::size_t n, std::size_t index_offset) const {
     const double slack = kParameterSlack * std::max({1.0, std::abs(domain_.start), std::abs(domain_.end)});
     for (std::size_t j = 0; j < n; ++j) {
         const double u = out[j];
         if (u >= domain_.start && u <= domain_.end) continue;
         // (messages are built only on failure: this loop runs once per parameter)
         if (!std::isfinite(u))
-            throw Error("non-finite-input", "parameter " + std::to_string(j) + " is " + num(u) + ", not a finite number");
+            throw Error("non-finite-input",
+                        "parameter " + std::to_string(j + index_offset) + " is " + num(u) + ", not a finite number");
         if (!(u >= domain_.start - slack && u <= domain_.end + slack))
             throw Error("parameter-out-of-range",
-                        "parameter " + std::to_string(j) + " is u = " + num(u) + ", outside the domain " +
+                        "parameter " + std::to_string(j + index_offset) + " is u = " + num(u) + ", outside the domain " +
                             range(domain_.start, domain_.end) + " of this " + curve_kind_name(curve_.kind) + " curve");
         out[j] = std::clamp(u, domain_.start, domain_.end);
     }
