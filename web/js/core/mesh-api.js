@@ -1,4 +1,250 @@
-// Mesh part of the API (issue 3). Filled in by the mesh core.
-export function createMeshApi(/* raw */) {
-  return {};
+// Mesh part of the API (issue 3): plain values, 0-based indices, -1 = none.
+// A built mesh lives in the core's registry; the Mesh object below holds only its integer
+// handle, and mesh.dispose() frees it at once (a FinalizationRegistry is only a safety net
+// for a forgotten dispose, never the mechanism). See docs/api-mesh.md.
+import { WingsplineError, unwrap, fail, integerIn, isNumberArray } from './errors.js';
+
+const INT32_MAX = 2147483647;
+const EDGE_FIELDS = ['start', 'end', 'left', 'right', 'startLeft', 'startRight', 'endLeft', 'endRight'];
+
+function checkPositions(positions) {
+  if (!isNumberArray(positions)) fail('invalid-argument', 'positions must be an array or Float64Array of numbers (x, y, z per vertex)');
+  if (positions.length % 3 !== 0) {
+    fail('invalid-argument', `positions must hold x, y, z for each vertex; ${positions.length} numbers is not a multiple of 3`);
+  }
+  return positions instanceof Float64Array ? positions : Float64Array.from(positions);
+}
+
+function checkIndex(value, what) {
+  if (!Number.isInteger(value)) fail('invalid-argument', `${what} must be a whole number, not ${String(value).slice(0, 40)}`);
+  if (value > INT32_MAX || value < -INT32_MAX) fail('index-out-of-range', `${what} = ${value} is far outside the mesh`);
+  return value;
+}
+
+// faces: number[][] (one array of vertex indices per face) -> CSR typed arrays.
+function facesToCsr(faces) {
+  if (!Array.isArray(faces)) fail('invalid-argument', 'faces must be an array with one array of vertex indices per face');
+  const faceOffsets = new Int32Array(faces.length + 1);
+  let total = 0;
+  faces.forEach((face, f) => {
+    if (!Array.isArray(face) && !(ArrayBuffer.isView(face) && !(face instanceof DataView))) {
+      fail('invalid-argument', `faces[${f}] must be an array of vertex indices`);
+    }
+    total += face.length;
+    faceOffsets[f + 1] = total;
+  });
+  const faceVertices = new Int32Array(total);
+  let k = 0;
+  faces.forEach((face, f) => {
+    for (let i = 0; i < face.length; i += 1) faceVertices[k++] = checkIndex(face[i], `faces[${f}][${i}]`);
+  });
+  return { faceOffsets, faceVertices };
+}
+
+function csrToFaces(faceOffsets, faceVertices) {
+  const faces = new Array(faceOffsets.length - 1);
+  for (let f = 0; f + 1 < faceOffsets.length; f += 1) faces[f] = Array.from(faceVertices.subarray(faceOffsets[f], faceOffsets[f + 1]));
+  return faces;
+}
+
+// Accepts {positions, faces} or the bulk form {positions, faceOffsets, faceVertices}.
+function indexedInput(input) {
+  if (input === null || typeof input !== 'object') fail('invalid-argument', 'expected a mesh object {positions, faces}');
+  const positions = checkPositions(input.positions);
+  if (input.faces === undefined && input.faceOffsets !== undefined) {
+    if (!(input.faceOffsets instanceof Int32Array) || !(input.faceVertices instanceof Int32Array)) {
+      fail('invalid-argument', 'faceOffsets and faceVertices must be Int32Arrays');
+    }
+    return { positions, faceOffsets: input.faceOffsets, faceVertices: input.faceVertices };
+  }
+  return { positions, ...facesToCsr(input.faces) };
+}
+
+function optionalInts(value, what, pairs = false) {
+  if (value === undefined || value === null) return new Int32Array(0);
+  const flat = pairs && Array.isArray(value) ? value.flatMap((p, i) => {
+    if (!Array.isArray(p) || p.length !== 2) fail('invalid-argument', `${what}[${i}] must be a [start, end] pair`);
+    return p;
+  }) : value;
+  if (!isNumberArray(flat)) fail('invalid-argument', `${what} must be an array of whole numbers`);
+  const out = new Int32Array(flat.length);
+  for (let i = 0; i < flat.length; i += 1) out[i] = checkIndex(flat[i], `${what} entry ${i}`);
+  return out;
+}
+
+function indexedOutput(r, layout) {
+  const out = layout === 'csr'
+    ? { positions: r.positions, faceOffsets: r.faceOffsets, faceVertices: r.faceVertices }
+    : { positions: r.positions, faces: csrToFaces(r.faceOffsets, r.faceVertices) };
+  return out;
+}
+
+function pairs(flat) {
+  const out = [];
+  for (let i = 0; i + 1 < flat.length; i += 2) out.push([flat[i], flat[i + 1]]);
+  return out;
+}
+
+const safetyNet = typeof FinalizationRegistry === 'function'
+  ? new FinalizationRegistry(({ raw, handle }) => raw.meshDispose(handle))
+  : null;
+
+export class Mesh {
+  #raw;
+  #handle;
+
+  constructor(raw, handle) {
+    this.#raw = raw;
+    this.#handle = handle;
+    safetyNet?.register(this, { raw, handle }, this);
+  }
+
+  get disposed() { return this.#handle === 0; }
+
+  // Frees the mesh in the core. Idempotent; every other call afterwards throws 'disposed'.
+  dispose() {
+    if (this.#handle === 0) return;
+    safetyNet?.unregister(this);
+    this.#raw.meshDispose(this.#handle);
+    this.#handle = 0;
+  }
+
+  #live() {
+    if (this.#handle === 0) throw new WingsplineError('disposed', 'this mesh has been disposed; build it again with buildMesh()');
+    return this.#handle;
+  }
+
+  #adjacency(kind, element, what) {
+    integerIn(element, what, 0, INT32_MAX);
+    return unwrap(this.#raw.meshAdjacency(this.#live(), kind, element)).indices;
+  }
+
+  // The lecture's three tables: {vertices: [{edge, x, y, z}], edges: [{start, end, left,
+  // right, startLeft, startRight, endLeft, endRight}], faces: [{edge}]}.
+  wingedEdge() {
+    const r = unwrap(this.#raw.meshWingedEdge(this.#live()));
+    const vertices = Array.from(r.vertexEdge, (edge, v) => ({
+      edge, x: r.positions[3 * v], y: r.positions[3 * v + 1], z: r.positions[3 * v + 2],
+    }));
+    const edges = [];
+    for (let e = 0; 8 * e < r.edges.length; e += 1) {
+      const row = {};
+      EDGE_FIELDS.forEach((name, k) => { row[name] = r.edges[8 * e + k]; });
+      edges.push(row);
+    }
+    const faces = Array.from(r.faceEdge, (edge) => ({ edge }));
+    return { vertices, edges, faces };
+  }
+
+  // The same tables as flat typed arrays: edges[8*e + k] in EDGE_FIELDS order.
+  wingedEdgeArrays() {
+    const r = unwrap(this.#raw.meshWingedEdge(this.#live()));
+    return { positions: r.positions, vertexEdge: r.vertexEdge, edges: r.edges, faceEdge: r.faceEdge, edgeFields: [...EDGE_FIELDS] };
+  }
+
+  edgesAroundVertex(v) { return this.#adjacency('edges-around-vertex', v, 'vertex'); }
+  facesAroundVertex(v) { return this.#adjacency('faces-around-vertex', v, 'vertex'); }
+  verticesAroundVertex(v) { return this.#adjacency('vertices-around-vertex', v, 'vertex'); }
+  edgesOfFace(f) { return this.#adjacency('edges-of-face', f, 'face'); }
+  verticesOfFace(f) { return this.#adjacency('vertices-of-face', f, 'face'); }
+  faceNeighbours(f) { return this.#adjacency('face-neighbours', f, 'face'); }
+  facesOfEdge(e) {
+    const lr = this.#adjacency('faces-of-edge', e, 'edge');
+    return { left: lr[0], right: lr[1] };
+  }
+
+  // The CCW walk around v as steps: the lecture's rule reads startLeft when v is the
+  // edge's Start, endRight when it is its End.
+  traversalSteps(v) {
+    integerIn(v, 'vertex', 0, INT32_MAX);
+    const r = unwrap(this.#raw.meshTraversalSteps(this.#live(), v));
+    return Array.from(r.edges, (edge, i) => ({
+      edge,
+      role: r.atStart[i] ? 'start' : 'end',
+      column: r.atStart[i] ? 'startLeft' : 'endRight',
+      next: r.next[i],
+    }));
+  }
+
+  // The walk along face f: if f is the edge's Left face the next edge is endLeft,
+  // otherwise (f is its Right face) startRight.
+  faceEdgeSteps(f) {
+    integerIn(f, 'face', 0, INT32_MAX);
+    const r = unwrap(this.#raw.meshFaceEdgeSteps(this.#live(), f));
+    return Array.from(r.edges, (edge, i) => ({
+      edge,
+      side: r.faceIsLeft[i] ? 'left' : 'right',
+      column: r.faceIsLeft[i] ? 'endLeft' : 'startRight',
+      next: r.next[i],
+    }));
+  }
+
+  // {vertices, edges, faces, boundaryEdges, boundaryLoops, isolatedVertices, euler}
+  counts() {
+    const { ok, ...c } = unwrap(this.#raw.meshCounts(this.#live()));
+    return c;
+  }
+
+  // {ok, problems: [{code, severity, message, elements: {vertices, edges, faces}}]}
+  validate() {
+    const r = unwrap(this.#raw.meshValidate(this.#live()));
+    return { ok: r.valid, problems: r.problems };
+  }
+}
+
+export function createMeshApi(raw) {
+  function named(name, a = 0, b = 0) {
+    return unwrap(raw.meshNamed(name, a, b));
+  }
+  function slideMesh(name) {
+    const r = named(name);
+    return {
+      positions: r.positions,
+      faces: csrToFaces(r.faceOffsets, r.faceVertices),
+      edges: pairs(r.edges),
+      vertexEdges: Array.from(r.vertexEdges),
+      faceEdges: Array.from(r.faceEdges),
+    };
+  }
+  return {
+    // Builds the winged edge (and the other representations) from an indexed face set.
+    // Refuses what a winged edge cannot hold: error.code = the first problem's code,
+    // error.details = every problem (as validateMesh reports them).
+    buildMesh(input) {
+      const { positions, faceOffsets, faceVertices } = indexedInput(input);
+      const edges = optionalInts(input.edges, 'edges', true);
+      const vertexEdges = optionalInts(input.vertexEdges, 'vertexEdges');
+      const faceEdges = optionalInts(input.faceEdges, 'faceEdges');
+      const r = unwrap(raw.meshBuild(positions, faceOffsets, faceVertices, edges, vertexEdges, faceEdges));
+      return new Mesh(raw, r.handle);
+    },
+    // Every problem of an indexed face set, without building: {ok, problems}.
+    validateMesh(input) {
+      const { positions, faceOffsets, faceVertices } = indexedInput(input);
+      const r = unwrap(raw.meshValidateIndexed(positions, faceOffsets, faceVertices));
+      return { ok: r.valid, problems: r.problems };
+    },
+    // How many built meshes have not been disposed (for leak tests).
+    liveMeshCount() {
+      return unwrap(raw.meshLiveCount()).count;
+    },
+    // Lecture 000's mesh with the slide's numbering: {positions, faces, edges, vertexEdges, faceEdges}.
+    lectureExample() { return slideMesh('lecture'); },
+    // Lecture 001's two polygons with Foley's edge order E1..E5.
+    foleyExample() { return slideMesh('foley'); },
+    // 'tetrahedron' | 'cube' | 'fan' ({n}) | 'grid' ({nx, ny}) | 'sphere' ({slices, stacks}).
+    // {layout: 'csr'} returns {positions, faceOffsets, faceVertices} instead of faces.
+    generateMesh(kind, options = {}) {
+      if (typeof kind !== 'string') fail('invalid-argument', 'generateMesh needs a kind: tetrahedron, cube, fan, grid or sphere');
+      const o = options ?? {};
+      const int = (name, dflt) => (o[name] === undefined ? dflt : integerIn(o[name], name, 0, INT32_MAX));
+      let r;
+      if (kind === 'fan') r = named('fan', int('n', 6));
+      else if (kind === 'grid') r = named('grid', int('nx', 4), int('ny', 3));
+      else if (kind === 'sphere') r = named('sphere', int('slices', 12), int('stacks', 6));
+      else if (kind === 'lecture' || kind === 'foley') fail('unknown-mesh', `use lectureExample() or foleyExample() for '${kind}'`);
+      else r = named(kind);
+      return indexedOutput(r, o.layout);
+    },
+  };
 }

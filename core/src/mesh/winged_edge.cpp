@@ -1,0 +1,495 @@
+// Building Baumgart's winged edge from an indexed face set without any map per edge:
+// half-edges are bucketed by their lower vertex (a counting sort, CSR layout), twins are
+// matched inside each small bucket, and the wings are read off each face's previous and
+// next corner. Anything the structure cannot hold is handed to validate_indexed(), which
+// explains every problem; the fast path only has to notice that something is wrong.
+#include "wingspline/mesh/winged_edge.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wingspline::mesh {
+
+namespace {
+
+// One half-edge in the bucket of its lower vertex: the other vertex, and the half-edge
+// index times two plus 1 when it runs from the higher vertex to the lower one.
+struct BucketSlot {
+    int32_t other;
+    int32_t code;
+};
+
+[[noreturn]] void refuse(const IndexedMesh& mesh) { throw InvalidMesh(validate_indexed(mesh)); }
+
+void sort_bucket(BucketSlot* first, BucketSlot* last) {
+    if (last - first <= 12) {
+        for (BucketSlot* i = first + 1; i < last; ++i) {
+            const BucketSlot x = *i;
+            BucketSlot* j = i;
+            while (j > first && (j - 1)->other > x.other) {
+                *j = *(j - 1);
+                --j;
+            }
+            *j = x;
+        }
+    } else {
+        std::sort(first, last, [](const BucketSlot& a, const BucketSlot& b) { return a.other < b.other; });
+    }
+}
+
+bool corners_distinct(const int32_t* c, int32_t n) {
+    if (n == 3) return c[0] != c[1] && c[1] != c[2] && c[0] != c[2];
+    if (n <= 16) {
+        for (int32_t i = 1; i < n; ++i)
+            for (int32_t j = 0; j < i; ++j)
+                if (c[i] == c[j]) return false;
+        return true;
+    }
+    std::vector<int32_t> s(c, c + n);
+    std::sort(s.begin(), s.end());
+    return std::adjacent_find(s.begin(), s.end()) == s.end();
+}
+
+} // namespace
+
+WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions& options) {
+    const int32_t V = mesh.vertex_count();
+    const int32_t F = mesh.face_count();
+    const std::vector<int32_t>& fo = mesh.face_offsets;
+    const std::vector<int32_t>& fv = mesh.face_vertices;
+    if (F <= 0 || mesh.positions.size() != 3 * static_cast<std::size_t>(V)) refuse(mesh);
+    for (double c : mesh.positions)
+        if (!std::isfinite(c)) refuse(mesh);
+    const int32_t H = fo[F];
+    for (int32_t f = 0; f < F; ++f) {
+        const int32_t n = fo[f + 1] - fo[f];
+        if (n < 3) refuse(mesh);
+        for (int32_t i = fo[f]; i < fo[f + 1]; ++i)
+            if (fv[i] < 0 || fv[i] >= V) refuse(mesh);
+        if (!corners_distinct(&fv[fo[f]], n)) refuse(mesh);
+    }
+
+    // Bucket every half-edge by its lower vertex (counting sort).
+    std::vector<int32_t> bucket_end(static_cast<std::size_t>(V) + 1, 0);
+    for (int32_t f = 0; f < F; ++f) {
+        const int32_t o = fo[f], last = fo[f + 1] - 1;
+        for (int32_t h = o; h <= last; ++h) {
+            const int32_t a = fv[h], b = fv[h == last ? o : h + 1];
+            ++bucket_end[std::min(a, b) + 1];
+        }
+    }
+    for (int32_t v = 0; v < V; ++v) bucket_end[v + 1] += bucket_end[v];
+    std::vector<BucketSlot> slots(H);
+    for (int32_t f = 0; f < F; ++f) {
+        const int32_t o = fo[f], last = fo[f + 1] - 1;
+        for (int32_t h = o; h <= last; ++h) {
+            const int32_t a = fv[h], b = fv[h == last ? o : h + 1];
+            const int32_t lo = a < b ? a : b;
+            slots[bucket_end[lo]++] = {a < b ? b : a, 2 * h + (a > b ? 1 : 0)};
+        }
+    }
+    // Now bucket v is [bucket_end[v-1], bucket_end[v]) (bucket_end[-1] = 0).
+
+    // Twins: inside a bucket, equal `other` means the same undirected edge.
+    std::vector<int32_t> twin(H, kNone);
+    for (int32_t v = 0; v < V; ++v) {
+        BucketSlot* first = slots.data() + (v == 0 ? 0 : bucket_end[v - 1]);
+        BucketSlot* last = slots.data() + bucket_end[v];
+        if (last - first > 1) sort_bucket(first, last);
+        for (BucketSlot* s = first; s < last;) {
+            BucketSlot* t = s + 1;
+            while (t < last && t->other == s->other) ++t;
+            if (t - s == 2) {
+                if ((s->code & 1) == (s[1].code & 1)) refuse(mesh); // same direction twice
+                twin[s->code >> 1] = s[1].code >> 1;
+                twin[s[1].code >> 1] = s->code >> 1;
+            } else if (t - s > 2) {
+                refuse(mesh); // more than two faces on one edge
+            }
+            s = t;
+        }
+    }
+
+    // Edge numbers: order of first appearance walking the faces.
+    std::vector<int32_t> edge_of(H);
+    int32_t E = 0;
+    for (int32_t h = 0; h < H; ++h) {
+        const int32_t t = twin[h];
+        edge_of[h] = (t == kNone || t > h) ? E++ : edge_of[t];
+    }
+    twin = std::vector<int32_t>();
+
+    WingedEdgeMesh m;
+    m.positions_ = mesh.positions;
+    m.edges_.resize(E);
+    m.vertex_edge_.assign(V, kNone);
+    m.face_edge_.assign(F, kNone);
+
+    if (options.edges.empty()) {
+        for (int32_t f = 0; f < F; ++f) {
+            const int32_t o = fo[f], last = fo[f + 1] - 1;
+            for (int32_t h = o; h <= last; ++h) {
+                EdgeRecord& r = m.edges_[edge_of[h]];
+                if (r.start == kNone) {
+                    r.start = fv[h];
+                    r.end = fv[h == last ? o : h + 1];
+                }
+            }
+        }
+    } else {
+        // The caller fixes numbering and orientation: find each [s, t] in its bucket.
+        if (static_cast<int32_t>(options.edges.size()) != E)
+            throw Error("invalid-edge-list", "the edge list has " + std::to_string(options.edges.size()) +
+                        " edges but the faces have " + std::to_string(E));
+        std::vector<int32_t> renumber(E, kNone);
+        for (int32_t i = 0; i < E; ++i) {
+            const int32_t s = options.edges[i][0], t = options.edges[i][1];
+            const std::string label = edge_label(i) + " = [" + std::to_string(s) + ", " + std::to_string(t) + "]";
+            if (s < 0 || t < 0 || s >= V || t >= V || s == t)
+                throw Error("invalid-edge-list", label + " does not name two different vertices of the mesh");
+            const int32_t lo = std::min(s, t), hi = std::max(s, t);
+            const BucketSlot* first = slots.data() + (lo == 0 ? 0 : bucket_end[lo - 1]);
+            const BucketSlot* last = slots.data() + bucket_end[lo];
+            const BucketSlot* hit = std::lower_bound(first, last, hi,
+                                                     [](const BucketSlot& a, int32_t x) { return a.other < x; });
+            if (hit == last || hit->other != hi)
+                throw Error("invalid-edge-list", label + ": " + vertex_label(s) + "-" + vertex_label(t) +
+                            " is not an edge of any face");
+            int32_t& slot = renumber[edge_of[hit->code >> 1]];
+            if (slot != kNone)
+                throw Error("invalid-edge-list", label + " repeats " + edge_label(slot) + " (" + vertex_label(s) + "-" +
+                            vertex_label(t) + ")");
+            slot = i;
+            m.edges_[i].start = s;
+            m.edges_[i].end = t;
+        }
+        for (int32_t& e : edge_of) e = renumber[e];
+    }
+    slots = std::vector<BucketSlot>();
+    bucket_end = std::vector<int32_t>();
+
+    // Wings from each face's previous and next corner; L traverses S->E, R traverses E->S.
+    // A side that no face claims is a boundary; the boundary loop is the face there.
+    std::vector<int32_t> boundary_out(V, kNone); // edge of the boundary half-edge leaving v
+    std::vector<int32_t>& boundary_in = m.vertex_edge_; // ...arriving at v (the default vertex edge)
+    for (int32_t f = 0; f < F; ++f) {
+        const int32_t o = fo[f], last = fo[f + 1] - 1;
+        for (int32_t h = o; h <= last; ++h) {
+            const int32_t prev = edge_of[h == o ? last : h - 1];
+            const int32_t next = edge_of[h == last ? o : h + 1];
+            EdgeRecord& r = m.edges_[edge_of[h]];
+            if (r.start == fv[h]) {
+                r.left = f;
+                r.start_left = prev;
+                r.end_left = next;
+            } else {
+                r.right = f;
+                r.start_right = next;
+                r.end_right = prev;
+            }
+        }
+    }
+    edge_of = std::vector<int32_t>();
+    for (int32_t e = 0; e < E; ++e) {
+        const EdgeRecord& r = m.edges_[e];
+        if (r.left != kNone && r.right != kNone) continue;
+        // The boundary half-edge runs opposite to the face's: S->E when L is missing.
+        const int32_t from = r.left == kNone ? r.start : r.end;
+        const int32_t to = r.left == kNone ? r.end : r.start;
+        if (boundary_out[from] != kNone || boundary_in[to] != kNone) refuse(mesh); // two boundary gaps: bow-tie
+        boundary_out[from] = e;
+        boundary_in[to] = e;
+    }
+    for (int32_t e = 0; e < E; ++e) {
+        EdgeRecord& r = m.edges_[e];
+        if (r.left == kNone) {
+            r.start_left = boundary_in[r.start];
+            r.end_left = boundary_out[r.end];
+        } else if (r.right == kNone) {
+            r.start_right = boundary_out[r.start];
+            r.end_right = boundary_in[r.end];
+        }
+    }
+
+    // Default vertex edge: after the boundary gap (already in place), else the lowest.
+    // Default face edge: the lowest-numbered edge of the face.
+    std::vector<int32_t>& degree = boundary_out;
+    std::fill(degree.begin(), degree.end(), 0);
+    for (int32_t e = 0; e < E; ++e) {
+        const EdgeRecord& r = m.edges_[e];
+        ++degree[r.start];
+        ++degree[r.end];
+        if (m.vertex_edge_[r.start] == kNone) m.vertex_edge_[r.start] = e;
+        if (m.vertex_edge_[r.end] == kNone) m.vertex_edge_[r.end] = e;
+        if (r.left != kNone && m.face_edge_[r.left] == kNone) m.face_edge_[r.left] = e;
+        if (r.right != kNone && m.face_edge_[r.right] == kNone) m.face_edge_[r.right] = e;
+    }
+
+    // One fan per vertex: the CCW walk must meet every incident edge (else a bow-tie).
+    for (int32_t v = 0; v < V; ++v) {
+        const int32_t first = m.vertex_edge_[v];
+        if (first == kNone) continue;
+        int32_t e = first, steps = 0;
+        do {
+            e = m.next_ccw(e, v);
+            ++steps;
+        } while (e != first && steps <= degree[v]);
+        if (steps != degree[v]) refuse(mesh);
+    }
+    // Two faces on exactly the same edges (a pillow of duplicates).
+    for (int32_t f = 0; f < F; ++f) {
+        const EdgeRecord& r0 = m.edges_[m.face_edge_[f]];
+        const int32_t g = r0.left == f ? r0.right : r0.left;
+        if (g == kNone || fo[g + 1] - fo[g] != fo[f + 1] - fo[f]) continue;
+        bool all_shared = true;
+        int32_t e = m.face_edge_[f];
+        do {
+            const EdgeRecord& r = m.edges_[e];
+            if ((r.left == f ? r.right : r.left) != g) all_shared = false;
+            e = m.next_in_face(e, f);
+        } while (all_shared && e != m.face_edge_[f]);
+        if (all_shared) refuse(mesh);
+    }
+
+    if (!options.vertex_edges.empty()) {
+        if (static_cast<int32_t>(options.vertex_edges.size()) != V)
+            throw Error("invalid-vertex-edge", "vertexEdges has " + std::to_string(options.vertex_edges.size()) +
+                        " entries but the mesh has " + std::to_string(V) + " vertices");
+        for (int32_t v = 0; v < V; ++v) {
+            const int32_t e = options.vertex_edges[v];
+            const bool isolated = degree[v] == 0;
+            const bool ok = isolated ? e == kNone
+                                     : (e >= 0 && e < E && (m.edges_[e].start == v || m.edges_[e].end == v));
+            if (!ok)
+                throw Error("invalid-vertex-edge", "vertexEdges gives " + (e >= 0 && e < E ? edge_label(e) : std::to_string(e)) +
+                            " for " + vertex_label(v) + ", but that edge does not touch " + vertex_label(v));
+            m.vertex_edge_[v] = e;
+        }
+    }
+    if (!options.face_edges.empty()) {
+        if (static_cast<int32_t>(options.face_edges.size()) != F)
+            throw Error("invalid-face-edge", "faceEdges has " + std::to_string(options.face_edges.size()) +
+                        " entries but the mesh has " + std::to_string(F) + " faces");
+        for (int32_t f = 0; f < F; ++f) {
+            const int32_t e = options.face_edges[f];
+            if (e < 0 || e >= E || (m.edges_[e].left != f && m.edges_[e].right != f))
+                throw Error("invalid-face-edge", "faceEdges gives " + (e >= 0 && e < E ? edge_label(e) : std::to_string(e)) +
+                            " for " + face_label(f) + ", but that edge is not a side of " + face_label(f));
+            m.face_edge_[f] = e;
+        }
+    }
+    return m;
+}
+
+void WingedEdgeMesh::set_position(int32_t v, const glm::dvec3& p) {
+    positions_[3 * v] = p.x;
+    positions_[3 * v + 1] = p.y;
+    positions_[3 * v + 2] = p.z;
+}
+
+std::vector<int32_t> WingedEdgeMesh::edges_around_vertex(int32_t v) const {
+    std::vector<int32_t> out;
+    const int32_t first = vertex_edge_[v];
+    if (first == kNone) return out;
+    int32_t e = first;
+    do {
+        out.push_back(e);
+        e = next_ccw(e, v);
+    } while (e != first && out.size() <= edges_.size());
+    return out;
+}
+
+std::vector<TraversalStep> WingedEdgeMesh::traversal_steps(int32_t v) const {
+    std::vector<TraversalStep> out;
+    for (int32_t e : edges_around_vertex(v)) out.push_back({e, edges_[e].start == v, next_ccw(e, v)});
+    return out;
+}
+
+std::vector<int32_t> WingedEdgeMesh::faces_around_vertex(int32_t v) const {
+    std::vector<int32_t> out;
+    for (int32_t e : edges_around_vertex(v)) {
+        // Turning CCW from e at its Start sweeps L; at its End it sweeps R.
+        const int32_t f = edges_[e].start == v ? edges_[e].left : edges_[e].right;
+        if (f != kNone) out.push_back(f);
+    }
+    return out;
+}
+
+std::vector<int32_t> WingedEdgeMesh::vertices_around_vertex(int32_t v) const {
+    std::vector<int32_t> out;
+    for (int32_t e : edges_around_vertex(v)) out.push_back(other_vertex(e, v));
+    return out;
+}
+
+std::vector<int32_t> WingedEdgeMesh::edges_of_face(int32_t f) const {
+    std::vector<int32_t> out;
+    const int32_t first = face_edge_[f];
+    int32_t e = first;
+    do {
+        out.push_back(e);
+        e = next_in_face(e, f);
+    } while (e != first && out.size() <= edges_.size());
+    return out;
+}
+
+std::vector<FaceStep> WingedEdgeMesh::face_edge_steps(int32_t f) const {
+    std::vector<FaceStep> out;
+    for (int32_t e : edges_of_face(f)) out.push_back({e, edges_[e].left == f, next_in_face(e, f)});
+    return out;
+}
+
+std::vector<int32_t> WingedEdgeMesh::vertices_of_face(int32_t f) const {
+    std::vector<int32_t> out;
+    for (int32_t e : edges_of_face(f)) out.push_back(edges_[e].left == f ? edges_[e].start : edges_[e].end);
+    return out;
+}
+
+std::vector<int32_t> WingedEdgeMesh::face_neighbours(int32_t f) const {
+    std::vector<int32_t> out;
+    for (int32_t e : edges_of_face(f)) {
+        const int32_t g = edges_[e].left == f ? edges_[e].right : edges_[e].left;
+        if (g != kNone) out.push_back(g);
+    }
+    return out;
+}
+
+MeshCounts WingedEdgeMesh::counts() const {
+    MeshCounts c;
+    c.vertices = vertex_count();
+    c.edges = edge_count();
+    c.faces = face_count();
+    for (int32_t v : vertex_edge_) c.isolated_vertices += v == kNone;
+    std::vector<char> seen(edges_.size(), 0);
+    for (int32_t e = 0; e < edge_count(); ++e) {
+        const EdgeRecord& r = edges_[e];
+        if (r.left != kNone && r.right != kNone) continue;
+        ++c.boundary_edges;
+        if (seen[e]) continue;
+        ++c.boundary_loops;
+        // Walk the boundary loop as though it were a face.
+        int32_t b = e;
+        for (int32_t guard = 0; !seen[b] && guard <= edge_count(); ++guard) {
+            seen[b] = 1;
+            b = edges_[b].left == kNone ? edges_[b].end_left : edges_[b].start_right;
+        }
+    }
+    return c;
+}
+
+std::size_t WingedEdgeMesh::bytes() const {
+    return positions_.capacity() * sizeof(double) + vertex_edge_.capacity() * sizeof(int32_t) +
+           edges_.capacity() * sizeof(EdgeRecord) + face_edge_.capacity() * sizeof(int32_t);
+}
+
+ValidationReport WingedEdgeMesh::validate() const {
+    ValidationReport report;
+    auto add = [&](const char* code, std::string message, std::vector<int32_t> vs, std::vector<int32_t> es,
+                   std::vector<int32_t> fs) {
+        Problem p;
+        p.code = code;
+        p.message = std::move(message);
+        p.vertices = std::move(vs);
+        p.edges = std::move(es);
+        p.faces = std::move(fs);
+        report.problems.push_back(std::move(p));
+    };
+    const int32_t V = vertex_count(), E = edge_count(), F = face_count();
+    auto edge_ok = [&](int32_t e) { return e >= 0 && e < E; };
+    auto face_ok = [&](int32_t f) { return f == kNone || (f >= 0 && f < F); };
+    auto touches = [&](int32_t e, int32_t v) { return edges_[e].start == v || edges_[e].end == v; };
+    bool references_ok = true;
+    for (int32_t e = 0; e < E; ++e) {
+        const EdgeRecord& r = edges_[e];
+        const bool ok = r.start >= 0 && r.start < V && r.end >= 0 && r.end < V && r.start != r.end &&
+                        face_ok(r.left) && face_ok(r.right) && edge_ok(r.start_left) && edge_ok(r.start_right) &&
+                        edge_ok(r.end_left) && edge_ok(r.end_right);
+        if (!ok) {
+            references_ok = false;
+            add("invalid-reference", edge_label(e) + " refers to a vertex, face or edge that does not exist", {}, {e}, {});
+            continue;
+        }
+        if (r.left == kNone && r.right == kNone)
+            add("edge-without-face", edge_label(e) + " has neither a left nor a right face", {}, {e}, {});
+        const int32_t wings[4] = {r.start_left, r.start_right, r.end_left, r.end_right};
+        const int32_t at[4] = {r.start, r.start, r.end, r.end};
+        const char* names[4] = {"start-left", "start-right", "end-left", "end-right"};
+        for (int k = 0; k < 4; ++k) {
+            const int32_t w = wings[k];
+            const int32_t side = k % 2 == 0 ? r.left : r.right;
+            const EdgeRecord& q = edges_[w];
+            const bool shares_face = side == kNone ? (q.left == kNone || q.right == kNone) : (q.left == side || q.right == side);
+            if (w == e || !touches(w, at[k]) || !shares_face)
+                add("wing-mismatch", edge_label(e) + "'s " + names[k] + " wing " + edge_label(w) + " is not the other edge of the " +
+                    (side == kNone ? std::string("boundary") : face_label(side)) + " at " + vertex_label(at[k]), {at[k]}, {e, w},
+                    side == kNone ? std::vector<int32_t>{} : std::vector<int32_t>{side});
+        }
+    }
+    for (int32_t f = 0; f < F; ++f)
+        if (!edge_ok(face_edge_[f]) || (edges_[face_edge_[f]].left != f && edges_[face_edge_[f]].right != f)) {
+            references_ok = false;
+            add("face-edge-not-incident", face_label(f) + "'s edge is not one of its sides", {}, {}, {f});
+        }
+    for (int32_t v = 0; v < V; ++v) {
+        const int32_t e = vertex_edge_[v];
+        if (e == kNone) {
+            Problem p;
+            p.code = "isolated-vertex";
+            p.severity = Severity::Warning;
+            p.message = vertex_label(v) + " belongs to no face; it is kept with no edge (edge = -1)";
+            p.vertices = {v};
+            report.problems.push_back(std::move(p));
+        } else if (!edge_ok(e) || !touches(e, v)) {
+            references_ok = false;
+            add("vertex-edge-not-incident", vertex_label(v) + "'s edge does not touch " + vertex_label(v), {v}, {}, {});
+        }
+    }
+    if (!references_ok) return report;
+
+    std::vector<int32_t> degree(V, 0);
+    std::size_t sides = 0;
+    for (const EdgeRecord& r : edges_) {
+        ++degree[r.start];
+        ++degree[r.end];
+        sides += (r.left != kNone) + (r.right != kNone);
+    }
+    for (int32_t v = 0; v < V; ++v) {
+        const int32_t first = vertex_edge_[v];
+        if (first == kNone) continue;
+        int32_t e = first, steps = 0;
+        bool ok = true;
+        do {
+            if (!touches(e, v)) { ok = false; break; }
+            e = next_ccw(e, v);
+            ++steps;
+        } while (e != first && steps <= degree[v]);
+        if (!ok || steps != degree[v])
+            add("open-vertex-ring", "walking counter-clockwise around " + vertex_label(v) + " does not meet each of its " +
+                std::to_string(degree[v]) + " edges exactly once before returning to " + edge_label(first), {v}, {first}, {});
+    }
+    std::size_t walked = 0;
+    for (int32_t f = 0; f < F; ++f) {
+        const int32_t first = face_edge_[f];
+        int32_t e = first, steps = 0;
+        bool ok = true;
+        do {
+            const EdgeRecord& r = edges_[e];
+            if (r.left != f && r.right != f) { ok = false; break; }
+            const int32_t n = next_in_face(e, f);
+            // Consecutive edges of a face meet at the vertex where this one ends (for f).
+            const int32_t head = r.left == f ? r.end : r.start;
+            if (!touches(n, head)) { ok = false; break; }
+            e = n;
+            ++steps;
+        } while (e != first && steps <= E);
+        walked += steps;
+        if (!ok || e != first)
+            add("open-face-loop", "walking the edges of " + face_label(f) + " from " + edge_label(first) +
+                " does not come back around the face", {}, {first}, {f});
+    }
+    if (walked != sides)
+        add("open-face-loop", "the face loops cover " + std::to_string(walked) + " edge sides but the edge table names " +
+            std::to_string(sides), {}, {}, {});
+    return report;
+}
+
+} // namespace wingspline::mesh

@@ -1,0 +1,68 @@
+// The mesh JS API contract (issue 3): shapes, typed arrays, 0-based indices, -1 = none,
+// errors with codes, disposal. Expected values come from lecture 000's slide tables.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { loadWingspline } from 'wingspline';
+
+const api = await loadWingspline();
+
+// Lecture 000, edge table (1-based on the slide): S E L R | SL SR EL ER; '-' = no face.
+const SLIDE_EDGES = `
+e1 v1 v3 -  F1 e2 e2 e4 e3
+e2 v1 v2 F1 -  e1 e1 e3 e6
+e3 v2 v3 F1 F2 e2 e5 e1 e4
+e4 v3 v4 -  F2 e1 e3 e7 e5
+e5 v2 v4 F2 F3 e3 e6 e4 e7
+e6 v2 v5 F3 -  e5 e2 e7 e7
+e7 v4 v5 -  F3 e4 e5 e6 e6`;
+const label = (s) => (s === '-' ? -1 : Number(s.slice(1)) - 1);
+const slideEdges = SLIDE_EDGES.trim().split('\n').map((line) => {
+  const [, ...cells] = line.trim().split(/\s+/);
+  const [start, end, left, right, startLeft, startRight, endLeft, endRight] = cells.map(label);
+  return { start, end, left, right, startLeft, startRight, endLeft, endRight };
+});
+const SLIDE_VERTEX_EDGES = ['e1', 'e6', 'e3', 'e5', 'e6'].map(label);
+const SLIDE_FACE_EDGES = ['e1', 'e3', 'e5'].map(label);
+
+function withMesh(input, body) {
+  const mesh = api.buildMesh(input);
+  try {
+    const report = mesh.validate();
+    assert.equal(report.ok, true, JSON.stringify(report.problems));
+    return body(mesh);
+  } finally {
+    mesh.dispose();
+  }
+}
+
+test('the lecture example reproduces the slide tables entry for entry', () => {
+  withMesh(api.lectureExample(), (mesh) => {
+    const we = mesh.wingedEdge();
+    assert.deepEqual(we.edges, slideEdges);
+    assert.deepEqual(we.vertices.map((v) => v.edge), SLIDE_VERTEX_EDGES);
+    assert.deepEqual(we.faces.map((f) => f.edge), SLIDE_FACE_EDGES);
+    assert.deepEqual(we.vertices.map((v) => [v.x, v.y, v.z]), [[0, 1, 0], [1, 0, 0], [1, 2, 0], [2, 1, 0], [2, -1, 0]]);
+  });
+});
+
+test('CCW around v2 is e6, e5, e3, e2, with the columns the lecture reads', () => {
+  withMesh(api.lectureExample(), (mesh) => {
+    const ring = mesh.edgesAroundVertex(1);
+    assert.ok(ring instanceof Int32Array);
+    assert.deepEqual(Array.from(ring), ['e6', 'e5', 'e3', 'e2'].map(label));
+    assert.deepEqual(mesh.traversalSteps(1), [
+      { edge: 5, role: 'start', column: 'startLeft', next: 4 },
+      { edge: 4, role: 'start', column: 'startLeft', next: 2 },
+      { edge: 2, role: 'start', column: 'startLeft', next: 1 },
+      { edge: 1, role: 'end', column: 'endRight', next: 5 },
+    ]);
+  });
+});
+
+test('a refused mesh throws its first problem code and lists every problem in details', () => {
+  const { positions } = api.lectureExample();
+  assert.throws(() => api.buildMesh({ positions, faces: [[0, 1, 2], [0, 1, 3], [0, 1, 4]] }), (err) =>
+    err.code === 'non-manifold-edge' && /v1-v2/.test(err.message) && Array.isArray(err.details) &&
+    err.details.some((p) => p.code === 'non-manifold-edge' && p.elements.faces.join() === '0,1,2'));
+  assert.equal(api.liveMeshCount(), 0);
+});
