@@ -21,7 +21,7 @@ export function createVirtualTable({ id, caption, head, rowCount, row, rowLabel,
 
   let count = 0;
   let rowPx = FALLBACK_ROW_PX;
-  let highlighted = new Set();
+  let rowMarks = new Map(); // row -> Set of class names (is-highlighted, is-hovered, is-picked)
   let reads = new Map(); // row -> Set of column indices (td index, 1-based after the header cell)
   let compares = new Map();
   let first = 0;
@@ -33,7 +33,7 @@ export function createVirtualTable({ id, caption, head, rowCount, row, rowLabel,
     const rowEl = h('tr', { 'data-row': i, 'aria-rowindex': i + 2 },
       h('th', { scope: 'row' }, rowLabel(i)),
       cells.map((c) => h('td', {}, c)));
-    if (highlighted.has(i)) rowEl.classList.add('is-highlighted');
+    for (const name of rowMarks.get(i) ?? []) rowEl.classList.add(name);
     for (const col of reads.get(i) ?? []) rowEl.children[col]?.classList.add('is-read');
     for (const col of compares.get(i) ?? []) rowEl.children[col]?.classList.add('is-compared');
     return rowEl;
@@ -91,17 +91,19 @@ export function createVirtualTable({ id, caption, head, rowCount, row, rowLabel,
       scroller.classList.toggle('is-virtual', count > FULL_ROWS);
       renderWindow();
     },
-    // Rows to tint and cells to outline: {rows: [i...], read: [[row, col]...], compared: [[row, col]...]}.
-    mark({ rows = [], read = [], compared = [] } = {}) {
-      for (const i of highlighted) rowElement(i)?.classList.remove('is-highlighted');
+    // Rows to tint and cells to outline: {rows: {className: [i...]}, read: [[row, col]...],
+    // compared: [[row, col]...]}.
+    mark({ rows = {}, read = [], compared = [] } = {}) {
+      for (const [i, names] of rowMarks) rowElement(i)?.classList.remove(...names);
       for (const [i, cols] of reads) for (const c of cols) rowElement(i)?.children[c]?.classList.remove('is-read');
       for (const [i, cols] of compares) for (const c of cols) rowElement(i)?.children[c]?.classList.remove('is-compared');
-      highlighted = new Set(rows);
+      rowMarks = new Map();
       reads = new Map();
       compares = new Map();
+      for (const [name, list] of Object.entries(rows)) for (const i of list) rowMarks.set(i, new Set([...(rowMarks.get(i) ?? []), name]));
       for (const [i, c] of read) reads.set(i, new Set([...(reads.get(i) ?? []), c]));
       for (const [i, c] of compared) compares.set(i, new Set([...(compares.get(i) ?? []), c]));
-      for (const i of highlighted) rowElement(i)?.classList.add('is-highlighted');
+      for (const [i, names] of rowMarks) rowElement(i)?.classList.add(...names);
       for (const [i, cols] of reads) for (const c of cols) rowElement(i)?.children[c]?.classList.add('is-read');
       for (const [i, cols] of compares) for (const c of cols) rowElement(i)?.children[c]?.classList.add('is-compared');
     },

@@ -30,14 +30,11 @@ export const PSEUDOCODE = {
   ],
 };
 
-// Whatever container the core used ({edges, atStart, next} arrays or a list of objects),
-// a list of {edge, metAtFirst, next}: metAtFirst = v is the Start / F is the Left face.
+// The core's steps ({edge, role: 'start'|'end', next} around a vertex; {edge, side:
+// 'left'|'right', next} along a face) as {edge, metAtFirst, next}: metAtFirst = v is the
+// Start / F is the Left face, the case that reads the first wing rule.
 export function normaliseSteps(raw, kind) {
-  const flag = kind === 'vertex' ? 'atStart' : 'faceIsLeft';
-  if (Array.isArray(raw)) return raw.map((s) => ({ edge: s.edge, metAtFirst: Boolean(s[flag] ?? s.atStart ?? s.isLeft), next: s.next }));
-  const out = [];
-  for (let i = 0; i < raw.edges.length; i += 1) out.push({ edge: raw.edges[i], metAtFirst: Boolean(raw[flag][i]), next: raw.next[i] });
-  return out;
+  return raw.map((s) => ({ edge: s.edge, metAtFirst: kind === 'vertex' ? s.role === 'start' : s.side === 'left', next: s.next }));
 }
 
 // Frame 0: initialise (the vertex or face table row and its edge column are read).
