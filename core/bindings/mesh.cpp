@@ -6,8 +6,11 @@
 
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/indexed_mesh.h"
+#include "wingspline/mesh/mesh_io.h"
+#include "wingspline/mesh/planes.h"
 #include "wingspline/mesh/winged_edge.h"
 
+#include <malloc.h>
 #include <memory>
 #include <unordered_map>
 
@@ -16,8 +19,8 @@ namespace {
 
 using namespace wingspline::mesh;
 
+// Only the winged edge is kept: the other representations are derived from it on demand.
 struct MeshEntry {
-    IndexedMesh source;
     WingedEdgeMesh winged;
 };
 
@@ -117,7 +120,7 @@ val named_value(const NamedMesh& n) {
 
 val mesh_build(val positions, val face_offsets, val face_vertices, val edges, val vertex_edges, val face_edges) {
     return guarded_build([&] {
-        IndexedMesh m = indexed_from(positions, face_offsets, face_vertices);
+        const IndexedMesh m = indexed_from(positions, face_offsets, face_vertices);
         BuildOptions options;
         const std::vector<int32_t> flat = to_ints(edges);
         for (std::size_t i = 0; i + 1 < flat.size(); i += 2) options.edges.push_back({flat[i], flat[i + 1]});
@@ -125,7 +128,6 @@ val mesh_build(val positions, val face_offsets, val face_vertices, val edges, va
         options.face_edges = to_ints(face_edges);
         auto e = std::make_unique<MeshEntry>();
         e->winged = WingedEdgeMesh::build(m, options);
-        e->source = std::move(m);
         const int32_t handle = registry().next_handle++;
         registry().meshes.emplace(handle, std::move(e));
         val r = val::object();
@@ -272,6 +274,130 @@ val mesh_validate(int32_t handle) {
     return guarded([&] { return report_value(entry(handle).winged.validate()); });
 }
 
+
+// ------------------------------------------------------------------ geometry
+
+// {cross: Float64Array (4 per face: A B C D), newell: Float64Array (4 per face), residual: Float64Array (1 per face)}
+val mesh_planes(int32_t handle) {
+    return guarded([&] {
+        const auto planes = face_planes(entry(handle).winged);
+        std::vector<double> cross, newell, residual;
+        for (const auto& p : planes) {
+            cross.insert(cross.end(), {p.cross.x, p.cross.y, p.cross.z, p.cross.w});
+            newell.insert(newell.end(), {p.newell.x, p.newell.y, p.newell.z, p.newell.w});
+            residual.push_back(p.residual);
+        }
+        val r = val::object();
+        r.set("cross", to_typed_array(cross));
+        r.set("newell", to_typed_array(newell));
+        r.set("residual", to_typed_array(residual));
+        return r;
+    });
+}
+
+// {normals: Float64Array (3 per face)}, Newell unit normals.
+val mesh_normals(int32_t handle) {
+    return guarded([&] {
+        std::vector<double> n;
+        newell_normals(entry(handle).winged, n);
+        val r = val::object();
+        r.set("normals", to_typed_array(n));
+        return r;
+    });
+}
+
+// Moves one vertex; reports how many stored entries each representation had to rewrite.
+val mesh_set_vertex_position(int32_t handle, int32_t v, double x, double y, double z) {
+    return guarded([&] {
+        MeshEntry& m = entry(handle);
+        require_vertex(m.winged, v);
+        m.winged.set_position(v, {x, y, z});
+        // Independent faces hold one coordinate copy per face corner at v.
+        const int32_t copies = static_cast<int32_t>(m.winged.faces_around_vertex(v).size());
+        val changed = val::object();
+        changed.set("independent-faces", copies);
+        changed.set("vertex-face-tables", 1);
+        changed.set("adjacency-lists", 1);
+        changed.set("edge-list", 1);
+        changed.set("winged-edge", 1);
+        val r = val::object();
+        r.set("changedEntries", changed);
+        return r;
+    });
+}
+
+// {bytes, perFace}: the winged-edge tables' own size.
+val mesh_bytes(int32_t handle) {
+    return guarded([&] {
+        const WingedEdgeMesh& w = entry(handle).winged;
+        val r = val::object();
+        r.set("bytes", static_cast<double>(w.bytes()));
+        return r;
+    });
+}
+
+// For the benchmark and leak tests: walks every vertex ring (BENCH.md mesh_ring).
+val mesh_ring_walk(int32_t handle) {
+    return guarded([&] {
+        const WingedEdgeMesh& w = entry(handle).winged;
+        double checksum = 0, visited = 0;
+        for (int32_t v = 0; v < w.vertex_count(); ++v) {
+            const int32_t first = w.vertex_edge(v);
+            if (first == kNone) continue;
+            int32_t e = first;
+            do {
+                const EdgeRecord& r = w.edge(e);
+                checksum += r.start == v ? r.end : r.start;
+                visited += 1;
+                e = r.start == v ? r.start_left : r.end_right;
+            } while (e != first);
+        }
+        val r = val::object();
+        r.set("visited", visited);
+        r.set("checksum", checksum);
+        return r;
+    });
+}
+
+// {linearBytes: size of the wasm memory, heapInUse: bytes malloc has handed out}
+val memory_usage() {
+    return guarded([] {
+        val r = val::object();
+        r.set("linearBytes", static_cast<double>(__builtin_wasm_memory_size(0)) * 65536.0);
+        r.set("heapInUse", static_cast<double>(mallinfo().uordblks));
+        return r;
+    });
+}
+
+// ------------------------------------------------------------------ files
+
+val mesh_parse(const std::string& text, const std::string& format) {
+    try {
+        if (format != "off" && format != "obj")
+            throw Error("unknown-format", "unknown mesh format '" + format + "'; use 'off' or 'obj'");
+        val r = indexed_value(format == "off" ? parse_off(text) : parse_obj(text));
+        r.set("ok", true);
+        return r;
+    } catch (const ParseError& e) {
+        val r = error_object(e.code(), e.what());
+        r.set("line", e.line());
+        return r;
+    } catch (...) {
+        return guarded([&]() -> val { throw; });
+    }
+}
+
+val mesh_format(val positions, val face_offsets, val face_vertices, const std::string& format) {
+    return guarded([&] {
+        const IndexedMesh m = indexed_from(positions, face_offsets, face_vertices);
+        if (format != "off" && format != "obj")
+            throw Error("unknown-format", "unknown mesh format '" + format + "'; use 'off' or 'obj'");
+        val r = val::object();
+        r.set("text", format == "off" ? format_off(m) : format_obj(m));
+        return r;
+    });
+}
+
 // ------------------------------------------------------------------ named meshes
 
 val named_mesh(const std::string& name, int32_t a, int32_t b) {
@@ -303,4 +429,12 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshCounts", &mesh_counts);
     emscripten::function("meshValidate", &mesh_validate);
     emscripten::function("meshNamed", &named_mesh);
+    emscripten::function("meshPlanes", &mesh_planes);
+    emscripten::function("meshNormals", &mesh_normals);
+    emscripten::function("meshSetVertexPosition", &mesh_set_vertex_position);
+    emscripten::function("meshBytes", &mesh_bytes);
+    emscripten::function("meshParse", &mesh_parse);
+    emscripten::function("meshFormat", &mesh_format);
+    emscripten::function("meshRingWalk", &mesh_ring_walk);
+    emscripten::function("memoryUsage", &memory_usage);
 }

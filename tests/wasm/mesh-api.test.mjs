@@ -66,3 +66,52 @@ test('a refused mesh throws its first problem code and lists every problem in de
     err.details.some((p) => p.code === 'non-manifold-edge' && p.elements.faces.join() === '0,1,2'));
   assert.equal(api.liveMeshCount(), 0);
 });
+
+test('10,000 failing calls leave the module usable; 1,000 build/dispose cycles do not grow the heap', () => {
+  const { positions } = api.lectureExample();
+  for (let i = 0; i < 10000; i += 1) {
+    assert.throws(() => api.buildMesh({ positions, faces: [[0, 1, 9]] }), (err) => err.code === 'index-out-of-range');
+  }
+  const input = api.lectureExample();
+  api.buildMesh(input).dispose();
+  const before = api.memoryUsage();
+  for (let i = 0; i < 1000; i += 1) {
+    const mesh = api.buildMesh(input);
+    mesh.dispose();
+    mesh.dispose(); // idempotent
+    assert.throws(() => mesh.wingedEdge(), (err) => err.code === 'disposed');
+  }
+  const after = api.memoryUsage();
+  assert.equal(api.liveMeshCount(), 0);
+  assert.equal(after.linearBytes, before.linearBytes);
+  assert.equal(after.heapInUse, before.heapInUse);
+});
+
+test('OFF/OBJ parse with line-numbered errors and round-trip bit for bit', () => {
+  const sphere = api.generateMesh('sphere', { slices: 7, stacks: 4 });
+  const back = api.parseMesh(api.formatMesh(sphere, { format: 'obj' }), { format: 'obj' });
+  assert.ok(back.positions instanceof Float64Array);
+  assert.deepEqual(back.positions, sphere.positions);
+  assert.deepEqual(back.faces, sphere.faces);
+  assert.throws(() => api.parseMesh('OFF\n3 1 0\n0 0 0\n1 x 0\n', { format: 'off' }),
+    (err) => err.code === 'parse-error' && err.line === 4 && /line 4/.test(err.message));
+});
+
+test('generated meshes: closed solids have Euler 2, normals are unit, planes have both forms', () => {
+  for (const kind of ['tetrahedron', 'cube', 'sphere']) {
+    withMesh(api.generateMesh(kind), (mesh) => {
+      assert.equal(mesh.counts().euler, 2, kind);
+      const n = mesh.normals();
+      for (let f = 0; f < n.length / 3; f += 1) {
+        assert.ok(Math.abs(Math.hypot(n[3 * f], n[3 * f + 1], n[3 * f + 2]) - 1) < 1e-12);
+      }
+      const planes = mesh.planes();
+      assert.equal(planes.length, mesh.counts().faces);
+      assert.equal(planes[0].cross.length, 4);
+    });
+  }
+  withMesh(api.generateMesh('cube'), (mesh) => {
+    // Vertex 0 is a corner of 3 quads: independent faces rewrite 3 copies, the others 1 entry.
+    assert.equal(mesh.setVertexPosition(0, [0, 0, 0]).changedEntries['independent-faces'], 3);
+  });
+});

@@ -185,6 +185,38 @@ export class Mesh {
     return c;
   }
 
+  // Plane equations per face: [{cross: [A, B, C, D], newell: [A, B, C, D], residual}].
+  planes() {
+    const r = unwrap(this.#raw.meshPlanes(this.#live()));
+    return Array.from(r.residual, (residual, f) => ({
+      cross: Array.from(r.cross.subarray(4 * f, 4 * f + 4)),
+      newell: Array.from(r.newell.subarray(4 * f, 4 * f + 4)),
+      residual,
+    }));
+  }
+
+  // Newell unit normals, normals[3*f + k].
+  normals() { return unwrap(this.#raw.meshNormals(this.#live())).normals; }
+
+  // Moves vertex v; {changedEntries: {'independent-faces': copies rewritten, ...: 1}}.
+  setVertexPosition(v, position) {
+    integerIn(v, 'vertex', 0, INT32_MAX);
+    if (!isNumberArray(position) || position.length !== 3 || !Array.from(position).every(Number.isFinite)) {
+      fail('invalid-argument', 'the position must be three finite numbers [x, y, z]');
+    }
+    const r = unwrap(this.#raw.meshSetVertexPosition(this.#live(), v, position[0], position[1], position[2]));
+    return { changedEntries: r.changedEntries };
+  }
+
+  // Walks every vertex ring in C++ (the mesh_ring benchmark): {visited, checksum}.
+  ringWalk() {
+    const { visited, checksum } = unwrap(this.#raw.meshRingWalk(this.#live()));
+    return { visited, checksum };
+  }
+
+  // Bytes held by the winged-edge tables (vertex, edge and face tables).
+  bytes() { return unwrap(this.#raw.meshBytes(this.#live())).bytes; }
+
   // {ok, problems: [{code, severity, message, elements: {vertices, edges, faces}}]}
   validate() {
     const r = unwrap(this.#raw.meshValidate(this.#live()));
@@ -223,6 +255,28 @@ export function createMeshApi(raw) {
       const { positions, faceOffsets, faceVertices } = indexedInput(input);
       const r = unwrap(raw.meshValidateIndexed(positions, faceOffsets, faceVertices));
       return { ok: r.valid, problems: r.problems };
+    },
+    // Text -> {positions, faces}. Errors: 'parse-error', 'truncated-file',
+    // 'index-out-of-range' with error.line (1-based) and the line in the message.
+    parseMesh(text, { format = 'off', layout } = {}) {
+      if (typeof text !== 'string') fail('invalid-argument', 'parseMesh needs the file contents as a string');
+      const r = raw.meshParse(text, String(format));
+      if (!r.ok) {
+        const err = new WingsplineError(r.code, r.message);
+        if (r.line !== undefined) err.line = r.line;
+        throw err;
+      }
+      return indexedOutput(r, layout);
+    },
+    // {positions, faces} -> OFF or OBJ text; numbers as %.17g, so reading it back is exact.
+    formatMesh(input, { format = 'off' } = {}) {
+      const { positions, faceOffsets, faceVertices } = indexedInput(input);
+      return unwrap(raw.meshFormat(positions, faceOffsets, faceVertices, String(format))).text;
+    },
+    // {linearBytes, heapInUse} of the wasm module (leak tests, mesh_memory).
+    memoryUsage() {
+      const { linearBytes, heapInUse } = unwrap(raw.memoryUsage());
+      return { linearBytes, heapInUse };
     },
     // How many built meshes have not been disposed (for leak tests).
     liveMeshCount() {

@@ -1,0 +1,70 @@
+#include "wingspline/mesh/planes.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace wingspline::mesh {
+
+glm::dvec3 newell_vector(const double* p, const int32_t* corners, int32_t n) {
+    glm::dvec3 s(0.0);
+    for (int32_t i = 0; i < n; ++i) {
+        const double* a = p + 3 * corners[i];
+        const double* b = p + 3 * corners[i + 1 == n ? 0 : i + 1];
+        s.x += (a[2] + b[2]) * (a[1] - b[1]);
+        s.y += (a[0] + b[0]) * (a[2] - b[2]);
+        s.z += (a[1] + b[1]) * (a[0] - b[0]);
+    }
+    return 0.5 * s;
+}
+
+std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh) {
+    std::vector<FacePlane> out(mesh.face_count());
+    for (int32_t f = 0; f < mesh.face_count(); ++f) {
+        const std::vector<int32_t> c = mesh.vertices_of_face(f);
+        const glm::dvec3 p1 = mesh.position(c[0]), p2 = mesh.position(c[1]), p3 = mesh.position(c[2]);
+        const glm::dvec3 n = glm::cross(p2 - p1, p3 - p1);
+        const glm::dvec3 nn = newell_vector(mesh.positions().data(), c.data(), static_cast<int32_t>(c.size()));
+        glm::dvec3 centroid(0.0);
+        for (int32_t v : c) centroid += mesh.position(v);
+        centroid /= static_cast<double>(c.size());
+        const double dn = -glm::dot(nn, centroid);
+        double residual = 0;
+        const double len = glm::length(nn);
+        if (len > 0)
+            for (int32_t v : c) residual = std::max(residual, std::abs(glm::dot(nn, mesh.position(v)) + dn) / len);
+        out[f] = {glm::dvec4(n, -glm::dot(n, p1)), glm::dvec4(nn, dn), residual};
+    }
+    return out;
+}
+
+void newell_normals(const WingedEdgeMesh& mesh, std::vector<double>& normals) {
+    const int32_t F = mesh.face_count();
+    normals.resize(3 * static_cast<std::size_t>(F));
+    const double* p = mesh.positions().data();
+    for (int32_t f = 0; f < F; ++f) {
+        // Walk the face's edges (lecture rule: L -> endLeft, R -> startRight), summing
+        // Newell's terms for the directed side (a -> b) each edge contributes.
+        double sx = 0, sy = 0, sz = 0;
+        const int32_t first = mesh.face_edge(f);
+        int32_t e = first;
+        do {
+            const EdgeRecord& r = mesh.edge(e);
+            const bool left = r.left == f;
+            const double* a = p + 3 * (left ? r.start : r.end);
+            const double* b = p + 3 * (left ? r.end : r.start);
+            sx += (a[2] + b[2]) * (a[1] - b[1]);
+            sy += (a[0] + b[0]) * (a[2] - b[2]);
+            sz += (a[1] + b[1]) * (a[0] - b[0]);
+            e = left ? r.end_left : r.start_right;
+        } while (e != first);
+        const double len = std::sqrt(sx * sx + sy * sy + sz * sz);
+        const double inv = len > 0 ? 1.0 / len : 0.0;
+        normals[3 * f] = sx * inv;
+        normals[3 * f + 1] = sy * inv;
+        normals[3 * f + 2] = sz * inv;
+    }
+}
+
+} // namespace wingspline::mesh

@@ -1,0 +1,91 @@
+// BENCH.md mesh tasks, native: mesh_build, mesh_ring, mesh_normals, mesh_memory on
+// sphere_F and grid_F for F = 10k, 100k, 1M.
+#include "bench.h"
+
+#include "wingspline/mesh/generators.h"
+#include "wingspline/mesh/planes.h"
+#include "wingspline/mesh/winged_edge.h"
+
+#include <fstream>
+#include <malloc.h>
+#include <unistd.h>
+
+using namespace wingspline::mesh;
+using namespace wingspline::bench;
+
+namespace {
+
+struct Input {
+    std::string name;
+    IndexedMesh mesh;
+};
+
+std::vector<Input> inputs() {
+    return {{"sphere_10000", uv_sphere(100, 51)},   {"grid_10000", grid(100, 50)},
+            {"sphere_100000", uv_sphere(250, 201)}, {"grid_100000", grid(250, 200)},
+            {"sphere_1000000", uv_sphere(1000, 501)}, {"grid_1000000", grid(1000, 500)}};
+}
+
+double resident_bytes() {
+    std::ifstream statm("/proc/self/statm");
+    double size = 0, resident = 0;
+    statm >> size >> resident;
+    return resident * static_cast<double>(sysconf(_SC_PAGESIZE));
+}
+
+} // namespace
+
+WINGSPLINE_BENCH(mesh) {
+    if (!ctx.wants("mesh_")) return;
+    constexpr int kRepetitions = 7;
+    for (const Input& in : inputs()) {
+        const double F = in.mesh.face_count();
+        if (ctx.wants("mesh_memory")) {
+            malloc_trim(0);
+            const double before = resident_bytes();
+            WingedEdgeMesh m = WingedEdgeMesh::build(in.mesh);
+            malloc_trim(0);
+            const double growth = resident_bytes() - before;
+            std::vector<double> one{growth};
+            report("mesh_memory", in.name, F, one, static_cast<double>(m.edge_count()),
+                   ",\"unit\":\"B/face\",\"structure_bytes_per_face\":" + std::to_string(m.bytes() / F), "B");
+        }
+        if (ctx.wants("mesh_build")) {
+            double checksum = 0;
+            const auto seconds = time_runs(kRepetitions, [&] {
+                WingedEdgeMesh m = WingedEdgeMesh::build(in.mesh);
+                checksum += m.edge(m.edge_count() - 1).end_right + m.edge_count();
+            });
+            report("mesh_build", in.name, F, seconds, checksum);
+        }
+        const WingedEdgeMesh m = WingedEdgeMesh::build(in.mesh);
+        if (ctx.wants("mesh_ring")) {
+            double checksum = 0, visited = 0;
+            const auto seconds = time_runs(kRepetitions, [&] {
+                checksum = 0;
+                visited = 0;
+                for (int32_t v = 0; v < m.vertex_count(); ++v) {
+                    const int32_t first = m.vertex_edge(v);
+                    if (first == kNone) continue;
+                    int32_t e = first;
+                    do {
+                        const EdgeRecord& r = m.edge(e);
+                        checksum += r.start == v ? r.end : r.start;
+                        visited += 1;
+                        e = r.start == v ? r.start_left : r.end_right;
+                    } while (e != first);
+                }
+            });
+            report("mesh_ring", in.name, visited, seconds, checksum);
+        }
+        if (ctx.wants("mesh_normals")) {
+            std::vector<double> normals;
+            double checksum = 0;
+            const auto seconds = time_runs(kRepetitions, [&] {
+                newell_normals(m, normals);
+                checksum += normals[0] + normals[normals.size() - 1];
+            });
+            report("mesh_normals", in.name, F, seconds, checksum);
+        }
+    }
+}

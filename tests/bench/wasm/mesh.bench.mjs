@@ -1,0 +1,51 @@
+// BENCH.md mesh tasks in wasm under Node, through the public API (one call per mesh).
+import { loadWingspline } from 'wingspline';
+import { wants, timeRuns, report } from './harness.mjs';
+
+const api = await loadWingspline();
+const R = 7;
+const inputs = [
+  ['sphere_10000', 'sphere', { slices: 100, stacks: 51 }], ['grid_10000', 'grid', { nx: 100, ny: 50 }],
+  ['sphere_100000', 'sphere', { slices: 250, stacks: 201 }], ['grid_100000', 'grid', { nx: 250, ny: 200 }],
+  ['sphere_1000000', 'sphere', { slices: 1000, stacks: 501 }], ['grid_1000000', 'grid', { nx: 1000, ny: 500 }],
+];
+
+if (wants('mesh_')) {
+  for (const [name, kind, options] of inputs) {
+    const input = api.generateMesh(kind, { ...options, layout: 'csr' });
+    const F = input.faceOffsets.length - 1;
+    if (wants('mesh_memory')) {
+      const before = api.memoryUsage();
+      const mesh = api.buildMesh(input);
+      const after = api.memoryUsage();
+      report({ task: 'mesh_memory', input: name, n: F, seconds: [after.heapInUse - before.heapInUse], unit: 'B',
+        checksum: mesh.counts().edges, structure_bytes_per_face: mesh.bytes() / F,
+        linear_memory_growth_per_face: (after.linearBytes - before.linearBytes) / F });
+      mesh.dispose();
+    }
+    if (wants('mesh_build')) {
+      let checksum = 0;
+      const seconds = timeRuns(R, () => {
+        const mesh = api.buildMesh(input);
+        checksum += mesh.bytes();
+        mesh.dispose();
+      });
+      report({ task: 'mesh_build', input: name, n: F, seconds, checksum });
+    }
+    const mesh = api.buildMesh(input);
+    try {
+      if (wants('mesh_ring')) {
+        let walk;
+        const seconds = timeRuns(R, () => { walk = mesh.ringWalk(); });
+        report({ task: 'mesh_ring', input: name, n: walk.visited, seconds, checksum: walk.checksum });
+      }
+      if (wants('mesh_normals')) {
+        let checksum = 0;
+        const seconds = timeRuns(R, () => { const n = mesh.normals(); checksum += n[0] + n[n.length - 1]; });
+        report({ task: 'mesh_normals', input: name, n: F, seconds, checksum });
+      }
+    } finally {
+      mesh.dispose();
+    }
+  }
+}
