@@ -118,10 +118,10 @@ export function setupPanels(ctx) {
     h('div', { class: 'walk-choice' }, labelled('Walk', walkKind), walkElementLabel, walkElement),
     code,
     h('div', { class: 'walk-controls', role: 'group', 'aria-label': 'Walk player' },
-      button('⏮', () => player.restart(), 'Restart (Home)'),
-      button('◀', () => player.prev(), 'Step back (← or PageUp)'),
+      button('Restart', () => player.restart(), 'Restart (Home)'),
+      button('◀ Back', () => player.prev(), 'Step back (← or PageUp)'),
       playButton,
-      button('▶|', () => player.next(), 'Step forward (→ or PageDown)'),
+      button('Step ▶', () => player.next(), 'Step forward (→ or PageDown)'),
       labelled('speed', speed), stepLabel),
     narration, found);
 

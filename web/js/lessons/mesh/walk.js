@@ -13,20 +13,20 @@ export const FACE_EDGE_COLUMN = 1;
 
 export const PSEUDOCODE = {
   vertex: [
-    'Initialize: e₀ ← the edge stored for v (vertex table); e ← e₀',
+    'Initialize: e₀ ← edge of v (vertex table); e ← e₀',
     'Do: report e',
-    '    if v is the Start of e: e ← S:L(e)   (left wing at the Start)',
-    '    otherwise:              e ← E:R(e)   (right wing at the End)',
-    "While: e ≠ e₀ (haven't cycled back to the start edge)",
-    'Done: every edge around v, counter-clockwise',
+    '  if v = S(e): e ← S:L(e)  (left wing, Start)',
+    '  otherwise:   e ← E:R(e)  (right wing, End)',
+    'While: e ≠ e₀ (not back at the first edge)',
+    'Done: all edges around v, CCW',
   ],
   face: [
-    'Initialize: e₀ ← the edge stored for F (face table); e ← e₀',
+    'Initialize: e₀ ← edge of F (face table); e ← e₀',
     'Do: report e',
-    '    if F is the Left face of e: e ← E:L(e)   (left wing at the End)',
-    '    otherwise:                 e ← S:R(e)   (right wing at the Start)',
-    "While: e ≠ e₀ (haven't cycled back to the start edge)",
-    'Done: every edge of F, counter-clockwise',
+    '  if F = L(e): e ← E:L(e)  (left wing, End)',
+    '  otherwise:   e ← S:R(e)  (right wing, Start)',
+    'While: e ≠ e₀ (not back at the first edge)',
+    'Done: all edges of F, CCW',
   ],
 };
 

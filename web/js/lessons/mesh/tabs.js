@@ -1,0 +1,282 @@
+// The representations of one mesh as live tables (lecture 000: independent faces, vertex
+// and face tables, adjacency lists, winged edge; lecture 001: pointers to an edge list), the
+// queries compared, storage with the lectures' pros and cons, and plane equations. Tables
+// are virtual (virtual-table.js): a 100,000-face mesh only builds the rows in view, and the
+// adjacency rows ask the core only for those rows.
+import { h } from '../../app/dom.js';
+import { createVirtualTable } from './virtual-table.js';
+import { EDGE_COLUMNS } from './walk.js';
+import { num } from './labels.js';
+
+const sub = (letter, i) => (i >= 0 ? h('span', { class: 'lbl' }, letter, h('sub', {}, String(i + 1))) : '');
+const V = (i) => sub('v', i);
+const E = (i) => sub('e', i);
+const F = (i) => sub('F', i);
+const lambda = (node) => (node === '' ? 'λ' : node);
+const xyz = (P, v) => `(${num(P[3 * v])}, ${num(P[3 * v + 1])}, ${num(P[3 * v + 2])})`;
+const listOf = (indices, label) => {
+  const items = Array.from(indices).filter((i) => i >= 0);
+  const out = [];
+  items.forEach((i, k) => { if (k) out.push(' '); out.push(label(i)); });
+  return out.length ? out : '—';
+};
+
+// Lectures 000 (✓/✗ bullets) and 003 (polygon list / vertex list / edge list), quoted.
+export const PROS_CONS = {
+  'independent-faces': { title: 'Independent faces (polygon list)', pros: ['simplest representation (003)'],
+    cons: ['redundant vertices: changing a vertex changes each instance (000)', 'no efficient/precise vertex-adjacency info (000)', 'shared edges are drawn twice (003)'] },
+  'vertex-face-tables': { title: 'Vertex and face tables (vertex list)', pros: ['shared vertices: changing a vertex changes a single point (000)', 'compact and moving vertices is easy (003)'],
+    cons: ['no efficient adjacency info (000)', 'difficult to find polygons that share an edge (003)'] },
+  'adjacency-lists': { title: 'Adjacency lists', pros: ['efficient adjacency info (000)'], cons: ['extra storage (000)', 'variable size arrays (000)'] },
+  'edge-list': { title: 'Pointers to an edge list (Foley, 001)', pros: ['shared edges are not drawn twice (003)', 'adjacent polygons are readily apparent from the edge records (003)'],
+    cons: ['which edges are incident to a vertex is not easy: all edges must be inspected (001)', 'takes up a lot of storage (003)'] },
+  'winged-edge': { title: 'Winged edge', pros: ['all adjacencies in O(1) time', 'little extra storage', 'fixed-size records', 'supports polygonal faces'],
+    cons: ['mesh needs to be oriented'] },
+};
+
+export function createRepresentationTabs(ctx, labels) {
+  const tabIds = Object.keys(labels);
+  const tablist = h('div', { class: 'mesh-tabs', role: 'tablist', 'aria-label': 'Representations' });
+  const panels = {};
+  const buttons = {};
+  for (const id of tabIds) {
+    buttons[id] = h('button', { type: 'button', role: 'tab', id: `tab-${id}`, 'aria-controls': `tabpanel-${id}`, 'data-tab': id,
+      onclick: () => ctx.commit({ ...ctx.state, tab: id }, { history: false }) }, labels[id]);
+    panels[id] = h('div', { role: 'tabpanel', id: `tabpanel-${id}`, 'aria-labelledby': `tab-${id}`, class: 'mesh-tabpanel', hidden: true });
+    tablist.append(buttons[id]);
+  }
+  tablist.addEventListener('keydown', (event) => {
+    if (event.key !== 'ArrowRight' && event.key !== 'ArrowLeft') return;
+    event.stopPropagation();
+    event.preventDefault();
+    const i = tabIds.indexOf(ctx.state.tab);
+    const next = tabIds[(i + (event.key === 'ArrowRight' ? 1 : -1) + tabIds.length) % tabIds.length];
+    ctx.commit({ ...ctx.state, tab: next }, { history: false });
+    buttons[next].focus();
+  });
+  const root = h('section', { class: 'mesh-representations', 'aria-label': 'Representations' }, tablist, ...Object.values(panels));
+
+  let model = null;
+  const hoverRow = (kind) => (index) => { ctx.ui.meshHover = { kind, index }; markElements(); ctx.render(); };
+  const leave = () => { ctx.ui.meshHover = null; markElements(); ctx.render(); };
+  const pickRow = (kind) => (index) => ctx.meshPanels.pickElement({ kind, index });
+  const table = (spec) => createVirtualTable({ onRowEnter: hoverRow(spec.kind), onRowLeave: leave, onRowClick: pickRow(spec.kind), ...spec });
+
+  // ------------------------------------------------------------ winged edge (lecture 000)
+  const tables = {
+    wingedVertex: table({ id: 'we-vertex-table', kind: 'vertex', caption: 'VERTEX TABLE', head: [['', 'x', 'y', 'z', 'edge']],
+      rowLabel: V, row: (v) => [num(model.positions[3 * v]), num(model.positions[3 * v + 1]), num(model.positions[3 * v + 2]), E(model.we.vertexEdge[v])] }),
+    wingedEdge: table({ id: 'we-edge-table', kind: 'edge', caption: 'EDGE TABLE',
+      head: [[{ text: '', colspan: 5 }, { text: 'S', colspan: 2 }, { text: 'E', colspan: 2 }], ['', 'S', 'E', 'L', 'R', 'L', 'R', 'L', 'R']],
+      rowLabel: E, row: (e) => {
+        const r = model.we.edges.subarray(8 * e, 8 * e + 8);
+        return [V(r[0]), V(r[1]), F(r[2]), F(r[3]), E(r[4]), E(r[5]), E(r[6]), E(r[7])];
+      } }),
+    wingedFace: table({ id: 'we-face-table', kind: 'face', caption: 'FACE TABLE', head: [['', 'edge']], rowLabel: F, row: (f) => [E(model.we.faceEdge[f])] }),
+    // ---------------------------------------------------------- independent faces (000)
+    independent: table({ id: 'independent-face-table', kind: 'face', caption: 'FACE TABLE (each face lists vertex coordinates)',
+      head: [['', 'corners (x, y, z)']], rowLabel: F, row: (f) => model.faces[f].map((v) => xyz(model.positions, v)) }),
+    // ---------------------------------------------------------- vertex and face tables (000)
+    vfVertex: table({ id: 'vf-vertex-table', kind: 'vertex', caption: 'VERTEX TABLE', head: [['', 'X', 'Y', 'Z']], rowLabel: V,
+      row: (v) => [num(model.positions[3 * v]), num(model.positions[3 * v + 1]), num(model.positions[3 * v + 2])] }),
+    vfFace: table({ id: 'vf-face-table', kind: 'face', caption: 'FACE TABLE (each face lists vertex references)', head: [['', 'vertices']], rowLabel: F,
+      row: (f) => model.faces[f].map((v) => V(v)) }),
+    // ---------------------------------------------------------- adjacency lists (000)
+    adjVertex: table({ id: 'adj-vertex-table', kind: 'vertex', caption: 'Per vertex (counter-clockwise)', head: [['', 'vertices', 'edges', 'faces']], rowLabel: V,
+      row: (v) => [listOf(model.mesh.verticesAroundVertex(v), V), listOf(model.mesh.edgesAroundVertex(v), E), listOf(model.mesh.facesAroundVertex(v), F)] }),
+    adjFace: table({ id: 'adj-face-table', kind: 'face', caption: 'Per face', head: [['', 'vertices', 'edges', 'faces']], rowLabel: F,
+      row: (f) => [listOf(model.mesh.verticesOfFace(f), V), listOf(model.mesh.edgesOfFace(f), E), listOf(model.mesh.faceNeighbours(f), F)] }),
+    // ---------------------------------------------------------- pointers to an edge list (001)
+    foleyVertex: table({ id: 'foley-vertex-table', kind: 'vertex', caption: 'V = (V₁, V₂, …)', head: [['', '(x, y, z)']], rowLabel: (v) => sub('V', v),
+      row: (v) => [xyz(model.positions, v)] }),
+    foleyEdge: table({ id: 'foley-edge-table', kind: 'edge', caption: 'Eᵢ = (V₁, V₂, P₁, P₂)   (λ: no polygon on that side)', head: [['', 'V₁', 'V₂', 'P₁', 'P₂']], rowLabel: (e) => sub('E', e),
+      row: (e) => {
+        const r = model.we.edges.subarray(8 * e, 8 * e + 4);
+        return [sub('V', r[0]), sub('V', r[1]), lambda(sub('P', r[2])), lambda(sub('P', r[3]))];
+      } }),
+    foleyPolygon: table({ id: 'foley-polygon-table', kind: 'face', caption: 'Pᵢ = (E…)', head: [['', 'edges']], rowLabel: (f) => sub('P', f),
+      row: (f) => listOf(model.mesh.edgesOfFace(f), (e) => sub('E', e)) }),
+    // ---------------------------------------------------------- planes (001, 003)
+    planes: table({ id: 'plane-table', kind: 'face', caption: 'Ax + By + Cz + D = 0 per face',
+      head: [[{ text: '', colspan: 1 }, { text: 'cross product P₁P₂ × P₁P₃ (001)', colspan: 4 }, { text: 'Newell (003)', colspan: 4 }, { text: '', colspan: 2 }],
+        ['', 'A', 'B', 'C', 'D', 'A', 'B', 'C', 'D', 'unit normal (Newell)', 'planarity residual']],
+      rowLabel: F, row: (f) => {
+        const p = model.derived.planes[f];
+        const n = model.derived.normals;
+        return [...p.cross.map((x) => num(x)), ...p.newell.map((x) => num(x)), `(${num(n[3 * f], 3)}, ${num(n[3 * f + 1], 3)}, ${num(n[3 * f + 2], 3)})`, num(p.residual, 3)];
+      } }),
+  };
+
+  // ------------------------------------------------------------ fill the panels
+  const changeNote = (id) => h('p', { class: 'change-note', id, 'aria-live': 'polite' });
+  const notes = { faces: changeNote('change-independent'), vf: changeNote('change-vertex-face'), winged: changeNote('change-winged') };
+  panels.winged.append(h('p', { class: 'hint' }, 'Baumgart\'s winged edge as on the slide: S, E (start and end vertex), L, R (left and right face) and the four wings: the left and right edge at the Start, and at the End. Boundary edges have one face; their wings treat the boundary as a face.'),
+    notes.winged, tables.wingedVertex.root, tables.wingedEdge.root, tables.wingedFace.root);
+  panels.faces.append(h('p', { class: 'hint' }, 'Each face lists vertex coordinates (lecture 000): changing a vertex requires changing the coordinates of each instance. Drag a vertex and count.'),
+    notes.faces, tables.independent.root);
+  panels['vertex-face'].append(h('p', { class: 'hint' }, 'Each face lists vertex references: changing a vertex changes a single point.'), notes.vf, tables.vfVertex.root, tables.vfFace.root);
+  panels.adjacency.append(h('p', { class: 'hint' }, 'All vertex, edge and face adjacencies stored per element (here read from the winged edge, in CCW order).'),
+    tables.adjVertex.root, tables.adjFace.root);
+  panels['edge-list'].append(h('p', { class: 'hint' }, 'Foley & van Dam: each edge stores its two vertices and the polygons on either side; a polygon is a list of pointers to edges.'),
+    tables.foleyVertex.root, tables.foleyEdge.root, tables.foleyPolygon.root);
+
+  const queryPanel = createQueryPanel(ctx);
+  panels.queries.append(queryPanel.root);
+  const storageBody = h('div', { id: 'storage-body' });
+  panels.storage.append(storageBody);
+  const planeNote = h('p', { class: 'hint', id: 'plane-note' });
+  panels.planes.append(h('p', { class: 'hint' }, 'From three vertices: (A, B, C) = P₁P₂ × P₁P₃ and D by substitution (001). Newell (003): A = ½ Σ (zᵢ + zᵢ₊₁)(yᵢ − yᵢ₊₁), B = ½ Σ (xᵢ + xᵢ₊₁)(zᵢ − zᵢ₊₁), C = ½ Σ (yᵢ + yᵢ₊₁)(xᵢ − xᵢ₊₁).'),
+    planeNote, tables.planes.root);
+
+  const tabTables = {
+    winged: ['wingedVertex', 'wingedEdge', 'wingedFace'], faces: ['independent'], 'vertex-face': ['vfVertex', 'vfFace'],
+    adjacency: ['adjVertex', 'adjFace'], 'edge-list': ['foleyVertex', 'foleyEdge', 'foleyPolygon'], planes: ['planes'],
+  };
+  const tableKind = {
+    wingedVertex: 'vertex', wingedEdge: 'edge', wingedFace: 'face', independent: 'face', vfVertex: 'vertex', vfFace: 'face',
+    adjVertex: 'vertex', adjFace: 'face', foleyVertex: 'vertex', foleyEdge: 'edge', foleyPolygon: 'face', planes: 'face',
+  };
+  const counts = { vertex: () => model.V, edge: () => model.E, face: () => model.F };
+  const drawnVersion = {};
+
+  // Walk marks (current row, the column read) plus the hovered and picked element.
+  function markElements({ reveal = false } = {}) {
+    if (!model) return;
+    const frame = model.frame;
+    const tab = ctx.state.tab;
+    for (const name of tabTables[tab] ?? []) {
+      const kind = tableKind[name];
+      const rows = { 'is-hovered': [], 'is-picked': [], 'is-highlighted': [] };
+      const read = [];
+      const compared = [];
+      if (ctx.ui.meshHover?.kind === kind) rows['is-hovered'].push(ctx.ui.meshHover.index);
+      if (ctx.ui.meshPick?.kind === kind) rows['is-picked'].push(ctx.ui.meshPick.index);
+      if (frame && tab === 'winged') {
+        const walkTable = frame.table === 'edge' ? 'wingedEdge' : frame.table === 'vertex' ? 'wingedVertex' : 'wingedFace';
+        if (walkTable === name) {
+          rows['is-highlighted'].push(frame.row);
+          if (frame.read !== null) read.push([frame.row, frame.read]);
+          if (frame.compared !== null) compared.push([frame.row, frame.compared]);
+        }
+      }
+      tables[name].mark({ rows, read, compared });
+      if (reveal && ctx.ui.meshPick?.kind === kind) tables[name].reveal(ctx.ui.meshPick.index);
+      else if (frame && tab === 'winged' && rows['is-highlighted'].length) tables[name].reveal(frame.row);
+    }
+  }
+
+  function describeChange(change) {
+    if (!change) return 'Drag a vertex: this line counts the stored entries each representation had to rewrite.';
+    const c = change.changed.changedEntries;
+    const label = `v${change.vertex + 1}`;
+    return `Last move of ${label}: independent faces rewrote ${c['independent-faces']} coordinate triple${c['independent-faces'] === 1 ? '' : 's'} (one per face at ${label}); the vertex and face tables, adjacency lists, edge list and winged edge rewrote ${c['vertex-face-tables']}.`;
+  }
+
+  function updateStorage() {
+    const c = model.counts;
+    const bytes = model.mesh.bytes();
+    storageBody.replaceChildren(
+      h('p', {}, `V = ${c.vertices}, E = ${c.edges}, F = ${c.faces}; boundary edges ${c.boundaryEdges}, boundary loops ${c.boundaryLoops}; Euler characteristic V − E + F = ${c.euler}.`),
+      h('p', { id: 'storage-winged' }, `The winged-edge tables of this mesh hold ${bytes.toLocaleString('en')} bytes (${num(bytes / Math.max(1, c.faces), 4)} bytes per face), as reported by the core.`),
+      ...Object.values(PROS_CONS).map((r) => h('div', { class: 'pros-cons' }, h('h3', {}, r.title),
+        h('ul', {}, r.pros.map((p) => h('li', { class: 'pro' }, h('span', { 'aria-label': 'advantage' }, '✓ '), p)),
+          r.cons.map((p) => h('li', { class: 'con' }, h('span', { 'aria-label': 'disadvantage' }, '✗ '), p))))),
+    );
+  }
+
+  function ensurePlanes() {
+    if (!model.derived.planes) {
+      model.derived.planes = model.mesh.planes();
+      model.derived.normals = model.mesh.normals();
+    }
+    const worst = model.derived.planes.reduce((m, p) => Math.max(m, p.residual), 0);
+    planeNote.textContent = model.is3dMesh
+      ? `Largest planarity residual: ${num(worst, 3)} (0 for planar faces). The cross product uses only the first three vertices; Newell averages over all of them.`
+      : 'This mesh lies in the plane z = 0, so every normal is ±(0, 0, 1): choose the tetrahedron, cube or sphere, or drag in the 3D view, to see real planes.';
+  }
+
+  return {
+    root,
+    markElements,
+    update(next, state) {
+      model = next;
+      for (const id of tabIds) {
+        const on = state.tab === id;
+        buttons[id].setAttribute('aria-selected', String(on));
+        buttons[id].tabIndex = on ? 0 : -1;
+        panels[id].hidden = !on;
+      }
+      const dataKey = `${model.topology}:${model.version}`;
+      for (const name of tabTables[state.tab] ?? []) {
+        if (name === 'planes') ensurePlanes();
+        if (drawnVersion[name] !== dataKey) {
+          drawnVersion[name] = dataKey;
+          tables[name].refresh(counts[tableKind[name]]());
+        }
+      }
+      const change = describeChange(model.lastChange);
+      for (const note of Object.values(notes)) note.textContent = change;
+      if (state.tab === 'storage') updateStorage();
+      if (state.tab === 'queries') queryPanel.update(model, state);
+      markElements();
+    },
+  };
+}
+
+// "Faces around v", "edges of F", "faces sharing e": the winged edge answers from the
+// core; where the core also reports each representation's answer and the table entries it
+// read (mesh.query), they are compared side by side.
+function createQueryPanel(ctx) {
+  const kind = h('select', { id: 'query-kind', 'aria-label': 'Query' },
+    h('option', { value: 'faces-around-vertex' }, 'faces around v'), h('option', { value: 'edges-of-face' }, 'edges of F'), h('option', { value: 'faces-of-edge' }, 'faces sharing e'));
+  const element = h('input', { type: 'number', id: 'query-element', min: 1, step: 1, 'aria-label': 'Element number (1-based)' });
+  const prefix = h('span', { 'aria-hidden': 'true' }, 'v');
+  const result = h('div', { id: 'query-result', 'aria-live': 'polite' });
+  const field = { 'faces-around-vertex': 'vertex', 'edges-of-face': 'face', 'faces-of-edge': 'edge' };
+  const letter = { vertex: 'v', face: 'F', edge: 'e' };
+  kind.addEventListener('change', () => ctx.commit({ ...ctx.state, query: { ...ctx.state.query, kind: kind.value } }, { history: false }));
+  element.addEventListener('change', () => {
+    const f = field[ctx.state.query.kind];
+    const limit = { vertex: ctx.model.V, face: ctx.model.F, edge: ctx.model.E }[f];
+    const n = Number(element.value) - 1;
+    if (!Number.isInteger(n) || n < 0 || n >= limit) {
+      ctx.message.error(`Choose ${letter[f]}1 to ${letter[f]}${limit}`, 'invalid-element');
+      return;
+    }
+    ctx.commit({ ...ctx.state, query: { ...ctx.state.query, [f]: n } }, { history: false });
+  });
+  const root = h('div', { class: 'query-panel' },
+    h('div', { class: 'query-choice' }, h('label', {}, 'Query ', kind), ' ', prefix, element), result);
+
+  function answerText(q, answer) {
+    const lbl = q === 'edges-of-face' ? 'e' : 'F';
+    const list = Array.from(answer).filter((i) => i >= 0).map((i) => `${lbl}${i + 1}`);
+    return list.length ? list.join(', ') : 'none';
+  }
+
+  return {
+    root,
+    update(model, state) {
+      const q = state.query.kind;
+      const f = field[q];
+      const index = Math.min(state.query[f], { vertex: model.V, face: model.F, edge: model.E }[f] - 1);
+      kind.value = q;
+      prefix.textContent = letter[f];
+      element.value = index + 1;
+      element.max = { vertex: model.V, face: model.F, edge: model.E }[f];
+      const winged = q === 'faces-around-vertex' ? model.mesh.facesAroundVertex(index)
+        : q === 'edges-of-face' ? model.mesh.edgesOfFace(index) : (({ left, right }) => [left, right])(model.mesh.facesOfEdge(index));
+      const rows = [];
+      if (typeof model.mesh.query === 'function') {
+        const compared = model.mesh.query(q, index);
+        for (const [name, r] of Object.entries(compared)) rows.push([PROS_CONS[name]?.title ?? name, answerText(q, r.answer), String(r.entriesRead)]);
+      }
+      result.replaceChildren(
+        h('p', { id: 'query-answer' }, `Winged edge: ${answerText(q, winged)} (the walk reads only the records it reports: cost proportional to the output).`),
+        rows.length ? h('table', { class: 'data-table', id: 'query-table' }, h('caption', {}, 'Each representation answering the same query'),
+          h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'representation'), h('th', { scope: 'col' }, 'answer'), h('th', { scope: 'col' }, 'table entries read'))),
+          h('tbody', {}, rows.map((r) => h('tr', {}, h('th', { scope: 'row' }, r[0]), h('td', {}, r[1]), h('td', {}, r[2]))))) : null,
+      );
+    },
+  };
+}
