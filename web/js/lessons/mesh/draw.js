@@ -65,17 +65,35 @@ function edgeEnds(model, P, e, zoom, insetPx = 11) {
   return [ax + (bx - ax) * k, ay + (by - ay) * k, bx - (bx - ax) * k, by - (by - ay) * k];
 }
 
+// In 3D a face whose projected corners run clockwise faces away (faces are CCW seen from
+// outside); large meshes then skip the edges of the far side, so the picture stays legible.
+function frontFacing(model, P) {
+  return model.faces.map((face) => {
+    if (!model.mode3d) return true;
+    let area = 0;
+    for (let i = 0, j = face.length - 1; i < face.length; j = i, i += 1) area += P[3 * face[j]] * P[3 * face[i] + 1] - P[3 * face[i]] * P[3 * face[j] + 1];
+    return area >= 0;
+  });
+}
+
+function edgeSeen(model, front, e) {
+  const left = model.we.edges[8 * e + 2]; const right = model.we.edges[8 * e + 3];
+  return left < 0 || right < 0 || front[left] || front[right];
+}
+
 function drawBase(painter, model, state, colors) {
   const P = model.projected;
   const zoom = state.view.zoom;
   const labels = model.faces.length <= LABEL_LIMIT;
   const faceFill = colors.series[5];
+  const front = frontFacing(model, P);
   for (const f of faceOrder(model, P)) {
-    painter.polygon(faceXY(model.faces[f], P), { fill: faceFill, alpha: 0.16, stroke: undefined });
+    painter.polygon(faceXY(model.faces[f], P), { fill: faceFill, alpha: front[f] ? 0.16 : 0.06, stroke: undefined });
   }
   const E = model.we.edges.length / 8;
   const arrows = E <= LABEL_LIMIT;
   for (let e = 0; e < E; e += 1) {
+    if (!arrows && model.mode3d && !edgeSeen(model, front, e)) continue;
     const [ax, ay, bx, by] = arrows ? edgeEnds(model, P, e, zoom) : [P[3 * model.we.edges[8 * e]], P[3 * model.we.edges[8 * e] + 1], P[3 * model.we.edges[8 * e + 1]], P[3 * model.we.edges[8 * e + 1] + 1]];
     if (arrows) painter.arrow(ax, ay, bx, by, { stroke: colors.ink, width: 1.6 });
     else painter.line(ax, ay, bx, by, { stroke: colors.ink, width: 0.8, alpha: 0.7 });
@@ -94,10 +112,10 @@ function drawBase(painter, model, state, colors) {
     }
   }
   const V = P.length / 3;
-  if (V <= 20000) {
+  if (V <= LABEL_LIMIT) {
     for (let v = 0; v < V; v += 1) {
-      painter.circle(P[3 * v], P[3 * v + 1], V <= LABEL_LIMIT ? 5 : 2, { fill: colors.series[0], stroke: V <= LABEL_LIMIT ? colors.background : undefined, width: 1.5 });
-      if (V <= LABEL_LIMIT) painter.text(P[3 * v], P[3 * v + 1], vLabel(v), { fill: colors.series[0], font: 15, weight: 700, dx: 12, dy: -12, halo: colors.background });
+      painter.circle(P[3 * v], P[3 * v + 1], 5, { fill: colors.series[0], stroke: colors.background, width: 1.5 });
+      painter.text(P[3 * v], P[3 * v + 1], vLabel(v), { fill: colors.series[0], font: 15, weight: 700, dx: 12, dy: -12, halo: colors.background });
     }
   }
 }

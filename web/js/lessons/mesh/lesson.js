@@ -67,7 +67,7 @@ function checkState(state) {
 }
 
 // Per-topology and per-position caches, so a traversal step costs one frame lookup.
-const derived = { topology: -1, version: -1, we: null, counts: null, steps: new Map(), planes: null, lastChange: null };
+const derived = { topology: -1, version: -1, viewKey: null, projected: null, zExtent: 0, we: null, counts: null, steps: new Map(), planes: null, lastChange: null };
 
 function wingedTables(entry) {
   if (derived.topology !== entry.topology) {
@@ -101,21 +101,25 @@ function compute(state, ctx) {
   const walkElement = walkKind === 'vertex' ? Math.min(state.vertex, V - 1) : Math.min(state.face, F - 1);
   const frames = walkElement >= 0 ? stepsOf(entry, walkKind, walkElement) : [];
   const frame = frames[Math.min(state.step, frames.length - 1)] ?? null;
-  let zExtent = 0;
-  for (let v = 0; v < V; v += 1) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
   const R = viewRotation(state);
+  const viewKey = `${entry.topology}:${entry.version}:${R.join(',')}`;
+  if (derived.viewKey !== viewKey) {
+    let zExtent = 0;
+    for (let v = 0; v < V; v += 1) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
+    Object.assign(derived, { viewKey, zExtent, projected: projectAll(we.positions, R) });
+  }
   return {
     mesh: entry.mesh,
     topology: entry.topology,
     version: entry.version,
     positions: we.positions,
-    projected: projectAll(we.positions, R),
+    projected: derived.projected,
     rotation: R,
     faces: entry.faces,
     we,
     V, E, F,
     counts: derived.counts,
-    is3dMesh: zExtent > 0,
+    is3dMesh: derived.zExtent > 0,
     mode3d: state.mode3d,
     walkKind, walkElement, frames, frame,
     stepIndex: Math.min(state.step, Math.max(0, frames.length - 1)),
@@ -134,7 +138,7 @@ function fitView(model, stage) {
   }
   // The canvas's laid-out size (the stage's cached size lags behind the first layout).
   const rect = stage.canvas.getBoundingClientRect();
-  const margin = 0.14;
+  const margin = 0.18; // room for the labels beside the vertices
   const w = Math.max(maxX - minX, 1e-9);
   const hgt = Math.max(maxY - minY, 1e-9);
   const zoom = Math.min(rect.width / (w * (1 + 2 * margin)), rect.height / (hgt * (1 + 2 * margin)));

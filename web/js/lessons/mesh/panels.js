@@ -14,6 +14,8 @@ const TAB_LABELS = {
   'edge-list': 'Edge list (Foley)', queries: 'Queries', storage: 'Storage', planes: 'Planes & normals',
 };
 
+const FOUND_SHOWN = 12; // the last edges found; a pole of valence 100 would fill the panel
+
 function labelled(labelText, control) {
   return h('label', {}, labelText, ' ', control);
 }
@@ -215,8 +217,12 @@ export function setupPanels(ctx) {
     const what = model.walkKind === 'vertex' ? vLabel(model.walkElement) : fLabel(model.walkElement);
     stepLabel.textContent = `step ${model.stepIndex} / ${Math.max(0, model.frames.length - 1)}`;
     narration.textContent = frame ? frame.text : `${what}: nothing to walk.`;
-    found.replaceChildren('Found so far: ', ...(frame?.found.length ? frame.found.map((e, k) => h('span', { class: 'found-edge' }, `${k + 1}. e`, h('sub', {}, String(e + 1))))
-      : [h('span', { class: 'hint' }, 'none yet')]));
+    const shown = frame ? frame.found.slice(-FOUND_SHOWN) : [];
+    const skipped = frame ? frame.found.length - shown.length : 0;
+    found.replaceChildren('Found so far: ',
+      skipped ? h('span', { class: 'hint' }, `(${skipped} earlier) `) : null,
+      ...(shown.length ? shown.map((e, k) => h('span', { class: 'found-edge' }, `${skipped + k + 1}. e`, h('sub', {}, String(e + 1))))
+        : [h('span', { class: 'hint' }, 'none yet')]));
     if (player.speed !== s.speed) player.setSpeed(s.speed);
   }
 

@@ -27,6 +27,9 @@ export function createVirtualTable({ id, caption, head, rowCount, row, rowLabel,
   let first = 0;
   let last = -1;
   let pending = 0;
+  let measured = false;
+  let viewHeight = 0;
+  let scrollTopSeen = 0;
 
   function cellsOf(i) {
     const cells = row(i);
@@ -50,7 +53,9 @@ export function createVirtualTable({ id, caption, head, rowCount, row, rowLabel,
       return;
     }
     const top = scroller.scrollTop;
-    const height = scroller.clientHeight || 400;
+    scrollTopSeen = top;
+    viewHeight = scroller.clientHeight || viewHeight || 400;
+    const height = viewHeight;
     first = Math.max(0, Math.floor(top / rowPx) - WINDOW_MARGIN);
     last = Math.min(count - 1, Math.ceil((top + height) / rowPx) + WINDOW_MARGIN);
     const rows = [h('tr', { class: 'spacer', 'aria-hidden': 'true' }, h('td', { colspan: 99, class: 'spacer-cell' }))];
@@ -60,8 +65,11 @@ export function createVirtualTable({ id, caption, head, rowCount, row, rowLabel,
     bottom.firstChild.style.height = `${(count - 1 - last) * rowPx}px`;
     rows.push(bottom);
     tbody.replaceChildren(...rows);
-    const sample = tbody.children[1];
-    if (sample?.offsetHeight) rowPx = sample.offsetHeight;
+    if (!measured) {
+      // One layout read, the first time: every row has the same height (CSS).
+      const sample = tbody.children[1];
+      if (sample?.offsetHeight) { rowPx = sample.offsetHeight; measured = true; renderWindow(); }
+    }
   }
 
   scroller.addEventListener('scroll', () => {
@@ -111,11 +119,12 @@ export function createVirtualTable({ id, caption, head, rowCount, row, rowLabel,
     reveal(i) {
       if (i === null || i === undefined || i < 0 || i >= count) return;
       if (count > FULL_ROWS) {
-        const top = i * rowPx;
-        if (top < scroller.scrollTop || top + rowPx > scroller.scrollTop + scroller.clientHeight) {
-          scroller.scrollTop = Math.max(0, top - scroller.clientHeight / 3);
-          renderWindow();
-        }
+        // Rows inside the drawn window (margin included) need no layout read at all.
+        const topRow = Math.ceil(scrollTopSeen / rowPx);
+        const bottomRow = Math.floor((scrollTopSeen + viewHeight) / rowPx) - 1;
+        if (i >= topRow && i <= bottomRow && i >= first && i <= last) return;
+        scroller.scrollTop = Math.max(0, i * rowPx - viewHeight / 3);
+        renderWindow();
         return;
       }
       const el = rowElement(i);

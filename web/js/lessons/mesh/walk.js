@@ -37,6 +37,11 @@ export function normaliseSteps(raw, kind) {
   return raw.map((s) => ({ edge: s.edge, metAtFirst: kind === 'vertex' ? s.role === 'start' : s.side === 'left', next: s.next }));
 }
 
+const LIST_LIMIT = 12;
+function shortList(labels) {
+  return labels.length <= LIST_LIMIT ? labels.join(', ') : `${labels.slice(0, LIST_LIMIT).join(', ')}, … (${labels.length - LIST_LIMIT} more)`;
+}
+
 // Frame 0: initialise (the vertex or face table row and its edge column are read).
 // Frames 1..n: at edge k the test column (S or L) and the wing column are read, the edge
 // is reported (found) and the next edge is known. Frame n+1: the While test sees e₀ again.
@@ -74,7 +79,7 @@ export function walkFrames(kind, element, steps) {
   if (steps.length) {
     frames.push({
       line: 4, table: 'edge', row: first, read: null, compared: null, current: first, next: first, found: steps.map((s) => s.edge),
-      text: `Back at ${eLabel(first)} = e₀: the loop ends. ${steps.length} edges: ${steps.map((s) => eLabel(s.edge)).join(', ')}.`,
+      text: `Back at ${eLabel(first)} = e₀: the loop ends after ${steps.length} edges: ${shortList(steps.map((s) => eLabel(s.edge)))}.`,
       done: true,
     });
   }
