@@ -11,7 +11,7 @@ import { meshExports } from './exports.js';
 import { vLabel, fLabel, eLabel } from './labels.js';
 
 export const TABS = ['winged', 'faces', 'vertex-face', 'adjacency', 'edge-list', 'queries', 'storage', 'planes'];
-export const QUERY_KINDS = ['faces-around-vertex', 'edges-of-face', 'faces-of-edge'];
+export const QUERY_KINDS = ['faces-around-vertex', 'edges-around-vertex', 'edges-of-face', 'neighbours-of-face', 'faces-of-edge'];
 const MAX_IMPORT_VERTICES = 200000;
 const MAX_IMPORT_FACES = 200000;
 
@@ -71,12 +71,14 @@ const derived = { topology: -1, version: -1, viewKey: null, projected: null, zEx
 
 function wingedTables(entry) {
   if (derived.topology !== entry.topology) {
-    Object.assign(derived, { topology: entry.topology, version: -1, counts: entry.mesh.counts(), steps: new Map(), planes: null, lastChange: null });
+    Object.assign(derived, { topology: entry.topology, version: -1, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, lastChange: null });
   }
   if (derived.version !== entry.version) {
     derived.version = entry.version;
     derived.we = entry.mesh.wingedEdgeArrays();
     derived.planes = null;
+    derived.reps = null;
+    derived.storage = null;
   }
   return derived.we;
 }

@@ -9,7 +9,7 @@ const FULL_ROWS = 120;
 const WINDOW_MARGIN = 12;
 const FALLBACK_ROW_PX = 26;
 
-export function createVirtualTable({ id, caption, head, rowCount, row, rowLabel, onRowEnter, onRowLeave, onRowClick }) {
+export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnter, onRowLeave, onRowClick }) {
   const thead = h('thead', {}, head.map((cells) => h('tr', {}, cells.map((cell) =>
     typeof cell === 'string' ? h('th', { scope: 'col' }, cell)
       : h('th', { scope: cell.scope ?? 'col', colspan: cell.colspan, rowspan: cell.rowspan, class: cell.class }, cell.text)))));
@@ -91,11 +91,13 @@ export function createVirtualTable({ id, caption, head, rowCount, row, rowLabel,
     root,
     table,
     // New data (same shape): rebuild the rows in view.
-    refresh(nextCount = rowCount()) {
+    // `total` > `nextCount` when only the first rows were fetched: the note says so.
+    refresh(nextCount, total = nextCount) {
       count = nextCount;
-      table.setAttribute('aria-rowcount', String(count + head.length));
-      note.hidden = count <= FULL_ROWS;
-      if (!note.hidden) note.textContent = `${count.toLocaleString('en')} rows; only the rows in view are drawn (scroll to see the rest).`;
+      table.setAttribute('aria-rowcount', String(total + head.length));
+      note.hidden = count <= FULL_ROWS && total === count;
+      const cut = total > count ? ` Showing the first ${count.toLocaleString('en')} of ${total.toLocaleString('en')} rows; the winged-edge tab shows every row.` : '';
+      if (!note.hidden) note.textContent = (count > FULL_ROWS ? `${count.toLocaleString('en')} rows; only the rows in view are drawn (scroll to see the rest).` : '') + cut;
       scroller.classList.toggle('is-virtual', count > FULL_ROWS);
       renderWindow();
     },
