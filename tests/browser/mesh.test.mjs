@@ -260,3 +260,44 @@ test('on a phone held sideways the page does not scroll sideways', async () => {
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+test('queries compared: every representation answers alike and says how many entries it read', async () => {
+  const page = await openLesson();
+  await click(page, '#tab-queries');
+  // Slide: v2 is a corner of F1, F2 and F3; e3 has L = F1 and R = F2.
+  const answers = async () => page.$$eval('#query-table tbody tr', (rows) => rows.map((r) => ({
+    name: r.dataset.representation, answer: r.children[1].textContent.split(', ').sort().join(' '), read: Number(r.children[2].textContent.replace(/,/g, '')),
+  })));
+  const aroundV2 = await answers();
+  assert.equal(aroundV2.length, 6, 'six representations answer');
+  for (const r of aroundV2) {
+    assert.equal(r.answer, 'F1 F2 F3', `${r.name} finds the faces around v2`);
+    assert.ok(r.read > 0, `${r.name} read some entries`);
+  }
+  await page.selectOption('#query-kind', 'faces-of-edge');
+  await page.fill('#query-element', '3');
+  await page.press('#query-element', 'Enter');
+  await settle(page);
+  for (const r of await answers()) assert.equal(r.answer, 'F1 F2', `${r.name}: e3 separates F1 and F2`);
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('storage per representation counts the slide\'s entries, with the lectures\' pros and cons', async () => {
+  const page = await openLesson();
+  await click(page, '#tab-storage');
+  const arrays = await page.$$eval('#storage-table tbody tr', (rows) => Object.fromEntries(rows.map((r) => [r.dataset.representation, r.querySelector('.arrays').textContent])));
+  // Independent faces: 3 faces x 3 corners x (x, y, z) = 27 coordinates (the slide's face
+  // table); vertex and face tables: 5 x 3 coordinates and 9 vertex references; the winged
+  // edge's edge table: 7 edges x 8 fields.
+  assert.match(arrays['independent-faces'], /coordinates: 27 ×/);
+  assert.match(arrays['vertex-face-tables'], /coordinates: 15 ×/);
+  assert.match(arrays['vertex-face-tables'], /vertices: 9 ×/);
+  assert.match(arrays['winged-edge'], /: 56 ×/);
+  const cons = await page.$eval('.pros-cons[data-representation=independent-faces]', (d) => d.textContent);
+  assert.match(cons, /Redundant vertices/i);
+  assert.match(await page.$eval('.pros-cons[data-representation=winged-edge]', (d) => d.textContent), /Mesh needs to be oriented/i);
+  await screenshot(page, 'mesh-storage');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

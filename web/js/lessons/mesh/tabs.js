@@ -135,7 +135,7 @@ export function createRepresentationTabs(ctx, labels) {
   panels.faces.append(h('p', { class: 'hint' }, 'Each face lists vertex coordinates (lecture 000): changing a vertex requires changing the coordinates of each instance. Drag a vertex and count.'),
     notes.faces, tables.independent.root);
   panels['vertex-face'].append(h('p', { class: 'hint' }, 'Each face lists vertex references: changing a vertex changes a single point.'), notes.vf, tables.vfVertex.root, tables.vfFace.root);
-  panels.adjacency.append(h('p', { class: 'hint' }, 'All vertex, edge and face adjacencies stored per element (here read from the winged edge, in CCW order).'),
+  panels.adjacency.append(h('p', { class: 'hint' }, 'Lecture 000: store all vertex, edge and face adjacencies (the core\'s own arrays); the partial lists keep only the incidences of neighbouring dimensions.'),
     tables.adjVertex.root, tables.adjEdge.root, tables.adjFace.root,
     h('h3', {}, 'Partial adjacency lists'), tables.partialVertex.root, tables.partialEdge.root, tables.partialFace.root);
   panels['edge-list'].append(h('p', { class: 'hint' }, 'Foley & van Dam: each edge stores its two vertices and the polygons on either side; a polygon is a list of pointers to edges.'),
@@ -210,7 +210,7 @@ export function createRepresentationTabs(ctx, labels) {
       h('td', {}, perFace(st.bytes)), h('td', { class: 'arrays' }, st.arrays.map((a) => `${a.name}: ${a.entries.toLocaleString('en')} × ${a.bytesPerEntry} B`).join('; '))));
     storageBody.replaceChildren(
       h('p', {}, `V = ${c.vertices}, E = ${c.edges}, F = ${c.faces}; boundary edges ${c.boundaryEdges}, boundary loops ${c.boundaryLoops}; Euler characteristic V − E + F = ${c.euler}.`),
-      h('div', { class: 'table-scroll' }, h('table', { class: 'data-table', id: 'storage-table' }, h('caption', {}, 'Storage of this mesh in each representation'),
+      h('div', { class: 'table-wide' }, h('table', { class: 'data-table', id: 'storage-table' }, h('caption', {}, 'Storage of this mesh in each representation'),
         h('thead', {}, h('tr', {}, ['representation', 'entries', 'bytes', 'bytes per face', 'arrays'].map((t) => h('th', { scope: 'col' }, t)))),
         h('tbody', {}, rows))),
       ...Object.entries(PROS_CONS).map(([name, r]) => h('div', { class: 'pros-cons', 'data-representation': name }, h('h3', {}, r.title),
@@ -318,7 +318,7 @@ function createQueryPanel(ctx) {
         h('th', { scope: 'row' }, PROS_CONS[name]?.title ?? name), h('td', {}, text(r.answer)), h('td', { class: 'entries-read' }, r.entriesRead.toLocaleString('en'))));
       const cheapest = Math.min(...Object.values(answers).map((r) => r.entriesRead));
       result.replaceChildren(
-        h('div', { class: 'table-scroll' }, h('table', { class: 'data-table', id: 'query-table' },
+        h('div', { class: 'table-wide' }, h('table', { class: 'data-table', id: 'query-table' },
           h('caption', {}, `${QUERY_LABELS[q][0]} ${LETTER[f]}${index + 1}: each representation answers`),
           h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'representation'), h('th', { scope: 'col' }, 'answer'), h('th', { scope: 'col' }, 'table entries read'))),
           h('tbody', {}, rows))),
