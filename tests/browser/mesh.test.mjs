@@ -301,3 +301,20 @@ test('storage per representation counts the slide\'s entries, with the lectures\
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+test('a file the winged edge cannot hold shows the whole validation report and keeps the mesh', async () => {
+  const page = await openLesson();
+  // Three triangles on the edge v1-v2 (0-1): "shared by 3 faces".
+  const fin = 'OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0.5 0.5 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n';
+  await page.setInputFiles('#import-file', { name: 'fin.off', mimeType: 'text/plain', buffer: Buffer.from(fin) });
+  await page.waitForSelector('#mesh-report:not([hidden])');
+  const codes = await page.$$eval('#mesh-report li', (li) => li.map((x) => x.dataset.code));
+  assert.ok(codes.includes('non-manifold-edge'), `the report names the shared edge: ${codes}`);
+  assert.match(await page.textContent('#mesh-report'), /v1 v2|v2 v1/, 'the offending vertices are named with slide labels');
+  assert.match(await page.textContent('#message .message-text'), /fin\.off was not imported/);
+  assert.equal(await page.evaluate(() => window.wingspline.state.meshKind), 'lecture');
+  assert.equal((await tableCells(page, 'we-edge-table')).length, 7, 'the lecture example is still shown');
+  await screenshot(page, 'mesh-report');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

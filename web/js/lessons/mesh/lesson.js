@@ -179,6 +179,13 @@ function importer(format) {
     const parsed = ctx.api.parseMesh(textContent, { format });
     const positions = Array.from(parsed.positions);
     const faces = (parsed.faces ?? []).map((f) => Array.from(f));
+    // Every problem, not only the first: the panel lists them with the elements involved.
+    const report = ctx.api.validateMesh({ positions, faces });
+    const errors = report.problems.filter((p) => p.severity === 'error');
+    ctx.meshPanels?.showReport(name, report.problems);
+    if (errors.length) {
+      throw Object.assign(new Error(`${errors[0].message}${errors.length > 1 ? ` (and ${errors.length - 1} more problem${errors.length > 2 ? 's' : ''}, listed in the validation report)` : ''}`), { code: errors[0].code });
+    }
     if (positions.length / 3 > MAX_IMPORT_VERTICES || faces.length > MAX_IMPORT_FACES) {
       throw Object.assign(new Error(`${name} has ${positions.length / 3} vertices and ${faces.length} faces; this page imports up to ${MAX_IMPORT_VERTICES} of each`), { code: 'too-large' });
     }

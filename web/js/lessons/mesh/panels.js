@@ -137,9 +137,28 @@ export function setupPanels(ctx) {
     action: (event) => (event.key === 'PageDown' || event.key === 'n' ? player.next() : player.prev()), when: (event) => event.target === stage });
   ctx.keymap.add({ keys: ['3'], label: '2D / 3D view', group: 'View', action: () => set3d(!state().mode3d) });
 
+  // ------------------------------------------------------------ validation report of a file
+  const report = h('section', { class: 'callout mesh-report', id: 'mesh-report', hidden: true, 'aria-live': 'polite' });
+  function showReport(name, problems) {
+    if (!problems.length) { report.hidden = true; report.replaceChildren(); return; }
+    const errors = problems.filter((p) => p.severity === 'error').length;
+    report.classList.toggle('error', errors > 0);
+    report.classList.toggle('warning', errors === 0);
+    const elementList = ({ vertices, edges, faces }) => [...vertices.map((v) => `v${v + 1}`), ...edges.map((e) => `e${e + 1}`), ...faces.map((f) => `F${f + 1}`)].join(' ');
+    report.replaceChildren(
+      h('h2', {}, `Validation report of ${name}`),
+      h('p', {}, errors ? `${errors === 1 ? 'This problem keeps' : `These ${errors} problems keep`} the file from being a winged-edge mesh; the mesh shown before stays. Elements are numbered as in the file.` : 'Warnings only: the mesh was loaded.'),
+      h('ul', {}, problems.map((p) => h('li', { 'data-code': p.code, class: p.severity },
+        h('strong', {}, p.severity === 'error' ? 'error ' : 'warning '), h('code', {}, p.code), ': ', p.message,
+        elementList(p.elements) ? h('span', { class: 'report-elements' }, ` [${elementList(p.elements)}]`) : null))),
+      h('button', { type: 'button', class: 'tool', onclick: () => { report.hidden = true; } }, 'Close report'),
+    );
+    report.hidden = false;
+  }
+
   // ------------------------------------------------------------ tabs
   const tabs = createRepresentationTabs(ctx, TAB_LABELS);
-  ctx.panels.replaceChildren(walkPanel, tabs.root);
+  ctx.panels.replaceChildren(report, walkPanel, tabs.root);
 
   // ------------------------------------------------------------ canvas hover, click, rotate
   ctx.ui.meshHover = null;
@@ -220,22 +239,29 @@ export function setupPanels(ctx) {
     const shown = frame ? frame.found.slice(-FOUND_SHOWN) : [];
     const skipped = frame ? frame.found.length - shown.length : 0;
     found.replaceChildren('Found so far: ',
-      skipped ? h('span', { class: 'hint' }, `(${skipped} earlier) `) : null,
+      ...(skipped ? [h('span', { class: 'hint' }, `(${skipped} earlier) `)] : []),
       ...(shown.length ? shown.map((e, k) => h('span', { class: 'found-edge' }, `${skipped + k + 1}. e`, h('sub', {}, String(e + 1))))
         : [h('span', { class: 'hint' }, 'none yet')]));
     if (player.speed !== s.speed) player.setSpeed(s.speed);
   }
 
+  let shownTopology = null;
   const panels = {
     update(model, s) {
       syncControls();
       if (!model) return;
+      if (shownTopology !== null && shownTopology !== model.topology) {
+        const view = ctx.lesson.fitView(model, ctx.stage);
+        queueMicrotask(() => ctx.setView(view));
+      }
+      shownTopology = model.topology;
       updateWalk(model, s);
       tabs.update(model, s);
     },
     afterDraw() {},
     canvasClick,
     pickElement,
+    showReport,
     player,
   };
   ctx.meshPanels = panels;
