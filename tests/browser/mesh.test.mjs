@@ -318,3 +318,44 @@ test('a file the winged edge cannot hold shows the whole validation report and k
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+test('hovering a table row marks the element on the canvas, and the canvas marks the rows', async () => {
+  const page = await openLesson();
+  await page.hover('#we-edge-table tr[data-row="2"]');
+  await settle(page);
+  assert.deepEqual(await page.evaluate(() => window.wingspline.ctx.ui.meshHover), { kind: 'edge', index: 2 }, 'e3 is marked for the canvas');
+  // The centroid of F3 = (v2 v5 v4) on the canvas: the F3 row of the face table lights up.
+  const point = await page.evaluate(() => {
+    const m = window.wingspline.model;
+    const [x, y] = m.faces[2].reduce((acc, v) => [acc[0] + m.projected[3 * v] / 3, acc[1] + m.projected[3 * v + 1] / 3], [0, 0]);
+    return window.wingspline.toClient(x, y);
+  });
+  await page.mouse.move(point.x, point.y);
+  await settle(page);
+  const hovered = await page.$$eval('#we-face-table tr.is-hovered', (rows) => rows.map((r) => r.children[0].textContent));
+  assert.deepEqual(hovered, ['F3']);
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('exports: the edge table as CSV with the slide\'s rows, LaTeX with the two-level header, the mesh as OFF', async () => {
+  const page = await openLesson();
+  async function exported(filename) {
+    await page.click('.menu > summary');
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click(`[data-export="${filename}"]`)]);
+    const stream = await download.createReadStream();
+    const chunks = [];
+    for await (const chunk of stream) chunks.push(chunk);
+    return Buffer.concat(chunks).toString('utf8');
+  }
+  const csv = await exported('mesh-winged-edge.csv');
+  for (const row of SLIDE_EDGE_TABLE) assert.ok(csv.includes(`\n${row.join(',')}\n`), `CSV has the slide's row ${row.join(',')}`);
+  const latex = await exported('mesh-winged-edge.tex');
+  assert.match(latex, /\\multicolumn\{2\}\{c\|\}\{S\} & \\multicolumn\{2\}\{c\}\{E\}/);
+  assert.match(latex, /\$e_\{6\}\$ & \$v_\{2\}\$ & \$v_\{5\}\$ & \$F_\{3\}\$ &  & \$e_\{5\}\$ & \$e_\{2\}\$ & \$e_\{7\}\$ & \$e_\{7\}\$/);
+  const off = await exported('mesh.off');
+  const parsed = await page.evaluate((text) => { const m = window.wingspline.api.parseMesh(text, { format: 'off' }); return { v: m.positions.length / 3, faces: m.faces }; }, off);
+  assert.deepEqual(parsed, { v: 5, faces: [[0, 1, 2], [1, 3, 2], [1, 4, 3]] }, 'the slide\'s faces F1 = (v1 v2 v3), F2 = (v2 v4 v3), F3 = (v2 v5 v4)');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
