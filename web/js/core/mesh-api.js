@@ -170,18 +170,21 @@ export class Mesh {
 
   // The lecture's three tables: {vertices: [{edge, x, y, z}], edges: [{start, end, left,
   // right, startLeft, startRight, endLeft, endRight}], faces: [{edge}]}.
-  wingedEdge() {
+  wingedEdge() { return this.#wingedEdgeRows(INT32_MAX); }
+
+  // The first `limit` rows of each winged-edge table.
+  #wingedEdgeRows(limit) {
     const r = unwrap(this.#raw.meshWingedEdge(this.#live()));
-    const vertices = Array.from(r.vertexEdge, (edge, v) => ({
+    const vertices = Array.from(r.vertexEdge.subarray(0, limit), (edge, v) => ({
       edge, x: r.positions[3 * v], y: r.positions[3 * v + 1], z: r.positions[3 * v + 2],
     }));
     const edges = [];
-    for (let e = 0; 8 * e < r.edges.length; e += 1) {
+    for (let e = 0; 8 * e < r.edges.length && e < limit; e += 1) {
       const row = {};
       EDGE_FIELDS.forEach((name, k) => { row[name] = r.edges[8 * e + k]; });
       edges.push(row);
     }
-    const faces = Array.from(r.faceEdge, (edge) => ({ edge }));
+    const faces = Array.from(r.faceEdge.subarray(0, limit), (edge) => ({ edge }));
     return { vertices, edges, faces };
   }
 
@@ -268,7 +271,8 @@ export class Mesh {
 
   // Plain-value tables of all six representations (shapes in docs/api-mesh.md). `limit`
   // cuts every table to its first rows; `totals` always gives the full row counts.
-  representations({ limit = INT32_MAX } = {}) {
+  representations(options = {}) {
+    const { limit = INT32_MAX } = options ?? {};
     integerIn(limit, 'limit', 0, INT32_MAX);
     const handle = this.#representationsReady();
     const r = unwrap(this.#raw.meshRepresentations(handle, limit));
@@ -288,7 +292,7 @@ export class Mesh {
     const p = r.partialAdjacencyLists;
     const partialVertices = csrRows(p.vertexOffsets, { edges: p.vertexEdges });
     const l = r.edgeList;
-    const we = this.wingedEdge();
+    const we = this.#wingedEdgeRows(limit);
     return {
       'independent-faces': { faces: independentFaces, totals: { faces: c.faces }, storage: storage['independent-faces'] },
       'vertex-face-tables': {
@@ -327,9 +331,9 @@ export class Mesh {
         storage: storage['edge-list'],
       },
       'winged-edge': {
-        vertices: we.vertices.slice(0, limit),
-        edges: we.edges.slice(0, limit),
-        faces: we.faces.slice(0, limit),
+        vertices: we.vertices,
+        edges: we.edges,
+        faces: we.faces,
         totals: vertexTotals,
         storage: storage['winged-edge'],
       },
