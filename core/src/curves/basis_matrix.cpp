@@ -42,6 +42,11 @@ Mat4 basis_matrix(BasisKind kind) {
     throw Error("unknown-basis", "unknown basis");
 }
 
+Mat4 cardinal_matrix(double tension) {
+    const double s = (1.0 - tension) / 2.0;
+    return {-s, 2 - s, s - 2, s,  2 * s, s - 3, 3 - 2 * s, -s,  -s, 0, s, 0,  0, 1, 0, 0};
+}
+
 Mat4 hermite_constraint_matrix() {
     return {0, 0, 0, 1,   // P(0)  = d
             1, 1, 1, 1,   // P(1)  = a + b + c + d

@@ -1,4 +1,218 @@
-// Curves part of the API (issue 5). Filled in by the curves core.
-export function createCurvesApi(/* raw */) {
-  return {};
+// Curves part of the API (issue 5); documented in docs/api-curves.md.
+// Plain values in, typed arrays out, one wasm call per curve batch (never per point).
+// Every curve is a plain object:
+//   { kind, dim, points, degree?, knots?, weights?, tangents?, tension?, nodes? }
+// kind: 'bezier' | 'bspline' | 'nurbs' | 'hermite' | 'catmull-rom' | 'cardinal' | 'interpolation'
+// points[dim*i + k] (dim 2 or 3). This module only checks types and fills defaults; the
+// core checks the values (finite, knots non-decreasing, weights positive, domain, ...) and
+// names the offending element in its message.
+import { unwrap, fail, isNumberArray } from './errors.js';
+
+const EMPTY = new Float64Array(0);
+const CURVE_KINDS = ['bezier', 'bspline', 'nurbs', 'hermite', 'catmull-rom', 'cardinal', 'interpolation'];
+const CUBIC_BASES = ['hermite', 'bezier', 'bspline', 'catmull-rom'];
+const MAX_DERIVATIVE_ORDER = 21;
+const MAX_SAMPLES = 10_000_000;
+
+// A Float64Array view of numbers (no copy when it already is one). Values are checked in
+// the core, which names the bad entry; here only the type.
+function numbers(value, what) {
+  if (value instanceof Float64Array) return value;
+  if (!isNumberArray(value)) fail('invalid-argument', `${what} must be an array or typed array of numbers`);
+  return Float64Array.from(value);
+}
+
+function optionalNumbers(value, what) {
+  return value === undefined || value === null ? EMPTY : numbers(value, what);
+}
+
+function dimension(dim, what = 'dim') {
+  if (dim !== 2 && dim !== 3) fail('invalid-dimension', `${what} must be 2 or 3, not ${String(dim).slice(0, 20)}`);
+  return dim;
+}
+
+function wholeNumber(value, what, min, max, code = 'invalid-argument') {
+  if (!Number.isInteger(value) || value < min || value > max) {
+    fail(code, `${what} must be a whole number from ${min} to ${max}, not ${String(value).slice(0, 40)}`);
+  }
+  return value;
+}
+
+function finiteNumber(value, what) {
+  if (typeof value !== 'number') fail('invalid-argument', `${what} must be a number`);
+  if (!Number.isFinite(value)) fail('non-finite-input', `${what} is ${value}, not a finite number`);
+  return value;
+}
+
+// The curve spec the core reads: every field present, arrays as Float64Array.
+export function normalizeCurve(curve, what = 'curve') {
+  if (curve === null || typeof curve !== 'object') {
+    fail('invalid-argument', `${what} must be an object like { kind: 'bezier', dim: 2, points: [...] }`);
+  }
+  if (typeof curve.kind !== 'string' || !CURVE_KINDS.includes(curve.kind)) {
+    fail('unknown-curve-kind', `${what}.kind is ${JSON.stringify(curve.kind)?.slice(0, 40)}; expected one of ${CURVE_KINDS.join(', ')}`);
+  }
+  let degree = 0;
+  if (curve.degree !== undefined && curve.degree !== null) {
+    if (!Number.isInteger(curve.degree)) fail('degree-out-of-range', `${what}.degree must be a whole number, not ${String(curve.degree).slice(0, 40)}`);
+    degree = curve.degree;
+    if (degree < 1) fail('degree-out-of-range', `${what}.degree must be at least 1, not ${degree}`);
+  }
+  let tension = 0;
+  if (curve.tension !== undefined && curve.tension !== null) tension = finiteNumber(curve.tension, `${what}.tension`);
+  return {
+    kind: curve.kind,
+    dim: dimension(curve.dim, `${what}.dim`),
+    points: numbers(curve.points, `${what}.points`),
+    degree,
+    knots: optionalNumbers(curve.knots, `${what}.knots`),
+    weights: optionalNumbers(curve.weights, `${what}.weights`),
+    tangents: optionalNumbers(curve.tangents, `${what}.tangents`),
+    nodes: optionalNumbers(curve.nodes, `${what}.nodes`),
+    tension,
+  };
+}
+
+function derivativeOrder(order) {
+  return wholeNumber(order, 'the derivative order', 0, MAX_DERIVATIVE_ORDER);
+}
+
+function cubicBasis(kind, what) {
+  if (typeof kind !== 'string' || !CUBIC_BASES.includes(kind)) {
+    fail('unknown-basis', `${what} is ${JSON.stringify(kind)?.slice(0, 40)}; expected ${CUBIC_BASES.join(', ')}`);
+  }
+  return kind;
+}
+
+function transpose(m, n) {
+  const t = new Float64Array(n * n);
+  for (let r = 0; r < n; r += 1) for (let c = 0; c < n; c += 1) t[c * n + r] = m[r * n + c];
+  return t;
+}
+
+export function createCurvesApi(raw) {
+  const api = {
+    // The row-major 4x4 basis matrix M of P(u) = [u^3 u^2 u 1] M G (lectures 000, 003);
+    // lecture 001's Q(t) = G M T uses its transpose (segmentMatrices gives both).
+    basisMatrix(kind) {
+      return unwrap(raw.basisMatrix(String(kind))).matrix;
+    },
+    // Lecture 000's Hermite derivation, computed: the constraint matrix and its inverse.
+    hermiteFromConstraints() {
+      const r = unwrap(raw.hermiteFromConstraints());
+      return { constraints: r.constraints, matrix: r.matrix };
+    },
+
+    // Bytes of the wasm heap in use (malloc's count); tests use it to prove no leaks.
+    heapBytesInUse() {
+      return raw.heapBytesInUse();
+    },
+
+    // Points of the curve: Float64Array, values[dim*j + k] for params[j].
+    evaluateCurve(curve, params) {
+      const spec = normalizeCurve(curve);
+      return unwrap(raw.curveEvaluate(spec, numbers(params, 'params'), 0, false)).values;
+    },
+    // The derivative of `order` (1 = tangent vector P'(u), 2 = P''(u)); same layout.
+    evaluateDerivative(curve, params, order = 1) {
+      const spec = normalizeCurve(curve);
+      return unwrap(raw.curveEvaluate(spec, numbers(params, 'params'), derivativeOrder(order), false)).values;
+    },
+    // Point and derivatives 1..maxOrder in one pass:
+    // values[(maxOrder+1)*dim*j + dim*k + c] is component c of the k-th derivative at params[j].
+    evaluateWithDerivatives(curve, params, maxOrder = 1) {
+      const spec = normalizeCurve(curve);
+      return unwrap(raw.curveEvaluate(spec, numbers(params, 'params'), derivativeOrder(maxOrder), true)).values;
+    },
+    // { start, end, degree, controlPointCount, segmentCount }
+    curveDomain(curve) {
+      const r = unwrap(raw.curveDomain(normalizeCurve(curve)));
+      return { start: r.start, end: r.end, degree: r.degree, controlPointCount: r.controlPointCount, segmentCount: r.segmentCount };
+    },
+    // n evenly spaced parameters over the whole domain (first = start, last = end exactly)
+    // and the points there: { params, points } with points[dim*j + k].
+    sampleCurve(curve, n = 200) {
+      wholeNumber(n, 'the number of samples', 2, MAX_SAMPLES);
+      const spec = normalizeCurve(curve);
+      const d = unwrap(raw.curveDomain(spec));
+      const params = new Float64Array(n);
+      for (let j = 0; j < n; j += 1) params[j] = d.start + ((d.end - d.start) * j) / (n - 1);
+      params[n - 1] = d.end;
+      return { params, points: unwrap(raw.curveEvaluate(spec, params, 0, false)).values };
+    },
+    // Blending functions (B = M T of lecture 001; Cox-de Boor N_i,p; NURBS R_i,p) of every
+    // control item at every param: values[count*j + i]. Hermite: count = 2K, items 0..K-1
+    // are the points p_i, K..2K-1 the tangents t_i. order > 0 gives their derivatives.
+    blendingFunctions(curve, params, order = 0) {
+      const r = unwrap(raw.curveBlending(normalizeCurve(curve), numbers(params, 'params'), derivativeOrder(order)));
+      return { count: r.count, values: r.values };
+    },
+    // The matrix form of one polynomial piece: P(u) = [u^p .. u 1] M G, C = M G; MT = M^T
+    // for lecture 001's Q(t) = G M^T T. Matrices row-major; G and C have `columns` numbers
+    // per row (dim, or dim+1 homogeneous for rational curves).
+    segmentMatrices(curve, segmentIndex = 0) {
+      wholeNumber(segmentIndex, 'segmentIndex', 0, 2 ** 31 - 1, 'segment-out-of-range');
+      const r = unwrap(raw.curveSegment(normalizeCurve(curve), segmentIndex));
+      const n = r.degree + 1;
+      return {
+        segment: r.segment,
+        segmentCount: r.segmentCount,
+        degree: r.degree,
+        basis: r.basis,
+        M: r.M,
+        MT: transpose(r.M, n),
+        G: r.G,
+        C: r.C,
+        columns: r.columns,
+        rows: n,
+        controlIndices: r.controlIndices,
+        labels: r.labels,
+        start: r.start,
+        end: r.end,
+        localParameter: r.localParameter,
+        homogeneous: r.homogeneous,
+        convention: r.localParameter
+          ? `P(t) = [u^${r.degree} .. u 1] M G with u = (t - ${r.start}) / (${r.end} - ${r.start}); Q(u) = G^T M^T [u^${r.degree} .. u 1]^T`
+          : `P(u) = [u^${r.degree} .. u 1] M G with the global parameter u`,
+      };
+    },
+
+    // de Casteljau with every level: levels[r] holds n+1-r points (dim each); levels[n]
+    // is the point on the curve. Rational: pass weights; levelWeights[r] then holds theirs.
+    deCasteljau(points, dim, t, weights = undefined) {
+      const r = unwrap(raw.bezierDeCasteljau(numbers(points, 'points'), dimension(dim), finiteNumber(t, 't'),
+        optionalNumbers(weights, 'weights')));
+      const levels = Array.from(r.levels);
+      const out = { degree: r.degree, levels, point: levels[levels.length - 1] };
+      if (weights !== undefined && weights !== null) out.levelWeights = Array.from(r.levelWeights);
+      return out;
+    },
+    // The two Bezier curves that together trace the original exactly (lecture 002).
+    subdivideBezier(points, dim, t = 0.5, weights = undefined) {
+      const r = unwrap(raw.bezierSubdivide(numbers(points, 'points'), dimension(dim), finiteNumber(t, 't'),
+        optionalNumbers(weights, 'weights')));
+      const out = { left: r.left, right: r.right };
+      if (weights !== undefined && weights !== null) Object.assign(out, { leftWeights: r.leftWeights, rightWeights: r.rightWeights });
+      return out;
+    },
+    // S_L, S_R ((n+1)x(n+1), row-major) with left = S_L P, right = S_R P; degree 3 at
+    // t = 1/2 gives lecture 002's G_B^L and G_B^R.
+    bezierSubdivisionMatrices(degree = 3, t = 0.5) {
+      wholeNumber(degree, 'degree', 1, 20, 'degree-out-of-range');
+      const r = unwrap(raw.bezierSubdivisionMatrices(degree, finiteNumber(t, 't')));
+      return { left: r.left, right: r.right, size: degree + 1 };
+    },
+    // Degree n -> n+1, the same curve: { points, weights? }.
+    elevateDegree(points, dim, weights = undefined) {
+      const r = unwrap(raw.bezierElevate(numbers(points, 'points'), dimension(dim), optionalNumbers(weights, 'weights')));
+      return weights !== undefined && weights !== null ? { points: r.points, weights: r.weights } : { points: r.points };
+    },
+    // Lecture 002: the geometry q (4 rows) in basis toKind giving the same cubic segment as
+    // points (4 rows) in basis fromKind: q = M_to^-1 M_from P.
+    convertBasis(points, dim, fromKind, toKind) {
+      return unwrap(raw.basisConvert(numbers(points, 'points'), dimension(dim), cubicBasis(fromKind, 'fromKind'),
+        cubicBasis(toKind, 'toKind'))).points;
+    },
+  };
+  return api;
 }

@@ -3,7 +3,6 @@
 // page. It loads the wasm module once and returns a plain API object; the raw embind
 // names stay private to this folder.
 import createWingsplineCore from '../../wasm/wingspline-core.js';
-import { unwrap } from './errors.js';
 import { createMeshApi } from './mesh-api.js';
 import { createCurvesApi } from './curves-api.js';
 
@@ -27,16 +26,6 @@ function createApi(raw) {
   const version = raw.version();
   return Object.freeze({
     version,
-    // The row-major 4x4 basis matrix M of P(u) = [u^3 u^2 u 1] M G (lectures 000, 003).
-    basisMatrix(kind) {
-      if (typeof kind !== 'string') return unwrap(raw.basisMatrix(String(kind))).matrix;
-      return unwrap(raw.basisMatrix(kind)).matrix;
-    },
-    // Lecture 000's Hermite derivation, computed: the constraint matrix and its inverse.
-    hermiteFromConstraints() {
-      const r = unwrap(raw.hermiteFromConstraints());
-      return { constraints: r.constraints, matrix: r.matrix };
-    },
     ...createMeshApi(raw),
     ...createCurvesApi(raw),
   });

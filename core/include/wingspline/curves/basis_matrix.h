@@ -19,6 +19,11 @@ const char* basis_kind_name(BasisKind kind);
 // The slide's matrix for P(u) = [u^3 u^2 u 1] M G.
 Mat4 basis_matrix(BasisKind kind);
 
+// The cardinal spline with tension c (Catmull-Rom is c = 0): the tangents are
+// (1-c)(P_i+1 - P_i-1)/2, so with s = (1-c)/2 the matrix for G = [P_i-1 P_i P_i+1 P_i+2] is
+//   [-s 2-s s-2 s; 2s s-3 3-2s -s; -s 0 s 0; 0 1 0 0]   (s = 1/2 gives lecture 003's M_CR).
+Mat4 cardinal_matrix(double tension);
+
 // Lecture 000, Hermite derivation: the rows [u^3 u^2 u 1] at u = 0 and u = 1 and their
 // derivatives [3u^2 2u 1 0] at u = 0 and u = 1. M_Hermite is the inverse of this matrix.
 Mat4 hermite_constraint_matrix();

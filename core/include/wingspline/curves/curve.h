@@ -1,0 +1,133 @@
+#pragma once
+// One description for every curve family of the course (lectures 000-004), and one batch
+// evaluator for all of them.
+//
+// Conventions (issue 5):
+//  * Points are flat arrays with a stated dimension: points[dim*i + k], dim 2 or 3.
+//  * Knot vectors have K + p + 1 entries for K control points of degree p; the domain is
+//    [t_p, t_K]; a parameter u lies in the span t_l <= u < t_{l+1}, and u = t_K belongs to
+//    the last (non-empty) span, so derivatives at the end are the left-sided ones.
+//  * Parameters outside the domain are refused (code 'parameter-out-of-range'), never
+//    clamped silently; an overshoot of kParameterSlack (relative to the domain) is rounding
+//    and is moved onto the domain end.
+//  * Domains per family:
+//      bezier         [0, 1]
+//      hermite        [0, K-1]  segment k = [k, k+1] between p_k and p_k+1
+//      catmull-rom    [0, K-3]  segment i = [i, i+1] uses P_i..P_i+3, runs from P_i+1 to P_i+2
+//      cardinal       [0, K-3]  as catmull-rom, tangents (1-tension)(P_i+1 - P_i-1)/2
+//      bspline/nurbs  [t_p, t_K] with knots; without knots the uniform knots t_j = j - p,
+//                     so the domain is [0, K-p] and segment i = [i, i+1] uses P_i..P_i+p
+//      interpolation  [u_0, u_n], the interpolation nodes (default u_i = i/n)
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace wingspline::curves {
+
+enum class CurveKind { Bezier, BSpline, Nurbs, Hermite, CatmullRom, Cardinal, Interpolation };
+
+// Parses 'bezier' | 'bspline' | 'nurbs' | 'hermite' | 'catmull-rom' | 'cardinal' |
+// 'interpolation'; throws Error("unknown-curve-kind") naming the word.
+CurveKind parse_curve_kind(const std::string& name);
+const char* curve_kind_name(CurveKind kind);
+
+// Degrees accepted for Bezier curves and B-splines/NURBS: 1..kMaxDegree. The limit keeps
+// the per-parameter work arrays on the stack and the basis numerically meaningful.
+constexpr int kMaxDegree = 20;
+// Polynomial interpolation through at most this many points (degree 15): beyond it the
+// Vandermonde system of lecture 000 is too ill-conditioned to show anything but rounding.
+constexpr int kMaxInterpolationPoints = 16;
+// A parameter this far (relative to max(1, |domain ends|)) outside the domain is rounding.
+constexpr double kParameterSlack = 1e-12;
+
+struct Curve {
+    CurveKind kind = CurveKind::Bezier;
+    int dim = 2;                  // 2 or 3 (1 is used internally for blending functions)
+    std::vector<double> points;   // points[dim*i + k]
+    int degree = 0;               // 0: the family's default (bezier: K-1, bspline/nurbs: 3)
+    std::vector<double> knots;    // bspline/nurbs: K+p+1 non-decreasing values; empty: uniform
+    std::vector<double> weights;  // nurbs (and rational bezier): weights[i] > 0; empty: all 1
+    std::vector<double> tangents; // hermite: tangents[dim*i + k], one per point
+    std::vector<double> nodes;    // interpolation: strictly increasing u_i; empty: i/n
+    double tension = 0;           // cardinal: 0 gives catmull-rom, 1 gives straight lines
+};
+
+struct Domain {
+    double start = 0;
+    double end = 1;
+};
+
+// Throws Error with one of the codes of docs/api-curves.md when the curve is not valid.
+void validate(const Curve& curve);
+int control_point_count(const Curve& curve);
+// The degree actually used (defaults resolved); 3 for the cubic families.
+int curve_degree(const Curve& curve);
+// True for the families whose points enter linearly in a polynomial (no weights).
+bool is_rational(const Curve& curve);
+
+// A validated curve, ready for batch evaluation. Cheap to build; holds a copy of the data
+// in the form the evaluation needs (knots with defaults, homogeneous points, or the power
+// coefficients C = M G of every cubic segment).
+class CurveEvaluator {
+public:
+    explicit CurveEvaluator(const Curve& curve);
+
+    Domain domain() const { return domain_; }
+    int dim() const { return dim_; }
+    int degree() const { return degree_; }
+    const Curve& curve() const { return curve_; }
+
+    // Checks params (finite, inside the domain up to kParameterSlack) and returns them with
+    // rounding overshoots moved onto the domain ends. Throws 'non-finite-input' or
+    // 'parameter-out-of-range' naming the index, the value and the domain.
+    std::vector<double> checked_params(const double* params, std::size_t n) const;
+
+    // out[dim*j + c]: the derivative of order `order` (0 = the point) at params[j].
+    // params must come from checked_params.
+    void evaluate(const double* params, std::size_t n, int order, double* out) const;
+    // out[(max_order+1)*dim*j + dim*k + c]: orders k = 0..max_order at params[j].
+    void evaluate_all(const double* params, std::size_t n, int max_order, double* out) const;
+
+    // The power coefficients of the polynomial segments (hermite, catmull-rom, cardinal,
+    // interpolation): coefficients_[segment][(degree+1)*dim], row r multiplies u^(degree-r).
+    int polynomial_segment_count() const { return static_cast<int>(segment_coefficients_.size()); }
+
+private:
+    void evaluate_polynomial(const double* params, std::size_t n, int max_order, bool all, double* out) const;
+    void evaluate_spline(const double* params, std::size_t n, int max_order, bool all, double* out) const;
+
+    Curve curve_;
+    int dim_ = 2;
+    int degree_ = 3;
+    Domain domain_;
+    // spline form (bezier, bspline, nurbs)
+    bool spline_ = false;
+    bool rational_ = false;
+    std::vector<double> knots_;
+    std::vector<double> homogeneous_; // stride dim+1 when rational (w x, w y, w z, w), else dim
+    int first_span_ = 0;
+    int last_span_ = 0;
+    // polynomial form (hermite, catmull-rom, cardinal, interpolation)
+    std::vector<std::vector<double>> segment_coefficients_;
+    bool absolute_parameter_ = false; // interpolation: P(u) in the global u, not u - segment
+};
+
+// Convenience wrappers (validate + evaluate). Output layout as CurveEvaluator::evaluate.
+std::vector<double> evaluate_curve(const Curve& curve, const std::vector<double>& params, int order = 0);
+std::vector<double> evaluate_curve_all(const Curve& curve, const std::vector<double>& params, int max_order);
+
+// The default knots of a B-spline without knots: t_j = j - p, j = 0..K+p.
+std::vector<double> uniform_knots(int count, int degree);
+// The knots of a Bezier curve of degree n as a B-spline: n+1 zeros, n+1 ones.
+std::vector<double> bezier_knots(int degree);
+
+// Blending functions of every control item at every parameter (lectures 000, 001: B = M T;
+// Cox-de Boor N_i,p for B-splines; rational R_i,p for NURBS):
+// values[count*j + i], count = control_point_count (hermite: 2K, points then tangents).
+struct BlendingValues {
+    int count = 0;
+    std::vector<double> values;
+};
+BlendingValues blending_functions(const Curve& curve, const std::vector<double>& params, int order = 0);
+
+} // namespace wingspline::curves
