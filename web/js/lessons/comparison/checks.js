@@ -90,9 +90,10 @@ function interpolationCells(points, sampled) {
   const some = hit.length > 0
     ? { answer: 'Yes', evidence: `P${hit.join(', P')} (distance ${fmt(maxHit)})`, interpolated: hit }
     : { answer: 'No', evidence: `nearest P${missIndex} is ${fmt(d[missIndex])} away`, interpolated: hit };
+  const farIndex = d.reduce((best, x, i) => (x > d[best] ? i : best), 0);
   const all = hit.length === points.length
     ? { answer: 'Yes', evidence: `distance ${fmt(maxHit)} at every point`, interpolated: hit }
-    : { answer: 'No', evidence: `P${missIndex} is ${fmt(d[missIndex])} away`, interpolated: hit };
+    : { answer: 'No', evidence: `P${farIndex} is ${fmt(d[farIndex])} away`, interpolated: hit };
   return { some, all, distances: d };
 }
 

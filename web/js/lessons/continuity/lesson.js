@@ -9,7 +9,7 @@ import { formatNumber } from '../../ui/mathml.js';
 import { drawSeriesPlot } from '../../ui/series-plot.js';
 import { PRESETS, DEFAULT_PRESET } from './presets.js';
 import { CONSTRAINTS, dragWithConstraint, enforceAll } from './constraints.js';
-import { computeModel, segmentCurves, speedOf, SAMPLES_PER_SEGMENT } from './model.js';
+import { computeModel, segmentCurves, SAMPLES_PER_SEGMENT } from './model.js';
 
 const FAMILIES = ['bezier', 'hermite', 'bspline', 'catmull-rom'];
 const FAMILY_NAMES = { bezier: 'Bezier', hermite: 'Hermite', bspline: 'Uniform B-spline', 'catmull-rom': 'Catmull-Rom' };
@@ -198,9 +198,8 @@ export const lesson = {
       const verdict = `${label('C', joint.parametric)} · ${label('G', joint.geometric)}`;
       const l = joint.left;
       const r = joint.right;
-      const speedL = Math.hypot(...l.d1);
-      const speedR = Math.hypot(...r.d1);
-      const ratio = speedL > 0 ? speedR / speedL : NaN;
+      const speedL = l.speed;
+      const speedR = r.speed;
       return h('section', { class: 'joint-card', 'data-joint': joint.index, 'data-parametric': joint.parametric, 'data-geometric': joint.geometric },
         h('h3', {}, `Joint J${joint.index} (u = ${joint.u}): `, h('span', { class: 'verdict', 'data-verdict': verdict }, verdict)),
         table({
@@ -213,9 +212,10 @@ export const lesson = {
             ['curvature κ', formatNumber(l.curvature, 4), formatNumber(r.curvature, 4)],
           ],
         }),
-        h('p', { class: 'ratio' }, Number.isFinite(ratio)
-          ? `|P'⁺| / |P'⁻| = ${formatNumber(ratio, 4)}: ${explainJoint(joint)}`
-          : `P'⁻ is the zero vector: ${explainJoint(joint)}`),
+        h('p', { class: 'ratio' }, joint.zeroTangent
+          ? `A first derivative is the zero vector: ${explainJoint(joint)}`
+          : `|P'⁺| / |P'⁻| = ${formatNumber(joint.ratio, 4)}, angle ${formatNumber((joint.tangentAngle * 180) / Math.PI, 3)}°: ${explainJoint(joint)}`),
+        joint.notes.length ? h('ul', { class: 'notes' }, joint.notes.map((n) => h('li', {}, n))) : null,
       );
     }));
 
@@ -314,7 +314,7 @@ export const lesson = {
 
   describe(model, state) {
     if (!model) return '';
-    const joints = model.joints.map((j) => `joint ${j.index}: ${label('C', j.parametric)} and ${label('G', j.geometric)}, speed ${formatNumber(Math.hypot(...j.left.d1), 3)} before and ${formatNumber(Math.hypot(...j.right.d1), 3)} after`).join('; ');
+    const joints = model.joints.map((j) => `joint ${j.index}: ${label('C', j.parametric)} and ${label('G', j.geometric)}, speed ${formatNumber(j.left.speed, 3)} before and ${formatNumber(j.right.speed, 3)} after`).join('; ');
     return `${FAMILY_NAMES[state.family]} curve of ${model.segmentCount} segments, dragging keeps ${state.constraint}. ${joints}. Travelling point at u = ${formatNumber(state.u, 3)}, (${formatNumber(model.traveller.point[0], 3)}, ${formatNumber(model.traveller.point[1], 3)}).`;
   },
 
@@ -324,7 +324,7 @@ export const lesson = {
       const lines = ['u,x,y,dx,dy,ddx,ddy,speed,curvature'];
       for (const s of model.segments) {
         for (let j = 0; j < s.u.length; j += 1) {
-          lines.push([s.u[j], s.points[2 * j], s.points[2 * j + 1], s.d1[2 * j], s.d1[2 * j + 1], s.d2[2 * j], s.d2[2 * j + 1], speedOf(s.d1, j), s.curvature[j]].join(','));
+          lines.push([s.u[j], s.points[2 * j], s.points[2 * j + 1], s.d1[2 * j], s.d1[2 * j + 1], s.d2[2 * j], s.d2[2 * j + 1], s.speed[j], s.curvature[j]].join(','));
         }
       }
       return lines.join('\n') + '\n';
@@ -344,7 +344,7 @@ function drawPlots(model, state, ctx) {
   const c = ctx.colors;
   const plotColors = { ink: c.ink, muted: c.muted, grid: c.grid, background: c.background };
   const marks = model.joints.map((j) => ({ u: j.u, label: `J${j.index}` }));
-  const speedPieces = model.segments.map((s) => ({ u: s.u, v: s.u.map((_, j) => speedOf(s.d1, j)) }));
+  const speedPieces = model.segments.map((s) => ({ u: s.u, v: s.speed }));
   drawSeriesPlot(lesson.ui.plots.speed, { series: [{ label: '|P\'|', color: c.series[4], pieces: speedPieces }], marks, cursor: state.u, yLabel: '|P\'(u)|', colors: plotColors });
   const comp = (k) => model.segments.map((s) => ({ u: s.u, v: s.u.map((_, j) => s.d2[2 * j + k]) }));
   drawSeriesPlot(lesson.ui.plots.second, {

@@ -30,10 +30,6 @@ function linspace(a, b, n) {
   return out;
 }
 
-function pick(values, dim, j) {
-  return [values[dim * j], values[dim * j + 1]];
-}
-
 // One segment sampled: points, P', P'' and curvature at SAMPLES_PER_SEGMENT parameters.
 function sampleSegment(api, curve, index) {
   const domain = api.curveDomain(curve);
@@ -50,30 +46,35 @@ function sampleSegment(api, curve, index) {
       d2[2 * j + c] = all[6 * j + 4 + c];
     }
   }
-  const curvature = api.curvature(curve, params);
+  const k = api.curvature(curve, params);
   // The global parameter of the lab: segment i runs over [i, i + 1].
   const u = params.map((t) => index + (t - domain.start) / (domain.end - domain.start));
-  return { curve, domain, params, u, points, d1, d2, curvature };
+  return { curve, domain, params, u, points, d1, d2, curvature: k.curvature, speed: k.speed };
 }
 
 export function computeModel(api, state) {
   const curves = segmentCurves(state.family, state.points);
   if (curves.length < 2) throw Object.assign(new Error('The continuity lab needs at least two segments to have a joint.'), { code: 'too-few-segments' });
   const segments = curves.map((c, i) => sampleSegment(api, c, i));
-  const last = SAMPLES_PER_SEGMENT - 1;
   const joints = [];
   for (let j = 1; j < segments.length; j += 1) {
     const a = segments[j - 1];
     const b = segments[j];
     const verdict = api.jointContinuity(a.curve, b.curve, { tolerance: JOINT_TOLERANCE });
+    const e = verdict.evidence;
+    // e.a / e.b hold [P, P', P''] of each side at the joint (2 numbers each).
+    const side = (d, curvature, speed) => ({ point: [d[0], d[1]], d1: [d[2], d[3]], d2: [d[4], d[5]], curvature, speed });
     joints.push({
       index: j,
       u: j,
       parametric: verdict.parametric,
       geometric: verdict.geometric,
-      verdict,
-      left: { point: pick(a.points, 2, last), d1: pick(a.d1, 2, last), d2: pick(a.d2, 2, last), curvature: a.curvature[last] },
-      right: { point: pick(b.points, 2, 0), d1: pick(b.d1, 2, 0), d2: pick(b.d2, 2, 0), curvature: b.curvature[0] },
+      ratio: e.ratio,
+      zeroTangent: e.zeroTangent,
+      tangentAngle: e.tangentAngle,
+      notes: e.notes,
+      left: side(e.a, e.curvatureA, a.speed[SAMPLES_PER_SEGMENT - 1]),
+      right: side(e.b, e.curvatureB, b.speed[0]),
     });
   }
   // The travelling point at the global parameter u.
@@ -85,4 +86,3 @@ export function computeModel(api, state) {
   return { segments, joints, traveller, segmentCount: segments.length };
 }
 
-export const speedOf = (d1, j) => Math.hypot(d1[2 * j], d1[2 * j + 1]);
