@@ -222,7 +222,8 @@ export async function runLesson(lesson) {
       if (handle && els.description) els.description.textContent = `${handle.label} at (${handle.x.toFixed(3)}, ${handle.y.toFixed(3)})`;
     },
     click: lesson.click ? (x, y, event) => lesson.click(x, y, ctx, event) : null,
-    onResize: () => scheduleRender(),
+    // Resizing clears the canvas: redraw at once, so no frame (or screenshot) shows it blank.
+    onResize: () => { if (model && ctx.stage) renderNow(); else scheduleRender(); },
   });
 
   // ---------------------------------------------------------------- toolbar
