@@ -4,7 +4,7 @@
 export const FAMILY_IDS = ['hermite', 'bezier', 'bspline', 'catmull-rom'];
 export const FAMILY_NAMES = { hermite: 'Hermite', bezier: 'Bezier', bspline: 'B-spline', 'catmull-rom': 'Catmull-Rom' };
 // Colour index into ctx.colors.series (Okabe-Ito) per family; the legend also names them.
-export const FAMILY_COLOR = { hermite: 4, bezier: 0, bspline: 2, 'catmull-rom': 1 };
+export const FAMILY_COLOR = { hermite: 3, bezier: 0, bspline: 2, 'catmull-rom': 1 };
 export const FAMILY_DASH = { hermite: [10, 4], bezier: [], bspline: [], 'catmull-rom': [3, 4] };
 
 const flat = (list) => list.flatMap((p) => p);

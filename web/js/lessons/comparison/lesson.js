@@ -18,6 +18,8 @@ const pair = list(number(), { min: 2, max: 2 });
 const DEFAULT_POINTS = [[-3.2, -1.2], [-2.4, 1.3], [-0.9, 1.6], [-0.2, -0.4], [1.1, -1.5], [2.3, 0.2], [3.3, 1.4]];
 
 const fmt = (x) => formatNumber(x, 3);
+// A bracket that keeps its text size next to tall matrices.
+const fixed = (text) => { const o = mo(text); o.setAttribute('stretchy', 'false'); return o; };
 
 export const lesson = {
   id: 'comparison',
@@ -45,7 +47,7 @@ export const lesson = {
     scene: 'families',
     show: { hermite: true, bezier: true, bspline: true, 'catmull-rom': true },
     conversion: { from: 'bezier', to: 'hermite', start: 0, mode: 'keep-curve' },
-    transform: { kind: 'affine', angle: 30, scale: 0.8, shear: 0.3, tx: 0.5, ty: -0.4, px: 0.12, py: 0.05 },
+    transform: { kind: 'affine', angle: 30, scale: 0.8, shear: 0.3, tx: 0.5, ty: -0.4, px: 0.06, py: 0.03 },
     view: { cx: 0, cy: 0, zoom: 90 },
   }),
 
@@ -60,14 +62,14 @@ export const lesson = {
   },
 
   fitView(model, stage) {
-    const pts = model.state.points;
+    const pts = model.state.scene === 'invariance' ? [...model.state.points, ...model.invariance.mapped] : model.state.points;
     const xs = pts.map((p) => p[0]);
     const ys = pts.map((p) => p[1]);
     return stage.fit(Math.min(...xs), Math.min(...ys) - 0.5, Math.max(...xs), Math.max(...ys) + 0.5);
   },
 
   setup(ctx) {
-    const sceneSelect = h('select', { id: 'scene', onchange: () => ctx.commit({ ...ctx.state, scene: sceneSelect.value }, { recompute: false }) },
+    const sceneSelect = h('select', { id: 'scene', onchange: () => ctx.commit({ ...ctx.state, scene: sceneSelect.value }) },
       Object.entries(SCENES).map(([k, v]) => h('option', { value: k }, v)));
     const familyBoxes = FAMILY_IDS.map((f) => {
       const box = h('input', { type: 'checkbox', id: `show-${f}`, onchange: () => ctx.commit({ ...ctx.state, show: { ...ctx.state.show, [f]: box.checked } }, { recompute: false }) });
@@ -75,9 +77,10 @@ export const lesson = {
     });
     ctx.controls.replaceChildren(h('label', { for: 'scene' }, 'Show ', sceneSelect), ...familyBoxes.map((b) => b.label));
 
+    // The panel of the current scene is open and first in view; the live table stays below.
+    const convBody = panel(ctx.panels, { id: 'conversion-panel', title: 'Basis conversion: q = M⁻¹ M_B P', open: false });
+    const invBody = panel(ctx.panels, { id: 'invariance-panel', title: 'Invariance: transform the points or the curve', open: false });
     const tableBody = panel(ctx.panels, { id: 'table-panel', title: 'The comparison table, checked live' });
-    const convBody = panel(ctx.panels, { id: 'conversion-panel', title: 'Basis conversion: q = M⁻¹ M_B P' });
-    const invBody = panel(ctx.panels, { id: 'invariance-panel', title: 'Invariance: transform the points or the curve' });
 
     const select = (id, options, value, onchange, names = FAMILY_NAMES) => {
       const s = h('select', { id, onchange: () => onchange(s.value) }, options.map((o) => h('option', { value: o }, names[o] ?? o)));
@@ -114,7 +117,7 @@ export const lesson = {
 
     ctx.keymap.add({ keys: ['v'], label: 'next scene: families, conversion, invariance', group: 'Lesson', action: () => {
       const keys = Object.keys(SCENES);
-      ctx.commit({ ...ctx.state, scene: keys[(keys.indexOf(ctx.state.scene) + 1) % keys.length] }, { recompute: false });
+      ctx.commit({ ...ctx.state, scene: keys[(keys.indexOf(ctx.state.scene) + 1) % keys.length] });
     } });
     FAMILY_IDS.forEach((f, i) => ctx.keymap.add({ keys: [String(i + 1)], label: `show / hide ${FAMILY_NAMES[f]}`, group: 'Lesson',
       action: () => ctx.commit({ ...ctx.state, show: { ...ctx.state.show, [f]: !ctx.state.show[f] } }, { recompute: false }) }));
@@ -122,6 +125,11 @@ export const lesson = {
 
   update(model, state) {
     const ui = lesson.ui;
+    if (ui.shownScene !== state.scene) {
+      ui.shownScene = state.scene;
+      document.getElementById('conversion-panel').open = state.scene === 'conversion';
+      document.getElementById('invariance-panel').open = state.scene === 'invariance';
+    }
     ui.sceneSelect.value = state.scene;
     for (const b of ui.familyBoxes) b.box.checked = state.show[b.f];
     updateTable(ui.tableBody, model.table);
@@ -139,7 +147,7 @@ export const lesson = {
       for (const f of FAMILY_IDS) {
         if (!state.show[f]) continue;
         for (const s of model.table.curves[f]) painter.polyline(s.points, { stroke: strokeOf(f), width: f === 'bezier' ? 4 : 2.5, dash: FAMILY_DASH[f] });
-        legend.push([strokeOf(f), `${FAMILY_NAMES[f]}${f === 'catmull-rom' ? ' (end points repeated)' : f === 'hermite' ? ' (tangents from the points)' : ''}`, FAMILY_DASH[f]]);
+        legend.push([strokeOf(f), `${FAMILY_NAMES[f]}${f === 'catmull-rom' ? ' (end points repeated)' : f === 'hermite' ? ', t_i = (P_i+1 − P_i−1)/2: Catmull-Rom inside' : ''}`, FAMILY_DASH[f]]);
       }
       if (state.show.hermite) {
         const t = pointTangents(state.points);
@@ -257,7 +265,7 @@ function updateConversion(ui, m, state) {
   const formula = m.q
     ? math(mi('q'), mo('='), el('msup', sub('M', short[m.to]), el('mn', '-1')), sub('M', short[m.from]), mi('P'), mo('='),
       el('msup', matrix(rows4(m.Mto)), el('mn', '-1')), matrix(rows4(m.Mfrom)), matrix(geometryRows(m.g)), mo('='), matrix(geometryRows(m.q)))
-    : math(mi('P'), mo('('), mi('u'), mo(')'), mo('='), el('msup', mi('u'), mi('T')), matrix(rows4(m.Mto)), matrix(geometryRows(m.g)));
+    : math(mi('P'), fixed('('), mi('u'), fixed(')'), mo('='), el('msup', mi('u'), mi('T')), matrix(rows4(m.Mto)), matrix(geometryRows(m.g)));
   ui.out.replaceChildren(
     h('div', { class: 'formula' }, formula),
     h('p', { 'data-conversion-distance': String(m.distance) }, m.q

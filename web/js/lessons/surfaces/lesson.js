@@ -19,6 +19,8 @@ const PATCHES = ['a', 'b'];
 const PATCH_NAMES = { a: 'A', b: 'B' };
 
 const fmt = (x) => formatNumber(x, 3);
+// A bracket that keeps its text size next to tall matrices.
+const fixed = (text) => { const o = mo(text); o.setAttribute('stretchy', 'false'); return o; };
 const fmt3 = (p) => `(${fmt(p[0])}, ${fmt(p[1])}, ${fmt(p[2])})`;
 const flat = (net) => net.flatMap((p) => p);
 const at3 = (values, idx) => [values[3 * idx], values[3 * idx + 1], values[3 * idx + 2]];
@@ -259,7 +261,7 @@ export const lesson = {
     const MT = Mrows[0].map((_, c) => Mrows.map((r) => r[c]));
     const powers = (t) => [[t ** 3, t ** 2, t, 1]];
     ui.formulaOut.replaceChildren(
-      h('div', { class: 'formula' }, math(el('mrow', mi('p'), mo('('), mi('u'), mo(','), mi('v'), mo(')')), mo('='),
+      h('div', { class: 'formula' }, math(mi('p'), fixed('('), mi('u'), mo(','), mi('v'), fixed(')'), mo('='),
         el('msup', mi('u'), mi('T')), matrix(Mrows), mi('P'), matrix(MT), mi('v'))),
       h('div', { class: 'formula-row' }, ['x', 'y', 'z'].map((axis, k) => h('div', { class: 'formula' },
         math(el('msub', mi('P'), mi(axis)), mo('='), matrix(Pcells.map((row) => row.map((p) => p[k]))))))),
@@ -356,6 +358,8 @@ export const lesson = {
           painter.arrow(xy[2 * id], xy[2 * id + 1], tx, ty, { stroke: c.series[3], width: 2.5 });
           painter.text(tx, ty, `p_uv/9`, { fill: c.series[3], font: 11, dy: -10, halo: c.background });
         }
+        // B's u = 0 corners are A's u = 1 corners: label them once.
+        if (patch === 'b' && corner.u === 0) return;
         painter.text(xy[2 * id], xy[2 * id + 1], `${PATCH_NAMES[patch]} p(${corner.u},${corner.v})`, { fill: c.ink, font: 12, dx: 12, dy: 14, align: 'left', halo: c.background });
       });
     }
