@@ -14,6 +14,7 @@
 #include "wingspline/curves/segment.h"
 
 #include <malloc.h>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -49,19 +50,38 @@ val ints(const std::vector<int>& v) {
 
 // curveEvaluate(spec, params, order, all) -> {values}: all = false gives the derivative of
 // `order` only (dim per param); all = true gives orders 0..order ((order+1)*dim per param).
-val curve_evaluate(const val& spec, const val& params, int order, bool all) {
+// The params as doubles in wasm memory: one bulk copy, without the zero-fill of
+// std::vector's resize (the array may hold millions of parameters).
+std::unique_ptr<double[]> params_in(const val& params, std::size_t& n) {
+    n = params["length"].as<std::size_t>();
+    std::unique_ptr<double[]> u(new double[n > 0 ? n : 1]);
+    val(emscripten::typed_memory_view(n, u.get())).call<void>("set", params);
+    return u;
+}
+
+// out: undefined (a new Float64Array is returned) or a Float64Array of the right length
+// that the JS layer checked; filling it avoids allocating a new array on every redraw.
+val curve_evaluate(const val& spec, const val& params, int order, bool all, const val& out_array) {
     return guarded([&] {
         const CurveEvaluator ev(curve_from(spec));
         require(order >= 0 && order <= kMaxDegree + 1, "invalid-argument",
                 "the derivative order must be a whole number from 0 to " + std::to_string(kMaxDegree + 1));
-        const std::vector<double> raw = to_doubles(params);
-        const std::vector<double> u = ev.checked_params(raw.data(), raw.size());
-        const std::size_t per = static_cast<std::size_t>(ev.dim()) * (all ? order + 1 : 1);
-        std::vector<double> out(u.size() * per);
-        if (all) ev.evaluate_all(u.data(), u.size(), order, out.data());
-        else ev.evaluate(u.data(), u.size(), order, out.data());
+        // One copy in, one copy out: the params are checked in place and the result buffer
+        // is not zero-filled before it is written.
+        std::size_t n = 0;
+        const std::unique_ptr<double[]> u = params_in(params, n);
+        ev.check_params(u.get(), n);
+        const std::size_t count = n * static_cast<std::size_t>(ev.dim()) * (all ? order + 1 : 1);
+        const std::unique_ptr<double[]> out(new double[count > 0 ? count : 1]);
+        if (all) ev.evaluate_all(u.get(), n, order, out.get());
+        else ev.evaluate(u.get(), n, order, out.get());
         val r = val::object();
-        r.set("values", to_typed_array(out));
+        if (out_array.isUndefined()) {
+            r.set("values", to_typed_array(out.get(), count));
+        } else {
+            out_array.call<void>("set", val(emscripten::typed_memory_view(count, out.get())));
+            r.set("values", out_array);
+        }
         return r;
     });
 }

@@ -91,6 +91,18 @@ function transpose(m, n) {
 }
 
 export function createCurvesApi(raw) {
+  function evaluate(curve, params, order, all, out) {
+    const spec = normalizeCurve(curve);
+    const u = numbers(params, 'params');
+    if (out !== undefined) {
+      const expected = u.length * spec.dim * (all ? order + 1 : 1);
+      if (!(out instanceof Float64Array) || out.length !== expected) {
+        fail('invalid-argument', `options.out must be a Float64Array of length ${expected}`);
+      }
+    }
+    return unwrap(raw.curveEvaluate(spec, u, order, all, out)).values;
+  }
+
   const api = {
     // The row-major 4x4 basis matrix M of P(u) = [u^3 u^2 u 1] M G (lectures 000, 003);
     // lecture 001's Q(t) = G M T uses its transpose (segmentMatrices gives both).
@@ -109,20 +121,19 @@ export function createCurvesApi(raw) {
     },
 
     // Points of the curve: Float64Array, values[dim*j + k] for params[j].
-    evaluateCurve(curve, params) {
-      const spec = normalizeCurve(curve);
-      return unwrap(raw.curveEvaluate(spec, numbers(params, 'params'), 0, false)).values;
+    // options.out: a Float64Array of length dim * params.length to fill instead of
+    // allocating a new one (a lesson redrawing on every pointer move reuses its buffer).
+    evaluateCurve(curve, params, { out } = {}) {
+      return evaluate(curve, params, 0, false, out);
     },
-    // The derivative of `order` (1 = tangent vector P'(u), 2 = P''(u)); same layout.
-    evaluateDerivative(curve, params, order = 1) {
-      const spec = normalizeCurve(curve);
-      return unwrap(raw.curveEvaluate(spec, numbers(params, 'params'), derivativeOrder(order), false)).values;
+    // The derivative of `order` (1 = tangent vector P'(u), 2 = P''(u)); same layout and options.
+    evaluateDerivative(curve, params, order = 1, { out } = {}) {
+      return evaluate(curve, params, derivativeOrder(order), false, out);
     },
     // Point and derivatives 1..maxOrder in one pass:
     // values[(maxOrder+1)*dim*j + dim*k + c] is component c of the k-th derivative at params[j].
-    evaluateWithDerivatives(curve, params, maxOrder = 1) {
-      const spec = normalizeCurve(curve);
-      return unwrap(raw.curveEvaluate(spec, numbers(params, 'params'), derivativeOrder(maxOrder), true)).values;
+    evaluateWithDerivatives(curve, params, maxOrder = 1, { out } = {}) {
+      return evaluate(curve, params, derivativeOrder(maxOrder), true, out);
     },
     // { start, end, degree, controlPointCount, segmentCount }
     curveDomain(curve) {
@@ -138,7 +149,7 @@ export function createCurvesApi(raw) {
       const params = new Float64Array(n);
       for (let j = 0; j < n; j += 1) params[j] = d.start + ((d.end - d.start) * j) / (n - 1);
       params[n - 1] = d.end;
-      return { params, points: unwrap(raw.curveEvaluate(spec, params, 0, false)).values };
+      return { params, points: unwrap(raw.curveEvaluate(spec, params, 0, false, undefined)).values };
     },
     // Blending functions (B = M T of lecture 001; Cox-de Boor N_i,p; NURBS R_i,p) of every
     // control item at every param: values[count*j + i]. Hermite: count = 2K, items 0..K-1

@@ -81,6 +81,8 @@ public:
     // rounding overshoots moved onto the domain ends. Throws 'non-finite-input' or
     // 'parameter-out-of-range' naming the index, the value and the domain.
     std::vector<double> checked_params(const double* params, std::size_t n) const;
+    // The same check in place (no copy): the batch path of the bindings.
+    void check_params(double* params, std::size_t n) const;
 
     // out[dim*j + c]: the derivative of order `order` (0 = the point) at params[j].
     // params must come from checked_params.
@@ -107,6 +109,11 @@ private:
     std::vector<double> homogeneous_; // stride dim+1 when rational (w x, w y, w z, w), else dim
     int first_span_ = 0;
     int last_span_ = 0;
+    // Cubic fast path: per span l, the reciprocals of the knot differences the Cox-de Boor
+    // triangle divides by (they depend on the span only, not on u), so evaluation needs no
+    // division: inverse_differences_[kCubicStride*l + ...], see curve.cpp.
+    static constexpr int kCubicStride = 9;
+    std::vector<double> inverse_differences_;
     // polynomial form (hermite, catmull-rom, cardinal, interpolation)
     std::vector<std::vector<double>> segment_coefficients_;
     bool absolute_parameter_ = false; // interpolation: P(u) in the global u, not u - segment
