@@ -15,7 +15,7 @@ export const lessons = [
     page: 'curves.html',
     lectures: '000 to 004',
     summary: 'Hermite, Bezier, B-splines, NURBS and Catmull-Rom: drag control points, watch the blending functions, the matrices and de Casteljau.',
-    ready: false,
+    ready: true,
   },
   {
     id: 'continuity',

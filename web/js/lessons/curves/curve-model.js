@@ -1,0 +1,215 @@
+// compute(): every number the curve explorer shows comes from the wasm core through this
+// module (the lesson's `compute`). The result is a plain model the drawing and the panels
+// read; nothing here draws. One core call per curve and purpose (batch API): the samples,
+// the blending values at the same parameters, the derivatives at u, the segment matrices.
+import { curveSpec, familyDegree, isSpline, usesKnots, knotGroups, uniformKnots, pairs } from './families.js';
+import { convexHull } from './hull.js';
+
+export const SAMPLES_PER_CURVE = 1000;
+const COMB_SAMPLES = 120;
+// One blending call serves the plot and the influence tint (the tint maps each curve sample
+// to the plot parameter at the same fraction of the domain; both are uniform in u).
+const PLOT_PARAMS = 250;
+
+// The parameters t_j = a + (b - a) j/(n-1): uniform in the parameter, as the lecture
+// samples a curve (the sample-points overlay shows how uneven that is along the curve).
+export function uniformParams(start, end, n) {
+  const out = new Float64Array(n);
+  for (let j = 0; j < n; j += 1) out[j] = start + ((end - start) * j) / (n - 1);
+  out[n - 1] = end;
+  return out;
+}
+
+// A cache of the parts that depend only on the curve (not on u, the overlays or the
+// construction step), so playing u or stepping a construction costs no resampling.
+let cache = { key: null, value: null };
+
+function curvePart(api, state, spec) {
+  const key = JSON.stringify([state.family, state.points, state.tangents, state.knots, state.weights, state.degree, state.tension]);
+  if (cache.key === key) return cache.value;
+  const domain = api.curveDomain(spec);
+  const params = uniformParams(domain.start, domain.end, SAMPLES_PER_CURVE);
+  const curve = api.evaluateCurve(spec, params);
+  const plotParams = uniformParams(domain.start, domain.end, PLOT_PARAMS);
+  const blending = api.blendingFunctions(spec, plotParams);
+  const value = { domain, params, curve, plotParams, blending };
+  cache = { key, value };
+  return value;
+}
+
+export function computeCurveModel(api, state) {
+  const spec = curveSpec(state);
+  const part = curvePart(api, state, spec);
+  const { domain } = part;
+  const degree = familyDegree(state);
+  const u = Math.min(Math.max(state.u, domain.start), domain.end);
+  const at = Float64Array.of(u);
+  const point = api.evaluateCurve(spec, at);
+  const d1 = api.evaluateDerivative(spec, at, 1);
+  const d2 = api.evaluateDerivative(spec, at, 2);
+  const segmentIndex = segmentAt(api, spec, domain, u);
+  const segment = api.segmentMatrices(spec, segmentIndex);
+
+  const model = {
+    spec,
+    family: state.family,
+    degree,
+    domain,
+    u,
+    samples: part.curve,
+    params: part.params,
+    plot: { params: part.plotParams, count: part.blending.count, values: part.blending.values },
+    point: [point[0], point[1]],
+    d1: [d1[0], d1[1]],
+    d2: [d2[0], d2[1]],
+    segment,
+    segmentIndex,
+    hull: convexHull(state.points),
+    segmentHull: convexHull(segmentPointIndices(segment, state).map((i) => state.points[i])),
+    knots: null,
+    comb: null,
+    construction: null,
+    compare: null,
+    homogeneous: null,
+  };
+
+  if (isSpline(state.family)) {
+    const knots = usesKnots(state.family) ? state.knots : uniformKnots(state.points.length, state.degree);
+    const groups = knotGroups(knots, state.degree);
+    const inside = groups.filter((g) => g.value >= domain.start && g.value <= domain.end);
+    const where = api.evaluateCurve(spec, Float64Array.from(inside.map((g) => g.value)));
+    model.knots = { values: knots, groups, inside, positions: where };
+  } else {
+    // Segment joints: the curve at the segment boundaries of the piecewise families.
+    const n = domain.segmentCount ?? 1;
+    const joints = uniformParams(domain.start, domain.end, n + 1);
+    model.joints = { params: joints, positions: api.evaluateCurve(spec, joints) };
+  }
+
+  if (state.overlays.comb && typeof api.curvature === 'function') model.comb = curvatureComb(api, spec, domain);
+  if (state.family === 'interpolation' && state.compare) model.compare = interpolatingSpline(api, state);
+  if (state.family === 'nurbs') model.homogeneous = homogeneousView(api, state, spec, part, u);
+  model.construction = construction(api, state, spec, u, degree);
+  return model;
+}
+
+function segmentAt(api, spec, domain, u) {
+  const count = domain.segmentCount ?? 1;
+  if (count <= 1) return 0;
+  if (spec.knots || spec.kind === 'bspline' || spec.kind === 'nurbs') {
+    // Non-empty spans of the knot vector in order; segment i is the i-th of them.
+    const knots = spec.knots ?? Float64Array.from(uniformKnots(spec.points.length / spec.dim, spec.degree));
+    const p = spec.degree;
+    const K = spec.points.length / spec.dim;
+    let index = -1;
+    for (let l = p; l < K; l += 1) {
+      if (knots[l + 1] > knots[l]) {
+        index += 1;
+        if (u < knots[l + 1]) return index;
+      }
+    }
+    return Math.max(0, index);
+  }
+  return Math.min(count - 1, Math.max(0, Math.floor(((u - domain.start) / (domain.end - domain.start)) * count)));
+}
+
+function segmentPointIndices(segment, state) {
+  const ids = segment.controlIndices ? Array.from(segment.controlIndices) : [];
+  const K = state.points.length;
+  // Hermite rows 2 and 3 are tangents, not points: their indices are not hull points.
+  if (state.family === 'hermite') return ids.slice(0, 2).filter((i) => i >= 0 && i < K);
+  return ids.filter((i) => i >= 0 && i < K);
+}
+
+// The comb: at each sample, the normal scaled by the curvature the core computed.
+function curvatureComb(api, spec, domain) {
+  const params = uniformParams(domain.start, domain.end, COMB_SAMPLES);
+  const p = api.evaluateCurve(spec, params);
+  const d1 = api.evaluateDerivative(spec, params, 1);
+  const kappa = api.curvature(spec, params);
+  let maxK = 0;
+  for (const k of kappa) if (Number.isFinite(k)) maxK = Math.max(maxK, Math.abs(k));
+  const teeth = new Float64Array(COMB_SAMPLES * 4);
+  for (let j = 0; j < COMB_SAMPLES; j += 1) {
+    const tx = d1[2 * j];
+    const ty = d1[2 * j + 1];
+    const len = Math.hypot(tx, ty) || 1;
+    // Signed curvature along the left normal (-ty, tx): the comb points to the concave side.
+    const k = Number.isFinite(kappa[j]) ? kappa[j] : 0;
+    teeth[4 * j] = p[2 * j];
+    teeth[4 * j + 1] = p[2 * j + 1];
+    teeth[4 * j + 2] = k * (-ty / len);
+    teeth[4 * j + 3] = k * (tx / len);
+  }
+  return { teeth, maxCurvature: maxK, count: COMB_SAMPLES };
+}
+
+// Lecture 004's comparison: the same points through one cubic spline. Catmull-Rom with the
+// end points doubled runs through every point, each piece a cubic.
+function interpolatingSpline(api, state) {
+  const pts = state.points;
+  const doubled = [pts[0], ...pts, pts[pts.length - 1]];
+  const spec = { kind: 'catmull-rom', dim: 2, points: Float64Array.from(doubled.flat()) };
+  const domain = api.curveDomain(spec);
+  const samples = api.evaluateCurve(spec, uniformParams(domain.start, domain.end, SAMPLES_PER_CURVE));
+  return { spec, samples };
+}
+
+// The NURBS as the shadow of a polynomial B-spline in 3D: control points (w x, w y, w), the
+// same knots; its points divided by w give the rational curve (lectures 001, 002).
+function homogeneousView(api, state, spec, part, u) {
+  const lifted = state.points.map(([x, y], i) => [x * state.weights[i], y * state.weights[i], state.weights[i]]);
+  const spec3 = { kind: 'bspline', dim: 3, degree: state.degree, knots: spec.knots, points: Float64Array.from(lifted.flat()) };
+  const params = uniformParams(part.domain.start, part.domain.end, 200);
+  const curve3 = api.evaluateCurve(spec3, params);
+  const at = api.evaluateCurve(spec3, Float64Array.of(u));
+  return { lifted, curve3, at: [at[0], at[1], at[2]], projected: state.points };
+}
+
+// The construction being shown: computed whole, drawn up to the current step.
+function construction(api, state, spec, u, degree) {
+  const c = state.construction;
+  if (c.kind === 'none' || !constructionsFor(state.family, api).includes(c.kind)) return null;
+  const K = state.points.length;
+  if (c.kind === 'de-casteljau' && state.family === 'bezier') {
+    const r = api.deCasteljau(spec.points, 2, u);
+    return { kind: c.kind, levels: r.levels.map((l) => pairs(l)), steps: r.levels.length };
+  }
+  if (c.kind === 'de-boor' && isSpline(state.family)) {
+    const r = api.deBoor(spec, u);
+    return { kind: c.kind, levels: r.levels.map((l) => pairs(l, r.stride ?? 2)), span: r.span, indices: r.indices, steps: r.levels.length };
+  }
+  if (c.kind === 'subdivide' && state.family === 'bezier') {
+    const r = api.deCasteljau(spec.points, 2, u);
+    const s = api.subdivideBezier(spec.points, 2, u);
+    return { kind: c.kind, levels: r.levels.map((l) => pairs(l)), left: pairs(s.left), right: pairs(s.right), steps: 2 };
+  }
+  if (c.kind === 'elevate' && state.family === 'bezier') {
+    const r = api.elevateDegree(spec.points, 2);
+    return { kind: c.kind, points: pairs(r.points), degree: K, steps: 2 };
+  }
+  if (c.kind === 'insert-knot' && usesKnots(state.family)) {
+    const r = api.insertKnot(spec, u);
+    const newPoints = pairs(r.points);
+    // The points that differ from the old polygon are the new ones (Boehm replaces p - 1
+    // points by p new ones around the span).
+    const changed = newPoints.map((p) => !state.points.some((q) => Math.abs(q[0] - p[0]) < 1e-12 && Math.abs(q[1] - p[1]) < 1e-12));
+    return { kind: c.kind, points: newPoints, knots: Array.from(r.knots), weights: r.weights ? Array.from(r.weights) : null, changed, at: u, steps: 2 };
+  }
+  return null;
+}
+
+export function resetModelCache() {
+  cache = { key: null, value: null };
+}
+
+// Which construction kinds a family offers (those the loaded core provides: the page
+// follows the core's API as it grows, issue 5).
+const CONSTRUCTION_CALLS = { 'de-casteljau': 'deCasteljau', subdivide: 'subdivideBezier', elevate: 'elevateDegree', 'de-boor': 'deBoor', 'insert-knot': 'insertKnot' };
+export function constructionsFor(family, api) {
+  let kinds = [];
+  if (family === 'bezier') kinds = ['de-casteljau', 'subdivide', 'elevate'];
+  else if (family === 'bspline' || family === 'nurbs') kinds = ['de-boor', 'insert-knot'];
+  else if (family === 'bspline-uniform') kinds = ['de-boor'];
+  return kinds.filter((k) => typeof api?.[CONSTRUCTION_CALLS[k]] === 'function');
+}

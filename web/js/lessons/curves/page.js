@@ -1,0 +1,5 @@
+// The curve explorer page (web/curves.html).
+import { runLesson } from '../../app/shell.js';
+import { lesson } from './lesson.js';
+
+runLesson(lesson);

@@ -1,0 +1,500 @@
+// The curve explorer's controls and panels: family, degree, tension, the u slider with
+// play, the blending plot and knot strip under the drawing; the matrix panel, the
+// constructions, overlays, the numeric inspector, knots, weights and the homogeneous view
+// on the side. Every change goes through ctx.commit (the core recomputes first; a refused
+// change leaves the old state and the message line says why).
+import { h, panel } from '../../app/dom.js';
+import { createPlayer } from '../../app/player.js';
+import { formatNumber } from '../../ui/mathml.js';
+import {
+  FAMILIES, familyInfo, usesKnots, isSpline, hasDegreeChoice, maxDegreeFor, switchFamily, addPoint, removePoint,
+  withDegree, clampedKnots, uniformKnots, unclampedKnots, knotGroups, continuityLabel,
+} from './families.js';
+import { constructionsFor } from './curve-model.js';
+import { createBlendingPlot } from './blending-plot.js';
+import { createMatrixPanel } from './matrix-panel.js';
+import { createKnotStrip } from './knot-strip.js';
+import { createHomogeneousInset } from './homogeneous-inset.js';
+import { OVERLAYS, blendingLabels } from './lesson.js';
+
+const U_STEPS = 120;
+const CONSTRUCTION_LABELS = {
+  'de-casteljau': 'de Casteljau at u (all levels)',
+  'de-boor': 'de Boor at u',
+  subdivide: 'Subdivide at u into two halves',
+  elevate: 'Raise the degree by one',
+  'insert-knot': 'Insert a knot at u (Boehm)',
+};
+
+// The exact circle of lectures 001/002: a quadratic NURBS with 9 control points on the
+// square of side 2r, weights 1 at the corners' neighbours and sqrt(2)/2 at the corners.
+export function circlePreset(radius = 2) {
+  const r = radius;
+  const c = Math.SQRT1_2;
+  return {
+    family: 'nurbs',
+    degree: 2,
+    points: [[r, 0], [r, r], [0, r], [-r, r], [-r, 0], [-r, -r], [0, -r], [r, -r], [r, 0]],
+    weights: [1, c, 1, c, 1, c, 1, c, 1],
+    knots: [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1],
+  };
+}
+
+let els = null;
+
+export function setupPanels(ctx, lesson) {
+  const commit = (next, opts) => ctx.commit(next, opts);
+  const state = () => ctx.state;
+  const clearConstruction = (s) => ({ ...s, construction: { kind: 'none', step: 0 } });
+
+  // ---------------------------------------------------------------- under the drawing
+  const family = h('select', { id: 'curve-family', onchange: (e) => {
+    const next = switchFamily(state(), e.target.value);
+    if (commit(next)) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+    else e.target.value = state().family;
+  } }, FAMILIES.map((f) => h('option', { value: f.id }, f.label)));
+  const degree = h('select', { id: 'curve-degree', onchange: (e) => commit(withDegree(state(), Number(e.target.value))) });
+  const tension = h('input', { type: 'range', id: 'curve-tension', min: -0.5, max: 1, step: 0.05, oninput: (e) => commit({ ...state(), tension: Number(e.target.value) }, { coalesce: 'tension' }) });
+  const tensionOut = h('output', { for: 'curve-tension' });
+  const uSlider = h('input', { type: 'range', id: 'curve-u', step: 'any', oninput: (e) => setU(Number(e.target.value)) });
+  const uOut = h('output', { for: 'curve-u', class: 'mono' });
+  const playU = h('button', { type: 'button', class: 'tool', 'data-action': 'play-u', onclick: () => uPlayer.toggle() }, 'Play u');
+  const addButton = h('button', { type: 'button', class: 'tool', 'data-action': 'add-point', onclick: () => addSelected() }, 'Add point');
+  const removeButton = h('button', { type: 'button', class: 'tool', 'data-action': 'remove-point', onclick: () => removeSelected() }, 'Remove point');
+
+  function setU(u, coalesce = 'u') {
+    const s = state();
+    commit({ ...s, u, construction: s.construction.kind === 'elevate' ? s.construction : s.construction }, { coalesce });
+  }
+  const uPlayer = createPlayer({
+    count: () => U_STEPS + 1,
+    getStep: () => { const d = ctx.model.domain; return Math.round(((state().u - d.start) / (d.end - d.start)) * U_STEPS); },
+    onStep: (k) => { const d = ctx.model.domain; setU(d.start + ((d.end - d.start) * k) / U_STEPS, 'u-play'); },
+    stepsPerSecond: 30,
+  });
+  uPlayer.onChange(() => { playU.textContent = uPlayer.playing ? 'Pause u' : 'Play u'; playU.setAttribute('aria-pressed', String(uPlayer.playing)); });
+
+  function addSelected(at = null) {
+    const s = state();
+    const info = familyInfo(s.family);
+    if (s.points.length >= info.maxPoints) { ctx.message.warn(`${info.label} takes at most ${info.maxPoints} points here.`); return; }
+    const sel = selectedPoint(ctx);
+    const next = addPoint(s, at ? s.points.length - 1 : (sel ?? s.points.length - 1), at);
+    if (commit(next)) ctx.message.info(`Added P${at ? s.points.length : (sel ?? s.points.length - 1) + 1}.`);
+  }
+  function removeSelected() {
+    const s = state();
+    const sel = selectedPoint(ctx);
+    const info = familyInfo(s.family);
+    if (sel === null) { ctx.message.warn('Select a control point first (click it, or focus the drawing and press ]).'); return; }
+    if (s.points.length <= info.minPoints) { ctx.message.warn(`${info.label} needs at least ${info.minPoints} points.`); return; }
+    if (commit(removePoint(s, sel))) { ctx.ui.selected = null; ctx.message.info(`Removed P${sel}.`); }
+  }
+
+  const row1 = h('div', { class: 'curve-row' },
+    h('label', { for: 'curve-family' }, 'Family'), family,
+    h('label', { for: 'curve-degree', class: 'degree-label' }, 'Degree p'), degree,
+    h('span', { class: 'tension-group' }, h('label', { for: 'curve-tension' }, 'Tension'), tension, tensionOut),
+    addButton, removeButton);
+  const row2 = h('div', { class: 'curve-row' }, h('label', { for: 'curve-u' }, 'u'), uSlider, uOut, playU);
+  const plots = h('div', { class: 'curve-plots' });
+  ctx.controls.append(row1, row2, plots);
+  const blending = createBlendingPlot(plots, {
+    label: 'Blending functions',
+    onSeek(u, { final }) { if (final) ctx.store.endGesture(); else setU(u, 'u-plot'); },
+  });
+  const stripBox = h('div', { class: 'knot-strip-box' });
+  plots.append(stripBox);
+  const strip = createKnotStrip(stripBox, {
+    label: 'Knot strip',
+    onChange(knots, { final }) {
+      if (knots) commit(clearConstruction({ ...state(), knots }), { coalesce: final ? null : 'knot-drag' });
+      if (final) ctx.store.endGesture();
+    },
+  });
+
+  // ---------------------------------------------------------------- side panels
+  const matrixBody = panel(ctx.panels, { id: 'panel-matrix', title: 'Matrix form of the current segment' });
+  const transposed = h('input', { type: 'checkbox', id: 'matrix-transposed', onchange: (e) => commit({ ...state(), transposed: e.target.checked }) });
+  matrixBody.append(h('label', { class: 'check' }, transposed, ' Lecture 001 form Q(t) = G · M · T (transposed M)'));
+  const matrix = createMatrixPanel(matrixBody);
+
+  const conBody = panel(ctx.panels, { id: 'panel-construction', title: 'Constructions' });
+  const conKind = h('select', { id: 'construction-kind', onchange: (e) => { uPlayer.pause(); commit({ ...state(), construction: { kind: e.target.value, step: 0 } }); } });
+  const conStep = h('p', { class: 'construction-step', 'aria-live': 'polite' });
+  const conPlayer = createPlayer({
+    count: () => ctx.model?.construction?.steps ?? 1,
+    getStep: () => state().construction.step,
+    onStep: (k) => commit({ ...state(), construction: { ...state().construction, step: k } }, { coalesce: 'construction-step' }),
+    stepsPerSecond: 1.2,
+  });
+  const conButtons = {
+    restart: h('button', { type: 'button', class: 'tool', 'data-action': 'construction-restart', onclick: () => conPlayer.restart() }, 'Start'),
+    prev: h('button', { type: 'button', class: 'tool', 'data-action': 'construction-prev', onclick: () => conPlayer.prev() }, '◀ Back'),
+    play: h('button', { type: 'button', class: 'tool', 'data-action': 'construction-play', onclick: () => conPlayer.toggle() }, 'Play'),
+    next: h('button', { type: 'button', class: 'tool', 'data-action': 'construction-next', onclick: () => conPlayer.next() }, 'Step ▶'),
+    apply: h('button', { type: 'button', class: 'tool', 'data-action': 'construction-apply', onclick: () => applyConstruction() }, 'Apply to the curve'),
+  };
+  conPlayer.onChange(() => { conButtons.play.textContent = conPlayer.playing ? 'Pause' : 'Play'; });
+  conBody.append(h('label', { for: 'construction-kind' }, 'Construction '), conKind,
+    h('div', { class: 'button-row' }, Object.values(conButtons)), conStep);
+
+  function applyConstruction() {
+    const s = state();
+    const con = ctx.model.construction;
+    if (!con) return;
+    if (con.kind === 'elevate') {
+      const next = { ...s, points: con.points, construction: { kind: 'elevate', step: 0 } };
+      next.weights = con.points.map(() => 1);
+      if (commit(next)) ctx.message.info(`Degree raised to ${con.points.length - 1}: same curve, one more control point.`);
+    } else if (con.kind === 'insert-knot') {
+      const next = { ...s, points: con.points, knots: con.knots, weights: con.weights ?? s.weights, construction: { kind: 'insert-knot', step: 0 } };
+      if (commit(next)) ctx.message.info(`Knot ${formatNumber(con.at, 4)} inserted: same curve, one more control point.`);
+    }
+  }
+
+  const overlayBody = panel(ctx.panels, { id: 'panel-overlays', title: 'Overlays' });
+  const overlayBoxes = {};
+  for (const [key, text] of Object.entries(OVERLAYS)) {
+    overlayBoxes[key] = h('input', { type: 'checkbox', id: `overlay-${key}`, 'data-overlay': key,
+      onchange: (e) => commit({ ...state(), overlays: { ...state().overlays, [key]: e.target.checked } }, { recompute: key === 'comb' }) });
+    const row = h('label', { class: 'check' }, overlayBoxes[key], ` ${text}`);
+    // The comb needs the core's curvature (issue 5); without it the option is not offered.
+    row.hidden = key === 'comb' && typeof ctx.api.curvature !== 'function';
+    overlayBody.append(row);
+  }
+  const compare = h('input', { type: 'checkbox', id: 'compare-spline', onchange: (e) => commit({ ...state(), compare: e.target.checked }) });
+  const compareLabel = h('label', { class: 'check' }, compare, ' Interpolation: also draw a cubic spline through the same points (dashed)');
+  overlayBody.append(compareLabel);
+
+  const inspectorBody = panel(ctx.panels, { id: 'panel-inspector', title: 'Inspector (exact values)' });
+  const inspector = {
+    title: h('p', { class: 'inspector-title' }),
+    x: h('input', { type: 'number', step: 0.01, id: 'inspect-x', onchange: () => typedPoint() }),
+    y: h('input', { type: 'number', step: 0.01, id: 'inspect-y', onchange: () => typedPoint() }),
+    tx: h('input', { type: 'number', step: 0.01, id: 'inspect-tx', onchange: () => typedPoint() }),
+    ty: h('input', { type: 'number', step: 0.01, id: 'inspect-ty', onchange: () => typedPoint() }),
+    w: h('input', { type: 'number', step: 0.05, min: 0, id: 'inspect-w', onchange: () => typedPoint() }),
+    u: h('input', { type: 'number', step: 0.01, id: 'inspect-u', onchange: (e) => { if (!setTypedU(e.target)) e.target.value = state().u; } }),
+    knots: h('input', { type: 'text', id: 'inspect-knots', class: 'mono', spellcheck: 'false', onchange: (e) => typedKnots(e.target) }),
+  };
+  const pointFields = h('div', { class: 'inspector-grid' },
+    h('label', { for: 'inspect-x' }, 'x'), inspector.x, h('label', { for: 'inspect-y' }, 'y'), inspector.y);
+  const tangentFields = h('div', { class: 'inspector-grid' },
+    h('label', { for: 'inspect-tx' }, 'tangent x'), inspector.tx, h('label', { for: 'inspect-ty' }, 'tangent y'), inspector.ty);
+  const weightFields = h('div', { class: 'inspector-grid' }, h('label', { for: 'inspect-w' }, 'weight w'), inspector.w);
+  const knotField = h('div', { class: 'inspector-knots' }, h('label', { for: 'inspect-knots' }, 'Knot vector (comma separated, non-decreasing)'), inspector.knots);
+  inspectorBody.append(inspector.title, pointFields, tangentFields, weightFields,
+    h('div', { class: 'inspector-grid' }, h('label', { for: 'inspect-u' }, 'u'), inspector.u), knotField);
+
+  function typedPoint() {
+    const s = state();
+    const i = selectedPoint(ctx) ?? selectedTangent(ctx);
+    if (i === null) return;
+    const val = (input, old) => (input.value.trim() === '' ? old : Number(input.value));
+    const x = val(inspector.x, s.points[i][0]);
+    const y = val(inspector.y, s.points[i][1]);
+    if (![x, y].every(Number.isFinite)) { ctx.message.error('Type a number for x and y.', 'invalid-number'); return; }
+    const next = { ...s, points: s.points.map((p, j) => (j === i ? [x, y] : p)) };
+    if (s.family === 'hermite') {
+      const tx = val(inspector.tx, s.tangents[i][0]);
+      const ty = val(inspector.ty, s.tangents[i][1]);
+      next.tangents = s.tangents.map((t, j) => (j === i ? [tx, ty] : t));
+    }
+    if (s.family === 'nurbs') next.weights = s.weights.map((w, j) => (j === i ? val(inspector.w, w) : w));
+    if (!commit(next)) ctx.refresh();
+  }
+  function setTypedU(input) {
+    const u = Number(input.value);
+    const d = ctx.model.domain;
+    if (!Number.isFinite(u) || u < d.start || u > d.end) {
+      ctx.message.error(`u must be a number from ${formatNumber(d.start)} to ${formatNumber(d.end)} (the domain of this curve).`, 'parameter-out-of-range');
+      return false;
+    }
+    return commit({ ...state(), u });
+  }
+  function typedKnots(input) {
+    const s = state();
+    const parts = input.value.split(/[,\s;]+/).filter((x) => x !== '');
+    const knots = parts.map(Number);
+    const bad = parts.findIndex((x, j) => !Number.isFinite(knots[j]));
+    if (bad >= 0) {
+      ctx.message.error(`Knot ${bad} ("${parts[bad].slice(0, 20)}") is not a number; the knots were not changed.`, 'invalid-number');
+      input.value = s.knots.join(', ');
+      return;
+    }
+    if (knots.length !== s.knots.length) {
+      ctx.message.error(`${s.points.length} points of degree ${s.degree} need ${s.knots.length} knots (K + p + 1), not ${knots.length}; the knots were not changed.`, 'wrong-knot-count');
+      input.value = s.knots.join(', ');
+      return;
+    }
+    // The core judges the values (non-decreasing, ...) and names the offending knot.
+    if (!commit(clearConstruction({ ...s, knots }))) input.value = s.knots.join(', ');
+  }
+
+  const knotsBody = panel(ctx.panels, { id: 'panel-knots', title: 'Knots, multiplicity and continuity' });
+  const presets = h('div', { class: 'button-row' },
+    h('button', { type: 'button', class: 'tool', 'data-action': 'knots-clamped', onclick: () => setKnots(clampedKnots(state().points.length, state().degree)) }, 'Clamped'),
+    h('button', { type: 'button', class: 'tool', 'data-action': 'knots-unclamped', onclick: () => setKnots(unclampedKnots(state().knots, state().degree)) }, 'Unclamped'),
+    h('button', { type: 'button', class: 'tool', 'data-action': 'knots-uniform', onclick: () => setKnots(uniformKnots(state().points.length, state().degree)) }, 'Uniform'));
+  const knotTable = h('div', { class: 'knot-table' });
+  knotsBody.append(presets, knotTable);
+  function setKnots(knots) {
+    const s = state();
+    const d = { start: knots[s.degree], end: knots[knots.length - 1 - s.degree] };
+    commit(clearConstruction({ ...s, knots, u: Math.min(d.end, Math.max(d.start, s.u)) }));
+  }
+
+  const nurbsBody = panel(ctx.panels, { id: 'panel-nurbs', title: 'NURBS: weights and the homogeneous view' });
+  const circle = h('button', { type: 'button', class: 'tool', 'data-action': 'circle-preset', onclick: () => {
+    const s = state();
+    const next = clearConstruction({ ...s, ...circlePreset(2), tangents: [], u: 0 });
+    next.tangents = next.points.map(() => [1, 0]);
+    if (commit(next)) { ctx.setView(lesson.fitView(ctx.model, ctx.stage)); ctx.message.info('Exact circle: a quadratic NURBS with 9 points and weights 1, √2/2.'); }
+  } }, 'Exact circle preset');
+  const weightList = h('div', { class: 'weight-list' });
+  const insetBox = h('div', { class: 'inset-box' });
+  nurbsBody.append(circle, weightList, insetBox);
+  const inset = createHomogeneousInset(insetBox);
+
+  // ---------------------------------------------------------------- keys
+  const canvas = ctx.stage.canvas;
+  const notCanvas = (e) => e.target !== canvas;
+  ctx.keymap.add({ keys: ['n', 'PageDown'], label: 'construction: next step', group: 'Constructions', action: () => conPlayer.next() });
+  ctx.keymap.add({ keys: ['b', 'PageUp'], label: 'construction: previous step', group: 'Constructions', action: () => conPlayer.prev() });
+  ctx.keymap.add({ keys: ['Home'], label: 'construction: back to the start (not on the focused drawing)', group: 'Constructions', when: notCanvas, action: () => conPlayer.restart() });
+  ctx.keymap.add({ keys: [' '], label: 'play / pause u', group: 'Curve', when: notCanvas, action: () => uPlayer.toggle() });
+  ctx.keymap.add({ keys: [','], label: 'u a little back', group: 'Curve', action: () => nudgeU(-1) });
+  ctx.keymap.add({ keys: ['.'], label: 'u a little forward', group: 'Curve', action: () => nudgeU(1) });
+  ctx.keymap.add({ keys: ['a'], label: 'add a control point after the selected one', group: 'Curve', action: () => addSelected() });
+  ctx.keymap.add({ keys: ['Delete', 'Backspace'], label: 'remove the selected control point', group: 'Curve', action: () => removeSelected() });
+  ctx.keymap.add({ keys: ['m'], label: 'matrix form: u^T M G or G M T', group: 'Curve', action: () => commit({ ...state(), transposed: !state().transposed }) });
+  ctx.keymap.add({ keys: ['Shift+click'], label: 'add a control point at the mouse (on the drawing)', group: 'Curve' });
+  function nudgeU(sign) {
+    const d = ctx.model.domain;
+    setU(Math.min(d.end, Math.max(d.start, state().u + (sign * (d.end - d.start)) / 50)));
+  }
+
+  lesson.click = (x, y, c, event) => {
+    if (!event?.shiftKey) return false;
+    addSelected([Math.round(x * 1e4) / 1e4, Math.round(y * 1e4) / 1e4]);
+    return true;
+  };
+  lesson.onSelect = () => ctx.refresh();
+
+  els = { family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, transposed, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
+    inspector, pointFields, tangentFields, weightFields, knotField, knotTable, knotsPanel: knotsBody.parentElement, nurbsPanel: nurbsBody.parentElement, weightList, inset,
+    degreeLabel: row1.querySelector('.degree-label'), tensionGroup: row1.querySelector('.tension-group'), lastKnotKey: null, lastWeightKey: null, conPlayer, uPlayer, commit, state, setKnots };
+}
+
+function selectedPoint(ctx) {
+  const id = ctx.ui.selected;
+  return typeof id === 'string' && id[0] === 'p' ? Number(id.slice(1)) : null;
+}
+function selectedTangent(ctx) {
+  const id = ctx.ui.selected;
+  return typeof id === 'string' && id[0] === 't' ? Number(id.slice(1)) : null;
+}
+
+const setValue = (input, v) => { if (document.activeElement !== input) input.value = String(v); };
+
+export function updatePanels(model, state, ctx) {
+  if (!els) return;
+  const K = state.points.length;
+  els.family.value = state.family;
+  // degree
+  els.degree.hidden = !hasDegreeChoice(state.family);
+  els.degreeLabel.hidden = els.degree.hidden;
+  if (!els.degree.hidden) {
+    const max = maxDegreeFor(K);
+    if (els.degree.options.length !== max) els.degree.replaceChildren(...Array.from({ length: max }, (_, i) => h('option', { value: i + 1 }, String(i + 1))));
+    els.degree.value = String(state.degree);
+  }
+  els.tensionGroup.hidden = state.family !== 'catmull-rom';
+  els.tension.value = String(state.tension);
+  els.tensionOut.textContent = state.tension === 0 ? '0 (Catmull-Rom)' : formatNumber(state.tension, 3);
+  // u
+  els.uSlider.min = String(model.domain.start);
+  els.uSlider.max = String(model.domain.end);
+  setValue(els.uSlider, model.u);
+  els.uOut.textContent = formatNumber(model.u, 4);
+  // matrix panel
+  els.transposed.checked = state.transposed;
+  els.matrix.update({ segment: model.segment, u: model.u, point: model.point, transposed: state.transposed,
+    title: `${familyInfo(state.family).label}, basis ${model.segment.basis ?? state.family}` });
+  // constructions
+  const kinds = constructionsFor(state.family, ctx.api);
+  const wanted = ['none', ...kinds].join();
+  if (els.conKind.dataset.kinds !== wanted) {
+    els.conKind.dataset.kinds = wanted;
+    els.conKind.replaceChildren(h('option', { value: 'none' }, kinds.length ? 'none' : 'none for this family'),
+      ...kinds.map((k) => h('option', { value: k }, CONSTRUCTION_LABELS[k])));
+  }
+  els.conKind.value = kinds.includes(state.construction.kind) ? state.construction.kind : 'none';
+  const con = model.construction;
+  const steps = con?.steps ?? 1;
+  for (const b of Object.values(els.conButtons)) b.disabled = !con;
+  els.conButtons.apply.hidden = !(con && (con.kind === 'elevate' || con.kind === 'insert-knot'));
+  els.conButtons.apply.disabled = !con || state.construction.step < steps - 1;
+  els.conStep.textContent = con ? constructionText(con, state.construction.step, model) : 'Choose a construction; it is computed at the current u.';
+  // overlays
+  for (const [k, box] of Object.entries(els.overlayBoxes)) box.checked = state.overlays[k];
+  els.compare.checked = state.compare;
+  els.compareLabel.hidden = state.family !== 'interpolation';
+  // inspector
+  const i = selectedPoint(ctx) ?? selectedTangent(ctx);
+  els.pointFields.hidden = i === null;
+  els.tangentFields.hidden = i === null || state.family !== 'hermite';
+  els.weightFields.hidden = i === null || state.family !== 'nurbs';
+  els.inspector.title.textContent = i === null ? 'Select a control point (click it, or focus the drawing and press ] ) to type its values.' : `P${i}`;
+  if (i !== null && i < K) {
+    setValue(els.inspector.x, state.points[i][0]);
+    setValue(els.inspector.y, state.points[i][1]);
+    if (state.family === 'hermite') { setValue(els.inspector.tx, state.tangents[i][0]); setValue(els.inspector.ty, state.tangents[i][1]); }
+    if (state.family === 'nurbs') setValue(els.inspector.w, state.weights[i]);
+  }
+  setValue(els.inspector.u, model.u);
+  els.knotField.hidden = !usesKnots(state.family);
+  setValue(els.inspector.knots, state.knots.join(', '));
+  // knots panel and strip
+  els.knotsPanel.hidden = !isSpline(state.family);
+  els.stripBox.hidden = !isSpline(state.family);
+  if (model.knots) {
+    const key = JSON.stringify([model.knots.values, state.degree, state.family]);
+    if (key !== els.lastKnotKey) {
+      els.lastKnotKey = key;
+      els.knotTable.replaceChildren(knotGroupTable(model, state, ctx));
+    }
+  }
+  // NURBS
+  els.nurbsPanel.hidden = state.family !== 'nurbs';
+  if (state.family === 'nurbs') {
+    const key = JSON.stringify(state.weights);
+    if (key !== els.lastWeightKey) {
+      els.lastWeightKey = key;
+      els.weightList.replaceChildren(...state.weights.map((w, j) => weightRow(w, j, ctx)));
+    }
+  }
+}
+
+function constructionText(con, step, model) {
+  const last = con.steps - 1;
+  const s = Math.min(step, last);
+  if (con.kind === 'de-casteljau' || con.kind === 'de-boor') {
+    const name = con.kind === 'de-casteljau' ? 'de Casteljau' : 'de Boor';
+    if (s === 0) return `${name} at u = ${formatNumber(model.u, 4)}: level 0 is the control polygon. Step to interpolate.`;
+    return `${name}, level ${s} of ${last}: ${con.levels[s].length} point${con.levels[s].length > 1 ? 's' : ''}` +
+      (s === last ? ` — the point on the curve P(${formatNumber(model.u, 4)}).` : ', each between two of the level before.');
+  }
+  if (con.kind === 'subdivide') return s === 0 ? 'All de Casteljau levels at u; the next step splits the curve.' : 'Left half (L) and right half (R): together they trace the same curve.';
+  if (con.kind === 'elevate') return s === 0 ? `Degree ${model.degree}; the next step shows degree ${model.degree + 1}.` : `Degree ${model.degree + 1}: ${con.points.length} points, the same curve. Apply to keep them.`;
+  if (con.kind === 'insert-knot') {
+    const n = con.changed.filter(Boolean).length;
+    return s === 0 ? `Insert the knot u = ${formatNumber(con.at, 4)}: the next step shows the new control polygon.` : `${n} new control points (highlighted) replace ${n - 1}; the curve is unchanged. Apply to keep them.`;
+  }
+  return '';
+}
+
+function knotGroupTable(model, state, ctx) {
+  const groups = model.knots.groups;
+  const inDomain = (g) => g.value >= model.domain.start && g.value <= model.domain.end;
+  // Continuity is a property of a joint between two segments: strictly inside the domain.
+  const joint = (g) => g.value > model.domain.start && g.value < model.domain.end;
+  const where = (g) => (joint(g) ? continuityLabel(g.continuity) : inDomain(g) ? 'end of the domain' : 'outside the domain');
+  const editable = usesKnots(state.family);
+  const tbl = h('table', { class: 'data-table knot-groups' },
+    h('caption', {}, `Degree p = ${state.degree}: a knot of multiplicity m gives continuity C^(p-m) there.`),
+    h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'knot'), h('th', { scope: 'col' }, 'multiplicity m'), h('th', { scope: 'col' }, 'continuity'), editable ? h('th', { scope: 'col' }, 'change m') : null)),
+    h('tbody', {}, groups.map((g) => h('tr', { 'data-knot': String(g.value) },
+      h('th', { scope: 'row' }, formatNumber(g.value, 4)),
+      h('td', {}, String(g.multiplicity)),
+      h('td', { class: 'continuity' }, where(g)),
+      editable ? h('td', {},
+        h('button', { type: 'button', class: 'tool small', 'data-action': 'raise-multiplicity', 'aria-label': `raise the multiplicity of knot ${formatNumber(g.value, 4)}`,
+          disabled: !joint(g) || g.multiplicity >= state.degree || state.points.length >= 24 || typeof ctx.api.insertKnot !== 'function', onclick: () => raiseMultiplicity(g.value, ctx) }, '+'),
+        ' ',
+        h('button', { type: 'button', class: 'tool small', 'data-action': 'lower-multiplicity', 'aria-label': `lower the multiplicity of knot ${formatNumber(g.value, 4)}`,
+          disabled: g.multiplicity <= 1 || state.points.length <= state.degree + 1, onclick: () => lowerMultiplicity(g, ctx) }, '−')) : null))));
+  return tbl;
+}
+
+// Raising m inserts the knot once more (Boehm, in the core): the curve stays, one point more.
+function raiseMultiplicity(value, ctx) {
+  const s = ctx.state;
+  const spec = ctx.model.spec;
+  let r;
+  try { r = ctx.api.insertKnot(spec, value); } catch (err) { ctx.message.error(err.message, err.code); return; }
+  const points = [];
+  for (let j = 0; j < r.points.length; j += 2) points.push([r.points[j], r.points[j + 1]]);
+  const next = { ...s, points, knots: Array.from(r.knots), weights: r.weights ? Array.from(r.weights) : s.weights,
+    tangents: points.map(() => [1, 0]), construction: { kind: 'none', step: 0 } };
+  if (ctx.commit(next)) ctx.message.info(`Knot ${formatNumber(value, 4)} now has multiplicity ${next.knots.filter((k) => k === value).length}; the curve did not move.`);
+}
+
+// Lowering m removes one copy of the knot and the control point it brought (the middle of
+// the points its insertion changed). Knot removal is not exact in general: the curve moves.
+function lowerMultiplicity(group, ctx) {
+  const s = ctx.state;
+  const j = group.indices[group.indices.length - 1];
+  const drop = Math.min(s.points.length - 1, Math.max(0, j - 1 - Math.floor(s.degree / 2)));
+  const next = { ...s, knots: s.knots.filter((_, i) => i !== j), points: s.points.filter((_, i) => i !== drop),
+    weights: s.weights.filter((_, i) => i !== drop), tangents: s.tangents.filter((_, i) => i !== drop), construction: { kind: 'none', step: 0 } };
+  if (ctx.commit(next)) ctx.message.info(`One copy of knot ${formatNumber(group.value, 4)} removed with P${drop}; the curve changed near it.`);
+}
+
+function weightRow(w, j, ctx) {
+  const id = `weight-${j}`;
+  const slider = h('input', { type: 'range', id, min: 0.05, max: 5, step: 0.05, value: w, 'data-weight': j,
+    oninput: (e) => setWeight(j, Number(e.target.value), ctx, 'weight-slider') });
+  const num = h('input', { type: 'number', min: 0, step: 0.05, value: w, 'aria-label': `weight of P${j} (exact)`,
+    onchange: (e) => setWeight(j, Number(e.target.value), ctx, null) });
+  return h('div', { class: 'weight-row' }, h('label', { for: id }, `w${j}`), slider, num);
+}
+
+function setWeight(j, w, ctx, coalesce) {
+  const s = ctx.state;
+  const weights = s.weights.slice();
+  weights[j] = w;
+  if (!ctx.commit({ ...s, weights }, { coalesce })) els.lastWeightKey = null;
+}
+
+// Secondary canvases redrawn with every frame (the cursor and the hover highlight).
+export function drawPlots(model, state, ctx, hoveredItem) {
+  if (!els) return;
+  const K = state.points.length;
+  const labels = blendingLabels(state, model.plot.count);
+  const hermite = state.family === 'hermite';
+  els.blending.update({
+    params: model.plot.params,
+    count: model.plot.count,
+    values: model.plot.values,
+    u: model.u,
+    domain: model.domain,
+    colors: ctx.colors,
+    labels,
+    colorIndex: hermite ? (i) => i % K : null,
+    dashed: hermite ? (i) => i >= K : null,
+    knots: model.knots ? model.knots.groups.map((g) => g.value) : Array.from(model.joints?.params ?? []),
+    highlight: hoveredItem === null ? null : (hermite ? hoveredItem % K : hoveredItem),
+    present: ctx.ui.present,
+    caption: captionFor(state),
+  });
+  if (model.knots) {
+    els.strip.update({ knots: model.knots.values, degree: state.degree, domain: model.domain, u: model.u,
+      editable: usesKnots(state.family), colors: ctx.colors, present: ctx.ui.present });
+  }
+  if (model.homogeneous) {
+    els.inset.update({ ...model.homogeneous, curve2: model.samples, colors: ctx.colors });
+  }
+}
+
+function captionFor(state) {
+  switch (state.family) {
+    case 'hermite': return 'Hermite blending functions: solid for the points, dashed for the tangents (B = M T, lecture 001)';
+    case 'bezier': return `Bernstein polynomials B_i,${state.points.length - 1}(u) (lecture 001)`;
+    case 'interpolation': return 'Lagrange polynomials L_i(u): each is 1 at its node and 0 at the others (lecture 000)';
+    case 'nurbs': return `Rational basis R_i,${state.degree}(u) = w_i N_i,${state.degree} / sum w_j N_j,${state.degree}`;
+    case 'catmull-rom': return 'Catmull-Rom / cardinal blending functions (lecture 003)';
+    default: return `B-spline basis N_i,${state.degree}(u) by Cox-de Boor (lecture 002)`;
+  }
+}
