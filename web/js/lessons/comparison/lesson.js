@@ -7,6 +7,13 @@ import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.j
 import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH, pointTangents } from './families.js';
 import { computeTable, LECTURE_TABLE, ROW_NAMES } from './checks.js';
 import { computeConversion, computeInvariance } from './transforms.js';
+import { drawCurve, drawPolygon } from '../curves/overlays.js';
+import { createBlendingPlot } from '../curves/blending-plot.js';
+import { createMatrixPanel } from '../curves/matrix-panel.js';
+
+// The blending functions of one segment per point-based family: the convex hull row's
+// evidence (lecture 003: weights in [0, 1] summing to 1), drawn with the curve explorer's plot.
+const BLEND_FAMILIES = ['bezier', 'bspline', 'catmull-rom'];
 
 const SCENES = { families: 'All families', conversion: 'Basis conversion', invariance: 'Invariance' };
 const BASES = ['hermite', 'bezier', 'bspline', 'catmull-rom'];
@@ -58,6 +65,7 @@ export const lesson = {
       table: computeTable(api, state.points),
       conversion: computeConversion(api, state.points, state.conversion),
       invariance: computeInvariance(api, state.points, state.transform),
+      blending: BLEND_FAMILIES.map((family) => blendingOfFirstSegment(api, family, state.points)),
     };
   },
 
@@ -81,6 +89,8 @@ export const lesson = {
     const convBody = panel(ctx.panels, { id: 'conversion-panel', title: 'Basis conversion: q = M⁻¹ M_B P', open: false });
     const invBody = panel(ctx.panels, { id: 'invariance-panel', title: 'Invariance: transform the points or the curve', open: false });
     const tableBody = panel(ctx.panels, { id: 'table-panel', title: 'The comparison table, checked live' });
+    const blendBody = panel(ctx.panels, { id: 'blending-panel', title: 'Blending weights (the convex hull row)' });
+    const blendPlots = BLEND_FAMILIES.map((f) => createBlendingPlot(blendBody, { label: FAMILY_NAMES[f], height: 130 }));
 
     const select = (id, options, value, onchange, names = FAMILY_NAMES) => {
       const s = h('select', { id, onchange: () => onchange(s.value) }, options.map((o) => h('option', { value: o }, names[o] ?? o)));
@@ -95,10 +105,13 @@ export const lesson = {
       to: select('conv-to', BASES, 'hermite', (v) => setConversion({ to: v })),
       start: h('input', { type: 'number', id: 'conv-start', min: 0, step: 1, onchange: () => setConversion({ start: Number(conv.start.value) }) }),
       out: h('div', { class: 'conversion-out' }),
+      matrices: h('div', { class: 'conversion-matrices' }),
     };
     convBody.append(h('div', { class: 'form-row' },
       h('label', { for: 'conv-mode' }, 'Mode ', conv.mode), h('label', { for: 'conv-from' }, 'P read as ', conv.from),
-      h('label', { for: 'conv-to' }, 'other basis ', conv.to), h('label', { for: 'conv-start' }, 'first point P', conv.start)), conv.out);
+      h('label', { for: 'conv-to' }, 'other basis ', conv.to), h('label', { for: 'conv-start' }, 'first point P', conv.start)), conv.out, conv.matrices);
+    conv.fromPanel = createMatrixPanel(conv.matrices);
+    conv.toPanel = createMatrixPanel(conv.matrices);
 
     const setTransform = (patch) => ctx.commit({ ...ctx.state, scene: 'invariance', transform: { ...ctx.state.transform, ...patch } });
     const slider = (key, text, min, max, step) => {
@@ -113,7 +126,7 @@ export const lesson = {
       out: h('div', { class: 'invariance-out' }),
     };
     invBody.append(h('label', { for: 'tf-kind' }, 'Map ', inv.kind), h('div', { class: 'slider-grid' }, inv.sliders.map((s) => s.label)), inv.out);
-    lesson.ui = { sceneSelect, familyBoxes, tableBody, conv, inv };
+    lesson.ui = { sceneSelect, familyBoxes, tableBody, conv, inv, blendPlots };
 
     ctx.keymap.add({ keys: ['v'], label: 'next scene: families, conversion, invariance', group: 'Lesson', action: () => {
       const keys = Object.keys(SCENES);
@@ -123,7 +136,7 @@ export const lesson = {
       action: () => ctx.commit({ ...ctx.state, show: { ...ctx.state.show, [f]: !ctx.state.show[f] } }, { recompute: false }) }));
   },
 
-  update(model, state) {
+  update(model, state, ctx) {
     const ui = lesson.ui;
     if (ui.shownScene !== state.scene) {
       ui.shownScene = state.scene;
@@ -135,18 +148,27 @@ export const lesson = {
     updateTable(ui.tableBody, model.table);
     updateConversion(ui.conv, model.conversion, state);
     updateInvariance(ui.inv, model.invariance, state);
+    model.blending.forEach((b, k) => ui.blendPlots[k].update({
+      params: b.params, count: b.count, values: b.values, u: b.uMin, domain: { start: 0, end: 1 }, colors: ctx.colors,
+      labels: b.labels, caption: `${FAMILY_NAMES[b.family]}, first segment: smallest weight ${fmt(b.minWeight)} at u = ${fmt(b.uMin)}`,
+    }));
+    const m = model.conversion;
+    const name = (k) => FAMILY_NAMES[k];
+    ui.conv.fromPanel.update({ segment: m.segmentFrom, u: 0.5, point: m.midFrom, title: `${name(m.from)}: the segment as drawn (P)` });
+    ui.conv.toPanel.update({ segment: m.segmentTo, u: 0.5, point: m.midTo,
+      title: m.q ? `${name(m.to)}: the same curve from q` : `${name(m.to)}: the same G with M swapped` });
   },
 
   draw(painter, model, state, ctx) {
     if (!model) return;
     const c = ctx.colors;
     const strokeOf = (f) => c.series[FAMILY_COLOR[f]];
-    painter.polyline(state.points.flat(), { stroke: c.muted, width: 1.2, dash: [5, 4] });
+    drawPolygon(painter, state.points, { stroke: c.muted, width: 1.2, dash: [5, 4] });
     const legend = [];
     if (state.scene === 'families') {
       for (const f of FAMILY_IDS) {
         if (!state.show[f]) continue;
-        for (const s of model.table.curves[f]) painter.polyline(s.points, { stroke: strokeOf(f), width: f === 'bezier' ? 4 : 2.5, dash: FAMILY_DASH[f] });
+        for (const s of model.table.curves[f]) drawCurve(painter, s.points, { stroke: strokeOf(f), width: f === 'bezier' ? 4 : 2.5, dash: FAMILY_DASH[f] });
         legend.push([strokeOf(f), `${FAMILY_NAMES[f]}${f === 'catmull-rom' ? ' (end points repeated)' : f === 'hermite' ? ', t_i = (P_i+1 − P_i−1)/2: Catmull-Rom inside' : ''}`, FAMILY_DASH[f]]);
       }
       if (state.show.hermite) {
@@ -215,6 +237,21 @@ export const lesson = {
   }],
 };
 
+function blendingOfFirstSegment(api, family, points) {
+  const params = Array.from({ length: 101 }, (_, j) => j / 100);
+  const curve = family === 'bezier' ? { kind: 'bezier', dim: 2, points: points.slice(0, 4).flat() }
+    : family === 'bspline' ? { kind: 'bspline', dim: 2, points: points.slice(0, 4).flat() }
+      : { kind: 'catmull-rom', dim: 2, points: [points[0], ...points.slice(0, 3)].flat() };
+  const b = api.blendingFunctions(curve, params);
+  let minWeight = Infinity;
+  let uMin = 0;
+  for (let j = 0; j < params.length; j += 1) {
+    for (let i = 0; i < b.count; i += 1) if (b.values[b.count * j + i] < minWeight) { minWeight = b.values[b.count * j + i]; uMin = params[j]; }
+  }
+  const labels = family === 'catmull-rom' ? ['P0', 'P0', 'P1', 'P2'] : ['P0', 'P1', 'P2', 'P3'];
+  return { family, params, count: b.count, values: b.values, minWeight, uMin, labels };
+}
+
 function updateTable(body, tbl) {
   const rows = Object.keys(ROW_NAMES).map((row) => [ROW_NAMES[row], ...FAMILY_IDS.map((f) => {
     const cell = tbl.columns[f][row];
@@ -272,6 +309,9 @@ function updateConversion(ui, m, state) {
       ? `The ${FAMILY_NAMES[m.to]} curve of q is the ${FAMILY_NAMES[m.from]} curve of P: max distance ${fmt(m.distance)} over 121 samples.`
       : `The same four rows read as ${FAMILY_NAMES[m.to]} geometry give another curve: max distance ${fmt(m.distance)} from the ${FAMILY_NAMES[m.from]} curve.`),
     m.to === 'hermite' && m.q ? h('p', { class: 'hint' }, 'Hermite rows are p0, p1, t0, t1: two points and two tangent vectors (drawn at 1/3 length).') : null,
+    h('p', { class: 'hint' }, m.q
+      ? 'Below, the core\'s matrix form of both: different M and G, the same coefficients C = M G, so the same curve.'
+      : 'Below, the core\'s matrix form of both: the same G, different M, so different coefficients C = M G.'),
   );
 }
 

@@ -5,6 +5,7 @@ import { familySegments, FAMILY_IDS } from './families.js';
 import { linspace } from './checks.js';
 
 const SAMPLES = 121;
+const MID = 60; // the sample at u = 1/2, where the matrix panels evaluate
 const flat = (list) => list.flatMap((p) => p);
 
 export function segmentCurve(kind, g) {
@@ -27,12 +28,16 @@ export function computeConversion(api, points, { from, to, start, mode }) {
     const q = api.convertBasis(g, 2, from, to);
     const converted = api.evaluateCurve(segmentCurve(to, Array.from(q)), params);
     return { mode, from, to, g, q, original, other: converted, distance: maxDistance(original, converted),
-      Mfrom: api.basisMatrix(from), Mto: api.basisMatrix(to) };
+      Mfrom: api.basisMatrix(from), Mto: api.basisMatrix(to),
+      segmentFrom: api.segmentMatrices(segmentCurve(from, g), 0), segmentTo: api.segmentMatrices(segmentCurve(to, Array.from(q)), 0),
+      midFrom: [original[MID * 2], original[MID * 2 + 1]], midTo: [converted[MID * 2], converted[MID * 2 + 1]] };
   }
   // Keep G, swap M: the same four rows read as the geometry of another basis.
   const swapped = api.evaluateCurve(segmentCurve(to, g), params);
   return { mode, from, to, g, q: null, original, other: swapped, distance: maxDistance(original, swapped),
-    Mfrom: api.basisMatrix(from), Mto: api.basisMatrix(to) };
+    Mfrom: api.basisMatrix(from), Mto: api.basisMatrix(to),
+    segmentFrom: api.segmentMatrices(segmentCurve(from, g), 0), segmentTo: api.segmentMatrices(segmentCurve(to, g), 0),
+    midFrom: [original[MID * 2], original[MID * 2 + 1]], midTo: [swapped[MID * 2], swapped[MID * 2 + 1]] };
 }
 
 // x' = (a x + b y + tx) / w, y' = (c x + d y + ty) / w, w = px x + py y + 1; the linear

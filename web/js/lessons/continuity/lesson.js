@@ -7,6 +7,7 @@ import { createPlayer } from '../../app/player.js';
 import { h, panel, table } from '../../app/dom.js';
 import { formatNumber } from '../../ui/mathml.js';
 import { drawSeriesPlot } from '../../ui/series-plot.js';
+import { drawCurve, drawPolygon, drawSamples, drawVector } from '../curves/overlays.js';
 import { PRESETS, DEFAULT_PRESET } from './presets.js';
 import { CONSTRAINTS, dragWithConstraint, enforceAll } from './constraints.js';
 import { computeModel, segmentCurves, SAMPLES_PER_SEGMENT } from './model.js';
@@ -231,41 +232,41 @@ export const lesson = {
     if (!model) return;
     const c = ctx.colors;
     const segColors = [c.series[0], c.series[2]];
-    // control polygons / tangent arrows
+    // control polygons / tangent arrows (the curve explorer's overlay pieces)
+    const polygonStyle = { stroke: c.muted, width: 1, dash: [5, 4] };
     if (state.family === 'bezier') {
-      for (let i = 0; i + 3 < state.points.length; i += 4) painter.polyline(state.points.slice(i, i + 4).flat(), { stroke: c.muted, width: 1, dash: [5, 4] });
+      for (let i = 0; i + 3 < state.points.length; i += 4) drawPolygon(painter, state.points.slice(i, i + 4), polygonStyle);
     } else if (state.family === 'hermite') {
       for (let i = 0; i < state.points.length; i += 1) {
-        if (i % 4 < 2) continue;
-        const base = state.points[i - 2];
-        const tip = handlePosition(state, i);
-        painter.arrow(base[0], base[1], tip[0], tip[1], { stroke: c.muted, width: 1.2 });
+        if (i % 4 >= 2) drawVector(painter, state.points[i - 2], state.points[i], FIRST_SCALE, { stroke: c.muted, width: 1.2 });
       }
     } else {
-      painter.polyline(state.points.flat(), { stroke: c.muted, width: 1, dash: [5, 4] });
+      drawPolygon(painter, state.points, polygonStyle);
     }
     // the segments, alternating colours, each labelled
     model.segments.forEach((s, i) => {
-      painter.polyline(s.points, { stroke: segColors[i % 2], width: 3 });
+      drawCurve(painter, s.points, { stroke: segColors[i % 2] });
       const mid = Math.floor(SAMPLES_PER_SEGMENT / 2);
       painter.text(s.points[2 * mid], s.points[2 * mid + 1], `Q${i + 1}`, { fill: segColors[i % 2], font: 13, dy: -14, halo: c.background });
-      if (state.show.beads) {
-        for (let j = 0; j < SAMPLES_PER_SEGMENT; j += BEAD_EVERY) painter.circle(s.points[2 * j], s.points[2 * j + 1], 2.2, { fill: c.ink, alpha: 0.55 });
-      }
+      if (state.show.beads) drawSamples(painter, s.points, BEAD_EVERY, { fill: c.ink });
     });
-    // joints and their evidence
+    // joints and their evidence; the right-hand label only where it does not sit on the left one
+    const apart = (a, b, scale) => Math.hypot(a[0] - b[0], a[1] - b[1]) * scale * painter.t.zoom > 40;
     for (const joint of model.joints) {
-      const [x, y] = joint.right.point;
+      const at = joint.right.point;
+      const halo = c.background;
       if (state.show.second) {
-        painter.arrow(x, y, x + joint.left.d2[0] * SECOND_SCALE, y + joint.left.d2[1] * SECOND_SCALE, { stroke: c.series[3], width: 3, alpha: 0.8 });
-        painter.arrow(x, y, x + joint.right.d2[0] * SECOND_SCALE, y + joint.right.d2[1] * SECOND_SCALE, { stroke: c.series[6], width: 1.5, dash: [5, 3] });
+        drawVector(painter, at, joint.left.d2, SECOND_SCALE, { stroke: c.series[3], width: 3, alpha: 0.8, halo }, 'P\'\'⁻/6');
+        drawVector(painter, at, joint.right.d2, SECOND_SCALE, { stroke: c.series[6], width: 1.5, dash: [5, 3], halo },
+          apart(joint.left.d2, joint.right.d2, SECOND_SCALE) ? 'P\'\'⁺/6' : null);
       }
       if (state.show.first) {
-        painter.arrow(x, y, x + joint.left.d1[0] * FIRST_SCALE, y + joint.left.d1[1] * FIRST_SCALE, { stroke: c.series[1], width: 4, alpha: 0.85 });
-        painter.arrow(x, y, x + joint.right.d1[0] * FIRST_SCALE, y + joint.right.d1[1] * FIRST_SCALE, { stroke: c.series[5], width: 1.8, dash: [6, 3] });
+        drawVector(painter, at, joint.left.d1, FIRST_SCALE, { stroke: c.series[1], width: 4, alpha: 0.85, halo }, 'P\'⁻/3');
+        drawVector(painter, at, joint.right.d1, FIRST_SCALE, { stroke: c.series[5], width: 1.8, dash: [6, 3], halo },
+          apart(joint.left.d1, joint.right.d1, FIRST_SCALE) ? 'P\'⁺/3' : null);
       }
-      painter.circle(x, y, 5, { fill: c.background, stroke: c.ink, width: 2 });
-      painter.text(x, y, `J${joint.index}: ${label('C', joint.parametric)} ${label('G', joint.geometric)}`, { fill: c.ink, font: 15, weight: 700, dy: 24, halo: c.background });
+      painter.circle(at[0], at[1], 5, { fill: c.background, stroke: c.ink, width: 2 });
+      painter.text(at[0], at[1], `J${joint.index}: ${label('C', joint.parametric)} ${label('G', joint.geometric)}`, { fill: c.ink, font: 15, weight: 700, dy: 24, halo });
     }
     // handles
     const selected = ctx.ui.selected;
@@ -275,7 +276,7 @@ export const lesson = {
     }
     // the travelling point and its velocity
     const t = model.traveller;
-    painter.arrow(t.point[0], t.point[1], t.point[0] + t.velocity[0] * FIRST_SCALE, t.point[1] + t.velocity[1] * FIRST_SCALE, { stroke: c.series[4], width: 3 });
+    drawVector(painter, t.point, t.velocity, FIRST_SCALE, { stroke: c.series[4], width: 3, halo: c.background }, 'velocity P\'/3');
     painter.circle(t.point[0], t.point[1], 7, { fill: c.series[4], stroke: c.ink, width: 1.5 });
     if (ctx.stage && painter.g) drawPlots(model, state, ctx);
     // legend (screen corner, in world coordinates of the current view)
