@@ -6,7 +6,7 @@
 // wasm memory }. After a warm-up round (first-use allocations, registry capacity) the bytes
 // in use must return to the same figure within HEAP_SLACK_BYTES, and linear memory must not
 // grow by more than LINEAR_SLACK_BYTES. dlmalloc's smallest chunk is 16 bytes, so one
-// leaked allocation per call costs at least 16 x calls bytes: 160 KB at 10,000 calls, 1.6 MB
+// leaked allocation per call costs at least 16 x calls bytes: 80 KB at 5,000 calls, 1.6 MB
 // at 100,000, far above the slack. An escaping C++ exception (which leaks wasm stack in
 // Emscripten 3.1.6) would also corrupt the module long before the end; the last check
 // evaluates exactly.
@@ -17,17 +17,17 @@
 // parseMesh (untrusted text of any size crossing into the heap) and a query on a live mesh
 // (the path a traversal animation calls thousands of times). Every other function goes
 // through the very same boundary code (guarded(), error_object, to_typed_array) with
-// its own inputs, so 10,000 + 10,000 each already shows a leak of one allocation per call
-// (>= 160 KB) 40x above the slack, and the whole file stays at seconds, not minutes
+// its own inputs, so 5,000 + 5,000 each already shows a leak of one allocation per call
+// (>= 80 KB) 20x above the slack, and the whole file stays at seconds, not minutes
 // (a curve evaluation with its checks costs about 40 us per call here; 200,000 of each of
-// the 30 cases would take over ten minutes on these shared 2-core machines).
+// the 50 cases would take well over ten minutes on these shared 2-core machines).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
 
 const api = await loadWingspline();
 const FULL = 100000;
-const REDUCED = 10000;
+const REDUCED = 5000;
 const WARM_UP = 200;
 const HEAP_SLACK_BYTES = 4096;
 const LINEAR_SLACK_BYTES = 1 << 20;
@@ -47,6 +47,10 @@ const zeroWeight = { ...nurbs, weights: [1, 1, 0] };
 const params = Float64Array.from({ length: 16 }, (_, j) => j / 15);
 const outside = [0.5, 1.5];
 const geometry = [0, 0, 1, 2, 3, 2, 4, 0];
+const bspline = { kind: 'bspline', dim: 2, degree: 3, points: [0, 0, 1, 2, 3, 2, 4, 0, 5, 1], knots: [0, 0, 0, 0, 1, 2, 2, 2, 2] };
+const following = { kind: 'bezier', dim: 2, points: [4, 0, 5, -2, 7, -2, 8, 0] }; // starts where bezier ends
+// A bicubic Bezier patch: p_ij = (i, j, (i - 1.5)(j - 1.5) / 2), points[3*(4*i + j) + k].
+const patch = Array.from({ length: 16 }, (_, c) => [Math.floor(c / 4), c % 4, ((Math.floor(c / 4) - 1.5) * ((c % 4) - 1.5)) / 2]).flat();
 
 // The long-lived mesh the query functions run on; disposed at the end.
 const lecture = api.buildMesh(api.lectureExample());
@@ -86,6 +90,29 @@ const cases = [
     () => lecture.verticesOfFace(V_MISSING)],
   ['mesh planes / normals', REDUCED, () => { lecture.planes(); lecture.normals(); }, () => lecture.faceNeighbours(V_MISSING)],
   ['mesh.setVertexPosition', REDUCED, () => lecture.setVertexPosition(4, [2, -1, 0]), () => lecture.setVertexPosition(V_MISSING, [0, 0, 0])],
+  ['timeBuildInCore', REDUCED, () => api.timeBuildInCore(tetra, 1), () => api.timeBuildInCore(nonManifold, 1)],
+  ['deBoor', REDUCED, () => api.deBoor(bspline, 0.5), () => api.deBoor(decreasing, 0.5)],
+  ['insertKnot', REDUCED, () => api.insertKnot(bspline, 1.5), () => api.insertKnot(decreasing, 0.5)],
+  ['bsplineToBezier', REDUCED, () => api.bsplineToBezier(bspline), () => api.bsplineToBezier(decreasing)],
+  ['knotMultiplicities', REDUCED, () => api.knotMultiplicities(bspline), () => api.knotMultiplicities(decreasing)],
+  ['nurbsCircle / nurbsEllipse', REDUCED, () => { api.nurbsCircle({ center: [0, 0], radius: 1 }); api.nurbsEllipse({ center: [0, 0], rx: 2, ry: 1 }); },
+    () => api.nurbsCircle({ center: [0, 0], radius: -1 })],
+  ['nurbsArc', REDUCED, () => api.nurbsArc({ center: [0, 0], radius: 1, startAngle: 0, endAngle: 2 }),
+    () => api.nurbsArc({ center: [0, 0], radius: 1, startAngle: 0, endAngle: 10 })],
+  ['nurbsConic', REDUCED, () => api.nurbsConic({ p0: [0, 0], p1: [1, 1], p2: [2, 0], weight: 0.5 }),
+    () => api.nurbsEllipse({ center: [0, 0], rx: 0, ry: 1 })],
+  ['curvature', REDUCED, () => api.curvature(nurbs, params), () => api.curvature(zeroWeight, params)],
+  ['arcLength', REDUCED, () => api.arcLength(nurbs), () => api.arcLength(decreasing)],
+  ['arcLengthParams', REDUCED, () => api.arcLengthParams(nurbs, 10), () => api.arcLengthParams(decreasing, 10)],
+  ['jointContinuity', REDUCED, () => api.jointContinuity(bezier, following, { tolerance: 1e-9 }), () => api.jointContinuity(bezier, decreasing)],
+  ['interpolatePolynomial', REDUCED, () => api.interpolatePolynomial(geometry, 2), () => api.interpolatePolynomial(geometry, 2, [0, 1, 1, 2])],
+  ['samplePatch', REDUCED, () => api.samplePatch({ kind: 'bezier', points: patch, nu: 4, nv: 4 }),
+    () => api.samplePatch({ kind: 'bezier', points: patch.slice(3), nu: 4, nv: 4 })],
+  ['transformPoints', REDUCED, () => api.transformPoints(geometry, 2, [0, -1, 1, 1, 0, 2, 0, 0, 1]), () => api.transformPoints(geometry, 2, [1, 0, 0, 1])],
+  ['mesh.storage / representations', REDUCED, () => { lecture.storage(); lecture.representations({ limit: 3 }); },
+    () => lecture.query('edges-of-face', V_MISSING)],
+  ['mesh.query', REDUCED, () => lecture.query('faces-around-vertex', 1), () => lecture.query('faces-around-vertex', V_MISSING)],
+  ['mesh.timeNormalsInCore', REDUCED, () => lecture.timeNormalsInCore(1), () => lecture.timeNormalsInCore(0)],
   ['memoryUsage / liveMeshCount / heapBytesInUse', REDUCED, () => { api.memoryUsage(); api.liveMeshCount(); api.heapBytesInUse(); },
     () => api.facesAroundVertex?.(0) ?? lecture.facesAroundVertex(V_MISSING)],
 ];
