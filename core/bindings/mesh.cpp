@@ -8,8 +8,13 @@
 #include "wingspline/mesh/indexed_mesh.h"
 #include "wingspline/mesh/mesh_io.h"
 #include "wingspline/mesh/planes.h"
+#include "wingspline/mesh/queries.h"
+#include "wingspline/mesh/representations.h"
 #include "wingspline/mesh/winged_edge.h"
 
+#include <emscripten/emscripten.h>
+
+#include <algorithm>
 #include <malloc.h>
 #include <memory>
 #include <unordered_map>
@@ -19,10 +24,19 @@ namespace {
 
 using namespace wingspline::mesh;
 
-// Only the winged edge is kept: the other representations are derived from it on demand.
+// The winged edge is built with the mesh; the other representations only on first use
+// (meshBuildRepresentations, from the face set the JS Mesh keeps until then), so a mesh's
+// wasm memory is the winged edge's own until a lesson asks for the others.
 struct MeshEntry {
     WingedEdgeMesh winged;
+    std::unique_ptr<Representations> representations;
 };
+
+Representations& representations_of(MeshEntry& m) {
+    if (!m.representations)
+        throw Error("representations-not-built", "the other representations of this mesh have not been built yet");
+    return *m.representations;
+}
 
 struct Registry {
     std::unordered_map<int32_t, std::unique_ptr<MeshEntry>> meshes;
@@ -295,33 +309,212 @@ val mesh_planes(int32_t handle) {
     });
 }
 
-// {normals: Float64Array (3 per face)}, Newell unit normals.
-val mesh_normals(int32_t handle) {
+// {normals: Float64Array (3 per face)}, Newell unit normals. With `into` (a Float64Array
+// of 3F numbers the JS layer checked) the result is copied into it instead of a new array:
+// a caller that recomputes often (a drag, the benchmark) allocates nothing per call, as the
+// native code reusing its vector. The scratch buffer is not zero-filled (all written).
+val mesh_normals(int32_t handle, val into) {
     return guarded([&] {
-        std::vector<double> n;
-        newell_normals(entry(handle).winged, n);
+        const WingedEdgeMesh& w = entry(handle).winged;
+        const std::size_t n = 3 * static_cast<std::size_t>(w.face_count());
+        std::unique_ptr<double[]> scratch(new double[n]);
+        newell_normals(w, scratch.get());
+        const double* data = scratch.get();
         val r = val::object();
-        r.set("normals", to_typed_array(n));
+        if (into.isNull()) {
+            r.set("normals", to_typed_array(data, n));
+        } else {
+            // The view lives only for this call; nothing allocates between making and using it.
+            into.call<void>("set", val(emscripten::typed_memory_view(n, data)));
+            r.set("normals", into);
+        }
         return r;
     });
 }
 
-// Moves one vertex; reports how many stored entries each representation had to rewrite.
+// ------------------------------------------------------------------ benchmark only
+
+// The native benchmark times the core's work on data already in memory; these time the
+// same work inside the module (emscripten_get_now, ms) so the wasm and native figures
+// compare like for like. The JS API figures add the boundary: copies in and out.
+val bench_build_in_core(val positions, val face_offsets, val face_vertices, int32_t repetitions) {
+    return guarded([&] {
+        const IndexedMesh m = indexed_from(positions, face_offsets, face_vertices);
+        std::vector<double> seconds;
+        double checksum = 0;
+        for (int32_t i = 0; i < repetitions; ++i) {
+            const double t0 = emscripten_get_now();
+            const WingedEdgeMesh w = WingedEdgeMesh::build(m);
+            seconds.push_back((emscripten_get_now() - t0) / 1000.0);
+            checksum += w.edge(w.edge_count() - 1).end_right + w.edge_count();
+        }
+        val r = val::object();
+        r.set("seconds", to_typed_array(seconds));
+        r.set("checksum", checksum);
+        return r;
+    });
+}
+
+val bench_normals_in_core(int32_t handle, int32_t repetitions) {
+    return guarded([&] {
+        const WingedEdgeMesh& w = entry(handle).winged;
+        std::vector<double> normals, seconds;
+        double checksum = 0;
+        for (int32_t i = 0; i < repetitions; ++i) {
+            const double t0 = emscripten_get_now();
+            newell_normals(w, normals);
+            seconds.push_back((emscripten_get_now() - t0) / 1000.0);
+            checksum += normals[0] + normals[normals.size() - 1];
+        }
+        val r = val::object();
+        r.set("seconds", to_typed_array(seconds));
+        r.set("checksum", checksum);
+        return r;
+    });
+}
+
+// Moves one vertex in every representation; reports how many xyz copies each rewrote.
 val mesh_set_vertex_position(int32_t handle, int32_t v, double x, double y, double z) {
     return guarded([&] {
         MeshEntry& m = entry(handle);
         require_vertex(m.winged, v);
+        Representations& reps = representations_of(m);
         m.winged.set_position(v, {x, y, z});
-        // Independent faces hold one coordinate copy per face corner at v.
-        const int32_t copies = static_cast<int32_t>(m.winged.faces_around_vertex(v).size());
+        const auto copies = set_vertex_position(reps, v, {x, y, z});
         val changed = val::object();
-        changed.set("independent-faces", copies);
-        changed.set("vertex-face-tables", 1);
-        changed.set("adjacency-lists", 1);
-        changed.set("edge-list", 1);
-        changed.set("winged-edge", 1);
+        for (int r = 0; r + 1 < kRepresentationCount; ++r) changed.set(representation_key(static_cast<Representation>(r)), copies[r]);
+        changed.set(representation_key(Representation::WingedEdge), 1);
         val r = val::object();
         r.set("changedEntries", changed);
+        return r;
+    });
+}
+
+// ------------------------------------------------------------------ the other representations
+
+// Builds the four other representations from the face set the mesh was built from (once).
+val mesh_build_representations(int32_t handle, val face_offsets, val face_vertices) {
+    return guarded([&] {
+        MeshEntry& m = entry(handle);
+        if (!m.representations) {
+            IndexedMesh faces;
+            faces.positions = m.winged.positions();
+            faces.face_offsets = to_ints(face_offsets);
+            faces.face_vertices = to_ints(face_vertices);
+            m.representations = std::make_unique<Representations>(build_representations(faces, m.winged));
+        }
+        return val::object();
+    });
+}
+
+// {[key]: {entries, bytes, arrays: [{name, entries, bytesPerEntry}]}}
+val mesh_storage(int32_t handle) {
+    return guarded([&] {
+        MeshEntry& m = entry(handle);
+        const auto all = representation_storage(representations_of(m), m.winged);
+        val out = val::object();
+        for (int r = 0; r < kRepresentationCount; ++r) {
+            val arrays = val::array();
+            for (std::size_t i = 0; i < all[r].arrays.size(); ++i) {
+                const ArrayStorage& a = all[r].arrays[i];
+                val item = val::object();
+                item.set("name", a.name);
+                item.set("entries", static_cast<double>(a.entries));
+                item.set("bytesPerEntry", static_cast<double>(a.bytes_per_entry));
+                arrays.set(i, item);
+            }
+            val one = val::object();
+            one.set("entries", static_cast<double>(all[r].entries()));
+            one.set("bytes", static_cast<double>(all[r].bytes()));
+            one.set("arrays", arrays);
+            out.set(representation_key(static_cast<Representation>(r)), one);
+        }
+        val r = val::object();
+        r.set("storage", out);
+        return r;
+    });
+}
+
+// The first `rows` entries of a table with `stride` numbers per row.
+template <class T> val first_rows(const std::vector<T>& table, std::size_t stride, int32_t rows) {
+    const std::size_t n = std::min(table.size(), stride * static_cast<std::size_t>(rows));
+    return to_typed_array(table.data(), n);
+}
+
+// The first `rows` rows of a CSR table: offsets (rows + 1) and the items they cover.
+void set_csr(val& out, const char* offsets_name, const std::vector<int32_t>& offsets,
+             std::initializer_list<std::pair<const char*, const std::vector<int32_t>*>> lists, int32_t rows) {
+    const std::size_t n = std::min(offsets.size() - 1, static_cast<std::size_t>(rows));
+    out.set(offsets_name, to_typed_array(offsets.data(), n + 1));
+    for (const auto& [name, list] : lists) out.set(name, to_typed_array(list->data(), offsets[n]));
+}
+
+// Every representation's arrays, each table cut to its first `rows` rows (see
+// docs/api-mesh.md; the JS layer turns them into row objects).
+val mesh_representations(int32_t handle, int32_t rows) {
+    return guarded([&] {
+        MeshEntry& m = entry(handle);
+        const Representations& reps = representations_of(m);
+        const WingedEdgeMesh& w = m.winged;
+        val r = val::object();
+
+        val ind = val::object();
+        set_csr(ind, "faceOffsets", reps.independent_faces.face_offsets, {}, rows);
+        const int32_t corners = reps.independent_faces.face_offsets[std::min(rows, w.face_count())];
+        ind.set("cornerPositions", first_rows(reps.independent_faces.corner_positions, 3, corners));
+        r.set("independentFaces", ind);
+
+        const VertexFaceTables& t = reps.vertex_face_tables;
+        val tables = val::object();
+        tables.set("positions", first_rows(t.positions, 3, rows));
+        set_csr(tables, "faceOffsets", t.face_offsets, {{"faceVertices", &t.face_vertices}}, rows);
+        r.set("vertexFaceTables", tables);
+
+        const AdjacencyLists& a = reps.adjacency_lists;
+        val adj = val::object();
+        adj.set("positions", first_rows(a.positions, 3, rows));
+        set_csr(adj, "vertexOffsets", a.vertex_offsets, {{"vertexVertices", &a.vertex_vertices}, {"vertexEdges", &a.vertex_edges}}, rows);
+        set_csr(adj, "vertexFaceOffsets", a.vertex_face_offsets, {{"vertexFaces", &a.vertex_faces}}, rows);
+        adj.set("edgeVertices", first_rows(a.edge_vertices, 2, rows));
+        set_csr(adj, "edgeEdgeOffsets", a.edge_edge_offsets, {{"edgeEdges", &a.edge_edges}}, rows);
+        adj.set("edgeFaces", first_rows(a.edge_faces, 2, rows));
+        set_csr(adj, "faceOffsets", a.face_offsets,
+                {{"faceVertices", &a.face_vertices}, {"faceEdges", &a.face_edges}, {"faceFaces", &a.face_faces}}, rows);
+        r.set("adjacencyLists", adj);
+
+        const PartialAdjacencyLists& p = reps.partial_adjacency_lists;
+        val part = val::object();
+        part.set("positions", first_rows(p.positions, 3, rows));
+        set_csr(part, "vertexOffsets", p.vertex_offsets, {{"vertexEdges", &p.vertex_edges}}, rows);
+        part.set("edgeVertices", first_rows(p.edge_vertices, 2, rows));
+        part.set("edgeFaces", first_rows(p.edge_faces, 2, rows));
+        set_csr(part, "faceOffsets", p.face_offsets, {{"faceEdges", &p.face_edges}}, rows);
+        r.set("partialAdjacencyLists", part);
+
+        const EdgeList& l = reps.edge_list;
+        val list = val::object();
+        list.set("positions", first_rows(l.positions, 3, rows));
+        list.set("edges", first_rows(l.edges, 4, rows));
+        set_csr(list, "polygonOffsets", l.polygon_offsets, {{"polygonEdges", &l.polygon_edges}}, rows);
+        r.set("edgeList", list);
+        return r;
+    });
+}
+
+// {[key]: {answer: Int32Array, entriesRead}} for one query, in every representation.
+val mesh_query(int32_t handle, const std::string& kind, int32_t element) {
+    return guarded([&] {
+        MeshEntry& m = entry(handle);
+        const auto answers = answer_query(query_kind(kind), element, representations_of(m), m.winged);
+        val out = val::object();
+        for (int r = 0; r < kRepresentationCount; ++r) {
+            val one = val::object();
+            one.set("answer", to_typed_array(answers[r].answer));
+            one.set("entriesRead", static_cast<double>(answers[r].entries_read));
+            out.set(representation_key(static_cast<Representation>(r)), one);
+        }
+        val r = val::object();
+        r.set("answers", out);
         return r;
     });
 }
@@ -433,6 +626,12 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshNormals", &mesh_normals);
     emscripten::function("meshSetVertexPosition", &mesh_set_vertex_position);
     emscripten::function("meshBytes", &mesh_bytes);
+    emscripten::function("meshBuildRepresentations", &mesh_build_representations);
+    emscripten::function("meshStorage", &mesh_storage);
+    emscripten::function("meshRepresentations", &mesh_representations);
+    emscripten::function("meshQuery", &mesh_query);
+    emscripten::function("benchBuildInCore", &bench_build_in_core);
+    emscripten::function("benchNormalsInCore", &bench_normals_in_core);
     emscripten::function("meshParse", &mesh_parse);
     emscripten::function("meshFormat", &mesh_format);
     emscripten::function("meshRingWalk", &mesh_ring_walk);

@@ -89,13 +89,51 @@ const safetyNet = typeof FinalizationRegistry === 'function'
   ? new FinalizationRegistry(({ raw, handle }) => raw.meshDispose(handle))
   : null;
 
+// The six representations of lectures 000/001, in the core's order; the JS keys.
+export const REPRESENTATIONS = Object.freeze([
+  'independent-faces', 'vertex-face-tables', 'adjacency-lists', 'partial-adjacency-lists', 'edge-list', 'winged-edge',
+]);
+export const QUERY_KINDS = Object.freeze([
+  'faces-around-vertex', 'edges-around-vertex', 'edges-of-face', 'faces-of-edge', 'neighbours-of-face',
+]);
+
+// CSR rows [offsets[i], offsets[i+1]) of each list as plain arrays, one object per row.
+function csrRows(offsets, lists) {
+  const rows = [];
+  for (let i = 0; i + 1 < offsets.length; i += 1) {
+    const row = {};
+    for (const [name, list] of Object.entries(lists)) row[name] = Array.from(list.subarray(offsets[i], offsets[i + 1]));
+    rows.push(row);
+  }
+  return rows;
+}
+
+function xyzRows(positions) {
+  const rows = [];
+  for (let i = 0; 3 * i + 2 < positions.length; i += 1) rows.push([positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]]);
+  return rows;
+}
+
+function storageValue(s) {
+  return {
+    entries: s.entries,
+    bytes: s.bytes,
+    arrays: s.arrays.map((a) => ({ name: a.name, entries: a.entries, bytesPerEntry: a.bytesPerEntry, bytes: a.entries * a.bytesPerEntry })),
+  };
+}
+
 export class Mesh {
   #raw;
   #handle;
+  // The face set (CSR) the mesh was built from, kept in JS until the other representations
+  // are first needed; then the core builds them from it and this is dropped.
+  #faceSet;
+  #faces; // F, cached on first need (connectivity never changes)
 
-  constructor(raw, handle) {
+  constructor(raw, handle, faceSet = null) {
     this.#raw = raw;
     this.#handle = handle;
+    this.#faceSet = faceSet;
     safetyNet?.register(this, { raw, handle }, this);
   }
 
@@ -114,6 +152,18 @@ export class Mesh {
     return this.#handle;
   }
 
+  // Builds independent faces, vertex/face tables, the adjacency lists and the edge list in
+  // the core on first use (they are not part of the winged edge's bytes).
+  #representationsReady() {
+    const handle = this.#live();
+    if (this.#faceSet !== null) {
+      const { faceOffsets, faceVertices } = this.#faceSet;
+      unwrap(this.#raw.meshBuildRepresentations(handle, faceOffsets, faceVertices));
+      this.#faceSet = null;
+    }
+    return handle;
+  }
+
   #adjacency(kind, element, what) {
     integerIn(element, what, 0, INT32_MAX);
     return unwrap(this.#raw.meshAdjacency(this.#live(), kind, element)).indices;
@@ -121,18 +171,21 @@ export class Mesh {
 
   // The lecture's three tables: {vertices: [{edge, x, y, z}], edges: [{start, end, left,
   // right, startLeft, startRight, endLeft, endRight}], faces: [{edge}]}.
-  wingedEdge() {
+  wingedEdge() { return this.#wingedEdgeRows(INT32_MAX); }
+
+  // The first `limit` rows of each winged-edge table.
+  #wingedEdgeRows(limit) {
     const r = unwrap(this.#raw.meshWingedEdge(this.#live()));
-    const vertices = Array.from(r.vertexEdge, (edge, v) => ({
+    const vertices = Array.from(r.vertexEdge.subarray(0, limit), (edge, v) => ({
       edge, x: r.positions[3 * v], y: r.positions[3 * v + 1], z: r.positions[3 * v + 2],
     }));
     const edges = [];
-    for (let e = 0; 8 * e < r.edges.length; e += 1) {
+    for (let e = 0; 8 * e < r.edges.length && e < limit; e += 1) {
       const row = {};
       EDGE_FIELDS.forEach((name, k) => { row[name] = r.edges[8 * e + k]; });
       edges.push(row);
     }
-    const faces = Array.from(r.faceEdge, (edge) => ({ edge }));
+    const faces = Array.from(r.faceEdge.subarray(0, limit), (edge) => ({ edge }));
     return { vertices, edges, faces };
   }
 
@@ -195,23 +248,131 @@ export class Mesh {
     }));
   }
 
-  // Newell unit normals, normals[3*f + k].
-  normals() { return unwrap(this.#raw.meshNormals(this.#live())).normals; }
+  // Newell unit normals, normals[3*f + k], in a new Float64Array, or copied into `into`
+  // (a Float64Array of 3F numbers, returned) so repeated calls allocate nothing.
+  normals({ into = null } = {}) {
+    if (into !== null && !(into instanceof Float64Array && into.length === 3 * this.#faceCount())) {
+      fail('invalid-argument', 'normals({into}) needs a Float64Array with 3 numbers per face');
+    }
+    return unwrap(this.#raw.meshNormals(this.#live(), into)).normals;
+  }
 
-  // Moves vertex v; {changedEntries: {'independent-faces': copies rewritten, ...: 1}}.
+  #faceCount() {
+    if (this.#faces === undefined) this.#faces = unwrap(this.#raw.meshCounts(this.#live())).faces;
+    return this.#faces;
+  }
+
+  // Moves vertex v in every representation; {changedEntries: {[representation]: xyz copies
+  // rewritten}}: independent faces one per face corner at v, every other one exactly 1.
   setVertexPosition(v, position) {
     integerIn(v, 'vertex', 0, INT32_MAX);
     if (!isNumberArray(position) || position.length !== 3 || !Array.from(position).every(Number.isFinite)) {
       fail('invalid-argument', 'the position must be three finite numbers [x, y, z]');
     }
-    const r = unwrap(this.#raw.meshSetVertexPosition(this.#live(), v, position[0], position[1], position[2]));
-    return { changedEntries: r.changedEntries };
+    const r = unwrap(this.#raw.meshSetVertexPosition(this.#representationsReady(), v, position[0], position[1], position[2]));
+    return { changedEntries: { ...r.changedEntries } };
+  }
+
+  // Storage of each representation, from its real arrays: {[representation]: {entries,
+  // bytes, arrays: [{name, entries, bytesPerEntry, bytes}]}}; an entry is one array element
+  // (a double coordinate or an int32 index).
+  storage() {
+    const r = unwrap(this.#raw.meshStorage(this.#representationsReady()));
+    return Object.fromEntries(REPRESENTATIONS.map((key) => [key, storageValue(r.storage[key])]));
+  }
+
+  // Plain-value tables of all six representations (shapes in docs/api-mesh.md). `limit`
+  // cuts every table to its first rows; `totals` always gives the full row counts.
+  representations(options = {}) {
+    const { limit = INT32_MAX } = options ?? {};
+    integerIn(limit, 'limit', 0, INT32_MAX);
+    const handle = this.#representationsReady();
+    const r = unwrap(this.#raw.meshRepresentations(handle, limit));
+    const storage = this.storage();
+    const c = this.counts();
+    const vertexTotals = { vertices: c.vertices, edges: c.edges, faces: c.faces };
+    const ind = r.independentFaces;
+    const independentFaces = [];
+    for (let f = 0; f + 1 < ind.faceOffsets.length; f += 1) {
+      independentFaces.push(xyzRows(ind.cornerPositions.subarray(3 * ind.faceOffsets[f], 3 * ind.faceOffsets[f + 1])));
+    }
+    const t = r.vertexFaceTables;
+    const a = r.adjacencyLists;
+    const adjacencyVertices = csrRows(a.vertexOffsets, { vertices: a.vertexVertices, edges: a.vertexEdges });
+    const adjacencyVertexFaces = csrRows(a.vertexFaceOffsets, { faces: a.vertexFaces });
+    const adjacencyEdgeEdges = csrRows(a.edgeEdgeOffsets, { edges: a.edgeEdges });
+    const p = r.partialAdjacencyLists;
+    const partialVertices = csrRows(p.vertexOffsets, { edges: p.vertexEdges });
+    const l = r.edgeList;
+    const we = this.#wingedEdgeRows(limit);
+    return {
+      'independent-faces': { faces: independentFaces, totals: { faces: c.faces }, storage: storage['independent-faces'] },
+      'vertex-face-tables': {
+        vertices: xyzRows(t.positions),
+        faces: csrRows(t.faceOffsets, { vertices: t.faceVertices }).map((row) => row.vertices),
+        totals: { vertices: c.vertices, faces: c.faces },
+        storage: storage['vertex-face-tables'],
+      },
+      'adjacency-lists': {
+        vertices: xyzRows(a.positions).map((position, v) => ({
+          position, vertices: adjacencyVertices[v].vertices, edges: adjacencyVertices[v].edges, faces: adjacencyVertexFaces[v].faces,
+        })),
+        edges: adjacencyEdgeEdges.map((row, e) => ({
+          vertices: [a.edgeVertices[2 * e], a.edgeVertices[2 * e + 1]], edges: row.edges, faces: [a.edgeFaces[2 * e], a.edgeFaces[2 * e + 1]],
+        })),
+        faces: csrRows(a.faceOffsets, { vertices: a.faceVertices, edges: a.faceEdges, faces: a.faceFaces }),
+        totals: vertexTotals,
+        storage: storage['adjacency-lists'],
+      },
+      'partial-adjacency-lists': {
+        vertices: xyzRows(p.positions).map((position, v) => ({ position, edges: partialVertices[v].edges })),
+        edges: Array.from({ length: p.edgeVertices.length / 2 }, (_, e) => ({
+          vertices: [p.edgeVertices[2 * e], p.edgeVertices[2 * e + 1]], faces: [p.edgeFaces[2 * e], p.edgeFaces[2 * e + 1]],
+        })),
+        faces: csrRows(p.faceOffsets, { edges: p.faceEdges }),
+        totals: vertexTotals,
+        storage: storage['partial-adjacency-lists'],
+      },
+      'edge-list': {
+        vertices: xyzRows(l.positions),
+        edges: Array.from({ length: l.edges.length / 4 }, (_, e) => ({
+          v1: l.edges[4 * e], v2: l.edges[4 * e + 1], p1: l.edges[4 * e + 2], p2: l.edges[4 * e + 3],
+        })),
+        polygons: csrRows(l.polygonOffsets, { edges: l.polygonEdges }).map((row) => row.edges),
+        totals: { vertices: c.vertices, edges: c.edges, polygons: c.faces },
+        storage: storage['edge-list'],
+      },
+      'winged-edge': {
+        vertices: we.vertices,
+        edges: we.edges,
+        faces: we.faces,
+        totals: vertexTotals,
+        storage: storage['winged-edge'],
+      },
+    };
+  }
+
+  // One adjacency query answered by every representation: {[representation]: {answer:
+  // Int32Array, entriesRead}}; entriesRead counts the array entries the algorithm read.
+  query(kind, element) {
+    if (!QUERY_KINDS.includes(kind)) fail('unknown-query', `unknown query '${String(kind).slice(0, 40)}'; use ${QUERY_KINDS.join(', ')}`);
+    integerIn(element, kind.endsWith('vertex') ? 'vertex' : kind.endsWith('edge') ? 'edge' : 'face', 0, INT32_MAX);
+    const r = unwrap(this.#raw.meshQuery(this.#representationsReady(), kind, element));
+    return Object.fromEntries(REPRESENTATIONS.map((key) => [key, { answer: r.answers[key].answer, entriesRead: r.answers[key].entriesRead }]));
   }
 
   // Walks every vertex ring in C++ (the mesh_ring benchmark): {visited, checksum}.
   ringWalk() {
     const { visited, checksum } = unwrap(this.#raw.meshRingWalk(this.#live()));
     return { visited, checksum };
+  }
+
+  // Benchmark only: times newell_normals inside the module (no copy out), the way the
+  // native benchmark does; {seconds: Float64Array (one per repetition), checksum}.
+  timeNormalsInCore(repetitions) {
+    integerIn(repetitions, 'repetitions', 1, 1000);
+    const { seconds, checksum } = unwrap(this.#raw.benchNormalsInCore(this.#live(), repetitions));
+    return { seconds, checksum };
   }
 
   // Bytes held by the winged-edge tables (vertex, edge and face tables).
@@ -248,7 +409,12 @@ export function createMeshApi(raw) {
       const vertexEdges = optionalInts(input.vertexEdges, 'vertexEdges');
       const faceEdges = optionalInts(input.faceEdges, 'faceEdges');
       const r = unwrap(raw.meshBuild(positions, faceOffsets, faceVertices, edges, vertexEdges, faceEdges));
-      return new Mesh(raw, r.handle);
+      // The caller may reuse bulk arrays it passed in; the mesh keeps its own copy.
+      const own = input.faces === undefined;
+      return new Mesh(raw, r.handle, {
+        faceOffsets: own ? faceOffsets.slice() : faceOffsets,
+        faceVertices: own ? faceVertices.slice() : faceVertices,
+      });
     },
     // Every problem of an indexed face set, without building: {ok, problems}.
     validateMesh(input) {
@@ -277,6 +443,14 @@ export function createMeshApi(raw) {
     memoryUsage() {
       const { linearBytes, heapInUse } = unwrap(raw.memoryUsage());
       return { linearBytes, heapInUse };
+    },
+    // Benchmark only: copies the face set in once, then times the winged-edge build inside
+    // the module R times, as the native benchmark does: {seconds: Float64Array, checksum}.
+    timeBuildInCore(input, repetitions) {
+      integerIn(repetitions, 'repetitions', 1, 1000);
+      const { positions, faceOffsets, faceVertices } = indexedInput(input);
+      const { seconds, checksum } = unwrap(raw.benchBuildInCore(positions, faceOffsets, faceVertices, repetitions));
+      return { seconds, checksum };
     },
     // How many built meshes have not been disposed (for leak tests).
     liveMeshCount() {
