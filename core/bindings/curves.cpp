@@ -4,8 +4,13 @@
 // {ok:false, code, message} through guarded(); bulk results leave as copied typed arrays.
 #include "boundary.h"
 
+#include "wingspline/curves/analysis.h"
 #include "wingspline/curves/bezier.h"
+#include "wingspline/curves/bspline_ops.h"
+#include "wingspline/curves/conics.h"
 #include "wingspline/curves/curve.h"
+#include "wingspline/curves/linear_algebra.h"
+#include "wingspline/curves/patch.h"
 #include "wingspline/curves/segment.h"
 
 #include <malloc.h>
@@ -44,19 +49,36 @@ val ints(const std::vector<int>& v) {
 
 // curveEvaluate(spec, params, order, all) -> {values}: all = false gives the derivative of
 // `order` only (dim per param); all = true gives orders 0..order ((order+1)*dim per param).
-val curve_evaluate(const val& spec, const val& params, int order, bool all) {
+// Batches run in chunks of kChunk parameters: copy a chunk of params into wasm memory,
+// check and evaluate it, copy its points straight into the JS result. The data stay in
+// cache between the steps and the wasm heap never holds the whole batch (1e6 points would
+// otherwise grow it by 40 MB).
+constexpr std::size_t kChunk = 8192;
+
+// out: undefined (a new Float64Array is returned) or a Float64Array of the right length
+// that the JS layer checked; filling it avoids allocating a new array on every redraw. On
+// an error the contents of a given `out` are unspecified (the error says which parameter).
+val curve_evaluate(const val& spec, const val& params, int order, bool all, const val& out_array) {
     return guarded([&] {
         const CurveEvaluator ev(curve_from(spec));
         require(order >= 0 && order <= kMaxDegree + 1, "invalid-argument",
                 "the derivative order must be a whole number from 0 to " + std::to_string(kMaxDegree + 1));
-        const std::vector<double> raw = to_doubles(params);
-        const std::vector<double> u = ev.checked_params(raw.data(), raw.size());
+        const std::size_t n = params["length"].as<std::size_t>();
         const std::size_t per = static_cast<std::size_t>(ev.dim()) * (all ? order + 1 : 1);
-        std::vector<double> out(u.size() * per);
-        if (all) ev.evaluate_all(u.data(), u.size(), order, out.data());
-        else ev.evaluate(u.data(), u.size(), order, out.data());
+        val result = out_array.isUndefined() ? val::global("Float64Array").new_(n * per) : out_array;
+        std::vector<double> u(std::min(n, kChunk));
+        std::vector<double> points(u.size() * per);
+        for (std::size_t start = 0; start < n; start += kChunk) {
+            const std::size_t m = std::min(kChunk, n - start);
+            val(emscripten::typed_memory_view(m, u.data()))
+                .call<void>("set", params.call<val>("subarray", start, start + m));
+            ev.check_params(u.data(), m, start);
+            if (all) ev.evaluate_all(u.data(), m, order, points.data());
+            else ev.evaluate(u.data(), m, order, points.data());
+            result.call<void>("set", val(emscripten::typed_memory_view(m * per, points.data())), start * per);
+        }
         val r = val::object();
-        r.set("values", to_typed_array(out));
+        r.set("values", result);
         return r;
     });
 }
@@ -164,6 +186,196 @@ val basis_convert(const val& G, int dim, const std::string& from, const std::str
     });
 }
 
+// A curve back to JS: { kind, dim, points, degree, knots?, weights? } (plain values).
+val curve_to_val(const Curve& c) {
+    val r = val::object();
+    r.set("kind", std::string(curve_kind_name(c.kind)));
+    r.set("dim", c.dim);
+    r.set("points", to_typed_array(c.points));
+    r.set("degree", curve_degree(c));
+    if (!c.knots.empty()) r.set("knots", to_typed_array(c.knots));
+    if (!c.weights.empty()) r.set("weights", to_typed_array(c.weights));
+    return r;
+}
+
+val bspline_de_boor(const val& spec, double u) {
+    return guarded([&] {
+        const DeBoorSteps s = de_boor(curve_from(spec), u);
+        val r = val::object();
+        r.set("span", s.span);
+        r.set("degree", s.degree);
+        r.set("firstIndex", s.first_index);
+        r.set("levels", doubles_array(s.levels));
+        r.set("levelWeights", doubles_array(s.level_weights));
+        r.set("alphas", doubles_array(s.alphas));
+        return r;
+    });
+}
+
+val bspline_insert_knot(const val& spec, double u) {
+    return guarded([&] {
+        const KnotInsertion k = insert_knot(curve_from(spec), u);
+        val r = val::object();
+        r.set("curve", curve_to_val(k.curve));
+        r.set("span", k.span);
+        r.set("insertedIndex", k.inserted_index);
+        r.set("recomputed", ints(k.recomputed));
+        r.set("alphas", to_typed_array(k.alphas));
+        r.set("newPoints", ints(k.new_points));
+        return r;
+    });
+}
+
+val bspline_to_bezier(const val& spec) {
+    return guarded([&] {
+        const auto segments = to_bezier_segments(curve_from(spec));
+        val list = val::array();
+        for (std::size_t i = 0; i < segments.size(); ++i) {
+            val seg = val::object();
+            seg.set("points", to_typed_array(segments[i].points));
+            if (!segments[i].weights.empty()) seg.set("weights", to_typed_array(segments[i].weights));
+            seg.set("start", segments[i].start);
+            seg.set("end", segments[i].end);
+            list.set(i, seg);
+        }
+        val r = val::object();
+        r.set("segments", list);
+        return r;
+    });
+}
+
+val bspline_knot_multiplicities(const val& spec) {
+    return guarded([&] {
+        const auto knots = knot_multiplicities(curve_from(spec));
+        std::vector<double> values;
+        std::vector<int> mult, first, interior, continuity;
+        for (const auto& k : knots) {
+            values.push_back(k.value);
+            mult.push_back(k.multiplicity);
+            first.push_back(k.first_index);
+            interior.push_back(k.interior ? 1 : 0);
+            continuity.push_back(k.continuity);
+        }
+        val r = val::object();
+        r.set("values", to_typed_array(values));
+        r.set("multiplicities", ints(mult));
+        r.set("firstIndices", ints(first));
+        r.set("interior", ints(interior));
+        r.set("continuity", ints(continuity));
+        return r;
+    });
+}
+
+val nurbs_preset(const std::string& shape, const val& a, const val& b, const val& c, int dim, const val& numbers) {
+    return guarded([&] {
+        const std::vector<double> n = to_doubles(numbers);
+        auto number = [&](std::size_t i) { return i < n.size() ? n[i] : 0.0; };
+        Curve curve;
+        if (shape == "circle") curve = nurbs_circle(to_doubles(a), dim, number(0));
+        else if (shape == "arc") curve = nurbs_arc(to_doubles(a), dim, number(0), number(1), number(2));
+        else if (shape == "ellipse") curve = nurbs_ellipse(to_doubles(a), dim, number(0), number(1));
+        else if (shape == "conic") curve = nurbs_conic(to_doubles(a), to_doubles(b), to_doubles(c), dim, number(0));
+        else throw Error("invalid-argument", "unknown preset '" + shape.substr(0, 40) + "'");
+        val r = val::object();
+        r.set("curve", curve_to_val(curve));
+        if (shape == "conic") r.set("conicType", std::string(conic_type(number(0))));
+        return r;
+    });
+}
+
+val curve_curvature(const val& spec, const val& params) {
+    return guarded([&] {
+        const CurvatureValues k = curvature(curve_from(spec), to_doubles(params));
+        val r = val::object();
+        r.set("curvature", to_typed_array(k.curvature));
+        r.set("signedCurvature", to_typed_array(k.signed_curvature));
+        r.set("speed", to_typed_array(k.speed));
+        r.set("tangent", to_typed_array(k.tangent));
+        r.set("singular", to_typed_array(k.singular));
+        return r;
+    });
+}
+
+val curve_arc_length(const val& spec, double a, double b) {
+    return guarded([&] {
+        val r = val::object();
+        r.set("length", arc_length(curve_from(spec), a, b));
+        return r;
+    });
+}
+
+val curve_arc_length_params(const val& spec, int n) {
+    return guarded([&] {
+        const ArcLengthParams p = arc_length_params(curve_from(spec), n);
+        val r = val::object();
+        r.set("params", to_typed_array(p.params));
+        r.set("lengths", to_typed_array(p.lengths));
+        r.set("total", p.total);
+        return r;
+    });
+}
+
+val curve_joint_continuity(const val& a, const val& b, double tolerance) {
+    return guarded([&] {
+        const JointContinuity j = joint_continuity(curve_from(a), curve_from(b), tolerance);
+        const JointEvidence& e = j.evidence;
+        val ev = val::object();
+        ev.set("tolerance", e.tolerance);
+        ev.set("a", to_typed_array(e.a_derivatives));
+        ev.set("b", to_typed_array(e.b_derivatives));
+        ev.set("positionGap", e.position_gap);
+        ev.set("d1Gap", e.d1_gap);
+        ev.set("d2Gap", e.d2_gap);
+        ev.set("ratio", e.ratio);
+        ev.set("tangentAngle", e.tangent_angle);
+        ev.set("curvatureA", e.curvature_a);
+        ev.set("curvatureB", e.curvature_b);
+        ev.set("curvatureVectorGap", e.curvature_vector_gap);
+        ev.set("zeroTangent", e.zero_tangent);
+        val notes = val::array();
+        for (std::size_t i = 0; i < e.notes.size(); ++i) notes.set(i, e.notes[i]);
+        ev.set("notes", notes);
+        val r = val::object();
+        r.set("parametric", j.parametric);
+        r.set("geometric", j.geometric);
+        r.set("evidence", ev);
+        return r;
+    });
+}
+
+val patch_sample(const std::string& kind, const val& points, int nu, int nv) {
+    return guarded([&] {
+        const PatchSamples s = sample_patch(parse_basis_kind(kind), to_doubles(points), nu, nv);
+        val r = val::object();
+        r.set("nu", s.nu);
+        r.set("nv", s.nv);
+        r.set("positions", to_typed_array(s.positions));
+        r.set("normals", to_typed_array(s.normals));
+        r.set("du", to_typed_array(s.du));
+        r.set("dv", to_typed_array(s.dv));
+        r.set("twists", to_typed_array(s.twists));
+        return r;
+    });
+}
+
+// The Vandermonde system of lecture 000 for an interpolation curve: V, M = V^-1, C = M G.
+val interpolation_system(const val& spec) {
+    return guarded([&] {
+        const Curve c = curve_from(spec);
+        const SegmentMatrices s = segment_matrices(c, 0);
+        std::vector<double> u = c.nodes;
+        const int n = curve_degree(c);
+        if (u.empty())
+            for (int i = 0; i <= n; ++i) u.push_back(static_cast<double>(i) / n);
+        val r = val::object();
+        r.set("nodes", to_typed_array(u));
+        r.set("vandermonde", to_typed_array(vandermonde(u)));
+        r.set("inverse", to_typed_array(s.M));
+        r.set("coefficients", to_typed_array(s.C));
+        return r;
+    });
+}
+
 // Bytes of the wasm heap in use (dlmalloc's count): the leak tests watch it across
 // thousands of failing calls.
 double heap_bytes_in_use() { return static_cast<double>(mallinfo().uordblks); }
@@ -183,4 +395,15 @@ EMSCRIPTEN_BINDINGS(wingspline_curves) {
     emscripten::function("bezierSubdivisionMatrices", &bezier_subdivision_matrix_pair);
     emscripten::function("bezierElevate", &bezier_elevate);
     emscripten::function("basisConvert", &basis_convert);
+    emscripten::function("bsplineDeBoor", &bspline_de_boor);
+    emscripten::function("bsplineInsertKnot", &bspline_insert_knot);
+    emscripten::function("bsplineToBezier", &bspline_to_bezier);
+    emscripten::function("bsplineKnotMultiplicities", &bspline_knot_multiplicities);
+    emscripten::function("nurbsPreset", &nurbs_preset);
+    emscripten::function("curveCurvature", &curve_curvature);
+    emscripten::function("curveArcLength", &curve_arc_length);
+    emscripten::function("curveArcLengthParams", &curve_arc_length_params);
+    emscripten::function("curveJointContinuity", &curve_joint_continuity);
+    emscripten::function("patchSample", &patch_sample);
+    emscripten::function("interpolationSystem", &interpolation_system);
 }

@@ -49,7 +49,7 @@ TEST_CASE("knot vector errors", "[curves][errors]") {
     expect_error([&] { validate(c); }, "empty-domain", "[2, 2]");
 }
 
-TEST_CASE("weight, degree and point count errors", "[curves][errors]") {
+TEST_CASE("weight and degree and point count errors", "[curves][errors]") {
     Curve c = clamped_with_double_knot();
     c.kind = CurveKind::Nurbs;
     c.weights = {1, 1, 1, -2, 1, 1, 1, 1};
@@ -86,7 +86,7 @@ TEST_CASE("non-finite inputs name the point and the component", "[curves][errors
     expect_error([&] { de_casteljau(b.points, 2, kNaN); }, "non-finite-input", "t is");
 }
 
-TEST_CASE("parameters outside the domain are refused, rounding is tolerated", "[curves][errors]") {
+TEST_CASE("parameters outside the domain are refused - rounding is tolerated", "[curves][errors]") {
     const Curve c = clamped_with_double_knot();
     expect_error([&] { evaluate_curve(c, {0, 5.001}); }, "parameter-out-of-range", "parameter 1 is u = 5.001, outside the domain [0, 5]");
     expect_error([&] { evaluate_curve(c, {-1e-6}); }, "parameter-out-of-range", "[0, 5]");

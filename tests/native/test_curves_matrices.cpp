@@ -25,7 +25,7 @@ void check_equal(const std::vector<double>& a, const Mat4& b, double tol = kExac
 }
 } // namespace
 
-TEST_CASE("the four slide matrices of lecture 003, entry for entry", "[curves][matrices]") {
+TEST_CASE("the four slide matrices of lecture 003 - entry for entry", "[curves][matrices]") {
     check_equal(basis_matrix(BasisKind::Hermite), slide_hermite(), 0);
     check_equal(basis_matrix(BasisKind::Bezier), slide_bezier(), 0);
     check_equal(basis_matrix(BasisKind::BSpline), scaled(slide_bspline_times6(), 1.0 / 6));
@@ -59,7 +59,7 @@ TEST_CASE("lecture 002's derivations give lecture 003's matrices", "[curves][mat
     check_equal(reversed, basis_matrix(BasisKind::CatmullRom));
 }
 
-TEST_CASE("cardinal spline: tension 0 is Catmull-Rom, tension 1 gives zero tangents", "[curves][matrices]") {
+TEST_CASE("cardinal spline: tension 0 is Catmull-Rom - tension 1 gives zero tangents", "[curves][matrices]") {
     check_equal(cardinal_matrix(0.0), basis_matrix(BasisKind::CatmullRom));
     // tension 1: s = 0, the segment is the Hermite curve from P_i to P_i+1 with zero tangents.
     const Mat4 m = cardinal_matrix(1.0);
@@ -82,7 +82,7 @@ TEST_CASE("the Bernstein power matrix of degree 3 is the slide's M_Bezier", "[cu
     for (int i = 0; i < 9; ++i) CHECK(m2[i] == expected[i]);
 }
 
-TEST_CASE("segment matrices: M is the slide's and [u^3 u^2 u 1] C is the curve", "[curves][matrices][segment]") {
+TEST_CASE("segment matrices: M is the slide's and u^T C is the curve", "[curves][matrices][segment]") {
     struct Case {
         const char* name;
         Curve curve;

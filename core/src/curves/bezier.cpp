@@ -4,6 +4,7 @@
 #include "wingspline/curves/curve.h"
 #include "wingspline/error.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace wingspline::curves {

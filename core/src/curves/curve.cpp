@@ -92,19 +92,19 @@ void validate_knots(const Curve& c, int K, int p) {
                 " control points needs K + p + 1 = " + std::to_string(expected) + " knots, not " +
                 std::to_string(c.knots.size()));
     for (std::size_t i = 0; i < c.knots.size(); ++i)
-        require(std::isfinite(c.knots[i]), "non-finite-input",
-                "knot t_" + std::to_string(i) + " is " + num(c.knots[i]) + ", not a finite number");
+        if (!std::isfinite(c.knots[i]))
+            throw Error("non-finite-input", "knot t_" + std::to_string(i) + " is " + num(c.knots[i]) + ", not a finite number");
     for (std::size_t i = 1; i < c.knots.size(); ++i)
-        require(c.knots[i] >= c.knots[i - 1], "decreasing-knots",
-                "knots must not decrease, but t_" + std::to_string(i - 1) + " = " + num(c.knots[i - 1]) +
-                    " > t_" + std::to_string(i) + " = " + num(c.knots[i]));
+        if (!(c.knots[i] >= c.knots[i - 1]))
+            throw Error("decreasing-knots", "knots must not decrease, but t_" + std::to_string(i - 1) + " = " +
+                                                num(c.knots[i - 1]) + " > t_" + std::to_string(i) + " = " + num(c.knots[i]));
     for (std::size_t i = 0; i < c.knots.size();) {
         std::size_t j = i;
         while (j < c.knots.size() && c.knots[j] == c.knots[i]) ++j;
-        require(static_cast<int>(j - i) <= p + 1, "knot-multiplicity-exceeded",
-                "knot " + num(c.knots[i]) + " appears " + std::to_string(j - i) +
-                    " times; a degree-" + std::to_string(p) + " B-spline allows at most p + 1 = " +
-                    std::to_string(p + 1));
+        if (static_cast<int>(j - i) > p + 1)
+            throw Error("knot-multiplicity-exceeded", "knot " + num(c.knots[i]) + " appears " + std::to_string(j - i) +
+                                                          " times; a degree-" + std::to_string(p) +
+                                                          " B-spline allows at most p + 1 = " + std::to_string(p + 1));
         i = j;
     }
     require(c.knots[p] < c.knots[K], "empty-domain",
@@ -116,9 +116,9 @@ void validate_weights(const Curve& c, int K) {
             "there are " + std::to_string(K) + " control points but " + std::to_string(c.weights.size()) +
                 " weights; give one weight per point");
     for (int i = 0; i < K; ++i)
-        require(std::isfinite(c.weights[i]) && c.weights[i] > 0, "invalid-weight",
-                "weight w_" + std::to_string(i) + " of point " + std::to_string(i) + " is " + num(c.weights[i]) +
-                    "; weights must be positive finite numbers");
+        if (!(std::isfinite(c.weights[i]) && c.weights[i] > 0))
+            throw Error("invalid-weight", "weight w_" + std::to_string(i) + " of point " + std::to_string(i) + " is " +
+                                              num(c.weights[i]) + "; weights must be positive finite numbers");
 }
 
 } // namespace
@@ -187,12 +187,14 @@ void validate(const Curve& c) {
                     std::to_string(K) + " points need " + std::to_string(K) + " parameter values u_i, not " +
                         std::to_string(c.nodes.size()));
             for (std::size_t i = 0; i < c.nodes.size(); ++i)
-                require(std::isfinite(c.nodes[i]), "non-finite-input",
-                        "parameter u_" + std::to_string(i) + " is " + num(c.nodes[i]) + ", not a finite number");
+                if (!std::isfinite(c.nodes[i]))
+                    throw Error("non-finite-input", "parameter u_" + std::to_string(i) + " is " + num(c.nodes[i]) +
+                                                        ", not a finite number");
             for (std::size_t i = 1; i < c.nodes.size(); ++i)
-                require(c.nodes[i] > c.nodes[i - 1], "nodes-not-increasing",
-                        "the parameters u_i must increase strictly, but u_" + std::to_string(i - 1) + " = " +
-                            num(c.nodes[i - 1]) + " >= u_" + std::to_string(i) + " = " + num(c.nodes[i]));
+                if (!(c.nodes[i] > c.nodes[i - 1]))
+                    throw Error("nodes-not-increasing", "the parameters u_i must increase strictly, but u_" +
+                                                            std::to_string(i - 1) + " = " + num(c.nodes[i - 1]) + " >= u_" +
+                                                            std::to_string(i) + " = " + num(c.nodes[i]));
         }
         break;
     }
@@ -227,6 +229,19 @@ CurveEvaluator::CurveEvaluator(const Curve& curve) : curve_(curve) {
         last_span_ = K - 1;
         while (knots_[last_span_] == knots_[last_span_ + 1]) --last_span_;
         domain_ = {knots_[p], knots_[K]};
+        if (p == 3) {
+            inverse_differences_.assign(static_cast<std::size_t>(kCubicStride) * (K + 1), 0.0);
+            for (int l = first_span_; l <= last_span_; ++l) {
+                if (!(knots_[l] < knots_[l + 1])) continue;
+                double* inv = &inverse_differences_[static_cast<std::size_t>(kCubicStride) * l];
+                // Cox-de Boor step j, term r: 1 / (t_(l+r+1) - t_(l+1-j+r)), j = 1..3, r < j
+                int q = 0;
+                for (int j = 1; j <= 3; ++j)
+                    for (int r = 0; r < j; ++r) inv[q++] = 1.0 / (knots_[l + r + 1] - knots_[l + 1 - j + r]);
+                // first derivative: 1 / (t_(l+r) - t_(l-3+r)), r = 1..3
+                for (int r = 1; r <= 3; ++r) inv[q++] = 1.0 / (knots_[l + r] - knots_[l - 3 + r]);
+            }
+        }
         break;
     }
     case CurveKind::Hermite:
@@ -277,20 +292,25 @@ CurveEvaluator::CurveEvaluator(const Curve& curve) : curve_(curve) {
 
 std::vector<double> CurveEvaluator::checked_params(const double* params, std::size_t n) const {
     std::vector<double> out(params, params + n);
+    check_params(out.data(), n);
+    return out;
+}
+
+void CurveEvaluator::check_params(double* out, std::size_t n, std::size_t index_offset) const {
     const double slack = kParameterSlack * std::max({1.0, std::abs(domain_.start), std::abs(domain_.end)});
     for (std::size_t j = 0; j < n; ++j) {
         const double u = out[j];
-        require(std::isfinite(u), "non-finite-input",
-                "parameter " + std::to_string(j) + " is " + num(u) + ", not a finite number");
-        if (u < domain_.start || u > domain_.end) {
-            require(u >= domain_.start - slack && u <= domain_.end + slack, "parameter-out-of-range",
-                    "parameter " + std::to_string(j) + " is u = " + num(u) + ", outside the domain " +
-                        range(domain_.start, domain_.end) + " of this " + curve_kind_name(curve_.kind) +
-                        " curve");
-            out[j] = std::clamp(u, domain_.start, domain_.end);
-        }
+        if (u >= domain_.start && u <= domain_.end) continue;
+        // (messages are built only on failure: this loop runs once per parameter)
+        if (!std::isfinite(u))
+            throw Error("non-finite-input",
+                        "parameter " + std::to_string(j + index_offset) + " is " + num(u) + ", not a finite number");
+        if (!(u >= domain_.start - slack && u <= domain_.end + slack))
+            throw Error("parameter-out-of-range",
+                        "parameter " + std::to_string(j + index_offset) + " is u = " + num(u) + ", outside the domain " +
+                            range(domain_.start, domain_.end) + " of this " + curve_kind_name(curve_.kind) + " curve");
+        out[j] = std::clamp(u, domain_.start, domain_.end);
     }
-    return out;
 }
 
 void CurveEvaluator::evaluate(const double* params, std::size_t n, int order, double* out) const {
@@ -337,6 +357,66 @@ void CurveEvaluator::evaluate_polynomial(const double* params, std::size_t n, in
 
 namespace {
 
+// Per span of a cubic: 6 reciprocals for the Cox-de Boor triangle, 3 for the derivative
+// (CurveEvaluator::kCubicStride, the layout the constructor fills).
+constexpr int kReciprocalsPerSpan = 9;
+
+// The cubic Cox-de Boor triangle with the span's reciprocal knot differences (no division):
+// the same arithmetic as basis_functions_fixed<3> with a/b replaced by a*(1/b).
+inline void cubic_basis(int span, double u, const double* t, const double* inv, double* N) {
+    const double left1 = u - t[span], left2 = u - t[span - 1], left3 = u - t[span - 2];
+    const double right1 = t[span + 1] - u, right2 = t[span + 2] - u, right3 = t[span + 3] - u;
+    // j = 1
+    double temp = inv[0];
+    const double n10 = right1 * temp, n11 = left1 * temp;
+    // j = 2
+    temp = n10 * inv[1];
+    const double n20 = right1 * temp;
+    double saved = left2 * temp;
+    temp = n11 * inv[2];
+    const double n21 = saved + right2 * temp;
+    const double n22 = left1 * temp;
+    // j = 3
+    temp = n20 * inv[3];
+    N[0] = right1 * temp;
+    saved = left3 * temp;
+    temp = n21 * inv[4];
+    N[1] = saved + right2 * temp;
+    saved = left2 * temp;
+    temp = n22 * inv[5];
+    N[2] = saved + right3 * temp;
+    N[3] = left1 * temp;
+}
+
+// The same plus the first derivatives from the degree-2 functions n20, n21, n22.
+inline void cubic_basis_d1(int span, double u, const double* t, const double* inv, double* N, double* dN) {
+    const double left1 = u - t[span], left2 = u - t[span - 1], left3 = u - t[span - 2];
+    const double right1 = t[span + 1] - u, right2 = t[span + 2] - u, right3 = t[span + 3] - u;
+    double temp = inv[0];
+    const double n10 = right1 * temp, n11 = left1 * temp;
+    temp = n10 * inv[1];
+    const double n20 = right1 * temp;
+    double saved = left2 * temp;
+    temp = n11 * inv[2];
+    const double n21 = saved + right2 * temp;
+    const double n22 = left1 * temp;
+    // N'_i,3 = 3 (N_i,2 / (t_i+3 - t_i) - N_i+1,2 / (t_i+4 - t_i+1))
+    const double a1 = n20 * inv[6], a2 = n21 * inv[7], a3 = n22 * inv[8];
+    dN[0] = -3 * a1;
+    dN[1] = 3 * (a1 - a2);
+    dN[2] = 3 * (a2 - a3);
+    dN[3] = 3 * a3;
+    temp = n20 * inv[3];
+    N[0] = right1 * temp;
+    saved = left3 * temp;
+    temp = n21 * inv[4];
+    N[1] = saved + right2 * temp;
+    saved = left2 * temp;
+    temp = n22 * inv[5];
+    N[2] = saved + right3 * temp;
+    N[3] = left1 * temp;
+}
+
 // Keeps `span` on the span of u: params that increase are found by a short forward walk,
 // anything else by binary search (so any order of params gives exact results).
 inline int track_span(const double* t, int first, int last, int span, double u) {
@@ -372,14 +452,15 @@ void spline_points_fixed(const double* t, const double* cw, int hd, bool rationa
 }
 
 template <int P, int D>
-void spline_points_fixed_dim(const double* t, const double* cw, int first, int last, const double* params,
-                             std::size_t n, double* out) {
+void spline_points_fixed_dim(const double* t, const double* cw, const double* inverse_differences, int first,
+                             int last, const double* params, std::size_t n, double* out) {
+    static_assert(P == 3, "the reciprocal table exists for cubics");
     int span = first;
     double N[P + 1];
     for (std::size_t j = 0; j < n; ++j) {
         const double u = params[j];
         span = track_span(t, first, last, span, u);
-        basis_functions_fixed<P>(span, u, t, N);
+        cubic_basis(span, u, t, inverse_differences + kReciprocalsPerSpan * span, N);
         const double* c = cw + static_cast<std::size_t>(span - P) * D;
         double acc[D];
         for (int k = 0; k < D; ++k) acc[k] = N[0] * c[k];
@@ -394,6 +475,61 @@ void spline_points_fixed_dim(const double* t, const double* cw, int first, int l
         } else {
             for (int k = 0; k < D; ++k) dst[k] = acc[k];
         }
+    }
+}
+
+// Point and first derivative (the d1 benchmarks and every tangent plot): out holds either
+// [P, P'] (all) or P' only, per parameter.
+template <int P, int HD>
+void spline_d1_fixed(const double* t, const double* cw, const double* inverse_differences, bool rational, int first,
+                     int last, const double* params, std::size_t n, bool all, double* out) {
+    static_assert(P == 3, "the reciprocal table exists for cubics");
+    constexpr int D = HD; // when rational, the caller passes HD = dim + 1
+    const int d = rational ? D - 1 : D;
+    int span = first;
+    double N[P + 1], dN[P + 1];
+    for (std::size_t j = 0; j < n; ++j) {
+        const double u = params[j];
+        span = track_span(t, first, last, span, u);
+        cubic_basis_d1(span, u, t, inverse_differences + kReciprocalsPerSpan * span, N, dN);
+        const double* c = cw + static_cast<std::size_t>(span - P) * HD;
+        double A[HD], dA[HD];
+        for (int k = 0; k < HD; ++k) {
+            A[k] = N[0] * c[k];
+            dA[k] = dN[0] * c[k];
+        }
+        for (int r = 1; r <= P; ++r)
+            for (int k = 0; k < HD; ++k) {
+                A[k] += N[r] * c[r * HD + k];
+                dA[k] += dN[r] * c[r * HD + k];
+            }
+        double* dst = out + j * (all ? 2 * d : d);
+        double* ddst = all ? dst + d : dst;
+        if (rational) {
+            // C = A / w, C' = (A' - w' C) / w (The NURBS Book, eq. 4.8)
+            const double inv = 1.0 / A[d];
+            for (int k = 0; k < d; ++k) {
+                const double point = A[k] * inv;
+                if (all) dst[k] = point;
+                ddst[k] = (dA[k] - dA[d] * point) * inv;
+            }
+        } else {
+            for (int k = 0; k < d; ++k) {
+                if (all) dst[k] = A[k];
+                ddst[k] = dA[k];
+            }
+        }
+    }
+}
+
+// The cubic Bezier curve in Bernstein form (lecture 001: (1-t)^3 P1 + 3t(1-t)^2 P2 +
+// 3t^2(1-t) P3 + t^3 P4), 3D, no weights: the Bezier benchmark's path.
+void bezier_cubic_points(const double* P, const double* params, std::size_t n, double* out) {
+    for (std::size_t j = 0; j < n; ++j) {
+        const double t = params[j];
+        const double s = 1.0 - t;
+        const double b0 = s * s * s, b1 = 3.0 * t * s * s, b2 = 3.0 * t * t * s, b3 = t * t * t;
+        for (int k = 0; k < 3; ++k) out[3 * j + k] = b0 * P[k] + b1 * P[3 + k] + b2 * P[6 + k] + b3 * P[9 + k];
     }
 }
 
@@ -414,12 +550,23 @@ void CurveEvaluator::evaluate_spline(const double* params, std::size_t n, int ma
     const double* cw = homogeneous_.data();
     if (max_order == 0) {
         // The hot path of the benchmarks: points only.
-        if (p == 3 && d == 3 && !rational_) return spline_points_fixed_dim<3, 3>(t, cw, first_span_, last_span_, params, n, out);
-        if (p == 3 && d == 3 && rational_) return spline_points_fixed_dim<3, 4>(t, cw, first_span_, last_span_, params, n, out);
-        if (p == 3 && d == 2 && !rational_) return spline_points_fixed_dim<3, 2>(t, cw, first_span_, last_span_, params, n, out);
+        const double* inv = inverse_differences_.data();
+        if (p == 3 && d == 3 && !rational_) {
+            if (curve_.kind == CurveKind::Bezier) return bezier_cubic_points(cw, params, n, out);
+            return spline_points_fixed_dim<3, 3>(t, cw, inv, first_span_, last_span_, params, n, out);
+        }
+        if (p == 3 && d == 3 && rational_) return spline_points_fixed_dim<3, 4>(t, cw, inv, first_span_, last_span_, params, n, out);
+        if (p == 3 && d == 2 && !rational_) return spline_points_fixed_dim<3, 2>(t, cw, inv, first_span_, last_span_, params, n, out);
         if (p == 3) return spline_points_fixed<3>(t, cw, hd, rational_, d, first_span_, last_span_, params, n, out);
         if (p == 2) return spline_points_fixed<2>(t, cw, hd, rational_, d, first_span_, last_span_, params, n, out);
         if (p == 1) return spline_points_fixed<1>(t, cw, hd, rational_, d, first_span_, last_span_, params, n, out);
+    }
+    if (max_order == 1 && p == 3) {
+        const double* inv = inverse_differences_.data();
+        if (d == 3 && !rational_) return spline_d1_fixed<3, 3>(t, cw, inv, false, first_span_, last_span_, params, n, all, out);
+        if (d == 3 && rational_) return spline_d1_fixed<3, 4>(t, cw, inv, true, first_span_, last_span_, params, n, all, out);
+        if (d == 2 && !rational_) return spline_d1_fixed<3, 2>(t, cw, inv, false, first_span_, last_span_, params, n, all, out);
+        if (d == 2 && rational_) return spline_d1_fixed<3, 3>(t, cw, inv, true, first_span_, last_span_, params, n, all, out);
     }
     const int first_order = all ? 0 : max_order;
     const int orders = max_order - first_order + 1;

@@ -5,6 +5,7 @@
 #include "wingspline/curves/linear_algebra.h"
 #include "wingspline/error.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace wingspline::curves {

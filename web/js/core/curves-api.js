@@ -91,6 +91,18 @@ function transpose(m, n) {
 }
 
 export function createCurvesApi(raw) {
+  function evaluate(curve, params, order, all, out) {
+    const spec = normalizeCurve(curve);
+    const u = numbers(params, 'params');
+    if (out !== undefined) {
+      const expected = u.length * spec.dim * (all ? order + 1 : 1);
+      if (!(out instanceof Float64Array) || out.length !== expected) {
+        fail('invalid-argument', `options.out must be a Float64Array of length ${expected}`);
+      }
+    }
+    return unwrap(raw.curveEvaluate(spec, u, order, all, out)).values;
+  }
+
   const api = {
     // The row-major 4x4 basis matrix M of P(u) = [u^3 u^2 u 1] M G (lectures 000, 003);
     // lecture 001's Q(t) = G M T uses its transpose (segmentMatrices gives both).
@@ -109,20 +121,19 @@ export function createCurvesApi(raw) {
     },
 
     // Points of the curve: Float64Array, values[dim*j + k] for params[j].
-    evaluateCurve(curve, params) {
-      const spec = normalizeCurve(curve);
-      return unwrap(raw.curveEvaluate(spec, numbers(params, 'params'), 0, false)).values;
+    // options.out: a Float64Array of length dim * params.length to fill instead of
+    // allocating a new one (a lesson redrawing on every pointer move reuses its buffer).
+    evaluateCurve(curve, params, { out } = {}) {
+      return evaluate(curve, params, 0, false, out);
     },
-    // The derivative of `order` (1 = tangent vector P'(u), 2 = P''(u)); same layout.
-    evaluateDerivative(curve, params, order = 1) {
-      const spec = normalizeCurve(curve);
-      return unwrap(raw.curveEvaluate(spec, numbers(params, 'params'), derivativeOrder(order), false)).values;
+    // The derivative of `order` (1 = tangent vector P'(u), 2 = P''(u)); same layout and options.
+    evaluateDerivative(curve, params, order = 1, { out } = {}) {
+      return evaluate(curve, params, derivativeOrder(order), false, out);
     },
     // Point and derivatives 1..maxOrder in one pass:
     // values[(maxOrder+1)*dim*j + dim*k + c] is component c of the k-th derivative at params[j].
-    evaluateWithDerivatives(curve, params, maxOrder = 1) {
-      const spec = normalizeCurve(curve);
-      return unwrap(raw.curveEvaluate(spec, numbers(params, 'params'), derivativeOrder(maxOrder), true)).values;
+    evaluateWithDerivatives(curve, params, maxOrder = 1, { out } = {}) {
+      return evaluate(curve, params, derivativeOrder(maxOrder), true, out);
     },
     // { start, end, degree, controlPointCount, segmentCount }
     curveDomain(curve) {
@@ -138,7 +149,7 @@ export function createCurvesApi(raw) {
       const params = new Float64Array(n);
       for (let j = 0; j < n; j += 1) params[j] = d.start + ((d.end - d.start) * j) / (n - 1);
       params[n - 1] = d.end;
-      return { params, points: unwrap(raw.curveEvaluate(spec, params, 0, false)).values };
+      return { params, points: unwrap(raw.curveEvaluate(spec, params, 0, false, undefined)).values };
     },
     // Blending functions (B = M T of lecture 001; Cox-de Boor N_i,p; NURBS R_i,p) of every
     // control item at every param: values[count*j + i]. Hermite: count = 2K, items 0..K-1
@@ -212,6 +223,142 @@ export function createCurvesApi(raw) {
     convertBasis(points, dim, fromKind, toKind) {
       return unwrap(raw.basisConvert(numbers(points, 'points'), dimension(dim), cubicBasis(fromKind, 'fromKind'),
         cubicBasis(toKind, 'toKind'))).points;
+    },
+
+    // ---- B-splines and NURBS (bezier and uniform B-splines are taken with their implicit knots)
+    // de Boor with every intermediate point: levels[r] holds p+1-r points (dim each); entry j
+    // of level r is d_(firstIndex+r+j); levels[p] is the point. alphas[r-1][j] is the
+    // interpolation factor of that entry. { span, degree, firstIndex, levels, alphas, point, levelWeights? }
+    deBoor(curve, u) {
+      const spec = normalizeCurve(curve);
+      const r = unwrap(raw.bsplineDeBoor(spec, finiteNumber(u, 'u')));
+      const levels = Array.from(r.levels);
+      const out = { span: r.span, degree: r.degree, firstIndex: r.firstIndex, levels, alphas: Array.from(r.alphas), point: levels[levels.length - 1] };
+      if (spec.kind === 'nurbs' || (spec.kind === 'bezier' && spec.weights.length > 0)) out.levelWeights = Array.from(r.levelWeights);
+      return out;
+    },
+    // Boehm's insertion of one knot u: { curve (same curve, one more point and knot), span,
+    // insertedIndex (of u in the new knots), recomputed (indices i = span-p+1..span with
+    // Q_i = a_i P_i + (1-a_i) P_i-1), alphas (a_i), newPoints (the i with 0 < a_i < 1) }.
+    insertKnot(curve, u) {
+      const r = unwrap(raw.bsplineInsertKnot(normalizeCurve(curve), finiteNumber(u, 'u')));
+      return { curve: r.curve, span: r.span, insertedIndex: r.insertedIndex, recomputed: r.recomputed, alphas: r.alphas, newPoints: r.newPoints };
+    },
+    // Every non-empty span as a Bezier curve of degree p: [{ points, weights?, start, end }].
+    bsplineToBezier(curve) {
+      return Array.from(unwrap(raw.bsplineToBezier(normalizeCurve(curve))).segments);
+    },
+    // Distinct knot values: { values, multiplicities, firstIndices, interior (1 = a joint
+    // inside the domain), continuity (C^(p-m) at that knot; -1: the curve may jump) }.
+    knotMultiplicities(curve) {
+      const r = unwrap(raw.bsplineKnotMultiplicities(normalizeCurve(curve)));
+      return { values: r.values, multiplicities: r.multiplicities, firstIndices: r.firstIndices, interior: r.interior, continuity: r.continuity };
+    },
+    // Exact conics as NURBS curves (degree 2), ready for evaluateCurve.
+    nurbsCircle({ center = [0, 0], radius = 1, dim = center.length } = {}) {
+      return unwrap(raw.nurbsPreset('circle', numbers(center, 'center'), EMPTY, EMPTY, dimension(dim), Float64Array.of(finiteNumber(radius, 'radius')))).curve;
+    },
+    nurbsArc({ center = [0, 0], radius = 1, startAngle = 0, endAngle = Math.PI / 2, dim = center.length } = {}) {
+      return unwrap(raw.nurbsPreset('arc', numbers(center, 'center'), EMPTY, EMPTY, dimension(dim),
+        Float64Array.of(finiteNumber(radius, 'radius'), finiteNumber(startAngle, 'startAngle'), finiteNumber(endAngle, 'endAngle')))).curve;
+    },
+    nurbsEllipse({ center = [0, 0], rx = 2, ry = 1, dim = center.length } = {}) {
+      return unwrap(raw.nurbsPreset('ellipse', numbers(center, 'center'), EMPTY, EMPTY, dimension(dim),
+        Float64Array.of(finiteNumber(rx, 'rx'), finiteNumber(ry, 'ry')))).curve;
+    },
+    // The conic arc from p0 to p2 with tangents towards p1 and middle weight w:
+    // { curve, conicType: 'ellipse' (w < 1) | 'parabola' (w = 1) | 'hyperbola' (w > 1) }.
+    nurbsConic({ p0, p1, p2, weight = Math.SQRT1_2, dim = p0?.length } = {}) {
+      const r = unwrap(raw.nurbsPreset('conic', numbers(p0, 'p0'), numbers(p1, 'p1'), numbers(p2, 'p2'), dimension(dim),
+        Float64Array.of(finiteNumber(weight, 'weight'))));
+      return { curve: r.curve, conicType: r.conicType };
+    },
+
+    // ---- differential geometry
+    // { curvature, signedCurvature (dim 2 only, else empty), speed |P'|, tangent (unit,
+    // dim per param), singular (Uint8Array, 1 where P' = 0: tangent and curvature reported as 0) }
+    curvature(curve, params) {
+      const r = unwrap(raw.curveCurvature(normalizeCurve(curve), numbers(params, 'params')));
+      return { curvature: r.curvature, signedCurvature: r.signedCurvature, speed: r.speed, tangent: r.tangent, singular: r.singular };
+    },
+    // Length between parameters a <= b (default: the whole domain), Gauss-Legendre.
+    arcLength(curve, a = undefined, b = undefined) {
+      const spec = normalizeCurve(curve);
+      let start = a;
+      let end = b;
+      if (start === undefined || end === undefined) {
+        const d = unwrap(raw.curveDomain(spec));
+        if (start === undefined) start = d.start;
+        if (end === undefined) end = d.end;
+      }
+      return unwrap(raw.curveArcLength(spec, finiteNumber(start, 'a'), finiteNumber(end, 'b'))).length;
+    },
+    // n parameters with equal arc length between neighbours: { params, lengths, total }.
+    arcLengthParams(curve, n = 50) {
+      wholeNumber(n, 'the number of parameters', 2, MAX_SAMPLES);
+      const r = unwrap(raw.curveArcLengthParams(normalizeCurve(curve), n));
+      return { params: r.params, lengths: r.lengths, total: r.total };
+    },
+    // Continuity where curve a ends and curve b starts: { parametric: k, geometric: k
+    // (k = -1..2), evidence: { tolerance, a, b ([P, P', P''] at the joint, dim each),
+    // positionGap, d1Gap, d2Gap, ratio |b'|/|a'|, tangentAngle, curvatureA, curvatureB,
+    // curvatureVectorGap, zeroTangent, notes } }. Equal means |x - y| <= tolerance * max(1, |x|, |y|).
+    jointContinuity(a, b, { tolerance = 1e-9 } = {}) {
+      const r = unwrap(raw.curveJointContinuity(normalizeCurve(a, 'a'), normalizeCurve(b, 'b'), finiteNumber(tolerance, 'tolerance')));
+      const e = r.evidence;
+      return {
+        parametric: r.parametric,
+        geometric: r.geometric,
+        evidence: {
+          tolerance: e.tolerance, a: e.a, b: e.b, positionGap: e.positionGap, d1Gap: e.d1Gap, d2Gap: e.d2Gap,
+          ratio: e.ratio, tangentAngle: e.tangentAngle, curvatureA: e.curvatureA, curvatureB: e.curvatureB,
+          curvatureVectorGap: e.curvatureVectorGap, zeroTangent: e.zeroTangent, notes: Array.from(e.notes),
+        },
+      };
+    },
+
+    // ---- polynomial interpolation (lecture 000): the curve through the points, and its
+    // Vandermonde system: { curve, nodes, vandermonde (V, rows u_i^n .. 1), inverse (V^-1),
+    // coefficients (C = V^-1 P: row r holds a_(n-r), dim numbers) }.
+    interpolatePolynomial(points, dim, nodes = undefined) {
+      const curve = { kind: 'interpolation', dim: dimension(dim), points: numbers(points, 'points') };
+      if (nodes !== undefined && nodes !== null) curve.nodes = numbers(nodes, 'nodes');
+      const r = unwrap(raw.interpolationSystem(normalizeCurve(curve)));
+      return { curve: { ...curve, nodes: r.nodes }, nodes: r.nodes, vandermonde: r.vandermonde, inverse: r.inverse, coefficients: r.coefficients };
+    },
+
+    // ---- bicubic patches (lecture 002): p(u,v) = u^T M P M^T v, kind 'hermite' | 'bezier';
+    // points: the 4x4 geometry matrix of 3D vectors, points[3*(4*i + j) + k] (see
+    // docs/api-curves.md for the Hermite layout). Returns { nu, nv, positions, normals, du,
+    // dv (all [3*(nv*i + j) + k] at u = i/(nu-1), v = j/(nv-1)), twists (p_uv at the corners
+    // (0,0), (0,1), (1,0), (1,1): [3*c + k]) }.
+    samplePatch({ kind, points, nu = 16, nv = 16 } = {}) {
+      if (kind !== 'hermite' && kind !== 'bezier') fail('unknown-basis', `patch kind must be 'hermite' or 'bezier', not ${JSON.stringify(kind)?.slice(0, 40)}`);
+      wholeNumber(nu, 'nu', 2, 4096);
+      wholeNumber(nv, 'nv', 2, 4096);
+      const r = unwrap(raw.patchSample(kind, numbers(points, 'points'), nu, nv));
+      return { nu: r.nu, nv: r.nv, positions: r.positions, normals: r.normals, du: r.du, dv: r.dv, twists: r.twists };
+    },
+
+    // Affine map of flat points: matrix is (dim+1)x(dim+1) row-major homogeneous (last row
+    // 0 .. 0 1), e.g. for the affine-invariance demo. Returns a new Float64Array.
+    transformPoints(points, dim, matrix) {
+      const p = numbers(points, 'points');
+      const d = dimension(dim);
+      const m = numbers(matrix, 'matrix');
+      const n = d + 1;
+      if (m.length !== n * n) fail('invalid-argument', `matrix must have ${n * n} numbers ((dim+1) x (dim+1)), not ${m.length}`);
+      for (let i = 0; i < m.length; i += 1) if (!Number.isFinite(m[i])) fail('non-finite-input', `matrix entry ${i} is ${m[i]}, not a finite number`);
+      if (p.length % d !== 0) fail('invalid-points', `points has ${p.length} numbers, which is not a multiple of dim = ${d}`);
+      const out = new Float64Array(p.length);
+      for (let i = 0; i < p.length; i += d) {
+        for (let r = 0; r < d; r += 1) {
+          let s = m[r * n + d];
+          for (let c = 0; c < d; c += 1) s += m[r * n + c] * p[i + c];
+          out[i + r] = s;
+        }
+      }
+      return out;
     },
   };
   return api;

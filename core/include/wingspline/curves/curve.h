@@ -81,6 +81,9 @@ public:
     // rounding overshoots moved onto the domain ends. Throws 'non-finite-input' or
     // 'parameter-out-of-range' naming the index, the value and the domain.
     std::vector<double> checked_params(const double* params, std::size_t n) const;
+    // The same check in place (no copy): the batch path of the bindings, which works in
+    // chunks; index_offset is added to the parameter index named in a message.
+    void check_params(double* params, std::size_t n, std::size_t index_offset = 0) const;
 
     // out[dim*j + c]: the derivative of order `order` (0 = the point) at params[j].
     // params must come from checked_params.
@@ -107,6 +110,11 @@ private:
     std::vector<double> homogeneous_; // stride dim+1 when rational (w x, w y, w z, w), else dim
     int first_span_ = 0;
     int last_span_ = 0;
+    // Cubic fast path: per span l, the reciprocals of the knot differences the Cox-de Boor
+    // triangle divides by (they depend on the span only, not on u), so evaluation needs no
+    // division: inverse_differences_[kCubicStride*l + ...], see curve.cpp.
+    static constexpr int kCubicStride = 9;
+    std::vector<double> inverse_differences_;
     // polynomial form (hermite, catmull-rom, cardinal, interpolation)
     std::vector<std::vector<double>> segment_coefficients_;
     bool absolute_parameter_ = false; // interpolation: P(u) in the global u, not u - segment
