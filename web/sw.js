@@ -29,15 +29,17 @@ self.addEventListener('fetch', (event) => {
   const request = event.request;
   if (request.method !== 'GET' || !request.url.startsWith(base.href)) return;
   event.respondWith((async () => {
-    const cache = await caches.open(CACHE);
     // The URL fragment (share link) never reaches the server; the query is not used either.
-    const hit = await cache.match(request, { ignoreSearch: true });
+    // caches.match with cacheName never creates a cache: a worker that is being replaced
+    // must not bring back the old build's cache that the new worker just deleted.
+    const hit = await caches.match(request, { ignoreSearch: true, cacheName: CACHE })
+      ?? await caches.match(request, { ignoreSearch: true });
     if (hit) return hit;
     try {
       return await fetch(request);
     } catch (err) {
       if (request.mode === 'navigate') {
-        const page = await cache.match(new URL('index.html', base));
+        const page = await caches.match(new URL('index.html', base), { cacheName: CACHE });
         if (page) return page;
       }
       throw err;

@@ -21,8 +21,20 @@ const types = {
   '.webmanifest': 'application/manifest+json',
 };
 
-export function createStaticServer(root) {
-  const rootDir = path.resolve(root);
+// Options (for the tests): `prefix` serves the site under a sub-path ('/some/sub/path/')
+// and answers 404 elsewhere, like a static host's project folder; `overlays` are folders
+// looked in before `root` (test fixtures that must never be part of dist/).
+export function createStaticServer(root, { prefix = '/', overlays = [] } = {}) {
+  const roots = [...overlays, root].map((dir) => path.resolve(dir));
+  function locate(pathname) {
+    for (const dir of roots) {
+      let file = path.resolve(dir, '.' + pathname);
+      if (file !== dir && !file.startsWith(dir + path.sep)) return { forbidden: true };
+      if (fs.existsSync(file) && fs.statSync(file).isDirectory()) file = path.join(file, 'index.html');
+      if (fs.existsSync(file)) return { file };
+    }
+    return { file: null };
+  }
   return http.createServer((req, res) => {
     let pathname;
     try {
@@ -31,13 +43,16 @@ export function createStaticServer(root) {
       res.writeHead(400).end('bad request');
       return;
     }
-    let file = path.resolve(rootDir, '.' + pathname);
-    if (file !== rootDir && !file.startsWith(rootDir + path.sep)) {
+    if (!pathname.startsWith(prefix)) {
+      res.writeHead(404, { 'content-type': 'text/plain; charset=utf-8' }).end('not found');
+      return;
+    }
+    const { file, forbidden } = locate('/' + pathname.slice(prefix.length));
+    if (forbidden) {
       res.writeHead(403).end('forbidden');
       return;
     }
-    if (fs.existsSync(file) && fs.statSync(file).isDirectory()) file = path.join(file, 'index.html');
-    fs.readFile(file, (err, body) => {
+    fs.readFile(file ?? '', (err, body) => {
       if (err) {
         res.writeHead(404, { 'content-type': 'text/plain; charset=utf-8' }).end('not found');
         return;

@@ -12,9 +12,15 @@ export const resultsDir = path.join(repoRoot, 'test-results');
 export const chromiumArgs = ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
   '--disable-background-networking', '--disable-component-update', '--disable-sync'];
 
-export async function startSite() {
-  const { server, url } = await listen(createStaticServer(path.join(repoRoot, 'dist')));
-  return { url, close: () => new Promise((resolve) => server.close(resolve)) };
+// Options as createStaticServer: { root (default dist/), prefix, overlays }.
+export async function startSite({ root = path.join(repoRoot, 'dist'), ...options } = {}) {
+  const { server, url } = await listen(createStaticServer(root, options));
+  const base = new URL((options.prefix ?? '/').slice(1), url).href;
+  return {
+    url: base,
+    origin: url,
+    close: () => new Promise((resolve) => { server.closeAllConnections?.(); server.close(resolve); }),
+  };
 }
 
 export async function launchBrowser() {

@@ -5,6 +5,7 @@
 export function createKeymap() {
   const bindings = [];
   let dialog = null;
+  let opener = null;
 
   function describeKey(k) {
     return k.replace('ArrowRight', '→').replace('ArrowLeft', '←').replace('ArrowUp', '↑').replace('ArrowDown', '↓')
@@ -19,6 +20,8 @@ export function createKeymap() {
       if (want.has('Ctrl') !== (event.ctrlKey || event.metaKey)) return false;
       if (want.has('Shift') && !event.shiftKey) return false;
       if (want.has('Alt') !== event.altKey) return false;
+      // 'n' and 'Shift+n' are different keys (next / previous step); '?' needs no Shift+.
+      if (!want.has('Shift') && event.shiftKey && /^[a-z]$/i.test(key)) return false;
       return event.key === key || event.key.toLowerCase() === key.toLowerCase() && key.length === 1;
     });
   }
@@ -45,8 +48,14 @@ export function createKeymap() {
       dialog = document.createElement('dialog');
       dialog.className = 'keymap-dialog';
       dialog.setAttribute('aria-labelledby', 'keymap-title');
+      // Focus goes back to where it was (the canvas, a button) when the dialog closes.
+      dialog.addEventListener('close', () => {
+        if (opener?.isConnected) opener.focus({ preventScroll: true });
+        opener = null;
+      });
       document.body.append(dialog);
     }
+    if (!dialog.open) opener = document.activeElement instanceof HTMLElement ? document.activeElement : null;
     const groups = new Map();
     for (const b of bindings) {
       if (!b.label) continue;

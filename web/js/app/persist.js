@@ -1,8 +1,36 @@
 // Keeps a lesson's state in the page URL (#s=...) and in local storage, and restores it.
 // The URL is updated with replaceState, so the back button undoes navigation, not edits.
-import { encodeState, decodeState } from './share-link.js';
+// Writing is debounced (and compression is asynchronous), so an edit made just before a
+// reload is also written synchronously to session storage on pagehide, together with the
+// link it supersedes; a reload of that same link restores the newer state.
+import { encodeState, decodeState, envelope, readEnvelope, stringifyExact } from './share-link.js';
 
 const storageKey = (lesson) => `wingspline:${lesson.id}:state`;
+const pendingKey = (lesson) => `wingspline:${lesson.id}:pending`;
+
+function sessionStore() {
+  try {
+    return window.sessionStorage;
+  } catch {
+    return null;
+  }
+}
+
+// The state this tab had not yet written when it was last hidden, if it belongs to `code`.
+function takePending(lesson, code) {
+  const session = sessionStore();
+  const raw = session?.getItem(pendingKey(lesson));
+  if (!raw) return null;
+  session.removeItem(pendingKey(lesson));
+  try {
+    const record = JSON.parse(raw);
+    if (record?.fromCode !== code) return null;
+    const { state, problems } = readEnvelope(lesson, JSON.parse(record.json));
+    return problems.length ? null : state;
+  } catch {
+    return null;
+  }
+}
 
 function readHashCode() {
   const params = new URLSearchParams(window.location.hash.slice(1));
@@ -23,6 +51,8 @@ function safeStorage() {
 // Resolves to { state, source: 'link'|'storage'|'default', problem }.
 export async function restoreState(lesson) {
   const code = readHashCode();
+  const pending = takePending(lesson, code);
+  if (pending) return { state: pending, source: code === null ? 'storage' : 'link', problem: null };
   if (code !== null) {
     try {
       const { state, problems } = await decodeState(lesson, code);
@@ -51,14 +81,25 @@ export async function restoreState(lesson) {
 export function createPersister(lesson, { delayMs = 200 } = {}) {
   let timer = null;
   let pending = null;
-  let lastCode = null;
+  let lastCode = readHashCode();
   const storage = safeStorage();
+
+  // Synchronous last word before the page goes away (reload, navigation, tab closed).
+  function keepPending() {
+    if (!pending) return;
+    try {
+      sessionStore()?.setItem(pendingKey(lesson), JSON.stringify({ fromCode: readHashCode(), json: stringifyExact(envelope(lesson, pending)) }));
+    } catch {
+      // storage disabled or full: the debounced write is all there is
+    }
+  }
+  window.addEventListener('pagehide', keepPending);
 
   async function flush() {
     timer = null;
     const state = pending;
-    pending = null;
     const code = await encodeState(lesson, state);
+    if (pending === state) pending = null;
     if (code === lastCode) return;
     lastCode = code;
     const url = new URL(window.location.href);

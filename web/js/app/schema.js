@@ -83,8 +83,8 @@ export function validatePartial(shape, raw, defaults) {
     try {
       state[key] = check(raw[key], key);
     } catch (err) {
-      if (!(err instanceof SchemaError)) throw err;
-      problems.push(err.message);
+      // A validator that fails in an unforeseen way still only costs this one field.
+      problems.push(err instanceof SchemaError ? err.message : `${key} could not be checked`);
       state[key] = structuredClone(defaults[key]);
     }
   }

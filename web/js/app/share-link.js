@@ -33,8 +33,40 @@ export function envelope(lesson, state) {
   return { format: FORMAT, lesson: lesson.id, version: lesson.stateVersion, state };
 }
 
+// JSON text of a plain value, exact for every double: JSON.stringify already writes the
+// shortest text that reads back to the same double, except for -0, which it writes as "0";
+// JSON.parse("-0") is -0, so writing "-0" makes the round trip bit for bit. Non-finite
+// numbers have no JSON text and are refused (a state never holds them: the schema says so).
+export function stringifyExact(value, indent = 0) {
+  const pad = (depth) => (indent ? '\n' + ' '.repeat(indent * depth) : '');
+  const sep = indent ? ': ' : ':';
+  function write(v, depth) {
+    if (typeof v === 'number') {
+      if (!Number.isFinite(v)) throw new Error(`the state holds ${v}, which JSON cannot keep`);
+      return Object.is(v, -0) ? '-0' : JSON.stringify(v);
+    }
+    if (v === null || typeof v === 'string' || typeof v === 'boolean') return JSON.stringify(v);
+    if (Array.isArray(v)) {
+      if (v.length === 0) return '[]';
+      return `[${v.map((x) => pad(depth + 1) + write(x === undefined ? null : x, depth + 1)).join(',')}${pad(depth)}]`;
+    }
+    if (typeof v === 'object') {
+      const entries = Object.entries(v).filter(([, x]) => x !== undefined && typeof x !== 'function');
+      if (entries.length === 0) return '{}';
+      return `{${entries.map(([k, x]) => `${pad(depth + 1)}${JSON.stringify(k)}${sep}${write(x, depth + 1)}`).join(',')}${pad(depth)}}`;
+    }
+    throw new Error(`the state holds a ${typeof v}, which JSON cannot keep`);
+  }
+  return write(value, 0);
+}
+
+// The exported file (docs/state-format.md): the envelope, indented, newline-terminated.
+export function envelopeJson(lesson, state) {
+  return stringifyExact(envelope(lesson, state), 2) + '\n';
+}
+
 export async function encodeState(lesson, state) {
-  const json = JSON.stringify(envelope(lesson, state));
+  const json = stringifyExact(envelope(lesson, state));
   return toBase64Url(await pipe(new TextEncoder().encode(json), new CompressionStream('deflate-raw')));
 }
 
@@ -44,25 +76,36 @@ export function readEnvelope(lesson, data) {
   if (data === null || typeof data !== 'object' || Array.isArray(data)) throw new Error('it does not hold a lesson state');
   if (data.format !== FORMAT) throw new Error('it is not a Wingspline state');
   if (data.lesson !== lesson.id) {
-    throw new Error(`it belongs to the ${String(data.lesson).slice(0, 40)} lesson, not to ${lesson.title}`);
+    if (typeof data.lesson !== 'string' || !/^[a-z][a-z0-9-]{0,39}$/.test(data.lesson)) throw new Error(`it does not name a lesson, and this is ${lesson.title}`);
+    throw new Error(`it belongs to the ${data.lesson} lesson, not to ${lesson.title}`);
   }
   let { version, state } = data;
-  if (!Number.isInteger(version) || version < 1) throw new Error('its version number is missing or wrong');
+  if (!Number.isSafeInteger(version) || version < 1) throw new Error('its version number is missing or wrong');
   if (version > lesson.stateVersion) {
     throw new Error(`it was made by a newer Wingspline (state version ${version}; this page reads up to ${lesson.stateVersion})`);
   }
   // Older links keep working: apply each migration from their version up to ours.
   for (; version < lesson.stateVersion; version += 1) {
-    const migrate = lesson.migrations?.[version];
+    const migrate = Object.prototype.hasOwnProperty.call(lesson.migrations ?? {}, version) ? lesson.migrations[version] : null;
     if (!migrate) throw new Error(`state version ${version} can no longer be read`);
-    state = migrate(state);
+    try {
+      state = migrate(state);
+    } catch {
+      // A migration meets an old state of the wrong shape: nothing of it is trusted.
+      throw new Error(`its state (version ${version}) could not be upgraded to version ${version + 1}`);
+    }
   }
   const defaults = lesson.defaultState();
   const result = validatePartial(lesson.schema, state, defaults);
-  if (result.problems.length === 0 && lesson.checkState) {
+  if (lesson.checkState) {
     // Cross-field rules the per-field schema cannot express (knot count vs points...).
-    const problem = lesson.checkState(result.state);
-    if (problem) return { state: defaults, problems: [problem] };
+    let problem;
+    try {
+      problem = lesson.checkState(result.state);
+    } catch (err) {
+      problem = `its state breaks a rule of the lesson (${err.message})`;
+    }
+    if (problem) return { state: defaults, problems: [...result.problems, problem] };
   }
   return result;
 }

@@ -14,16 +14,25 @@
 //     fitView?(model, stage) -> view; click?(x, y, ctx) -> true if consumed
 //     exports?: [{ label, filename, type, make(model, state) }]
 //     importers?: { off(text, state, name) -> next state, ... }
+//     inspector?: false                 no shell inspector (the lesson has its own inputs)
 //   }
 //
 // ctx (what a lesson may use): api, state (getter), commit(next, opts), setView(view),
-// render(), message, keymap, ui {selected, hover, present}, stage, colors, panels, controls.
+// render(), message, keymap, ui {selected, hover, present}, stage, colors, panels, controls,
+// setPresenter({ next, prev, playPause, reset, toggleOverlays }) (all optional): binds the
+// presenter-remote keys (PageDown/PageUp, Space/k, Home, o/b/.) to the lesson's actions.
 // Changing state: ctx.commit(next) recomputes the model first; if the core refuses the new
 // state (bad knots, a zero weight...) the message line says why and the old state stays.
+//
+// Classroom features every lesson gets from the shell (issue 8): the state in the link and
+// local storage, undo, JSON/SVG/PNG export and JSON import (file picker and drop), the
+// handle inspector (type exact x, y of the selected handle), live announcements of handle
+// positions, presentation mode (class .advanced hides a control there), themes, print,
+// offline. Markup from files and links is only ever set as text.
 import { loadWingspline } from '../core/wingspline.js';
 import { createStore } from './store.js';
 import { restoreState, createPersister } from './persist.js';
-import { readEnvelope, envelope } from './share-link.js';
+import { readEnvelope, envelopeJson } from './share-link.js';
 import { createStage } from './stage.js';
 import { CanvasPainter, SvgPainter } from './painter.js';
 import { createKeymap } from './keymap.js';
@@ -31,6 +40,16 @@ import { download, installImport } from './file-io.js';
 import { applyStoredTheme, cycleTheme, currentTheme, isPresenting, setPresenting, drawingColors } from './theme.js';
 import { registerServiceWorker } from './sw-register.js';
 import { h } from './dom.js';
+
+// One line of at most this many characters: a long or multi-line message (a file name, a
+// lesson's error text) never pushes the page down.
+const MESSAGE_MAX_CHARS = 300;
+const oneLine = (text) => {
+  const flat = String(text).replace(/\s+/g, ' ').trim();
+  return flat.length > MESSAGE_MAX_CHARS ? `${flat.slice(0, MESSAGE_MAX_CHARS - 1)}…` : flat;
+};
+// Coordinates in announcements and the inspector's placeholder text.
+const fmt = (x) => (Object.is(x, -0) ? '0' : String(Number(x.toFixed(3))));
 
 function createMessageLine(el) {
   let timer = null;
@@ -40,7 +59,7 @@ function createMessageLine(el) {
     if (code) el.dataset.code = code; else delete el.dataset.code;
     el.setAttribute('role', kind === 'error' ? 'alert' : 'status');
     const close = h('button', { type: 'button', class: 'message-close', 'aria-label': 'Dismiss message', onclick: clear }, '×');
-    el.replaceChildren(h('span', { class: 'message-text' }, text), close);
+    el.replaceChildren(h('span', { class: 'message-text' }, oneLine(text)), close);
     el.hidden = false;
     if (!sticky) timer = setTimeout(clear, 4000);
   }
@@ -73,7 +92,14 @@ export async function runLesson(lesson) {
     panels: document.getElementById('panels'),
     controls: document.getElementById('stage-controls'),
     description: document.getElementById('stage-description'),
+    announce: document.getElementById('stage-announce'),
   };
+  if (!els.announce && els.description) {
+    // Handle positions are announced separately from the lesson's description, which the
+    // next redraw rewrites ("control point 2 at (1.5, 2)").
+    els.announce = h('p', { id: 'stage-announce', class: 'visually-hidden', role: 'status', 'aria-live': 'polite' });
+    els.description.after(els.announce);
+  }
   const message = createMessageLine(els.message);
   const keymap = createKeymap();
 
@@ -165,6 +191,7 @@ export async function runLesson(lesson) {
       if (text && els.description && els.description.textContent !== text) els.description.textContent = text;
       updateToolbar();
     }
+    updateInspector();
     const g = ctx.stage.beginFrame();
     const painter = new CanvasPainter(g, ctx.stage.transform(), { scale: ui.present ? 1.6 : 1, background: colors.background });
     painter.clear();
@@ -198,7 +225,10 @@ export async function runLesson(lesson) {
     select(id) {
       ui.selected = id;
       const handle = handles().find((x) => x.id === id);
-      if (handle) message.info(`${handle.label} selected at (${handle.x.toFixed(3)}, ${handle.y.toFixed(3)}); arrows move it`);
+      if (handle) {
+        message.info(`${handle.label} selected at (${fmt(handle.x)}, ${fmt(handle.y)}); arrows move it`);
+        announce(handle);
+      }
       lesson.onSelect?.(id, ctx);
       refresh();
     },
@@ -218,17 +248,73 @@ export async function runLesson(lesson) {
     dragEnd() {
       dragId = null;
       store.endGesture();
-      const handle = handles().find((x) => x.id === ui.selected);
-      if (handle && els.description) els.description.textContent = `${handle.label} at (${handle.x.toFixed(3)}, ${handle.y.toFixed(3)})`;
+      announce(handles().find((x) => x.id === ui.selected));
     },
     click: lesson.click ? (x, y, event) => lesson.click(x, y, ctx, event) : null,
     onResize: () => scheduleRender(),
   });
 
+  function announce(handle) {
+    if (handle && els.announce) els.announce.textContent = `${handle.label} at (${fmt(handle.x)}, ${fmt(handle.y)})`;
+  }
+
+  // ---------------------------------------------------------------- inspector
+  // The selected handle's exact coordinates as two number fields: keyboard users and
+  // homework answers need exact values, not only nudges. Typing goes through moveHandle
+  // and commit like a drag, so the core may refuse it with a message.
+  const inspector = { root: null, label: null, x: null, y: null };
+  function buildInspector() {
+    if (lesson.inspector === false || !els.controls || !lesson.moveHandle) return;
+    const field = (axis) => h('input', {
+      type: 'number', step: 'any', id: `inspect-${axis}`, 'data-axis': axis, disabled: true,
+      onchange: () => moveFromInspector(),
+      onkeydown: (event) => { if (event.key === 'Enter') moveFromInspector(); },
+    });
+    inspector.x = field('x');
+    inspector.y = field('y');
+    inspector.label = h('legend', {}, 'Selected: none');
+    inspector.root = h('fieldset', { class: 'handle-inspector', 'aria-describedby': 'inspect-hint' },
+      inspector.label,
+      h('label', { for: 'inspect-x' }, 'x'), inspector.x,
+      h('label', { for: 'inspect-y' }, 'y'), inspector.y,
+      h('span', { id: 'inspect-hint', class: 'hint advanced' }, 'Select a point on the drawing ([ and ] on the canvas), then type its coordinates.'));
+    els.controls.append(inspector.root);
+  }
+  function moveFromInspector() {
+    const handle = handles().find((x) => x.id === ui.selected);
+    if (!handle) return;
+    const x = inspector.x.valueAsNumber;
+    const y = inspector.y.valueAsNumber;
+    if (!Number.isFinite(x) || !Number.isFinite(y)) {
+      message.error(`${handle.label}: type two numbers for x and y`, 'inspector-not-a-number');
+      return;
+    }
+    if (x === handle.x && y === handle.y) return;
+    const next = lesson.moveHandle(store.state, handle.id, x, y, model);
+    if (next && commit(next)) {
+      store.endGesture();
+      const moved = handles().find((h2) => h2.id === handle.id) ?? handle;
+      announce(moved);
+    }
+  }
+  function updateInspector() {
+    if (!inspector.root) return;
+    const handle = handles().find((x) => x.id === ui.selected);
+    const editable = !!handle && handle.draggable !== false;
+    inspector.label.textContent = handle ? `Selected: ${handle.label}` : 'Selected: none';
+    for (const [input, value] of [[inspector.x, handle?.x], [inspector.y, handle?.y]]) {
+      input.disabled = !editable;
+      input.setAttribute('aria-label', `${handle?.label ?? 'selected point'} ${input.dataset.axis}`);
+      // Never overwrite what a person is typing.
+      if (document.activeElement !== input) input.value = value === undefined ? '' : String(value);
+    }
+  }
+
   // ---------------------------------------------------------------- toolbar
   const buttons = {};
-  function toolButton(key, label, onclick, title) {
-    buttons[key] = h('button', { type: 'button', class: 'tool', onclick, title: title ?? label, 'data-action': key }, label);
+  // Presentation mode keeps the essentials (undo, present, keys, reset); the rest is .advanced.
+  function toolButton(key, label, onclick, title, { advanced = false } = {}) {
+    buttons[key] = h('button', { type: 'button', class: advanced ? 'tool advanced' : 'tool', onclick, title: title ?? label, 'data-action': key }, label);
     return buttons[key];
   }
   function updateToolbar() {
@@ -240,15 +326,16 @@ export async function runLesson(lesson) {
 
   const exportItems = [
     { label: 'Lesson state (JSON)', filename: `${lesson.id}-state.json`, type: 'application/json',
-      make: () => JSON.stringify(envelope(lesson, store.state), null, 2) + '\n' },
+      make: () => envelopeJson(lesson, store.state) },
     { label: 'Figure (SVG)', filename: `${lesson.id}.svg`, type: 'image/svg+xml', make: svgFigure },
     { label: 'Figure (PNG)', filename: `${lesson.id}.png`, type: 'image/png',
       make: () => new Promise((resolve) => els.canvas.toBlob(resolve, 'image/png')) },
     ...(lesson.exports ?? []),
   ];
-  const exportMenu = h('details', { class: 'menu' }, h('summary', { class: 'tool' }, 'Export'),
-    h('div', { class: 'menu-items', role: 'menu' }, exportItems.map((item) => h('button', {
-      type: 'button', role: 'menuitem', 'data-export': item.filename,
+  // A disclosure of plain buttons (not an ARIA menu, which would promise arrow-key roving).
+  const exportMenu = h('details', { class: 'menu advanced' }, h('summary', { class: 'tool' }, 'Export'),
+    h('div', { class: 'menu-items' }, exportItems.map((item) => h('button', {
+      type: 'button', 'data-export': typeof item.filename === 'function' ? item.label : item.filename,
       async onclick() {
         exportMenu.open = false;
         try {
@@ -261,7 +348,8 @@ export async function runLesson(lesson) {
     }, item.label))));
 
   const importTypes = ['.json', ...Object.keys(lesson.importers ?? {}).map((ext) => `.${ext}`)];
-  const fileInput = h('input', { type: 'file', accept: importTypes.join(','), class: 'visually-hidden', id: 'import-file', 'aria-label': 'Import a file' });
+  // The picker is opened by a real button (visible focus, keyboard); the input stays hidden.
+  const fileInput = h('input', { type: 'file', accept: importTypes.join(','), hidden: true, id: 'import-file', tabindex: '-1', 'aria-label': 'Import a file' });
 
   function importFile({ name, text }) {
     const ext = name.toLowerCase().split('.').pop();
@@ -282,6 +370,7 @@ export async function runLesson(lesson) {
       model = newModel;
       store.replace(next);
       message.info(`Imported ${name}`);
+      announceStatus(`Imported ${name}`);
     } catch (err) {
       message.error(`${name} was not imported: ${errorText(err)}`, err?.code ?? 'import-error');
     }
@@ -299,21 +388,52 @@ export async function runLesson(lesson) {
     return url;
   }
 
-  async function togglePresent() {
-    ui.present = !isPresenting();
-    await setPresenting(ui.present);
+  function announceStatus(text) {
+    if (els.announce) els.announce.textContent = oneLine(text);
+  }
+
+  async function togglePresent(on = !isPresenting()) {
+    ui.present = on;
+    await setPresenting(on);
     colors = drawingColors();
     refresh();
   }
+  // Leaving full screen (Escape in the browser) also leaves presentation mode.
+  document.addEventListener('fullscreenchange', () => {
+    if (!document.fullscreenElement && isPresenting()) togglePresent(false);
+  });
+
+  function changeTheme() {
+    cycleTheme();
+    colors = drawingColors();
+    refresh();
+    announceStatus(`Theme: ${currentTheme()}`);
+  }
+
+  // Print: a clean figure on white paper whatever the screen theme, with its tables.
+  let printTheme = null;
+  window.addEventListener('beforeprint', () => {
+    printTheme = document.documentElement.dataset.theme ?? null;
+    document.documentElement.dataset.theme = 'light';
+    colors = drawingColors();
+    renderNow();
+  });
+  window.addEventListener('afterprint', () => {
+    if (printTheme) document.documentElement.dataset.theme = printTheme; else delete document.documentElement.dataset.theme;
+    printTheme = null;
+    colors = drawingColors();
+    refresh();
+  });
 
   els.header.replaceChildren(
     toolButton('undo', 'Undo', () => store.undo(), 'Undo (Ctrl+Z)'),
     toolButton('redo', 'Redo', () => store.redo(), 'Redo (Ctrl+Shift+Z)'),
-    toolButton('share', 'Share link', share),
+    toolButton('share', 'Share link', share, undefined, { advanced: true }),
     exportMenu,
-    h('label', { class: 'tool', for: 'import-file' }, 'Import'), fileInput,
-    toolButton('theme', 'Theme', () => { cycleTheme(); colors = drawingColors(); refresh(); }),
-    toolButton('present', 'Present', togglePresent, 'Presentation mode (P)'),
+    toolButton('import', 'Import', () => fileInput.click(), 'Import a state (JSON) or a lesson file; dropping a file on the page works too', { advanced: true }),
+    fileInput,
+    toolButton('theme', 'Theme', changeTheme, 'Theme: system, light, dark (T)', { advanced: true }),
+    toolButton('present', 'Present', () => togglePresent(), 'Presentation mode (P)'),
     toolButton('keys', 'Keys ?', () => keymap.showDialog(), 'Keyboard map (?)'),
     toolButton('reset', 'Reset lesson', () => {
       const fresh = lesson.defaultState();
@@ -332,11 +452,30 @@ export async function runLesson(lesson) {
   // Handled by the focused canvas (stage.js); listed here so the key map shows them.
   keymap.add({ keys: ['[', ']'], label: 'select the previous / next handle (canvas focused)', group: 'Editing' });
   keymap.add({ keys: ['ArrowLeft', 'ArrowRight', 'ArrowUp', 'ArrowDown'], label: 'move the selected handle (Shift: finer)', group: 'Editing' });
-  keymap.add({ keys: ['p'], label: 'presentation mode on / off', group: 'View', action: togglePresent });
-  keymap.add({ keys: ['t'], label: 'theme: system, light, dark', group: 'View', action: () => { cycleTheme(); colors = drawingColors(); refresh(); } });
+  keymap.add({ keys: ['p'], label: 'presentation mode on / off', group: 'View', action: () => togglePresent() });
+  keymap.add({ keys: ['Escape'], label: 'leave presentation mode', group: 'View', when: () => isPresenting() && !document.querySelector('dialog[open]'), action: () => togglePresent(false) });
+  keymap.add({ keys: ['t'], label: 'theme: system, light, dark', group: 'View', action: changeTheme });
   keymap.add({ keys: ['0'], label: 'fit the drawing to the window', group: 'View', action: () => { if (lesson.fitView) setView(lesson.fitView(model, ctx.stage)); } });
   keymap.add({ keys: ['?'], label: 'show this key map', group: 'View', action: () => keymap.showDialog() });
   window.matchMedia?.('(prefers-color-scheme: dark)').addEventListener?.('change', () => { colors = drawingColors(); refresh(); });
+
+  // ---------------------------------------------------------------- presenter remote
+  // A presenter remote sends PageDown/PageUp (next/previous), often F5/Escape (start/stop)
+  // and b or . (blank screen); these keys reach the lesson's step actions when it has them.
+  // Arrows are not bound here: on the focused canvas they move the selected handle.
+  let presenterBound = false;
+  const presenter = {};
+  ctx.setPresenter = (actions) => {
+    Object.assign(presenter, actions);
+    if (presenterBound) return;
+    presenterBound = true;
+    const bind = (name, keys, label, when) => keymap.add({ keys, label, group: 'Presenter', when: (e) => !!presenter[name] && (!when || when(e)), action: () => presenter[name]?.() });
+    bind('next', ['PageDown', 'n'], 'next step');
+    bind('prev', ['PageUp', 'Shift+n'], 'previous step');
+    bind('playPause', [' ', 'k'], 'play / pause', (e) => !(e.target instanceof HTMLCanvasElement));
+    bind('reset', ['Home'], 'back to the first step', (e) => !(e.target instanceof HTMLCanvasElement));
+    bind('toggleOverlays', ['o', 'b', '.'], 'overlays on / off');
+  };
 
   // ---------------------------------------------------------------- start
   try {
@@ -349,6 +488,7 @@ export async function runLesson(lesson) {
     store.set(fresh, { history: false, reason: 'view' });
   }
   lesson.setup(ctx);
+  buildInspector();
   if (restored.problem) message.warn(restored.problem);
   if (restored.source === 'default' && lesson.fitView) {
     // The default view is fitted to the canvas once its size is known.
@@ -357,6 +497,8 @@ export async function runLesson(lesson) {
   }
   refresh();
   renderNow();
+  // The URL and storage hold what is shown (a damaged link is replaced by what survived).
+  persister.save(store.state);
 
   // What tests and students' scripts may ask the page (never used by the page itself).
   window.wingspline = {
@@ -365,7 +507,8 @@ export async function runLesson(lesson) {
     get state() { return structuredClone(store.state); },
     get model() { return model; },
     get selected() { return ui.selected; },
-    handles: () => handles().map((x) => ({ id: x.id, label: x.label, x: x.x, y: x.y, ...ctx.stage.toClient(x.x, x.y) })),
+    // x, y: page (client) position to drag with page.mouse; world: the handle's coordinates.
+    handles: () => handles().map((x) => ({ id: x.id, label: x.label, world: { x: x.x, y: x.y }, draggable: x.draggable !== false, ...ctx.stage.toClient(x.x, x.y) })),
     toClient: (x, y) => ctx.stage.toClient(x, y),
     shareUrl: () => persister.shareUrl(store.state),
     flush: () => persister.flushNow(),
@@ -374,5 +517,7 @@ export async function runLesson(lesson) {
     ctx,
   };
   document.body.dataset.ready = 'true';
+  // ui_load (tests/bench/browser/load.bench.mjs): navigation start to drawn and interactive.
+  performance.mark('wingspline-ready');
   return ctx;
 }

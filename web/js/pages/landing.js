@@ -2,6 +2,8 @@
 import { lessons } from '../lessons/registry.js';
 import { loadWingspline } from '../core/wingspline.js';
 import { math, matrix, mi, mo, el, rows4 } from '../ui/mathml.js';
+import { registerServiceWorker } from '../app/sw-register.js';
+import { applyStoredTheme } from '../app/theme.js';
 
 function lessonCard(lesson) {
   const item = document.createElement('li');
@@ -52,5 +54,8 @@ async function showCore() {
   }
 }
 
+applyStoredTheme();
+// The first visit may be the landing page: it installs the offline copy of the whole site.
+registerServiceWorker();
 showLessons();
 showCore();

@@ -1,0 +1,199 @@
+// Share and keep (issue 8), for every ready lesson and the fixture lesson: the state
+// survives a reload exactly, a link reproduces it in a fresh browser context, the back button
+// leaves the page instead of undoing edits, and tampered links each give one line of
+// message, a working page at the default (or the valid part), and nothing executed.
+import { test, describe, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { launchBrowser } from '../helpers/browser.mjs';
+import {
+  lessonsUnderTest, startClassroomSite, openLesson, waitReady, trap, nothingExecuted, payloads,
+  linkCode, envelopeCode, stateBits, bitsOf, awkwardView, tinyView, setView,
+} from '../helpers/classroom.mjs';
+
+// A message line is one sentence for a person, not a stack trace or a page of text.
+const MESSAGE_MAX_CHARS = 300;
+
+let site;
+let browser;
+before(async () => {
+  site = await startClassroomSite();
+  browser = await launchBrowser();
+});
+after(async () => {
+  await browser?.close();
+  await site?.close();
+});
+
+async function newContext() {
+  return browser.newContext({ viewport: { width: 1280, height: 800 } });
+}
+
+// Moves the first draggable handle by keyboard, so the edit goes the way a person's does.
+async function editByKeyboard(page) {
+  await page.focus('#stage');
+  await page.keyboard.press(']');
+  await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('ArrowUp');
+  await page.evaluate(() => window.wingspline.flush());
+}
+
+for (const lesson of lessonsUnderTest) {
+  describe(`${lesson.title}: share and keep`, () => {
+    test('a reload restores the state exactly, numbers bit for bit', async () => {
+      const context = await newContext();
+      const page = await openLesson(context, new URL(lesson.page, site.url).href);
+      const before0 = await stateBits(page);
+      await editByKeyboard(page);
+      await setView(page, awkwardView);
+      const edited = await stateBits(page);
+      assert.notDeepEqual(edited, before0, 'the keyboard edit and the view changed the state');
+      assert.deepEqual(edited.view, bitsOf(awkwardView), 'the view holds 0.1+0.2 and -0 exactly');
+      await page.reload();
+      await waitReady(page);
+      assert.deepEqual(await stateBits(page), edited, 'reload (from the link in the address bar)');
+      // Without the link: local storage brings it back too.
+      await page.goto(new URL(lesson.page, site.url).href);
+      await waitReady(page);
+      assert.deepEqual(await stateBits(page), edited, 'reopened without a link (local storage)');
+      // An edit made just before a reload (inside the debounce) is not lost either.
+      await page.evaluate((v) => window.wingspline.ctx.setView(v), tinyView);
+      await page.reload();
+      await waitReady(page);
+      assert.deepEqual((await stateBits(page)).view, bitsOf(tinyView), 'the last edit before the reload');
+      assert.deepEqual(page.dialogs, []);
+      assert.deepEqual(page.problems, []);
+      await context.close();
+    });
+
+    test('a share link reproduces the state in a fresh browser context', async () => {
+      const context = await newContext();
+      const page = await openLesson(context, new URL(lesson.page, site.url).href);
+      await editByKeyboard(page);
+      await setView(page, tinyView);
+      const link = await page.evaluate(() => window.wingspline.shareUrl());
+      assert.equal(link, await page.evaluate(() => window.location.href), 'the address bar holds the same link');
+      const expected = await stateBits(page);
+      await context.close();
+      const fresh = await newContext();
+      const other = await openLesson(fresh, link);
+      assert.deepEqual(await stateBits(other), expected);
+      assert.equal(await other.evaluate(() => window.wingspline.message()), '', 'a good link gives no message');
+      await fresh.close();
+    });
+
+    test('the back button leaves the lesson; edits do not add history entries', async () => {
+      const context = await newContext();
+      const page = trap(await context.newPage());
+      await page.goto(site.url);
+      await page.waitForSelector('[data-core-status][data-state=ready]');
+      await page.goto(new URL(lesson.page, site.url).href);
+      await waitReady(page);
+      const length = await page.evaluate(() => history.length);
+      await editByKeyboard(page);
+      await editByKeyboard(page);
+      await setView(page, awkwardView);
+      const edited = await stateBits(page);
+      assert.equal(await page.evaluate(() => history.length), length, 'edits replace the history entry');
+      await page.goBack();
+      await page.waitForSelector('[data-core-status][data-state=ready]');
+      assert.equal(new URL(page.url()).pathname, new URL(site.url).pathname, 'back goes to the page before');
+      await page.goForward();
+      await waitReady(page);
+      assert.deepEqual(await stateBits(page), edited, 'forward comes back to the edited state');
+      await context.close();
+    });
+
+    describe('tampered links', () => {
+      const id = lesson.id;
+      const good = (state) => envelopeCode(id, lesson.fixture ? 2 : 1, state);
+      // Each case: the #s= code, and whether the valid rest of the state is kept (then the
+      // view, a field every lesson has, is checked to be the default).
+      const cases = [
+        ['garbage characters', '%3Cscript%3Ewindow.__pwned%3D1%3C%2Fscript%3E!!'],
+        ['random base64 that does not decompress', 'QUJDREVGR0hJSktMTU5PUA'],
+        ['a truncated link', null],
+        ['text that is not JSON', linkCode('hello, not json')],
+        ['JSON that is not an envelope', linkCode('[1, 2, 3]')],
+        ['wrong types', good({ view: 'wide', points: 'many' })],
+        ['huge numbers', linkCode(`{"format":"wingspline","lesson":"${id}","version":${lesson.fixture ? 2 : 1},"state":{"view":{"cx":1e999,"cy":-1e308,"zoom":1e300}}}`)],
+        ['NaN and Infinity as strings', good({ view: { cx: 'NaN', cy: 'Infinity', zoom: '-Infinity' } })],
+        ['script in strings', linkCode(JSON.stringify({ format: 'wingspline', lesson: payloads.img, version: 1, state: { view: payloads.script } }))],
+        ['script in a text field', good({ note: payloads.img, view: { cx: payloads.svg, cy: 0, zoom: 50 } })],
+        ['another lesson', envelopeCode(id === 'curves' ? 'mesh' : 'curves', 1, {})],
+        ['a newer version', envelopeCode(id, 99, {})],
+        ['a version that is not a number', envelopeCode(id, '1', {})],
+        ['an oversized link', 'A'.repeat(250000)],
+        ['a prototype-polluting key', linkCode(`{"format":"wingspline","lesson":"${id}","version":1,"state":{"__proto__":{"polluted":true},"constructor":{"prototype":{"polluted":true}}}}`)],
+      ];
+      for (const [name, code] of cases) {
+        test(name, async () => {
+          const context = await newContext();
+          const probe = await openLesson(context, new URL(lesson.page, site.url).href);
+          const defaults = await probe.evaluate(() => window.wingspline.lesson);
+          assert.equal(defaults, id);
+          const real = (await probe.evaluate(() => window.wingspline.shareUrl())).split('#s=')[1];
+          await probe.close();
+          const hash = code ?? real.slice(0, Math.floor(real.length / 2));
+          const page = await openLesson(context, `${new URL(lesson.page, site.url).href}#s=${hash}`);
+          const message = await page.evaluate(() => window.wingspline.message());
+          assert.ok(message.length > 0, 'a message says what happened');
+          assert.ok(!message.includes('\n') && message.length <= MESSAGE_MAX_CHARS, `one line: ${message}`);
+          assert.equal(await page.getAttribute('#message', 'data-kind'), 'warn');
+          assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
+          assert.equal(await page.evaluate(() => ({}).polluted ?? Object.prototype.polluted ?? null), null);
+          assert.deepEqual(page.dialogs, []);
+          assert.deepEqual(page.problems, []);
+          // A working page: the state is valid (the default view), a handle moves by keyboard.
+          const state = await page.evaluate(() => window.wingspline.state);
+          for (const key of ['cx', 'cy', 'zoom']) assert.ok(Number.isFinite(state.view[key]), `view.${key} is a number`);
+          const before1 = await stateBits(page);
+          await editByKeyboard(page);
+          assert.notDeepEqual(await stateBits(page), before1, 'the page still takes edits');
+          // The address bar now holds the usable state, so a reload shows no warning.
+          await page.reload();
+          await waitReady(page);
+          assert.equal(await page.evaluate(() => window.wingspline.message()), '');
+          await context.close();
+        });
+      }
+    });
+  });
+}
+
+describe('Classroom fixture: older links', () => {
+  test('a version 1 link is migrated to version 2', async () => {
+    const context = await newContext();
+    // Written as text: JSON.stringify would drop the sign of -0.
+    const old = linkCode('{"format":"wingspline","lesson":"fixture","version":1,"state":{"pts":[[0,0],[1,1],[2,-1],[0.30000000000000004,-0]],"polygon":false,"view":{"cx":1,"cy":0,"zoom":90}}}');
+    const page = await openLesson(context, new URL(`fixture.html#s=${old}`, site.url).href);
+    assert.equal(await page.evaluate(() => window.wingspline.message()), '');
+    assert.deepEqual(await stateBits(page), bitsOf({
+      points: [{ x: 0, y: 0 }, { x: 1, y: 1 }, { x: 2, y: -1 }, { x: 0.1 + 0.2, y: -0 }],
+      showPolygon: false, step: 0, note: '', view: { cx: 1, cy: 0, zoom: 90 },
+    }));
+    await context.close();
+  });
+
+  test('a version 1 link of the wrong shape says so and shows the default', async () => {
+    const context = await newContext();
+    const page = await openLesson(context, new URL(`fixture.html#s=${envelopeCode('fixture', 1, { pts: 7 })}`, site.url).href);
+    assert.match(await page.evaluate(() => window.wingspline.message()), /could not be upgraded/);
+    assert.equal((await page.evaluate(() => window.wingspline.state)).points.length, 4);
+    await context.close();
+  });
+
+  test('a partly damaged link keeps its valid part and names the bad field', async () => {
+    const context = await newContext();
+    const page = await openLesson(context, new URL(`fixture.html#s=${envelopeCode('fixture', 2, {
+      points: [{ x: 5, y: 6 }, { x: 7, y: 8 }], showPolygon: 'yes', step: 1, note: payloads.img, view: { cx: 1, cy: 2, zoom: 50 },
+    })}`, site.url).href);
+    assert.match(await page.evaluate(() => window.wingspline.message()), /showPolygon must be true or false/);
+    const state = await page.evaluate(() => window.wingspline.state);
+    assert.deepEqual(state.points, [{ x: 5, y: 6 }, { x: 7, y: 8 }]);
+    assert.equal(state.showPolygon, true, 'the bad field takes the default');
+    // The note is shown as text: the markup is visible characters, not an element.
+    assert.equal(await page.textContent('#fixture-note'), payloads.img);
+    assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
+    await context.close();
+  });
+});

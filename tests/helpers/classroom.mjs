@@ -1,0 +1,102 @@
+// Shared pieces of the classroom tests (issue 8): which lesson pages to test (every lesson
+// marked ready in the registry, plus the test-only fixture lesson under tests/fixtures/site),
+// share links built the way the page builds them, bit patterns of numbers, and a trap that
+// records any script a tampered link or file might manage to run.
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { repoRoot, startSite } from './browser.mjs';
+import { lessons } from '../../web/js/lessons/registry.js';
+
+export const fixturesSite = path.join(repoRoot, 'tests', 'fixtures', 'site');
+
+// The fixture has stateVersion 2 and a migration from 1; real lessons are tested the same way.
+export const fixture = { id: 'fixture', title: 'Classroom fixture', page: 'fixture.html', fixture: true };
+export const readyLessons = lessons.filter((l) => l.ready).map((l) => ({ id: l.id, title: l.title, page: l.page }));
+export const lessonsUnderTest = [...readyLessons, fixture];
+
+export function startClassroomSite(options = {}) {
+  return startSite({ overlays: [fixturesSite], ...options });
+}
+
+// dist/ pages: the landing page and every ready lesson (the fixture is not part of dist/).
+export const distPages = ['index.html', ...readyLessons.map((l) => l.page)];
+
+export async function waitReady(page) {
+  await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
+}
+
+export async function openLesson(context, url) {
+  const page = await context.newPage();
+  trap(page);
+  await page.goto(url);
+  await waitReady(page);
+  return page;
+}
+
+// Dialogs (alert/confirm/prompt) are recorded and dismissed; page errors collected; the
+// payloads used in tampered links set window.__pwned when they run.
+export const payloads = {
+  img: '<img src=x onerror="window.__pwned=\'img\'">',
+  script: '<script>window.__pwned="script"</script>',
+  svg: '<svg onload="window.__pwned=\'svg\'"></svg>',
+};
+export function trap(page) {
+  page.dialogs = [];
+  page.problems = page.problems ?? [];
+  page.on('dialog', (dialog) => { page.dialogs.push(dialog.message()); dialog.dismiss().catch(() => {}); });
+  page.on('pageerror', (err) => page.problems.push(`pageerror: ${err.message}`));
+  page.on('console', (msg) => { if (msg.type() === 'error') page.problems.push(`console: ${msg.text()}`); });
+  return page;
+}
+export async function nothingExecuted(page) {
+  return page.evaluate(() => ({
+    pwned: window.__pwned ?? null,
+    injectedElements: document.querySelectorAll('img[src=x], script:not([src]), svg[onload]').length,
+  }));
+}
+
+// What the page writes after #s=: deflate-raw of the JSON text, base64url without padding.
+export function linkCode(jsonText) {
+  return zlib.deflateRawSync(Buffer.from(jsonText, 'utf8')).toString('base64url');
+}
+export function envelopeCode(lessonId, version, state) {
+  return linkCode(JSON.stringify({ format: 'wingspline', lesson: lessonId, version, state }));
+}
+
+// Every number of a value replaced by the hex of its IEEE-754 bits (in the page), so two
+// states compare bit for bit (-0 differs from 0).
+export async function stateBits(page) {
+  return page.evaluate(() => {
+    const hex = (x) => {
+      const view = new DataView(new ArrayBuffer(8));
+      view.setFloat64(0, x);
+      return `f64:${view.getBigUint64(0).toString(16).padStart(16, '0')}`;
+    };
+    const walk = (v) => (typeof v === 'number' ? hex(v)
+      : Array.isArray(v) ? v.map(walk)
+        : v && typeof v === 'object' ? Object.fromEntries(Object.entries(v).map(([k, x]) => [k, walk(x)])) : v);
+    return walk(window.wingspline.state);
+  });
+}
+export function bitsOf(value) {
+  const buffer = Buffer.alloc(8);
+  const walk = (v) => {
+    if (typeof v === 'number') {
+      buffer.writeDoubleBE(v);
+      return `f64:${buffer.toString('hex')}`;
+    }
+    if (Array.isArray(v)) return v.map(walk);
+    if (v && typeof v === 'object') return Object.fromEntries(Object.entries(v).map(([k, x]) => [k, walk(x)]));
+    return v;
+  };
+  return walk(value);
+}
+
+// A change every lesson accepts: the view (part of every lesson's state) moved to numbers
+// whose text is awkward: 0.1 + 0.2 (0.30000000000000004), -0 and 1e-300.
+export const awkwardView = { cx: 0.1 + 0.2, cy: -0, zoom: 64.1 };
+export const tinyView = { cx: 1e-300, cy: -1e-300, zoom: 33.3 };
+export async function setView(page, view) {
+  await page.evaluate((v) => window.wingspline.ctx.setView(v), view);
+  await page.evaluate(() => window.wingspline.flush());
+}
