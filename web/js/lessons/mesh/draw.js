@@ -81,6 +81,21 @@ function edgeSeen(model, front, e) {
   return left < 0 || right < 0 || front[left] || front[right];
 }
 
+// Screen direction (x right, y up) for each vertex label: away from the faces around it, so
+// the label sits outside the mesh and off its edges.
+function labelDirections(model, P) {
+  const dir = new Float64Array(2 * (P.length / 3));
+  for (const face of model.faces) {
+    const [cx, cy] = centroid(face, P);
+    for (const v of face) { dir[2 * v] += P[3 * v] - cx; dir[2 * v + 1] += P[3 * v + 1] - cy; }
+  }
+  for (let v = 0; 2 * v < dir.length; v += 1) {
+    const len = Math.hypot(dir[2 * v], dir[2 * v + 1]);
+    if (len > 1e-12) { dir[2 * v] /= len; dir[2 * v + 1] /= len; } else { dir[2 * v] = Math.SQRT1_2; dir[2 * v + 1] = Math.SQRT1_2; }
+  }
+  return dir;
+}
+
 function drawBase(painter, model, state, colors) {
   const P = model.projected;
   const zoom = state.view.zoom;
@@ -101,7 +116,7 @@ function drawBase(painter, model, state, colors) {
   if (labels) {
     model.faces.forEach((face, f) => {
       const [x, y] = centroid(face, P);
-      painter.text(x, y, fLabel(f), { fill: colors.series[0], font: 16, weight: 700, halo: colors.background });
+      painter.text(x, y, fLabel(f), { fill: colors.series[2], font: 16, weight: 700, halo: colors.background });
     });
   }
   if (arrows) {
@@ -113,9 +128,10 @@ function drawBase(painter, model, state, colors) {
   }
   const V = P.length / 3;
   if (V <= LABEL_LIMIT) {
+    const away = labelDirections(model, P);
     for (let v = 0; v < V; v += 1) {
-      painter.circle(P[3 * v], P[3 * v + 1], 5, { fill: colors.series[0], stroke: colors.background, width: 1.5 });
-      painter.text(P[3 * v], P[3 * v + 1], vLabel(v), { fill: colors.series[0], font: 15, weight: 700, dx: 12, dy: -12, halo: colors.background });
+      painter.circle(P[3 * v], P[3 * v + 1], 5, { fill: colors.accent, stroke: colors.background, width: 1.5 });
+      painter.text(P[3 * v], P[3 * v + 1], vLabel(v), { fill: colors.accent, font: 15, weight: 700, dx: 18 * away[2 * v], dy: -18 * away[2 * v + 1], halo: colors.background });
     }
   }
 }
@@ -174,8 +190,15 @@ function drawWalk(painter, model, state, colors) {
     painter.polygon(faceXY(model.faces[model.walkElement], P), { fill: found, alpha: 0.18 });
   }
   if (frame.current >= 0 && !frame.done) highlightEdge(painter, model, frame.current, { stroke: current, width: 11, alpha: 0.55 });
+  const zoom = state.view.zoom;
+  const labelled = model.E <= LABEL_LIMIT;
   frame.found.forEach((e, k) => {
-    highlightEdge(painter, model, e, { stroke: found, width: 4.5 });
+    // Found edges keep their S -> E arrow and their label on top of the highlight.
+    painter.arrow(...edgeEnds(model, P, e, zoom), { stroke: found, width: 4.5 });
+    if (labelled) {
+      const s0 = model.we.edges[8 * e]; const t0 = model.we.edges[8 * e + 1];
+      painter.text((P[3 * s0] + P[3 * t0]) / 2, (P[3 * s0 + 1] + P[3 * t0 + 1]) / 2, eLabel(e), { fill: colors.ink, font: 13, weight: 700, halo: colors.background });
+    }
     const s = model.we.edges[8 * e]; const t = model.we.edges[8 * e + 1];
     const x = P[3 * s] + (P[3 * t] - P[3 * s]) * 0.7; const y = P[3 * s + 1] + (P[3 * t + 1] - P[3 * s + 1]) * 0.7;
     painter.circle(x, y, 10, { fill: found, stroke: colors.background, width: 1.5 });
