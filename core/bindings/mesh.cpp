@@ -12,6 +12,8 @@
 #include "wingspline/mesh/representations.h"
 #include "wingspline/mesh/winged_edge.h"
 
+#include <emscripten/emscripten.h>
+
 #include <algorithm>
 #include <malloc.h>
 #include <memory>
@@ -307,13 +309,66 @@ val mesh_planes(int32_t handle) {
     });
 }
 
-// {normals: Float64Array (3 per face)}, Newell unit normals.
-val mesh_normals(int32_t handle) {
+// {normals: Float64Array (3 per face)}, Newell unit normals. With `into` (a Float64Array
+// of 3F numbers the JS layer checked) the result is copied into it instead of a new array:
+// a caller that recomputes often (a drag, the benchmark) allocates nothing per call, as the
+// native code reusing its vector. The scratch buffer is not zero-filled (all written).
+val mesh_normals(int32_t handle, val into) {
     return guarded([&] {
-        std::vector<double> n;
-        newell_normals(entry(handle).winged, n);
+        const WingedEdgeMesh& w = entry(handle).winged;
+        const std::size_t n = 3 * static_cast<std::size_t>(w.face_count());
+        std::unique_ptr<double[]> scratch(new double[n]);
+        newell_normals(w, scratch.get());
+        const double* data = scratch.get();
         val r = val::object();
-        r.set("normals", to_typed_array(n));
+        if (into.isNull()) {
+            r.set("normals", to_typed_array(data, n));
+        } else {
+            // The view lives only for this call; nothing allocates between making and using it.
+            into.call<void>("set", val(emscripten::typed_memory_view(n, data)));
+            r.set("normals", into);
+        }
+        return r;
+    });
+}
+
+// ------------------------------------------------------------------ benchmark only
+
+// The native benchmark times the core's work on data already in memory; these time the
+// same work inside the module (emscripten_get_now, ms) so the wasm and native figures
+// compare like for like. The JS API figures add the boundary: copies in and out.
+val bench_build_in_core(val positions, val face_offsets, val face_vertices, int32_t repetitions) {
+    return guarded([&] {
+        const IndexedMesh m = indexed_from(positions, face_offsets, face_vertices);
+        std::vector<double> seconds;
+        double checksum = 0;
+        for (int32_t i = 0; i < repetitions; ++i) {
+            const double t0 = emscripten_get_now();
+            const WingedEdgeMesh w = WingedEdgeMesh::build(m);
+            seconds.push_back((emscripten_get_now() - t0) / 1000.0);
+            checksum += w.edge(w.edge_count() - 1).end_right + w.edge_count();
+        }
+        val r = val::object();
+        r.set("seconds", to_typed_array(seconds));
+        r.set("checksum", checksum);
+        return r;
+    });
+}
+
+val bench_normals_in_core(int32_t handle, int32_t repetitions) {
+    return guarded([&] {
+        const WingedEdgeMesh& w = entry(handle).winged;
+        std::vector<double> normals, seconds;
+        double checksum = 0;
+        for (int32_t i = 0; i < repetitions; ++i) {
+            const double t0 = emscripten_get_now();
+            newell_normals(w, normals);
+            seconds.push_back((emscripten_get_now() - t0) / 1000.0);
+            checksum += normals[0] + normals[normals.size() - 1];
+        }
+        val r = val::object();
+        r.set("seconds", to_typed_array(seconds));
+        r.set("checksum", checksum);
         return r;
     });
 }
@@ -575,6 +630,8 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshStorage", &mesh_storage);
     emscripten::function("meshRepresentations", &mesh_representations);
     emscripten::function("meshQuery", &mesh_query);
+    emscripten::function("benchBuildInCore", &bench_build_in_core);
+    emscripten::function("benchNormalsInCore", &bench_normals_in_core);
     emscripten::function("meshParse", &mesh_parse);
     emscripten::function("meshFormat", &mesh_format);
     emscripten::function("meshRingWalk", &mesh_ring_walk);

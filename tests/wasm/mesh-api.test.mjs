@@ -115,3 +115,16 @@ test('generated meshes: closed solids have Euler 2, normals are unit, planes hav
     assert.equal(mesh.setVertexPosition(0, [0, 0, 0]).changedEntries['independent-faces'], 3);
   });
 });
+
+test('normals({into}) fills the caller\'s array with the same unit normals; a wrong array is refused', () => {
+  withMesh(api.generateMesh('cube'), (mesh) => {
+    const fresh = mesh.normals();
+    const into = new Float64Array(3 * 6).fill(Number.NaN);
+    assert.equal(mesh.normals({ into }), into);
+    assert.deepEqual(into, fresh);
+    // Cube face 0 lies in z = 0 with outward normal -z.
+    assert.deepEqual(Array.from(into.subarray(0, 3)), [0, 0, -1]);
+    assert.throws(() => mesh.normals({ into: new Float64Array(5) }), (err) => err.code === 'invalid-argument');
+    assert.throws(() => mesh.normals({ into: [0, 0, 0] }), (err) => err.code === 'invalid-argument');
+  });
+});

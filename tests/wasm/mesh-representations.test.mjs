@@ -173,6 +173,7 @@ test('query errors are coded; representations do not leak across build/dispose',
   const input = api.generateMesh('sphere', { slices: 6, stacks: 4 });
   const cycle = () => {
     const mesh = api.buildMesh(input);
+    assert.equal(mesh.validate().ok, true);
     mesh.representations({ limit: 3 });
     mesh.query('faces-around-vertex', 0);
     mesh.setVertexPosition(1, [0, 0, 2]);
@@ -193,6 +194,7 @@ test('the winged edge\'s bytes stay its own: the other representations are built
   const mesh = api.buildMesh(input);
   try {
     const built = api.memoryUsage().heapInUse - before;
+    assert.equal(mesh.validate().ok, true);
     const own = mesh.bytes();
     mesh.storage(); // first use: now the four others exist in the core
     const withOthers = api.memoryUsage().heapInUse - before;

@@ -40,8 +40,12 @@ std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh) {
 }
 
 void newell_normals(const WingedEdgeMesh& mesh, std::vector<double>& normals) {
+    normals.resize(3 * static_cast<std::size_t>(mesh.face_count()));
+    newell_normals(mesh, normals.data());
+}
+
+void newell_normals(const WingedEdgeMesh& mesh, double* normals) {
     const int32_t F = mesh.face_count();
-    normals.resize(3 * static_cast<std::size_t>(F));
     const double* p = mesh.positions().data();
     for (int32_t f = 0; f < F; ++f) {
         // Walk the face's edges (lecture rule: L -> endLeft, R -> startRight), summing

@@ -31,6 +31,9 @@ if (wants('mesh_')) {
         mesh.dispose();
       });
       report({ task: 'mesh_build', input: name, n: F, seconds, checksum });
+      // The same build timed inside the module, without the boundary (as native times it).
+      const core = api.timeBuildInCore(input, R);
+      report({ task: 'mesh_build_core', input: name, n: F, seconds: Array.from(core.seconds), checksum: core.checksum });
     }
     const mesh = api.buildMesh(input);
     try {
@@ -41,8 +44,12 @@ if (wants('mesh_')) {
       }
       if (wants('mesh_normals')) {
         let checksum = 0;
-        const seconds = timeRuns(R, () => { const n = mesh.normals(); checksum += n[0] + n[n.length - 1]; });
+        // Into one reused array, as the native benchmark reuses its vector; still one copy out.
+        const into = new Float64Array(3 * F);
+        const seconds = timeRuns(R, () => { const n = mesh.normals({ into }); checksum += n[0] + n[n.length - 1]; });
         report({ task: 'mesh_normals', input: name, n: F, seconds, checksum });
+      const core = mesh.timeNormalsInCore(R);
+      report({ task: 'mesh_normals_core', input: name, n: F, seconds: Array.from(core.seconds), checksum: core.checksum });
       }
     } finally {
       mesh.dispose();

@@ -128,6 +128,7 @@ export class Mesh {
   // The face set (CSR) the mesh was built from, kept in JS until the other representations
   // are first needed; then the core builds them from it and this is dropped.
   #faceSet;
+  #faces; // F, cached on first need (connectivity never changes)
 
   constructor(raw, handle, faceSet = null) {
     this.#raw = raw;
@@ -247,8 +248,19 @@ export class Mesh {
     }));
   }
 
-  // Newell unit normals, normals[3*f + k].
-  normals() { return unwrap(this.#raw.meshNormals(this.#live())).normals; }
+  // Newell unit normals, normals[3*f + k], in a new Float64Array, or copied into `into`
+  // (a Float64Array of 3F numbers, returned) so repeated calls allocate nothing.
+  normals({ into = null } = {}) {
+    if (into !== null && !(into instanceof Float64Array && into.length === 3 * this.#faceCount())) {
+      fail('invalid-argument', 'normals({into}) needs a Float64Array with 3 numbers per face');
+    }
+    return unwrap(this.#raw.meshNormals(this.#live(), into)).normals;
+  }
+
+  #faceCount() {
+    if (this.#faces === undefined) this.#faces = unwrap(this.#raw.meshCounts(this.#live())).faces;
+    return this.#faces;
+  }
 
   // Moves vertex v in every representation; {changedEntries: {[representation]: xyz copies
   // rewritten}}: independent faces one per face corner at v, every other one exactly 1.
@@ -355,6 +367,14 @@ export class Mesh {
     return { visited, checksum };
   }
 
+  // Benchmark only: times newell_normals inside the module (no copy out), the way the
+  // native benchmark does; {seconds: Float64Array (one per repetition), checksum}.
+  timeNormalsInCore(repetitions) {
+    integerIn(repetitions, 'repetitions', 1, 1000);
+    const { seconds, checksum } = unwrap(this.#raw.benchNormalsInCore(this.#live(), repetitions));
+    return { seconds, checksum };
+  }
+
   // Bytes held by the winged-edge tables (vertex, edge and face tables).
   bytes() { return unwrap(this.#raw.meshBytes(this.#live())).bytes; }
 
@@ -423,6 +443,14 @@ export function createMeshApi(raw) {
     memoryUsage() {
       const { linearBytes, heapInUse } = unwrap(raw.memoryUsage());
       return { linearBytes, heapInUse };
+    },
+    // Benchmark only: copies the face set in once, then times the winged-edge build inside
+    // the module R times, as the native benchmark does: {seconds: Float64Array, checksum}.
+    timeBuildInCore(input, repetitions) {
+      integerIn(repetitions, 'repetitions', 1, 1000);
+      const { positions, faceOffsets, faceVertices } = indexedInput(input);
+      const { seconds, checksum } = unwrap(raw.benchBuildInCore(positions, faceOffsets, faceVertices, repetitions));
+      return { seconds, checksum };
     },
     // How many built meshes have not been disposed (for leak tests).
     liveMeshCount() {

@@ -23,5 +23,7 @@ glm::dvec3 newell_vector(const double* positions, const int32_t* corners, int32_
 std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh);
 // Unit normals by Newell's method, normals[3*f + k]; a degenerate face gets (0, 0, 0).
 void newell_normals(const WingedEdgeMesh& mesh, std::vector<double>& normals);
+// The same into out[0 .. 3F), which the caller owns (no allocation, no zero fill).
+void newell_normals(const WingedEdgeMesh& mesh, double* out);
 
 } // namespace wingspline::mesh
