@@ -136,7 +136,9 @@ function drawBase(painter, model, state, colors) {
   }
 }
 
-const baseCache = { key: null, canvas: null };
+const baseCache = { key: null, sceneKey: null, view: null, canvas: null, ms: 0, timer: 0 };
+const SLOW_BASE_MS = 30;     // a base picture slower than this is not redrawn while panning
+const SETTLE_MS = 200;       // ... but once the view has been still this long
 
 function drawBaseCached(painter, model, state, ctx) {
   const E = model.we.edges.length / 8;
@@ -146,9 +148,23 @@ function drawBaseCached(painter, model, state, ctx) {
   }
   const { width, height, dpr } = ctx.stage.size;
   const v = state.view;
-  const key = [model.topology, model.version, v.cx, v.cy, v.zoom, state.mode3d, state.rotation.yaw, state.rotation.pitch,
+  const sceneKey = [model.topology, model.version, state.mode3d, state.rotation.yaw, state.rotation.pitch,
     width, height, dpr, ctx.colors.background, ctx.colors.ink, painter.scale].join('|');
+  const key = `${sceneKey}|${v.cx}|${v.cy}|${v.zoom}`;
+  if (baseCache.key !== key && baseCache.sceneKey === sceneKey && baseCache.ms > SLOW_BASE_MS) {
+    // Pan or zoom of a big mesh: move the last picture with the view now, redraw it sharp
+    // when the view has settled (s_new = k s_old + offset, k = zoom / old zoom).
+    const old = baseCache.view;
+    const k = v.zoom / old.zoom;
+    const ox = width / 2 + (old.cx - v.cx) * v.zoom - k * width / 2;
+    const oy = height / 2 - (old.cy - v.cy) * v.zoom - k * height / 2;
+    painter.g.drawImage(baseCache.canvas, ox, oy, width * k, height * k);
+    clearTimeout(baseCache.timer);
+    baseCache.timer = setTimeout(() => { baseCache.sceneKey = null; ctx.render(); }, SETTLE_MS);
+    return;
+  }
   if (baseCache.key !== key) {
+    const t0 = performance.now();
     const canvas = baseCache.canvas ?? document.createElement('canvas');
     canvas.width = Math.round(width * dpr);
     canvas.height = Math.round(height * dpr);
@@ -156,8 +172,7 @@ function drawBaseCached(painter, model, state, ctx) {
     g.setTransform(dpr, 0, 0, dpr, 0, 0);
     g.clearRect(0, 0, width, height);
     drawBase(new CanvasPainter(g, painter.t, { scale: painter.scale, background: ctx.colors.background }), model, state, ctx.colors);
-    baseCache.key = key;
-    baseCache.canvas = canvas;
+    Object.assign(baseCache, { key, sceneKey, view: { ...v }, canvas, ms: performance.now() - t0 });
   }
   painter.g.drawImage(baseCache.canvas, 0, 0, width, height);
 }
