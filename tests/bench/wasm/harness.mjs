@@ -25,7 +25,7 @@ export function report({ task, input, n, seconds, checksum, unit = 'ns', build =
     task, build, input, n, repetitions: sorted.length,
     ns_per_unit_min: (sorted[0] * scale) / n,
     ns_per_unit_median: (sorted[Math.floor(sorted.length / 2)] * scale) / n,
-    checksum, ...extra,
+    checksum, ...(unit === 'ns' ? {} : { unit }), ...extra,
   };
   process.stdout.write(JSON.stringify(row) + '\n');
   return row;

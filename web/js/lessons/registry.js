@@ -7,7 +7,7 @@ export const lessons = [
     page: 'mesh.html',
     lectures: '000, 001, 003',
     summary: 'Independent faces, vertex and face tables, adjacency lists, edge lists and the winged edge; watch the CCW traversal around a vertex.',
-    ready: false,
+    ready: true,
   },
   {
     id: 'curves',

@@ -1,0 +1,227 @@
+// The mesh lesson (issue 4; lectures 000, 001, 003): one mesh, every representation of it
+// live, the winged-edge walks around a vertex and along a face animated as the slide tells
+// them, the representations' query costs and storage, and plane equations and normals.
+// The state is plain JSON (schema below); the model is what the core returned for it.
+import { number, integer, boolean, oneOf, text, list, object, nullable } from '../../app/schema.js';
+import { createMeshSource, MESH_KINDS } from './mesh-source.js';
+import { normaliseSteps, walkFrames } from './walk.js';
+import { drawMesh, viewRotation, projectAll, unprojectDelta, pickElement, LABEL_LIMIT } from './draw.js';
+import { setupPanels } from './panels.js';
+import { meshExports } from './exports.js';
+import { vLabel, fLabel, eLabel } from './labels.js';
+
+export const TABS = ['winged', 'faces', 'vertex-face', 'adjacency', 'edge-list', 'queries', 'storage', 'planes'];
+export const QUERY_KINDS = ['faces-around-vertex', 'edges-around-vertex', 'edges-of-face', 'neighbours-of-face', 'faces-of-edge'];
+const MAX_IMPORT_VERTICES = 200000;
+const MAX_IMPORT_FACES = 200000;
+
+const source = createMeshSource();
+
+const schema = {
+  meshKind: oneOf(...MESH_KINDS.map((k) => k.id)),
+  fanSize: integer({ min: 1, max: 64 }),
+  grid: object({ nx: integer({ min: 1, max: 400 }), ny: integer({ min: 1, max: 400 }) }),
+  sphere: object({ slices: integer({ min: 3, max: 400 }), stacks: integer({ min: 3, max: 300 }) }),
+  imported: nullable(object({
+    name: text({ maxLength: 120 }),
+    positions: list(number(), { min: 9, max: 3 * MAX_IMPORT_VERTICES }),
+    faces: list(list(integer({ min: 0, max: MAX_IMPORT_VERTICES }), { min: 3, max: 1000 }), { min: 1, max: MAX_IMPORT_FACES }),
+  })),
+  moved: list(object({ v: integer({ min: 0, max: 10000000 }), p: list(number(), { min: 3, max: 3 }) }), { max: 100000 }),
+  walk: oneOf('vertex', 'face'),
+  vertex: integer({ min: 0, max: 10000000 }),
+  face: integer({ min: 0, max: 10000000 }),
+  step: integer({ min: 0, max: 100000 }),
+  speed: number({ min: 0.25, max: 20 }),
+  tab: oneOf(...TABS),
+  query: object({ kind: oneOf(...QUERY_KINDS), vertex: integer({ min: 0, max: 10000000 }), face: integer({ min: 0, max: 10000000 }), edge: integer({ min: 0, max: 10000000 }) }),
+  mode3d: boolean(),
+  rotation: object({ yaw: number({ min: -100, max: 100 }), pitch: number({ min: -100, max: 100 }) }),
+  view: object({ cx: number(), cy: number(), zoom: number({ min: 1, max: 1e5 }) }),
+};
+
+function defaultState() {
+  return {
+    meshKind: 'lecture',
+    fanSize: 6,
+    grid: { nx: 4, ny: 3 },
+    sphere: { slices: 12, stacks: 6 },
+    imported: null,
+    moved: [],
+    walk: 'vertex',
+    vertex: 1, // v2: the slide's example
+    face: 0,
+    step: 0,
+    speed: 1.5,
+    tab: 'winged',
+    query: { kind: 'faces-around-vertex', vertex: 1, face: 0, edge: 2 },
+    mode3d: false,
+    rotation: { yaw: 0.6, pitch: 0.45 },
+    view: { cx: 1, cy: 0.5, zoom: 150 },
+  };
+}
+
+function checkState(state) {
+  if (state.meshKind === 'file' && !state.imported) return 'the state names an imported mesh but does not hold it';
+  return null;
+}
+
+// Per-topology and per-position caches, so a traversal step costs one frame lookup.
+const derived = { topology: -1, version: -1, viewKey: null, projected: null, zExtent: 0, we: null, counts: null, steps: new Map(), planes: null, lastChange: null };
+
+function wingedTables(entry) {
+  if (derived.topology !== entry.topology) {
+    Object.assign(derived, { topology: entry.topology, version: -1, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, lastChange: null });
+  }
+  if (derived.version !== entry.version) {
+    derived.version = entry.version;
+    derived.we = entry.mesh.wingedEdgeArrays();
+    derived.planes = null;
+    derived.reps = null;
+    derived.storage = null;
+  }
+  return derived.we;
+}
+
+function stepsOf(entry, kind, element) {
+  const key = `${kind}:${element}`;
+  if (!derived.steps.has(key)) {
+    const raw = kind === 'vertex' ? entry.mesh.traversalSteps(element) : entry.mesh.faceEdgeSteps(element);
+    derived.steps.set(key, walkFrames(kind, element, normaliseSteps(raw, kind)));
+  }
+  return derived.steps.get(key);
+}
+
+function compute(state, ctx) {
+  const { entry, changes } = source.sync(state, ctx.api);
+  const we = wingedTables(entry);
+  if (changes.length) derived.lastChange = changes[changes.length - 1];
+  const V = we.vertexEdge.length;
+  const F = we.faceEdge.length;
+  const E = we.edges.length / 8;
+  const walkKind = state.walk;
+  const walkElement = walkKind === 'vertex' ? Math.min(state.vertex, V - 1) : Math.min(state.face, F - 1);
+  const frames = walkElement >= 0 ? stepsOf(entry, walkKind, walkElement) : [];
+  const frame = frames[Math.min(state.step, frames.length - 1)] ?? null;
+  const R = viewRotation(state);
+  const viewKey = `${entry.topology}:${entry.version}:${R.join(',')}`;
+  if (derived.viewKey !== viewKey) {
+    let zExtent = 0;
+    for (let v = 0; v < V; v += 1) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
+    Object.assign(derived, { viewKey, zExtent, projected: projectAll(we.positions, R) });
+  }
+  return {
+    mesh: entry.mesh,
+    topology: entry.topology,
+    version: entry.version,
+    positions: we.positions,
+    projected: derived.projected,
+    rotation: R,
+    faces: entry.faces,
+    we,
+    V, E, F,
+    counts: derived.counts,
+    is3dMesh: derived.zExtent > 0,
+    mode3d: state.mode3d,
+    walkKind, walkElement, frames, frame,
+    stepIndex: Math.min(state.step, Math.max(0, frames.length - 1)),
+    lastChange: derived.lastChange,
+    derived,
+  };
+}
+
+function fitView(model, stage) {
+  if (!model) return defaultState().view;
+  const P = model.projected;
+  let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
+  for (let i = 0; i < P.length; i += 3) {
+    minX = Math.min(minX, P[i]); maxX = Math.max(maxX, P[i]);
+    minY = Math.min(minY, P[i + 1]); maxY = Math.max(maxY, P[i + 1]);
+  }
+  // The canvas's laid-out size (the stage's cached size lags behind the first layout).
+  const rect = stage.canvas.getBoundingClientRect();
+  const margin = 0.18; // room for the labels beside the vertices
+  const w = Math.max(maxX - minX, 1e-9);
+  const hgt = Math.max(maxY - minY, 1e-9);
+  const zoom = Math.min(rect.width / (w * (1 + 2 * margin)), rect.height / (hgt * (1 + 2 * margin)));
+  return { cx: (minX + maxX) / 2, cy: (minY + maxY) / 2, zoom: Math.min(1e5, Math.max(1, zoom)) };
+}
+
+function handles(model) {
+  if (!model || model.V > 20000) return [];
+  const out = [];
+  for (let v = 0; v < model.V; v += 1) out.push({ id: `v${v}`, x: model.projected[3 * v], y: model.projected[3 * v + 1], label: vLabel(v) });
+  return out;
+}
+
+// A vertex dragged in the view plane moves by R^T (dx, dy, 0) in the world (in 2D: x, y).
+function moveHandle(state, id, x, y, model) {
+  const v = Number(id.slice(1));
+  if (!model || !Number.isInteger(v) || v >= model.V) return null;
+  const [dx, dy, dz] = unprojectDelta(model.rotation, x - model.projected[3 * v], y - model.projected[3 * v + 1]);
+  const p = [model.positions[3 * v] + dx, model.positions[3 * v + 1] + dy, model.positions[3 * v + 2] + dz];
+  const moved = state.moved.filter((m) => m.v !== v).concat([{ v, p }]);
+  return { ...state, moved };
+}
+
+function describe(model, state) {
+  if (!model) return 'No mesh.';
+  const kind = MESH_KINDS.find((k) => k.id === state.meshKind)?.label ?? state.meshKind;
+  const labels = model.V <= LABEL_LIMIT ? 'Vertices, directed edges (arrows from S to E) and faces are labelled as on the slides.' : 'Too many elements for labels.';
+  const walk = model.frame ? ` Walk ${state.walk === 'vertex' ? `around ${vLabel(model.walkElement)}` : `along ${fLabel(model.walkElement)}`}, step ${model.stepIndex} of ${model.frames.length - 1}: ${model.frame.text}` : '';
+  return `${kind}: ${model.V} vertices, ${model.E} edges, ${model.F} faces, ${state.mode3d ? '3D view' : '2D view'}. ${labels}${walk}`;
+}
+
+// Importers: the core parses (its message names the line); the page keeps its mesh when
+// parsing or building fails, because the shell only replaces the state after compute.
+function importer(format) {
+  return (textContent, state, name, ctx) => {
+    const parsed = ctx.api.parseMesh(textContent, { format });
+    const positions = Array.from(parsed.positions);
+    const faces = (parsed.faces ?? []).map((f) => Array.from(f));
+    // Every problem, not only the first: the panel lists them with the elements involved.
+    const report = ctx.api.validateMesh({ positions, faces });
+    const errors = report.problems.filter((p) => p.severity === 'error');
+    ctx.meshPanels?.showReport(name, report.problems);
+    if (errors.length) {
+      throw Object.assign(new Error(`${errors[0].message}${errors.length > 1 ? ` (and ${errors.length - 1} more problem${errors.length > 2 ? 's' : ''}, listed in the validation report)` : ''}`), { code: errors[0].code });
+    }
+    if (positions.length / 3 > MAX_IMPORT_VERTICES || faces.length > MAX_IMPORT_FACES) {
+      throw Object.assign(new Error(`${name} has ${positions.length / 3} vertices and ${faces.length} faces; this page imports up to ${MAX_IMPORT_VERTICES} of each`), { code: 'too-large' });
+    }
+    return { ...state, meshKind: 'file', imported: { name: name.slice(0, 120), positions, faces }, moved: [], vertex: 0, face: 0, step: 0, query: { ...state.query, vertex: 0, face: 0, edge: 0 } };
+  };
+}
+
+export const meshLesson = {
+  id: 'mesh',
+  title: 'Mesh representations',
+  stateVersion: 1,
+  schema,
+  defaultState,
+  checkState,
+  compute,
+  setup: (ctx) => setupPanels(ctx),
+  update: (model, state, ctx) => ctx.meshPanels?.update(model, state),
+  draw: (painter, model, state, ctx) => {
+    drawMesh(painter, model, state, ctx);
+    ctx.meshPanels?.afterDraw(model, state);
+  },
+  handles,
+  moveHandle,
+  describe,
+  fitView,
+  onSelect(id, ctx) {
+    if (id === null) return;
+    const v = Number(String(id).slice(1));
+    const state = ctx.state;
+    if (state.walk === 'vertex' && state.vertex !== v) ctx.commit({ ...state, vertex: v, step: 0 }, { history: false });
+  },
+  click(x, y, ctx, event) {
+    return ctx.meshPanels?.canvasClick(x, y, event) ?? false;
+  },
+  pick: (model, x, y, zoom) => pickElement(model, x, y, zoom),
+  exports: meshExports,
+  importers: { off: importer('off'), obj: importer('obj') },
+  labels: { vLabel, eLabel, fLabel },
+};

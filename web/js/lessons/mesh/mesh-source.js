@@ -1,0 +1,128 @@
+// From the lesson state to a live winged-edge mesh in the core. The mesh handle is kept
+// between computes (a traversal step, a hover or a view change must not rebuild a
+// 10,000-face structure); it is rebuilt only when the mesh choice changes, and the old one
+// is disposed only after the new one was accepted, so a refused file keeps the page's mesh.
+// Moved vertices are applied with setVertexPosition, which reports per representation how
+// many stored entries had to change (lecture 000: independent faces rewrite every copy).
+
+export const MESH_KINDS = [
+  { id: 'lecture', label: 'Lecture example (v1..v5, lecture 000)' },
+  { id: 'foley', label: 'Foley example (V1..V4, lecture 001)' },
+  { id: 'tetrahedron', label: 'Tetrahedron' },
+  { id: 'cube', label: 'Cube (quads)' },
+  { id: 'fan', label: 'Open fan' },
+  { id: 'grid', label: 'Grid' },
+  { id: 'sphere', label: 'UV sphere' },
+  { id: 'file', label: 'Your file (OFF/OBJ)' },
+];
+
+// The key that identifies one topology + base geometry: equal keys share one core mesh.
+export function sourceKey(state) {
+  switch (state.meshKind) {
+    case 'fan': return `fan:${state.fanSize}`;
+    case 'grid': return `grid:${state.grid.nx}x${state.grid.ny}`;
+    case 'sphere': return `sphere:${state.sphere.slices}x${state.sphere.stacks}`;
+    case 'file': return state.imported ? importedKey(state.imported) : 'file:none';
+    default: return state.meshKind;
+  }
+}
+
+// The imported mesh rides along unchanged from state to state (spread copies share it), so
+// its key is hashed once per object, not on every walk step.
+const importedKeys = new WeakMap();
+function importedKey(imported) {
+  if (!importedKeys.has(imported)) importedKeys.set(imported, `file:${imported.name}:${imported.faces.length}:${hashPositions(imported)}`);
+  return importedKeys.get(imported);
+}
+
+function hashPositions({ positions, faces }) {
+  let h = 2166136261;
+  const mix = (x) => { h = Math.imul(h ^ (Math.round(x * 1e6) | 0), 16777619); };
+  for (const x of positions) mix(x);
+  for (const f of faces) { mix(f.length); for (const v of f) mix(v); }
+  return (h >>> 0).toString(36);
+}
+
+// Faces as plain arrays, whatever container the core used (arrays, or CSR offsets).
+export function faceList(data) {
+  if (Array.isArray(data.faces)) return data.faces.map((f) => Array.from(f));
+  const { faceOffsets, faceVertices } = data;
+  const out = [];
+  for (let f = 0; f + 1 < faceOffsets.length; f += 1) out.push(Array.from(faceVertices.subarray(faceOffsets[f], faceOffsets[f + 1])));
+  return out;
+}
+
+// The indexed face set (and, for the slides' meshes, the slide's numbering) of a state.
+export function sourceOf(state, api) {
+  switch (state.meshKind) {
+    case 'lecture': return api.lectureExample();
+    case 'foley': return api.foleyExample();
+    case 'tetrahedron': return api.generateMesh('tetrahedron');
+    case 'cube': return api.generateMesh('cube');
+    case 'fan': return api.generateMesh('fan', { n: state.fanSize });
+    case 'grid': return api.generateMesh('grid', { nx: state.grid.nx, ny: state.grid.ny });
+    case 'sphere': return api.generateMesh('sphere', { slices: state.sphere.slices, stacks: state.sphere.stacks });
+    case 'file': {
+      if (!state.imported) {
+        const err = new Error('No file has been imported yet: use Import (or drop an .off or .obj file on the page).');
+        err.code = 'no-file';
+        throw err;
+      }
+      return { positions: Float64Array.from(state.imported.positions), faces: state.imported.faces };
+    }
+    default: throw Object.assign(new Error(`unknown mesh ${state.meshKind}`), { code: 'unknown-mesh' });
+  }
+}
+
+const POSITION_EPS = 0; // positions are compared exactly: the state holds the doubles the core got
+
+export function createMeshSource() {
+  let live = null; // { key, mesh, base: Float64Array, faces, applied: Map<v, [x,y,z]>, version }
+
+  function build(state, api) {
+    const key = sourceKey(state);
+    if (live && live.key === key) return live;
+    const source = sourceOf(state, api);
+    const faces = faceList(source);
+    const positions = Float64Array.from(source.positions);
+    const spec = { positions, faces };
+    for (const field of ['edges', 'vertexEdges', 'faceEdges']) {
+      if (source[field] && source[field].length) spec[field] = source[field];
+    }
+    const mesh = api.buildMesh(spec);
+    const previous = live;
+    live = { key, mesh, base: positions, faces, applied: new Map(), version: 0, topology: (previous?.topology ?? 0) + 1 };
+    previous?.mesh.dispose();
+    return live;
+  }
+
+  // Brings the core's positions to base + state.moved; returns the change reports.
+  function applyMoves(state) {
+    const wanted = new Map(state.moved.map((m) => [m.v, m.p]));
+    const changes = [];
+    const vertexCount = live.base.length / 3;
+    for (const v of wanted.keys()) {
+      if (v >= vertexCount) throw Object.assign(new Error(`moved vertex v${v + 1} does not exist in this mesh (it has ${vertexCount} vertices)`), { code: 'invalid-element' });
+    }
+    const targets = new Set([...wanted.keys(), ...live.applied.keys()]);
+    for (const v of targets) {
+      const p = wanted.get(v) ?? [live.base[3 * v], live.base[3 * v + 1], live.base[3 * v + 2]];
+      const now = live.applied.get(v) ?? [live.base[3 * v], live.base[3 * v + 1], live.base[3 * v + 2]];
+      if (Math.abs(p[0] - now[0]) <= POSITION_EPS && Math.abs(p[1] - now[1]) <= POSITION_EPS && Math.abs(p[2] - now[2]) <= POSITION_EPS) continue;
+      changes.push({ vertex: v, changed: live.mesh.setVertexPosition(v, p) });
+      if (wanted.has(v)) live.applied.set(v, p.slice()); else live.applied.delete(v);
+    }
+    if (changes.length) live.version += 1;
+    return changes;
+  }
+
+  return {
+    // The live mesh for this state (built or reused, moves applied).
+    sync(state, api) {
+      const entry = build(state, api);
+      const changes = applyMoves(state);
+      return { entry, changes };
+    },
+    get live() { return live; },
+  };
+}

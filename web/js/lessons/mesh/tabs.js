@@ -1,0 +1,329 @@
+// The representations of one mesh as live tables (lecture 000: independent faces, vertex
+// and face tables, adjacency lists, winged edge; lecture 001: pointers to an edge list), the
+// queries compared, storage with the lectures' pros and cons, and plane equations. Tables
+// are virtual (virtual-table.js): a 100,000-face mesh only builds the rows in view, and the
+// adjacency rows ask the core only for those rows.
+import { h } from '../../app/dom.js';
+import { createVirtualTable } from './virtual-table.js';
+import { EDGE_COLUMNS } from './walk.js';
+import { num } from './labels.js';
+
+const sub = (letter, i) => (i >= 0 ? h('span', { class: 'lbl' }, letter, h('sub', {}, String(i + 1))) : '');
+const V = (i) => sub('v', i);
+const E = (i) => sub('e', i);
+const F = (i) => sub('F', i);
+const lambda = (node) => (node === '' ? 'λ' : node);
+const triple = (p) => `(${num(p[0])}, ${num(p[1])}, ${num(p[2])})`;
+// Representation tables longer than this show their first rows and say so (the winged-edge
+// tables, read as typed arrays, are never cut).
+export const REPRESENTATION_ROWS = 3000;
+const listOf = (indices, label) => {
+  const items = Array.from(indices).filter((i) => i >= 0);
+  const out = [];
+  items.forEach((i, k) => { if (k) out.push(' '); out.push(label(i)); });
+  return out.length ? out : '—';
+};
+
+// Lectures 000 (✓/✗ bullets) and 003 (polygon list / vertex list / edge list), quoted.
+export const PROS_CONS = {
+  'independent-faces': { title: 'Independent faces (polygon list)', pros: ['simplest representation (003)'],
+    cons: ['redundant vertices: changing a vertex changes each instance (000)', 'no efficient/precise vertex-adjacency info (000)', 'shared edges are drawn twice (003)'] },
+  'vertex-face-tables': { title: 'Vertex and face tables (vertex list)', pros: ['shared vertices: changing a vertex changes a single point (000)', 'compact and moving vertices is easy (003)'],
+    cons: ['no efficient adjacency info (000)', 'difficult to find polygons that share an edge (003)'] },
+  'adjacency-lists': { title: 'Adjacency lists', pros: ['efficient adjacency info (000)'], cons: ['extra storage (000)', 'variable size arrays (000)'] },
+  'partial-adjacency-lists': { title: 'Partial adjacency lists', pros: ['efficient adjacency info (000)'], cons: ['extra storage (000)', 'variable size arrays (000)'] },
+  'edge-list': { title: 'Pointers to an edge list (Foley, 001)', pros: ['shared edges are not drawn twice (003)', 'adjacent polygons are readily apparent from the edge records (003)'],
+    cons: ['which edges are incident to a vertex is not easy: all edges must be inspected (001)', 'takes up a lot of storage (003)'] },
+  'winged-edge': { title: 'Winged edge', pros: ['all adjacencies in O(1) time', 'little extra storage', 'fixed-size records', 'supports polygonal faces'],
+    cons: ['mesh needs to be oriented'] },
+};
+
+const SHORT_NAMES = {
+  'vertex-face-tables': 'vertex and face tables', 'adjacency-lists': 'adjacency lists', 'partial-adjacency-lists': 'partial adjacency lists',
+  'edge-list': 'edge list', 'winged-edge': 'winged edge',
+};
+
+export function createRepresentationTabs(ctx, labels) {
+  const tabIds = Object.keys(labels);
+  const tablist = h('div', { class: 'mesh-tabs', role: 'tablist', 'aria-label': 'Representations' });
+  const panels = {};
+  const buttons = {};
+  for (const id of tabIds) {
+    buttons[id] = h('button', { type: 'button', role: 'tab', id: `tab-${id}`, 'aria-controls': `tabpanel-${id}`, 'data-tab': id,
+      onclick: () => ctx.commit({ ...ctx.state, tab: id }, { history: false }) }, labels[id]);
+    panels[id] = h('div', { role: 'tabpanel', id: `tabpanel-${id}`, 'aria-labelledby': `tab-${id}`, class: 'mesh-tabpanel', hidden: true });
+    tablist.append(buttons[id]);
+  }
+  tablist.addEventListener('keydown', (event) => {
+    if (event.key !== 'ArrowRight' && event.key !== 'ArrowLeft') return;
+    event.stopPropagation();
+    event.preventDefault();
+    const i = tabIds.indexOf(ctx.state.tab);
+    const next = tabIds[(i + (event.key === 'ArrowRight' ? 1 : -1) + tabIds.length) % tabIds.length];
+    ctx.commit({ ...ctx.state, tab: next }, { history: false });
+    buttons[next].focus();
+  });
+  const root = h('section', { class: 'mesh-representations', 'aria-label': 'Representations' }, tablist, ...Object.values(panels));
+
+  let model = null;
+  const rep = (name) => model.derived.reps[name];
+  const hoverRow = (kind) => (index) => { ctx.ui.meshHover = { kind, index }; markElements(); ctx.render(); };
+  const leave = () => { ctx.ui.meshHover = null; markElements(); ctx.render(); };
+  const pickRow = (kind) => (index) => ctx.meshPanels.pickElement({ kind, index });
+  const table = (spec) => createVirtualTable({ onRowEnter: hoverRow(spec.kind), onRowLeave: leave, onRowClick: pickRow(spec.kind), ...spec });
+
+  // ------------------------------------------------------------ winged edge (lecture 000)
+  const tables = {
+    wingedVertex: table({ id: 'we-vertex-table', kind: 'vertex', caption: 'VERTEX TABLE', head: [['', 'x', 'y', 'z', 'edge']],
+      rowLabel: V, row: (v) => [num(model.positions[3 * v]), num(model.positions[3 * v + 1]), num(model.positions[3 * v + 2]), E(model.we.vertexEdge[v])] }),
+    wingedEdge: table({ id: 'we-edge-table', kind: 'edge', caption: 'EDGE TABLE',
+      head: [[{ text: '', colspan: 5 }, { text: 'S', colspan: 2 }, { text: 'E', colspan: 2 }], ['', 'S', 'E', 'L', 'R', 'L', 'R', 'L', 'R']],
+      rowLabel: E, row: (e) => {
+        const r = model.we.edges.subarray(8 * e, 8 * e + 8);
+        return [V(r[0]), V(r[1]), F(r[2]), F(r[3]), E(r[4]), E(r[5]), E(r[6]), E(r[7])];
+      } }),
+    wingedFace: table({ id: 'we-face-table', kind: 'face', caption: 'FACE TABLE', head: [['', 'edge']], rowLabel: F, row: (f) => [E(model.we.faceEdge[f])] }),
+    // ---------------------------------------------------------- independent faces (000)
+    // These tables show the core's own arrays of each representation (mesh.representations),
+    // so a moved vertex shows up in every copy the core had to rewrite.
+    independent: table({ id: 'independent-face-table', kind: 'face', caption: 'FACE TABLE (each face lists vertex coordinates)',
+      head: [['', 'corners (x, y, z)']], rowLabel: F, row: (f) => rep('independent-faces').faces[f].map(triple) }),
+    // ---------------------------------------------------------- vertex and face tables (000)
+    vfVertex: table({ id: 'vf-vertex-table', kind: 'vertex', caption: 'VERTEX TABLE', head: [['', 'X', 'Y', 'Z']], rowLabel: V,
+      row: (v) => rep('vertex-face-tables').vertices[v].map((x) => num(x)) }),
+    vfFace: table({ id: 'vf-face-table', kind: 'face', caption: 'FACE TABLE (each face lists vertex references)', head: [['', 'vertices']], rowLabel: F,
+      row: (f) => rep('vertex-face-tables').faces[f].map((v) => V(v)) }),
+    // ---------------------------------------------------------- adjacency lists (000)
+    adjVertex: table({ id: 'adj-vertex-table', kind: 'vertex', caption: 'Adjacency lists: per vertex', head: [['', 'position', 'vertices', 'edges', 'faces']], rowLabel: V,
+      row: (v) => { const r = rep('adjacency-lists').vertices[v]; return [triple(r.position), listOf(r.vertices, V), listOf(r.edges, E), listOf(r.faces, F)]; } }),
+    adjEdge: table({ id: 'adj-edge-table', kind: 'edge', caption: 'Adjacency lists: per edge', head: [['', 'vertices', 'edges', 'faces']], rowLabel: E,
+      row: (e) => { const r = rep('adjacency-lists').edges[e]; return [listOf(r.vertices, V), listOf(r.edges, E), listOf(r.faces, F)]; } }),
+    adjFace: table({ id: 'adj-face-table', kind: 'face', caption: 'Adjacency lists: per face', head: [['', 'vertices', 'edges', 'faces']], rowLabel: F,
+      row: (f) => { const r = rep('adjacency-lists').faces[f]; return [listOf(r.vertices, V), listOf(r.edges, E), listOf(r.faces, F)]; } }),
+    partialVertex: table({ id: 'partial-vertex-table', kind: 'vertex', caption: 'Partial adjacency lists: per vertex', head: [['', 'position', 'edges']], rowLabel: V,
+      row: (v) => { const r = rep('partial-adjacency-lists').vertices[v]; return [triple(r.position), listOf(r.edges, E)]; } }),
+    partialEdge: table({ id: 'partial-edge-table', kind: 'edge', caption: 'Partial adjacency lists: per edge', head: [['', 'vertices', 'faces']], rowLabel: E,
+      row: (e) => { const r = rep('partial-adjacency-lists').edges[e]; return [listOf(r.vertices, V), listOf(r.faces, F)]; } }),
+    partialFace: table({ id: 'partial-face-table', kind: 'face', caption: 'Partial adjacency lists: per face', head: [['', 'edges']], rowLabel: F,
+      row: (f) => [listOf(rep('partial-adjacency-lists').faces[f].edges, E)] }),
+    // ---------------------------------------------------------- pointers to an edge list (001)
+    foleyVertex: table({ id: 'foley-vertex-table', kind: 'vertex', caption: 'V = (V₁, V₂, …)', head: [['', '(x, y, z)']], rowLabel: (v) => sub('V', v),
+      row: (v) => [triple(rep('edge-list').vertices[v])] }),
+    foleyEdge: table({ id: 'foley-edge-table', kind: 'edge', caption: 'Eᵢ = (V₁, V₂, P₁, P₂)   (λ: no polygon on that side)', head: [['', 'V₁', 'V₂', 'P₁', 'P₂']], rowLabel: (e) => sub('E', e),
+      row: (e) => {
+        const r = rep('edge-list').edges[e];
+        return [sub('V', r.v1), sub('V', r.v2), lambda(sub('P', r.p1)), lambda(sub('P', r.p2))];
+      } }),
+    foleyPolygon: table({ id: 'foley-polygon-table', kind: 'face', caption: 'Pᵢ = (E…)', head: [['', 'edges']], rowLabel: (f) => sub('P', f),
+      row: (f) => listOf(rep('edge-list').polygons[f], (e) => sub('E', e)) }),
+    // ---------------------------------------------------------- planes (001, 003)
+    planes: table({ id: 'plane-table', kind: 'face', caption: 'Ax + By + Cz + D = 0 per face',
+      head: [[{ text: '', colspan: 1 }, { text: 'cross product P₁P₂ × P₁P₃ (001)', colspan: 4 }, { text: 'Newell (003)', colspan: 4 }, { text: '', colspan: 2 }],
+        ['', 'A', 'B', 'C', 'D', 'A', 'B', 'C', 'D', 'unit normal (Newell)', 'planarity residual']],
+      rowLabel: F, row: (f) => {
+        const p = model.derived.planes[f];
+        const n = model.derived.normals;
+        return [...p.cross.map((x) => num(x)), ...p.newell.map((x) => num(x)), `(${num(n[3 * f], 3)}, ${num(n[3 * f + 1], 3)}, ${num(n[3 * f + 2], 3)})`, num(p.residual, 3)];
+      } }),
+  };
+
+  // ------------------------------------------------------------ fill the panels
+  const changeNote = (id) => h('p', { class: 'change-note', id, 'aria-live': 'polite' });
+  const notes = { faces: changeNote('change-independent'), vf: changeNote('change-vertex-face'), winged: changeNote('change-winged') };
+  panels.winged.append(h('p', { class: 'hint' }, 'Baumgart\'s winged edge as on the slide: S, E (start and end vertex), L, R (left and right face) and the four wings: the left and right edge at the Start, and at the End. Boundary edges have one face; their wings treat the boundary as a face.'),
+    notes.winged, tables.wingedVertex.root, tables.wingedEdge.root, tables.wingedFace.root);
+  panels.faces.append(h('p', { class: 'hint' }, 'Each face lists vertex coordinates (lecture 000): changing a vertex requires changing the coordinates of each instance. Drag a vertex and count.'),
+    notes.faces, tables.independent.root);
+  panels['vertex-face'].append(h('p', { class: 'hint' }, 'Each face lists vertex references: changing a vertex changes a single point.'), notes.vf, tables.vfVertex.root, tables.vfFace.root);
+  panels.adjacency.append(h('p', { class: 'hint' }, 'Lecture 000: store all vertex, edge and face adjacencies (the core\'s own arrays); the partial lists keep only the incidences of neighbouring dimensions.'),
+    tables.adjVertex.root, tables.adjEdge.root, tables.adjFace.root,
+    h('h3', {}, 'Partial adjacency lists'), tables.partialVertex.root, tables.partialEdge.root, tables.partialFace.root);
+  panels['edge-list'].append(h('p', { class: 'hint' }, 'Foley & van Dam: each edge stores its two vertices and the polygons on either side; a polygon is a list of pointers to edges.'),
+    tables.foleyVertex.root, tables.foleyEdge.root, tables.foleyPolygon.root);
+
+  const queryPanel = createQueryPanel(ctx);
+  panels.queries.append(queryPanel.root);
+  const storageBody = h('div', { id: 'storage-body' });
+  panels.storage.append(storageBody);
+  const planeNote = h('p', { class: 'hint', id: 'plane-note' });
+  panels.planes.append(h('p', { class: 'hint' }, 'From three vertices: (A, B, C) = P₁P₂ × P₁P₃ and D by substitution (001). Newell (003): A = ½ Σ (zᵢ + zᵢ₊₁)(yᵢ − yᵢ₊₁), B = ½ Σ (xᵢ + xᵢ₊₁)(zᵢ − zᵢ₊₁), C = ½ Σ (yᵢ + yᵢ₊₁)(xᵢ − xᵢ₊₁).'),
+    planeNote, tables.planes.root);
+
+  const tabTables = {
+    winged: ['wingedVertex', 'wingedEdge', 'wingedFace'], faces: ['independent'], 'vertex-face': ['vfVertex', 'vfFace'],
+    adjacency: ['adjVertex', 'adjEdge', 'adjFace', 'partialVertex', 'partialEdge', 'partialFace'], 'edge-list': ['foleyVertex', 'foleyEdge', 'foleyPolygon'], planes: ['planes'],
+  };
+  const tableKind = {
+    wingedVertex: 'vertex', wingedEdge: 'edge', wingedFace: 'face', independent: 'face', vfVertex: 'vertex', vfFace: 'face',
+    adjVertex: 'vertex', adjEdge: 'edge', adjFace: 'face', partialVertex: 'vertex', partialEdge: 'edge', partialFace: 'face', foleyVertex: 'vertex', foleyEdge: 'edge', foleyPolygon: 'face', planes: 'face',
+  };
+  const REPRESENTATION_TABS = ['faces', 'vertex-face', 'adjacency', 'edge-list'];
+  const REPRESENTATION_TABLES = REPRESENTATION_TABS.flatMap((t) => tabTables[t]);
+  const counts = { vertex: () => model.V, edge: () => model.E, face: () => model.F };
+  const drawnVersion = {};
+
+  // Walk marks (current row, the column read) plus the hovered and picked element.
+  function markElements({ reveal = false } = {}) {
+    if (!model) return;
+    const frame = model.frame;
+    const tab = ctx.state.tab;
+    for (const name of tabTables[tab] ?? []) {
+      const kind = tableKind[name];
+      const rows = { 'is-hovered': [], 'is-picked': [], 'is-highlighted': [] };
+      const read = [];
+      const compared = [];
+      if (ctx.ui.meshHover?.kind === kind) rows['is-hovered'].push(ctx.ui.meshHover.index);
+      if (ctx.ui.meshPick?.kind === kind) rows['is-picked'].push(ctx.ui.meshPick.index);
+      if (frame && tab === 'winged') {
+        const walkTable = frame.table === 'edge' ? 'wingedEdge' : frame.table === 'vertex' ? 'wingedVertex' : 'wingedFace';
+        if (walkTable === name) {
+          rows['is-highlighted'].push(frame.row);
+          if (frame.read !== null) read.push([frame.row, frame.read]);
+          if (frame.compared !== null) compared.push([frame.row, frame.compared]);
+        }
+      }
+      tables[name].mark({ rows, read, compared });
+      if (reveal && ctx.ui.meshPick?.kind === kind) tables[name].reveal(ctx.ui.meshPick.index);
+      else if (frame && tab === 'winged' && rows['is-highlighted'].length) tables[name].reveal(frame.row);
+    }
+  }
+
+  function describeChange(change) {
+    if (!change) return 'Drag a vertex: this line counts the stored entries each representation had to rewrite.';
+    const c = change.changed.changedEntries;
+    const label = `v${change.vertex + 1}`;
+    const others = Object.entries(c).filter(([name]) => name !== 'independent-faces')
+      .map(([name, n]) => `${(SHORT_NAMES[name] ?? name)} rewrote ${n}`).join(', ');
+    const copies = c['independent-faces'];
+    return `Last move of ${label}: independent faces rewrote ${copies} coordinate triple${copies === 1 ? '' : 's'} (one per face at ${label}); ${others}.`;
+  }
+
+  // Entries and bytes of each representation, counted by the core from its real arrays,
+  // next to the lectures' pros and cons.
+  function updateStorage() {
+    const c = model.counts;
+    if (!model.derived.storage) model.derived.storage = model.mesh.storage();
+    const storage = model.derived.storage;
+    const perFace = (bytes) => num(bytes / Math.max(1, c.faces), 4);
+    const rows = Object.entries(storage).map(([name, st]) => h('tr', { 'data-representation': name },
+      h('th', { scope: 'row' }, PROS_CONS[name]?.title ?? name), h('td', {}, st.entries.toLocaleString('en')), h('td', {}, st.bytes.toLocaleString('en')),
+      h('td', {}, perFace(st.bytes)), h('td', { class: 'arrays' }, st.arrays.map((a) => `${a.name}: ${a.entries.toLocaleString('en')} × ${a.bytesPerEntry} B`).join('; '))));
+    storageBody.replaceChildren(
+      h('p', {}, `V = ${c.vertices}, E = ${c.edges}, F = ${c.faces}; boundary edges ${c.boundaryEdges}, boundary loops ${c.boundaryLoops}; Euler characteristic V − E + F = ${c.euler}.`),
+      h('div', { class: 'table-wide' }, h('table', { class: 'data-table', id: 'storage-table' }, h('caption', {}, 'Storage of this mesh in each representation'),
+        h('thead', {}, h('tr', {}, ['representation', 'entries', 'bytes', 'bytes per face', 'arrays'].map((t) => h('th', { scope: 'col' }, t)))),
+        h('tbody', {}, rows))),
+      ...Object.entries(PROS_CONS).map(([name, r]) => h('div', { class: 'pros-cons', 'data-representation': name }, h('h3', {}, r.title),
+        h('ul', {}, r.pros.map((p) => h('li', { class: 'pro' }, h('span', { 'aria-label': 'advantage' }, '✓ '), p)),
+          r.cons.map((p) => h('li', { class: 'con' }, h('span', { 'aria-label': 'disadvantage' }, '✗ '), p))))),
+    );
+  }
+
+  // The core's arrays of the other representations, first rows only, once per position change.
+  function ensureRepresentations() {
+    if (!model.derived.reps) model.derived.reps = model.mesh.representations({ limit: REPRESENTATION_ROWS });
+  }
+
+  function ensurePlanes() {
+    if (!model.derived.planes) {
+      model.derived.planes = model.mesh.planes();
+      model.derived.normals = model.mesh.normals();
+    }
+    const worst = model.derived.planes.reduce((m, p) => Math.max(m, p.residual), 0);
+    planeNote.textContent = model.is3dMesh
+      ? `Largest planarity residual: ${num(worst, 3)} (0 for planar faces). The cross product uses only the first three vertices; Newell averages over all of them.`
+      : 'This mesh lies in the plane z = 0, so every normal is ±(0, 0, 1): choose the tetrahedron, cube or sphere, or drag in the 3D view, to see real planes.';
+  }
+
+  return {
+    root,
+    markElements,
+    update(next, state) {
+      model = next;
+      for (const id of tabIds) {
+        const on = state.tab === id;
+        buttons[id].setAttribute('aria-selected', String(on));
+        buttons[id].tabIndex = on ? 0 : -1;
+        panels[id].hidden = !on;
+      }
+      const dataKey = `${model.topology}:${model.version}`;
+      if (REPRESENTATION_TABS.includes(state.tab)) ensureRepresentations();
+      for (const name of tabTables[state.tab] ?? []) {
+        if (name === 'planes') ensurePlanes();
+        if (drawnVersion[name] !== dataKey) {
+          drawnVersion[name] = dataKey;
+          const total = counts[tableKind[name]]();
+          const shown = REPRESENTATION_TABLES.includes(name) ? Math.min(total, REPRESENTATION_ROWS) : total;
+          tables[name].refresh(shown, total);
+        }
+      }
+      const change = describeChange(model.lastChange);
+      for (const note of Object.values(notes)) note.textContent = change;
+      if (state.tab === 'storage') updateStorage();
+      if (state.tab === 'queries') queryPanel.update(model, state);
+      markElements();
+    },
+  };
+}
+
+// "Faces around v", "edges of F", "faces sharing e" (and two more): every representation
+// answers the same query in the core, which counts the table entries it read, so the
+// lecture's cost argument (O(output) for the winged edge, a scan for the face tables) is
+// visible as numbers.
+const QUERY_LABELS = {
+  'faces-around-vertex': ['faces around v', 'vertex', 'F'], 'edges-around-vertex': ['edges around v', 'vertex', 'e'],
+  'edges-of-face': ['edges of F', 'face', 'e'], 'neighbours-of-face': ['faces next to F', 'face', 'F'], 'faces-of-edge': ['faces sharing e', 'edge', 'F'],
+};
+const LETTER = { vertex: 'v', face: 'F', edge: 'e' };
+
+function createQueryPanel(ctx) {
+  const kind = h('select', { id: 'query-kind', 'aria-label': 'Query' }, Object.entries(QUERY_LABELS).map(([id, [label]]) => h('option', { value: id }, label)));
+  const element = h('input', { type: 'number', id: 'query-element', min: 1, step: 1, 'aria-label': 'Element number (1-based)' });
+  const prefix = h('span', { 'aria-hidden': 'true' }, 'v');
+  const result = h('div', { id: 'query-result', 'aria-live': 'polite' });
+  const limitOf = (model, f) => ({ vertex: model.V, face: model.F, edge: model.E }[f]);
+  kind.addEventListener('change', () => ctx.commit({ ...ctx.state, query: { ...ctx.state.query, kind: kind.value } }, { history: false }));
+  element.addEventListener('change', () => {
+    const f = QUERY_LABELS[ctx.state.query.kind][1];
+    const limit = limitOf(ctx.model, f);
+    const n = Number(element.value) - 1;
+    if (!Number.isInteger(n) || n < 0 || n >= limit) {
+      ctx.message.error(`Choose ${LETTER[f]}1 to ${LETTER[f]}${limit}`, 'invalid-element');
+      return;
+    }
+    ctx.commit({ ...ctx.state, query: { ...ctx.state.query, [f]: n } }, { history: false });
+  });
+  const root = h('div', { class: 'query-panel' },
+    h('div', { class: 'query-choice' }, h('label', {}, 'Query ', kind), ' ', prefix, element), result);
+
+  return {
+    root,
+    update(model, state) {
+      const q = state.query.kind;
+      const [, f, answerLetter] = QUERY_LABELS[q];
+      const index = Math.min(state.query[f], limitOf(model, f) - 1);
+      kind.value = q;
+      prefix.textContent = LETTER[f];
+      element.value = index + 1;
+      element.max = limitOf(model, f);
+      const key = `${model.topology}:${q}:${index}`;
+      if (model.derived.queryKey !== key) {
+        model.derived.queryKey = key;
+        model.derived.query = model.mesh.query(q, index);
+      }
+      const answers = model.derived.query;
+      const label = (i) => (i >= 0 ? `${answerLetter}${i + 1}` : 'none');
+      const text = (answer) => (answer.length ? Array.from(answer, label).join(', ') : '—');
+      const rows = Object.entries(answers).map(([name, r]) => h('tr', { 'data-representation': name },
+        h('th', { scope: 'row' }, PROS_CONS[name]?.title ?? name), h('td', {}, text(r.answer)), h('td', { class: 'entries-read' }, r.entriesRead.toLocaleString('en'))));
+      const cheapest = Math.min(...Object.values(answers).map((r) => r.entriesRead));
+      result.replaceChildren(
+        h('div', { class: 'table-wide' }, h('table', { class: 'data-table', id: 'query-table' },
+          h('caption', {}, `${QUERY_LABELS[q][0]} ${LETTER[f]}${index + 1}: each representation answers`),
+          h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'representation'), h('th', { scope: 'col' }, 'answer'), h('th', { scope: 'col' }, 'table entries read'))),
+          h('tbody', {}, rows))),
+        h('p', { class: 'hint' }, `Fewest entries read: ${cheapest.toLocaleString('en')}. The winged edge reads only the records along the answer (cost proportional to the output); a representation without adjacency has to scan its face table (cost proportional to the mesh).`),
+      );
+    },
+  };
+}

@@ -1,0 +1,138 @@
+// A table that stays fast for 100,000 rows: up to FULL_ROWS rows it is an ordinary table;
+// beyond that only the rows in the scrolled window (plus a margin) exist in the DOM, with
+// spacer rows above and below so the scroll bar is true to the whole table. Cells are
+// built with dom.js (text nodes only). Highlights are kept by row index, so a row scrolled
+// into view later still shows them.
+import { h } from '../../app/dom.js';
+
+const FULL_ROWS = 120;
+const WINDOW_MARGIN = 12;
+const FALLBACK_ROW_PX = 26;
+
+export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnter, onRowLeave, onRowClick }) {
+  const thead = h('thead', {}, head.map((cells) => h('tr', {}, cells.map((cell) =>
+    typeof cell === 'string' ? h('th', { scope: 'col' }, cell)
+      : h('th', { scope: cell.scope ?? 'col', colspan: cell.colspan, rowspan: cell.rowspan, class: cell.class }, cell.text)))));
+  const tbody = h('tbody', {});
+  const table = h('table', { class: 'data-table mesh-table', id, 'aria-rowcount': 0 }, h('caption', {}, caption), thead, tbody);
+  const scroller = h('div', { class: 'table-scroll', tabindex: 0, 'aria-label': caption }, table);
+  const note = h('p', { class: 'hint table-note', hidden: true });
+  const root = h('div', { class: 'table-block' }, scroller, note);
+
+  let count = 0;
+  let rowPx = FALLBACK_ROW_PX;
+  let rowMarks = new Map(); // row -> Set of class names (is-highlighted, is-hovered, is-picked)
+  let reads = new Map(); // row -> Set of column indices (td index, 1-based after the header cell)
+  let compares = new Map();
+  let first = 0;
+  let last = -1;
+  let pending = 0;
+  let measured = false;
+  let viewHeight = 0;
+  let scrollTopSeen = 0;
+
+  function cellsOf(i) {
+    const cells = row(i);
+    const rowEl = h('tr', { 'data-row': i, 'aria-rowindex': i + 2 },
+      h('th', { scope: 'row' }, rowLabel(i)),
+      cells.map((c) => h('td', {}, c)));
+    for (const name of rowMarks.get(i) ?? []) rowEl.classList.add(name);
+    for (const col of reads.get(i) ?? []) rowEl.children[col]?.classList.add('is-read');
+    for (const col of compares.get(i) ?? []) rowEl.children[col]?.classList.add('is-compared');
+    return rowEl;
+  }
+
+  function renderWindow() {
+    pending = 0;
+    if (count <= FULL_ROWS) {
+      first = 0;
+      last = count - 1;
+      const rows = [];
+      for (let i = 0; i < count; i += 1) rows.push(cellsOf(i));
+      tbody.replaceChildren(...rows);
+      return;
+    }
+    const top = scroller.scrollTop;
+    scrollTopSeen = top;
+    viewHeight = scroller.clientHeight || viewHeight || 400;
+    const height = viewHeight;
+    first = Math.max(0, Math.floor(top / rowPx) - WINDOW_MARGIN);
+    last = Math.min(count - 1, Math.ceil((top + height) / rowPx) + WINDOW_MARGIN);
+    const rows = [h('tr', { class: 'spacer', 'aria-hidden': 'true' }, h('td', { colspan: 99, class: 'spacer-cell' }))];
+    rows[0].firstChild.style.height = `${first * rowPx}px`;
+    for (let i = first; i <= last; i += 1) rows.push(cellsOf(i));
+    const bottom = h('tr', { class: 'spacer', 'aria-hidden': 'true' }, h('td', { colspan: 99, class: 'spacer-cell' }));
+    bottom.firstChild.style.height = `${(count - 1 - last) * rowPx}px`;
+    rows.push(bottom);
+    tbody.replaceChildren(...rows);
+    if (!measured) {
+      // One layout read, the first time: every row has the same height (CSS).
+      const sample = tbody.children[1];
+      if (sample?.offsetHeight) { rowPx = sample.offsetHeight; measured = true; renderWindow(); }
+    }
+  }
+
+  scroller.addEventListener('scroll', () => {
+    if (count > FULL_ROWS && !pending) pending = requestAnimationFrame(renderWindow);
+  });
+  const rowOf = (event) => {
+    const tr = event.target.closest?.('tr[data-row]');
+    return tr ? Number(tr.dataset.row) : null;
+  };
+  tbody.addEventListener('pointerover', (event) => { const i = rowOf(event); if (i !== null) onRowEnter?.(i); });
+  tbody.addEventListener('pointerleave', () => onRowLeave?.());
+  tbody.addEventListener('click', (event) => { const i = rowOf(event); if (i !== null) onRowClick?.(i); });
+
+  function rowElement(i) {
+    return tbody.querySelector(`tr[data-row="${i}"]`);
+  }
+
+  return {
+    root,
+    table,
+    // New data (same shape): rebuild the rows in view.
+    // `total` > `nextCount` when only the first rows were fetched: the note says so.
+    refresh(nextCount, total = nextCount) {
+      count = nextCount;
+      table.setAttribute('aria-rowcount', String(total + head.length));
+      note.hidden = count <= FULL_ROWS && total === count;
+      const cut = total > count ? ` Showing the first ${count.toLocaleString('en')} of ${total.toLocaleString('en')} rows; the winged-edge tab shows every row.` : '';
+      if (!note.hidden) note.textContent = (count > FULL_ROWS ? `${count.toLocaleString('en')} rows; only the rows in view are drawn (scroll to see the rest).` : '') + cut;
+      scroller.classList.toggle('is-virtual', count > FULL_ROWS);
+      renderWindow();
+    },
+    // Rows to tint and cells to outline: {rows: {className: [i...]}, read: [[row, col]...],
+    // compared: [[row, col]...]}.
+    mark({ rows = {}, read = [], compared = [] } = {}) {
+      for (const [i, names] of rowMarks) rowElement(i)?.classList.remove(...names);
+      for (const [i, cols] of reads) for (const c of cols) rowElement(i)?.children[c]?.classList.remove('is-read');
+      for (const [i, cols] of compares) for (const c of cols) rowElement(i)?.children[c]?.classList.remove('is-compared');
+      rowMarks = new Map();
+      reads = new Map();
+      compares = new Map();
+      for (const [name, list] of Object.entries(rows)) for (const i of list) rowMarks.set(i, new Set([...(rowMarks.get(i) ?? []), name]));
+      for (const [i, c] of read) reads.set(i, new Set([...(reads.get(i) ?? []), c]));
+      for (const [i, c] of compared) compares.set(i, new Set([...(compares.get(i) ?? []), c]));
+      for (const [i, names] of rowMarks) rowElement(i)?.classList.add(...names);
+      for (const [i, cols] of reads) for (const c of cols) rowElement(i)?.children[c]?.classList.add('is-read');
+      for (const [i, cols] of compares) for (const c of cols) rowElement(i)?.children[c]?.classList.add('is-compared');
+    },
+    // Scrolls the table (only) so that row i is visible.
+    reveal(i) {
+      if (i === null || i === undefined || i < 0 || i >= count) return;
+      if (count > FULL_ROWS) {
+        // Rows inside the drawn window (margin included) need no layout read at all.
+        const topRow = Math.ceil(scrollTopSeen / rowPx);
+        const bottomRow = Math.floor((scrollTopSeen + viewHeight) / rowPx) - 1;
+        if (i >= topRow && i <= bottomRow && i >= first && i <= last) return;
+        scroller.scrollTop = Math.max(0, i * rowPx - viewHeight / 3);
+        renderWindow();
+        return;
+      }
+      const el = rowElement(i);
+      if (!el) return;
+      const offset = el.offsetTop - scroller.scrollTop;
+      if (offset < 0 || offset + el.offsetHeight > scroller.clientHeight) scroller.scrollTop = Math.max(0, el.offsetTop - scroller.clientHeight / 3);
+    },
+  };
+}
