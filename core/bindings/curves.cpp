@@ -13,7 +13,6 @@
 #include "wingspline/curves/patch.h"
 #include "wingspline/curves/segment.h"
 
-#include <malloc.h>
 #include <string>
 #include <vector>
 
@@ -376,16 +375,11 @@ val interpolation_system(const val& spec) {
     });
 }
 
-// Bytes of the wasm heap in use (dlmalloc's count): the leak tests watch it across
-// thousands of failing calls.
-double heap_bytes_in_use() { return static_cast<double>(mallinfo().uordblks); }
-
 } // namespace
 } // namespace wingspline::bindings
 
 EMSCRIPTEN_BINDINGS(wingspline_curves) {
     using namespace wingspline::bindings;
-    emscripten::function("heapBytesInUse", &heap_bytes_in_use);
     emscripten::function("curveEvaluate", &curve_evaluate);
     emscripten::function("curveDomain", &curve_domain);
     emscripten::function("curveBlending", &curve_blending);

@@ -15,7 +15,6 @@
 #include <emscripten/emscripten.h>
 
 #include <algorithm>
-#include <malloc.h>
 #include <memory>
 #include <unordered_map>
 
@@ -552,16 +551,6 @@ val mesh_ring_walk(int32_t handle) {
     });
 }
 
-// {linearBytes: size of the wasm memory, heapInUse: bytes malloc has handed out}
-val memory_usage() {
-    return guarded([] {
-        val r = val::object();
-        r.set("linearBytes", static_cast<double>(__builtin_wasm_memory_size(0)) * 65536.0);
-        r.set("heapInUse", static_cast<double>(mallinfo().uordblks));
-        return r;
-    });
-}
-
 // ------------------------------------------------------------------ files
 
 val mesh_parse(const std::string& text, const std::string& format) {
@@ -635,5 +624,4 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshParse", &mesh_parse);
     emscripten::function("meshFormat", &mesh_format);
     emscripten::function("meshRingWalk", &mesh_ring_walk);
-    emscripten::function("memoryUsage", &memory_usage);
 }

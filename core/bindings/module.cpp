@@ -2,6 +2,8 @@
 // in their own translation units next to this one and follow boundary.h.
 #include "boundary.h"
 
+#include <malloc.h>
+
 #include "wingspline/curves/basis_matrix.h"
 #include "wingspline/version.h"
 
@@ -32,6 +34,16 @@ val hermite_from_constraints() {
     });
 }
 
+// {linearBytes: size of the wasm memory, heapInUse: bytes malloc has handed out}
+val memory_usage() {
+    return guarded([] {
+        val r = val::object();
+        r.set("linearBytes", static_cast<double>(__builtin_wasm_memory_size(0)) * 65536.0);
+        r.set("heapInUse", static_cast<double>(mallinfo().uordblks));
+        return r;
+    });
+}
+
 } // namespace
 } // namespace wingspline::bindings
 
@@ -39,4 +51,5 @@ EMSCRIPTEN_BINDINGS(wingspline_module) {
     emscripten::function("version", &wingspline::bindings::core_version);
     emscripten::function("basisMatrix", &wingspline::bindings::basis_matrix);
     emscripten::function("hermiteFromConstraints", &wingspline::bindings::hermite_from_constraints);
+    emscripten::function("memoryUsage", &wingspline::bindings::memory_usage);
 }

@@ -94,6 +94,13 @@ test('dragging v2 moves it in every table; independent faces rewrite one copy pe
   const vf = (await tableCells(page, 'vf-vertex-table'))[1];
   assert.deepEqual([vf[1], vf[2]], [x, y]);
   await screenshot(page, 'mesh-dragged');
+  // Undo puts v2 back: every table shows the coordinates from before the drag.
+  await page.click('#walk-title');
+  await press(page, 'Control+z');
+  assert.deepEqual(await page.evaluate(() => window.wingspline.state.moved), []);
+  // (undo restores the whole state before the drag, including its open tab)
+  assert.equal(await page.evaluate(() => window.wingspline.state.tab), 'winged');
+  assert.deepEqual((await tableCells(page, 'we-vertex-table'))[1], before);
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
@@ -356,6 +363,31 @@ test('exports: the edge table as CSV with the slide\'s rows, LaTeX with the two-
   const off = await exported('mesh.off');
   const parsed = await page.evaluate((text) => { const m = window.wingspline.api.parseMesh(text, { format: 'off' }); return { v: m.positions.length / 3, faces: m.faces }; }, off);
   assert.deepEqual(parsed, { v: 5, faces: [[0, 1, 2], [1, 3, 2], [1, 4, 3]] }, 'the slide\'s faces F1 = (v1 v2 v3), F2 = (v2 v4 v3), F3 = (v2 v5 v4)');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('Play runs the walk to its end by itself and stops there', async () => {
+  const page = await openLesson();
+  await page.fill('#walk-speed', '6');
+  await page.click('#walk-play');
+  await page.waitForFunction(() => window.wingspline.state.step === window.wingspline.model.frames.length - 1, null, { timeout: 10000 });
+  await settle(page);
+  assert.equal(await page.getAttribute('#walk-play', 'aria-pressed'), 'false', 'the player paused at the last step');
+  assert.equal(await currentLine(page), 4);
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('presentation mode, dark theme and a 1280 x 720 projector keep the page whole', async () => {
+  const page = await openLesson({ viewport: { width: 1280, height: 720 }, colorScheme: 'dark' });
+  await page.click('[data-action=present]');
+  await settle(page);
+  const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+  assert.ok(overflow <= 0, `no horizontal scrolling (overflow ${overflow}px)`);
+  const canvas = await page.$eval('#stage', (c) => c.getBoundingClientRect().height);
+  assert.ok(canvas >= 300, `the drawing keeps its room (${canvas}px)`);
+  await screenshot(page, 'mesh-present-dark-720p');
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });

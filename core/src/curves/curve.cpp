@@ -358,6 +358,10 @@ void CurveEvaluator::evaluate_polynomial(const double* params, std::size_t n, in
 
 namespace {
 
+// Per span of a cubic: 6 reciprocals for the Cox-de Boor triangle, 3 for the derivative
+// (CurveEvaluator::kCubicStride, the layout the constructor fills).
+constexpr int kReciprocalsPerSpan = 9;
+
 // The cubic Cox-de Boor triangle with the span's reciprocal knot differences (no division):
 // the same arithmetic as basis_functions_fixed<3> with a/b replaced by a*(1/b).
 inline void cubic_basis(int span, double u, const double* t, const double* inv, double* N) {
@@ -457,7 +461,7 @@ void spline_points_fixed_dim(const double* t, const double* cw, const double* in
     for (std::size_t j = 0; j < n; ++j) {
         const double u = params[j];
         span = track_span(t, first, last, span, u);
-        cubic_basis(span, u, t, inverse_differences + 9 * span, N);
+        cubic_basis(span, u, t, inverse_differences + kReciprocalsPerSpan * span, N);
         const double* c = cw + static_cast<std::size_t>(span - P) * D;
         double acc[D];
         for (int k = 0; k < D; ++k) acc[k] = N[0] * c[k];
@@ -488,7 +492,7 @@ void spline_d1_fixed(const double* t, const double* cw, const double* inverse_di
     for (std::size_t j = 0; j < n; ++j) {
         const double u = params[j];
         span = track_span(t, first, last, span, u);
-        cubic_basis_d1(span, u, t, inverse_differences + 9 * span, N, dN);
+        cubic_basis_d1(span, u, t, inverse_differences + kReciprocalsPerSpan * span, N, dN);
         const double* c = cw + static_cast<std::size_t>(span - P) * HD;
         double A[HD], dA[HD];
         for (int k = 0; k < HD; ++k) {

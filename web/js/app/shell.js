@@ -508,7 +508,8 @@ export async function runLesson(lesson) {
     get state() { return structuredClone(store.state); },
     get model() { return model; },
     get selected() { return ui.selected; },
-    handles: () => handles().map((x) => ({ id: x.id, label: x.label, x: x.x, y: x.y, draggable: x.draggable !== false, client: ctx.stage.toClient(x.x, x.y), ...ctx.stage.toClient(x.x, x.y) })),
+    // x, y: page (client) position to drag with page.mouse; world: the handle's coordinates.
+    handles: () => handles().map((x) => ({ id: x.id, label: x.label, world: { x: x.x, y: x.y }, draggable: x.draggable !== false, ...ctx.stage.toClient(x.x, x.y) })),
     toClient: (x, y) => ctx.stage.toClient(x, y),
     shareUrl: () => persister.shareUrl(store.state),
     flush: () => persister.flushNow(),

@@ -115,11 +115,6 @@ export function createCurvesApi(raw) {
       return { constraints: r.constraints, matrix: r.matrix };
     },
 
-    // Bytes of the wasm heap in use (malloc's count); tests use it to prove no leaks.
-    heapBytesInUse() {
-      return raw.heapBytesInUse();
-    },
-
     // Points of the curve: Float64Array, values[dim*j + k] for params[j].
     // options.out: a Float64Array of length dim * params.length to fill instead of
     // allocating a new one (a lesson redrawing on every pointer move reuses its buffer).

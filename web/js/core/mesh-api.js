@@ -439,11 +439,6 @@ export function createMeshApi(raw) {
       const { positions, faceOffsets, faceVertices } = indexedInput(input);
       return unwrap(raw.meshFormat(positions, faceOffsets, faceVertices, String(format))).text;
     },
-    // {linearBytes, heapInUse} of the wasm module (leak tests, mesh_memory).
-    memoryUsage() {
-      const { linearBytes, heapInUse } = unwrap(raw.memoryUsage());
-      return { linearBytes, heapInUse };
-    },
     // Benchmark only: copies the face set in once, then times the winged-edge build inside
     // the module R times, as the native benchmark does: {seconds: Float64Array, checksum}.
     timeBuildInCore(input, repetitions) {

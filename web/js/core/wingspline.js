@@ -3,6 +3,7 @@
 // page. It loads the wasm module once and returns a plain API object; the raw embind
 // names stay private to this folder.
 import createWingsplineCore from '../../wasm/wingspline-core.js';
+import { unwrap } from './errors.js';
 import { createMeshApi } from './mesh-api.js';
 import { createCurvesApi } from './curves-api.js';
 
@@ -26,6 +27,12 @@ function createApi(raw) {
   const version = raw.version();
   return Object.freeze({
     version,
+    // {linearBytes: size of the wasm memory, heapInUse: bytes malloc has handed out}; the
+    // leak tests of both cores watch heapInUse across thousands of calls.
+    memoryUsage() {
+      const { linearBytes, heapInUse } = unwrap(raw.memoryUsage());
+      return { linearBytes, heapInUse };
+    },
     ...createMeshApi(raw),
     ...createCurvesApi(raw),
   });

@@ -81,6 +81,21 @@ function edgeSeen(model, front, e) {
   return left < 0 || right < 0 || front[left] || front[right];
 }
 
+// Screen direction (x right, y up) for each vertex label: away from the faces around it, so
+// the label sits outside the mesh and off its edges.
+function labelDirections(model, P) {
+  const dir = new Float64Array(2 * (P.length / 3));
+  for (const face of model.faces) {
+    const [cx, cy] = centroid(face, P);
+    for (const v of face) { dir[2 * v] += P[3 * v] - cx; dir[2 * v + 1] += P[3 * v + 1] - cy; }
+  }
+  for (let v = 0; 2 * v < dir.length; v += 1) {
+    const len = Math.hypot(dir[2 * v], dir[2 * v + 1]);
+    if (len > 1e-12) { dir[2 * v] /= len; dir[2 * v + 1] /= len; } else { dir[2 * v] = Math.SQRT1_2; dir[2 * v + 1] = Math.SQRT1_2; }
+  }
+  return dir;
+}
+
 function drawBase(painter, model, state, colors) {
   const P = model.projected;
   const zoom = state.view.zoom;
@@ -101,7 +116,7 @@ function drawBase(painter, model, state, colors) {
   if (labels) {
     model.faces.forEach((face, f) => {
       const [x, y] = centroid(face, P);
-      painter.text(x, y, fLabel(f), { fill: colors.series[0], font: 16, weight: 700, halo: colors.background });
+      painter.text(x, y, fLabel(f), { fill: colors.series[2], font: 16, weight: 700, halo: colors.background });
     });
   }
   if (arrows) {
@@ -113,14 +128,17 @@ function drawBase(painter, model, state, colors) {
   }
   const V = P.length / 3;
   if (V <= LABEL_LIMIT) {
+    const away = labelDirections(model, P);
     for (let v = 0; v < V; v += 1) {
-      painter.circle(P[3 * v], P[3 * v + 1], 5, { fill: colors.series[0], stroke: colors.background, width: 1.5 });
-      painter.text(P[3 * v], P[3 * v + 1], vLabel(v), { fill: colors.series[0], font: 15, weight: 700, dx: 12, dy: -12, halo: colors.background });
+      painter.circle(P[3 * v], P[3 * v + 1], 5, { fill: colors.accent, stroke: colors.background, width: 1.5 });
+      painter.text(P[3 * v], P[3 * v + 1], vLabel(v), { fill: colors.accent, font: 15, weight: 700, dx: 18 * away[2 * v], dy: -18 * away[2 * v + 1], halo: colors.background });
     }
   }
 }
 
-const baseCache = { key: null, canvas: null };
+const baseCache = { key: null, sceneKey: null, view: null, canvas: null, ms: 0, timer: 0 };
+const SLOW_BASE_MS = 30;     // a base picture slower than this is not redrawn while panning
+const SETTLE_MS = 200;       // ... but once the view has been still this long
 
 function drawBaseCached(painter, model, state, ctx) {
   const E = model.we.edges.length / 8;
@@ -130,9 +148,23 @@ function drawBaseCached(painter, model, state, ctx) {
   }
   const { width, height, dpr } = ctx.stage.size;
   const v = state.view;
-  const key = [model.topology, model.version, v.cx, v.cy, v.zoom, state.mode3d, state.rotation.yaw, state.rotation.pitch,
+  const sceneKey = [model.topology, model.version, state.mode3d, state.rotation.yaw, state.rotation.pitch,
     width, height, dpr, ctx.colors.background, ctx.colors.ink, painter.scale].join('|');
+  const key = `${sceneKey}|${v.cx}|${v.cy}|${v.zoom}`;
+  if (baseCache.key !== key && baseCache.sceneKey === sceneKey && baseCache.ms > SLOW_BASE_MS) {
+    // Pan or zoom of a big mesh: move the last picture with the view now, redraw it sharp
+    // when the view has settled (s_new = k s_old + offset, k = zoom / old zoom).
+    const old = baseCache.view;
+    const k = v.zoom / old.zoom;
+    const ox = width / 2 + (old.cx - v.cx) * v.zoom - k * width / 2;
+    const oy = height / 2 - (old.cy - v.cy) * v.zoom - k * height / 2;
+    painter.g.drawImage(baseCache.canvas, ox, oy, width * k, height * k);
+    clearTimeout(baseCache.timer);
+    baseCache.timer = setTimeout(() => { baseCache.sceneKey = null; ctx.render(); }, SETTLE_MS);
+    return;
+  }
   if (baseCache.key !== key) {
+    const t0 = performance.now();
     const canvas = baseCache.canvas ?? document.createElement('canvas');
     canvas.width = Math.round(width * dpr);
     canvas.height = Math.round(height * dpr);
@@ -140,8 +172,7 @@ function drawBaseCached(painter, model, state, ctx) {
     g.setTransform(dpr, 0, 0, dpr, 0, 0);
     g.clearRect(0, 0, width, height);
     drawBase(new CanvasPainter(g, painter.t, { scale: painter.scale, background: ctx.colors.background }), model, state, ctx.colors);
-    baseCache.key = key;
-    baseCache.canvas = canvas;
+    Object.assign(baseCache, { key, sceneKey, view: { ...v }, canvas, ms: performance.now() - t0 });
   }
   painter.g.drawImage(baseCache.canvas, 0, 0, width, height);
 }
@@ -174,8 +205,15 @@ function drawWalk(painter, model, state, colors) {
     painter.polygon(faceXY(model.faces[model.walkElement], P), { fill: found, alpha: 0.18 });
   }
   if (frame.current >= 0 && !frame.done) highlightEdge(painter, model, frame.current, { stroke: current, width: 11, alpha: 0.55 });
+  const zoom = state.view.zoom;
+  const labelled = model.E <= LABEL_LIMIT;
   frame.found.forEach((e, k) => {
-    highlightEdge(painter, model, e, { stroke: found, width: 4.5 });
+    // Found edges keep their S -> E arrow and their label on top of the highlight.
+    painter.arrow(...edgeEnds(model, P, e, zoom), { stroke: found, width: 4.5 });
+    if (labelled) {
+      const s0 = model.we.edges[8 * e]; const t0 = model.we.edges[8 * e + 1];
+      painter.text((P[3 * s0] + P[3 * t0]) / 2, (P[3 * s0 + 1] + P[3 * t0 + 1]) / 2, eLabel(e), { fill: colors.ink, font: 13, weight: 700, halo: colors.background });
+    }
     const s = model.we.edges[8 * e]; const t = model.we.edges[8 * e + 1];
     const x = P[3 * s] + (P[3 * t] - P[3 * s]) * 0.7; const y = P[3 * s + 1] + (P[3 * t + 1] - P[3 * s + 1]) * 0.7;
     painter.circle(x, y, 10, { fill: found, stroke: colors.background, width: 1.5 });

@@ -22,9 +22,17 @@ export function sourceKey(state) {
     case 'fan': return `fan:${state.fanSize}`;
     case 'grid': return `grid:${state.grid.nx}x${state.grid.ny}`;
     case 'sphere': return `sphere:${state.sphere.slices}x${state.sphere.stacks}`;
-    case 'file': return state.imported ? `file:${state.imported.name}:${state.imported.faces.length}:${hashPositions(state.imported)}` : 'file:none';
+    case 'file': return state.imported ? importedKey(state.imported) : 'file:none';
     default: return state.meshKind;
   }
+}
+
+// The imported mesh rides along unchanged from state to state (spread copies share it), so
+// its key is hashed once per object, not on every walk step.
+const importedKeys = new WeakMap();
+function importedKey(imported) {
+  if (!importedKeys.has(imported)) importedKeys.set(imported, `file:${imported.name}:${imported.faces.length}:${hashPositions(imported)}`);
+  return importedKeys.get(imported);
 }
 
 function hashPositions({ positions, faces }) {

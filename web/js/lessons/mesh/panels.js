@@ -239,9 +239,9 @@ export function setupPanels(ctx) {
     const shown = frame ? frame.found.slice(-FOUND_SHOWN) : [];
     const skipped = frame ? frame.found.length - shown.length : 0;
     found.replaceChildren('Found so far: ',
-      ...(skipped ? [h('span', { class: 'hint' }, `(${skipped} earlier) `)] : []),
+      ...(skipped ? [h('span', { class: 'walk-none' }, `(${skipped} earlier) `)] : []),
       ...(shown.length ? shown.map((e, k) => h('span', { class: 'found-edge' }, `${skipped + k + 1}. e`, h('sub', {}, String(e + 1))))
-        : [h('span', { class: 'hint' }, 'none yet')]));
+        : [h('span', { class: 'walk-none' }, 'none yet')]));
     if (player.speed !== s.speed) player.setSpeed(s.speed);
   }
 
