@@ -222,3 +222,25 @@ test('keyboard: select a handle with ] and move it with the arrows', async () =>
   assert.match(await page.textContent('#stage-description'), /joint 1: C/);
   await page.context().close();
 });
+
+test('a third segment added under the C2 constraint joins with C2 at both joints', async () => {
+  const page = await openLab();
+  await page.selectOption('#constraint', 'C2');
+  await page.waitForFunction(() => window.wingspline.state.constraint === 'C2');
+  await page.click('#add-segment');
+  await page.waitForFunction(() => window.wingspline.model.segmentCount === 3);
+  const s = await state(page);
+  assert.equal(s.points.length, 12);
+  // Lecture 001/002: C2 needs equal second derivatives, 6 (L1 - 2 L2 + L3) = 6 (R0 - 2 R1 + R2).
+  for (const j of [1, 2]) {
+    const [, L1, L2, L3] = s.points.slice(4 * (j - 1), 4 * j);
+    const [R0, R1, R2] = s.points.slice(4 * j, 4 * j + 3);
+    for (let k = 0; k < 2; k += 1) assert.ok(Math.abs((L1[k] - 2 * L2[k] + L3[k]) - (R0[k] - 2 * R1[k] + R2[k])) < 1e-9);
+  }
+  for (const j of await joints(page)) { assert.equal(j.parametric, 2); assert.equal(j.geometric, 2); }
+  await page.click('#remove-segment');
+  await page.waitForFunction(() => window.wingspline.model.segmentCount === 2);
+  assert.equal(await page.isDisabled('#remove-segment'), true, 'two segments is the least with a joint');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

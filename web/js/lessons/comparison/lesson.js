@@ -2,6 +2,7 @@
 // uniform B-spline and Catmull-Rom at once; the lectures' comparison table checked live by
 // the core; basis conversion both ways; affine and perspective invariance measured.
 import { object, list, number, oneOf, integer, boolean } from '../../app/schema.js';
+import { fitView } from '../../ui/fit-view.js';
 import { h, panel, table } from '../../app/dom.js';
 import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
 import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH, pointTangents } from './families.js';
@@ -73,7 +74,7 @@ export const lesson = {
     const pts = model.state.scene === 'invariance' ? [...model.state.points, ...model.invariance.mapped] : model.state.points;
     const xs = pts.map((p) => p[0]);
     const ys = pts.map((p) => p[1]);
-    return stage.fit(Math.min(...xs), Math.min(...ys) - 0.5, Math.max(...xs), Math.max(...ys) + 0.5);
+    return fitView(stage.canvas, Math.min(...xs), Math.min(...ys) - 0.5, Math.max(...xs), Math.max(...ys) + 0.5);
   },
 
   setup(ctx) {
