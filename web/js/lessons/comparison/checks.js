@@ -141,13 +141,15 @@ export function computeTable(api, points) {
     const sampled = sampleSegments(api, segs);
     curves[family] = sampled;
     const interp = interpolationCells(points, sampled);
+    const inherent = continuityCell(api, inherentSegments(family, points));
     columns[family] = {
       convexHull: convexHullCell(api, family, sampled),
       interpolatesSome: interp.some,
       interpolatesAll: interp.all,
       subdivision: subdivisionCell(api, family, sampled),
-      inherent: continuityCell(api, inherentSegments(family, points)),
-      easy: continuityCell(api, easySegments(family, points)),
+      inherent,
+      // B-spline and Catmull-Rom need no rule: their easy construction is the inherent one.
+      easy: family === 'bspline' || family === 'catmull-rom' ? inherent : continuityCell(api, easySegments(family, points)),
       distances: interp.distances,
     };
   }

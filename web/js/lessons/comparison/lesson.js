@@ -74,7 +74,9 @@ export const lesson = {
     const pts = model.state.scene === 'invariance' ? [...model.state.points, ...model.invariance.mapped] : model.state.points;
     const xs = pts.map((p) => p[0]);
     const ys = pts.map((p) => p[1]);
-    return fitView(stage.canvas, Math.min(...xs), Math.min(...ys) - 0.5, Math.max(...xs), Math.max(...ys) + 0.5);
+    const [minY, maxY] = [Math.min(...ys), Math.max(...ys)];
+    // Room at the top for the legend.
+    return fitView(stage.canvas, Math.min(...xs), minY - 0.3, Math.max(...xs), maxY + 0.3 * (maxY - minY) + 0.3);
   },
 
   setup(ctx) {

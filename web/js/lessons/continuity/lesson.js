@@ -89,7 +89,9 @@ export const lesson = {
     const ys = [];
     for (const s of model.segments) for (let j = 0; j < s.points.length; j += 2) { xs.push(s.points[j]); ys.push(s.points[j + 1]); }
     for (const hd of lesson.handles(model, model.state)) { xs.push(hd.x); ys.push(hd.y); }
-    return fitView(stage.canvas, Math.min(...xs), Math.min(...ys), Math.max(...xs), Math.max(...ys));
+    const [minY, maxY] = [Math.min(...ys), Math.max(...ys)];
+    // Room at the top for the legend.
+    return fitView(stage.canvas, Math.min(...xs), minY, Math.max(...xs), maxY + 0.3 * (maxY - minY));
   },
 
   setup(ctx) {
