@@ -14,7 +14,6 @@
 #include "wingspline/curves/segment.h"
 
 #include <malloc.h>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -50,38 +49,36 @@ val ints(const std::vector<int>& v) {
 
 // curveEvaluate(spec, params, order, all) -> {values}: all = false gives the derivative of
 // `order` only (dim per param); all = true gives orders 0..order ((order+1)*dim per param).
-// The params as doubles in wasm memory: one bulk copy, without the zero-fill of
-// std::vector's resize (the array may hold millions of parameters).
-std::unique_ptr<double[]> params_in(const val& params, std::size_t& n) {
-    n = params["length"].as<std::size_t>();
-    std::unique_ptr<double[]> u(new double[n > 0 ? n : 1]);
-    val(emscripten::typed_memory_view(n, u.get())).call<void>("set", params);
-    return u;
-}
+// Batches run in chunks of kChunk parameters: copy a chunk of params into wasm memory,
+// check and evaluate it, copy its points straight into the JS result. The data stay in
+// cache between the steps and the wasm heap never holds the whole batch (1e6 points would
+// otherwise grow it by 40 MB).
+constexpr std::size_t kChunk = 8192;
 
 // out: undefined (a new Float64Array is returned) or a Float64Array of the right length
-// that the JS layer checked; filling it avoids allocating a new array on every redraw.
+// that the JS layer checked; filling it avoids allocating a new array on every redraw. On
+// an error the contents of a given `out` are unspecified (the error says which parameter).
 val curve_evaluate(const val& spec, const val& params, int order, bool all, const val& out_array) {
     return guarded([&] {
         const CurveEvaluator ev(curve_from(spec));
         require(order >= 0 && order <= kMaxDegree + 1, "invalid-argument",
                 "the derivative order must be a whole number from 0 to " + std::to_string(kMaxDegree + 1));
-        // One copy in, one copy out: the params are checked in place and the result buffer
-        // is not zero-filled before it is written.
-        std::size_t n = 0;
-        const std::unique_ptr<double[]> u = params_in(params, n);
-        ev.check_params(u.get(), n);
-        const std::size_t count = n * static_cast<std::size_t>(ev.dim()) * (all ? order + 1 : 1);
-        const std::unique_ptr<double[]> out(new double[count > 0 ? count : 1]);
-        if (all) ev.evaluate_all(u.get(), n, order, out.get());
-        else ev.evaluate(u.get(), n, order, out.get());
-        val r = val::object();
-        if (out_array.isUndefined()) {
-            r.set("values", to_typed_array(out.get(), count));
-        } else {
-            out_array.call<void>("set", val(emscripten::typed_memory_view(count, out.get())));
-            r.set("values", out_array);
+        const std::size_t n = params["length"].as<std::size_t>();
+        const std::size_t per = static_cast<std::size_t>(ev.dim()) * (all ? order + 1 : 1);
+        val result = out_array.isUndefined() ? val::global("Float64Array").new_(n * per) : out_array;
+        std::vector<double> u(std::min(n, kChunk));
+        std::vector<double> points(u.size() * per);
+        for (std::size_t start = 0; start < n; start += kChunk) {
+            const std::size_t m = std::min(kChunk, n - start);
+            val(emscripten::typed_memory_view(m, u.data()))
+                .call<void>("set", params.call<val>("subarray", start, start + m));
+            ev.check_params(u.data(), m, start);
+            if (all) ev.evaluate_all(u.data(), m, order, points.data());
+            else ev.evaluate(u.data(), m, order, points.data());
+            result.call<void>("set", val(emscripten::typed_memory_view(m * per, points.data())), start * per);
         }
+        val r = val::object();
+        r.set("values", result);
         return r;
     });
 }

@@ -226,3 +226,85 @@ TEST_CASE("Hermite patch reproduces its geometry matrix at the corners", "[curve
     const PatchSamples f = sample_patch(BasisKind::Bezier, flat, 3, 3);
     for (int q = 0; q < 9; ++q) CHECK(std::abs(f.normals[3 * q + 2]) == Approx(1).margin(kExact));
 }
+
+TEST_CASE("inherent continuity row of the comparison tables (lectures 001 and 003)", "[curves][continuity]") {
+    // Neighbouring segments of each family, each as its own curve, joined where a ends.
+    const auto p = zigzag(5);
+    auto points = [&](int first, int count) { return std::vector<double>(p.begin() + 2 * first, p.begin() + 2 * (first + count)); };
+    // Hermite: C1 by construction (shared point and tangent), not C2 in general
+    Curve ha = make_curve(CurveKind::Hermite, points(0, 2));
+    ha.tangents = {1, 0, 2, -1};
+    Curve hb = make_curve(CurveKind::Hermite, points(1, 2));
+    hb.tangents = {2, -1, 0, 3};
+    CHECK(joint_continuity(ha, hb, kJointTolerance).parametric == 1);
+    // Bezier: two cubics sharing an end point are C0 (and G0) only
+    const JointContinuity bz = joint_continuity(make_curve(CurveKind::Bezier, points(0, 4)),
+                                                make_curve(CurveKind::Bezier, {p[6], p[7], 5, 5, 6, 0, 7, 1}), kJointTolerance);
+    CHECK(bz.parametric == 0);
+    CHECK(bz.geometric == 0);
+    // uniform B-spline: C2 (and G2)
+    const JointContinuity bs = joint_continuity(make_curve(CurveKind::BSpline, points(0, 4)),
+                                                make_curve(CurveKind::BSpline, points(1, 4)), kJointTolerance);
+    CHECK(bs.parametric == 2);
+    CHECK(bs.geometric == 2);
+    // Catmull-Rom: C1 (and G1) but not C2
+    const JointContinuity cr = joint_continuity(make_curve(CurveKind::CatmullRom, points(0, 4)),
+                                                make_curve(CurveKind::CatmullRom, points(1, 4)), kJointTolerance);
+    CHECK(cr.parametric == 1);
+    CHECK(cr.geometric == 1);
+}
+
+TEST_CASE("cardinal spline is the Hermite spline with tangents (1-c)(P_i+1 - P_i-1)/2", "[curves][cardinal]") {
+    const auto p = zigzag(6);
+    for (double c : {0.0, 0.3, 0.9}) {
+        Curve card = make_curve(CurveKind::Cardinal, p);
+        card.tension = c;
+        // Hermite through P1..P4 with those tangents
+        Curve h = make_curve(CurveKind::Hermite, std::vector<double>(p.begin() + 2, p.begin() + 10));
+        for (int i = 1; i <= 4; ++i)
+            for (int k = 0; k < 2; ++k) h.tangents.push_back((1 - c) * (p[2 * (i + 1) + k] - p[2 * (i - 1) + k]) / 2);
+        for (double u : linspace(0, 3, 31)) {
+            const auto a = evaluate_curve(card, {u});
+            const auto b = evaluate_curve(h, {u});
+            CHECK(distance(a.data(), b.data(), 2) < kSameCurve);
+        }
+    }
+}
+
+TEST_CASE("rational de Casteljau: levels in homogeneous coordinates give the NURBS point", "[curves][bezier]") {
+    // the quarter circle as a rational quadratic Bezier
+    const std::vector<double> pts = {1, 0, 1, 1, 0, 1};
+    const std::vector<double> w = {1, std::sqrt(0.5), 1};
+    for (double t : linspace(0, 1, 9)) {
+        const auto steps = de_casteljau(pts, 2, t, w);
+        REQUIRE(steps.level_weights.size() == 3);
+        CHECK(std::hypot(steps.levels[2][0], steps.levels[2][1]) == Approx(1).margin(kCircle));
+        Curve c = make_curve(CurveKind::Bezier, pts);
+        c.weights = w;
+        const auto p = evaluate_curve(c, {t});
+        CHECK(distance(p.data(), steps.levels[2].data(), 2) < kSameCurve);
+    }
+    const BezierSplit s = subdivide_bezier(pts, 2, 0.3, w);
+    Curve right = make_curve(CurveKind::Bezier, s.right);
+    right.weights = s.right_weights;
+    for (double v : linspace(0, 1, 11)) {
+        const auto p = evaluate_curve(right, {v});
+        CHECK(std::hypot(p[0], p[1]) == Approx(1).margin(kCircle));
+    }
+}
+
+TEST_CASE("segment matrices of a NURBS are homogeneous: C = M G reproduces (w x, w y, w)", "[curves][matrices][nurbs]") {
+    const Curve circle = nurbs_circle({0, 0}, 2, 1);
+    for (int s = 0; s < segment_count(circle); ++s) {
+        const SegmentMatrices m = segment_matrices(circle, s);
+        REQUIRE(m.homogeneous);
+        REQUIRE(m.columns == 3);
+        for (double u : {0.0, 0.4, 1.0}) {
+            double h[3];
+            for (int k = 0; k < 3; ++k) h[k] = u * u * m.C[k] + u * m.C[3 + k] + m.C[6 + k];
+            const auto p = evaluate_curve(circle, {m.start + u * (m.end - m.start)});
+            CHECK(h[0] / h[2] == Approx(p[0]).margin(kSameCurve));
+            CHECK(h[1] / h[2] == Approx(p[1]).margin(kSameCurve));
+        }
+    }
+}

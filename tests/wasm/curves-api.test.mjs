@@ -145,3 +145,32 @@ test('10,000 failing calls leave the module usable and the heap does not grow', 
   assert.equal(p.length, 2000);
   close(p.slice(0, 2), [0, 1], SAME_CURVE, 'clamped start after the errors');
 });
+
+test('options.out is filled and returned; a wrong buffer is refused', () => {
+  const out = new Float64Array(6);
+  const r = api.evaluateCurve(benchBezier, [0, 1], { out });
+  assert.equal(r, out);
+  close(out, [0, 0, 0, 4, 0, 1.5], EXACT, 'out');
+  const d = new Float64Array(2 * 2 * 3);
+  assert.equal(api.evaluateWithDerivatives(benchBezier, [0, 1], 1, { out: d }), d);
+  close(d.slice(3, 6), [3, 6, 1.5], SAME_CURVE, 'P\'(0) in out');
+  assert.throws(() => api.evaluateCurve(benchBezier, [0, 1], { out: new Float64Array(5) }), { code: 'invalid-argument' });
+  assert.throws(() => api.evaluateCurve(benchBezier, [0, 1], { out: [0, 0, 0, 0, 0, 0] }), { code: 'invalid-argument' });
+});
+
+test('the uniform B-spline does not interpolate its control points; Catmull-Rom interpolates the inner ones', () => {
+  const points = zigzag(6);
+  const { points: bs } = api.sampleCurve({ kind: 'bspline', dim: 2, points }, 301);
+  const { points: cr } = api.sampleCurve({ kind: 'catmull-rom', dim: 2, points }, 301);
+  const hits = (samples, i) => {
+    for (let j = 0; j < samples.length / 2; j += 1) {
+      if (Math.hypot(samples[2 * j] - points[2 * i], samples[2 * j + 1] - points[2 * i + 1]) < SAME_CURVE) return true;
+    }
+    return false;
+  };
+  for (let i = 0; i < 6; i += 1) assert.equal(hits(bs, i), false, `B-spline passes P${i}`);
+  // Catmull-Rom samples at u = 0, 1, 2, 3 are exactly P1..P4 (the sample step is 3/300)
+  for (let i = 1; i <= 4; i += 1) assert.equal(hits(cr, i), true, `Catmull-Rom misses P${i}`);
+  assert.equal(hits(cr, 0), false);
+  assert.equal(hits(cr, 5), false);
+});

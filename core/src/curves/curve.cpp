@@ -296,17 +296,18 @@ std::vector<double> CurveEvaluator::checked_params(const double* params, std::si
     return out;
 }
 
-void CurveEvaluator::check_params(double* out, std::size_t n) const {
+void CurveEvaluator::check_params(double* out, std::size_t n, std::size_t index_offset) const {
     const double slack = kParameterSlack * std::max({1.0, std::abs(domain_.start), std::abs(domain_.end)});
     for (std::size_t j = 0; j < n; ++j) {
         const double u = out[j];
         if (u >= domain_.start && u <= domain_.end) continue;
         // (messages are built only on failure: this loop runs once per parameter)
         if (!std::isfinite(u))
-            throw Error("non-finite-input", "parameter " + std::to_string(j) + " is " + num(u) + ", not a finite number");
+            throw Error("non-finite-input",
+                        "parameter " + std::to_string(j + index_offset) + " is " + num(u) + ", not a finite number");
         if (!(u >= domain_.start - slack && u <= domain_.end + slack))
             throw Error("parameter-out-of-range",
-                        "parameter " + std::to_string(j) + " is u = " + num(u) + ", outside the domain " +
+                        "parameter " + std::to_string(j + index_offset) + " is u = " + num(u) + ", outside the domain " +
                             range(domain_.start, domain_.end) + " of this " + curve_kind_name(curve_.kind) + " curve");
         out[j] = std::clamp(u, domain_.start, domain_.end);
     }
@@ -355,6 +356,10 @@ void CurveEvaluator::evaluate_polynomial(const double* params, std::size_t n, in
 }
 
 namespace {
+
+// Per span of a cubic: 6 reciprocals for the Cox-de Boor triangle, 3 for the derivative
+// (CurveEvaluator::kCubicStride, the layout the constructor fills).
+constexpr int kReciprocalsPerSpan = 9;
 
 // The cubic Cox-de Boor triangle with the span's reciprocal knot differences (no division):
 // the same arithmetic as basis_functions_fixed<3> with a/b replaced by a*(1/b).
@@ -455,7 +460,7 @@ void spline_points_fixed_dim(const double* t, const double* cw, const double* in
     for (std::size_t j = 0; j < n; ++j) {
         const double u = params[j];
         span = track_span(t, first, last, span, u);
-        cubic_basis(span, u, t, inverse_differences + 9 * span, N);
+        cubic_basis(span, u, t, inverse_differences + kReciprocalsPerSpan * span, N);
         const double* c = cw + static_cast<std::size_t>(span - P) * D;
         double acc[D];
         for (int k = 0; k < D; ++k) acc[k] = N[0] * c[k];
@@ -486,7 +491,7 @@ void spline_d1_fixed(const double* t, const double* cw, const double* inverse_di
     for (std::size_t j = 0; j < n; ++j) {
         const double u = params[j];
         span = track_span(t, first, last, span, u);
-        cubic_basis_d1(span, u, t, inverse_differences + 9 * span, N, dN);
+        cubic_basis_d1(span, u, t, inverse_differences + kReciprocalsPerSpan * span, N, dN);
         const double* c = cw + static_cast<std::size_t>(span - P) * HD;
         double A[HD], dA[HD];
         for (int k = 0; k < HD; ++k) {

@@ -81,8 +81,9 @@ public:
     // rounding overshoots moved onto the domain ends. Throws 'non-finite-input' or
     // 'parameter-out-of-range' naming the index, the value and the domain.
     std::vector<double> checked_params(const double* params, std::size_t n) const;
-    // The same check in place (no copy): the batch path of the bindings.
-    void check_params(double* params, std::size_t n) const;
+    // The same check in place (no copy): the batch path of the bindings, which works in
+    // chunks; index_offset is added to the parameter index named in a message.
+    void check_params(double* params, std::size_t n, std::size_t index_offset = 0) const;
 
     // out[dim*j + c]: the derivative of order `order` (0 = the point) at params[j].
     // params must come from checked_params.
