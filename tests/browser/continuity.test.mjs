@@ -244,3 +244,25 @@ test('a third segment added under the C2 constraint joins with C2 at both joints
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+test('Hermite joints: C1 shares the tangent, C2 also matches P\'\' from the Hermite blending functions', async () => {
+  const page = await openLab();
+  await choosePreset(page, 'hermite-shared');
+  let s = await state(page);
+  // p0, p1, t0, t1 per segment: the joint shares point and tangent.
+  assert.deepEqual(s.points[1], s.points[4]);
+  assert.deepEqual(s.points[3], s.points[6]);
+  await page.selectOption('#constraint', 'C2');
+  await page.waitForFunction(() => window.wingspline.state.constraint === 'C2');
+  s = await state(page);
+  const [p0, p1, t0, t1, q0, q1, s0, s1] = s.points;
+  // H0'' = 12u - 6, H1'' = -12u + 6, H2'' = 6u - 4, H3'' = 6u - 2 (lecture 000's blending functions).
+  const left = [0, 1].map((k) => 6 * p0[k] - 6 * p1[k] + 2 * t0[k] + 4 * t1[k]);
+  const right = [0, 1].map((k) => -6 * q0[k] + 6 * q1[k] - 4 * s0[k] - 2 * s1[k]);
+  for (let k = 0; k < 2; k += 1) assert.ok(Math.abs(left[k] - right[k]) < 1e-9);
+  const [j] = await joints(page);
+  assert.equal(j.parametric, 2);
+  assert.equal(j.geometric, 2);
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
