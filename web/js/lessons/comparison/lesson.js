@@ -53,7 +53,7 @@ export const lesson = {
   defaultState: () => ({
     points: DEFAULT_POINTS.map((p) => p.slice()),
     scene: 'families',
-    show: { hermite: true, bezier: true, bspline: true, 'catmull-rom': true },
+    show: { hermite: true, bezier: true, bspline: true, 'catmull-rom': true, nubs: true },
     conversion: { from: 'bezier', to: 'hermite', start: 0, mode: 'keep-curve' },
     transform: { kind: 'affine', angle: 30, scale: 0.8, shear: 0.3, tx: 0.5, ty: -0.4, px: 0.06, py: 0.03 },
     view: { cx: 0, cy: 0, zoom: 90 },
@@ -172,7 +172,7 @@ export const lesson = {
       for (const f of FAMILY_IDS) {
         if (!state.show[f]) continue;
         for (const s of model.table.curves[f]) drawCurve(painter, s.points, { stroke: strokeOf(f), width: f === 'bezier' ? 4 : 2.5, dash: FAMILY_DASH[f] });
-        legend.push([strokeOf(f), `${FAMILY_NAMES[f]}${f === 'catmull-rom' ? ' (end points repeated)' : f === 'hermite' ? ', t_i = (P_i+1 − P_i−1)/2: Catmull-Rom inside' : ''}`, FAMILY_DASH[f]]);
+        legend.push([strokeOf(f), `${FAMILY_NAMES[f]}${f === 'catmull-rom' ? ' (end points repeated)' : f === 'nubs' ? ` (knots ${model.table.knots.join(', ')})` : f === 'hermite' ? ', t_i = (P_i+1 − P_i−1)/2: Catmull-Rom inside' : ''}`, FAMILY_DASH[f]]);
       }
       if (state.show.hermite) {
         const t = pointTangents(state.points);
@@ -265,7 +265,7 @@ function updateTable(body, tbl) {
       h('span', { class: agrees ? 'lecture agrees' : 'lecture differs' }, `lecture: ${expected} ${agrees ? '✓' : '≠'}`));
   })]);
   body.replaceChildren(
-    table({ caption: 'Lecture 003 (and 001), each cell measured now', head: [['', ...FAMILY_IDS.map((f) => FAMILY_NAMES[f])]], rows, className: 'data-table comparison-table' }),
+    table({ caption: 'Lecture 003 (Hermite to Catmull-Rom) and lecture 001 (non-uniform B-spline), each cell measured now', head: [['', ...FAMILY_IDS.map((f) => FAMILY_NAMES[f])]], rows, className: 'data-table comparison-table' }),
     h('p', { class: 'hint' }, 'Convex hull: the blending weights of the points are ≥ 0 and sum to 1 (lecture 003). Interpolation: distance from each control point to the curve. Continuity: the core\'s classifier at every joint, on the bare representation (inherent) and after the easy rule (Hermite shares tangents; Bezier mirrors P3i-1 about the joint).'),
   );
 }
