@@ -13,6 +13,8 @@ const LECTURE_003 = {
   inherent: ['C0 G0', 'C0 G0', 'C2 G2', 'C1 G1'],
   easy: ['C1 G1', 'C1 G1', 'C2 G2', 'C1 G1'],
 };
+// Lecture 001's non-uniform B-spline column (YES, NO, NO, High, C2 G2, C2 G2).
+const LECTURE_001_NUBS = { convexHull: 'Yes', interpolatesSome: 'No', interpolatesAll: 'No', subdivision: 'High', inherent: 'C2 G2', easy: 'C2 G2' };
 const FAMILIES = ['hermite', 'bezier', 'bspline', 'catmull-rom'];
 const EXACT = 1e-12; // world units: "the same curve"
 
@@ -35,6 +37,8 @@ function assertMatchesLecture(cells) {
       assert.ok(cell, `cell ${row} / ${family} is on the page`);
       assert.equal(cell.answer, answers[k], `${row} for ${family}`);
     });
+    const nubs = cells.find((c) => c.row === row && c.family === 'nubs');
+    assert.equal(nubs?.answer, LECTURE_001_NUBS[row], `${row} for the non-uniform B-spline (lecture 001)`);
   }
 }
 
@@ -95,7 +99,7 @@ test('invariance: affine maps commute with every family; perspective only with t
   const page = await openLab();
   await page.selectOption('#scene', 'invariance');
   let inv = await page.evaluate(() => window.wingspline.model.invariance);
-  for (const f of FAMILIES) assert.ok(inv.rows[f].distance < 1e-12, `${f} is affine invariant`);
+  for (const f of [...FAMILIES, 'nubs']) assert.ok(inv.rows[f].distance < 1e-12, `${f} is affine invariant`);
   await page.selectOption('#tf-kind', 'perspective');
   await page.waitForFunction(() => window.wingspline.state.transform.kind === 'perspective');
   inv = await page.evaluate(() => window.wingspline.model.invariance);

@@ -222,3 +222,47 @@ test('keyboard: select a handle with ] and move it with the arrows', async () =>
   assert.match(await page.textContent('#stage-description'), /joint 1: C/);
   await page.context().close();
 });
+
+test('a third segment added under the C2 constraint joins with C2 at both joints', async () => {
+  const page = await openLab();
+  await page.selectOption('#constraint', 'C2');
+  await page.waitForFunction(() => window.wingspline.state.constraint === 'C2');
+  await page.click('#add-segment');
+  await page.waitForFunction(() => window.wingspline.model.segmentCount === 3);
+  const s = await state(page);
+  assert.equal(s.points.length, 12);
+  // Lecture 001/002: C2 needs equal second derivatives, 6 (L1 - 2 L2 + L3) = 6 (R0 - 2 R1 + R2).
+  for (const j of [1, 2]) {
+    const [, L1, L2, L3] = s.points.slice(4 * (j - 1), 4 * j);
+    const [R0, R1, R2] = s.points.slice(4 * j, 4 * j + 3);
+    for (let k = 0; k < 2; k += 1) assert.ok(Math.abs((L1[k] - 2 * L2[k] + L3[k]) - (R0[k] - 2 * R1[k] + R2[k])) < 1e-9);
+  }
+  for (const j of await joints(page)) { assert.equal(j.parametric, 2); assert.equal(j.geometric, 2); }
+  await page.click('#remove-segment');
+  await page.waitForFunction(() => window.wingspline.model.segmentCount === 2);
+  assert.equal(await page.isDisabled('#remove-segment'), true, 'two segments is the least with a joint');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('Hermite joints: C1 shares the tangent, C2 also matches P\'\' from the Hermite blending functions', async () => {
+  const page = await openLab();
+  await choosePreset(page, 'hermite-shared');
+  let s = await state(page);
+  // p0, p1, t0, t1 per segment: the joint shares point and tangent.
+  assert.deepEqual(s.points[1], s.points[4]);
+  assert.deepEqual(s.points[3], s.points[6]);
+  await page.selectOption('#constraint', 'C2');
+  await page.waitForFunction(() => window.wingspline.state.constraint === 'C2');
+  s = await state(page);
+  const [p0, p1, t0, t1, q0, q1, s0, s1] = s.points;
+  // H0'' = 12u - 6, H1'' = -12u + 6, H2'' = 6u - 4, H3'' = 6u - 2 (lecture 000's blending functions).
+  const left = [0, 1].map((k) => 6 * p0[k] - 6 * p1[k] + 2 * t0[k] + 4 * t1[k]);
+  const right = [0, 1].map((k) => -6 * q0[k] + 6 * q1[k] - 4 * s0[k] - 2 * s1[k]);
+  for (let k = 0; k < 2; k += 1) assert.ok(Math.abs(left[k] - right[k]) < 1e-9);
+  const [j] = await joints(page);
+  assert.equal(j.parametric, 2);
+  assert.equal(j.geometric, 2);
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

@@ -178,11 +178,7 @@ export function createStage(canvas, hooks) {
     fit(minX, minY, maxX, maxY, margin = 0.12) {
       const w = Math.max(maxX - minX, 1e-9);
       const hgt = Math.max(maxY - minY, 1e-9);
-      // The layout may be newer than the last ResizeObserver callback (first frame).
-      const rect = canvas.getBoundingClientRect();
-      const width = rect.width || cssWidth;
-      const height = rect.height || cssHeight;
-      const zoom = Math.min(width / (w * (1 + 2 * margin)), height / (hgt * (1 + 2 * margin)));
+      const zoom = Math.min(cssWidth / (w * (1 + 2 * margin)), cssHeight / (hgt * (1 + 2 * margin)));
       return { cx: (minX + maxX) / 2, cy: (minY + maxY) / 2, zoom: Math.min(1e5, Math.max(1, zoom)) };
     },
   };

@@ -2,7 +2,7 @@
 // by the core: blending weights (convex hull), distances from the control points to the
 // sampled curve (interpolation), subdivision checked against the original, and the joint
 // classifier on the inherent and the easily-achieved construction.
-import { FAMILY_IDS, familySegments, inherentSegments, easySegments } from './families.js';
+import { FAMILY_IDS, familySegments, inherentSegments, easySegments, nubsCurve, nonUniformKnots } from './families.js';
 
 export const SAMPLES_PER_SEGMENT = 101;
 // A control point counts as interpolated when the curve passes within this distance
@@ -14,13 +14,14 @@ export const JOINT_TOLERANCE = 1e-6;
 
 // Lecture 003's table (Hermite, Bezier, B-spline, Catmull-Rom): the reference each live
 // cell is compared with. These are the lecture's words, not results.
+// The non-uniform B-spline column is lecture 001's.
 export const LECTURE_TABLE = {
-  convexHull: { hermite: 'N/A', bezier: 'Yes', bspline: 'Yes', 'catmull-rom': 'No' },
-  interpolatesSome: { hermite: 'Yes', bezier: 'Yes', bspline: 'No', 'catmull-rom': 'Yes' },
-  interpolatesAll: { hermite: 'Yes', bezier: 'No', bspline: 'No', 'catmull-rom': 'Yes' },
-  subdivision: { hermite: 'Good', bezier: 'Best', bspline: 'Avg', 'catmull-rom': 'Avg' },
-  inherent: { hermite: 'C0 G0', bezier: 'C0 G0', bspline: 'C2 G2', 'catmull-rom': 'C1 G1' },
-  easy: { hermite: 'C1 G1', bezier: 'C1 G1', bspline: 'C2 G2', 'catmull-rom': 'C1 G1' },
+  convexHull: { hermite: 'N/A', bezier: 'Yes', bspline: 'Yes', 'catmull-rom': 'No', nubs: 'Yes' },
+  interpolatesSome: { hermite: 'Yes', bezier: 'Yes', bspline: 'No', 'catmull-rom': 'Yes', nubs: 'No' },
+  interpolatesAll: { hermite: 'Yes', bezier: 'No', bspline: 'No', 'catmull-rom': 'Yes', nubs: 'No' },
+  subdivision: { hermite: 'Good', bezier: 'Best', bspline: 'Avg', 'catmull-rom': 'Avg', nubs: 'High' },
+  inherent: { hermite: 'C0 G0', bezier: 'C0 G0', bspline: 'C2 G2', 'catmull-rom': 'C1 G1', nubs: 'C2 G2' },
+  easy: { hermite: 'C1 G1', bezier: 'C1 G1', bspline: 'C2 G2', 'catmull-rom': 'C1 G1', nubs: 'C2 G2' },
 };
 export const ROW_NAMES = {
   convexHull: 'Convex hull property',
@@ -97,8 +98,31 @@ function interpolationCells(points, sampled) {
   return { some, all, distances: d };
 }
 
+// The non-uniform B-spline refines by knot insertion (Boehm, lecture 001 "a knot can be
+// inserted so the curve can easily be reshaped"): one knot in the middle of every span,
+// and the refined curve must be the same curve.
+function knotInsertionCell(api, sampled) {
+  const s = sampled[0];
+  let curve = s.curve;
+  const spans = api.bsplineToBezier(curve);
+  for (const span of spans) curve = api.insertKnot(curve, (span.start + span.end) / 2).curve;
+  const refined = api.evaluateCurve(curve, s.params);
+  let error = 0;
+  for (let j = 0; j < refined.length; j += 2) error = Math.max(error, Math.hypot(refined[j] - s.points[j], refined[j + 1] - s.points[j + 1]));
+  return { answer: LECTURE_TABLE.subdivision.nubs, evidence: `${spans.length} knots inserted (Boehm), ${s.curve.points.length / 2} → ${curve.points.length / 2} points; curve moved ${fmt(error)}`, error };
+}
+
+// The spans of the non-uniform B-spline as separate curves over their own knot intervals
+// (clamped cubics with knots a,a,a,a,b,b,b,b), so the classifier compares derivatives in
+// the curve's own parameter t, not in a local u per span.
+function spanCurves(api, curve) {
+  return api.bsplineToBezier(curve).map((b) => ({ kind: 'bspline', dim: 2, degree: 3, points: b.points,
+    knots: [b.start, b.start, b.start, b.start, b.end, b.end, b.end, b.end] }));
+}
+
 // Splits every segment at u = 1/2 and measures how far the halves are from the original.
 function subdivisionCell(api, family, sampled) {
+  if (family === 'nubs') return knotInsertionCell(api, sampled);
   let error = 0;
   const quarter = [0, 0.25, 0.5, 0.75, 1];
   for (const s of sampled) {
@@ -141,15 +165,17 @@ export function computeTable(api, points) {
     const sampled = sampleSegments(api, segs);
     curves[family] = sampled;
     const interp = interpolationCells(points, sampled);
+    const inherent = continuityCell(api, family === 'nubs' ? spanCurves(api, nubsCurve(points)) : inherentSegments(family, points));
     columns[family] = {
       convexHull: convexHullCell(api, family, sampled),
       interpolatesSome: interp.some,
       interpolatesAll: interp.all,
       subdivision: subdivisionCell(api, family, sampled),
-      inherent: continuityCell(api, inherentSegments(family, points)),
-      easy: continuityCell(api, easySegments(family, points)),
+      inherent,
+      // B-splines and Catmull-Rom need no rule: their easy construction is the inherent one.
+      easy: family === 'bspline' || family === 'catmull-rom' || family === 'nubs' ? inherent : continuityCell(api, easySegments(family, points)),
       distances: interp.distances,
     };
   }
-  return { columns, curves };
+  return { columns, curves, knots: nonUniformKnots(points.length) };
 }

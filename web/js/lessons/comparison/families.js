@@ -1,11 +1,22 @@
 // The four families of lecture 003's table built on one control polygon P0..P(K-1), as
 // curve objects of the core API. Only control data is arranged here; every point on every
 // curve comes from the core.
-export const FAMILY_IDS = ['hermite', 'bezier', 'bspline', 'catmull-rom'];
-export const FAMILY_NAMES = { hermite: 'Hermite', bezier: 'Bezier', bspline: 'B-spline', 'catmull-rom': 'Catmull-Rom' };
+// Lecture 003's four columns and lecture 001's non-uniform B-spline.
+export const FAMILY_IDS = ['hermite', 'bezier', 'bspline', 'catmull-rom', 'nubs'];
+export const FAMILY_NAMES = { hermite: 'Hermite', bezier: 'Bezier', bspline: 'B-spline', 'catmull-rom': 'Catmull-Rom', nubs: 'Non-uniform B-spline' };
 // Colour index into ctx.colors.series (Okabe-Ito) per family; the legend also names them.
-export const FAMILY_COLOR = { hermite: 3, bezier: 0, bspline: 2, 'catmull-rom': 1 };
-export const FAMILY_DASH = { hermite: [10, 4], bezier: [], bspline: [], 'catmull-rom': [3, 4] };
+export const FAMILY_COLOR = { hermite: 3, bezier: 0, bspline: 2, 'catmull-rom': 1, nubs: 6 };
+export const FAMILY_DASH = { hermite: [10, 4], bezier: [], bspline: [], 'catmull-rom': [3, 4], nubs: [12, 3, 2, 3] };
+
+// The non-uniform cubic B-spline of lecture 001 on the same K points: unclamped knots with
+// unequal gaps (K + 4 of them), so its segments have different parameter lengths.
+export function nonUniformKnots(count) {
+  const gaps = [0.6, 0.4, 1.2, 0.8, 0.5, 1.3, 0.6, 1.1, 0.5, 1];
+  const knots = [0];
+  for (let i = 1; i < count + 4; i += 1) knots.push(Number((knots[i - 1] + gaps[(i - 1) % gaps.length]).toFixed(6)));
+  return knots;
+}
+export const nubsCurve = (points) => ({ kind: 'bspline', dim: 2, degree: 3, points: flat(points), knots: nonUniformKnots(points.length) });
 
 const flat = (list) => list.flatMap((p) => p);
 const sub = (a, b) => [a[0] - b[0], a[1] - b[1]];
@@ -23,6 +34,8 @@ export function pointTangents(points) {
 // control point indices each segment is built from.
 export function familySegments(family, points) {
   const segs = [];
+  // The non-uniform B-spline is evaluated as one curve; its joints are the core's spans.
+  if (family === 'nubs') return [nubsCurve(points)];
   if (family === 'bezier') {
     // Piecewise cubic Bezier: segment i is P3i..P3i+3, neighbours share the end point.
     for (let i = 0; i + 3 < points.length; i += 3) segs.push({ kind: 'bezier', dim: 2, points: flat(points.slice(i, i + 4)) });

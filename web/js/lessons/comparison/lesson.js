@@ -2,6 +2,7 @@
 // uniform B-spline and Catmull-Rom at once; the lectures' comparison table checked live by
 // the core; basis conversion both ways; affine and perspective invariance measured.
 import { object, list, number, oneOf, integer, boolean } from '../../app/schema.js';
+import { fitView } from '../../ui/fit-view.js';
 import { h, panel, table } from '../../app/dom.js';
 import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
 import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH, pointTangents } from './families.js';
@@ -25,6 +26,8 @@ const pair = list(number(), { min: 2, max: 2 });
 const DEFAULT_POINTS = [[-3.2, -1.2], [-2.4, 1.3], [-0.9, 1.6], [-0.2, -0.4], [1.1, -1.5], [2.3, 0.2], [3.3, 1.4]];
 
 const fmt = (x) => formatNumber(x, 3);
+// Distances: tiny ones keep their size visible (1.1e-16, not 0).
+const fmtDistance = (x) => (x === 0 ? '0' : x < 1e-3 ? x.toExponential(1) : formatNumber(x, 3));
 // A bracket that keeps its text size next to tall matrices.
 const fixed = (text) => { const o = mo(text); o.setAttribute('stretchy', 'false'); return o; };
 
@@ -52,7 +55,7 @@ export const lesson = {
   defaultState: () => ({
     points: DEFAULT_POINTS.map((p) => p.slice()),
     scene: 'families',
-    show: { hermite: true, bezier: true, bspline: true, 'catmull-rom': true },
+    show: { hermite: true, bezier: true, bspline: true, 'catmull-rom': true, nubs: true },
     conversion: { from: 'bezier', to: 'hermite', start: 0, mode: 'keep-curve' },
     transform: { kind: 'affine', angle: 30, scale: 0.8, shear: 0.3, tx: 0.5, ty: -0.4, px: 0.06, py: 0.03 },
     view: { cx: 0, cy: 0, zoom: 90 },
@@ -73,11 +76,16 @@ export const lesson = {
     const pts = model.state.scene === 'invariance' ? [...model.state.points, ...model.invariance.mapped] : model.state.points;
     const xs = pts.map((p) => p[0]);
     const ys = pts.map((p) => p[1]);
-    return stage.fit(Math.min(...xs), Math.min(...ys) - 0.5, Math.max(...xs), Math.max(...ys) + 0.5);
+    const [minY, maxY] = [Math.min(...ys), Math.max(...ys)];
+    // Room at the top for the legend.
+    return fitView(stage.canvas, Math.min(...xs), minY - 0.3, Math.max(...xs), maxY + 0.3 * (maxY - minY) + 0.3);
   },
 
   setup(ctx) {
-    const sceneSelect = h('select', { id: 'scene', onchange: () => ctx.commit({ ...ctx.state, scene: sceneSelect.value }) },
+    const sceneSelect = h('select', { id: 'scene', onchange: () => {
+      // Each scene gets a view that shows all of it (the invariance scene adds the mapped points).
+      if (ctx.commit({ ...ctx.state, scene: sceneSelect.value })) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+    } },
       Object.entries(SCENES).map(([k, v]) => h('option', { value: k }, v)));
     const familyBoxes = FAMILY_IDS.map((f) => {
       const box = h('input', { type: 'checkbox', id: `show-${f}`, onchange: () => ctx.commit({ ...ctx.state, show: { ...ctx.state.show, [f]: box.checked } }, { recompute: false }) });
@@ -169,7 +177,7 @@ export const lesson = {
       for (const f of FAMILY_IDS) {
         if (!state.show[f]) continue;
         for (const s of model.table.curves[f]) drawCurve(painter, s.points, { stroke: strokeOf(f), width: f === 'bezier' ? 4 : 2.5, dash: FAMILY_DASH[f] });
-        legend.push([strokeOf(f), `${FAMILY_NAMES[f]}${f === 'catmull-rom' ? ' (end points repeated)' : f === 'hermite' ? ', t_i = (P_i+1 − P_i−1)/2: Catmull-Rom inside' : ''}`, FAMILY_DASH[f]]);
+        legend.push([strokeOf(f), `${FAMILY_NAMES[f]}${f === 'catmull-rom' ? ' (end points repeated)' : f === 'nubs' ? ` (knots ${model.table.knots.join(', ')})` : f === 'hermite' ? ', t_i = (P_i+1 − P_i−1)/2: Catmull-Rom inside' : ''}`, FAMILY_DASH[f]]);
       }
       if (state.show.hermite) {
         const t = pointTangents(state.points);
@@ -180,7 +188,7 @@ export const lesson = {
       painter.polyline(m.original, { stroke: c.series[0], width: 5, alpha: 0.55 });
       painter.polyline(m.other, { stroke: c.series[1], width: 2, dash: [8, 5] });
       legend.push([c.series[0], `${FAMILY_NAMES[m.from]} segment of P${state.conversion.start}..P${state.conversion.start + 3}`, []]);
-      legend.push([c.series[1], m.mode === 'keep-curve' ? `${FAMILY_NAMES[m.to]} curve of q (max distance ${fmt(m.distance)})` : `same G read as ${FAMILY_NAMES[m.to]}`, [8, 5]]);
+      legend.push([c.series[1], m.mode === 'keep-curve' ? `${FAMILY_NAMES[m.to]} curve of q (max distance ${fmtDistance(m.distance)})` : `same G read as ${FAMILY_NAMES[m.to]}`, [8, 5]]);
       if (m.q) drawGeometry(painter, m.to, m.q, c.series[1], 'q', c);
     } else {
       const inv = model.invariance;
@@ -191,10 +199,10 @@ export const lesson = {
       painter.polyline(inv.mapped.flat(), { stroke: c.series[0], width: 1, dash: [2, 3] });
       inv.mapped.forEach((p, i) => painter.text(p[0], p[1], `T(P${i})`, { fill: c.series[0], font: 12, dy: -12, halo: c.background }));
       legend.push([c.ink, 'T(curve): the Bezier curve, then mapped', []]);
-      legend.push([c.series[0], `curve of T(P): mapped points, then evaluated (max distance ${fmt(inv.rows.bezier.distance)})`, [8, 5]]);
+      legend.push([c.series[0], `curve of T(P): mapped points, then evaluated (max distance ${fmtDistance(inv.rows.bezier.distance)})`, [8, 5]]);
       if (inv.rational) {
         for (const piece of inv.rational.pieces) painter.polyline(piece.rationalCurve, { stroke: c.series[2], width: 2, dash: [2, 4] });
-        legend.push([c.series[2], `rational Bezier of T(P), weights w(P_i) (max distance ${fmt(inv.rational.distance)})`, [2, 4]]);
+        legend.push([c.series[2], `rational Bezier of T(P), weights w(P_i) (max distance ${fmtDistance(inv.rational.distance)})`, [2, 4]]);
       }
     }
     for (const hd of lesson.handles(model, state)) {
@@ -262,7 +270,7 @@ function updateTable(body, tbl) {
       h('span', { class: agrees ? 'lecture agrees' : 'lecture differs' }, `lecture: ${expected} ${agrees ? '✓' : '≠'}`));
   })]);
   body.replaceChildren(
-    table({ caption: 'Lecture 003 (and 001), each cell measured now', head: [['', ...FAMILY_IDS.map((f) => FAMILY_NAMES[f])]], rows, className: 'data-table comparison-table' }),
+    table({ caption: 'Lecture 003 (Hermite to Catmull-Rom) and lecture 001 (non-uniform B-spline), each cell measured now', head: [['', ...FAMILY_IDS.map((f) => FAMILY_NAMES[f])]], rows, className: 'data-table comparison-table' }),
     h('p', { class: 'hint' }, 'Convex hull: the blending weights of the points are ≥ 0 and sum to 1 (lecture 003). Interpolation: distance from each control point to the curve. Continuity: the core\'s classifier at every joint, on the bare representation (inherent) and after the easy rule (Hermite shares tangents; Bezier mirrors P3i-1 about the joint).'),
   );
 }
@@ -306,7 +314,7 @@ function updateConversion(ui, m, state) {
   ui.out.replaceChildren(
     h('div', { class: 'formula' }, formula),
     h('p', { 'data-conversion-distance': String(m.distance) }, m.q
-      ? `The ${FAMILY_NAMES[m.to]} curve of q is the ${FAMILY_NAMES[m.from]} curve of P: max distance ${fmt(m.distance)} over 121 samples.`
+      ? `The ${FAMILY_NAMES[m.to]} curve of q is the ${FAMILY_NAMES[m.from]} curve of P: max distance ${fmtDistance(m.distance)} over 121 samples.`
       : `The same four rows read as ${FAMILY_NAMES[m.to]} geometry give another curve: max distance ${fmt(m.distance)} from the ${FAMILY_NAMES[m.from]} curve.`),
     m.to === 'hermite' && m.q ? h('p', { class: 'hint' }, 'Hermite rows are p0, p1, t0, t1: two points and two tangent vectors (drawn at 1/3 length).') : null,
     h('p', { class: 'hint' }, m.q
@@ -322,9 +330,9 @@ function updateInvariance(ui, inv, state) {
     s.out.textContent = fmt(state.transform[s.key]);
     s.input.disabled = (s.key === 'px' || s.key === 'py') && state.transform.kind !== 'perspective';
   }
-  const rows = FAMILY_IDS.map((f) => [FAMILY_NAMES[f], fmt(inv.rows[f].distance),
+  const rows = FAMILY_IDS.map((f) => [FAMILY_NAMES[f], fmtDistance(inv.rows[f].distance),
     inv.rows[f].distance < 1e-9 ? 'same curve' : 'different curves']);
-  if (inv.rational) rows.push(['Rational Bezier, weights w(P_i)', fmt(inv.rational.distance), inv.rational.distance < 1e-9 ? 'same curve' : 'different curves']);
+  if (inv.rational) rows.push(['Rational Bezier, weights w(P_i)', fmtDistance(inv.rational.distance), inv.rational.distance < 1e-9 ? 'same curve' : 'different curves']);
   ui.out.replaceChildren(
     table({ caption: `${state.transform.kind === 'affine' ? 'Affine' : 'Perspective'} map T: max distance between T(curve) and the curve of T(P)`,
       head: [['family', 'max distance', 'verdict']], rows, className: 'data-table invariance-table' }),

@@ -109,3 +109,23 @@ export function enforceAll(pointsIn, family, mode) {
   for (let j = 1; j < segmentCount(points); j += 1) enforceJoint(points, family, j, mode, 'left');
   return points;
 }
+
+// One more segment after the last one: a copy of the last segment moved along its chord
+// (Bezier), or continuing from its end point with its end tangent (Hermite), then the mode
+// applied at the new joint. Shared-point families get one more point.
+export function appendSegment(pointsIn, family, mode) {
+  const points = pointsIn.map((p) => p.slice());
+  const n = points.length;
+  if (family === 'bezier') {
+    const [L0, L1, L2, L3] = points.slice(n - 4);
+    const d = sub(L3, L0);
+    points.push(L3.slice(), add(L1, d), add(L2, d), add(L3, d));
+  } else if (family === 'hermite') {
+    const [p0, p1, t0, t1] = points.slice(n - 4);
+    points.push(p1.slice(), add(p1, sub(p1, p0)), t1.slice(), t0.slice());
+  } else {
+    points.push(add(points[n - 1], scale(sub(points[n - 1], points[n - 3]), 0.5)));
+    return points;
+  }
+  return enforceAll(points, family, mode);
+}

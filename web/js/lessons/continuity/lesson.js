@@ -4,12 +4,13 @@
 // along the whole curve, and a point travelling at parametric speed.
 import { object, list, number, oneOf, boolean, text } from '../../app/schema.js';
 import { createPlayer } from '../../app/player.js';
+import { fitView } from '../../ui/fit-view.js';
 import { h, panel, table } from '../../app/dom.js';
 import { formatNumber } from '../../ui/mathml.js';
 import { drawSeriesPlot } from '../../ui/series-plot.js';
 import { drawCurve, drawPolygon, drawSamples, drawVector } from '../curves/overlays.js';
 import { PRESETS, DEFAULT_PRESET } from './presets.js';
-import { CONSTRAINTS, dragWithConstraint, enforceAll } from './constraints.js';
+import { CONSTRAINTS, dragWithConstraint, enforceAll, appendSegment } from './constraints.js';
 import { computeModel, segmentCurves, SAMPLES_PER_SEGMENT } from './model.js';
 
 const FAMILIES = ['bezier', 'hermite', 'bspline', 'catmull-rom'];
@@ -19,7 +20,8 @@ const PLAY_STEPS_PER_SEGMENT = 40;
 // equivalent Bezier leg (lecture 002: p'(0) = 3 (p1 - p0)). Second derivatives at 1/6.
 const FIRST_SCALE = 1 / 3;
 const SECOND_SCALE = 1 / 6;
-const BEAD_EVERY = 4; // a bead every 4 samples = every 1/20 of a segment's parameter
+const BEAD_EVERY = 4;
+const MAX_SEGMENTS = 8; // a bead every 4 samples = every 1/20 of a segment's parameter
 
 const pair = list(number(), { min: 2, max: 2 });
 const isPiecewise = (family) => family === 'bezier' || family === 'hermite';
@@ -87,7 +89,9 @@ export const lesson = {
     const ys = [];
     for (const s of model.segments) for (let j = 0; j < s.points.length; j += 2) { xs.push(s.points[j]); ys.push(s.points[j + 1]); }
     for (const hd of lesson.handles(model, model.state)) { xs.push(hd.x); ys.push(hd.y); }
-    return stage.fit(Math.min(...xs), Math.min(...ys), Math.max(...xs), Math.max(...ys));
+    const [minY, maxY] = [Math.min(...ys), Math.max(...ys)];
+    // Room at the top for the legend.
+    return fitView(stage.canvas, Math.min(...xs), minY, Math.max(...xs), maxY + 0.3 * (maxY - minY));
   },
 
   setup(ctx) {
@@ -115,12 +119,14 @@ export const lesson = {
       return { key, box, label: h('label', { for: `show-${key}` }, box, text) };
     });
 
+    const addButton = h('button', { type: 'button', class: 'tool', id: 'add-segment', onclick: () => addSegment() }, 'Add segment');
+    const removeButton = h('button', { type: 'button', class: 'tool', id: 'remove-segment', onclick: () => removeSegment() }, 'Remove last segment');
     ctx.controls.replaceChildren(
       h('label', { for: 'preset' }, 'Preset ', presetSelect),
       h('label', { for: 'family' }, 'Family ', familySelect),
       h('label', { for: 'constraint' }, 'While dragging ', constraintSelect),
       h('label', { for: 'u' }, 'u ', uSlider, uOut), playButton,
-      ...toggles.map((t) => t.label),
+      ...toggles.map((t) => t.label), addButton, removeButton,
     );
 
     const jointsBody = panel(ctx.panels, { id: 'joints-panel', title: 'Joints: the core\'s verdict and its evidence' });
@@ -138,7 +144,7 @@ export const lesson = {
       h('h3', {}, 'Curvature κ(u)'), plots.curvature,
       h('p', { class: 'hint' }, 'u runs over segment i on [i, i+1]; dashed lines mark the joints. A jump in |P\'| is a G1-but-not-C1 joint; a jump in κ is a joint that is not G2.'),
     );
-    lesson.ui = { familySelect, constraintSelect, presetSelect, uSlider, uOut, toggles, jointsBody, ruleBody, plots };
+    lesson.ui = { familySelect, constraintSelect, presetSelect, uSlider, uOut, toggles, jointsBody, ruleBody, plots, addButton, removeButton };
 
     function loadPreset(name) {
       player.pause();
@@ -165,6 +171,18 @@ export const lesson = {
         points = PRESETS[name].points.map((p) => p.slice());
       }
       ctx.commit({ ...state, family, points, constraint: isPiecewise(family) ? state.constraint : 'free', u: Math.min(state.u, 1) });
+    }
+    function addSegment() {
+      const state = ctx.state;
+      if (segmentsOf(state) >= MAX_SEGMENTS) return;
+      if (ctx.commit({ ...state, points: appendSegment(state.points, state.family, state.constraint) })) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+    }
+    function removeSegment() {
+      const state = ctx.state;
+      if (segmentsOf(state) <= 2) return;
+      const points = state.points.slice(0, isPiecewise(state.family) ? -4 : -1);
+      const segments = isPiecewise(state.family) ? points.length / 4 : points.length - 3;
+      ctx.commit({ ...state, points, u: Math.min(state.u, segments) });
     }
     function switchConstraint(mode) {
       const state = ctx.state;
@@ -194,6 +212,8 @@ export const lesson = {
     ui.uSlider.value = String(state.u);
     ui.uOut.textContent = formatNumber(state.u, 3);
     for (const t of ui.toggles) t.box.checked = state.show[t.key];
+    ui.addButton.disabled = model.segmentCount >= MAX_SEGMENTS;
+    ui.removeButton.disabled = model.segmentCount <= 2;
 
     ui.jointsBody.replaceChildren(...model.joints.map((joint) => {
       const verdict = `${label('C', joint.parametric)} · ${label('G', joint.geometric)}`;
