@@ -1,14 +1,13 @@
-// Security of a static site, checked on the source (issue 9). The browser test
-// tests/browser/hardening-csp.test.mjs checks the same pages live in Chromium.
-//  * No HTML is ever built from text: web/ never uses an HTML sink (innerHTML, outerHTML,
-//    insertAdjacentHTML, document.write, createContextualFragment, DOMParser, srcdoc);
-//    text goes into the DOM through textContent / text nodes (web/js/app/dom.js).
-//  * No code is built from text: no eval, new Function, string timers, javascript: URLs.
-//  * Every page carries the Content Security Policy: scripts only from the site itself, no
-//    'unsafe-inline', no 'unsafe-eval' (the wasm glue is linked with -sDYNAMIC_EXECUTION=0,
-//    so embind needs no new Function; checked below on the built glue), no remote origin;
-//    'wasm-unsafe-eval' is the one extra, which compiles WebAssembly and nothing else.
-//  * No page has an inline script or an inline event handler (the CSP would block them).
+// Security of a static site, on the source (issue 9), complementing
+// tests/browser/classroom-security.test.mjs (which bans the HTML sinks and eval/new
+// Function in web/ and the glue, and checks each page's CSP directives). Here, what that
+// file does not cover:
+//  * code built from text by other routes: string timers, javascript: URLs;
+//  * remote origins referenced by a page (src/href), and inline event handlers in any case;
+//  * the CSP checker shared with the live test (tests/helpers/csp.mjs) rejects what it must,
+//    and every page passes it (the browser test tests/browser/hardening-csp.test.mjs then
+//    proves the policy is enforced in Chromium);
+//  * the scans themselves are not dead (each pattern catches a sample).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
@@ -34,22 +33,12 @@ function stripJsComments(source) {
   return source.replace(/\/\*[\s\S]*?\*\//g, '').replace(/(^|[^:'"`\\])\/\/.*$/gm, '$1');
 }
 
-const htmlSinks = [
-  [/\.innerHTML\b/, 'innerHTML'],
-  [/\.outerHTML\b/, 'outerHTML'],
-  [/\binsertAdjacentHTML\b/, 'insertAdjacentHTML'],
-  [/\bdocument\.write(ln)?\b/, 'document.write'],
-  [/\bcreateContextualFragment\b/, 'createContextualFragment'],
-  [/\bDOMParser\b/, 'DOMParser'],
-  [/\bsrcdoc\b/, 'srcdoc'],
-  [/\bsetHTMLUnsafe\b|\bparseHTMLUnsafe\b/, 'setHTMLUnsafe'],
-];
+// What classroom-security.test.mjs does not scan for.
 const codeFromText = [
-  [/\beval\s*\(/, 'eval('],
-  [/\bnew\s+Function\s*\(/, 'new Function('],
-  [/\bFunction\s*\(\s*['"`]/, 'Function("...")'],
   [/\bset(Timeout|Interval)\s*\(\s*['"`]/, 'a string timer'],
   [/javascript:/i, 'a javascript: URL'],
+  [/\bsetHTMLUnsafe\b|\bparseHTMLUnsafe\b/, 'setHTMLUnsafe'],
+  [/\bFunction\s*\(\s*['"`]/, 'Function("...")'],
 ];
 
 const jsFiles = filesUnder(webRoot, ['.js', '.mjs']);
@@ -60,12 +49,12 @@ test('the scan sees the site (pages and modules exist)', () => {
   assert.ok(jsFiles.some((f) => f.endsWith(path.join('app', 'dom.js'))), 'web/js/app/dom.js');
 });
 
-test('no web/ module builds HTML or code from text', () => {
+test('no web/ module builds code from text by a string timer, a javascript: URL or Function("...")', () => {
   const found = [];
   for (const file of jsFiles) {
     const code = stripJsComments(fs.readFileSync(file, 'utf8'));
     code.split('\n').forEach((line, i) => {
-      for (const [pattern, name] of [...htmlSinks, ...codeFromText]) {
+      for (const [pattern, name] of codeFromText) {
         if (pattern.test(line)) found.push(`${path.relative(repoRoot, file)}:${i + 1} uses ${name}: ${line.trim()}`);
       }
     });
@@ -73,11 +62,11 @@ test('no web/ module builds HTML or code from text', () => {
   assert.deepEqual(found, []);
 });
 
-test('the scan would catch a sink (the patterns are not dead)', () => {
-  const sample = 'el.innerHTML = name; x.insertAdjacentHTML("beforeend", s); new Function("a", b); setTimeout("go()", 1);';
-  const hits = [...htmlSinks, ...codeFromText].filter(([p]) => p.test(sample)).map(([, n]) => n);
-  assert.deepEqual(hits, ['innerHTML', 'insertAdjacentHTML', 'new Function(', 'Function("...")', 'a string timer']);
-  assert.equal(stripJsComments('// el.innerHTML = x\nconst a = "http://x";').includes('innerHTML'), false);
+test('the scan would catch each pattern (the patterns are not dead)', () => {
+  const sample = 'a.href = "javascript:go()"; el.setHTMLUnsafe(s); Function("a", b); setTimeout("go()", 1);';
+  const hits = codeFromText.filter(([p]) => p.test(sample)).map(([, n]) => n);
+  assert.deepEqual(hits, ['a string timer', 'a javascript: URL', 'setHTMLUnsafe', 'Function("...")']);
+  assert.equal(stripJsComments('// setTimeout("x")\nconst a = "http://x";').includes('setTimeout'), false);
 });
 
 function cspOf(html) {
@@ -115,9 +104,3 @@ for (const file of htmlFiles) {
     assert.deepEqual(html.match(/\b(?:src|href)=["'](?:https?:)?\/\/[^"']+/gi) ?? [], [], `${name} references a remote origin`);
   });
 }
-
-test('the built wasm glue never builds code from text (-sDYNAMIC_EXECUTION=0)', () => {
-  const glue = fs.readFileSync(path.join(repoRoot, 'dist', 'wasm', 'wingspline-core.js'), 'utf8');
-  assert.doesNotMatch(glue, /\bnew Function\s*\(/);
-  assert.doesNotMatch(glue, /\beval\s*\(/);
-});
