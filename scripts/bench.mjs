@@ -4,17 +4,22 @@
 // bench-results/latest.md. Timings are never asserted anywhere.
 //   npm run bench                 everything
 //   npm run bench -- mesh curve   only tasks whose name starts with one of these words
+//   npm run bench -- --table      only rewrite latest.md from latest.jsonl (no measuring)
 import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
 import { setup } from './setup.mjs';
 import { build } from './build.mjs';
-import os from 'node:os';
 import { repoRoot, log, capture, quiet } from './lib/run.mjs';
-import { expectedTasks, referenceFor, missingTasks } from './lib/bench-tasks.mjs';
+import { expectedTasks, referenceFor, nativeTwin, missingTasks } from './lib/bench-tasks.mjs';
 
-const filters = process.argv.slice(2);
-await setup();
-await build();
+const tableOnly = process.argv.includes('--table');
+const filters = process.argv.slice(2).filter((a) => !a.startsWith('--'));
+const outDir = path.join(repoRoot, 'bench-results');
+if (!tableOnly) {
+  await setup();
+  await build();
+}
 
 const programs = [];
 const nativeBench = path.join(repoRoot, 'build', 'native', 'wingspline_bench');
@@ -27,8 +32,10 @@ for (const dir of ['tests/bench/wasm', 'tests/bench/browser']) {
   }
 }
 
-const rows = [];
-for (const [cmd, args] of programs) {
+const rows = tableOnly
+  ? fs.readFileSync(path.join(outDir, 'latest.jsonl'), 'utf8').split('\n').filter(Boolean).map((l) => JSON.parse(l))
+  : [];
+for (const [cmd, args] of tableOnly ? [] : programs) {
   log(`running ${path.relative(repoRoot, args[0] ?? cmd)}`);
   const r = await capture(cmd, [...args, ...filters], { env: { ...process.env, WINGSPLINE_BENCH_FILTER: filters.join(',') } });
   for (const line of r.stdout.split('\n')) {
@@ -43,29 +50,40 @@ for (const [cmd, args] of programs) {
   if (r.code !== 0) process.stderr.write(`[wingspline] ${cmd} exited with ${r.code}\n${r.stderr}\n`);
 }
 
-const outDir = path.join(repoRoot, 'bench-results');
 fs.mkdirSync(outDir, { recursive: true });
-fs.writeFileSync(path.join(outDir, 'latest.jsonl'), rows.map((r) => JSON.stringify(r)).join('\n') + '\n');
+if (!tableOnly) fs.writeFileSync(path.join(outDir, 'latest.jsonl'), rows.map((r) => JSON.stringify(r)).join('\n') + '\n');
 const fmt = (x) => (typeof x === 'number' ? (Math.abs(x) >= 100 ? x.toFixed(0) : x.toPrecision(3)) : (x ?? ''));
-// Where and what was measured, so a figure can be reproduced and compared honestly.
-const commit = quiet('git', ['-C', repoRoot, 'rev-parse', '--short', 'HEAD']).stdout.trim();
-const machine = `${os.cpus()[0]?.model ?? 'unknown CPU'}, ${os.cpus().length} cores, load ${os.loadavg()[0].toFixed(1)}`;
+// Where and what was measured, so a figure can be reproduced and compared honestly (kept
+// next to the results, so --table reports the run, not the moment the table is written).
+const metaFile = path.join(outDir, 'latest-meta.json');
+if (!tableOnly) {
+  fs.writeFileSync(metaFile, JSON.stringify({
+    when: new Date().toISOString().slice(0, 16).replace('T', ' '),
+    machine: `${os.cpus()[0]?.model ?? 'unknown CPU'}, ${os.cpus().length} cores, load ${os.loadavg()[0].toFixed(1)} at the end`,
+    node: process.versions.node,
+    commit: quiet('git', ['-C', repoRoot, 'rev-parse', '--short', 'HEAD']).stdout.trim() || 'unknown',
+    command: `npm run bench${filters.length ? ' -- ' + filters.join(' ') : ''}`,
+  }) + '\n');
+}
+const meta = fs.existsSync(metaFile) ? JSON.parse(fs.readFileSync(metaFile, 'utf8')) : {};
 const header = [
-  `Measured ${new Date().toISOString().slice(0, 16).replace('T', ' ')} UTC on ${machine}; Node ${process.versions.node};` +
-  ` commit ${commit || 'unknown'}; command \`npm run bench${filters.length ? ' -- ' + filters.join(' ') : ''}\`.`,
+  `Measured ${meta.when ?? '(unknown time)'} UTC on ${meta.machine ?? 'an unknown machine'}; Node ${meta.node ?? '?'};` +
+  ` commit ${meta.commit ?? 'unknown'}; command \`${meta.command ?? 'npm run bench'}\`.`,
   'Figures are per work unit (ns unless the unit says otherwise); min and median over the repetitions.',
-  '"ref" is the other library\'s figure from BENCH.md for the same task (orientation only: it was measured',
-  'in another run); "x ref" = min / ref.',
+  '"ref" is the other library\'s figure from BENCH.md for the same task and build (orientation only: it was',
+  'measured in another run); "x ref" = min / ref; "wasm / native" = the wasm min over the native min of the',
+  'same task and input in this run (`_core` rows: the same work timed inside the module).',
   '',
 ];
-const table = ['| task | build | input | n | min | median | unit | ref | x ref |',
-  '| --- | --- | --- | ---: | ---: | ---: | --- | ---: | ---: |',
+const table = ['| task | build | input | n | min | median | unit | ref | x ref | wasm / native |',
+  '| --- | --- | --- | ---: | ---: | ---: | --- | ---: | ---: | ---: |',
   ...rows.map((r) => {
     const min = r.ns_per_unit_min ?? r.min;
     const ref = referenceFor(r);
     return `| ${r.task} | ${r.build} | ${r.input ?? ''} | ${r.n ?? ''} | ${fmt(min)} | ` +
       `${fmt(r.ns_per_unit_median ?? r.median)} | ${r.unit ?? 'ns/unit'} | ${ref ? `${fmt(ref.value)} (${ref.label})` : ''} | ` +
-      `${ref && typeof min === 'number' ? (min / ref.value).toFixed(2) : ''} |`;
+      `${ref && typeof min === 'number' ? (min / ref.value).toFixed(2) : ''} | ` +
+      `${(() => { const twin = nativeTwin(r, rows); const m = twin?.ns_per_unit_min; return m ? (min / m).toFixed(2) : ''; })()} |`;
   })];
 // Every task of BENCH.md must appear; a filter run only checks the tasks it asked for.
 const wanted = filters.length ? expectedTasks.filter((t) => filters.some((f) => t.task.startsWith(f))) : expectedTasks;
