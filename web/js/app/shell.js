@@ -251,7 +251,8 @@ export async function runLesson(lesson) {
       announce(handles().find((x) => x.id === ui.selected));
     },
     click: lesson.click ? (x, y, event) => lesson.click(x, y, ctx, event) : null,
-    onResize: () => scheduleRender(),
+    // Resizing clears the canvas: redraw at once, so no frame (or screenshot) shows it blank.
+    onResize: () => { if (model && ctx.stage) renderNow(); else scheduleRender(); },
   });
 
   function announce(handle) {

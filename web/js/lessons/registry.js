@@ -23,7 +23,7 @@ export const lessons = [
     page: 'continuity.html',
     lectures: '000, 001, 002, 004',
     summary: 'C0, C1, C2 against G1, G2, measured at every joint of a piecewise curve.',
-    ready: false,
+    ready: true,
   },
   {
     id: 'comparison',
@@ -31,7 +31,7 @@ export const lessons = [
     page: 'comparison.html',
     lectures: '001, 002, 003',
     summary: 'One control polygon under several curve families; the comparison tables checked live; basis conversion.',
-    ready: false,
+    ready: true,
   },
   {
     id: 'surfaces',
@@ -39,6 +39,6 @@ export const lessons = [
     page: 'surfaces.html',
     lectures: '002',
     summary: 'Bicubic Hermite and Bezier patches with their control nets and twist vectors.',
-    ready: false,
+    ready: true,
   },
 ];

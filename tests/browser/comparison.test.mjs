@@ -1,0 +1,111 @@
+// The comparison lab: the live table against lecture 003's table, a drag that keeps the
+// facts, basis conversion against lecture 002's Bezier tangents, and invariance.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { startSite, launchBrowser, openPage, screenshot } from '../helpers/browser.mjs';
+
+// Lecture 003's comparison table, typed from the notes (Hermite, Bezier, B-spline, Catmull-Rom).
+const LECTURE_003 = {
+  convexHull: ['N/A', 'Yes', 'Yes', 'No'],
+  interpolatesSome: ['Yes', 'Yes', 'No', 'Yes'],
+  interpolatesAll: ['Yes', 'No', 'No', 'Yes'],
+  subdivision: ['Good', 'Best', 'Avg', 'Avg'],
+  inherent: ['C0 G0', 'C0 G0', 'C2 G2', 'C1 G1'],
+  easy: ['C1 G1', 'C1 G1', 'C2 G2', 'C1 G1'],
+};
+// Lecture 001's non-uniform B-spline column (YES, NO, NO, High, C2 G2, C2 G2).
+const LECTURE_001_NUBS = { convexHull: 'Yes', interpolatesSome: 'No', interpolatesAll: 'No', subdivision: 'High', inherent: 'C2 G2', easy: 'C2 G2' };
+const FAMILIES = ['hermite', 'bezier', 'bspline', 'catmull-rom'];
+const EXACT = 1e-12; // world units: "the same curve"
+
+let site;
+let browser;
+before(async () => { site = await startSite(); browser = await launchBrowser(); });
+after(async () => { await browser?.close(); await site?.close(); });
+
+async function openLab() {
+  const page = await openPage(browser, `${site.url}comparison.html`);
+  await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
+  return page;
+}
+const liveTable = (page) => page.$$eval('.live-cell', (cells) => cells.map((c) => ({ row: c.dataset.row, family: c.dataset.family, answer: c.dataset.answer })));
+
+function assertMatchesLecture(cells) {
+  for (const [row, answers] of Object.entries(LECTURE_003)) {
+    FAMILIES.forEach((family, k) => {
+      const cell = cells.find((c) => c.row === row && c.family === family);
+      assert.ok(cell, `cell ${row} / ${family} is on the page`);
+      assert.equal(cell.answer, answers[k], `${row} for ${family}`);
+    });
+    const nubs = cells.find((c) => c.row === row && c.family === 'nubs');
+    assert.equal(nubs?.answer, LECTURE_001_NUBS[row], `${row} for the non-uniform B-spline (lecture 001)`);
+  }
+}
+
+test('the live table matches lecture 003 for the default polygon', async () => {
+  const page = await openLab();
+  assertMatchesLecture(await liveTable(page));
+  const interp = await page.evaluate(() => Object.fromEntries(Object.entries(window.wingspline.model.table.columns)
+    .map(([f, c]) => [f, c.interpolatesSome.interpolated])));
+  // A cubic Bezier segment interpolates its end points only: P0, P3, P6 of the 7-point polygon.
+  assert.deepEqual(interp.bezier, [0, 3, 6]);
+  assert.deepEqual(interp.bspline, [], 'the uniform B-spline passes through none');
+  assert.deepEqual(interp.hermite, [0, 1, 2, 3, 4, 5, 6]);
+  assert.equal(await page.$$eval('.live-cell [class="lecture differs"]', (x) => x.length), 0);
+  await screenshot(page, 'comparison-families');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('dragging a control point keeps the lecture\'s facts true', async () => {
+  const page = await openLab();
+  const hd = (await page.evaluate(() => window.wingspline.handles())).find((x) => x.id === 'p1');
+  await page.mouse.move(hd.x, hd.y);
+  await page.mouse.down();
+  await page.mouse.move(hd.x + 30, hd.y - 40, { steps: 5 });
+  await page.mouse.up();
+  const s = await page.evaluate(() => window.wingspline.state);
+  assert.notDeepEqual(s.points[1], [-2.4, 1.3]);
+  assertMatchesLecture(await liveTable(page));
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('basis conversion: the Hermite geometry of a Bezier segment is P0, P3, 3(P1 - P0), 3(P3 - P2)', async () => {
+  const page = await openLab();
+  await page.selectOption('#scene', 'conversion');
+  await page.selectOption('#conv-to', 'hermite');
+  const r = await page.evaluate(() => {
+    const m = window.wingspline.model.conversion;
+    return { q: Array.from(m.q), distance: m.distance, points: window.wingspline.state.points };
+  });
+  const [P0, P1, P2, P3] = r.points;
+  // Lecture 002: p'(0) = 3 (p1 - p0), p'(1) = 3 (p3 - p2).
+  const expected = [...P0, ...P3, 3 * (P1[0] - P0[0]), 3 * (P1[1] - P0[1]), 3 * (P3[0] - P2[0]), 3 * (P3[1] - P2[1])];
+  expected.forEach((v, k) => assert.ok(Math.abs(r.q[k] - v) < EXACT, `q[${k}]`));
+  assert.ok(r.distance < EXACT, 'the converted geometry draws the same curve');
+  assert.match(await page.textContent('#conversion-panel'), /max distance/);
+  await screenshot(page, 'comparison-conversion');
+  // Keep G and swap M: the same four points read as B-spline geometry give another curve.
+  await page.selectOption('#conv-mode', 'keep-geometry');
+  await page.selectOption('#conv-to', 'bspline');
+  const swapped = await page.evaluate(() => window.wingspline.model.conversion.distance);
+  assert.ok(swapped > 0.05, 'a different curve');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('invariance: affine maps commute with every family; perspective only with the rational form', async () => {
+  const page = await openLab();
+  await page.selectOption('#scene', 'invariance');
+  let inv = await page.evaluate(() => window.wingspline.model.invariance);
+  for (const f of [...FAMILIES, 'nubs']) assert.ok(inv.rows[f].distance < 1e-12, `${f} is affine invariant`);
+  await page.selectOption('#tf-kind', 'perspective');
+  await page.waitForFunction(() => window.wingspline.state.transform.kind === 'perspective');
+  inv = await page.evaluate(() => window.wingspline.model.invariance);
+  assert.ok(inv.rows.bezier.distance > 1e-3, 'a polynomial Bezier curve is not perspective invariant');
+  assert.ok(inv.rational.distance < 1e-12, 'the rational Bezier with weights w(P_i) is');
+  await screenshot(page, 'comparison-perspective');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

@@ -1,0 +1,82 @@
+// The four families of lecture 003's table built on one control polygon P0..P(K-1), as
+// curve objects of the core API. Only control data is arranged here; every point on every
+// curve comes from the core.
+// Lecture 003's four columns and lecture 001's non-uniform B-spline.
+export const FAMILY_IDS = ['hermite', 'bezier', 'bspline', 'catmull-rom', 'nubs'];
+export const FAMILY_NAMES = { hermite: 'Hermite', bezier: 'Bezier', bspline: 'B-spline', 'catmull-rom': 'Catmull-Rom', nubs: 'Non-uniform B-spline' };
+// Colour index into ctx.colors.series (Okabe-Ito) per family; the legend also names them.
+export const FAMILY_COLOR = { hermite: 3, bezier: 0, bspline: 2, 'catmull-rom': 1, nubs: 6 };
+export const FAMILY_DASH = { hermite: [10, 4], bezier: [], bspline: [], 'catmull-rom': [3, 4], nubs: [12, 3, 2, 3] };
+
+// The non-uniform cubic B-spline of lecture 001 on the same K points: unclamped knots with
+// unequal gaps (K + 4 of them), so its segments have different parameter lengths.
+export function nonUniformKnots(count) {
+  const gaps = [0.6, 0.4, 1.2, 0.8, 0.5, 1.3, 0.6, 1.1, 0.5, 1];
+  const knots = [0];
+  for (let i = 1; i < count + 4; i += 1) knots.push(Number((knots[i - 1] + gaps[(i - 1) % gaps.length]).toFixed(6)));
+  return knots;
+}
+export const nubsCurve = (points) => ({ kind: 'bspline', dim: 2, degree: 3, points: flat(points), knots: nonUniformKnots(points.length) });
+
+const flat = (list) => list.flatMap((p) => p);
+const sub = (a, b) => [a[0] - b[0], a[1] - b[1]];
+const half = (a) => [a[0] / 2, a[1] / 2];
+
+// Hermite "with tangents from the points": t_i = (P_i+1 - P_i-1) / 2 inside, the one-sided
+// chord at the ends (the Catmull-Rom conditions of lecture 002, p'(0) = (p2 - p0)/2).
+export function pointTangents(points) {
+  const n = points.length;
+  return points.map((_, i) => (i === 0 ? sub(points[1], points[0])
+    : i === n - 1 ? sub(points[n - 1], points[n - 2]) : half(sub(points[i + 1], points[i - 1]))));
+}
+
+// Each family as a list of segment curves (joints between consecutive entries) and the
+// control point indices each segment is built from.
+export function familySegments(family, points) {
+  const segs = [];
+  // The non-uniform B-spline is evaluated as one curve; its joints are the core's spans.
+  if (family === 'nubs') return [nubsCurve(points)];
+  if (family === 'bezier') {
+    // Piecewise cubic Bezier: segment i is P3i..P3i+3, neighbours share the end point.
+    for (let i = 0; i + 3 < points.length; i += 3) segs.push({ kind: 'bezier', dim: 2, points: flat(points.slice(i, i + 4)) });
+  } else if (family === 'hermite') {
+    const t = pointTangents(points);
+    for (let i = 0; i + 1 < points.length; i += 1) {
+      segs.push({ kind: 'hermite', dim: 2, points: flat([points[i], points[i + 1]]), tangents: flat([t[i], t[i + 1]]) });
+    }
+  } else {
+    // Uniform B-spline and Catmull-Rom windows of four. Catmull-Rom repeats the end points,
+    // so its segments run from P0 to P(K-1) and it passes through every control point.
+    const list = family === 'catmull-rom' ? [points[0], ...points, points[points.length - 1]] : points;
+    for (let i = 0; i + 3 < list.length; i += 1) segs.push({ kind: family, dim: 2, points: flat(list.slice(i, i + 4)) });
+  }
+  return segs;
+}
+
+// The "inherent" version of a family: only what the representation itself guarantees.
+// Hermite segments with their own tangents (each segment's chord at both ends) and Bezier
+// segments that only share end points are C0; B-spline and Catmull-Rom windows overlap,
+// so their joints are what they are.
+export function inherentSegments(family, points) {
+  if (family === 'hermite') {
+    const segs = [];
+    for (let i = 0; i + 1 < points.length; i += 1) {
+      const chord = sub(points[i + 1], points[i]);
+      segs.push({ kind: 'hermite', dim: 2, points: flat([points[i], points[i + 1]]), tangents: flat([chord, chord]) });
+    }
+    return segs;
+  }
+  return familySegments(family, points);
+}
+
+// The "easily achieved" version (lecture 001 "Achieving Continuity"): Hermite shares the
+// tangent at the joint; Bezier makes P3i-1, P3i, P3i+1 collinear with equal legs
+// (P3i+1 = 2 P3i - P3i-1). B-spline and Catmull-Rom need nothing.
+export function easySegments(family, points) {
+  if (family === 'bezier') {
+    const q = points.map((p) => p.slice());
+    for (let j = 3; j + 1 < q.length; j += 3) q[j + 1] = [2 * q[j][0] - q[j - 1][0], 2 * q[j][1] - q[j - 1][1]];
+    return familySegments('bezier', q);
+  }
+  return familySegments(family, points);
+}

@@ -1,0 +1,343 @@
+// Comparison lab (lectures 001, 002, 003): one control polygon under Hermite, Bezier,
+// uniform B-spline and Catmull-Rom at once; the lectures' comparison table checked live by
+// the core; basis conversion both ways; affine and perspective invariance measured.
+import { object, list, number, oneOf, integer, boolean } from '../../app/schema.js';
+import { fitView } from '../../ui/fit-view.js';
+import { h, panel, table } from '../../app/dom.js';
+import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
+import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH, pointTangents } from './families.js';
+import { computeTable, LECTURE_TABLE, ROW_NAMES } from './checks.js';
+import { computeConversion, computeInvariance } from './transforms.js';
+import { drawCurve, drawPolygon } from '../curves/overlays.js';
+import { createBlendingPlot } from '../curves/blending-plot.js';
+import { createMatrixPanel } from '../curves/matrix-panel.js';
+
+// The blending functions of one segment per point-based family: the convex hull row's
+// evidence (lecture 003: weights in [0, 1] summing to 1), drawn with the curve explorer's plot.
+const BLEND_FAMILIES = ['bezier', 'bspline', 'catmull-rom'];
+
+const SCENES = { families: 'All families', conversion: 'Basis conversion', invariance: 'Invariance' };
+const BASES = ['hermite', 'bezier', 'bspline', 'catmull-rom'];
+const POINT_BASES = ['bezier', 'bspline', 'catmull-rom'];
+const pair = list(number(), { min: 2, max: 2 });
+
+// The default polygon: seven points (two cubic Bezier segments), in general position so no
+// joint is accidentally smoother than its family guarantees.
+const DEFAULT_POINTS = [[-3.2, -1.2], [-2.4, 1.3], [-0.9, 1.6], [-0.2, -0.4], [1.1, -1.5], [2.3, 0.2], [3.3, 1.4]];
+
+const fmt = (x) => formatNumber(x, 3);
+// Distances: tiny ones keep their size visible (1.1e-16, not 0).
+const fmtDistance = (x) => (x === 0 ? '0' : x < 1e-3 ? x.toExponential(1) : formatNumber(x, 3));
+// A bracket that keeps its text size next to tall matrices.
+const fixed = (text) => { const o = mo(text); o.setAttribute('stretchy', 'false'); return o; };
+
+export const lesson = {
+  id: 'comparison',
+  title: 'Comparison lab',
+  stateVersion: 1,
+  schema: {
+    points: list(pair, { min: 4, max: 31 }),
+    scene: oneOf(...Object.keys(SCENES)),
+    show: object(Object.fromEntries(FAMILY_IDS.map((f) => [f, boolean()]))),
+    conversion: object({ from: oneOf(...POINT_BASES), to: oneOf(...BASES), start: integer({ min: 0, max: 27 }), mode: oneOf('keep-curve', 'keep-geometry') }),
+    transform: object({
+      kind: oneOf('affine', 'perspective'), angle: number({ min: -180, max: 180 }), scale: number({ min: 0.1, max: 4 }),
+      shear: number({ min: -2, max: 2 }), tx: number({ min: -10, max: 10 }), ty: number({ min: -10, max: 10 }),
+      px: number({ min: -0.5, max: 0.5 }), py: number({ min: -0.5, max: 0.5 }),
+    }),
+    view: object({ cx: number(), cy: number(), zoom: number({ min: 1, max: 1e5 }) }),
+  },
+  checkState(state) {
+    if ((state.points.length - 1) % 3 !== 0) return `the polygon needs 3n + 1 points (whole cubic Bezier segments), not ${state.points.length}`;
+    if (state.conversion.start + 4 > state.points.length) return `the converted segment starts at P${state.conversion.start} but needs four points`;
+    return null;
+  },
+  defaultState: () => ({
+    points: DEFAULT_POINTS.map((p) => p.slice()),
+    scene: 'families',
+    show: { hermite: true, bezier: true, bspline: true, 'catmull-rom': true, nubs: true },
+    conversion: { from: 'bezier', to: 'hermite', start: 0, mode: 'keep-curve' },
+    transform: { kind: 'affine', angle: 30, scale: 0.8, shear: 0.3, tx: 0.5, ty: -0.4, px: 0.06, py: 0.03 },
+    view: { cx: 0, cy: 0, zoom: 90 },
+  }),
+
+  compute(state, ctx) {
+    const api = ctx.api;
+    return {
+      state,
+      table: computeTable(api, state.points),
+      conversion: computeConversion(api, state.points, state.conversion),
+      invariance: computeInvariance(api, state.points, state.transform),
+      blending: BLEND_FAMILIES.map((family) => blendingOfFirstSegment(api, family, state.points)),
+    };
+  },
+
+  fitView(model, stage) {
+    const pts = model.state.scene === 'invariance' ? [...model.state.points, ...model.invariance.mapped] : model.state.points;
+    const xs = pts.map((p) => p[0]);
+    const ys = pts.map((p) => p[1]);
+    const [minY, maxY] = [Math.min(...ys), Math.max(...ys)];
+    // Room at the top for the legend.
+    return fitView(stage.canvas, Math.min(...xs), minY - 0.3, Math.max(...xs), maxY + 0.3 * (maxY - minY) + 0.3);
+  },
+
+  setup(ctx) {
+    const sceneSelect = h('select', { id: 'scene', onchange: () => {
+      // Each scene gets a view that shows all of it (the invariance scene adds the mapped points).
+      if (ctx.commit({ ...ctx.state, scene: sceneSelect.value })) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+    } },
+      Object.entries(SCENES).map(([k, v]) => h('option', { value: k }, v)));
+    const familyBoxes = FAMILY_IDS.map((f) => {
+      const box = h('input', { type: 'checkbox', id: `show-${f}`, onchange: () => ctx.commit({ ...ctx.state, show: { ...ctx.state.show, [f]: box.checked } }, { recompute: false }) });
+      return { f, box, label: h('label', { for: `show-${f}`, class: `family-${f}` }, box, FAMILY_NAMES[f]) };
+    });
+    ctx.controls.replaceChildren(h('label', { for: 'scene' }, 'Show ', sceneSelect), ...familyBoxes.map((b) => b.label));
+
+    // The panel of the current scene is open and first in view; the live table stays below.
+    const convBody = panel(ctx.panels, { id: 'conversion-panel', title: 'Basis conversion: q = M⁻¹ M_B P', open: false });
+    const invBody = panel(ctx.panels, { id: 'invariance-panel', title: 'Invariance: transform the points or the curve', open: false });
+    const tableBody = panel(ctx.panels, { id: 'table-panel', title: 'The comparison table, checked live' });
+    const blendBody = panel(ctx.panels, { id: 'blending-panel', title: 'Blending weights (the convex hull row)' });
+    const blendPlots = BLEND_FAMILIES.map((f) => createBlendingPlot(blendBody, { label: FAMILY_NAMES[f], height: 130 }));
+
+    const select = (id, options, value, onchange, names = FAMILY_NAMES) => {
+      const s = h('select', { id, onchange: () => onchange(s.value) }, options.map((o) => h('option', { value: o }, names[o] ?? o)));
+      s.value = value;
+      return s;
+    };
+    const setConversion = (patch) => ctx.commit({ ...ctx.state, scene: 'conversion', conversion: { ...ctx.state.conversion, ...patch } });
+    const conv = {
+      mode: select('conv-mode', ['keep-curve', 'keep-geometry'], 'keep-curve', (v) => setConversion({ mode: v }),
+        { 'keep-curve': 'keep the curve, find q', 'keep-geometry': 'keep G, swap M' }),
+      from: select('conv-from', POINT_BASES, 'bezier', (v) => setConversion({ from: v })),
+      to: select('conv-to', BASES, 'hermite', (v) => setConversion({ to: v })),
+      start: h('input', { type: 'number', id: 'conv-start', min: 0, step: 1, onchange: () => setConversion({ start: Number(conv.start.value) }) }),
+      out: h('div', { class: 'conversion-out' }),
+      matrices: h('div', { class: 'conversion-matrices' }),
+    };
+    convBody.append(h('div', { class: 'form-row' },
+      h('label', { for: 'conv-mode' }, 'Mode ', conv.mode), h('label', { for: 'conv-from' }, 'P read as ', conv.from),
+      h('label', { for: 'conv-to' }, 'other basis ', conv.to), h('label', { for: 'conv-start' }, 'first point P', conv.start)), conv.out, conv.matrices);
+    conv.fromPanel = createMatrixPanel(conv.matrices);
+    conv.toPanel = createMatrixPanel(conv.matrices);
+
+    const setTransform = (patch) => ctx.commit({ ...ctx.state, scene: 'invariance', transform: { ...ctx.state.transform, ...patch } });
+    const slider = (key, text, min, max, step) => {
+      const input = h('input', { type: 'range', id: `tf-${key}`, min, max, step, oninput: () => setTransform({ [key]: Number(input.value) }) });
+      const out = h('output', { for: `tf-${key}` });
+      return { key, input, out, label: h('label', { for: `tf-${key}` }, text, ' ', input, out) };
+    };
+    const inv = {
+      kind: select('tf-kind', ['affine', 'perspective'], 'affine', (v) => setTransform({ kind: v }), { affine: 'affine (rotate, scale, shear, move)', perspective: 'perspective' }),
+      sliders: [slider('angle', 'angle°', -180, 180, 1), slider('scale', 'scale', 0.1, 2, 0.05), slider('shear', 'shear', -1, 1, 0.05),
+        slider('tx', 'move x', -3, 3, 0.1), slider('ty', 'move y', -3, 3, 0.1), slider('px', 'perspective x', -0.2, 0.2, 0.01), slider('py', 'perspective y', -0.2, 0.2, 0.01)],
+      out: h('div', { class: 'invariance-out' }),
+    };
+    invBody.append(h('label', { for: 'tf-kind' }, 'Map ', inv.kind), h('div', { class: 'slider-grid' }, inv.sliders.map((s) => s.label)), inv.out);
+    lesson.ui = { sceneSelect, familyBoxes, tableBody, conv, inv, blendPlots };
+
+    ctx.keymap.add({ keys: ['v'], label: 'next scene: families, conversion, invariance', group: 'Lesson', action: () => {
+      const keys = Object.keys(SCENES);
+      ctx.commit({ ...ctx.state, scene: keys[(keys.indexOf(ctx.state.scene) + 1) % keys.length] });
+    } });
+    FAMILY_IDS.forEach((f, i) => ctx.keymap.add({ keys: [String(i + 1)], label: `show / hide ${FAMILY_NAMES[f]}`, group: 'Lesson',
+      action: () => ctx.commit({ ...ctx.state, show: { ...ctx.state.show, [f]: !ctx.state.show[f] } }, { recompute: false }) }));
+  },
+
+  update(model, state, ctx) {
+    const ui = lesson.ui;
+    if (ui.shownScene !== state.scene) {
+      ui.shownScene = state.scene;
+      document.getElementById('conversion-panel').open = state.scene === 'conversion';
+      document.getElementById('invariance-panel').open = state.scene === 'invariance';
+    }
+    ui.sceneSelect.value = state.scene;
+    for (const b of ui.familyBoxes) b.box.checked = state.show[b.f];
+    updateTable(ui.tableBody, model.table);
+    updateConversion(ui.conv, model.conversion, state);
+    updateInvariance(ui.inv, model.invariance, state);
+    model.blending.forEach((b, k) => ui.blendPlots[k].update({
+      params: b.params, count: b.count, values: b.values, u: b.uMin, domain: { start: 0, end: 1 }, colors: ctx.colors,
+      labels: b.labels, caption: `${FAMILY_NAMES[b.family]}, first segment: smallest weight ${fmt(b.minWeight)} at u = ${fmt(b.uMin)}`,
+    }));
+    const m = model.conversion;
+    const name = (k) => FAMILY_NAMES[k];
+    ui.conv.fromPanel.update({ segment: m.segmentFrom, u: 0.5, point: m.midFrom, title: `${name(m.from)}: the segment as drawn (P)` });
+    ui.conv.toPanel.update({ segment: m.segmentTo, u: 0.5, point: m.midTo,
+      title: m.q ? `${name(m.to)}: the same curve from q` : `${name(m.to)}: the same G with M swapped` });
+  },
+
+  draw(painter, model, state, ctx) {
+    if (!model) return;
+    const c = ctx.colors;
+    const strokeOf = (f) => c.series[FAMILY_COLOR[f]];
+    drawPolygon(painter, state.points, { stroke: c.muted, width: 1.2, dash: [5, 4] });
+    const legend = [];
+    if (state.scene === 'families') {
+      for (const f of FAMILY_IDS) {
+        if (!state.show[f]) continue;
+        for (const s of model.table.curves[f]) drawCurve(painter, s.points, { stroke: strokeOf(f), width: f === 'bezier' ? 4 : 2.5, dash: FAMILY_DASH[f] });
+        legend.push([strokeOf(f), `${FAMILY_NAMES[f]}${f === 'catmull-rom' ? ' (end points repeated)' : f === 'nubs' ? ` (knots ${model.table.knots.join(', ')})` : f === 'hermite' ? ', t_i = (P_i+1 − P_i−1)/2: Catmull-Rom inside' : ''}`, FAMILY_DASH[f]]);
+      }
+      if (state.show.hermite) {
+        const t = pointTangents(state.points);
+        state.points.forEach((p, i) => painter.arrow(p[0], p[1], p[0] + t[i][0] / 3, p[1] + t[i][1] / 3, { stroke: strokeOf('hermite'), width: 1.2, alpha: 0.8 }));
+      }
+    } else if (state.scene === 'conversion') {
+      const m = model.conversion;
+      painter.polyline(m.original, { stroke: c.series[0], width: 5, alpha: 0.55 });
+      painter.polyline(m.other, { stroke: c.series[1], width: 2, dash: [8, 5] });
+      legend.push([c.series[0], `${FAMILY_NAMES[m.from]} segment of P${state.conversion.start}..P${state.conversion.start + 3}`, []]);
+      legend.push([c.series[1], m.mode === 'keep-curve' ? `${FAMILY_NAMES[m.to]} curve of q (max distance ${fmtDistance(m.distance)})` : `same G read as ${FAMILY_NAMES[m.to]}`, [8, 5]]);
+      if (m.q) drawGeometry(painter, m.to, m.q, c.series[1], 'q', c);
+    } else {
+      const inv = model.invariance;
+      for (const piece of inv.drawing.bezier) {
+        painter.polyline(piece.mappedCurve, { stroke: c.ink, width: 5, alpha: 0.3 });
+        painter.polyline(piece.curveOfMapped, { stroke: c.series[0], width: 2, dash: [8, 5] });
+      }
+      painter.polyline(inv.mapped.flat(), { stroke: c.series[0], width: 1, dash: [2, 3] });
+      inv.mapped.forEach((p, i) => painter.text(p[0], p[1], `T(P${i})`, { fill: c.series[0], font: 12, dy: -12, halo: c.background }));
+      legend.push([c.ink, 'T(curve): the Bezier curve, then mapped', []]);
+      legend.push([c.series[0], `curve of T(P): mapped points, then evaluated (max distance ${fmtDistance(inv.rows.bezier.distance)})`, [8, 5]]);
+      if (inv.rational) {
+        for (const piece of inv.rational.pieces) painter.polyline(piece.rationalCurve, { stroke: c.series[2], width: 2, dash: [2, 4] });
+        legend.push([c.series[2], `rational Bezier of T(P), weights w(P_i) (max distance ${fmtDistance(inv.rational.distance)})`, [2, 4]]);
+      }
+    }
+    for (const hd of lesson.handles(model, state)) {
+      const on = hd.id === ctx.ui.selected;
+      painter.circle(hd.x, hd.y, on ? 8 : 6, { fill: on ? c.highlight : c.background, stroke: c.ink, width: 1.5 });
+      painter.text(hd.x, hd.y, hd.label, { fill: c.ink, font: 12, dx: 12, dy: -12, align: 'left', halo: c.background });
+    }
+    const tr = painter.t;
+    const [lx, ly] = tr.toWorld(12, 16);
+    const lineH = (20 * (painter.scale ?? 1)) / tr.zoom;
+    legend.forEach(([color, words], i) => painter.text(lx, ly - i * lineH, `━ ${words}`, { fill: color, font: 13, align: 'left', halo: c.background }));
+  },
+
+  handles(model, state) {
+    return state.points.map(([x, y], i) => ({ id: `p${i}`, x, y, label: `P${i}` }));
+  },
+
+  moveHandle(state, id, x, y) {
+    const i = Number(id.slice(1));
+    if (!Number.isInteger(i) || i < 0 || i >= state.points.length) return null;
+    const points = state.points.map((p) => p.slice());
+    points[i] = [x, y];
+    return { ...state, points };
+  },
+
+  describe(model, state) {
+    if (!model) return '';
+    const cols = model.table.columns;
+    const parts = FAMILY_IDS.map((f) => `${FAMILY_NAMES[f]}: interpolates ${cols[f].interpolatesAll.answer === 'Yes' ? 'all' : cols[f].interpolatesSome.answer === 'Yes' ? `P${cols[f].interpolatesSome.interpolated.join(', P')}` : 'no'} control points, inherent ${cols[f].inherent.answer}`);
+    return `${state.points.length} control points drawn under four families (${SCENES[state.scene]}). ${parts.join('; ')}.`;
+  },
+
+  exports: [{
+    label: 'Comparison table (Markdown)', filename: 'comparison-table.md', type: 'text/markdown',
+    make(model) {
+      const head = `| | ${FAMILY_IDS.map((f) => FAMILY_NAMES[f]).join(' | ')} |\n|---|${FAMILY_IDS.map(() => '---').join('|')}|`;
+      const rows = Object.keys(ROW_NAMES).map((row) => `| ${ROW_NAMES[row]} | ${FAMILY_IDS.map((f) => `${model.table.columns[f][row].answer} (${model.table.columns[f][row].evidence})`).join(' | ')} |`);
+      return `${head}\n${rows.join('\n')}\n`;
+    },
+  }],
+};
+
+function blendingOfFirstSegment(api, family, points) {
+  const params = Array.from({ length: 101 }, (_, j) => j / 100);
+  const curve = family === 'bezier' ? { kind: 'bezier', dim: 2, points: points.slice(0, 4).flat() }
+    : family === 'bspline' ? { kind: 'bspline', dim: 2, points: points.slice(0, 4).flat() }
+      : { kind: 'catmull-rom', dim: 2, points: [points[0], ...points.slice(0, 3)].flat() };
+  const b = api.blendingFunctions(curve, params);
+  let minWeight = Infinity;
+  let uMin = 0;
+  for (let j = 0; j < params.length; j += 1) {
+    for (let i = 0; i < b.count; i += 1) if (b.values[b.count * j + i] < minWeight) { minWeight = b.values[b.count * j + i]; uMin = params[j]; }
+  }
+  const labels = family === 'catmull-rom' ? ['P0', 'P0', 'P1', 'P2'] : ['P0', 'P1', 'P2', 'P3'];
+  return { family, params, count: b.count, values: b.values, minWeight, uMin, labels };
+}
+
+function updateTable(body, tbl) {
+  const rows = Object.keys(ROW_NAMES).map((row) => [ROW_NAMES[row], ...FAMILY_IDS.map((f) => {
+    const cell = tbl.columns[f][row];
+    const expected = LECTURE_TABLE[row][f];
+    const agrees = cell.answer === expected;
+    return h('div', { class: 'live-cell', 'data-row': row, 'data-family': f, 'data-answer': cell.answer, 'data-agrees': String(agrees) },
+      h('strong', {}, cell.answer), h('span', { class: 'evidence' }, cell.evidence),
+      h('span', { class: agrees ? 'lecture agrees' : 'lecture differs' }, `lecture: ${expected} ${agrees ? '✓' : '≠'}`));
+  })]);
+  body.replaceChildren(
+    table({ caption: 'Lecture 003 (Hermite to Catmull-Rom) and lecture 001 (non-uniform B-spline), each cell measured now', head: [['', ...FAMILY_IDS.map((f) => FAMILY_NAMES[f])]], rows, className: 'data-table comparison-table' }),
+    h('p', { class: 'hint' }, 'Convex hull: the blending weights of the points are ≥ 0 and sum to 1 (lecture 003). Interpolation: distance from each control point to the curve. Continuity: the core\'s classifier at every joint, on the bare representation (inherent) and after the easy rule (Hermite shares tangents; Bezier mirrors P3i-1 about the joint).'),
+  );
+}
+
+function drawGeometry(painter, basis, q, color, name, c) {
+  if (basis === 'hermite') {
+    const p = [[q[0], q[1]], [q[2], q[3]]];
+    const t = [[q[4], q[5]], [q[6], q[7]]];
+    p.forEach((pt, i) => {
+      painter.arrow(pt[0], pt[1], pt[0] + t[i][0] / 3, pt[1] + t[i][1] / 3, { stroke: color, width: 2 });
+      painter.circle(pt[0], pt[1], 5, { fill: color });
+      painter.text(pt[0], pt[1], `${name}: p${i}, t${i}/3`, { fill: color, font: 12, dy: 16, halo: c.background });
+    });
+    return;
+  }
+  for (let i = 0; i < 4; i += 1) {
+    painter.polygon([q[2 * i] - 0.06, q[2 * i + 1] - 0.06, q[2 * i] + 0.06, q[2 * i + 1] - 0.06, q[2 * i] + 0.06, q[2 * i + 1] + 0.06, q[2 * i] - 0.06, q[2 * i + 1] + 0.06], { fill: color });
+    painter.text(q[2 * i], q[2 * i + 1], `${name}${i}`, { fill: color, font: 12, dy: 16, halo: c.background });
+  }
+  painter.polyline(Array.from(q), { stroke: color, width: 1, dash: [2, 3] });
+}
+
+function geometryRows(values) {
+  const rows = [];
+  for (let i = 0; i < 4; i += 1) rows.push([values[2 * i], values[2 * i + 1]]);
+  return rows;
+}
+
+function updateConversion(ui, m, state) {
+  ui.mode.value = state.conversion.mode;
+  ui.from.value = state.conversion.from;
+  ui.to.value = state.conversion.to;
+  ui.start.max = String(state.points.length - 4);
+  ui.start.value = String(state.conversion.start);
+  const sub = (base, s) => el('msub', mi(base), mi(s));
+  const short = { hermite: 'H', bezier: 'B', bspline: 'S', 'catmull-rom': 'R' };
+  const formula = m.q
+    ? math(mi('q'), mo('='), el('msup', sub('M', short[m.to]), el('mn', '-1')), sub('M', short[m.from]), mi('P'), mo('='),
+      el('msup', matrix(rows4(m.Mto)), el('mn', '-1')), matrix(rows4(m.Mfrom)), matrix(geometryRows(m.g)), mo('='), matrix(geometryRows(m.q)))
+    : math(mi('P'), fixed('('), mi('u'), fixed(')'), mo('='), el('msup', mi('u'), mi('T')), matrix(rows4(m.Mto)), matrix(geometryRows(m.g)));
+  ui.out.replaceChildren(
+    h('div', { class: 'formula' }, formula),
+    h('p', { 'data-conversion-distance': String(m.distance) }, m.q
+      ? `The ${FAMILY_NAMES[m.to]} curve of q is the ${FAMILY_NAMES[m.from]} curve of P: max distance ${fmtDistance(m.distance)} over 121 samples.`
+      : `The same four rows read as ${FAMILY_NAMES[m.to]} geometry give another curve: max distance ${fmt(m.distance)} from the ${FAMILY_NAMES[m.from]} curve.`),
+    m.to === 'hermite' && m.q ? h('p', { class: 'hint' }, 'Hermite rows are p0, p1, t0, t1: two points and two tangent vectors (drawn at 1/3 length).') : null,
+    h('p', { class: 'hint' }, m.q
+      ? 'Below, the core\'s matrix form of both: different M and G, the same coefficients C = M G, so the same curve.'
+      : 'Below, the core\'s matrix form of both: the same G, different M, so different coefficients C = M G.'),
+  );
+}
+
+function updateInvariance(ui, inv, state) {
+  ui.kind.value = state.transform.kind;
+  for (const s of ui.sliders) {
+    s.input.value = String(state.transform[s.key]);
+    s.out.textContent = fmt(state.transform[s.key]);
+    s.input.disabled = (s.key === 'px' || s.key === 'py') && state.transform.kind !== 'perspective';
+  }
+  const rows = FAMILY_IDS.map((f) => [FAMILY_NAMES[f], fmtDistance(inv.rows[f].distance),
+    inv.rows[f].distance < 1e-9 ? 'same curve' : 'different curves']);
+  if (inv.rational) rows.push(['Rational Bezier, weights w(P_i)', fmtDistance(inv.rational.distance), inv.rational.distance < 1e-9 ? 'same curve' : 'different curves']);
+  ui.out.replaceChildren(
+    table({ caption: `${state.transform.kind === 'affine' ? 'Affine' : 'Perspective'} map T: max distance between T(curve) and the curve of T(P)`,
+      head: [['family', 'max distance', 'verdict']], rows, className: 'data-table invariance-table' }),
+    h('p', { class: 'hint' }, state.transform.kind === 'affine'
+      ? 'Affine maps (rotation, scale, shear, translation) commute with the blending weights because they sum to 1: every family is invariant (lecture 001).'
+      : 'A perspective map divides by w = px x + py y + 1. Polynomial curves are not invariant; the rational curve with weights w(P_i) is (lecture 001: "rational splines are also perspective invariant").'),
+  );
+}

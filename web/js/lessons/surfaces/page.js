@@ -1,0 +1,4 @@
+import { runLesson } from '../../app/shell.js';
+import { lesson } from './lesson.js';
+
+runLesson(lesson);
