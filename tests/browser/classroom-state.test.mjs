@@ -150,6 +150,8 @@ for (const lesson of lessonsUnderTest) {
           await editByKeyboard(page);
           assert.notDeepEqual(await stateBits(page), before1, 'the page still takes edits');
           // The address bar now holds the usable state, so a reload shows no warning.
+          // (Saving is debounced; wait for it, as a person does not reload within 200 ms.)
+          await page.evaluate(() => window.wingspline.flush());
           await page.reload();
           await waitReady(page);
           assert.equal(await page.evaluate(() => window.wingspline.message()), '');

@@ -75,8 +75,14 @@ export function validatePartial(shape, raw, defaults) {
     return { state: structuredClone(defaults), problems: ['the state is not an object'] };
   }
   const state = {};
+  const keys = Object.keys(shape);
+  const missing = keys.filter((key) => !Object.prototype.hasOwnProperty.call(raw, key));
+  // Every saved state has every field (migrations add new ones), so a missing field means
+  // a damaged or hand-made state: it is reset, and said.
+  if (missing.length === keys.length) problems.push("it holds none of this lesson's settings");
+  else for (const key of missing) problems.push(`${key} is missing`);
   for (const [key, check] of Object.entries(shape)) {
-    if (!Object.prototype.hasOwnProperty.call(raw, key)) {
+    if (missing.includes(key)) {
       state[key] = structuredClone(defaults[key]);
       continue;
     }
