@@ -43,3 +43,41 @@ export function table({ caption, head = [], rows = [], className = 'data-table' 
     i === 0 ? h('th', { scope: 'row' }, cell) : h('td', {}, cell)))));
   return h('table', { class: className }, caption ? h('caption', {}, caption) : null, thead, tbody);
 }
+
+// Scrollable boxes (wide tables, long formulas) must be reachable by keyboard to scroll
+// them (WCAG 2.1.1; axe rule scrollable-region-focusable). A ResizeObserver makes a box a
+// focusable, labelled region only while its content overflows, so boxes that fit add no
+// tab stops. watchScrollRegions(root) is cheap to call after every panel update: boxes
+// already watched are skipped.
+const SCROLL_BOXES = '.panel-body, .formula, .table-scroll, .formula-out, math[display=block]';
+const watched = new WeakSet();
+const overflowObserver = typeof ResizeObserver === 'undefined' ? null : new ResizeObserver((entries) => {
+  for (const entry of entries) {
+    const target = entry.target.matches(SCROLL_BOXES) ? entry.target : entry.target.parentElement;
+    if (!target) continue;
+    const overflows = target.scrollWidth > target.clientWidth + 1 || target.scrollHeight > target.clientHeight + 1;
+    if (overflows && !target.hasAttribute('tabindex')) {
+      target.tabIndex = 0;
+      target.dataset.scrollRegion = '';
+      if (!target.hasAttribute('role')) target.setAttribute('role', 'region');
+      if (!target.hasAttribute('aria-label') && !target.hasAttribute('aria-labelledby')) {
+        const heading = target.closest('details, section')?.querySelector('h2, h3');
+        target.setAttribute('aria-label', `${heading?.textContent ?? 'Content'} (scrolls)`);
+      }
+    } else if (!overflows && target.dataset.scrollRegion !== undefined) {
+      target.removeAttribute('tabindex');
+      delete target.dataset.scrollRegion;
+    }
+  }
+});
+
+export function watchScrollRegions(root = document) {
+  if (!overflowObserver) return;
+  for (const box of root.querySelectorAll(SCROLL_BOXES)) {
+    if (watched.has(box)) continue;
+    watched.add(box);
+    overflowObserver.observe(box);
+    // Content can grow without the box resizing; observe its first child too.
+    if (box.firstElementChild) overflowObserver.observe(box.firstElementChild);
+  }
+}

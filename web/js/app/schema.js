@@ -79,8 +79,6 @@ export function validatePartial(shape, raw, defaults) {
   const missing = keys.filter((key) => !Object.prototype.hasOwnProperty.call(raw, key));
   // Every saved state has every field (migrations add new ones), so a missing field means
   // a damaged or hand-made state: it is reset, and said.
-  if (missing.length === keys.length) problems.push("it holds none of this lesson's settings");
-  else for (const key of missing) problems.push(`${key} is missing`);
   for (const [key, check] of Object.entries(shape)) {
     if (missing.includes(key)) {
       state[key] = structuredClone(defaults[key]);
@@ -94,5 +92,8 @@ export function validatePartial(shape, raw, defaults) {
       state[key] = structuredClone(defaults[key]);
     }
   }
+  // Wrong values first (they say most about what is wrong), then missing fields.
+  if (missing.length === keys.length) problems.push("it holds none of this lesson's settings");
+  else for (const key of missing) problems.push(`${key} is missing`);
   return { state, problems };
 }

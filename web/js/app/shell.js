@@ -29,7 +29,7 @@
 // handle inspector (type exact x, y of the selected handle), live announcements of handle
 // positions, presentation mode (class .advanced hides a control there), themes, print,
 // offline. Markup from files and links is only ever set as text.
-import { loadWingspline } from '../core/wingspline.js';
+import { loadWingspline, WingsplineError } from '../core/wingspline.js';
 import { createStore } from './store.js';
 import { restoreState, createPersister } from './persist.js';
 import { readEnvelope, envelopeJson } from './share-link.js';
@@ -39,7 +39,7 @@ import { createKeymap } from './keymap.js';
 import { download, installImport } from './file-io.js';
 import { applyStoredTheme, cycleTheme, currentTheme, isPresenting, setPresenting, drawingColors } from './theme.js';
 import { registerServiceWorker } from './sw-register.js';
-import { h } from './dom.js';
+import { h, watchScrollRegions } from './dom.js';
 
 // One line of at most this many characters: a long or multi-line message (a file name, a
 // lesson's error text) never pushes the page down.
@@ -187,6 +187,7 @@ export async function runLesson(lesson) {
     if (needsPanelUpdate) {
       needsPanelUpdate = false;
       lesson.update?.(model, state, ctx);
+      watchScrollRegions(els.panels?.parentElement ?? document);
       const text = lesson.describe?.(model, state);
       if (text && els.description && els.description.textContent !== text) els.description.textContent = text;
       updateToolbar();
@@ -352,20 +353,24 @@ export async function runLesson(lesson) {
   // The picker is opened by a real button (visible focus, keyboard); the input stays hidden.
   const fileInput = h('input', { type: 'file', accept: importTypes.join(','), hidden: true, id: 'import-file', tabindex: '-1', 'aria-label': 'Import a file' });
 
+  // Import: the file is read, checked and computed before anything changes; a refusal
+  // names the file (as text) and the reason, and the lesson keeps what it had.
   function importFile({ name, text }) {
     const ext = name.toLowerCase().split('.').pop();
+    const refuse = (reason) => { throw new WingsplineError('import-error', reason); };
     try {
       let next;
       if (ext === 'json') {
         let data;
-        try { data = JSON.parse(text); } catch { throw new Error(`${name} is not valid JSON`); }
-        const { state, problems } = readEnvelope(lesson, data);
-        if (problems.length) throw new Error(`${name} does not hold a valid state: ${problems[0]}`);
-        next = state;
+        try { data = JSON.parse(text); } catch { refuse('it is not valid JSON'); }
+        let read;
+        try { read = readEnvelope(lesson, data); } catch (err) { refuse(err.message); }
+        if (read.problems.length) refuse(`it does not hold a valid state (${read.problems[0]})`);
+        next = read.state;
       } else if (lesson.importers?.[ext]) {
         next = lesson.importers[ext](text, store.state, name, ctx);
       } else {
-        throw new Error(`${name}: this lesson imports ${importTypes.join(', ')} files`);
+        refuse(`this lesson imports ${importTypes.join(', ')} files`);
       }
       const newModel = lesson.compute(next, ctx);
       model = newModel;

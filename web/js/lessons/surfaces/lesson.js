@@ -106,6 +106,9 @@ export const lesson = {
   id: 'surfaces',
   title: 'Surface patches',
   stateVersion: 1,
+  // The net's entries are 3D: its own inspector takes x, y and z; the shell's 2D
+  // inspector would type view-plane coordinates, which are not the entry's.
+  inspector: false,
   schema: {
     kind: oneOf('bezier', 'hermite'),
     a: net16,
