@@ -180,6 +180,10 @@ TEST_CASE("every validation code on a named tiny fixture", "[mesh][validation]")
     IndexedMesh nan_mesh = with({{0, 1, 2}});
     nan_mesh.positions[4] = std::nan("");
     CHECK(first_code(nan_mesh) == "non-finite-coordinate");
+    // Found by fuzz_mesh_build: finite but huge coordinates made Newell's sums overflow.
+    IndexedMesh huge = with({{0, 1, 2}});
+    huge.positions[3] = 1e200;
+    CHECK(first_code(huge) == "coordinate-out-of-range");
     // Isolated v4 is a warning: the mesh builds, v4 has no edge.
     const WingedEdgeMesh w = WingedEdgeMesh::build(with({{0, 1, 2}}));
     CHECK(w.vertex_edge(3) == kNone);

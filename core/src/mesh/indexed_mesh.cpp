@@ -114,6 +114,16 @@ ValidationReport validate_indexed(const IndexedMesh& mesh) {
                 out.push_back(make("non-finite-coordinate", m.str(), {v}));
                 break;
             }
+            if (std::abs(c) > kMaxCoordinate) {
+                // Newell's sums multiply pairs of coordinates and add one term per corner:
+                // beyond 1e100 they can overflow to inf and the normal to NaN (found by
+                // fuzz_mesh_build), so such a mesh is refused rather than half computed.
+                std::ostringstream m;
+                m << vertex_label(v) << " has a coordinate too large for the normal and plane computations ("
+                  << "xyz"[k] << " = " << c << "; the limit is 1e100 in size)";
+                out.push_back(make("coordinate-out-of-range", m.str(), {v}));
+                break;
+            }
         }
     }
 

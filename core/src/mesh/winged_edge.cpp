@@ -59,7 +59,7 @@ WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions
     const std::vector<int32_t>& fv = mesh.face_vertices;
     if (F <= 0 || mesh.positions.size() != 3 * static_cast<std::size_t>(V)) refuse(mesh);
     for (double c : mesh.positions)
-        if (!std::isfinite(c)) refuse(mesh);
+        if (!std::isfinite(c) || std::abs(c) > kMaxCoordinate) refuse(mesh);
     const int32_t H = fo[F];
     for (int32_t f = 0; f < F; ++f) {
         const int32_t n = fo[f + 1] - fo[f];

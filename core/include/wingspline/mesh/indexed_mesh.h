@@ -11,6 +11,11 @@
 
 namespace wingspline::mesh {
 
+// The largest coordinate magnitude a mesh may have: squares and pair products stay far
+// from overflow in every plane and normal computation (validation code
+// coordinate-out-of-range beyond it).
+inline constexpr double kMaxCoordinate = 1e100;
+
 // The invalid sentinel of every element index ("-1 = none").
 constexpr int32_t kNone = -1;
 
