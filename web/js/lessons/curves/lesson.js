@@ -29,6 +29,8 @@ export const lesson = {
   id: 'curves',
   title: 'Curve explorer',
   stateVersion: 1,
+  // The page has its own numeric inspector (x, y, tangent, weight, u, knots): no shell one.
+  inspector: false,
   schema: {
     family: oneOf(...FAMILY_IDS),
     points: list(pair, { min: 2, max: 24 }),
@@ -252,9 +254,9 @@ function drawConstruction(painter, model, state, c) {
   const step = state.construction.step;
   const halo = c.background;
   if (con.kind === 'de-casteljau' || con.kind === 'de-boor') {
-    drawLevels(painter, con.levels, step, c.series, halo);
+    drawLevels(painter, con.levels, step, c.series, halo, con.kind === 'de-boor' ? { names: con.names, symbol: 'd' } : {});
   } else if (con.kind === 'subdivide') {
-    if (step === 0) drawLevels(painter, con.levels, con.levels.length - 1, c.series, halo);
+    if (step === 0) drawLevels(painter, con.levels, con.levels.length - 1, c.series, halo, {});
     else {
       drawPolygon(painter, con.left, { stroke: c.series[0], dash: [], width: 3 });
       drawPolygon(painter, con.right, { stroke: c.series[1], dash: [], width: 3 });
