@@ -29,8 +29,6 @@ export const lesson = {
   id: 'curves',
   title: 'Curve explorer',
   stateVersion: 1,
-  // The page has its own numeric inspector (x, y, tangent, weight, u, knots): no shell one.
-  inspector: false,
   schema: {
     family: oneOf(...FAMILY_IDS),
     points: list(pair, { min: 2, max: 24 }),

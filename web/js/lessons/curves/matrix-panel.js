@@ -15,6 +15,11 @@ export function createMatrixPanel(container) {
   const root = document.createElement('div');
   root.className = 'matrix-panel';
   root.setAttribute('aria-live', 'off');
+  // Wide matrices (degree 7, the projector's large type) scroll sideways: the panel is the
+  // one scroll container, focusable so the keyboard can scroll it too.
+  root.tabIndex = 0;
+  root.setAttribute('role', 'region');
+  root.setAttribute('aria-label', 'Matrix form of the current segment (scrolls sideways when wide)');
   container.append(root);
   // The MathML is built once per shape (degree, columns, row names, form) and then only its
   // number text nodes change, and only when the shown text changes: dragging a point

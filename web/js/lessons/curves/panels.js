@@ -164,27 +164,25 @@ export function setupPanels(ctx, lesson) {
   const compareLabel = h('label', { class: 'check' }, compare, ' Interpolation: also draw a cubic spline through the same points (dashed)');
   overlayBody.append(compareLabel);
 
-  const inspectorBody = panel(ctx.panels, { id: 'panel-inspector', title: 'Inspector (exact values)' });
+  // The x, y of the selected handle are typed in the shell's inspector under the drawing
+  // (shell.js; it announces the move); this panel adds what a handle does not carry.
+  const inspectorBody = panel(ctx.panels, { id: 'panel-inspector', title: 'Exact values: tangent, weight, u, knots' });
   // Presentation mode (site.css hides .advanced): the inspector, the point editing buttons
   // and the CSV-minded details stay off the projector; family, u, constructions stay.
   inspectorBody.parentElement.classList.add('advanced');
   const inspector = {
     title: h('p', { class: 'inspector-title' }),
-    x: h('input', { type: 'number', step: 0.01, id: 'inspect-x', onchange: () => typedPoint() }),
-    y: h('input', { type: 'number', step: 0.01, id: 'inspect-y', onchange: () => typedPoint() }),
     tx: h('input', { type: 'number', step: 0.01, id: 'inspect-tx', onchange: () => typedPoint() }),
     ty: h('input', { type: 'number', step: 0.01, id: 'inspect-ty', onchange: () => typedPoint() }),
     w: h('input', { type: 'number', step: 0.05, min: 0, id: 'inspect-w', onchange: () => typedPoint() }),
     u: h('input', { type: 'number', step: 0.01, id: 'inspect-u', onchange: (e) => { if (!setTypedU(e.target)) e.target.value = state().u; } }),
     knots: h('input', { type: 'text', id: 'inspect-knots', class: 'mono', spellcheck: 'false', onchange: (e) => typedKnots(e.target) }),
   };
-  const pointFields = h('div', { class: 'inspector-grid' },
-    h('label', { for: 'inspect-x' }, 'x'), inspector.x, h('label', { for: 'inspect-y' }, 'y'), inspector.y);
   const tangentFields = h('div', { class: 'inspector-grid' },
     h('label', { for: 'inspect-tx' }, 'tangent x'), inspector.tx, h('label', { for: 'inspect-ty' }, 'tangent y'), inspector.ty);
   const weightFields = h('div', { class: 'inspector-grid' }, h('label', { for: 'inspect-w' }, 'weight w'), inspector.w);
   const knotField = h('div', { class: 'inspector-knots' }, h('label', { for: 'inspect-knots' }, 'Knot vector (comma separated, non-decreasing)'), inspector.knots);
-  inspectorBody.append(inspector.title, pointFields, tangentFields, weightFields,
+  inspectorBody.append(inspector.title, tangentFields, weightFields,
     h('div', { class: 'inspector-grid' }, h('label', { for: 'inspect-u' }, 'u'), inspector.u), knotField);
 
   function typedPoint() {
@@ -192,13 +190,11 @@ export function setupPanels(ctx, lesson) {
     const i = selectedPoint(ctx) ?? selectedTangent(ctx);
     if (i === null) return;
     const val = (input, old) => (input.value.trim() === '' ? old : Number(input.value));
-    const x = val(inspector.x, s.points[i][0]);
-    const y = val(inspector.y, s.points[i][1]);
-    if (![x, y].every(Number.isFinite)) { ctx.message.error('Type a number for x and y.', 'invalid-number'); return; }
-    const next = { ...s, points: s.points.map((p, j) => (j === i ? [x, y] : p)) };
+    const next = { ...s };
     if (s.family === 'hermite') {
       const tx = val(inspector.tx, s.tangents[i][0]);
       const ty = val(inspector.ty, s.tangents[i][1]);
+      if (![tx, ty].every(Number.isFinite)) { ctx.message.error(`Type a number for both components of the tangent T${i}.`, 'invalid-number'); return; }
       next.tangents = s.tangents.map((t, j) => (j === i ? [tx, ty] : t));
     }
     if (s.family === 'nurbs') next.weights = s.weights.map((w, j) => (j === i ? val(inspector.w, w) : w));
@@ -296,7 +292,7 @@ export function setupPanels(ctx, lesson) {
   lesson.onSelect = () => ctx.refresh();
 
   els = { family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, transposed, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
-    inspector, pointFields, tangentFields, weightFields, knotField, knotTable, knotsPanel: knotsBody.parentElement, nurbsPanel: nurbsBody.parentElement, weightList, inset,
+    inspector, tangentFields, weightFields, knotField, knotTable, knotsPanel: knotsBody.parentElement, nurbsPanel: nurbsBody.parentElement, weightList, inset,
     degreeLabel: row1.querySelector('.degree-label'), tensionGroup: row1.querySelector('.tension-group'), lastKnotKey: null, lastWeightKey: null, conPlayer, uPlayer, commit, state, setKnots };
 }
 
@@ -356,13 +352,10 @@ export function updatePanels(model, state, ctx) {
   els.compareLabel.hidden = state.family !== 'interpolation';
   // inspector
   const i = selectedPoint(ctx) ?? selectedTangent(ctx);
-  els.pointFields.hidden = i === null;
   els.tangentFields.hidden = i === null || state.family !== 'hermite';
   els.weightFields.hidden = i === null || state.family !== 'nurbs';
-  els.inspector.title.textContent = i === null ? 'Select a control point (click it, or focus the drawing and press ] ) to type its values.' : `P${i}`;
+  els.inspector.title.textContent = i === null ? 'Select a control point (click it, or focus the drawing and press ] ); its x and y are typed under the drawing.' : `P${i}`;
   if (i !== null && i < K) {
-    setValue(els.inspector.x, state.points[i][0]);
-    setValue(els.inspector.y, state.points[i][1]);
     if (state.family === 'hermite') { setValue(els.inspector.tx, state.tangents[i][0]); setValue(els.inspector.ty, state.tangents[i][1]); }
     if (state.family === 'nurbs') setValue(els.inspector.w, state.weights[i]);
   }
