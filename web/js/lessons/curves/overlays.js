@@ -98,7 +98,8 @@ export function drawLevels(painter, levels, step, colors, halo, { names = null, 
     level.forEach(([x, y], j) => {
       painter.circle(x, y, r === n ? 7 : 5, { fill: color, stroke: halo, width: 1.5 });
       const name = `${symbol}${sub(names ? names[r][j] : j)}${sup(r)}`;
-      painter.text(x, y, r === n ? `${name} = P(u)` : name, { fill: color, font: 13, dx: 0, dy: -15, halo });
+      // the last level's name goes under the P(u) label (above it sit the level r-1 names)
+      painter.text(x, y, r === n ? `${name} = P(u)` : name, { fill: color, font: 13, dx: 0, dy: r === n ? 36 : -15, halo });
     });
   }
 }

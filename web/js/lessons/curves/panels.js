@@ -415,14 +415,14 @@ function knotGroupTable(model, state, ctx) {
   const editable = usesKnots(state.family);
   const tbl = h('table', { class: 'data-table knot-groups' },
     h('caption', {}, `Degree p = ${state.degree}: a knot of multiplicity m gives continuity C^(p-m) there.`),
-    h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'knot'), h('th', { scope: 'col' }, 'multiplicity m'), h('th', { scope: 'col' }, 'continuity'), editable ? h('th', { scope: 'col' }, 'insert once more') : null)),
+    h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'knot'), h('th', { scope: 'col' }, 'multiplicity m'), h('th', { scope: 'col' }, 'continuity'), editable ? h('th', { scope: 'col' }, 'raise m') : null)),
     h('tbody', {}, groups.map((g) => h('tr', { 'data-knot': String(g.value) },
       h('th', { scope: 'row' }, formatNumber(g.value, 4)),
       h('td', {}, String(g.multiplicity)),
       h('td', { class: 'continuity' }, where(g)),
       editable ? h('td', {},
-        h('button', { type: 'button', class: 'tool small', 'data-action': 'raise-multiplicity', 'aria-label': `raise the multiplicity of knot ${formatNumber(g.value, 4)}`,
-          disabled: !joint(g) || g.multiplicity >= state.degree || state.points.length >= 24, onclick: () => raiseMultiplicity(g.value, ctx) }, '+ raise')) : null))));
+        h('button', { type: 'button', class: 'tool small', 'data-action': 'raise-multiplicity', 'aria-label': `raise the multiplicity of knot ${formatNumber(g.value, 4)} (m + 1)`,
+          disabled: !joint(g) || g.multiplicity >= state.degree || state.points.length >= 24, onclick: () => raiseMultiplicity(g.value, ctx) }, 'm + 1')) : null))));
   return tbl;
 }
 
