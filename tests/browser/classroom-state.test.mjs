@@ -123,9 +123,14 @@ for (const lesson of lessonsUnderTest) {
         ['a newer version', envelopeCode(id, 99, {})],
         ['a version that is not a number', envelopeCode(id, '1', {})],
         ['an oversized link', 'A'.repeat(250000)],
-        ['a prototype-polluting key', linkCode(`{"format":"wingspline","lesson":"${id}","version":1,"state":{"__proto__":{"polluted":true},"constructor":{"prototype":{"polluted":true}}}}`)],
+        // Unknown fields are dropped without a message (docs/state-format.md, reading step 4):
+        // this link is a valid envelope of the page's version whose known fields are all
+        // missing, so the page shows the default quietly; what matters is that nothing is
+        // polluted. (Written with version 1 for every lesson before, it only "gave a message"
+        // for the fixture, whose version-1 migration refuses it, and failed for mesh and curves.)
+        ['a prototype-polluting key', linkCode(`{"format":"wingspline","lesson":"${id}","version":${lesson.fixture ? 2 : 1},"state":{"__proto__":{"polluted":true},"constructor":{"prototype":{"polluted":true}}}}`), { quiet: true }],
       ];
-      for (const [name, code] of cases) {
+      for (const [name, code, { quiet = false } = {}] of cases) {
         test(name, async () => {
           const context = await newContext();
           const probe = await openLesson(context, new URL(lesson.page, site.url).href);
@@ -136,9 +141,13 @@ for (const lesson of lessonsUnderTest) {
           const hash = code ?? real.slice(0, Math.floor(real.length / 2));
           const page = await openLesson(context, `${new URL(lesson.page, site.url).href}#s=${hash}`);
           const message = await page.evaluate(() => window.wingspline.message());
-          assert.ok(message.length > 0, 'a message says what happened');
-          assert.ok(!message.includes('\n') && message.length <= MESSAGE_MAX_CHARS, `one line: ${message}`);
-          assert.equal(await page.getAttribute('#message', 'data-kind'), 'warn');
+          if (quiet) {
+            assert.equal(message, '', 'unknown fields are dropped quietly');
+          } else {
+            assert.ok(message.length > 0, 'a message says what happened');
+            assert.ok(!message.includes('\n') && message.length <= MESSAGE_MAX_CHARS, `one line: ${message}`);
+            assert.equal(await page.getAttribute('#message', 'data-kind'), 'warn');
+          }
           assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
           assert.equal(await page.evaluate(() => ({}).polluted ?? Object.prototype.polluted ?? null), null);
           assert.deepEqual(page.dialogs, []);

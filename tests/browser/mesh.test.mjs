@@ -171,6 +171,9 @@ test('a malformed OFF file names its line, and the page keeps its mesh', async (
   const square = 'OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n';
   await page.setInputFiles('#import-file', { name: 'square.off', mimeType: 'text/plain', buffer: Buffer.from(square) });
   await page.waitForFunction(() => window.wingspline.state.meshKind === 'file');
+  // The tables follow the state on the next drawn frame (render on demand): wait for it, so
+  // a loaded machine does not read the cube's table of the frame before.
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   assert.equal((await tableCells(page, 'we-face-table')).length, 2);
   const broken = 'OFF\n4 2 0\n0 0 0\n1 0 zero\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n';
   await page.setInputFiles('#import-file', { name: 'broken.off', mimeType: 'text/plain', buffer: Buffer.from(broken) });

@@ -32,7 +32,9 @@ if (wants('ui_drag')) {
     await page.evaluate(() => {
       const { lesson } = window.wingspline.ctx;
       const times = [];
+      const phases = [];
       window.__dragTimes = times;
+      window.__dragPhases = phases;
       let t0 = 0;
       let pending = null;
       window.addEventListener('pointermove', () => { t0 = performance.now(); }, true);
@@ -45,7 +47,10 @@ if (wants('ui_drag')) {
         const a = performance.now();
         draw(...args);
         const drawTime = performance.now() - a;
-        if (pending !== null) times.push(pending + updateTime + drawTime);
+        if (pending !== null) {
+          times.push(pending + updateTime + drawTime);
+          phases.push([pending, updateTime, drawTime]);
+        }
         pending = null;
         updateTime = 0;
       };
@@ -59,6 +64,10 @@ if (wants('ui_drag')) {
     }
     await page.mouse.up();
     const times = (await page.evaluate(() => window.__dragTimes)).slice(WARMUP);
+    // The three parts (profile): the pointermove handler (the core's recompute inside
+    // commit), the panel update, the drawing; medians each.
+    const phases = (await page.evaluate(() => window.__dragPhases)).slice(WARMUP);
+    const medianOf = (k) => { const v = phases.map((x) => x[k]).sort((a, b) => a - b); return v[Math.floor(v.length / 2)]; };
     const sorted = [...times].sort((a, b) => a - b);
     const median = sorted[Math.floor(sorted.length / 2)];
     const p95 = sorted[Math.min(sorted.length - 1, Math.floor(sorted.length * 0.95))];
@@ -67,6 +76,7 @@ if (wants('ui_drag')) {
       task: 'ui_drag', build: 'browser', unit: 'ms', input: `bezier degree 5, ${samples} samples, blending plot + matrix panel`,
       n: 1, seconds: sorted, checksum: state.points[2][0] + state.points[2][1],
       median_ms: median, p95_ms: p95, moves: times.length,
+      move_median_ms: medianOf(0), update_median_ms: medianOf(1), draw_median_ms: medianOf(2),
     });
   } finally {
     await browser.close();

@@ -94,7 +94,11 @@ export function createBlendingPlot(container, { label = 'Blending functions', he
       g.fillStyle = colors.series[c % colors.series.length];
       g.textBaseline = 'bottom';
       const pv = values[count * peak + i];
-      g.fillText(data.labels[i], xOf(params[peak]), yOf(pv) - (pv >= 0 ? 2 : -14));
+      // kept inside the plot: a peak at either end would cut the label in half
+      const half = g.measureText(data.labels[i]).width / 2;
+      const lx = Math.min(Math.max(xOf(params[peak]), PAD.left + half), surface.size.width - PAD.right - half);
+      const ly = Math.min(Math.max(yOf(pv) - (pv >= 0 ? 2 : -14 * scale), 12 * scale + 2), hgt - 2);
+      g.fillText(data.labels[i], lx, ly);
       g.globalAlpha = 1;
     }
     // the u cursor, shared with the curve

@@ -23,14 +23,22 @@ export function uniformParams(start, end, n) {
 // A cache of the parts that depend only on the curve (not on u, the overlays or the
 // construction step), so playing u or stepping a construction costs no resampling.
 let cache = { key: null, value: null };
+// The samples go into one of two reused buffers (the core fills them: no garbage per
+// pointer move); the one the current model holds is never the one being written.
+const sampleBuffers = [new Float64Array(2 * SAMPLES_PER_CURVE), new Float64Array(2 * SAMPLES_PER_CURVE)];
+let nextSampleBuffer = 0;
+const atBuffer = new Float64Array(1);
 
 function curvePart(api, state, spec) {
   const key = JSON.stringify([state.family, state.points, state.tangents, state.knots, state.weights, state.degree, state.tension]);
   if (cache.key === key) return cache.value;
   const domain = api.curveDomain(spec);
-  const params = uniformParams(domain.start, domain.end, SAMPLES_PER_CURVE);
-  const curve = api.evaluateCurve(spec, params);
-  const plotParams = uniformParams(domain.start, domain.end, PLOT_PARAMS);
+  const params = cache.value && cache.value.domain.start === domain.start && cache.value.domain.end === domain.end
+    ? cache.value.params : uniformParams(domain.start, domain.end, SAMPLES_PER_CURVE);
+  const curve = api.evaluateCurve(spec, params, { out: sampleBuffers[nextSampleBuffer] });
+  nextSampleBuffer = 1 - nextSampleBuffer;
+  const sameDomain = cache.value && cache.value.domain.start === domain.start && cache.value.domain.end === domain.end;
+  const plotParams = sameDomain ? cache.value.plotParams : uniformParams(domain.start, domain.end, PLOT_PARAMS);
   const blending = api.blendingFunctions(spec, plotParams);
   const value = { domain, params, curve, plotParams, blending };
   cache = { key, value };
@@ -43,10 +51,9 @@ export function computeCurveModel(api, state) {
   const { domain } = part;
   const degree = familyDegree(state);
   const u = Math.min(Math.max(state.u, domain.start), domain.end);
-  const at = Float64Array.of(u);
-  const point = api.evaluateCurve(spec, at);
-  const d1 = api.evaluateDerivative(spec, at, 1);
-  const d2 = api.evaluateDerivative(spec, at, 2);
+  atBuffer[0] = u;
+  // P, P', P'' at u in one pass: values[2k + c] is component c of the k-th derivative.
+  const pd = api.evaluateWithDerivatives(spec, atBuffer, 2);
   const segmentIndex = segmentAt(api, spec, domain, u);
   const segment = api.segmentMatrices(spec, segmentIndex);
 
@@ -59,9 +66,9 @@ export function computeCurveModel(api, state) {
     samples: part.curve,
     params: part.params,
     plot: { params: part.plotParams, count: part.blending.count, values: part.blending.values },
-    point: [point[0], point[1]],
-    d1: [d1[0], d1[1]],
-    d2: [d2[0], d2[1]],
+    point: [pd[0], pd[1]],
+    d1: [pd[2], pd[3]],
+    d2: [pd[4], pd[5]],
     segment,
     segmentIndex,
     hull: convexHull(state.points),
@@ -86,7 +93,7 @@ export function computeCurveModel(api, state) {
     model.joints = { params: joints, positions: api.evaluateCurve(spec, joints) };
   }
 
-  if (state.overlays.comb && typeof api.curvature === 'function') model.comb = curvatureComb(api, spec, domain);
+  if (state.overlays.comb) model.comb = curvatureComb(api, spec, domain);
   if (state.family === 'interpolation' && state.compare) model.compare = interpolatingSpline(api, state);
   if (state.family === 'nurbs') model.homogeneous = homogeneousView(api, state, spec, part, u);
   model.construction = construction(api, state, spec, u, degree);
@@ -121,27 +128,27 @@ function segmentPointIndices(segment, state) {
   return ids.filter((i) => i >= 0 && i < K);
 }
 
-// The comb: at each sample, the normal scaled by the curvature the core computed.
+// The comb (lecture 004): at each sample a tooth along the left normal (-t_y, t_x) of the
+// core's unit tangent, of length proportional to the core's signed curvature, so the teeth
+// stand on the concave side (the side the curve turns to). At a cusp the core reports
+// singular[j] = 1 with curvature 0: that tooth has length 0, never NaN.
 function curvatureComb(api, spec, domain) {
   const params = uniformParams(domain.start, domain.end, COMB_SAMPLES);
   const p = api.evaluateCurve(spec, params);
-  const d1 = api.evaluateDerivative(spec, params, 1);
-  const kappa = api.curvature(spec, params);
+  const k = api.curvature(spec, params);
+  const kappa = k.signedCurvature;
   let maxK = 0;
-  for (const k of kappa) if (Number.isFinite(k)) maxK = Math.max(maxK, Math.abs(k));
+  for (let j = 0; j < COMB_SAMPLES; j += 1) maxK = Math.max(maxK, Math.abs(kappa[j]));
   const teeth = new Float64Array(COMB_SAMPLES * 4);
   for (let j = 0; j < COMB_SAMPLES; j += 1) {
-    const tx = d1[2 * j];
-    const ty = d1[2 * j + 1];
-    const len = Math.hypot(tx, ty) || 1;
-    // Signed curvature along the left normal (-ty, tx): the comb points to the concave side.
-    const k = Number.isFinite(kappa[j]) ? kappa[j] : 0;
+    const tx = k.tangent[2 * j];
+    const ty = k.tangent[2 * j + 1];
     teeth[4 * j] = p[2 * j];
     teeth[4 * j + 1] = p[2 * j + 1];
-    teeth[4 * j + 2] = k * (-ty / len);
-    teeth[4 * j + 3] = k * (tx / len);
+    teeth[4 * j + 2] = kappa[j] * -ty;
+    teeth[4 * j + 3] = kappa[j] * tx;
   }
-  return { teeth, maxCurvature: maxK, count: COMB_SAMPLES };
+  return { teeth, maxCurvature: maxK, count: COMB_SAMPLES, singular: k.singular.reduce((a, b) => a + b, 0) };
 }
 
 // Lecture 004's comparison: the same points through one cubic spline. Catmull-Rom with the
@@ -176,8 +183,11 @@ function construction(api, state, spec, u, degree) {
     return { kind: c.kind, levels: r.levels.map((l) => pairs(l)), steps: r.levels.length };
   }
   if (c.kind === 'de-boor' && isSpline(state.family)) {
+    // Entry j of level r is d_(firstIndex + r + j)^r (the core's numbering); level 0 is
+    // P_(span-p)..P_span, the p + 1 points that act on this span.
     const r = api.deBoor(spec, u);
-    return { kind: c.kind, levels: r.levels.map((l) => pairs(l, r.stride ?? 2)), span: r.span, indices: r.indices, steps: r.levels.length };
+    const names = r.levels.map((level, lv) => pairs(level).map((_, j) => r.firstIndex + lv + j));
+    return { kind: c.kind, levels: r.levels.map((l) => pairs(l)), names, span: r.span, firstIndex: r.firstIndex, alphas: r.alphas, steps: r.levels.length };
   }
   if (c.kind === 'subdivide' && state.family === 'bezier') {
     const r = api.deCasteljau(spec.points, 2, u);
@@ -189,12 +199,16 @@ function construction(api, state, spec, u, degree) {
     return { kind: c.kind, points: pairs(r.points), degree: K, steps: 2 };
   }
   if (c.kind === 'insert-knot' && usesKnots(state.family)) {
+    // Boehm (lecture 002): the core says which points are new (0 < a_i < 1); the others
+    // are the old points, renumbered after the insertion.
     const r = api.insertKnot(spec, u);
-    const newPoints = pairs(r.points);
-    // The points that differ from the old polygon are the new ones (Boehm replaces p - 1
-    // points by p new ones around the span).
-    const changed = newPoints.map((p) => !state.points.some((q) => Math.abs(q[0] - p[0]) < 1e-12 && Math.abs(q[1] - p[1]) < 1e-12));
-    return { kind: c.kind, points: newPoints, knots: Array.from(r.knots), weights: r.weights ? Array.from(r.weights) : null, changed, at: u, steps: 2 };
+    const points = pairs(r.curve.points);
+    const changed = points.map(() => false);
+    for (const i of r.newPoints) changed[i] = true;
+    return {
+      kind: c.kind, points, knots: Array.from(r.curve.knots), weights: r.curve.weights?.length ? Array.from(r.curve.weights) : null,
+      changed, newPoints: Array.from(r.newPoints), insertedIndex: r.insertedIndex, at: u, steps: 2,
+    };
   }
   return null;
 }

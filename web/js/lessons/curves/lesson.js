@@ -96,6 +96,9 @@ export const lesson = {
     const grow = (x, y) => { minX = Math.min(minX, x); maxX = Math.max(maxX, x); minY = Math.min(minY, y); maxY = Math.max(maxY, y); };
     for (let j = 0; j < model.samples.length; j += 2) grow(model.samples[j], model.samples[j + 1]);
     for (const [x, y] of model.hull) grow(x, y);
+    // Hermite: the tangent handles at P_i + T_i/3 are on the picture too
+    const { tangents, points } = model.spec;
+    if (tangents) for (let j = 0; j + 1 < tangents.length; j += 2) grow(points[j] + tangents[j] / 3, points[j + 1] + tangents[j + 1] / 3);
     return stage.fit(minX, minY, maxX, maxY, 0.1);
   },
 
@@ -192,7 +195,9 @@ export const lesson = {
     const pts = state.points.map(([x, y], i) => `P${i} (${formatNumber(x, 3)}, ${formatNumber(y, 3)})`).join(', ');
     return `${info.label}, degree ${model.degree}, ${state.points.length} control points: ${pts}. ` +
       `The point at u = ${formatNumber(model.u, 3)} is (${formatNumber(model.point[0], 4)}, ${formatNumber(model.point[1], 4)}), ` +
-      `in segment ${model.segmentIndex + 1} of ${model.segment.segmentCount}.`;
+      `in segment ${model.segmentIndex + 1} of ${model.segment.segmentCount}.` +
+      (model.construction ? ` Construction ${model.construction.kind}, step ${Math.min(state.construction.step, model.construction.steps - 1)} of ${model.construction.steps - 1}.` : '') +
+      (model.comb ? ` Curvature comb on: the largest curvature is ${formatNumber(model.comb.maxCurvature, 3)}.` : '');
   },
 
   exports: [
@@ -252,9 +257,9 @@ function drawConstruction(painter, model, state, c) {
   const step = state.construction.step;
   const halo = c.background;
   if (con.kind === 'de-casteljau' || con.kind === 'de-boor') {
-    drawLevels(painter, con.levels, step, c.series, halo);
+    drawLevels(painter, con.levels, step, c.series, halo, con.kind === 'de-boor' ? { names: con.names, symbol: 'd' } : {});
   } else if (con.kind === 'subdivide') {
-    if (step === 0) drawLevels(painter, con.levels, con.levels.length - 1, c.series, halo);
+    if (step === 0) drawLevels(painter, con.levels, con.levels.length - 1, c.series, halo, {});
     else {
       drawPolygon(painter, con.left, { stroke: c.series[0], dash: [], width: 3 });
       drawPolygon(painter, con.right, { stroke: c.series[1], dash: [], width: 3 });
@@ -271,7 +276,8 @@ function drawConstruction(painter, model, state, c) {
       con.points.forEach(([x, y], i) => {
         const isNew = con.changed[i];
         painter.circle(x, y, isNew ? 8 : 5, { fill: isNew ? c.highlight : c.series[2], stroke: halo, width: 1.5 });
-        painter.text(x, y, isNew ? `Q${i} new` : `Q${i}`, { fill: isNew ? c.highlight : c.series[2], font: 12, dy: 18, halo });
+        // upper left: below are the knot labels, upper right the control point labels
+        painter.text(x, y, isNew ? `Q${i} new` : `Q${i}`, { fill: isNew ? c.highlight : c.series[2], font: 12, dx: -12, dy: -14, align: 'right', halo });
       });
     }
   }

@@ -7,7 +7,7 @@
 //
 //   const panel = createMatrixPanel(container);
 //   panel.update({ segment, u, point, transposed, title });
-import { math, matrix, mi, mo, mn, el, formatNumber } from '../../ui/mathml.js';
+import { math, mi, mo, mn, el, formatNumber } from '../../ui/mathml.js';
 
 export const MATRIX_DIGITS = 4;
 
@@ -15,61 +15,121 @@ export function createMatrixPanel(container) {
   const root = document.createElement('div');
   root.className = 'matrix-panel';
   root.setAttribute('aria-live', 'off');
+  // Wide matrices (degree 7, the projector's large type) scroll sideways: the panel is the
+  // one scroll container, focusable so the keyboard can scroll it too.
+  root.tabIndex = 0;
+  root.setAttribute('role', 'region');
+  root.setAttribute('aria-label', 'Matrix form of the current segment (scrolls sideways when wide)');
   container.append(root);
+  // The MathML is built once per shape (degree, columns, row names, form) and then only its
+  // number text nodes change, and only when the shown text changes: dragging a point
+  // rewrites a few dozen strings instead of rebuilding some hundred elements per move.
+  let shape = null;
+  let cells = null;
 
-  function update({ segment, u, point, transposed = false, title = '' }) {
+  function build({ segment, transposed, title }) {
     const p = segment.degree;
     const n = p + 1;
     const cols = segment.columns;
-    const M = rows(segment.M, n, n);
-    const G = rows(segment.G, n, cols);
-    const C = rows(segment.C, n, cols);
-    const local = segment.localParameter === false ? u : (u - segment.start) / ((segment.end - segment.start) || 1);
-    const t = Math.min(1, Math.max(0, local));
     const name = transposed ? 't' : 'u';
-    const labelColumn = segment.labels.map((l) => [l]);
     const heading = document.createElement('p');
     heading.className = 'matrix-heading';
     heading.textContent = title;
-
-    // Fresh nodes for every use: a DOM node lives in one place only.
+    const slots = { M: [], G: [], C: [], t: null, x: null, y: null };
+    // A matrix of numbers whose text nodes land in slots[key] (row-major of the shown form).
+    const numbers = (key, r, c, role) => {
+      const out = [];
+      const table = el('mtable');
+      for (let i = 0; i < r; i += 1) {
+        const tr = el('mtr');
+        for (let j = 0; j < c; j += 1) {
+          const text = document.createTextNode('');
+          out.push(text);
+          tr.append(el('mtd', el('mn', text)));
+        }
+        table.append(tr);
+      }
+      slots[key].push(out);
+      return tag(el('mrow', mo('['), table, mo(']')), role);
+    };
     const powers = () => {
       const out = [];
       for (let r = p; r >= 0; r -= 1) out.push(r === 0 ? mn('1') : r === 1 ? mi(name) : el('msup', mi(name), mn(String(r))));
       return out;
     };
-    const powerRow = el('mrow', mo('['), el('mtable', el('mtr', ...powers().map((x) => el('mtd', x)))), mo(']'));
-    const powerColumn = el('mrow', mo('['), el('mtable', ...powers().map((x) => el('mtr', el('mtd', x)))), mo(']'));
+    const powerRow = () => el('mrow', mo('['), el('mtable', el('mtr', ...powers().map((x) => el('mtd', x)))), mo(']'));
+    const powerColumn = () => el('mrow', mo('['), el('mtable', ...powers().map((x) => el('mtr', el('mtd', x)))), mo(']'));
+    const rowsG = segment.rows ?? n;
+    const [gr, gc] = transposed ? [cols, rowsG] : [rowsG, cols];
+    const labelColumn = segment.labels.map((l) => [l]);
 
     const symbolic = math(transposed
       ? el('mrow', mi('Q'), mo('('), mi('t'), mo(')'), mo('='), mi('G'), mo('·'), mi('M'), mo('·'), mi('T'))
-      : el('mrow', mi('P'), mo('('), mi('u'), mo(')'), mo('='), powerRow, mo('·'), mi('M'), mo('·'), mi('G')));
-
-    const gNamed = tag(labelMatrix(transposed ? transpose(labelColumn) : labelColumn), 'G-labels');
-    const gNumbers = tag(matrix(transposed ? transpose(G) : G, { digits: MATRIX_DIGITS }), 'G');
-    const mNumbers = tag(matrix(transposed ? transpose(M) : M, { digits: MATRIX_DIGITS }), 'M');
-    const cNumbers = tag(matrix(transposed ? transpose(C) : C, { digits: MATRIX_DIGITS }), 'C');
-    const geometry = math(el('mrow', mi('G'), mo('='), gNamed, mo('='), gNumbers));
+      : el('mrow', mi('P'), mo('('), mi('u'), mo(')'), mo('='), powerRow(), mo('·'), mi('M'), mo('·'), mi('G')));
+    const geometry = math(el('mrow', mi('G'), mo('='), tag(labelMatrix(transposed ? transpose(labelColumn) : labelColumn), 'G-labels'), mo('='), numbers('G', gr, gc, 'G')));
     const product = math(transposed
-      ? el('mrow', mi('Q'), mo('('), mi('t'), mo(')'), mo('='), gNumbers.cloneNode(true), mo('·'), mNumbers, mo('·'), powerColumn)
-      : el('mrow', mi('P'), mo('('), mi('u'), mo(')'), mo('='), powerRow.cloneNode(true), mo('·'), mNumbers, mo('·'), gNumbers.cloneNode(true)));
+      ? el('mrow', mi('Q'), mo('('), mi('t'), mo(')'), mo('='), numbers('G', gr, gc, 'G'), mo('·'), numbers('M', n, n, 'M'), mo('·'), powerColumn())
+      : el('mrow', mi('P'), mo('('), mi('u'), mo(')'), mo('='), powerRow(), mo('·'), numbers('M', n, n, 'M'), mo('·'), numbers('G', gr, gc, 'G')));
     const coefficients = math(transposed
-      ? el('mrow', mi('G'), mo('·'), mi('M'), mo('='), cNumbers)
-      : el('mrow', mi('C'), mo('='), mi('M'), mo('·'), mi('G'), mo('='), cNumbers));
-    const value = math(el('mrow', mi(transposed ? 'Q' : 'P'), mo('('), mn(formatNumber(t, MATRIX_DIGITS)), mo(')'), mo('='),
-      mo('('), mn(formatNumber(point[0], MATRIX_DIGITS)), mo(','), mn(formatNumber(point[1], MATRIX_DIGITS)), mo(')')));
-
+      ? el('mrow', mi('G'), mo('·'), mi('M'), mo('='), numbers('C', gr, gc, 'C'))
+      : el('mrow', mi('C'), mo('='), mi('M'), mo('·'), mi('G'), mo('='), numbers('C', gr, gc, 'C')));
+    slots.t = document.createTextNode('');
+    slots.x = document.createTextNode('');
+    slots.y = document.createTextNode('');
+    const value = math(el('mrow', mi(transposed ? 'Q' : 'P'), mo('('), el('mn', slots.t), mo(')'), mo('='),
+      mo('('), el('mn', slots.x), mo(','), el('mn', slots.y), mo(')')));
     const note = document.createElement('p');
     note.className = 'hint';
-    const range = `segment ${segment.segment + 1} of ${segment.segmentCount}, curve parameter ${formatNumber(segment.start)} to ${formatNumber(segment.end)}`;
-    note.textContent = segment.homogeneous
-      ? `${range}; G holds the homogeneous points (w x, w y, w): divide by the last column to get the point.`
-      : segment.localParameter === false ? `${range}; ${name} is the curve parameter itself.` : `${range}; local ${name} = ${formatNumber(t, MATRIX_DIGITS)}.`;
+    slots.note = document.createTextNode('');
+    note.append(slots.note);
     root.replaceChildren(heading, symbolic, geometry, product, coefficients, value, note);
     root.dataset.form = transposed ? 'GMT' : 'TMG';
+    return slots;
+  }
+
+  // Writes a row-major r x c matrix (transposed if asked) into every copy of its slots.
+  function fill(list, flat, r, c, transposed) {
+    for (const texts of list) {
+      let k = 0;
+      const [rr, cc] = transposed ? [c, r] : [r, c];
+      for (let i = 0; i < rr; i += 1) {
+        for (let j = 0; j < cc; j += 1) {
+          setText(texts[k], formatNumber(transposed ? flat[c * j + i] : flat[c * i + j], MATRIX_DIGITS));
+          k += 1;
+        }
+      }
+    }
+  }
+
+  function update({ segment, u, point, transposed = false, title = '' }) {
+    const p = segment.degree;
+    const n = p + 1;
+    const cols = segment.columns;
+    const key = JSON.stringify([p, segment.rows, cols, transposed, title, Array.from(segment.labels)]);
+    if (key !== shape) {
+      shape = key;
+      cells = build({ segment, transposed, title });
+    }
+    fill(cells.M, segment.M, n, n, transposed);
+    fill(cells.G, segment.G, segment.rows ?? n, cols, transposed);
+    fill(cells.C, segment.C, segment.rows ?? n, cols, transposed);
+    const local = segment.localParameter === false ? u : (u - segment.start) / ((segment.end - segment.start) || 1);
+    const t = Math.min(1, Math.max(0, local));
+    const name = transposed ? 't' : 'u';
+    setText(cells.t, formatNumber(t, MATRIX_DIGITS));
+    setText(cells.x, formatNumber(point[0], MATRIX_DIGITS));
+    setText(cells.y, formatNumber(point[1], MATRIX_DIGITS));
+    const range = `segment ${segment.segment + 1} of ${segment.segmentCount}, curve parameter ${formatNumber(segment.start)} to ${formatNumber(segment.end)}`;
+    setText(cells.note, segment.homogeneous
+      ? `${range}; G holds the homogeneous points (w x, w y, w): divide by the last column to get the point.`
+      : segment.localParameter === false ? `${range}; ${name} is the curve parameter itself.` : `${range}; local ${name} = ${formatNumber(t, MATRIX_DIGITS)}.`);
   }
 
   return { element: root, update };
+}
+
+function setText(node, text) {
+  if (node.data !== text) node.data = text;
 }
 
 // The slide's row names ("P_0", "t_k+1") with their subscripts typeset.
@@ -88,12 +148,6 @@ function labelNode(text) {
 function tag(node, role) {
   node.setAttribute('data-matrix', role);
   return node;
-}
-
-function rows(flat, r, c) {
-  const out = [];
-  for (let i = 0; i < r; i += 1) out.push(Array.from(flat.slice(c * i, c * i + c)));
-  return out;
 }
 
 function transpose(m) {

@@ -83,18 +83,28 @@ export function drawSamples(painter, xy, every, style) {
 }
 
 // The levels of de Casteljau or de Boor up to `step`: level r is a polygon of points,
-// drawn in colour r with its points; the last level is the point on the curve.
-export function drawLevels(painter, levels, step, colors, halo) {
+// drawn in colour r with its points; the last level is the point on the curve. Level 0 (the
+// control points that act) gets a ring. names[r][j] is the index i of entry j of level r
+// (de Boor: d_i^r with the core's firstIndex; de Casteljau: b_j^r), written i^r.
+export function drawLevels(painter, levels, step, colors, halo, { names = null, symbol = 'b' } = {}) {
   const last = Math.min(step, levels.length - 1);
+  const n = levels.length - 1;
+  const color0 = colors[3 % colors.length];
+  levels[0].forEach(([x, y]) => painter.circle(x, y, 12, { stroke: color0, width: 2 }));
   for (let r = 1; r <= last; r += 1) {
     const level = levels[r];
     const color = colors[(r + 3) % colors.length];
     if (level.length > 1) painter.polyline(level.flat(), { stroke: color, width: 2 });
-    level.forEach(([x, y], i) => {
-      painter.circle(x, y, r === levels.length - 1 ? 7 : 5, { fill: color, stroke: halo, width: 1.5 });
-      if (level.length > 1 || r === levels.length - 1) painter.text(x, y, levelLabel(r, i, levels.length - 1), { fill: color, font: 12, dx: 0, dy: -14, halo });
+    level.forEach(([x, y], j) => {
+      painter.circle(x, y, r === n ? 7 : 5, { fill: color, stroke: halo, width: 1.5 });
+      const name = `${symbol}${sub(names ? names[r][j] : j)}${sup(r)}`;
+      // the last level's name goes under the P(u) label (above it sit the level r-1 names)
+      painter.text(x, y, r === n ? `${name} = P(u)` : name, { fill: color, font: 13, dx: 0, dy: r === n ? 36 : -15, halo });
     });
   }
 }
 
-const levelLabel = (r, i, n) => (r === n ? `P(u) (level ${r})` : `${r},${i}`);
+const SUB = '₀₁₂₃₄₅₆₇₈₉';
+const SUP = '⁰¹²³⁴⁵⁶⁷⁸⁹';
+const sub = (k) => String(k).split('').map((d) => SUB[Number(d)]).join('');
+const sup = (k) => String(k).split('').map((d) => SUP[Number(d)]).join('');

@@ -26,18 +26,14 @@ const CONSTRUCTION_LABELS = {
   'insert-knot': 'Insert a knot at u (Boehm)',
 };
 
-// The exact circle of lectures 001/002: a quadratic NURBS with 9 control points on the
-// square of side 2r, weights 1 at the corners' neighbours and sqrt(2)/2 at the corners.
-export function circlePreset(radius = 2) {
-  const r = radius;
-  const c = Math.SQRT1_2;
-  return {
-    family: 'nurbs',
-    degree: 2,
-    points: [[r, 0], [r, r], [0, r], [-r, r], [-r, 0], [-r, -r], [0, -r], [r, -r], [r, 0]],
-    weights: [1, c, 1, c, 1, c, 1, c, 1],
-    knots: [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1],
-  };
+// The exact circle of lectures 001/002, from the core (api.nurbsCircle): the quadratic NURBS
+// with 9 control points on the square of side 2r, weights 1 and sqrt(2)/2 at the corners,
+// knots 0,0,0,1/4,1/4,1/2,1/2,3/4,3/4,1,1,1.
+export function circlePreset(api, radius = 2) {
+  const c = api.nurbsCircle({ center: [0, 0], radius });
+  const points = [];
+  for (let j = 0; j + 1 < c.points.length; j += 2) points.push([c.points[j], c.points[j + 1]]);
+  return { family: 'nurbs', degree: c.degree, points, weights: Array.from(c.weights), knots: Array.from(c.knots) };
 }
 
 let els = null;
@@ -59,12 +55,12 @@ export function setupPanels(ctx, lesson) {
   const uSlider = h('input', { type: 'range', id: 'curve-u', step: 'any', oninput: (e) => setU(Number(e.target.value)) });
   const uOut = h('output', { for: 'curve-u', class: 'mono' });
   const playU = h('button', { type: 'button', class: 'tool', 'data-action': 'play-u', onclick: () => uPlayer.toggle() }, 'Play u');
-  const addButton = h('button', { type: 'button', class: 'tool', 'data-action': 'add-point', onclick: () => addSelected() }, 'Add point');
-  const removeButton = h('button', { type: 'button', class: 'tool', 'data-action': 'remove-point', onclick: () => removeSelected() }, 'Remove point');
+  const addButton = h('button', { type: 'button', 'data-action': 'add-point', class: 'tool advanced', onclick: () => addSelected() }, 'Add point');
+  const removeButton = h('button', { type: 'button', 'data-action': 'remove-point', class: 'tool advanced', onclick: () => removeSelected() }, 'Remove point');
 
   function setU(u, coalesce = 'u') {
     const s = state();
-    commit({ ...s, u, construction: s.construction.kind === 'elevate' ? s.construction : s.construction }, { coalesce });
+    commit({ ...s, u }, { coalesce });
   }
   const uPlayer = createPlayer({
     count: () => U_STEPS + 1,
@@ -148,7 +144,8 @@ export function setupPanels(ctx, lesson) {
       next.weights = con.points.map(() => 1);
       if (commit(next)) ctx.message.info(`Degree raised to ${con.points.length - 1}: same curve, one more control point.`);
     } else if (con.kind === 'insert-knot') {
-      const next = { ...s, points: con.points, knots: con.knots, weights: con.weights ?? s.weights, construction: { kind: 'insert-knot', step: 0 } };
+      const next = { ...s, points: con.points, knots: con.knots, weights: con.weights ?? con.points.map(() => 1),
+        tangents: con.points.map(() => [1, 0]), construction: { kind: 'insert-knot', step: 0 } };
       if (commit(next)) ctx.message.info(`Knot ${formatNumber(con.at, 4)} inserted: same curve, one more control point.`);
     }
   }
@@ -167,24 +164,25 @@ export function setupPanels(ctx, lesson) {
   const compareLabel = h('label', { class: 'check' }, compare, ' Interpolation: also draw a cubic spline through the same points (dashed)');
   overlayBody.append(compareLabel);
 
-  const inspectorBody = panel(ctx.panels, { id: 'panel-inspector', title: 'Inspector (exact values)' });
+  // The x, y of the selected handle are typed in the shell's inspector under the drawing
+  // (shell.js; it announces the move); this panel adds what a handle does not carry.
+  const inspectorBody = panel(ctx.panels, { id: 'panel-inspector', title: 'Exact values: tangent, weight, u, knots' });
+  // Presentation mode (site.css hides .advanced): the inspector, the point editing buttons
+  // and the CSV-minded details stay off the projector; family, u, constructions stay.
+  inspectorBody.parentElement.classList.add('advanced');
   const inspector = {
     title: h('p', { class: 'inspector-title' }),
-    x: h('input', { type: 'number', step: 0.01, id: 'inspect-x', onchange: () => typedPoint() }),
-    y: h('input', { type: 'number', step: 0.01, id: 'inspect-y', onchange: () => typedPoint() }),
     tx: h('input', { type: 'number', step: 0.01, id: 'inspect-tx', onchange: () => typedPoint() }),
     ty: h('input', { type: 'number', step: 0.01, id: 'inspect-ty', onchange: () => typedPoint() }),
     w: h('input', { type: 'number', step: 0.05, min: 0, id: 'inspect-w', onchange: () => typedPoint() }),
     u: h('input', { type: 'number', step: 0.01, id: 'inspect-u', onchange: (e) => { if (!setTypedU(e.target)) e.target.value = state().u; } }),
     knots: h('input', { type: 'text', id: 'inspect-knots', class: 'mono', spellcheck: 'false', onchange: (e) => typedKnots(e.target) }),
   };
-  const pointFields = h('div', { class: 'inspector-grid' },
-    h('label', { for: 'inspect-x' }, 'x'), inspector.x, h('label', { for: 'inspect-y' }, 'y'), inspector.y);
   const tangentFields = h('div', { class: 'inspector-grid' },
     h('label', { for: 'inspect-tx' }, 'tangent x'), inspector.tx, h('label', { for: 'inspect-ty' }, 'tangent y'), inspector.ty);
   const weightFields = h('div', { class: 'inspector-grid' }, h('label', { for: 'inspect-w' }, 'weight w'), inspector.w);
   const knotField = h('div', { class: 'inspector-knots' }, h('label', { for: 'inspect-knots' }, 'Knot vector (comma separated, non-decreasing)'), inspector.knots);
-  inspectorBody.append(inspector.title, pointFields, tangentFields, weightFields,
+  inspectorBody.append(inspector.title, tangentFields, weightFields,
     h('div', { class: 'inspector-grid' }, h('label', { for: 'inspect-u' }, 'u'), inspector.u), knotField);
 
   function typedPoint() {
@@ -192,13 +190,11 @@ export function setupPanels(ctx, lesson) {
     const i = selectedPoint(ctx) ?? selectedTangent(ctx);
     if (i === null) return;
     const val = (input, old) => (input.value.trim() === '' ? old : Number(input.value));
-    const x = val(inspector.x, s.points[i][0]);
-    const y = val(inspector.y, s.points[i][1]);
-    if (![x, y].every(Number.isFinite)) { ctx.message.error('Type a number for x and y.', 'invalid-number'); return; }
-    const next = { ...s, points: s.points.map((p, j) => (j === i ? [x, y] : p)) };
+    const next = { ...s };
     if (s.family === 'hermite') {
       const tx = val(inspector.tx, s.tangents[i][0]);
       const ty = val(inspector.ty, s.tangents[i][1]);
+      if (![tx, ty].every(Number.isFinite)) { ctx.message.error(`Type a number for both components of the tangent T${i}.`, 'invalid-number'); return; }
       next.tangents = s.tangents.map((t, j) => (j === i ? [tx, ty] : t));
     }
     if (s.family === 'nurbs') next.weights = s.weights.map((w, j) => (j === i ? val(inspector.w, w) : w));
@@ -238,7 +234,9 @@ export function setupPanels(ctx, lesson) {
     h('button', { type: 'button', class: 'tool', 'data-action': 'knots-unclamped', onclick: () => setKnots(unclampedKnots(state().knots, state().degree)) }, 'Unclamped'),
     h('button', { type: 'button', class: 'tool', 'data-action': 'knots-uniform', onclick: () => setKnots(uniformKnots(state().points.length, state().degree)) }, 'Uniform'));
   const knotTable = h('div', { class: 'knot-table' });
-  knotsBody.append(presets, knotTable);
+  const removalNote = h('p', { class: 'hint', id: 'knot-removal-note' },
+    'Raising m inserts the knot again (Boehm): the curve does not move. Lowering m is knot removal, which moves the curve unless it already has the higher continuity there; take a raise back with Undo, which is exact.');
+  knotsBody.append(presets, knotTable, removalNote);
   function setKnots(knots) {
     const s = state();
     const d = { start: knots[s.degree], end: knots[knots.length - 1 - s.degree] };
@@ -248,7 +246,7 @@ export function setupPanels(ctx, lesson) {
   const nurbsBody = panel(ctx.panels, { id: 'panel-nurbs', title: 'NURBS: weights and the homogeneous view' });
   const circle = h('button', { type: 'button', class: 'tool', 'data-action': 'circle-preset', onclick: () => {
     const s = state();
-    const next = clearConstruction({ ...s, ...circlePreset(2), tangents: [], u: 0 });
+    const next = clearConstruction({ ...s, ...circlePreset(ctx.api, 2), tangents: [], u: 0 });
     next.tangents = next.points.map(() => [1, 0]);
     if (commit(next)) { ctx.setView(lesson.fitView(ctx.model, ctx.stage)); ctx.message.info('Exact circle: a quadratic NURBS with 9 points and weights 1, √2/2.'); }
   } }, 'Exact circle preset');
@@ -258,14 +256,25 @@ export function setupPanels(ctx, lesson) {
   const inset = createHomogeneousInset(insetBox);
 
   // ---------------------------------------------------------------- keys
-  const canvas = ctx.stage.canvas;
-  const notCanvas = (e) => e.target !== canvas;
-  ctx.keymap.add({ keys: ['n', 'PageDown'], label: 'construction: next step', group: 'Constructions', action: () => conPlayer.next() });
-  ctx.keymap.add({ keys: ['b', 'PageUp'], label: 'construction: previous step', group: 'Constructions', action: () => conPlayer.prev() });
-  ctx.keymap.add({ keys: ['Home'], label: 'construction: back to the start (not on the focused drawing)', group: 'Constructions', when: notCanvas, action: () => conPlayer.restart() });
-  ctx.keymap.add({ keys: [' '], label: 'play / pause u', group: 'Curve', when: notCanvas, action: () => uPlayer.toggle() });
-  ctx.keymap.add({ keys: [','], label: 'u a little back', group: 'Curve', action: () => nudgeU(-1) });
-  ctx.keymap.add({ keys: ['.'], label: 'u a little forward', group: 'Curve', action: () => nudgeU(1) });
+  // Presenter remote (shell.js binds PageDown/n, PageUp/Shift+n, Space/k, Home, o/b/.):
+  // next/prev/reset step the construction; play/pause plays the construction when one is
+  // chosen, else u; the overlay key hides the overlays and brings them back.
+  let savedOverlays = null;
+  ctx.setPresenter({
+    next: () => conPlayer.next(),
+    prev: () => conPlayer.prev(),
+    reset: () => conPlayer.restart(),
+    playPause: () => (state().construction.kind !== 'none' ? conPlayer.toggle() : uPlayer.toggle()),
+    toggleOverlays: () => {
+      const o = state().overlays;
+      const anyOn = Object.values(o).some(Boolean);
+      const next = anyOn ? Object.fromEntries(Object.keys(o).map((k) => [k, false])) : (savedOverlays ?? lesson.defaultState().overlays);
+      savedOverlays = anyOn ? o : null;
+      commit({ ...state(), overlays: next }, { recompute: true });
+    },
+  });
+  ctx.keymap.add({ keys: ['j'], label: 'u a little back', group: 'Curve', action: () => nudgeU(-1) });
+  ctx.keymap.add({ keys: ['l'], label: 'u a little forward', group: 'Curve', action: () => nudgeU(1) });
   ctx.keymap.add({ keys: ['a'], label: 'add a control point after the selected one', group: 'Curve', action: () => addSelected() });
   ctx.keymap.add({ keys: ['Delete', 'Backspace'], label: 'remove the selected control point', group: 'Curve', action: () => removeSelected() });
   ctx.keymap.add({ keys: ['m'], label: 'matrix form: u^T M G or G M T', group: 'Curve', action: () => commit({ ...state(), transposed: !state().transposed }) });
@@ -283,7 +292,7 @@ export function setupPanels(ctx, lesson) {
   lesson.onSelect = () => ctx.refresh();
 
   els = { family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, transposed, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
-    inspector, pointFields, tangentFields, weightFields, knotField, knotTable, knotsPanel: knotsBody.parentElement, nurbsPanel: nurbsBody.parentElement, weightList, inset,
+    inspector, tangentFields, weightFields, knotField, knotTable, knotsPanel: knotsBody.parentElement, nurbsPanel: nurbsBody.parentElement, weightList, inset,
     degreeLabel: row1.querySelector('.degree-label'), tensionGroup: row1.querySelector('.tension-group'), lastKnotKey: null, lastWeightKey: null, conPlayer, uPlayer, commit, state, setKnots };
 }
 
@@ -343,13 +352,10 @@ export function updatePanels(model, state, ctx) {
   els.compareLabel.hidden = state.family !== 'interpolation';
   // inspector
   const i = selectedPoint(ctx) ?? selectedTangent(ctx);
-  els.pointFields.hidden = i === null;
   els.tangentFields.hidden = i === null || state.family !== 'hermite';
   els.weightFields.hidden = i === null || state.family !== 'nurbs';
-  els.inspector.title.textContent = i === null ? 'Select a control point (click it, or focus the drawing and press ] ) to type its values.' : `P${i}`;
+  els.inspector.title.textContent = i === null ? 'Select a control point (click it, or focus the drawing and press ] ); its x and y are typed under the drawing.' : `P${i}`;
   if (i !== null && i < K) {
-    setValue(els.inspector.x, state.points[i][0]);
-    setValue(els.inspector.y, state.points[i][1]);
     if (state.family === 'hermite') { setValue(els.inspector.tx, state.tangents[i][0]); setValue(els.inspector.ty, state.tangents[i][1]); }
     if (state.family === 'nurbs') setValue(els.inspector.w, state.weights[i]);
   }
@@ -382,6 +388,10 @@ function constructionText(con, step, model) {
   const s = Math.min(step, last);
   if (con.kind === 'de-casteljau' || con.kind === 'de-boor') {
     const name = con.kind === 'de-casteljau' ? 'de Casteljau' : 'de Boor';
+    if (con.kind === 'de-boor' && s === 0) {
+      const first = con.firstIndex;
+      return `de Boor at u = ${formatNumber(model.u, 4)} in the span [t${con.span}, t${con.span + 1}): level 0 is P${first}..P${first + last} (ringed), the ${last + 1} points that act there. Step to interpolate.`;
+    }
     if (s === 0) return `${name} at u = ${formatNumber(model.u, 4)}: level 0 is the control polygon. Step to interpolate.`;
     return `${name}, level ${s} of ${last}: ${con.levels[s].length} point${con.levels[s].length > 1 ? 's' : ''}` +
       (s === last ? ` — the point on the curve P(${formatNumber(model.u, 4)}).` : ', each between two of the level before.');
@@ -389,8 +399,9 @@ function constructionText(con, step, model) {
   if (con.kind === 'subdivide') return s === 0 ? 'All de Casteljau levels at u; the next step splits the curve.' : 'Left half (L) and right half (R): together they trace the same curve.';
   if (con.kind === 'elevate') return s === 0 ? `Degree ${model.degree}; the next step shows degree ${model.degree + 1}.` : `Degree ${model.degree + 1}: ${con.points.length} points, the same curve. Apply to keep them.`;
   if (con.kind === 'insert-knot') {
-    const n = con.changed.filter(Boolean).length;
-    return s === 0 ? `Insert the knot u = ${formatNumber(con.at, 4)}: the next step shows the new control polygon.` : `${n} new control points (highlighted) replace ${n - 1}; the curve is unchanged. Apply to keep them.`;
+    const n = con.newPoints.length;
+    return s === 0 ? `Insert the knot u = ${formatNumber(con.at, 4)}: the next step shows the new control polygon.`
+      : `${n} new control points (Q${con.newPoints.join(', Q')}, highlighted) replace ${n - 1} old ones; the curve is unchanged. Apply to keep them.`;
   }
   return '';
 }
@@ -404,43 +415,37 @@ function knotGroupTable(model, state, ctx) {
   const editable = usesKnots(state.family);
   const tbl = h('table', { class: 'data-table knot-groups' },
     h('caption', {}, `Degree p = ${state.degree}: a knot of multiplicity m gives continuity C^(p-m) there.`),
-    h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'knot'), h('th', { scope: 'col' }, 'multiplicity m'), h('th', { scope: 'col' }, 'continuity'), editable ? h('th', { scope: 'col' }, 'change m') : null)),
+    h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'knot'), h('th', { scope: 'col' }, 'multiplicity m'), h('th', { scope: 'col' }, 'continuity'), editable ? h('th', { scope: 'col' }, 'raise m') : null)),
     h('tbody', {}, groups.map((g) => h('tr', { 'data-knot': String(g.value) },
       h('th', { scope: 'row' }, formatNumber(g.value, 4)),
       h('td', {}, String(g.multiplicity)),
       h('td', { class: 'continuity' }, where(g)),
       editable ? h('td', {},
-        h('button', { type: 'button', class: 'tool small', 'data-action': 'raise-multiplicity', 'aria-label': `raise the multiplicity of knot ${formatNumber(g.value, 4)}`,
-          disabled: !joint(g) || g.multiplicity >= state.degree || state.points.length >= 24 || typeof ctx.api.insertKnot !== 'function', onclick: () => raiseMultiplicity(g.value, ctx) }, '+'),
-        ' ',
-        h('button', { type: 'button', class: 'tool small', 'data-action': 'lower-multiplicity', 'aria-label': `lower the multiplicity of knot ${formatNumber(g.value, 4)}`,
-          disabled: g.multiplicity <= 1 || state.points.length <= state.degree + 1, onclick: () => lowerMultiplicity(g, ctx) }, '−')) : null))));
+        h('button', { type: 'button', class: 'tool small', 'data-action': 'raise-multiplicity', 'aria-label': `raise the multiplicity of knot ${formatNumber(g.value, 4)} (m + 1)`,
+          disabled: !joint(g) || g.multiplicity >= state.degree || state.points.length >= 24, onclick: () => raiseMultiplicity(g.value, ctx) }, 'm + 1')) : null))));
   return tbl;
 }
 
 // Raising m inserts the knot once more (Boehm, in the core): the curve stays, one point more.
 function raiseMultiplicity(value, ctx) {
   const s = ctx.state;
-  const spec = ctx.model.spec;
   let r;
-  try { r = ctx.api.insertKnot(spec, value); } catch (err) { ctx.message.error(err.message, err.code); return; }
+  try { r = ctx.api.insertKnot(ctx.model.spec, value); } catch (err) { ctx.message.error(err.message, err.code); return; }
   const points = [];
-  for (let j = 0; j < r.points.length; j += 2) points.push([r.points[j], r.points[j + 1]]);
-  const next = { ...s, points, knots: Array.from(r.knots), weights: r.weights ? Array.from(r.weights) : s.weights,
+  for (let j = 0; j + 1 < r.curve.points.length; j += 2) points.push([r.curve.points[j], r.curve.points[j + 1]]);
+  const knots = Array.from(r.curve.knots);
+  const next = { ...s, points, knots, weights: r.curve.weights?.length ? Array.from(r.curve.weights) : points.map(() => 1),
     tangents: points.map(() => [1, 0]), construction: { kind: 'none', step: 0 } };
-  if (ctx.commit(next)) ctx.message.info(`Knot ${formatNumber(value, 4)} now has multiplicity ${next.knots.filter((k) => k === value).length}; the curve did not move.`);
+  if (ctx.commit(next)) {
+    const m = knots.filter((k) => k === value).length;
+    ctx.message.info(`Knot ${formatNumber(value, 4)} now has multiplicity ${m} (C${s.degree - m} there); the curve did not move, P${r.newPoints.join(', P')} are new.`);
+  }
 }
 
-// Lowering m removes one copy of the knot and the control point it brought (the middle of
-// the points its insertion changed). Knot removal is not exact in general: the curve moves.
-function lowerMultiplicity(group, ctx) {
-  const s = ctx.state;
-  const j = group.indices[group.indices.length - 1];
-  const drop = Math.min(s.points.length - 1, Math.max(0, j - 1 - Math.floor(s.degree / 2)));
-  const next = { ...s, knots: s.knots.filter((_, i) => i !== j), points: s.points.filter((_, i) => i !== drop),
-    weights: s.weights.filter((_, i) => i !== drop), tangents: s.tangents.filter((_, i) => i !== drop), construction: { kind: 'none', step: 0 } };
-  if (ctx.commit(next)) ctx.message.info(`One copy of knot ${formatNumber(group.value, 4)} removed with P${drop}; the curve changed near it.`);
-}
+// Lowering a multiplicity (knot removal) is offered only as the exact operation: taking back
+// a raise with Undo. Removing a knot from an arbitrary curve changes the curve unless it is
+// already C^(p-m+1) there, and the core has no knot removal to judge or minimise the change;
+// a button that silently moved the curve would teach the wrong thing (issue 6 decision).
 
 function weightRow(w, j, ctx) {
   const id = `weight-${j}`;
