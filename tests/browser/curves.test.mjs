@@ -81,7 +81,11 @@ test('dragging a Bezier control point moves the state, the matrix panel and the 
 
   const after = await page.evaluate(() => window.wingspline.state);
   const moved = after.points[1];
-  assert.ok(moved[0] > before.points[1][0] + 0.2 && moved[1] < before.points[1][1] - 0.5, `P1 moved right and down: ${moved}`);
+  // 60 px right and 150 px down on screen, in world units at the page's zoom (y is up).
+  const zoom = before.view.zoom;
+  const pixel = 1.5 / zoom;
+  assert.ok(Math.abs(moved[0] - (before.points[1][0] + 60 / zoom)) <= pixel
+    && Math.abs(moved[1] - (before.points[1][1] - 150 / zoom)) <= pixel, `P1 followed the pointer: ${moved}`);
   // the handle is now under the mouse (within a pixel)
   const p1After = await handle(page, 'p1');
   assert.ok(Math.abs(p1After.x - (p1.x + 60)) <= 1.5 && Math.abs(p1After.y - (p1.y + 150)) <= 1.5);
@@ -99,7 +103,9 @@ test('dragging a Bezier control point moves the state, the matrix panel and the 
 
   // the curve pixels moved: ink at the core's new P(0.5), none left at the old one
   const newPoint = await corePoint(page, 0.5);
-  assert.ok(Math.hypot(newPoint[0] - oldPoint[0], newPoint[1] - oldPoint[1]) > 0.3);
+  // P(0.5) moves by B_1,3(0.5) = 3/8 of P1's move (Bernstein weight, lecture 001).
+  const p1Move = Math.hypot(moved[0] - before.points[1][0], moved[1] - before.points[1][1]);
+  assert.ok(Math.abs(Math.hypot(newPoint[0] - oldPoint[0], newPoint[1] - oldPoint[1]) - 0.375 * p1Move) < 1e-9);
   assert.ok(await darkestNear(page, ...newPoint) < DARK_SUM, 'ink at the new P(0.5)');
   assert.ok(await darkestNear(page, ...oldPoint, 1) >= DARK_SUM, 'no ink left at the old P(0.5)');
 

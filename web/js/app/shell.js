@@ -117,6 +117,7 @@ export async function runLesson(lesson) {
   const persister = createPersister(lesson);
   const ui = { selected: null, hover: null, hoverPoint: null, present: isPresenting() };
   let model = null;
+  let autoFit = false; // the default view follows the canvas size until the person pans or zooms
   let frame = 0;
   let colors = drawingColors();
 
@@ -219,7 +220,8 @@ export async function runLesson(lesson) {
   let dragId = null;
   ctx.stage = createStage(els.canvas, {
     getView: () => store.state.view,
-    setView,
+    // A pan or zoom by the person ends the automatic fitting of the default view.
+    setView(view) { autoFit = false; setView(view); },
     getHandles: handles,
     getSelected: () => ui.selected,
     handleScale: () => (ui.present ? 1.6 : 1),
@@ -241,7 +243,10 @@ export async function runLesson(lesson) {
       // when the hovered handle changes.
       if (changed || lesson.usesHoverPoint) scheduleRender();
     },
-    dragStart(id) { dragId = id; },
+    dragStart(id) {
+      autoFit = false;
+      dragId = id;
+    },
     drag(id, x, y) {
       const next = lesson.moveHandle?.(store.state, id, x, y, model);
       if (next) commit(next, { coalesce: `drag:${id}:${dragId}` });
@@ -253,7 +258,14 @@ export async function runLesson(lesson) {
     },
     click: lesson.click ? (x, y, event) => lesson.click(x, y, ctx, event) : null,
     // Resizing clears the canvas: redraw at once, so no frame (or screenshot) shows it blank.
-    onResize: () => { if (model && ctx.stage) renderNow(); else scheduleRender(); },
+    onResize: () => {
+      // Until the person moves the view, the lesson's starting view stays fitted to the
+      // canvas while the page settles (panels filling in change the canvas's size).
+      if (autoFit && model && lesson.fitView) {
+        store.set({ ...store.state, view: lesson.fitView(model, ctx.stage) }, { history: false, reason: 'view' });
+      }
+      if (model && ctx.stage) renderNow(); else scheduleRender();
+    },
   });
 
   function announce(handle) {
@@ -496,6 +508,7 @@ export async function runLesson(lesson) {
   lesson.setup(ctx);
   buildInspector();
   if (restored.problem) message.warn(restored.problem);
+  autoFit = restored.source === 'default';
   if (restored.source === 'default' && lesson.fitView) {
     // The default view is fitted to the canvas once its size is known.
     await new Promise((resolve) => requestAnimationFrame(resolve));

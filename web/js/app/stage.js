@@ -175,10 +175,13 @@ export function createStage(canvas, hooks) {
       return g;
     },
     // The view that shows the box [minX,maxX] x [minY,maxY] with a margin.
+    // Measured from the canvas's current layout: on a page's first frame the size the
+    // ResizeObserver last reported can still be the default 300 x 150.
     fit(minX, minY, maxX, maxY, margin = 0.12) {
+      const rect = canvas.getBoundingClientRect();
       const w = Math.max(maxX - minX, 1e-9);
       const hgt = Math.max(maxY - minY, 1e-9);
-      const zoom = Math.min(cssWidth / (w * (1 + 2 * margin)), cssHeight / (hgt * (1 + 2 * margin)));
+      const zoom = Math.min(rect.width / (w * (1 + 2 * margin)), rect.height / (hgt * (1 + 2 * margin)));
       return { cx: (minX + maxX) / 2, cy: (minY + maxY) / 2, zoom: Math.min(1e5, Math.max(1, zoom)) };
     },
   };

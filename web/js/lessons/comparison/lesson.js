@@ -2,7 +2,6 @@
 // uniform B-spline and Catmull-Rom at once; the lectures' comparison table checked live by
 // the core; basis conversion both ways; affine and perspective invariance measured.
 import { object, list, number, oneOf, integer, boolean } from '../../app/schema.js';
-import { fitView } from '../../ui/fit-view.js';
 import { h, panel, table } from '../../app/dom.js';
 import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
 import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH, pointTangents } from './families.js';
@@ -78,7 +77,7 @@ export const lesson = {
     const ys = pts.map((p) => p[1]);
     const [minY, maxY] = [Math.min(...ys), Math.max(...ys)];
     // Room at the top for the legend.
-    return fitView(stage.canvas, Math.min(...xs), minY - 0.3, Math.max(...xs), maxY + 0.3 * (maxY - minY) + 0.3);
+    return stage.fit(Math.min(...xs), minY - 0.3, Math.max(...xs), maxY + 0.3 * (maxY - minY) + 0.3);
   },
 
   setup(ctx) {

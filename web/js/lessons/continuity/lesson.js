@@ -4,7 +4,6 @@
 // along the whole curve, and a point travelling at parametric speed.
 import { object, list, number, oneOf, boolean, text } from '../../app/schema.js';
 import { createPlayer } from '../../app/player.js';
-import { fitView } from '../../ui/fit-view.js';
 import { h, panel, table } from '../../app/dom.js';
 import { formatNumber } from '../../ui/mathml.js';
 import { drawSeriesPlot } from '../../ui/series-plot.js';
@@ -91,7 +90,7 @@ export const lesson = {
     for (const hd of lesson.handles(model, model.state)) { xs.push(hd.x); ys.push(hd.y); }
     const [minY, maxY] = [Math.min(...ys), Math.max(...ys)];
     // Room at the top for the legend.
-    return fitView(stage.canvas, Math.min(...xs), minY, Math.max(...xs), maxY + 0.3 * (maxY - minY));
+    return stage.fit(Math.min(...xs), minY, Math.max(...xs), maxY + 0.3 * (maxY - minY));
   },
 
   setup(ctx) {

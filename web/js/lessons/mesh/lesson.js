@@ -138,13 +138,7 @@ function fitView(model, stage) {
     minX = Math.min(minX, P[i]); maxX = Math.max(maxX, P[i]);
     minY = Math.min(minY, P[i + 1]); maxY = Math.max(maxY, P[i + 1]);
   }
-  // The canvas's laid-out size (the stage's cached size lags behind the first layout).
-  const rect = stage.canvas.getBoundingClientRect();
-  const margin = 0.18; // room for the labels beside the vertices
-  const w = Math.max(maxX - minX, 1e-9);
-  const hgt = Math.max(maxY - minY, 1e-9);
-  const zoom = Math.min(rect.width / (w * (1 + 2 * margin)), rect.height / (hgt * (1 + 2 * margin)));
-  return { cx: (minX + maxX) / 2, cy: (minY + maxY) / 2, zoom: Math.min(1e5, Math.max(1, zoom)) };
+  return stage.fit(minX, minY, maxX, maxY, 0.18); // margin: room for the labels beside the vertices
 }
 
 function handles(model) {

@@ -4,7 +4,6 @@
 // interpolated corners, the twist vectors, the formula with live numbers, and two patches
 // joined with C0 or C1 across their shared boundary.
 import { object, list, number, oneOf, boolean, integer } from '../../app/schema.js';
-import { fitView } from '../../ui/fit-view.js';
 import { h, panel, table } from '../../app/dom.js';
 import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
 import { createCamera, projectAll } from './view3d.js';
@@ -156,7 +155,7 @@ export const lesson = {
       for (let k = 0; k < xy.length; k += 2) { xs.push(xy[k]); ys.push(xy[k + 1]); }
     }
     for (const hd of netHandles(model.state)) { xs.push(hd.x); ys.push(hd.y); }
-    return fitView(stage.canvas, Math.min(...xs), Math.min(...ys), Math.max(...xs), Math.max(...ys), 0.14);
+    return stage.fit(Math.min(...xs), Math.min(...ys), Math.max(...xs), Math.max(...ys), 0.14);
   },
 
   setup(ctx) {
