@@ -95,9 +95,18 @@ export function createPersister(lesson, { delayMs = 200 } = {}) {
   }
   window.addEventListener('pagehide', keepPending);
 
-  async function flush() {
+  let inflight = Promise.resolve();
+  function flush() {
     timer = null;
+    inflight = inflight.then(write).catch(() => { /* the next save tries again */ });
+    return inflight;
+  }
+
+  // Writes run one after the other, so a slow compression can never let an older state
+  // overwrite a newer one, and flushNow() can wait for the one under way.
+  async function write() {
     const state = pending;
+    if (state === null) return;
     const code = await encodeState(lesson, state);
     if (pending === state) pending = null;
     if (code === lastCode) return;
@@ -121,6 +130,8 @@ export function createPersister(lesson, { delayMs = 200 } = {}) {
       if (timer) {
         clearTimeout(timer);
         await flush();
+      } else {
+        await inflight;
       }
     },
     async shareUrl(state) {
