@@ -22,6 +22,7 @@ if (wants('ui_drag')) {
       const { ctx } = window.wingspline;
       const s = ctx.state;
       ctx.commit({ ...s, points: [[0, 0], [1, 2], [2, 2.5], [3, 2], [4, 1], [5, 0]], weights: [1, 1, 1, 1, 1, 1], tangents: Array(6).fill([1, 0]) });
+      ctx.setView(ctx.lesson.fitView(ctx.model, ctx.stage)); // all six points on screen
     });
     const samples = await page.evaluate(() => window.wingspline.model.samples.length / 2);
     const p = (await page.evaluate(() => window.wingspline.handles())).find((x) => x.id === 'p2');
