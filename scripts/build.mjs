@@ -33,9 +33,10 @@ export async function buildWasm() {
 }
 
 // Copies src into dst where size or mtime differ; removes what src no longer has.
-function mirror(src, dst, keep = new Set()) {
+// `keep`: names in dst written by other steps; `skip`: names in src that are not copied.
+function mirror(src, dst, keep = new Set(), skip = new Set()) {
   fs.mkdirSync(dst, { recursive: true });
-  const wanted = new Set(fs.readdirSync(src));
+  const wanted = new Set(fs.readdirSync(src).filter((name) => !skip.has(name)));
   for (const name of fs.readdirSync(dst)) {
     if (!wanted.has(name) && !keep.has(name)) fs.rmSync(path.join(dst, name), { recursive: true, force: true });
   }
@@ -54,9 +55,28 @@ function mirror(src, dst, keep = new Set()) {
   }
 }
 
-export function assembleSite() {
+const escapeHtml = (text) => String(text).replace(/[<>&"']/g, (c) => ({ '<': '&lt;', '>': '&gt;', '&': '&amp;', '"': '&quot;', "'": '&#39;' })[c]);
+
+// Every lesson page is the one frame (web/templates/lesson.html) with the lesson's id and
+// title from the registry, so the pages cannot drift apart.
+async function lessonPages() {
+  const { lessons } = await import(pathToFileURL(path.join(repoRoot, 'web', 'js', 'lessons', 'registry.js')).href);
+  const frame = fs.readFileSync(path.join(repoRoot, 'web', 'templates', 'lesson.html'), 'utf8')
+    .replace(/<!-- The frame of every lesson page\.[\s\S]*?-->\n/, '');
+  return lessons.map((lesson) => ({
+    file: lesson.page,
+    html: frame.replaceAll('{{id}}', escapeHtml(lesson.id)).replaceAll('{{title}}', escapeHtml(lesson.title)),
+  }));
+}
+
+export async function assembleSite() {
   const dist = path.join(repoRoot, 'dist');
-  mirror(path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.js']));
+  const pages = await lessonPages();
+  mirror(path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.js', ...pages.map((p) => p.file)]), new Set(['templates']));
+  for (const { file, html } of pages) {
+    const target = path.join(dist, file);
+    if (!fs.existsSync(target) || fs.readFileSync(target, 'utf8') !== html) fs.writeFileSync(target, html);
+  }
   const wasmOut = path.join(dist, 'wasm');
   fs.mkdirSync(wasmOut, { recursive: true });
   for (const file of ['wingspline-core.js', 'wingspline-core.wasm']) {
@@ -72,7 +92,7 @@ export function assembleSite() {
 export async function build() {
   await buildNative();
   await buildWasm();
-  assembleSite();
+  await assembleSite();
   log('site assembled in dist/');
 }
 
