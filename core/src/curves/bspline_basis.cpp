@@ -3,20 +3,7 @@
 namespace wingspline::curves {
 
 void basis_functions(int span, double u, int degree, const double* t, double* N) {
-    double left[kMaxDegree + 1];
-    double right[kMaxDegree + 1];
-    N[0] = 1.0;
-    for (int j = 1; j <= degree; ++j) {
-        left[j] = u - t[span + 1 - j];
-        right[j] = t[span + j] - u;
-        double saved = 0.0;
-        for (int r = 0; r < j; ++r) {
-            const double temp = N[r] / (right[r + 1] + left[j - r]);
-            N[r] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
-        }
-        N[j] = saved;
-    }
+    basis_functions_upto<kMaxDegree>(span, u, degree, t, N);
 }
 
 void basis_function_derivatives(int span, double u, int p, int n, const double* t, double* ders) {

@@ -27,12 +27,15 @@ inline int find_span_in(const double* knots, int first, int last, double u) {
     return lo;
 }
 
-// N[0..p] = N_{span-p+r, p}(u), r = 0..p (A2.2). P is the degree when known at compile time.
-template <int P> inline void basis_functions_fixed(int span, double u, const double* t, double* N) {
-    double left[P + 1];
-    double right[P + 1];
+// N[0..degree] = N_{span-degree+r, degree}(u), r = 0..degree (The NURBS Book, A2.2), for any
+// degree <= MaxP. One body for both uses: basis_functions (the degree known at run time)
+// and basis_functions_fixed<P> (known at compile time, so the loops unroll).
+template <int MaxP>
+inline void basis_functions_upto(int span, double u, int degree, const double* t, double* N) {
+    double left[MaxP + 1];
+    double right[MaxP + 1];
     N[0] = 1.0;
-    for (int j = 1; j <= P; ++j) {
+    for (int j = 1; j <= degree; ++j) {
         left[j] = u - t[span + 1 - j];
         right[j] = t[span + j] - u;
         double saved = 0.0;
@@ -43,6 +46,10 @@ template <int P> inline void basis_functions_fixed(int span, double u, const dou
         }
         N[j] = saved;
     }
+}
+
+template <int P> inline void basis_functions_fixed(int span, double u, const double* t, double* N) {
+    basis_functions_upto<P>(span, u, P, t, N);
 }
 
 // N[r] as above and dN[r] = d/du N_{span-p+r,p}(u), from the degree p-1 functions:
