@@ -24,7 +24,8 @@ namespace {
 using namespace wingspline::mesh;
 
 // The winged edge is built with the mesh; the other representations only on first use
-// (meshBuildRepresentations, from the face set the JS Mesh keeps until then), so a mesh's
+// (meshBuildRepresentations, from the face set read back from the winged edge, or the one
+// the JS Mesh keeps when the caller chose the face edges), so a mesh's
 // wasm memory is the winged edge's own until a lesson asks for the others.
 struct MeshEntry {
     WingedEdgeMesh winged;
@@ -106,8 +107,12 @@ IndexedMesh indexed_from(const val& positions, const val& face_offsets, const va
     require(!m.face_offsets.empty() && m.face_offsets.front() == 0 &&
                 m.face_offsets.back() == static_cast<int32_t>(m.face_vertices.size()),
             "invalid-argument", "face offsets do not match the face vertex list");
+    // A plain loop with the throw on the cold branch: a call in this loop (even an inline
+    // require()) goes through a JS trampoline per iteration under Emscripten's exception
+    // handling, which made copying a 100k-face mesh in cost a third of building it.
+    const int32_t* fo = m.face_offsets.data();
     for (std::size_t i = 1; i < m.face_offsets.size(); ++i)
-        require(m.face_offsets[i] >= m.face_offsets[i - 1], "invalid-argument", "face offsets must not decrease");
+        if (fo[i] < fo[i - 1]) throw Error("invalid-argument", "face offsets must not decrease");
     return m;
 }
 
@@ -133,14 +138,14 @@ val named_value(const NamedMesh& n) {
 
 val mesh_build(val positions, val face_offsets, val face_vertices, val edges, val vertex_edges, val face_edges) {
     return guarded_build([&] {
-        const IndexedMesh m = indexed_from(positions, face_offsets, face_vertices);
+        IndexedMesh m = indexed_from(positions, face_offsets, face_vertices);
         BuildOptions options;
         const std::vector<int32_t> flat = to_ints(edges);
         for (std::size_t i = 0; i + 1 < flat.size(); i += 2) options.edges.push_back({flat[i], flat[i + 1]});
         options.vertex_edges = to_ints(vertex_edges);
         options.face_edges = to_ints(face_edges);
         auto e = std::make_unique<MeshEntry>();
-        e->winged = WingedEdgeMesh::build(m, options);
+        e->winged = WingedEdgeMesh::build(std::move(m), options); // positions taken, not copied
         const int32_t handle = registry().next_handle++;
         registry().meshes.emplace(handle, std::move(e));
         val r = val::object();
@@ -396,10 +401,16 @@ val mesh_build_representations(int32_t handle, val face_offsets, val face_vertic
     return guarded([&] {
         MeshEntry& m = entry(handle);
         if (!m.representations) {
+            // Without a face set from JS, the faces are read back from the winged edge (the
+            // default face edges keep each face's corner order as given).
             IndexedMesh faces;
-            faces.positions = m.winged.positions();
-            faces.face_offsets = to_ints(face_offsets);
-            faces.face_vertices = to_ints(face_vertices);
+            if (face_offsets.isNull() || face_offsets.isUndefined()) {
+                faces = m.winged.face_set();
+            } else {
+                faces.positions = m.winged.positions();
+                faces.face_offsets = to_ints(face_offsets);
+                faces.face_vertices = to_ints(face_vertices);
+            }
             m.representations = std::make_unique<Representations>(build_representations(faces, m.winged));
         }
         return val::object();
@@ -531,22 +542,10 @@ val mesh_bytes(int32_t handle) {
 // For the benchmark and leak tests: walks every vertex ring (BENCH.md mesh_ring).
 val mesh_ring_walk(int32_t handle) {
     return guarded([&] {
-        const WingedEdgeMesh& w = entry(handle).winged;
-        double checksum = 0, visited = 0;
-        for (int32_t v = 0; v < w.vertex_count(); ++v) {
-            const int32_t first = w.vertex_edge(v);
-            if (first == kNone) continue;
-            int32_t e = first;
-            do {
-                const EdgeRecord& r = w.edge(e);
-                checksum += r.start == v ? r.end : r.start;
-                visited += 1;
-                e = r.start == v ? r.start_left : r.end_right;
-            } while (e != first);
-        }
+        const RingWalkTotals totals = entry(handle).winged.walk_every_ring();
         val r = val::object();
-        r.set("visited", visited);
-        r.set("checksum", checksum);
+        r.set("visited", totals.visited);
+        r.set("checksum", totals.neighbour_sum);
         return r;
     });
 }

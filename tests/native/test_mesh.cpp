@@ -85,6 +85,63 @@ TEST_CASE("CCW around v2 is e6, e5, e3, e2; every ring covers its vertex's edges
     CHECK(w.faces_around_vertex(1) == std::vector<int32_t>{2, 1, 0});
 }
 
+TEST_CASE("walking every ring meets each edge once from each end", "[mesh][traversal]") {
+    // Invariant: the walks visit 2E edges, and the neighbours met sum to the sum of S + E
+    // over all edges (each edge is seen from its Start, giving E, and from its End, giving S).
+    for (const IndexedMesh& m : {tetrahedron(), cube(), open_fan(5), grid(6, 3), uv_sphere(10, 6)}) {
+        const WingedEdgeMesh w = build_valid(m);
+        double ends = 0;
+        for (int32_t e = 0; e < w.edge_count(); ++e) ends += w.edge(e).start + w.edge(e).end;
+        const RingWalkTotals t = w.walk_every_ring();
+        CHECK(t.visited == 2.0 * w.edge_count());
+        CHECK(t.neighbour_sum == ends);
+    }
+}
+
+TEST_CASE("the faces read back from the winged edge are the faces it was built from", "[mesh][winged]") {
+    // Default face edge = the face's first side, so each face's walk starts at its first
+    // corner: polygons (cube quads), a boundary (grid, fan) and a closed sphere.
+    IndexedMesh mixed = grid(2, 2);
+    IndexedMesh quads = cube();
+    for (const IndexedMesh& m : {tetrahedron(), quads, open_fan(6), mixed, uv_sphere(8, 5)}) {
+        const WingedEdgeMesh w = build_valid(m);
+        const IndexedMesh back = w.face_set();
+        CHECK(back.positions == m.positions);
+        CHECK(back.face_offsets == m.face_offsets);
+        CHECK(back.face_vertices == m.face_vertices);
+        for (int32_t f = 0; f < w.face_count(); ++f) {
+            const EdgeRecord& r = w.edge(w.face_edge(f));
+            const int32_t s = r.left == f ? r.start : r.end, t = r.left == f ? r.end : r.start;
+            CHECK(s == m.corner(f, 0));
+            CHECK(t == m.corner(f, 1));
+        }
+    }
+}
+
+TEST_CASE("building from a face set it may take gives the same tables and keeps a refused one", "[mesh][winged]") {
+    const IndexedMesh source = grid(5, 4);
+    const WingedEdgeMesh copied = build_valid(source);
+    IndexedMesh taken = source;
+    const WingedEdgeMesh moved = WingedEdgeMesh::build(std::move(taken));
+    REQUIRE(moved.validate().ok());
+    REQUIRE(moved.edge_count() == copied.edge_count());
+    for (int32_t e = 0; e < copied.edge_count(); ++e) {
+        const EdgeRecord &a = copied.edge(e), &b = moved.edge(e);
+        CHECK(std::vector<int32_t>{a.start, a.end, a.left, a.right, a.start_left, a.start_right, a.end_left, a.end_right} ==
+              std::vector<int32_t>{b.start, b.end, b.left, b.right, b.start_left, b.start_right, b.end_left, b.end_right});
+    }
+    CHECK(moved.positions() == source.positions);
+    // Refused (an edge shared by three faces): the caller's positions are still there.
+    IndexedMesh fin;
+    for (int i = 0; i < 5; ++i) fin.add_vertex(i, i * i, 0);
+    fin.add_face({0, 1, 2});
+    fin.add_face({1, 0, 3});
+    fin.add_face({0, 1, 4});
+    const std::vector<double> before = fin.positions;
+    CHECK_THROWS_AS(WingedEdgeMesh::build(std::move(fin)), InvalidMesh);
+    CHECK(fin.positions == before); // NOLINT(bugprone-use-after-move): the contract under test
+}
+
 TEST_CASE("Euler characteristic and analytic counts of generated meshes", "[mesh][counts]") {
     SECTION("closed meshes: V - E + F = 2, no boundary") {
         for (const IndexedMesh& m : {tetrahedron(), cube(), uv_sphere(12, 7)}) {
@@ -215,6 +272,22 @@ TEST_CASE("Newell equals the cross product on planar faces and gives the analyti
     const auto sp = face_planes(build_valid(skew));
     CHECK(sp[0].residual > 0.01);
     CHECK(sp[0].residual < 0.2);
+    // newell_normals (one walk per face) equals face_planes' Newell vector, normalised, on
+    // every face of a sphere, a grid with a boundary and the cube's quads.
+    for (const IndexedMesh& m : {uv_sphere(9, 5), grid(4, 3), cube()}) {
+        const WingedEdgeMesh mesh = build_valid(m);
+        std::vector<double> unit;
+        newell_normals(mesh, unit);
+        const auto reference = face_planes(mesh);
+        REQUIRE(unit.size() == 3 * reference.size());
+        for (std::size_t f = 0; f < reference.size(); ++f) {
+            const glm::dvec4& q = reference[f].newell;
+            const double len = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
+            CHECK(unit[3 * f] == Approx(q.x / len).margin(kCoordinateTolerance));
+            CHECK(unit[3 * f + 1] == Approx(q.y / len).margin(kCoordinateTolerance));
+            CHECK(unit[3 * f + 2] == Approx(q.z / len).margin(kCoordinateTolerance));
+        }
+    }
     std::vector<double> n;
     newell_normals(build_valid(tetrahedron()), n);
     // Outward: the tetrahedron is centred at the origin, so normal . vertex > 0.

@@ -207,3 +207,29 @@ test('the winged edge\'s bytes stay its own: the other representations are built
     mesh.dispose();
   }
 });
+
+test('faces are read back from the winged edge: the tables show the input, whatever the caller does next', () => {
+  // Triangles and quads, each listed from an arbitrary corner;
+  // the mesh keeps no copy of the face set, so the caller's arrays are overwritten after
+  // the build and the tables must still show the faces exactly as given.
+  const positions = new Float64Array([0, 0, 0, 1, 0, 0, 2, 0, 0, 2, 1, 0, 1, 1, 0, 0, 1, 0, 1, 2, 0, 2.5, 0.5, 0]);
+  const faces = [[4, 0, 1], [1, 2, 3, 4], [3, 6, 5, 4], [7, 3, 2]];
+  const faceOffsets = new Int32Array([0, 3, 7, 11, 14]);
+  const faceVertices = new Int32Array(faces.flat());
+  const mesh = api.buildMesh({ positions, faceOffsets, faceVertices });
+  try {
+    assert.equal(mesh.validate().ok, true);
+    faceVertices.fill(0);
+    positions.fill(9);
+    const reps = mesh.representations();
+    assert.deepEqual(reps['vertex-face-tables'].faces, faces);
+    // Each face's edge in the winged-edge table is its first side (first two corners).
+    const { edges, faces: faceRows } = mesh.wingedEdge();
+    faceRows.forEach(({ edge }, f) => {
+      const side = edges[edge].left === f ? [edges[edge].start, edges[edge].end] : [edges[edge].end, edges[edge].start];
+      assert.deepEqual(side, faces[f].slice(0, 2), `F${f + 1}`);
+    });
+  } finally {
+    mesh.dispose();
+  }
+});

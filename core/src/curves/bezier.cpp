@@ -30,9 +30,11 @@ int checked_degree(const std::vector<double>& points, int dim, const std::vector
 }
 
 void check_t(double t) {
-    require(std::isfinite(t), "non-finite-input", "the parameter t is " + detail::num(t) + ", not a finite number");
-    require(t >= -kParameterSlack && t <= 1 + kParameterSlack, "parameter-out-of-range",
-            "the parameter t = " + detail::num(t) + " is outside the Bezier domain [0, 1]");
+    // Messages are built only on failure (this runs once per evaluated parameter).
+    if (!std::isfinite(t))
+        throw Error("non-finite-input", "the parameter t is " + detail::num(t) + ", not a finite number");
+    if (!(t >= -kParameterSlack && t <= 1 + kParameterSlack))
+        throw Error("parameter-out-of-range", "the parameter t = " + detail::num(t) + " is outside the Bezier domain [0, 1]");
 }
 
 // Homogeneous coordinates: stride dim+1 (w x, w y, w z, w) when rational, else the points.

@@ -44,10 +44,13 @@ void check_parameter(const Curve& c, double u, const char* what) {
     const int K = control_point_count(c);
     const int p = c.degree;
     const double a = c.knots[p], b = c.knots[K];
-    require(std::isfinite(u), "non-finite-input", std::string(what) + " is " + detail::num(u) + ", not a finite number");
+    // Messages are built only on failure (this runs once per evaluated parameter).
+    if (!std::isfinite(u))
+        throw Error("non-finite-input", std::string(what) + " is " + detail::num(u) + ", not a finite number");
     const double slack = kParameterSlack * std::max({1.0, std::abs(a), std::abs(b)});
-    require(u >= a - slack && u <= b + slack, "parameter-out-of-range",
-            std::string(what) + " = " + detail::num(u) + " is outside the domain " + detail::range(a, b));
+    if (!(u >= a - slack && u <= b + slack))
+        throw Error("parameter-out-of-range",
+                    std::string(what) + " = " + detail::num(u) + " is outside the domain " + detail::range(a, b));
 }
 
 std::vector<double> homogeneous(const Curve& c) {

@@ -48,6 +48,8 @@ NamedMesh foley_example() {
     m.add_face({3, 1, 2}); // P2 = (4, 2, 3)
     // E1 = (V1, V2), E2 = (V2, V3), E3 = (V3, V4), E4 = (V4, V2), E5 = (V4, V1).
     n.options.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 1}, {3, 0}};
+    // Foley lists P2 = (E2, E3, E4): its walk starts at E2, not at its first side V4-V2.
+    n.options.face_edges = {0, 1};
     return n;
 }
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace wingspline::mesh {
 
@@ -53,6 +54,15 @@ bool corners_distinct(const int32_t* c, int32_t n) {
 } // namespace
 
 WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions& options) {
+    return build_impl(mesh, options, nullptr);
+}
+
+WingedEdgeMesh WingedEdgeMesh::build(IndexedMesh&& mesh, const BuildOptions& options) {
+    return build_impl(mesh, options, &mesh.positions);
+}
+
+WingedEdgeMesh WingedEdgeMesh::build_impl(const IndexedMesh& mesh, const BuildOptions& options,
+                                          std::vector<double>* positions_to_take) {
     const int32_t V = mesh.vertex_count();
     const int32_t F = mesh.face_count();
     const std::vector<int32_t>& fo = mesh.face_offsets;
@@ -61,48 +71,49 @@ WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions
     for (double c : mesh.positions)
         if (!std::isfinite(c) || std::abs(c) > kMaxCoordinate) refuse(mesh);
     const int32_t H = fo[F];
-    for (int32_t f = 0; f < F; ++f) {
-        const int32_t n = fo[f + 1] - fo[f];
-        if (n < 3) refuse(mesh);
-        for (int32_t i = fo[f]; i < fo[f + 1]; ++i)
-            if (fv[i] < 0 || fv[i] >= V) refuse(mesh);
-        if (!corners_distinct(&fv[fo[f]], n)) refuse(mesh);
-    }
-
-    // Bucket every half-edge by its lower vertex (counting sort).
+    // Per face: check the corners, then count its sides into the bucket of their lower
+    // vertex (a counting sort). Sides are visited last to first, so each side's end corner
+    // is the one visited just before: one load per side, no wrap-around test.
     std::vector<int32_t> bucket_end(static_cast<std::size_t>(V) + 1, 0);
     for (int32_t f = 0; f < F; ++f) {
-        const int32_t o = fo[f], last = fo[f + 1] - 1;
-        for (int32_t h = o; h <= last; ++h) {
-            const int32_t a = fv[h], b = fv[h == last ? o : h + 1];
-            ++bucket_end[std::min(a, b) + 1];
+        const int32_t o = fo[f], n = fo[f + 1] - o;
+        if (n < 3) refuse(mesh);
+        for (int32_t i = o; i < o + n; ++i)
+            if (fv[i] < 0 || fv[i] >= V) refuse(mesh);
+        if (!corners_distinct(&fv[o], n)) refuse(mesh);
+        for (int32_t h = o + n - 1, b = fv[o]; h >= o; --h) {
+            const int32_t a = fv[h];
+            ++bucket_end[(a < b ? a : b) + 1];
+            b = a;
         }
     }
     for (int32_t v = 0; v < V; ++v) bucket_end[v + 1] += bucket_end[v];
-    std::vector<BucketSlot> slots(H);
+    std::unique_ptr<BucketSlot[]> slots(new BucketSlot[H]); // every slot is written below
     for (int32_t f = 0; f < F; ++f) {
-        const int32_t o = fo[f], last = fo[f + 1] - 1;
-        for (int32_t h = o; h <= last; ++h) {
-            const int32_t a = fv[h], b = fv[h == last ? o : h + 1];
-            const int32_t lo = a < b ? a : b;
-            slots[bucket_end[lo]++] = {a < b ? b : a, 2 * h + (a > b ? 1 : 0)};
+        const int32_t o = fo[f];
+        for (int32_t h = fo[f + 1] - 1, b = fv[o]; h >= o; --h) {
+            const int32_t a = fv[h];
+            slots[bucket_end[a < b ? a : b]++] = {a < b ? b : a, 2 * h + (a > b ? 1 : 0)};
+            b = a;
         }
     }
     // Now bucket v is [bucket_end[v-1], bucket_end[v]) (bucket_end[-1] = 0).
 
     // Twins: inside a bucket, equal `other` means the same undirected edge.
-    std::vector<int32_t> twin(H, kNone);
+    std::vector<int32_t> edge_of(H, kNone); // first each half-edge's twin, then its edge
+    int32_t pairs = 0;
     for (int32_t v = 0; v < V; ++v) {
-        BucketSlot* first = slots.data() + (v == 0 ? 0 : bucket_end[v - 1]);
-        BucketSlot* last = slots.data() + bucket_end[v];
+        BucketSlot* first = slots.get() + (v == 0 ? 0 : bucket_end[v - 1]);
+        BucketSlot* last = slots.get() + bucket_end[v];
         if (last - first > 1) sort_bucket(first, last);
         for (BucketSlot* s = first; s < last;) {
             BucketSlot* t = s + 1;
             while (t < last && t->other == s->other) ++t;
             if (t - s == 2) {
                 if ((s->code & 1) == (s[1].code & 1)) refuse(mesh); // same direction twice
-                twin[s->code >> 1] = s[1].code >> 1;
-                twin[s[1].code >> 1] = s->code >> 1;
+                edge_of[s->code >> 1] = s[1].code >> 1;
+                edge_of[s[1].code >> 1] = s->code >> 1;
+                ++pairs;
             } else if (t - s > 2) {
                 refuse(mesh); // more than two faces on one edge
             }
@@ -110,33 +121,28 @@ WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions
         }
     }
 
-    // Edge numbers: order of first appearance walking the faces.
-    std::vector<int32_t> edge_of(H);
-    int32_t E = 0;
-    for (int32_t h = 0; h < H; ++h) {
-        const int32_t t = twin[h];
-        edge_of[h] = (t == kNone || t > h) ? E++ : edge_of[t];
-    }
-    twin = std::vector<int32_t>();
-
+    // Edge numbers: order of first appearance walking the faces, oriented as first walked.
+    // In place: a half-edge whose twin comes earlier takes the twin's (already final) number.
     WingedEdgeMesh m;
-    m.positions_ = mesh.positions;
+    const int32_t E = H - pairs;
     m.edges_.resize(E);
     m.vertex_edge_.assign(V, kNone);
     m.face_edge_.assign(F, kNone);
-
-    if (options.edges.empty()) {
-        for (int32_t f = 0; f < F; ++f) {
-            const int32_t o = fo[f], last = fo[f + 1] - 1;
-            for (int32_t h = o; h <= last; ++h) {
-                EdgeRecord& r = m.edges_[edge_of[h]];
-                if (r.start == kNone) {
-                    r.start = fv[h];
-                    r.end = fv[h == last ? o : h + 1];
-                }
+    for (int32_t f = 0, e = 0; f < F; ++f) {
+        const int32_t o = fo[f], last = fo[f + 1] - 1;
+        for (int32_t h = o; h <= last; ++h) {
+            const int32_t t = edge_of[h];
+            if (t == kNone || t > h) {
+                m.edges_[e].start = fv[h];
+                m.edges_[e].end = fv[h == last ? o : h + 1];
+                edge_of[h] = e++;
+            } else {
+                edge_of[h] = edge_of[t];
             }
         }
-    } else {
+    }
+
+    if (!options.edges.empty()) {
         // The caller fixes numbering and orientation: find each [s, t] in its bucket.
         if (static_cast<int32_t>(options.edges.size()) != E)
             throw Error("invalid-edge-list", "the edge list has " + std::to_string(options.edges.size()) +
@@ -148,8 +154,8 @@ WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions
             if (s < 0 || t < 0 || s >= V || t >= V || s == t)
                 throw Error("invalid-edge-list", label + " does not name two different vertices of the mesh");
             const int32_t lo = std::min(s, t), hi = std::max(s, t);
-            const BucketSlot* first = slots.data() + (lo == 0 ? 0 : bucket_end[lo - 1]);
-            const BucketSlot* last = slots.data() + bucket_end[lo];
+            const BucketSlot* first = slots.get() + (lo == 0 ? 0 : bucket_end[lo - 1]);
+            const BucketSlot* last = slots.get() + bucket_end[lo];
             const BucketSlot* hit = std::lower_bound(first, last, hi,
                                                      [](const BucketSlot& a, int32_t x) { return a.other < x; });
             if (hit == last || hit->other != hi)
@@ -165,7 +171,7 @@ WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions
         }
         for (int32_t& e : edge_of) e = renumber[e];
     }
-    slots = std::vector<BucketSlot>();
+    slots.reset();
     bucket_end = std::vector<int32_t>();
 
     // Wings from each face's previous and next corner; L traverses S->E, R traverses E->S.
@@ -174,10 +180,12 @@ WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions
     std::vector<int32_t>& boundary_in = m.vertex_edge_; // ...arriving at v (the default vertex edge)
     for (int32_t f = 0; f < F; ++f) {
         const int32_t o = fo[f], last = fo[f + 1] - 1;
+        const int32_t first = edge_of[o];
+        m.face_edge_[f] = first; // default face edge: the face's first side (corner 1 -> 2)
+        int32_t prev = edge_of[last], e = first;
         for (int32_t h = o; h <= last; ++h) {
-            const int32_t prev = edge_of[h == o ? last : h - 1];
-            const int32_t next = edge_of[h == last ? o : h + 1];
-            EdgeRecord& r = m.edges_[edge_of[h]];
+            const int32_t next = h == last ? first : edge_of[h + 1];
+            EdgeRecord& r = m.edges_[e];
             if (r.start == fv[h]) {
                 r.left = f;
                 r.start_left = prev;
@@ -187,6 +195,8 @@ WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions
                 r.start_right = next;
                 r.end_right = prev;
             }
+            prev = e;
+            e = next;
         }
     }
     edge_of = std::vector<int32_t>();
@@ -212,7 +222,6 @@ WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions
     }
 
     // Default vertex edge: after the boundary gap (already in place), else the lowest.
-    // Default face edge: the lowest-numbered edge of the face.
     std::vector<int32_t>& degree = boundary_out;
     std::fill(degree.begin(), degree.end(), 0);
     for (int32_t e = 0; e < E; ++e) {
@@ -221,8 +230,6 @@ WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions
         ++degree[r.end];
         if (m.vertex_edge_[r.start] == kNone) m.vertex_edge_[r.start] = e;
         if (m.vertex_edge_[r.end] == kNone) m.vertex_edge_[r.end] = e;
-        if (r.left != kNone && m.face_edge_[r.left] == kNone) m.face_edge_[r.left] = e;
-        if (r.right != kNone && m.face_edge_[r.right] == kNone) m.face_edge_[r.right] = e;
     }
 
     // One fan per vertex: the CCW walk must meet every incident edge (else a bow-tie).
@@ -278,6 +285,11 @@ WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions
             m.face_edge_[f] = e;
         }
     }
+    // Last, so that every refusal above still sees the caller's positions.
+    if (positions_to_take)
+        m.positions_ = std::move(*positions_to_take);
+    else
+        m.positions_ = mesh.positions;
     return m;
 }
 
@@ -297,6 +309,28 @@ std::vector<int32_t> WingedEdgeMesh::edges_around_vertex(int32_t v) const {
         e = next_ccw(e, v);
     } while (e != first && out.size() <= edges_.size());
     return out;
+}
+
+RingWalkTotals WingedEdgeMesh::walk_every_ring() const {
+    RingWalkTotals totals;
+    for (int32_t v = 0; v < vertex_count(); ++v) {
+        const int32_t first = vertex_edge_[v];
+        if (first == kNone) continue;
+        int32_t e = first;
+        do {
+            const EdgeRecord& r = edges_[e];
+            totals.visited += 1;
+            if (r.start == v) {
+                totals.neighbour_sum += r.end;
+                e = r.start_left;
+            } else {
+                WINGSPLINE_KEEP_BRANCH();
+                totals.neighbour_sum += r.start;
+                e = r.end_right;
+            }
+        } while (e != first);
+    }
+    return totals;
 }
 
 std::vector<TraversalStep> WingedEdgeMesh::traversal_steps(int32_t v) const {
@@ -349,6 +383,24 @@ std::vector<int32_t> WingedEdgeMesh::face_neighbours(int32_t f) const {
     for (int32_t e : edges_of_face(f)) {
         const int32_t g = edges_[e].left == f ? edges_[e].right : edges_[e].left;
         if (g != kNone) out.push_back(g);
+    }
+    return out;
+}
+
+IndexedMesh WingedEdgeMesh::face_set() const {
+    IndexedMesh out;
+    out.positions = positions_;
+    out.face_offsets.reserve(face_edge_.size() + 1);
+    out.face_vertices.reserve(2 * edges_.size()); // sides of all faces <= 2E
+    for (int32_t f = 0; f < face_count(); ++f) {
+        const int32_t first = face_edge_[f];
+        int32_t e = first;
+        do {
+            const EdgeRecord& r = edges_[e];
+            out.face_vertices.push_back(r.left == f ? r.start : r.end);
+            e = next_in_face(e, f);
+        } while (e != first);
+        out.face_offsets.push_back(static_cast<int32_t>(out.face_vertices.size()));
     }
     return out;
 }

@@ -36,7 +36,7 @@ double resident_bytes() {
 } // namespace
 
 WINGSPLINE_BENCH(mesh) {
-    if (!ctx.wants("mesh_")) return;
+    if (!ctx.wants("mesh_memory") && !ctx.wants("mesh_build") && !ctx.wants("mesh_ring") && !ctx.wants("mesh_normals")) return;
     constexpr int kRepetitions = 7;
     for (const Input& in : inputs()) {
         const double F = in.mesh.face_count();
@@ -60,23 +60,9 @@ WINGSPLINE_BENCH(mesh) {
         }
         const WingedEdgeMesh m = WingedEdgeMesh::build(in.mesh);
         if (ctx.wants("mesh_ring")) {
-            double checksum = 0, visited = 0;
-            const auto seconds = time_runs(kRepetitions, [&] {
-                checksum = 0;
-                visited = 0;
-                for (int32_t v = 0; v < m.vertex_count(); ++v) {
-                    const int32_t first = m.vertex_edge(v);
-                    if (first == kNone) continue;
-                    int32_t e = first;
-                    do {
-                        const EdgeRecord& r = m.edge(e);
-                        checksum += r.start == v ? r.end : r.start;
-                        visited += 1;
-                        e = r.start == v ? r.start_left : r.end_right;
-                    } while (e != first);
-                }
-            });
-            report("mesh_ring", in.name, visited, seconds, checksum);
+            RingWalkTotals walk;
+            const auto seconds = time_runs(kRepetitions, [&] { walk = m.walk_every_ring(); });
+            report("mesh_ring", in.name, walk.visited, seconds, walk.neighbour_sum);
         }
         if (ctx.wants("mesh_normals")) {
             std::vector<double> normals;

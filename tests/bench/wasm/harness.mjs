@@ -8,7 +8,14 @@ export function wants(task) {
   return filters.length === 0 || filters.some((f) => task.startsWith(f));
 }
 
-export function timeRuns(repetitions, body) {
+// V8 compiles wasm in two tiers: the first calls run baseline (Liftoff) code while the
+// optimised (TurboFan) code is compiled in the background. Native code has no such start,
+// so every task first runs untimed until the steady state (>= 2 calls and >= 0.3 s).
+export const WARM_UP_SECONDS = 0.3;
+
+export function timeRuns(repetitions, body, { warmUp = true } = {}) {
+  const warmStart = performance.now();
+  for (let w = 0; warmUp && (w < 2 || performance.now() - warmStart < WARM_UP_SECONDS * 1000); w += 1) body(-1);
   const seconds = [];
   for (let r = 0; r < repetitions; r += 1) {
     const t0 = performance.now();

@@ -10,7 +10,7 @@ const inputs = [
   ['sphere_1000000', 'sphere', { slices: 1000, stacks: 501 }], ['grid_1000000', 'grid', { nx: 1000, ny: 500 }],
 ];
 
-if (wants('mesh_')) {
+if (['mesh_memory', 'mesh_build', 'mesh_ring', 'mesh_normals'].some(wants)) {
   for (const [name, kind, options] of inputs) {
     const input = api.generateMesh(kind, { ...options, layout: 'csr' });
     const F = input.faceOffsets.length - 1;

@@ -125,10 +125,13 @@ function storageValue(s) {
 export class Mesh {
   #raw;
   #handle;
-  // The face set (CSR) the mesh was built from, kept in JS until the other representations
-  // are first needed; then the core builds them from it and this is dropped.
+  // The face set (CSR) the mesh was built from, kept in JS only when the caller chose the
+  // face edges (then a face's walk may start at another corner) until the other
+  // representations are first needed. Otherwise the core reads the faces back from the
+  // winged edge, whose default face edge is each face's first side.
   #faceSet;
   #faces; // F, cached on first need (connectivity never changes)
+  #representationsBuilt = false;
 
   constructor(raw, handle, faceSet = null) {
     this.#raw = raw;
@@ -160,7 +163,10 @@ export class Mesh {
       const { faceOffsets, faceVertices } = this.#faceSet;
       unwrap(this.#raw.meshBuildRepresentations(handle, faceOffsets, faceVertices));
       this.#faceSet = null;
+    } else if (!this.#representationsBuilt) {
+      unwrap(this.#raw.meshBuildRepresentations(handle, null, null));
     }
+    this.#representationsBuilt = true;
     return handle;
   }
 
@@ -409,7 +415,10 @@ export function createMeshApi(raw) {
       const vertexEdges = optionalInts(input.vertexEdges, 'vertexEdges');
       const faceEdges = optionalInts(input.faceEdges, 'faceEdges');
       const r = unwrap(raw.meshBuild(positions, faceOffsets, faceVertices, edges, vertexEdges, faceEdges));
-      // The caller may reuse bulk arrays it passed in; the mesh keeps its own copy.
+      // Chosen face edges may start a face's walk at another corner, so then the mesh keeps
+      // the face set for its other representations (its own copy: the caller may reuse
+      // bulk arrays it passed in). Otherwise the core reads the faces back from the winged edge.
+      if (faceEdges.length === 0) return new Mesh(raw, r.handle);
       const own = input.faces === undefined;
       return new Mesh(raw, r.handle, {
         faceOffsets: own ? faceOffsets.slice() : faceOffsets,
