@@ -47,34 +47,33 @@ void newell_normals(const WingedEdgeMesh& mesh, std::vector<double>& normals) {
 void newell_normals(const WingedEdgeMesh& mesh, double* normals) {
     // Walk each face's edges by the lecture's rule (L: the next edge is the end-left wing,
     // R: the start-right wing) and sum Newell's term of each side a -> b the face walks.
-    // A side's end is the next side's start, so each corner is loaded once.
-    // Measured alternatives (BENCH.md, 1M faces): one pass over the edge table adding each
-    // term to L and subtracting it from R was faster natively but 1.7x slower in wasm;
-    // loading both ends per side was 1.7x slower in wasm on the sphere.
+    // Measured alternatives (BENCH.md mesh_normals, three runs each, wasm / native):
+    //  * one pass over the edge table, adding each edge's term to L and subtracting it
+    //    from R: fastest natively, but up to 2.0x in wasm at 1M faces;
+    //  * loading only b and carrying it over as the next side's a: up to 1.9x at 1M;
+    //  * selects instead of the kept branch: 1.6-2.0x at every size;
+    //  * this walk: at most 1.6x at every size.
     const int32_t F = mesh.face_count();
     const double* p = mesh.positions().data();
     const EdgeRecord* edges = mesh.edges().data();
     for (int32_t f = 0; f < F; ++f) {
-        const int32_t first = mesh.face_edge(f);
-        const EdgeRecord& r0 = edges[first];
-        const double* a = p + 3 * (r0.left == f ? r0.start : r0.end);
-        double ax = a[0], ay = a[1], az = a[2];
         double sx = 0, sy = 0, sz = 0;
+        const int32_t first = mesh.face_edge(f);
         int32_t e = first;
         do {
             const EdgeRecord& r = edges[e];
-            int32_t b;
+            int32_t a, b;
             if (r.left == f) {
-                b = r.end, e = r.end_left;
+                a = r.start, b = r.end, e = r.end_left;
             } else {
                 WINGSPLINE_KEEP_BRANCH();
-                b = r.start, e = r.start_right;
+                a = r.end, b = r.start, e = r.start_right;
             }
-            const double bx = p[3 * b], by = p[3 * b + 1], bz = p[3 * b + 2];
-            sx += (az + bz) * (ay - by);
-            sy += (ax + bx) * (az - bz);
-            sz += (ay + by) * (ax - bx);
-            ax = bx, ay = by, az = bz;
+            const double* pa = p + 3 * a;
+            const double* pb = p + 3 * b;
+            sx += (pa[2] + pb[2]) * (pa[1] - pb[1]);
+            sy += (pa[0] + pb[0]) * (pa[2] - pb[2]);
+            sz += (pa[1] + pb[1]) * (pa[0] - pb[0]);
         } while (e != first);
         const double len = std::sqrt(sx * sx + sy * sy + sz * sz);
         const double inv = len > 0 ? 1.0 / len : 0.0;
