@@ -552,10 +552,16 @@ val mesh_ring_walk(int32_t handle) {
 
 // ------------------------------------------------------------------ files
 
-val mesh_parse(const std::string& text, const std::string& format) {
+// The text arrives as UTF-8 bytes (a Uint8Array the JS layer encoded) and is copied into
+// the module once; as a std::string argument embind would hold two copies during the call.
+val mesh_parse(val utf8, const std::string& format) {
     try {
         if (format != "off" && format != "obj")
             throw Error("unknown-format", "unknown mesh format '" + format + "'; use 'off' or 'obj'");
+        const std::size_t n = utf8["length"].as<std::size_t>();
+        std::unique_ptr<char[]> bytes(new char[n + 1]);
+        val(emscripten::typed_memory_view(n, reinterpret_cast<unsigned char*>(bytes.get()))).call<void>("set", utf8);
+        const std::string_view text(bytes.get(), n);
         val r = indexed_value(format == "off" ? parse_off(text) : parse_obj(text));
         r.set("ok", true);
         return r;

@@ -320,6 +320,42 @@ TEST_CASE("OFF and OBJ readers: forms, comments, negative indices, line-numbered
         CHECK(e.code() == "index-out-of-range");
         CHECK(e.line() == 2);
     }
+    // Faces and vertices are named as in every other message (F1, v1), with the file's
+    // own 0-based index where the file uses it.
+    try {
+        parse_off("OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 2 0\n3 0 1 2\n3 1 3 2\n3 1 7 3\n");
+        FAIL("accepted an index past the vertices");
+    } catch (const ParseError& e) {
+        CHECK(e.code() == "index-out-of-range");
+        CHECK(e.line() == 10);
+        CHECK(std::string(e.what()) == "line 10: F3 refers to vertex index 7 but the file has 5 vertices (indices 0 to 4)");
+    }
+    try {
+        parse_off("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+        FAIL("accepted a missing face");
+    } catch (const ParseError& e) {
+        CHECK(e.code() == "truncated-file");
+        CHECK(e.line() == 7);
+        CHECK(std::string(e.what()) == "line 7: the file ends after 1 of 2 faces; expected F2");
+    }
+    try {
+        parse_off("OFF\n3 1 0\n0 0 0\n1 0\n");
+        FAIL("accepted a short vertex line");
+    } catch (const ParseError& e) {
+        CHECK(std::string(e.what()) == "line 4: expected x y z of v2 (index 1), found 2 number(s)");
+    }
+    // Numbers are read from the token only (a view into the text): a number glued to a
+    // comment, a NUL inside a number, and an integer too large for 32 bits.
+    CHECK(parse_off("OFF\n3 1 0\n0 0 0#c\n1 0 0\n0 1 0\n3 0 1 2\n").vertex_count() == 3);
+    try {
+        const std::string with_nul("OFF\n3 1 0\n0 0 0\n1 0\0 0\n0 1 0\n3 0 1 2\n", 37);
+        parse_off(with_nul);
+        FAIL("accepted a NUL inside a number");
+    } catch (const ParseError& e) {
+        CHECK(e.code() == "parse-error");
+        CHECK(e.line() == 4);
+    }
+    CHECK_THROWS_AS(parse_off("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 99999999999\n"), ParseError);
     // Round trip bit for bit.
     const IndexedMesh s = uv_sphere(7, 4);
     CHECK(parse_off(format_off(s)).positions == s.positions);

@@ -1,164 +1,228 @@
 #include "wingspline/mesh/mesh_io.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace wingspline::mesh {
 
 namespace {
 
-// The text as lines of whitespace-separated tokens, comments (# to end of line) removed.
-struct Line {
-    int number;
-    std::vector<std::string> tokens;
+// The text one line at a time, as whitespace-separated tokens with comments (# to the end
+// of the line) removed. Tokens are views into the text: nothing is copied, so reading a
+// large file costs its face set, not a string per number (a 61 MB OFF used to take
+// 435 MB of wasm memory in tokens).
+class LineReader {
+public:
+    explicit LineReader(std::string_view text) : text_(text) {}
+
+    // Moves to the next line that has tokens; false at the end of the text.
+    bool next() {
+        while (pos_ <= text_.size() && !done_) {
+            std::size_t end = text_.find('\n', pos_);
+            if (end == std::string_view::npos) end = text_.size();
+            ++number_;
+            tokens_.clear();
+            for (std::size_t j = pos_; j < end;) {
+                const char c = text_[j];
+                if (c == '#') break;
+                if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+                    ++j;
+                    continue;
+                }
+                std::size_t k = j;
+                while (k < end && text_[k] != ' ' && text_[k] != '\t' && text_[k] != '\r' && text_[k] != '#') ++k;
+                tokens_.push_back(text_.substr(j, k - j));
+                j = k;
+            }
+            if (end == text_.size()) done_ = true;
+            pos_ = end + 1;
+            if (!tokens_.empty()) {
+                last_with_tokens_ = number_;
+                return true;
+            }
+        }
+        tokens_.clear();
+        return false;
+    }
+    int number() const { return number_; }
+    const std::vector<std::string_view>& tokens() const { return tokens_; }
+    // The line a "the file ends" message blames: the one after the last line with tokens.
+    int line_after_last() const { return last_with_tokens_ + 1; }
+
+private:
+    std::string_view text_;
+    std::size_t pos_ = 0;
+    bool done_ = false;
+    int number_ = 0;
+    int last_with_tokens_ = 0;
+    std::vector<std::string_view> tokens_;
 };
 
-std::vector<Line> tokenize(const std::string& text) {
-    std::vector<Line> lines;
-    int number = 0;
-    std::size_t i = 0;
-    while (i <= text.size()) {
-        std::size_t end = text.find('\n', i);
-        if (end == std::string::npos) end = text.size();
-        ++number;
-        Line line{number, {}};
-        std::size_t j = i;
-        while (j < end) {
-            const char c = text[j];
-            if (c == '#') break;
-            if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') { ++j; continue; }
-            std::size_t k = j;
-            while (k < end && text[k] != ' ' && text[k] != '\t' && text[k] != '\r' && text[k] != '#') ++k;
-            line.tokens.push_back(text.substr(j, k - j));
-            j = k;
-        }
-        if (!line.tokens.empty()) lines.push_back(std::move(line));
-        if (end == text.size()) break;
-        i = end + 1;
+std::string quoted(std::string_view s) {
+    return "'" + (s.size() > 30 ? std::string(s.substr(0, 30)) + "..." : std::string(s)) + "'";
+}
+
+// strtod/strtol need a terminated string: short tokens are copied to the stack.
+template <class T> struct Parsed {
+    T value;
+    bool whole;       // the token was one number, nothing else
+    bool out_of_range; // errno == ERANGE
+};
+
+template <class Parse> auto parse_token(std::string_view token, Parse&& parse) {
+    char small[64];
+    std::string large;
+    const char* begin;
+    if (token.size() < sizeof small) {
+        token.copy(small, token.size());
+        small[token.size()] = '\0';
+        begin = small;
+    } else {
+        large.assign(token);
+        begin = large.c_str();
     }
-    return lines;
-}
-
-std::string quoted(const std::string& s) { return "'" + (s.size() > 30 ? s.substr(0, 30) + "..." : s) + "'"; }
-
-double to_number(const std::string& token, int line, const std::string& what) {
-    errno = 0;
     char* end = nullptr;
-    const double x = std::strtod(token.c_str(), &end);
-    if (end == token.c_str() || end != token.c_str() + token.size()) throw ParseError("parse-error", line, "expected " + what + ", found " + quoted(token));
-    return x;
+    errno = 0;
+    const auto x = parse(begin, &end);
+    const bool out_of_range = errno == ERANGE;
+    return Parsed<decltype(x)>{x, end != begin && end == begin + token.size(), out_of_range};
 }
 
-long to_integer(const std::string& token, int line, const std::string& what) {
-    errno = 0;
-    char* end = nullptr;
-    const long x = std::strtol(token.c_str(), &end, 10);
-    if (end == token.c_str() || end != token.c_str() + token.size() || errno == ERANGE || x > 2147483647L || x < -2147483647L)
-        throw ParseError("parse-error", line, "expected " + what + ", found " + quoted(token));
-    return x;
+double to_number(std::string_view token, int line, const char* what) {
+    // Overflow (1e999) reads as an infinity, which validation then names; only text that
+    // is not one number is a parse error here.
+    const auto p = parse_token(token, [](const char* b, char** e) { return std::strtod(b, e); });
+    if (!p.whole) throw ParseError("parse-error", line, std::string("expected ") + what + ", found " + quoted(token));
+    return p.value;
 }
+
+// `what` names the expected number: a string literal, or a function that builds the
+// name only when it is needed (a message per face would cost an allocation per face).
+template <class What> long to_integer(std::string_view token, int line, What&& what) {
+    const auto p = parse_token(token, [](const char* b, char** e) { return std::strtol(b, e, 10); });
+    if (!p.whole || p.out_of_range || p.value > 2147483647L || p.value < -2147483647L) {
+        std::string name;
+        if constexpr (std::is_invocable_v<What>) name = what(); else name = what;
+        throw ParseError("parse-error", line, "expected " + name + ", found " + quoted(token));
+    }
+    return p.value;
+}
+
+std::string face_name(long f) { return "F" + std::to_string(f + 1); }
+std::string vertex_name(long v) { return "v" + std::to_string(v + 1) + " (index " + std::to_string(v) + ")"; }
 
 } // namespace
 
-IndexedMesh parse_off(const std::string& text) {
-    const std::vector<Line> lines = tokenize(text);
-    if (lines.empty()) throw ParseError("truncated-file", 1, "the file is empty; expected the keyword OFF");
-    std::size_t at = 0;
-    std::vector<std::string> header = lines[0].tokens;
-    if (header[0] != "OFF") throw ParseError("parse-error", lines[0].number, "expected the keyword OFF, found " + quoted(header[0]));
-    header.erase(header.begin());
-    int count_line = lines[0].number;
+IndexedMesh parse_off(std::string_view text) {
+    LineReader in(text);
+    if (!in.next()) throw ParseError("truncated-file", 1, "the file is empty; expected the keyword OFF");
+    if (in.tokens()[0] != "OFF") throw ParseError("parse-error", in.number(), "expected the keyword OFF, found " + quoted(in.tokens()[0]));
+    std::vector<std::string_view> header(in.tokens().begin() + 1, in.tokens().end());
     if (header.empty()) {
-        if (lines.size() < 2) throw ParseError("truncated-file", lines[0].number + 1, "the file ends; expected the counts: vertices faces edges");
-        header = lines[1].tokens;
-        count_line = lines[1].number;
-        at = 2;
-    } else {
-        at = 1;
+        if (!in.next()) throw ParseError("truncated-file", in.line_after_last(), "the file ends; expected the counts: vertices faces edges");
+        header = in.tokens();
     }
+    const int count_line = in.number();
     if (header.size() < 2) throw ParseError("parse-error", count_line, "expected the counts: vertices faces edges");
     const long nv = to_integer(header[0], count_line, "the number of vertices");
     const long nf = to_integer(header[1], count_line, "the number of faces");
     if (nv < 0 || nf < 0) throw ParseError("parse-error", count_line, "the counts must not be negative");
+    // Room for what the header announces, but never more than the text can hold (a vertex
+    // line has at least 6 bytes, "0 0 0\n", a face line 8), so a false header cannot ask
+    // for gigabytes.
     IndexedMesh m;
-    for (long v = 0; v < nv; ++v, ++at) {
-        if (at >= lines.size())
-            throw ParseError("truncated-file", lines.back().number + 1, "the file ends after " + std::to_string(v) + " of " +
-                             std::to_string(nv) + " vertices; expected x y z of vertex " + std::to_string(v));
-        const Line& l = lines[at];
-        if (l.tokens.size() < 3)
-            throw ParseError("parse-error", l.number, "expected x y z of vertex " + std::to_string(v) + ", found " +
-                             std::to_string(l.tokens.size()) + " number(s)");
-        m.add_vertex(to_number(l.tokens[0], l.number, "the x coordinate"), to_number(l.tokens[1], l.number, "the y coordinate"),
-                     to_number(l.tokens[2], l.number, "the z coordinate"));
+    const std::size_t vertices = std::min<std::size_t>(static_cast<std::size_t>(nv), text.size() / 6 + 1);
+    const std::size_t faces = std::min<std::size_t>(static_cast<std::size_t>(nf), text.size() / 8 + 1);
+    m.positions.reserve(3 * vertices);
+    m.face_offsets.reserve(faces + 1);
+    m.face_vertices.reserve(3 * faces);
+    for (long v = 0; v < nv; ++v) {
+        if (!in.next())
+            throw ParseError("truncated-file", in.line_after_last(), "the file ends after " + std::to_string(v) + " of " +
+                             std::to_string(nv) + " vertices; expected x y z of " + vertex_name(v));
+        const auto& t = in.tokens();
+        if (t.size() < 3)
+            throw ParseError("parse-error", in.number(), "expected x y z of " + vertex_name(v) + ", found " +
+                             std::to_string(t.size()) + " number(s)");
+        const double x = to_number(t[0], in.number(), "the x coordinate");
+        const double y = to_number(t[1], in.number(), "the y coordinate");
+        const double z = to_number(t[2], in.number(), "the z coordinate");
+        m.add_vertex(x, y, z);
     }
     std::vector<int32_t> corners;
-    for (long f = 0; f < nf; ++f, ++at) {
-        if (at >= lines.size())
-            throw ParseError("truncated-file", lines.back().number + 1, "the file ends after " + std::to_string(f) + " of " +
-                             std::to_string(nf) + " faces; expected face " + std::to_string(f));
-        const Line& l = lines[at];
-        const long n = to_integer(l.tokens[0], l.number, "the number of vertices of face " + std::to_string(f));
-        if (n < 0 || static_cast<std::size_t>(n) + 1 > l.tokens.size())
-            throw ParseError("parse-error", l.number, "face " + std::to_string(f) + " announces " + l.tokens[0] +
-                             " vertex indices but the line has " + std::to_string(l.tokens.size() - 1));
+    for (long f = 0; f < nf; ++f) {
+        if (!in.next())
+            throw ParseError("truncated-file", in.line_after_last(), "the file ends after " + std::to_string(f) + " of " +
+                             std::to_string(nf) + " faces; expected " + face_name(f));
+        const auto& t = in.tokens();
+        const long n = to_integer(t[0], in.number(), [f] { return "the number of vertices of " + face_name(f); });
+        if (n < 0 || static_cast<std::size_t>(n) + 1 > t.size())
+            throw ParseError("parse-error", in.number(), face_name(f) + " announces " + std::string(t[0]) +
+                             " vertex indices but the line has " + std::to_string(t.size() - 1));
         corners.clear();
         for (long i = 0; i < n; ++i) {
-            const long v = to_integer(l.tokens[1 + i], l.number, "a vertex index");
+            const long v = to_integer(t[1 + i], in.number(), "a vertex index");
             if (v < 0 || v >= nv)
-                throw ParseError("index-out-of-range", l.number, "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
-                                 " but the file has vertices 0 to " + std::to_string(nv - 1));
+                throw ParseError("index-out-of-range", in.number(), face_name(f) + " refers to vertex index " + std::to_string(v) +
+                                 " but the file has " + std::to_string(nv) + " vertices (indices 0 to " + std::to_string(nv - 1) + ")");
             corners.push_back(static_cast<int32_t>(v));
         }
         m.add_face(corners.data(), static_cast<int32_t>(corners.size()));
     }
-    if (at < lines.size())
-        throw ParseError("parse-error", lines[at].number, "unexpected data after the last face, found " + quoted(lines[at].tokens[0]));
+    if (in.next()) throw ParseError("parse-error", in.number(), "unexpected data after the last face, found " + quoted(in.tokens()[0]));
     return m;
 }
 
-IndexedMesh parse_obj(const std::string& text) {
+IndexedMesh parse_obj(std::string_view text) {
     IndexedMesh m;
-    struct PendingFace {
-        int line;
-        std::vector<long> refs; // 1-based or negative, as written
-        long vertices_so_far;
-    };
-    std::vector<PendingFace> faces;
-    for (const Line& l : tokenize(text)) {
-        const std::string& key = l.tokens[0];
+    // Face references as written (1-based, or negative = relative to the vertices read so
+    // far), resolved once every vertex is known; flat arrays, one entry per face or corner.
+    std::vector<long> refs;
+    std::vector<int32_t> ref_offsets{0}, face_lines;
+    std::vector<long> vertices_before;
+    LineReader in(text);
+    while (in.next()) {
+        const auto& t = in.tokens();
+        const std::string_view key = t[0];
         if (key == "v") {
-            if (l.tokens.size() < 4)
-                throw ParseError("parse-error", l.number, "expected 'v x y z', found " + std::to_string(l.tokens.size() - 1) + " number(s)");
-            m.add_vertex(to_number(l.tokens[1], l.number, "the x coordinate"), to_number(l.tokens[2], l.number, "the y coordinate"),
-                         to_number(l.tokens[3], l.number, "the z coordinate"));
+            if (t.size() < 4)
+                throw ParseError("parse-error", in.number(), "expected 'v x y z', found " + std::to_string(t.size() - 1) + " number(s)");
+            const double x = to_number(t[1], in.number(), "the x coordinate");
+            const double y = to_number(t[2], in.number(), "the y coordinate");
+            const double z = to_number(t[3], in.number(), "the z coordinate");
+            m.add_vertex(x, y, z);
         } else if (key == "f") {
-            PendingFace pf{l.number, {}, m.vertex_count()};
-            for (std::size_t i = 1; i < l.tokens.size(); ++i) {
-                const std::string& t = l.tokens[i];
-                const std::string index = t.substr(0, t.find('/'));
-                const long v = to_integer(index, l.number, "a vertex index (i, i/t, i//n or i/t/n)");
-                if (v == 0) throw ParseError("parse-error", l.number, "OBJ vertex indices start at 1 (or count back from -1); found 0");
-                pf.refs.push_back(v);
+            for (std::size_t i = 1; i < t.size(); ++i) {
+                const std::string_view index = t[i].substr(0, t[i].find('/'));
+                const long v = to_integer(index, in.number(), "a vertex index (i, i/t, i//n or i/t/n)");
+                if (v == 0) throw ParseError("parse-error", in.number(), "OBJ vertex indices start at 1 (or count back from -1); found 0");
+                refs.push_back(v);
             }
-            faces.push_back(std::move(pf));
+            ref_offsets.push_back(static_cast<int32_t>(refs.size()));
+            face_lines.push_back(in.number());
+            vertices_before.push_back(m.vertex_count());
         } else if (key == "vt" || key == "vn" || key == "vp" || key == "o" || key == "g" || key == "s" || key == "usemtl" ||
                    key == "mtllib") {
             continue;
         } else {
-            throw ParseError("parse-error", l.number, "expected a statement v, f (or vt, vn, o, g, s, usemtl, mtllib), found " + quoted(key));
+            throw ParseError("parse-error", in.number(), "expected a statement v, f (or vt, vn, o, g, s, usemtl, mtllib), found " + quoted(key));
         }
     }
     const long nv = m.vertex_count();
     std::vector<int32_t> corners;
-    for (const PendingFace& pf : faces) {
+    for (std::size_t f = 0; f < face_lines.size(); ++f) {
         corners.clear();
-        for (long r : pf.refs) {
-            const long v = r > 0 ? r - 1 : pf.vertices_so_far + r;
+        for (int32_t i = ref_offsets[f]; i < ref_offsets[f + 1]; ++i) {
+            const long r = refs[i];
+            const long v = r > 0 ? r - 1 : vertices_before[f] + r;
             if (v < 0 || v >= nv)
-                throw ParseError("index-out-of-range", pf.line, "vertex reference " + std::to_string(r) +
+                throw ParseError("index-out-of-range", face_lines[f], "vertex reference " + std::to_string(r) +
                                  " points outside the " + std::to_string(nv) + " vertices of the file");
             corners.push_back(static_cast<int32_t>(v));
         }

@@ -4,6 +4,9 @@
 // for a forgotten dispose, never the mechanism). See docs/api-mesh.md.
 import { WingsplineError, unwrap, fail, integerIn, isNumberArray } from './errors.js';
 
+// Mesh files cross into the module as UTF-8 bytes, copied once (see meshParse).
+const utf8 = new TextEncoder();
+
 const INT32_MAX = 2147483647;
 const EDGE_FIELDS = ['start', 'end', 'left', 'right', 'startLeft', 'startRight', 'endLeft', 'endRight'];
 
@@ -435,7 +438,7 @@ export function createMeshApi(raw) {
     // 'index-out-of-range' with error.line (1-based) and the line in the message.
     parseMesh(text, { format = 'off', layout } = {}) {
       if (typeof text !== 'string') fail('invalid-argument', 'parseMesh needs the file contents as a string');
-      const r = raw.meshParse(text, String(format));
+      const r = raw.meshParse(utf8.encode(text), String(format));
       if (!r.ok) {
         const err = new WingsplineError(r.code, r.message);
         if (r.line !== undefined) err.line = r.line;

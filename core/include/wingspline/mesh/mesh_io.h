@@ -5,6 +5,7 @@
 #include "wingspline/mesh/indexed_mesh.h"
 
 #include <string>
+#include <string_view>
 
 namespace wingspline::mesh {
 
@@ -18,10 +19,10 @@ private:
     int line_;
 };
 
-IndexedMesh parse_off(const std::string& text);
+IndexedMesh parse_off(std::string_view text);
 // OBJ: v x y z [w]; f with i, i/t, i//n, i/t/n and negative (relative) indices; vt, vn,
 // vp, o, g, s, usemtl, mtllib are read past; any other statement is an error.
-IndexedMesh parse_obj(const std::string& text);
+IndexedMesh parse_obj(std::string_view text);
 std::string format_off(const IndexedMesh& mesh);
 std::string format_obj(const IndexedMesh& mesh);
 
