@@ -81,6 +81,38 @@ export class CanvasPainter {
     this.#finish(style);
   }
 
+  // Many shapes in one path, one fill or stroke (a big mesh: 100k faces are one call, not
+  // 100k). xy: flat world coordinates; polygons: offsets[i]..offsets[i+1] are polygon i's
+  // points (as indices of points, not of numbers); segments: 4 numbers per segment.
+  polygons(xy, offsets, style = {}) {
+    const g = this.g;
+    const { cx, cy, zoom, width, height } = this.t; // toScreen, inlined: no array per point
+    const ox = width / 2 - cx * zoom; const oy = height / 2 + cy * zoom;
+    g.beginPath();
+    for (let i = 0; i + 1 < offsets.length; i += 1) {
+      for (let k = offsets[i]; k < offsets[i + 1]; k += 1) {
+        const sx = ox + xy[2 * k] * zoom; const sy = oy - xy[2 * k + 1] * zoom;
+        if (k === offsets[i]) g.moveTo(sx, sy); else g.lineTo(sx, sy);
+      }
+      if (style.stroke) g.closePath(); // a fill closes each subpath by itself (closePath is slow)
+    }
+    this.#apply(style);
+    this.#finish(style);
+  }
+
+  segments(xy, style = {}) {
+    const g = this.g;
+    const { cx, cy, zoom, width, height } = this.t;
+    const ox = width / 2 - cx * zoom; const oy = height / 2 + cy * zoom;
+    g.beginPath();
+    for (let i = 0; i + 3 < xy.length; i += 4) {
+      g.moveTo(ox + xy[i] * zoom, oy - xy[i + 1] * zoom);
+      g.lineTo(ox + xy[i + 2] * zoom, oy - xy[i + 3] * zoom);
+    }
+    this.#apply({ stroke: '#000', ...style, fill: undefined });
+    this.#finish({ stroke: style.stroke ?? '#000' });
+  }
+
   circle(x, y, radiusPx, style = {}) {
     const [sx, sy] = this.t.toScreen(x, y);
     this.g.beginPath();
@@ -177,6 +209,25 @@ export class SvgPainter {
 
   polygon(xy, style = {}, stride = 2) {
     this.parts.push(`<polygon points="${this.#points(xy, stride)}" ${this.#style(style)}/>`);
+  }
+
+  polygons(xy, offsets, style = {}) {
+    const d = [];
+    for (let i = 0; i + 1 < offsets.length; i += 1) {
+      for (let k = offsets[i]; k < offsets[i + 1]; k += 1) {
+        d.push((k === offsets[i] ? 'M' : 'L') + this.t.toScreen(xy[2 * k], xy[2 * k + 1]).map(svgNumber).join(','));
+      }
+      d.push('Z');
+    }
+    this.parts.push(`<path d="${d.join('')}" ${this.#style(style)}/>`);
+  }
+
+  segments(xy, style = {}) {
+    const d = [];
+    for (let i = 0; i + 3 < xy.length; i += 4) {
+      d.push(`M${this.t.toScreen(xy[i], xy[i + 1]).map(svgNumber).join(',')}L${this.t.toScreen(xy[i + 2], xy[i + 3]).map(svgNumber).join(',')}`);
+    }
+    this.parts.push(`<path d="${d.join('')}" ${this.#style({ stroke: '#000', ...style, fill: 'none' })}/>`);
   }
 
   circle(x, y, radiusPx, style = {}) {

@@ -96,10 +96,54 @@ function labelDirections(model, P) {
   return dir;
 }
 
+// A mesh too big for labels: faces and visible edges drawn as a few hundred batched paths
+// (faces turned away first, as they are farther on average) instead of one call each, which
+// took about 750 ms per frame for 100k faces. A path is kept to BATCH shapes: the
+// rasteriser's cost grows faster than linearly with the number of subpaths in one path.
+const BATCH = 256;
+
+function drawBaseBatched(painter, model, colors) {
+  const P = model.projected;
+  const front = frontFacing(model, P);
+  for (const facing of [false, true]) {
+    const style = { fill: colors.series[5], alpha: facing ? 0.16 : 0.06, stroke: undefined };
+    let xy = [];
+    let offsets = [0];
+    model.faces.forEach((face, f) => {
+      if (front[f] !== facing) return;
+      for (const v of face) xy.push(P[3 * v], P[3 * v + 1]);
+      offsets.push(xy.length / 2);
+      if (offsets.length > BATCH) {
+        painter.polygons(xy, offsets, style);
+        xy = [];
+        offsets = [0];
+      }
+    });
+    if (offsets.length > 1) painter.polygons(xy, offsets, style);
+  }
+  const E = model.we.edges.length / 8;
+  const edgeStyle = { stroke: colors.ink, width: 0.8, alpha: 0.7 };
+  let segments = [];
+  for (let e = 0; e < E; e += 1) {
+    if (model.mode3d && !edgeSeen(model, front, e)) continue;
+    const s = model.we.edges[8 * e]; const t = model.we.edges[8 * e + 1];
+    segments.push(P[3 * s], P[3 * s + 1], P[3 * t], P[3 * t + 1]);
+    if (segments.length >= 4 * BATCH) {
+      painter.segments(segments, edgeStyle);
+      segments = [];
+    }
+  }
+  if (segments.length) painter.segments(segments, edgeStyle);
+}
+
 function drawBase(painter, model, state, colors) {
   const P = model.projected;
   const zoom = state.view.zoom;
   const labels = model.faces.length <= LABEL_LIMIT;
+  if (!labels && model.we.edges.length / 8 > LABEL_LIMIT) {
+    drawBaseBatched(painter, model, colors);
+    return;
+  }
   const faceFill = colors.series[5];
   const front = frontFacing(model, P);
   for (const f of faceOrder(model, P)) {
