@@ -446,66 +446,76 @@ val mesh_storage(int32_t handle) {
 }
 
 // The first `rows` entries of a table with `stride` numbers per row.
-template <class T> val first_rows(const std::vector<T>& table, std::size_t stride, int32_t rows) {
-    const std::size_t n = std::min(table.size(), stride * static_cast<std::size_t>(rows));
-    return to_typed_array(table.data(), n);
+// Rows [first, first + rows) of a table with `stride` numbers per row (cut at its end).
+template <class T> val window_rows(const std::vector<T>& table, std::size_t stride, int32_t first, int32_t rows) {
+    const std::size_t total = table.size() / stride;
+    const std::size_t begin = std::min(total, static_cast<std::size_t>(first));
+    const std::size_t end = std::min(total, begin + static_cast<std::size_t>(rows));
+    return to_typed_array(table.data() + stride * begin, stride * (end - begin));
 }
 
-// The first `rows` rows of a CSR table: offsets (rows + 1) and the items they cover.
+// Rows [first, first + rows) of a CSR table: offsets (n + 1 entries, still absolute) and the
+// items they cover (so row i's items are list[offsets[i] - offsets[0] .. offsets[i+1] - offsets[0])).
 void set_csr(val& out, const char* offsets_name, const std::vector<int32_t>& offsets,
-             std::initializer_list<std::pair<const char*, const std::vector<int32_t>*>> lists, int32_t rows) {
-    const std::size_t n = std::min(offsets.size() - 1, static_cast<std::size_t>(rows));
-    out.set(offsets_name, to_typed_array(offsets.data(), n + 1));
-    for (const auto& [name, list] : lists) out.set(name, to_typed_array(list->data(), offsets[n]));
+             std::initializer_list<std::pair<const char*, const std::vector<int32_t>*>> lists, int32_t first, int32_t rows) {
+    const std::size_t total = offsets.size() - 1;
+    const std::size_t begin = std::min(total, static_cast<std::size_t>(first));
+    const std::size_t end = std::min(total, begin + static_cast<std::size_t>(rows));
+    out.set(offsets_name, to_typed_array(offsets.data() + begin, end - begin + 1));
+    for (const auto& [name, list] : lists)
+        out.set(name, to_typed_array(list->data() + offsets[begin], offsets[end] - offsets[begin]));
 }
 
-// Every representation's arrays, each table cut to its first `rows` rows (see
+// Every representation's arrays, each table cut to rows [first, first + rows) (see
 // docs/api-mesh.md; the JS layer turns them into row objects).
-val mesh_representations(int32_t handle, int32_t rows) {
+val mesh_representations(int32_t handle, int32_t first, int32_t rows) {
     return guarded([&] {
+        require(first >= 0 && rows >= 0, "invalid-argument", "offset and limit must not be negative");
         MeshEntry& m = entry(handle);
         const Representations& reps = representations_of(m);
-        const WingedEdgeMesh& w = m.winged;
         val r = val::object();
 
         val ind = val::object();
-        set_csr(ind, "faceOffsets", reps.independent_faces.face_offsets, {}, rows);
-        const int32_t corners = reps.independent_faces.face_offsets[std::min(rows, w.face_count())];
-        ind.set("cornerPositions", first_rows(reps.independent_faces.corner_positions, 3, corners));
+        const std::vector<int32_t>& fo = reps.independent_faces.face_offsets;
+        set_csr(ind, "faceOffsets", fo, {}, first, rows);
+        const std::size_t faces = fo.size() - 1;
+        const std::size_t f0 = std::min(faces, static_cast<std::size_t>(first));
+        const std::size_t f1 = std::min(faces, f0 + static_cast<std::size_t>(rows));
+        ind.set("cornerPositions", window_rows(reps.independent_faces.corner_positions, 3, fo[f0], fo[f1] - fo[f0]));
         r.set("independentFaces", ind);
 
         const VertexFaceTables& t = reps.vertex_face_tables;
         val tables = val::object();
-        tables.set("positions", first_rows(t.positions, 3, rows));
-        set_csr(tables, "faceOffsets", t.face_offsets, {{"faceVertices", &t.face_vertices}}, rows);
+        tables.set("positions", window_rows(t.positions, 3, first, rows));
+        set_csr(tables, "faceOffsets", t.face_offsets, {{"faceVertices", &t.face_vertices}}, first, rows);
         r.set("vertexFaceTables", tables);
 
         const AdjacencyLists& a = reps.adjacency_lists;
         val adj = val::object();
-        adj.set("positions", first_rows(a.positions, 3, rows));
-        set_csr(adj, "vertexOffsets", a.vertex_offsets, {{"vertexVertices", &a.vertex_vertices}, {"vertexEdges", &a.vertex_edges}}, rows);
-        set_csr(adj, "vertexFaceOffsets", a.vertex_face_offsets, {{"vertexFaces", &a.vertex_faces}}, rows);
-        adj.set("edgeVertices", first_rows(a.edge_vertices, 2, rows));
-        set_csr(adj, "edgeEdgeOffsets", a.edge_edge_offsets, {{"edgeEdges", &a.edge_edges}}, rows);
-        adj.set("edgeFaces", first_rows(a.edge_faces, 2, rows));
+        adj.set("positions", window_rows(a.positions, 3, first, rows));
+        set_csr(adj, "vertexOffsets", a.vertex_offsets, {{"vertexVertices", &a.vertex_vertices}, {"vertexEdges", &a.vertex_edges}}, first, rows);
+        set_csr(adj, "vertexFaceOffsets", a.vertex_face_offsets, {{"vertexFaces", &a.vertex_faces}}, first, rows);
+        adj.set("edgeVertices", window_rows(a.edge_vertices, 2, first, rows));
+        set_csr(adj, "edgeEdgeOffsets", a.edge_edge_offsets, {{"edgeEdges", &a.edge_edges}}, first, rows);
+        adj.set("edgeFaces", window_rows(a.edge_faces, 2, first, rows));
         set_csr(adj, "faceOffsets", a.face_offsets,
-                {{"faceVertices", &a.face_vertices}, {"faceEdges", &a.face_edges}, {"faceFaces", &a.face_faces}}, rows);
+                {{"faceVertices", &a.face_vertices}, {"faceEdges", &a.face_edges}, {"faceFaces", &a.face_faces}}, first, rows);
         r.set("adjacencyLists", adj);
 
         const PartialAdjacencyLists& p = reps.partial_adjacency_lists;
         val part = val::object();
-        part.set("positions", first_rows(p.positions, 3, rows));
-        set_csr(part, "vertexOffsets", p.vertex_offsets, {{"vertexEdges", &p.vertex_edges}}, rows);
-        part.set("edgeVertices", first_rows(p.edge_vertices, 2, rows));
-        part.set("edgeFaces", first_rows(p.edge_faces, 2, rows));
-        set_csr(part, "faceOffsets", p.face_offsets, {{"faceEdges", &p.face_edges}}, rows);
+        part.set("positions", window_rows(p.positions, 3, first, rows));
+        set_csr(part, "vertexOffsets", p.vertex_offsets, {{"vertexEdges", &p.vertex_edges}}, first, rows);
+        part.set("edgeVertices", window_rows(p.edge_vertices, 2, first, rows));
+        part.set("edgeFaces", window_rows(p.edge_faces, 2, first, rows));
+        set_csr(part, "faceOffsets", p.face_offsets, {{"faceEdges", &p.face_edges}}, first, rows);
         r.set("partialAdjacencyLists", part);
 
         const EdgeList& l = reps.edge_list;
         val list = val::object();
-        list.set("positions", first_rows(l.positions, 3, rows));
-        list.set("edges", first_rows(l.edges, 4, rows));
-        set_csr(list, "polygonOffsets", l.polygon_offsets, {{"polygonEdges", &l.polygon_edges}}, rows);
+        list.set("positions", window_rows(l.positions, 3, first, rows));
+        list.set("edges", window_rows(l.edges, 4, first, rows));
+        set_csr(list, "polygonOffsets", l.polygon_offsets, {{"polygonEdges", &l.polygon_edges}}, first, rows);
         r.set("edgeList", list);
         return r;
     });

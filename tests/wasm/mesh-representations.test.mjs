@@ -233,3 +233,29 @@ test('faces are read back from the winged edge: the tables show the input, whate
     mesh.dispose();
   }
 });
+
+test('a window of rows (offset, limit) is the same rows of the whole tables', () => {
+  withMesh(api.generateMesh('grid', { nx: 7, ny: 5 }), (mesh) => {
+    const whole = mesh.representations();
+    const tables = (reps) => ({
+      'independent-faces': [reps['independent-faces'].faces],
+      'vertex-face-tables': [reps['vertex-face-tables'].vertices, reps['vertex-face-tables'].faces],
+      'adjacency-lists': ['vertices', 'edges', 'faces'].map((k) => reps['adjacency-lists'][k]),
+      'partial-adjacency-lists': ['vertices', 'edges', 'faces'].map((k) => reps['partial-adjacency-lists'][k]),
+      'edge-list': ['vertices', 'edges', 'polygons'].map((k) => reps['edge-list'][k]),
+      'winged-edge': ['vertices', 'edges', 'faces'].map((k) => reps['winged-edge'][k]),
+    });
+    const all = tables(whole);
+    // Windows at the start, in the middle, across the end and wholly past the end.
+    for (const [offset, limit] of [[0, 3], [11, 6], [40, 100], [500, 5]]) {
+      const part = mesh.representations({ offset, limit });
+      const got = tables(part);
+      for (const key of KEYS) {
+        assert.equal(part[key].offset, offset);
+        assert.deepEqual(part[key].totals, whole[key].totals);
+        all[key].forEach((rows, i) => assert.deepEqual(got[key][i], rows.slice(offset, offset + limit), `${key} table ${i} at ${offset}+${limit}`));
+      }
+    }
+    assert.throws(() => mesh.representations({ offset: -1 }), { code: 'invalid-argument' });
+  });
+});

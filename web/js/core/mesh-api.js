@@ -101,11 +101,13 @@ export const QUERY_KINDS = Object.freeze([
 ]);
 
 // CSR rows [offsets[i], offsets[i+1]) of each list as plain arrays, one object per row.
+// CSR rows from a window of a table: offsets are absolute, the lists start at offsets[0].
 function csrRows(offsets, lists) {
   const rows = [];
+  const base = offsets[0] ?? 0;
   for (let i = 0; i + 1 < offsets.length; i += 1) {
     const row = {};
-    for (const [name, list] of Object.entries(lists)) row[name] = Array.from(list.subarray(offsets[i], offsets[i + 1]));
+    for (const [name, list] of Object.entries(lists)) row[name] = Array.from(list.subarray(offsets[i] - base, offsets[i + 1] - base));
     rows.push(row);
   }
   return rows;
@@ -183,18 +185,19 @@ export class Mesh {
   wingedEdge() { return this.#wingedEdgeRows(INT32_MAX); }
 
   // The first `limit` rows of each winged-edge table.
-  #wingedEdgeRows(limit) {
+  #wingedEdgeRows(limit, offset = 0) {
     const r = unwrap(this.#raw.meshWingedEdge(this.#live()));
-    const vertices = Array.from(r.vertexEdge.subarray(0, limit), (edge, v) => ({
-      edge, x: r.positions[3 * v], y: r.positions[3 * v + 1], z: r.positions[3 * v + 2],
+    const end = (n) => Math.min(n, offset + limit);
+    const vertices = Array.from(r.vertexEdge.subarray(Math.min(offset, r.vertexEdge.length), end(r.vertexEdge.length)), (edge, i) => ({
+      edge, x: r.positions[3 * (offset + i)], y: r.positions[3 * (offset + i) + 1], z: r.positions[3 * (offset + i) + 2],
     }));
     const edges = [];
-    for (let e = 0; 8 * e < r.edges.length && e < limit; e += 1) {
+    for (let e = offset; e < end(r.edges.length / 8); e += 1) {
       const row = {};
       EDGE_FIELDS.forEach((name, k) => { row[name] = r.edges[8 * e + k]; });
       edges.push(row);
     }
-    const faces = Array.from(r.faceEdge.subarray(0, limit), (edge) => ({ edge }));
+    const faces = Array.from(r.faceEdge.subarray(Math.min(offset, r.faceEdge.length), end(r.faceEdge.length)), (edge) => ({ edge }));
     return { vertices, edges, faces };
   }
 
@@ -290,20 +293,22 @@ export class Mesh {
     return Object.fromEntries(REPRESENTATIONS.map((key) => [key, storageValue(r.storage[key])]));
   }
 
-  // Plain-value tables of all six representations (shapes in docs/api-mesh.md). `limit`
-  // cuts every table to its first rows; `totals` always gives the full row counts.
+  // Plain-value tables of all six representations (shapes in docs/api-mesh.md): rows
+  // offset .. offset + limit - 1 of every table; `totals` always gives the full row counts.
   representations(options = {}) {
-    const { limit = INT32_MAX } = options ?? {};
+    const { limit = INT32_MAX, offset = 0 } = options ?? {};
     integerIn(limit, 'limit', 0, INT32_MAX);
+    integerIn(offset, 'offset', 0, INT32_MAX);
     const handle = this.#representationsReady();
-    const r = unwrap(this.#raw.meshRepresentations(handle, limit));
+    const r = unwrap(this.#raw.meshRepresentations(handle, offset, limit));
     const storage = this.storage();
     const c = this.counts();
     const vertexTotals = { vertices: c.vertices, edges: c.edges, faces: c.faces };
     const ind = r.independentFaces;
     const independentFaces = [];
+    const cornerBase = ind.faceOffsets[0] ?? 0;
     for (let f = 0; f + 1 < ind.faceOffsets.length; f += 1) {
-      independentFaces.push(xyzRows(ind.cornerPositions.subarray(3 * ind.faceOffsets[f], 3 * ind.faceOffsets[f + 1])));
+      independentFaces.push(xyzRows(ind.cornerPositions.subarray(3 * (ind.faceOffsets[f] - cornerBase), 3 * (ind.faceOffsets[f + 1] - cornerBase))));
     }
     const t = r.vertexFaceTables;
     const a = r.adjacencyLists;
@@ -313,16 +318,18 @@ export class Mesh {
     const p = r.partialAdjacencyLists;
     const partialVertices = csrRows(p.vertexOffsets, { edges: p.vertexEdges });
     const l = r.edgeList;
-    const we = this.#wingedEdgeRows(limit);
+    const we = this.#wingedEdgeRows(limit, offset);
     return {
-      'independent-faces': { faces: independentFaces, totals: { faces: c.faces }, storage: storage['independent-faces'] },
+      'independent-faces': { offset, faces: independentFaces, totals: { faces: c.faces }, storage: storage['independent-faces'] },
       'vertex-face-tables': {
+        offset,
         vertices: xyzRows(t.positions),
         faces: csrRows(t.faceOffsets, { vertices: t.faceVertices }).map((row) => row.vertices),
         totals: { vertices: c.vertices, faces: c.faces },
         storage: storage['vertex-face-tables'],
       },
       'adjacency-lists': {
+        offset,
         vertices: xyzRows(a.positions).map((position, v) => ({
           position, vertices: adjacencyVertices[v].vertices, edges: adjacencyVertices[v].edges, faces: adjacencyVertexFaces[v].faces,
         })),
@@ -334,6 +341,7 @@ export class Mesh {
         storage: storage['adjacency-lists'],
       },
       'partial-adjacency-lists': {
+        offset,
         vertices: xyzRows(p.positions).map((position, v) => ({ position, edges: partialVertices[v].edges })),
         edges: Array.from({ length: p.edgeVertices.length / 2 }, (_, e) => ({
           vertices: [p.edgeVertices[2 * e], p.edgeVertices[2 * e + 1]], faces: [p.edgeFaces[2 * e], p.edgeFaces[2 * e + 1]],
@@ -343,6 +351,7 @@ export class Mesh {
         storage: storage['partial-adjacency-lists'],
       },
       'edge-list': {
+        offset,
         vertices: xyzRows(l.positions),
         edges: Array.from({ length: l.edges.length / 4 }, (_, e) => ({
           v1: l.edges[4 * e], v2: l.edges[4 * e + 1], p1: l.edges[4 * e + 2], p2: l.edges[4 * e + 3],
@@ -352,6 +361,7 @@ export class Mesh {
         storage: storage['edge-list'],
       },
       'winged-edge': {
+        offset,
         vertices: we.vertices,
         edges: we.edges,
         faces: we.faces,

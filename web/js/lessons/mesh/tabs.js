@@ -17,6 +17,7 @@ const triple = (p) => `(${num(p[0])}, ${num(p[1])}, ${num(p[2])})`;
 // Representation tables longer than this show their first rows and say so (the winged-edge
 // tables, read as typed arrays, are never cut).
 export const REPRESENTATION_ROWS = 3000;
+const REPRESENTATION_BLOCKS_KEPT = 8;
 const listOf = (indices, label) => {
   const items = Array.from(indices).filter((i) => i >= 0);
   const out = [];
@@ -66,7 +67,20 @@ export function createRepresentationTabs(ctx, labels) {
   const root = h('section', { class: 'mesh-representations', 'aria-label': 'Representations' }, tablist, ...Object.values(panels));
 
   let model = null;
-  const rep = (name) => model.derived.reps[name];
+  // Row i of one table of a representation, from the core's arrays. They are fetched in
+  // blocks of REPRESENTATION_ROWS rows (every table's rows [b, b + ROWS) at once) and kept
+  // until the mesh changes, so scrolling a 100k-row table fetches only the block in view.
+  const at = (name, table, i) => {
+    const block = Math.floor(i / REPRESENTATION_ROWS) * REPRESENTATION_ROWS;
+    model.derived.reps ??= new Map();
+    let reps = model.derived.reps.get(block);
+    if (!reps) {
+      if (model.derived.reps.size >= REPRESENTATION_BLOCKS_KEPT) model.derived.reps.delete(model.derived.reps.keys().next().value);
+      reps = model.mesh.representations({ offset: block, limit: REPRESENTATION_ROWS });
+      model.derived.reps.set(block, reps);
+    }
+    return reps[name][table][i - block];
+  };
   const hoverRow = (kind) => (index) => { ctx.ui.meshHover = { kind, index }; markElements(); ctx.render(); };
   const leave = () => { ctx.ui.meshHover = null; markElements(); ctx.render(); };
   const pickRow = (kind) => (index) => ctx.meshPanels.pickElement({ kind, index });
@@ -87,35 +101,35 @@ export function createRepresentationTabs(ctx, labels) {
     // These tables show the core's own arrays of each representation (mesh.representations),
     // so a moved vertex shows up in every copy the core had to rewrite.
     independent: table({ id: 'independent-face-table', kind: 'face', caption: 'FACE TABLE (each face lists vertex coordinates)',
-      head: [['', 'corners (x, y, z)']], rowLabel: F, row: (f) => rep('independent-faces').faces[f].map(triple) }),
+      head: [['', 'corners (x, y, z)']], rowLabel: F, row: (f) => at('independent-faces', 'faces', f).map(triple) }),
     // ---------------------------------------------------------- vertex and face tables (000)
     vfVertex: table({ id: 'vf-vertex-table', kind: 'vertex', caption: 'VERTEX TABLE', head: [['', 'X', 'Y', 'Z']], rowLabel: V,
-      row: (v) => rep('vertex-face-tables').vertices[v].map((x) => num(x)) }),
+      row: (v) => at('vertex-face-tables', 'vertices', v).map((x) => num(x)) }),
     vfFace: table({ id: 'vf-face-table', kind: 'face', caption: 'FACE TABLE (each face lists vertex references)', head: [['', 'vertices']], rowLabel: F,
-      row: (f) => rep('vertex-face-tables').faces[f].map((v) => V(v)) }),
+      row: (f) => at('vertex-face-tables', 'faces', f).map((v) => V(v)) }),
     // ---------------------------------------------------------- adjacency lists (000)
     adjVertex: table({ id: 'adj-vertex-table', kind: 'vertex', caption: 'Adjacency lists: per vertex', head: [['', 'position', 'vertices', 'edges', 'faces']], rowLabel: V,
-      row: (v) => { const r = rep('adjacency-lists').vertices[v]; return [triple(r.position), listOf(r.vertices, V), listOf(r.edges, E), listOf(r.faces, F)]; } }),
+      row: (v) => { const r = at('adjacency-lists', 'vertices', v); return [triple(r.position), listOf(r.vertices, V), listOf(r.edges, E), listOf(r.faces, F)]; } }),
     adjEdge: table({ id: 'adj-edge-table', kind: 'edge', caption: 'Adjacency lists: per edge', head: [['', 'vertices', 'edges', 'faces']], rowLabel: E,
-      row: (e) => { const r = rep('adjacency-lists').edges[e]; return [listOf(r.vertices, V), listOf(r.edges, E), listOf(r.faces, F)]; } }),
+      row: (e) => { const r = at('adjacency-lists', 'edges', e); return [listOf(r.vertices, V), listOf(r.edges, E), listOf(r.faces, F)]; } }),
     adjFace: table({ id: 'adj-face-table', kind: 'face', caption: 'Adjacency lists: per face', head: [['', 'vertices', 'edges', 'faces']], rowLabel: F,
-      row: (f) => { const r = rep('adjacency-lists').faces[f]; return [listOf(r.vertices, V), listOf(r.edges, E), listOf(r.faces, F)]; } }),
+      row: (f) => { const r = at('adjacency-lists', 'faces', f); return [listOf(r.vertices, V), listOf(r.edges, E), listOf(r.faces, F)]; } }),
     partialVertex: table({ id: 'partial-vertex-table', kind: 'vertex', caption: 'Partial adjacency lists: per vertex', head: [['', 'position', 'edges']], rowLabel: V,
-      row: (v) => { const r = rep('partial-adjacency-lists').vertices[v]; return [triple(r.position), listOf(r.edges, E)]; } }),
+      row: (v) => { const r = at('partial-adjacency-lists', 'vertices', v); return [triple(r.position), listOf(r.edges, E)]; } }),
     partialEdge: table({ id: 'partial-edge-table', kind: 'edge', caption: 'Partial adjacency lists: per edge', head: [['', 'vertices', 'faces']], rowLabel: E,
-      row: (e) => { const r = rep('partial-adjacency-lists').edges[e]; return [listOf(r.vertices, V), listOf(r.faces, F)]; } }),
+      row: (e) => { const r = at('partial-adjacency-lists', 'edges', e); return [listOf(r.vertices, V), listOf(r.faces, F)]; } }),
     partialFace: table({ id: 'partial-face-table', kind: 'face', caption: 'Partial adjacency lists: per face', head: [['', 'edges']], rowLabel: F,
-      row: (f) => [listOf(rep('partial-adjacency-lists').faces[f].edges, E)] }),
+      row: (f) => [listOf(at('partial-adjacency-lists', 'faces', f).edges, E)] }),
     // ---------------------------------------------------------- pointers to an edge list (001)
     foleyVertex: table({ id: 'foley-vertex-table', kind: 'vertex', caption: 'V = (V₁, V₂, …)', head: [['', '(x, y, z)']], rowLabel: (v) => sub('V', v),
-      row: (v) => [triple(rep('edge-list').vertices[v])] }),
+      row: (v) => [triple(at('edge-list', 'vertices', v))] }),
     foleyEdge: table({ id: 'foley-edge-table', kind: 'edge', caption: 'Eᵢ = (V₁, V₂, P₁, P₂)   (λ: no polygon on that side)', head: [['', 'V₁', 'V₂', 'P₁', 'P₂']], rowLabel: (e) => sub('E', e),
       row: (e) => {
-        const r = rep('edge-list').edges[e];
+        const r = at('edge-list', 'edges', e);
         return [sub('V', r.v1), sub('V', r.v2), lambda(sub('P', r.p1)), lambda(sub('P', r.p2))];
       } }),
     foleyPolygon: table({ id: 'foley-polygon-table', kind: 'face', caption: 'Pᵢ = (E…)', head: [['', 'edges']], rowLabel: (f) => sub('P', f),
-      row: (f) => listOf(rep('edge-list').polygons[f], (e) => sub('E', e)) }),
+      row: (f) => listOf(at('edge-list', 'polygons', f), (e) => sub('E', e)) }),
     // ---------------------------------------------------------- planes (001, 003)
     planes: table({ id: 'plane-table', kind: 'face', caption: 'Ax + By + Cz + D = 0 per face',
       head: [[{ text: '', colspan: 1 }, { text: 'cross product P₁P₂ × P₁P₃ (001)', colspan: 4 }, { text: 'Newell (003)', colspan: 4 }, { text: '', colspan: 2 }],
@@ -157,8 +171,6 @@ export function createRepresentationTabs(ctx, labels) {
     wingedVertex: 'vertex', wingedEdge: 'edge', wingedFace: 'face', independent: 'face', vfVertex: 'vertex', vfFace: 'face',
     adjVertex: 'vertex', adjEdge: 'edge', adjFace: 'face', partialVertex: 'vertex', partialEdge: 'edge', partialFace: 'face', foleyVertex: 'vertex', foleyEdge: 'edge', foleyPolygon: 'face', planes: 'face',
   };
-  const REPRESENTATION_TABS = ['faces', 'vertex-face', 'adjacency', 'edge-list'];
-  const REPRESENTATION_TABLES = REPRESENTATION_TABS.flatMap((t) => tabTables[t]);
   const counts = { vertex: () => model.V, edge: () => model.E, face: () => model.F };
   const drawnVersion = {};
 
@@ -219,10 +231,6 @@ export function createRepresentationTabs(ctx, labels) {
     );
   }
 
-  // The core's arrays of the other representations, first rows only, once per position change.
-  function ensureRepresentations() {
-    if (!model.derived.reps) model.derived.reps = model.mesh.representations({ limit: REPRESENTATION_ROWS });
-  }
 
   function ensurePlanes() {
     if (!model.derived.planes) {
@@ -247,14 +255,11 @@ export function createRepresentationTabs(ctx, labels) {
         panels[id].hidden = !on;
       }
       const dataKey = `${model.topology}:${model.version}`;
-      if (REPRESENTATION_TABS.includes(state.tab)) ensureRepresentations();
       for (const name of tabTables[state.tab] ?? []) {
         if (name === 'planes') ensurePlanes();
         if (drawnVersion[name] !== dataKey) {
           drawnVersion[name] = dataKey;
-          const total = counts[tableKind[name]]();
-          const shown = REPRESENTATION_TABLES.includes(name) ? Math.min(total, REPRESENTATION_ROWS) : total;
-          tables[name].refresh(shown, total);
+          tables[name].refresh(counts[tableKind[name]]());
         }
       }
       const change = describeChange(model.lastChange);

@@ -96,7 +96,7 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
       count = nextCount;
       table.setAttribute('aria-rowcount', String(total + head.length));
       note.hidden = count <= FULL_ROWS && total === count;
-      const cut = total > count ? ` Showing the first ${count.toLocaleString('en')} of ${total.toLocaleString('en')} rows; the winged-edge tab shows every row.` : '';
+      const cut = total > count ? ` Showing the first ${count.toLocaleString('en')} of ${total.toLocaleString('en')} rows.` : '';
       if (!note.hidden) note.textContent = (count > FULL_ROWS ? `${count.toLocaleString('en')} rows; only the rows in view are drawn (scroll to see the rest).` : '') + cut;
       scroller.classList.toggle('is-virtual', count > FULL_ROWS);
       renderWindow();
