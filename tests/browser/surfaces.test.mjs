@@ -92,6 +92,41 @@ test('rotate the view, then drag a net point: it moves in the view plane and the
   await page.context().close();
 });
 
+test('dragging empty canvas turns the view by half a degree per pixel; Shift-drag pans', async () => {
+  const page = await openLesson();
+  const box = await page.locator('#stage canvas, canvas').first().boundingBox();
+  // A point of the canvas at least 40 px from every handle.
+  const handles = await page.evaluate(() => window.wingspline.handles());
+  const empty = [[box.x + 20, box.y + 20], [box.x + box.width - 20, box.y + 20], [box.x + 20, box.y + box.height - 20]]
+    .find(([x, y]) => handles.every((hd) => Math.hypot(hd.x - x, hd.y - y) > 40));
+  assert.ok(empty, 'an empty spot on the canvas');
+  const s0 = await state(page);
+  const a11 = await handle(page, 'a11');
+  await page.mouse.move(...empty);
+  await page.mouse.down();
+  await page.mouse.move(empty[0] + 60, empty[1] + 20, { steps: 6 });
+  await page.mouse.up();
+  const s1 = await state(page);
+  assert.equal(s1.camera.yaw, s0.camera.yaw + 30);
+  assert.equal(s1.camera.pitch, s0.camera.pitch + 10);
+  assert.deepEqual(s1.view, s0.view, 'turning does not pan');
+  assert.deepEqual(s1.a, s0.a, 'the net is unchanged');
+  const turned = await handle(page, 'a11');
+  assert.ok(Math.hypot(turned.x - a11.x, turned.y - a11.y) > 5, 'the drawing turned');
+  // Shift-drag: the stage's pan, the camera stays.
+  await page.keyboard.down('Shift');
+  await page.mouse.move(...empty);
+  await page.mouse.down();
+  await page.mouse.move(empty[0] + 50, empty[1], { steps: 5 });
+  await page.mouse.up();
+  await page.keyboard.up('Shift');
+  const s2 = await state(page);
+  assert.deepEqual(s2.camera, s1.camera);
+  assert.ok(s2.view.cx < s1.view.cx, 'the view panned (content follows the pointer to the right)');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
 test('the inspector sets z of the selected entry exactly', async () => {
   const page = await openLesson();
   await page.focus('#stage');

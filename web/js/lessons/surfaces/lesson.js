@@ -101,6 +101,10 @@ function withEntry(state, patch, i, j, value) {
   return next;
 }
 
+const DEGREES_PER_PX = 0.5;
+// An angle in degrees as -180 <= a < 180.
+const wrapDegrees = (a) => ((((a + 180) % 360) + 360) % 360) - 180;
+
 export const lesson = {
   id: 'surfaces',
   title: 'Surface patches',
@@ -191,7 +195,7 @@ export const lesson = {
     });
     const inspectorTitle = h('p', { id: 'entry-name' });
     inspectorBody.append(inspectorTitle, h('div', { class: 'xyz-row' }, inputs.map((x) => x.label)),
-      h('p', { class: 'hint' }, 'Select with [ and ] on the focused drawing (or click a handle); arrows move it in the view plane; type exact values here, z included.'));
+      h('p', { class: 'hint' }, 'Select with [ and ] on the focused drawing (or click a handle); arrows move it in the view plane; type exact values here, z included. Drag empty space to turn the view (Shift-drag pans).'));
     const formulaBody = panel(ctx.panels, { id: 'formula-panel', title: 'p(u, v) = uᵀ M P Mᵀ v' });
     const markerU = h('input', { type: 'range', id: 'marker-u', min: 0, max: GRID - 1, step: 1, oninput: () => commitView({ marker: { ...ctx.state.marker, i: Number(markerU.value) } }) });
     const markerV = h('input', { type: 'range', id: 'marker-v', min: 0, max: GRID - 1, step: 1, oninput: () => commitView({ marker: { ...ctx.state.marker, j: Number(markerV.value) } }) });
@@ -225,7 +229,7 @@ export const lesson = {
     }
     const turn = (dyaw, dpitch) => {
       const c = ctx.state.camera;
-      commitView({ camera: { ...c, yaw: ((c.yaw + dyaw + 540) % 360) - 180, pitch: Math.max(-90, Math.min(90, c.pitch + dpitch)) } });
+      commitView({ camera: { ...c, yaw: wrapDegrees(c.yaw + dyaw), pitch: Math.max(-90, Math.min(90, c.pitch + dpitch)) } });
     };
     ctx.keymap.add({ keys: ['a'], label: 'turn the view left', group: 'View', action: () => turn(-10, 0) });
     ctx.keymap.add({ keys: ['d'], label: 'turn the view right', group: 'View', action: () => turn(10, 0) });
@@ -416,6 +420,31 @@ export const lesson = {
 
   handles(model, state) {
     return netHandles(state).map(({ id, x, y, label }) => ({ id, x, y, label }));
+  },
+
+  // A drag on empty canvas turns the view (half a degree per pixel: across, turn; down,
+  // look more from above); Shift-drag pans, as the stage does by default. The pointer
+  // that started the drag steers; a second finger pinches to zoom as usual.
+  click(x, y, ctx, event) {
+    if (!event || event.shiftKey || (event.button ?? 0) !== 0) return false;
+    const start = { id: event.pointerId, x: event.clientX, y: event.clientY, ...ctx.state.camera };
+    const move = (e) => {
+      if (e.pointerId !== start.id) return;
+      const yaw = wrapDegrees(Math.round(start.yaw + (e.clientX - start.x) * DEGREES_PER_PX));
+      const pitch = Math.max(-90, Math.min(90, Math.round(start.pitch + (e.clientY - start.y) * DEGREES_PER_PX)));
+      const c = ctx.state.camera;
+      if (yaw !== c.yaw || pitch !== c.pitch) ctx.commit({ ...ctx.state, camera: { ...c, yaw, pitch } }, { history: false });
+    };
+    const end = (e) => {
+      if (e.pointerId !== start.id) return;
+      window.removeEventListener('pointermove', move);
+      window.removeEventListener('pointerup', end);
+      window.removeEventListener('pointercancel', end);
+    };
+    window.addEventListener('pointermove', move);
+    window.addEventListener('pointerup', end);
+    window.addEventListener('pointercancel', end);
+    return true;
   },
 
   moveHandle(state, id, x, y) {
