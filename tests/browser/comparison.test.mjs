@@ -57,6 +57,36 @@ test('the live table matches lecture 003 for the default polygon', async () => {
   await page.context().close();
 });
 
+test('adding and removing segments keeps the lecture\'s table true at every joint', async () => {
+  const page = await openLab();
+  const points = () => page.evaluate(() => window.wingspline.state.points.length);
+  const bezierJoints = () => page.$eval('.live-cell[data-row="inherent"][data-family="bezier"] .evidence', (e) => e.textContent);
+  assert.match(await bezierJoints(), /of 1 joint$/);
+  await page.click('#add-segment');
+  await page.waitForFunction(() => window.wingspline.state.points.length === 10);
+  assertMatchesLecture(await liveTable(page));
+  assert.match(await bezierJoints(), /of 2 joints/);
+  const interp = await page.evaluate(() => window.wingspline.model.table.columns.bezier.interpolatesSome.interpolated);
+  assert.deepEqual(interp, [0, 3, 6, 9], 'a cubic Bezier passes through every third point');
+  // By key: n adds, x removes; never below one segment, never above ten.
+  await page.evaluate(() => document.activeElement?.blur());
+  await page.keyboard.press('x');
+  assert.equal(await points(), 7);
+  assert.equal(await page.$eval('#remove-segment', (b) => b.disabled), true);
+  assertMatchesLecture(await liveTable(page));
+  await page.keyboard.press('x');
+  assert.equal(await points(), 7, 'two segments are the least by button: the continuity rows need a joint');
+  for (let i = 0; i < 10; i += 1) await page.keyboard.press('n');
+  assert.equal(await points(), 31);
+  assert.equal(await page.$eval('#add-segment', (b) => b.disabled), true);
+  assertMatchesLecture(await liveTable(page));
+  // Undo takes the last addition back.
+  await page.click('[data-action="undo"]');
+  assert.equal(await points(), 28);
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
 test('dragging a control point keeps the lecture\'s facts true', async () => {
   const page = await openLab();
   const hd = (await page.evaluate(() => window.wingspline.handles())).find((x) => x.id === 'p1');

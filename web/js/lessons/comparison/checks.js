@@ -147,6 +147,8 @@ function subdivisionCell(api, family, sampled) {
 }
 
 function continuityCell(api, segs) {
+  // One segment has no joint: nothing to measure, and no claim is made.
+  if (segs.length < 2) return { answer: '—', evidence: 'one segment: no joint to measure', parametric: null, geometric: null };
   let parametric = 2;
   let geometric = 2;
   for (let i = 1; i < segs.length; i += 1) {
@@ -154,7 +156,7 @@ function continuityCell(api, segs) {
     parametric = Math.min(parametric, v.parametric);
     geometric = Math.min(geometric, v.geometric);
   }
-  return { answer: `C${cLabel(parametric)} G${cLabel(geometric)}`, evidence: `weakest of ${segs.length - 1} joints`, parametric, geometric };
+  return { answer: `C${cLabel(parametric)} G${cLabel(geometric)}`, evidence: `weakest of ${segs.length - 1} joint${segs.length === 2 ? '' : 's'}`, parametric, geometric };
 }
 
 export function computeTable(api, points) {

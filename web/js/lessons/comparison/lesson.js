@@ -24,6 +24,27 @@ const pair = list(number(), { min: 2, max: 2 });
 // joint is accidentally smoother than its family guarantees.
 const DEFAULT_POINTS = [[-3.2, -1.2], [-2.4, 1.3], [-0.9, 1.6], [-0.2, -0.4], [1.1, -1.5], [2.3, 0.2], [3.3, 1.4]];
 
+const MIN_POINTS = 4;  // one cubic segment (a share link may hold one)
+const MIN_POINTS_BY_BUTTON = 7; // two segments: the continuity rows need a joint
+const MAX_POINTS = 31; // ten segments (the schema's limit)
+
+// Three more points continuing the polygon: each side turns by a different angle from the
+// last one (so no joint comes out accidentally smoother than its family guarantees),
+// rounded to hundredths so share links stay short.
+function withNewSegment(points) {
+  const out = points.map((p) => p.slice());
+  const [a, b] = out.slice(-2);
+  let d = [b[0] - a[0], b[1] - a[1]];
+  const length = Math.hypot(...d) || 1;
+  d = [d[0] / length * 1.4, d[1] / length * 1.4];
+  for (const turn of [0.7, -0.95, 0.45]) {
+    d = [d[0] * Math.cos(turn) - d[1] * Math.sin(turn), d[0] * Math.sin(turn) + d[1] * Math.cos(turn)];
+    const last = out[out.length - 1];
+    out.push([Math.round((last[0] + d[0]) * 100) / 100, Math.round((last[1] + d[1]) * 100) / 100]);
+  }
+  return out;
+}
+
 const fmt = (x) => formatNumber(x, 3);
 // Distances: tiny ones keep their size visible (1.1e-16, not 0).
 const fmtDistance = (x) => (x === 0 ? '0' : x < 1e-3 ? x.toExponential(1) : formatNumber(x, 3));
@@ -35,7 +56,7 @@ export const lesson = {
   title: 'Comparison lab',
   stateVersion: 1,
   schema: {
-    points: list(pair, { min: 4, max: 31 }),
+    points: list(pair, { min: MIN_POINTS, max: MAX_POINTS }),
     scene: oneOf(...Object.keys(SCENES)),
     show: object(Object.fromEntries(FAMILY_IDS.map((f) => [f, boolean()]))),
     conversion: object({ from: oneOf(...POINT_BASES), to: oneOf(...BASES), start: integer({ min: 0, max: 27 }), mode: oneOf('keep-curve', 'keep-geometry') }),
@@ -90,7 +111,21 @@ export const lesson = {
       const box = h('input', { type: 'checkbox', id: `show-${f}`, onchange: () => ctx.commit({ ...ctx.state, show: { ...ctx.state.show, [f]: box.checked } }, { recompute: false }) });
       return { f, box, label: h('label', { for: `show-${f}`, class: `family-${f}` }, box, FAMILY_NAMES[f]) };
     });
-    ctx.controls.replaceChildren(h('label', { for: 'scene' }, 'Show ', sceneSelect), ...familyBoxes.map((b) => b.label));
+    // One more or one fewer cubic segment (three points); the conversion's segment stays valid.
+    const addSegment = () => {
+      const state = ctx.state;
+      if (state.points.length + 3 > MAX_POINTS) { ctx.message.error(`At most ${MAX_POINTS} points (ten segments)`, 'too-many-points'); return; }
+      if (ctx.commit({ ...state, points: withNewSegment(state.points) })) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+    };
+    const removeSegment = () => {
+      const state = ctx.state;
+      if (state.points.length - 3 < MIN_POINTS_BY_BUTTON) { ctx.message.error('Two segments are the least here: the continuity rows need a joint', 'too-few-points'); return; }
+      const points = state.points.slice(0, -3);
+      ctx.commit({ ...state, points, conversion: { ...state.conversion, start: Math.min(state.conversion.start, points.length - 4) } });
+    };
+    const addButton = h('button', { type: 'button', class: 'tool', id: 'add-segment', onclick: addSegment }, 'Add a segment');
+    const removeButton = h('button', { type: 'button', class: 'tool', id: 'remove-segment', onclick: removeSegment }, 'Remove the last segment');
+    ctx.controls.replaceChildren(h('label', { for: 'scene' }, 'Show ', sceneSelect), ...familyBoxes.map((b) => b.label), addButton, removeButton);
 
     // The panel of the current scene is open and first in view; the live table stays below.
     const convBody = panel(ctx.panels, { id: 'conversion-panel', title: 'Basis conversion: q = M⁻¹ M_B P', open: false });
@@ -133,7 +168,9 @@ export const lesson = {
       out: h('div', { class: 'invariance-out' }),
     };
     invBody.append(h('label', { for: 'tf-kind' }, 'Map ', inv.kind), h('div', { class: 'slider-grid' }, inv.sliders.map((s) => s.label)), inv.out);
-    lesson.ui = { sceneSelect, familyBoxes, tableBody, conv, inv, blendPlots };
+    lesson.ui = { sceneSelect, familyBoxes, tableBody, conv, inv, blendPlots, addButton, removeButton };
+    ctx.keymap.add({ keys: ['n'], label: 'add a segment (three points)', group: 'Lesson', action: addSegment });
+    ctx.keymap.add({ keys: ['x'], label: 'remove the last segment', group: 'Lesson', action: removeSegment });
 
     ctx.keymap.add({ keys: ['v'], label: 'next scene: families, conversion, invariance', group: 'Lesson', action: () => {
       const keys = Object.keys(SCENES);
@@ -152,6 +189,8 @@ export const lesson = {
     }
     ui.sceneSelect.value = state.scene;
     for (const b of ui.familyBoxes) b.box.checked = state.show[b.f];
+    ui.addButton.disabled = state.points.length + 3 > MAX_POINTS;
+    ui.removeButton.disabled = state.points.length - 3 < MIN_POINTS_BY_BUTTON;
     updateTable(ui.tableBody, model.table);
     updateConversion(ui.conv, model.conversion, state);
     updateInvariance(ui.inv, model.invariance, state);
@@ -264,9 +303,11 @@ function updateTable(body, tbl) {
     const cell = tbl.columns[f][row];
     const expected = LECTURE_TABLE[row][f];
     const agrees = cell.answer === expected;
+    const measured = cell.answer !== '—';
     return h('div', { class: 'live-cell', 'data-row': row, 'data-family': f, 'data-answer': cell.answer, 'data-agrees': String(agrees) },
       h('strong', {}, cell.answer), h('span', { class: 'evidence' }, cell.evidence),
-      h('span', { class: agrees ? 'lecture agrees' : 'lecture differs' }, `lecture: ${expected} ${agrees ? '✓' : '≠'}`));
+      measured ? h('span', { class: agrees ? 'lecture agrees' : 'lecture differs' }, `lecture: ${expected} ${agrees ? '✓' : '≠'}`)
+        : h('span', { class: 'lecture' }, `lecture: ${expected} (at a joint)`));
   })]);
   body.replaceChildren(
     table({ caption: 'Lecture 003 (Hermite to Catmull-Rom) and lecture 001 (non-uniform B-spline), each cell measured now', head: [['', ...FAMILY_IDS.map((f) => FAMILY_NAMES[f])]], rows, className: 'data-table comparison-table' }),
