@@ -8,25 +8,16 @@
 // inline <script>, which the pages' CSP (script-src 'self') rightly refuses, and
 // bypassCSP would audit a page with its policy switched off. Evaluation through the
 // DevTools protocol is not subject to the page's CSP, so the audited page is the real one.
-import { test, describe, before, after } from 'node:test';
+import { test, describe, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import { createRequire } from 'node:module';
-import { launchBrowser, screenshot } from '../helpers/browser.mjs';
-import { lessonsUnderTest, startClassroomSite, openLesson, stateBits, trap } from '../helpers/classroom.mjs';
+import { screenshot, useSiteAndBrowser } from '../helpers/browser.mjs';
+import { lessonsUnderTest, startClassroomSite, openLesson, trap } from '../helpers/classroom.mjs';
 
 const axeSource = fs.readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
 
-let site;
-let browser;
-before(async () => {
-  site = await startClassroomSite();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await site?.close();
-});
+const env = useSiteAndBrowser(startClassroomSite);
 
 async function audit(page) {
   await page.evaluate(axeSource);
@@ -39,9 +30,9 @@ const pages = [{ title: 'Landing page', page: 'index.html', landing: true }, ...
 for (const scheme of ['light', 'dark']) {
   for (const entry of pages) {
     test(`axe: ${entry.title} (${scheme}) has no serious or critical violations`, async () => {
-      const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, colorScheme: scheme });
+      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 }, colorScheme: scheme });
       const page = trap(await context.newPage());
-      await page.goto(new URL(entry.page, site.url).href);
+      await page.goto(new URL(entry.page, env.site.url).href);
       if (entry.landing) await page.waitForSelector('[data-core-status][data-state=ready]');
       else await page.waitForSelector('body[data-ready=true]');
       assert.deepEqual(await audit(page), []);
@@ -63,8 +54,8 @@ for (const scheme of ['light', 'dark']) {
 for (const lesson of lessonsUnderTest) {
   describe(`${lesson.title}: keyboard and presentation`, () => {
     test('the keyboard alone reaches a control point, moves it and types its coordinates', async () => {
-      const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
-      const page = await openLesson(context, new URL(lesson.page, site.url).href);
+      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
       // Tab from the top of the page until the drawing has the focus, with a visible ring.
       let reached = false;
       for (let i = 0; i < 60 && !reached; i += 1) {
@@ -113,8 +104,8 @@ for (const lesson of lessonsUnderTest) {
     });
 
     test('? shows the key map; presentation mode keeps the essentials', async () => {
-      const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
-      const page = await openLesson(context, new URL(lesson.page, site.url).href);
+      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
       await page.focus('#stage');
       await page.keyboard.press('?');
       await page.waitForSelector('dialog.keymap-dialog[open]');
@@ -136,8 +127,8 @@ for (const lesson of lessonsUnderTest) {
     });
 
     test('print shows the figure and tables without the controls', async () => {
-      const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, colorScheme: 'dark' });
-      const page = await openLesson(context, new URL(lesson.page, site.url).href);
+      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 }, colorScheme: 'dark' });
+      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
       await page.emulateMedia({ media: 'print' });
       for (const selector of ['#lesson-toolbar', '#stage-controls']) assert.equal(await page.isVisible(selector), false, `${selector} hidden`);
       assert.ok(await page.isVisible('#stage'));
@@ -149,8 +140,8 @@ for (const lesson of lessonsUnderTest) {
 
 describe('Classroom fixture: presenter remote and reduced motion', () => {
   test('PageDown, PageUp, Home, o and Space drive the steps and overlays', async () => {
-    const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
-    const page = await openLesson(context, new URL('fixture.html', site.url).href);
+    const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+    const page = await openLesson(context, new URL('fixture.html', env.site.url).href);
     const state = () => page.evaluate(() => window.wingspline.state);
     await page.keyboard.press('PageDown');
     await page.keyboard.press('PageDown');
@@ -169,8 +160,8 @@ describe('Classroom fixture: presenter remote and reduced motion', () => {
   });
 
   test('reduced motion caps the player rate', async () => {
-    const context = await browser.newContext({ reducedMotion: 'reduce' });
-    const page = await openLesson(context, new URL('fixture.html', site.url).href);
+    const context = await env.browser.newContext({ reducedMotion: 'reduce' });
+    const page = await openLesson(context, new URL('fixture.html', env.site.url).href);
     const rates = await page.evaluate(async () => {
       const { createPlayer, REDUCED_MOTION_STEPS_PER_SECOND } = await import('./js/app/player.js');
       const player = createPlayer({ count: () => 5, getStep: () => 0, onStep: () => {}, stepsPerSecond: 4 });

@@ -3,24 +3,16 @@
 // numbers bit for bit; SVG and PNG figures and the lesson's own exports download; JSON is
 // imported by the file picker and by drag and drop; a hostile file name and contents are
 // shown as text and nothing runs.
-import { test, describe, before, after } from 'node:test';
+import { test, describe } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { launchBrowser } from '../helpers/browser.mjs';
+import { useSiteAndBrowser } from '../helpers/browser.mjs';
 import {
-  lessonsUnderTest, startClassroomSite, openLesson, nothingExecuted, payloads, stateBits, bitsOf, awkwardView, tinyView, setView,
+  lessonsUnderTest, startClassroomSite, openLesson, nothingExecuted, payloads, stateBits, bitsOf,
+  awkwardView, tinyView, setView
 } from '../helpers/classroom.mjs';
 
-let site;
-let browser;
-before(async () => {
-  site = await startClassroomSite();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await site?.close();
-});
+const env = useSiteAndBrowser(startClassroomSite);
 
 async function exportFile(page, key) {
   await page.click('details.menu > summary');
@@ -45,8 +37,8 @@ async function importByDrop(page, name, text) {
 for (const lesson of lessonsUnderTest) {
   describe(`${lesson.title}: export and import`, () => {
     test('the JSON export is the versioned envelope and imports back bit for bit', async () => {
-      const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
-      const page = await openLesson(context, new URL(lesson.page, site.url).href);
+      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
       await setView(page, awkwardView);
       const exported = await stateBits(page);
       const file = await exportFile(page, `${lesson.id}-state.json`);
@@ -78,8 +70,8 @@ for (const lesson of lessonsUnderTest) {
     });
 
     test('SVG and PNG figures and the lesson exports download', async () => {
-      const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
-      const page = await openLesson(context, new URL(lesson.page, site.url).href);
+      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
       const svg = await exportFile(page, `${lesson.id}.svg`);
       assert.match(svg.bytes.toString('utf8'), /^(<\?xml[^>]*\?>\s*)?<svg[^>]*xmlns="http:\/\/www\.w3\.org\/2000\/svg"/);
       const png = await exportFile(page, `${lesson.id}.png`);
@@ -94,8 +86,8 @@ for (const lesson of lessonsUnderTest) {
     });
 
     test('a hostile file name and contents are shown as text and nothing runs', async () => {
-      const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
-      const page = await openLesson(context, new URL(lesson.page, site.url).href);
+      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
       const before0 = await stateBits(page);
       const name = '<img src=x onerror=alert(1)>.json';
       await importByPicker(page, name, '{"format":"wingspline"');
@@ -119,8 +111,8 @@ for (const lesson of lessonsUnderTest) {
 
 describe('Classroom fixture: lesson exports', () => {
   test('the CSV export holds the points in full precision and its importer reads it back', async () => {
-    const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
-    const page = await openLesson(context, new URL('fixture.html', site.url).href);
+    const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+    const page = await openLesson(context, new URL('fixture.html', env.site.url).href);
     const points = [{ x: 0.1 + 0.2, y: 1e-300 }, { x: -1.5, y: 2 }, { x: 3, y: 1 / 3 }];
     await page.evaluate((p) => window.wingspline.ctx.commit({ ...window.wingspline.ctx.state, points: p }), points);
     const csv = await exportFile(page, 'fixture-points.csv');

@@ -2,30 +2,21 @@
 // survives a reload exactly, a link reproduces it in a fresh browser context, the back button
 // leaves the page instead of undoing edits, and tampered links each give one line of
 // message, a working page at the default (or the valid part), and nothing executed.
-import { test, describe, before, after } from 'node:test';
+import { test, describe, before } from 'node:test';
 import assert from 'node:assert/strict';
-import { launchBrowser } from '../helpers/browser.mjs';
+import { useSiteAndBrowser } from '../helpers/browser.mjs';
 import {
   lessonsUnderTest, startClassroomSite, openLesson, waitReady, trap, nothingExecuted, payloads,
-  linkCode, envelopeCode, stateBits, bitsOf, awkwardView, tinyView, setView,
+  linkCode, envelopeCode, stateBits, bitsOf, awkwardView, tinyView, setView
 } from '../helpers/classroom.mjs';
 
 // A message line is one sentence for a person, not a stack trace or a page of text.
 const MESSAGE_MAX_CHARS = 300;
 
-let site;
-let browser;
-before(async () => {
-  site = await startClassroomSite();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await site?.close();
-});
+const env = useSiteAndBrowser(startClassroomSite);
 
 async function newContext() {
-  return browser.newContext({ viewport: { width: 1280, height: 800 } });
+  return env.browser.newContext({ viewport: { width: 1280, height: 800 } });
 }
 
 // Moves the first draggable handle by keyboard, so the edit goes the way a person's does.
@@ -41,7 +32,7 @@ for (const lesson of lessonsUnderTest) {
   describe(`${lesson.title}: share and keep`, () => {
     test('a reload restores the state exactly, numbers bit for bit', async () => {
       const context = await newContext();
-      const page = await openLesson(context, new URL(lesson.page, site.url).href);
+      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
       const before0 = await stateBits(page);
       await editByKeyboard(page);
       await setView(page, awkwardView);
@@ -52,7 +43,7 @@ for (const lesson of lessonsUnderTest) {
       await waitReady(page);
       assert.deepEqual(await stateBits(page), edited, 'reload (from the link in the address bar)');
       // Without the link: local storage brings it back too.
-      await page.goto(new URL(lesson.page, site.url).href);
+      await page.goto(new URL(lesson.page, env.site.url).href);
       await waitReady(page);
       assert.deepEqual(await stateBits(page), edited, 'reopened without a link (local storage)');
       // An edit made just before a reload (inside the debounce) is not lost either.
@@ -67,7 +58,7 @@ for (const lesson of lessonsUnderTest) {
 
     test('a share link reproduces the state in a fresh browser context', async () => {
       const context = await newContext();
-      const page = await openLesson(context, new URL(lesson.page, site.url).href);
+      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
       await editByKeyboard(page);
       await setView(page, tinyView);
       const link = await page.evaluate(() => window.wingspline.shareUrl());
@@ -84,9 +75,9 @@ for (const lesson of lessonsUnderTest) {
     test('the back button leaves the lesson; edits do not add history entries', async () => {
       const context = await newContext();
       const page = trap(await context.newPage());
-      await page.goto(site.url);
+      await page.goto(env.site.url);
       await page.waitForSelector('[data-core-status][data-state=ready]');
-      await page.goto(new URL(lesson.page, site.url).href);
+      await page.goto(new URL(lesson.page, env.site.url).href);
       await waitReady(page);
       const length = await page.evaluate(() => history.length);
       await editByKeyboard(page);
@@ -96,7 +87,7 @@ for (const lesson of lessonsUnderTest) {
       assert.equal(await page.evaluate(() => history.length), length, 'edits replace the history entry');
       await page.goBack();
       await page.waitForSelector('[data-core-status][data-state=ready]');
-      assert.equal(new URL(page.url()).pathname, new URL(site.url).pathname, 'back goes to the page before');
+      assert.equal(new URL(page.url()).pathname, new URL(env.site.url).pathname, 'back goes to the page before');
       await page.goForward();
       await waitReady(page);
       assert.deepEqual(await stateBits(page), edited, 'forward comes back to the edited state');
@@ -132,13 +123,13 @@ for (const lesson of lessonsUnderTest) {
       for (const [name, code, { quiet = false } = {}] of cases) {
         test(name, async () => {
           const context = await newContext();
-          const probe = await openLesson(context, new URL(lesson.page, site.url).href);
+          const probe = await openLesson(context, new URL(lesson.page, env.site.url).href);
           const defaults = await probe.evaluate(() => window.wingspline.lesson);
           assert.equal(defaults, id);
           const real = (await probe.evaluate(() => window.wingspline.shareUrl())).split('#s=')[1];
           await probe.close();
           const hash = code ?? real.slice(0, Math.floor(real.length / 2));
-          const page = await openLesson(context, `${new URL(lesson.page, site.url).href}#s=${hash}`);
+          const page = await openLesson(context, `${new URL(lesson.page, env.site.url).href}#s=${hash}`);
           const message = await page.evaluate(() => window.wingspline.message());
           if (quiet) {
             assert.equal(message, '', 'unknown fields are dropped quietly');
@@ -175,7 +166,7 @@ describe('Classroom fixture: older links', () => {
     const context = await newContext();
     // Written as text: JSON.stringify would drop the sign of -0.
     const old = linkCode('{"format":"wingspline","lesson":"fixture","version":1,"state":{"pts":[[0,0],[1,1],[2,-1],[0.30000000000000004,-0]],"polygon":false,"view":{"cx":1,"cy":0,"zoom":90}}}');
-    const page = await openLesson(context, new URL(`fixture.html#s=${old}`, site.url).href);
+    const page = await openLesson(context, new URL(`fixture.html#s=${old}`, env.site.url).href);
     assert.equal(await page.evaluate(() => window.wingspline.message()), '');
     assert.deepEqual(await stateBits(page), bitsOf({
       points: [{ x: 0, y: 0 }, { x: 1, y: 1 }, { x: 2, y: -1 }, { x: 0.1 + 0.2, y: -0 }],
@@ -186,7 +177,7 @@ describe('Classroom fixture: older links', () => {
 
   test('a version 1 link of the wrong shape says so and shows the default', async () => {
     const context = await newContext();
-    const page = await openLesson(context, new URL(`fixture.html#s=${envelopeCode('fixture', 1, { pts: 7 })}`, site.url).href);
+    const page = await openLesson(context, new URL(`fixture.html#s=${envelopeCode('fixture', 1, { pts: 7 })}`, env.site.url).href);
     assert.match(await page.evaluate(() => window.wingspline.message()), /could not be upgraded/);
     assert.equal((await page.evaluate(() => window.wingspline.state)).points.length, 4);
     await context.close();
@@ -196,7 +187,7 @@ describe('Classroom fixture: older links', () => {
     const context = await newContext();
     const page = await openLesson(context, new URL(`fixture.html#s=${envelopeCode('fixture', 2, {
       points: [{ x: 5, y: 6 }, { x: 7, y: 8 }], showPolygon: 'yes', step: 1, note: payloads.img, view: { cx: 1, cy: 2, zoom: 50 },
-    })}`, site.url).href);
+    })}`, env.site.url).href);
     assert.match(await page.evaluate(() => window.wingspline.message()), /showPolygon must be true or false/);
     const state = await page.evaluate(() => window.wingspline.state);
     assert.deepEqual(state.points, [{ x: 5, y: 6 }, { x: 7, y: 8 }]);

@@ -1,8 +1,8 @@
 // The comparison lab: the live table against lecture 003's table, a drag that keeps the
 // facts, basis conversion against lecture 002's Bezier tangents, and invariance.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { startSite, launchBrowser, openPage, screenshot } from '../helpers/browser.mjs';
+import { openPage, screenshot, useSiteAndBrowser } from '../helpers/browser.mjs';
 
 // Lecture 003's comparison table, typed from the notes (Hermite, Bezier, B-spline, Catmull-Rom).
 const LECTURE_003 = {
@@ -18,13 +18,10 @@ const LECTURE_001_NUBS = { convexHull: 'Yes', interpolatesSome: 'No', interpolat
 const FAMILIES = ['hermite', 'bezier', 'bspline', 'catmull-rom'];
 const EXACT = 1e-12; // world units: "the same curve"
 
-let site;
-let browser;
-before(async () => { site = await startSite(); browser = await launchBrowser(); });
-after(async () => { await browser?.close(); await site?.close(); });
+const env = useSiteAndBrowser();
 
 async function openLab() {
-  const page = await openPage(browser, `${site.url}comparison.html`);
+  const page = await openPage(env.browser, `${env.site.url}comparison.html`);
   await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
   return page;
 }

@@ -3,20 +3,17 @@
 // plot's jump, the travelling point, and a share link.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { startSite, launchBrowser, openPage, screenshot } from '../helpers/browser.mjs';
+import { openPage, screenshot, useSiteAndBrowser } from '../helpers/browser.mjs';
 
 // Tolerances: positions in world units; the page classifies joints at 1e-6 relative.
 const POSITION_TOL = 1e-9;
 const RELATIVE_TOL = 1e-9;
 const DRAG_PX = 45;
 
-let site;
-let browser;
-before(async () => { site = await startSite(); browser = await launchBrowser(); });
-after(async () => { await browser?.close(); await site?.close(); });
+const env = useSiteAndBrowser();
 
 async function openLab(hash = '') {
-  const page = await openPage(browser, `${site.url}continuity.html${hash}`);
+  const page = await openPage(env.browser, `${env.site.url}continuity.html${hash}`);
   await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
   return page;
 }
@@ -197,7 +194,7 @@ test('the travelling point steps at parametric speed and the state survives a sh
   assert.ok(norm(sub(t.point, api)) < POSITION_TOL, 'the point is the curve at u');
   s = await state(page);
   const url = await page.evaluate(() => window.wingspline.shareUrl());
-  const other = await openPage(browser, url);
+  const other = await openPage(env.browser, url);
   await other.waitForSelector('body[data-ready=true]');
   const restored = await other.evaluate(() => window.wingspline.state);
   assert.deepEqual(restored.points, s.points);

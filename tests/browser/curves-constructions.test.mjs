@@ -6,7 +6,7 @@
 // page's drawing code.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { startSite, launchBrowser, openPage, screenshot } from '../helpers/browser.mjs';
+import { openPage, screenshot, useSiteAndBrowser } from '../helpers/browser.mjs';
 
 const SAME_POINT_TOL = 1e-12;   // world units: two evaluations of the same curve by the core
 const CURVE_UNCHANGED_TOL = 1e-12; // world units: the curve before/after a knot insertion
@@ -14,21 +14,12 @@ const CURVATURE_TOL = 1e-9;     // 1/world units: the circle's curvature vs 1/r
 const COLOUR_TOL = 40;          // sum of |r|+|g|+|b| differences: "this pixel has that colour"
 const SAMPLE_COUNT = 257;       // parameters where the curve is compared before and after
 
-let site;
-let browser;
-before(async () => {
-  site = await startSite();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await site?.close();
-});
+const env = useSiteAndBrowser();
 
 async function openLesson() {
-  const page = await openPage(browser, `${site.url}curves.html`, { colorScheme: 'light' });
+  const page = await openPage(env.browser, `${env.site.url}curves.html`, { colorScheme: 'light' });
   await page.evaluate(() => localStorage.clear());
-  await page.goto(`${site.url}curves.html`);
+  await page.goto(`${env.site.url}curves.html`);
   await page.waitForSelector('body[data-ready=true]');
   await frame(page);
   return page;

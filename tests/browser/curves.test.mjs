@@ -5,27 +5,17 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { startSite, launchBrowser, openPage, screenshot } from '../helpers/browser.mjs';
+import { openPage, screenshot, useSiteAndBrowser } from '../helpers/browser.mjs';
 
 const COORD_TOL = 1e-9;          // world units: a stored coordinate vs its expected value
 const CIRCLE_TOL = 1e-12;        // world units: NURBS circle points vs the radius (issue 5)
 const DARK_SUM = 200;            // r+g+b below this is curve ink (light theme), not grid
-let site;
-let browser;
-
-before(async () => {
-  site = await startSite();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await site?.close();
-});
+const env = useSiteAndBrowser();
 
 async function openLesson() {
-  const page = await openPage(browser, `${site.url}curves.html`, { colorScheme: 'light' });
+  const page = await openPage(env.browser, `${env.site.url}curves.html`, { colorScheme: 'light' });
   await page.evaluate(() => localStorage.clear());
-  await page.goto(`${site.url}curves.html`);
+  await page.goto(`${env.site.url}curves.html`);
   await page.waitForSelector('body[data-ready=true]');
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   return page;

@@ -13,7 +13,7 @@
 // the number of DOM nodes, and the JS heap after a forced garbage collection.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { launchBrowser, startSite } from '../helpers/browser.mjs';
+import { useSiteAndBrowser } from '../helpers/browser.mjs';
 import { openLesson } from '../helpers/classroom.mjs';
 
 const MOVES = 10000;
@@ -26,16 +26,7 @@ const LINEAR_SLACK_BYTES = 1 << 20;     // wasm memory pages (64 KB each): at mo
 const DOM_SLACK_NODES = 50;             // a panel rebuilt per move without removal would add thousands
 const JS_HEAP_SLACK_BYTES = 8 << 20;    // after GC; a retained array per move (>= 1 KB) would add 10 MB
 
-let site;
-let browser;
-before(async () => {
-  site = await startSite();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await site?.close();
-});
+const env = useSiteAndBrowser();
 
 async function measure(page) {
   const cdp = await page.context().newCDPSession(page);
@@ -87,9 +78,9 @@ function drag(page, id, moves, radius = 40) {
 }
 
 test(`${MOVES} control-point moves on the curve explorer do not grow memory`, async () => {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
   try {
-    const page = await openLesson(context, new URL('curves.html', site.url).href);
+    const page = await openLesson(context, new URL('curves.html', env.site.url).href);
     await drag(page, 'p1', WARM_UP);
     const before0 = await measure(page);
     const { handle, farthest } = await drag(page, 'p1', MOVES);
@@ -107,9 +98,9 @@ test(`${MOVES} control-point moves on the curve explorer do not grow memory`, as
 });
 
 test(`${STEPS} traversal steps on a 10,000-face sphere do not grow memory`, async () => {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
   try {
-    const page = await openLesson(context, new URL('mesh.html', site.url).href);
+    const page = await openLesson(context, new URL('mesh.html', env.site.url).href);
     // BENCH.md sphere_10000: 100 slices x 51 stacks.
     await page.evaluate(() => {
       const { ctx } = window.wingspline;

@@ -4,21 +4,12 @@
 // lesson has: OFF/OBJ files whose name, tokens and validation report carry markup, shown
 // in the message line, the validation report and the source label. Each must appear as
 // literal text, and nothing may run or be injected.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launchBrowser } from '../helpers/browser.mjs';
+import { useSiteAndBrowser } from '../helpers/browser.mjs';
 import { startClassroomSite, openLesson, nothingExecuted, payloads } from '../helpers/classroom.mjs';
 
-let site;
-let browser;
-before(async () => {
-  site = await startClassroomSite();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await site?.close();
-});
+const env = useSiteAndBrowser(startClassroomSite);
 
 const tetrahedronOff = 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n';
 // Three triangles on edge v1-v2: refused with a validation report.
@@ -39,8 +30,8 @@ async function injected(page) {
 }
 
 async function openMesh() {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
-  const page = await openLesson(context, new URL('mesh.html', site.url).href);
+  const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const page = await openLesson(context, new URL('mesh.html', env.site.url).href);
   return { context, page };
 }
 

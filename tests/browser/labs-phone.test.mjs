@@ -1,17 +1,14 @@
 // The three labs on a phone: they load, draw, keep every control reachable without
 // horizontal scrolling of the page, and log nothing.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { startSite, launchBrowser, openPage, screenshot } from '../helpers/browser.mjs';
+import { openPage, screenshot, useSiteAndBrowser } from '../helpers/browser.mjs';
 
-let site;
-let browser;
-before(async () => { site = await startSite(); browser = await launchBrowser(); });
-after(async () => { await browser?.close(); await site?.close(); });
+const env = useSiteAndBrowser();
 
 for (const id of ['continuity', 'comparison', 'surfaces']) {
   test(`${id} is usable on a phone`, async () => {
-    const page = await openPage(browser, `${site.url}${id}.html`, { viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true });
+    const page = await openPage(env.browser, `${env.site.url}${id}.html`, { viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true });
     await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
     // A too-wide element makes a mobile browser widen its layout viewport, so compare with the device width.
     const overflow = await page.evaluate(() => document.documentElement.scrollWidth - 390);

@@ -3,7 +3,7 @@
 // large mesh. Expected values are the slide's (lecture 000), never the page's own output.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { startSite, launchBrowser, openPage, screenshot } from '../helpers/browser.mjs';
+import { openPage, screenshot, useSiteAndBrowser } from '../helpers/browser.mjs';
 
 // Lecture 000, "Winged Edge": the slide's tables, entry for entry ('' = no face: boundary).
 const SLIDE_EDGE_TABLE = [
@@ -27,13 +27,10 @@ const EDGE_COLUMN_NAMES = ['', 'S', 'E', 'L', 'R', 'S:L', 'S:R', 'E:L', 'E:R'];
 const SLIDE_EDGE_HEADER = ['', 'S', 'E', 'L', 'R', 'L', 'R', 'L', 'R'];
 const DRAG_PX = 60; // how far the test drags v2, in CSS pixels
 
-let site;
-let browser;
-before(async () => { site = await startSite(); browser = await launchBrowser(); });
-after(async () => { await browser?.close(); await site?.close(); });
+const env = useSiteAndBrowser();
 
 async function openLesson(contextOptions) {
-  const page = await openPage(browser, `${site.url}mesh.html`, contextOptions);
+  const page = await openPage(env.browser, `${env.site.url}mesh.html`, contextOptions);
   await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
   return page;
 }

@@ -3,18 +3,15 @@
 // dragging a net point with the mouse, the inspector, and two joined patches.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { startSite, launchBrowser, openPage, screenshot } from '../helpers/browser.mjs';
+import { openPage, screenshot, useSiteAndBrowser } from '../helpers/browser.mjs';
 
 const EXACT = 1e-12; // world units
 const DRAG_PX = 40;
 
-let site;
-let browser;
-before(async () => { site = await startSite(); browser = await launchBrowser(); });
-after(async () => { await browser?.close(); await site?.close(); });
+const env = useSiteAndBrowser();
 
 async function openLesson() {
-  const page = await openPage(browser, `${site.url}surfaces.html`);
+  const page = await openPage(env.browser, `${env.site.url}surfaces.html`);
   await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
   return page;
 }

@@ -3,6 +3,7 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { before, after } from 'node:test';
 import { chromium } from 'playwright-core';
 import { createStaticServer, listen } from '../../scripts/lib/static-server.mjs';
 
@@ -43,4 +44,20 @@ export async function screenshot(page, name) {
   const file = path.join(resultsDir, `${name}.png`);
   await page.screenshot({ path: file, fullPage: true });
   return file;
+}
+
+// One site and one browser for a whole test file, opened before its first test and closed
+// after its last: `const env = useSiteAndBrowser();` then `env.site.url`, `env.browser`.
+// `start` serves the site (default: dist/ as startSite does).
+export function useSiteAndBrowser(start = startSite) {
+  const env = { site: null, browser: null };
+  before(async () => {
+    env.site = await start();
+    env.browser = await launchBrowser();
+  });
+  after(async () => {
+    await env.browser?.close();
+    await env.site?.close();
+  });
+  return env;
 }
