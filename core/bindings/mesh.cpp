@@ -178,16 +178,46 @@ val validate_indexed_mesh(val positions, val face_offsets, val face_vertices) {
 // {positions: Float64Array (3 per vertex), vertexEdge: Int32Array (1 per vertex),
 //  edges: Int32Array (8 per edge: start, end, left, right, startLeft, startRight,
 //  endLeft, endRight), faceEdge: Int32Array (1 per face)}
-val mesh_winged_edge(int32_t handle) {
+// Rows [first, first + rows) of a table with `stride` numbers per row (cut at its end).
+template <class T> val window_rows(const std::vector<T>& table, std::size_t stride, int32_t first, int32_t rows) {
+    const std::size_t total = table.size() / stride;
+    const std::size_t begin = std::min(total, static_cast<std::size_t>(first));
+    const std::size_t end = std::min(total, begin + static_cast<std::size_t>(rows));
+    return to_typed_array(table.data() + stride * begin, stride * (end - begin));
+}
+
+// Rows [first, first + rows) of a CSR table: offsets (n + 1 entries, still absolute) and the
+// items they cover (so row i's items are list[offsets[i] - offsets[0] .. offsets[i+1] - offsets[0])).
+void set_csr(val& out, const char* offsets_name, const std::vector<int32_t>& offsets,
+             std::initializer_list<std::pair<const char*, const std::vector<int32_t>*>> lists, int32_t first, int32_t rows) {
+    const std::size_t total = offsets.size() - 1;
+    const std::size_t begin = std::min(total, static_cast<std::size_t>(first));
+    const std::size_t end = std::min(total, begin + static_cast<std::size_t>(rows));
+    out.set(offsets_name, to_typed_array(offsets.data() + begin, end - begin + 1));
+    for (const auto& [name, list] : lists)
+        out.set(name, to_typed_array(list->data() + offsets[begin], offsets[end] - offsets[begin]));
+}
+
+// The three tables, rows [first, first + rows) of each (a lesson scrolling a big mesh
+// fetches only the rows it shows; the JS API's wingedEdge() asks for all of them).
+val mesh_winged_edge(int32_t handle, int32_t first, int32_t rows) {
     return guarded([&] {
+        require(first >= 0 && rows >= 0, "invalid-argument", "offset and limit must not be negative");
         const WingedEdgeMesh& w = entry(handle).winged;
-        std::vector<int32_t> vertex_edge(w.vertex_count()), face_edge(w.face_count());
-        for (int32_t v = 0; v < w.vertex_count(); ++v) vertex_edge[v] = w.vertex_edge(v);
-        for (int32_t f = 0; f < w.face_count(); ++f) face_edge[f] = w.face_edge(f);
+        const auto window = [&](int32_t total) {
+            const int32_t begin = std::min(total, first);
+            return std::pair<int32_t, int32_t>{begin, begin + std::min(total - begin, rows)};
+        };
+        const auto [v0, v1] = window(w.vertex_count());
+        const auto [e0, e1] = window(w.edge_count());
+        const auto [f0, f1] = window(w.face_count());
+        std::vector<int32_t> vertex_edge, face_edge;
+        for (int32_t v = v0; v < v1; ++v) vertex_edge.push_back(w.vertex_edge(v));
+        for (int32_t f = f0; f < f1; ++f) face_edge.push_back(w.face_edge(f));
         val r = val::object();
-        r.set("positions", to_typed_array(w.positions()));
+        r.set("positions", window_rows(w.positions(), 3, first, rows));
         r.set("vertexEdge", to_typed_array(vertex_edge));
-        r.set("edges", to_typed_array(reinterpret_cast<const int32_t*>(w.edges().data()), 8 * w.edges().size()));
+        r.set("edges", to_typed_array(reinterpret_cast<const int32_t*>(w.edges().data() + e0), 8 * static_cast<std::size_t>(e1 - e0)));
         r.set("faceEdge", to_typed_array(face_edge));
         return r;
     });
@@ -446,26 +476,6 @@ val mesh_storage(int32_t handle) {
 }
 
 // The first `rows` entries of a table with `stride` numbers per row.
-// Rows [first, first + rows) of a table with `stride` numbers per row (cut at its end).
-template <class T> val window_rows(const std::vector<T>& table, std::size_t stride, int32_t first, int32_t rows) {
-    const std::size_t total = table.size() / stride;
-    const std::size_t begin = std::min(total, static_cast<std::size_t>(first));
-    const std::size_t end = std::min(total, begin + static_cast<std::size_t>(rows));
-    return to_typed_array(table.data() + stride * begin, stride * (end - begin));
-}
-
-// Rows [first, first + rows) of a CSR table: offsets (n + 1 entries, still absolute) and the
-// items they cover (so row i's items are list[offsets[i] - offsets[0] .. offsets[i+1] - offsets[0])).
-void set_csr(val& out, const char* offsets_name, const std::vector<int32_t>& offsets,
-             std::initializer_list<std::pair<const char*, const std::vector<int32_t>*>> lists, int32_t first, int32_t rows) {
-    const std::size_t total = offsets.size() - 1;
-    const std::size_t begin = std::min(total, static_cast<std::size_t>(first));
-    const std::size_t end = std::min(total, begin + static_cast<std::size_t>(rows));
-    out.set(offsets_name, to_typed_array(offsets.data() + begin, end - begin + 1));
-    for (const auto& [name, list] : lists)
-        out.set(name, to_typed_array(list->data() + offsets[begin], offsets[end] - offsets[begin]));
-}
-
 // Every representation's arrays, each table cut to rows [first, first + rows) (see
 // docs/api-mesh.md; the JS layer turns them into row objects).
 val mesh_representations(int32_t handle, int32_t first, int32_t rows) {

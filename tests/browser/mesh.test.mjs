@@ -236,6 +236,24 @@ test('the cube in 3D shows planes by cross product and Newell, and rotates with 
   await page.context().close();
 });
 
+test('a 15 x 15 grid: 450 faces drawn in batches, its 256 vertices still labelled', async () => {
+  const page = await openLesson();
+  await page.selectOption('#mesh-kind', 'grid');
+  await page.fill('#grid-nx', '15');
+  await page.press('#grid-nx', 'Enter');
+  await page.fill('#grid-ny', '15');
+  await page.press('#grid-ny', 'Enter');
+  await page.waitForFunction(() => window.wingspline.model.F === 450);
+  // The figure as SVG (the same drawing code as the canvas): V = 16 x 16 vertex discs with
+  // labels v1..v256; no face or edge labels (over 400 of each).
+  const svg = await page.evaluate(() => window.wingspline.svg());
+  assert.equal((svg.match(/<circle [^>]* r="5" /g) ?? []).length, 256, 'one disc of radius 5 per vertex');
+  assert.ok(svg.includes('>v1<') && svg.includes('>v256<') && !svg.includes('>v257<'));
+  assert.ok(!svg.includes('>F1<') && !svg.includes('>e1<'));
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
 test('a 10,000-face sphere keeps its tables virtual and walks around the pole', async () => {
   const page = await openLesson();
   await page.selectOption('#mesh-kind', 'sphere');

@@ -140,6 +140,26 @@ TEST_CASE("building from a face set it may take gives the same tables and keeps 
     const std::vector<double> before = fin.positions;
     CHECK_THROWS_AS(WingedEdgeMesh::build(std::move(fin)), InvalidMesh);
     CHECK(fin.positions == before); // NOLINT(bugprone-use-after-move): the contract under test
+    // Refused late: two closed tetrahedra sharing one vertex (found only by the ring walk),
+    // and a face edge that is not a side of its face (the last check before the move).
+    IndexedMesh cones;
+    for (int i = 0; i < 7; ++i) cones.add_vertex(i, i % 3, i * 0.5);
+    for (const int32_t o : {0, 3}) { // apex 0 shared; tetrahedra (0, 1, 2, 3) and (0, 4, 5, 6)
+        const int32_t a = o == 0 ? 1 : 4, b = a + 1, c = a + 2;
+        cones.add_face({0, a, b});
+        cones.add_face({0, b, c});
+        cones.add_face({0, c, a});
+        cones.add_face({a, c, b});
+    }
+    const std::vector<double> cones_before = cones.positions;
+    CHECK_THROWS_AS(WingedEdgeMesh::build(std::move(cones)), InvalidMesh);
+    CHECK(cones.positions == cones_before); // NOLINT(bugprone-use-after-move)
+    IndexedMesh tet = tetrahedron();
+    BuildOptions wrong_face_edge;
+    wrong_face_edge.face_edges = {0, 0, 0, 0}; // e1 is not a side of every face
+    const std::vector<double> tet_before = tet.positions;
+    CHECK_THROWS_WITH(WingedEdgeMesh::build(std::move(tet), wrong_face_edge), Catch::Contains("is not a side of"));
+    CHECK(tet.positions == tet_before); // NOLINT(bugprone-use-after-move)
 }
 
 TEST_CASE("Euler characteristic and analytic counts of generated meshes", "[mesh][counts]") {
@@ -329,6 +349,12 @@ TEST_CASE("OFF and OBJ readers: forms, comments, negative indices, line-numbered
         CHECK(e.code() == "index-out-of-range");
         CHECK(e.line() == 10);
         CHECK(std::string(e.what()) == "line 10: F3 refers to vertex index 7 but the file has 5 vertices (indices 0 to 4)");
+    }
+    try {
+        parse_off("OFF\n0 1 0\n3 0 1 2\n");
+        FAIL("accepted a face without vertices");
+    } catch (const ParseError& e) {
+        CHECK(std::string(e.what()) == "line 3: F1 refers to vertex index 0 but the file has no vertices");
     }
     try {
         parse_off("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");

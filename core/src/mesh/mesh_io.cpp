@@ -170,7 +170,8 @@ IndexedMesh parse_off(std::string_view text) {
             const long v = to_integer(t[1 + i], in.number(), "a vertex index");
             if (v < 0 || v >= nv)
                 throw ParseError("index-out-of-range", in.number(), face_name(f) + " refers to vertex index " + std::to_string(v) +
-                                 " but the file has " + std::to_string(nv) + " vertices (indices 0 to " + std::to_string(nv - 1) + ")");
+                                 (nv == 0 ? std::string(" but the file has no vertices")
+                                          : " but the file has " + std::to_string(nv) + " vertices (indices 0 to " + std::to_string(nv - 1) + ")"));
             corners.push_back(static_cast<int32_t>(v));
         }
         m.add_face(corners.data(), static_cast<int32_t>(corners.size()));

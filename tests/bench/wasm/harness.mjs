@@ -11,6 +11,7 @@ export function wants(task) {
 // V8 compiles wasm in two tiers: the first calls run baseline (Liftoff) code while the
 // optimised (TurboFan) code is compiled in the background. Native code has no such start,
 // so every task first runs untimed until the steady state (>= 2 calls and >= 0.3 s).
+// body(r) gets the repetition index, -1 during the warm-up (fold checksums only for r >= 0).
 export const WARM_UP_SECONDS = 0.3;
 
 export function timeRuns(repetitions, body, { warmUp = true } = {}) {

@@ -25,9 +25,9 @@ if (['mesh_memory', 'mesh_build', 'mesh_ring', 'mesh_normals'].some(wants)) {
     }
     if (wants('mesh_build')) {
       let checksum = 0;
-      const seconds = timeRuns(R, () => {
+      const seconds = timeRuns(R, (r) => {
         const mesh = api.buildMesh(input);
-        checksum += mesh.bytes();
+        if (r >= 0) checksum += mesh.bytes(); // timed repetitions only, not the warm-up
         mesh.dispose();
       });
       report({ task: 'mesh_build', input: name, n: F, seconds, checksum });
@@ -46,7 +46,7 @@ if (['mesh_memory', 'mesh_build', 'mesh_ring', 'mesh_normals'].some(wants)) {
         let checksum = 0;
         // Into one reused array, as the native benchmark reuses its vector; still one copy out.
         const into = new Float64Array(3 * F);
-        const seconds = timeRuns(R, () => { const n = mesh.normals({ into }); checksum += n[0] + n[n.length - 1]; });
+        const seconds = timeRuns(R, (r) => { const n = mesh.normals({ into }); if (r >= 0) checksum += n[0] + n[n.length - 1]; });
         report({ task: 'mesh_normals', input: name, n: F, seconds, checksum });
       const core = mesh.timeNormalsInCore(R);
       report({ task: 'mesh_normals_core', input: name, n: F, seconds: Array.from(core.seconds), checksum: core.checksum });

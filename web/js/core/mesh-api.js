@@ -185,25 +185,25 @@ export class Mesh {
   wingedEdge() { return this.#wingedEdgeRows(INT32_MAX); }
 
   // The first `limit` rows of each winged-edge table.
+  // Rows offset .. offset + limit - 1 of the three tables (the core copies only those).
   #wingedEdgeRows(limit, offset = 0) {
-    const r = unwrap(this.#raw.meshWingedEdge(this.#live()));
-    const end = (n) => Math.min(n, offset + limit);
-    const vertices = Array.from(r.vertexEdge.subarray(Math.min(offset, r.vertexEdge.length), end(r.vertexEdge.length)), (edge, i) => ({
-      edge, x: r.positions[3 * (offset + i)], y: r.positions[3 * (offset + i) + 1], z: r.positions[3 * (offset + i) + 2],
+    const r = unwrap(this.#raw.meshWingedEdge(this.#live(), offset, limit));
+    const vertices = Array.from(r.vertexEdge, (edge, i) => ({
+      edge, x: r.positions[3 * i], y: r.positions[3 * i + 1], z: r.positions[3 * i + 2],
     }));
     const edges = [];
-    for (let e = offset; e < end(r.edges.length / 8); e += 1) {
+    for (let e = 0; 8 * e < r.edges.length; e += 1) {
       const row = {};
       EDGE_FIELDS.forEach((name, k) => { row[name] = r.edges[8 * e + k]; });
       edges.push(row);
     }
-    const faces = Array.from(r.faceEdge.subarray(Math.min(offset, r.faceEdge.length), end(r.faceEdge.length)), (edge) => ({ edge }));
+    const faces = Array.from(r.faceEdge, (edge) => ({ edge }));
     return { vertices, edges, faces };
   }
 
   // The same tables as flat typed arrays: edges[8*e + k] in EDGE_FIELDS order.
   wingedEdgeArrays() {
-    const r = unwrap(this.#raw.meshWingedEdge(this.#live()));
+    const r = unwrap(this.#raw.meshWingedEdge(this.#live(), 0, INT32_MAX));
     return { positions: r.positions, vertexEdge: r.vertexEdge, edges: r.edges, faceEdge: r.faceEdge, edgeFields: [...EDGE_FIELDS] };
   }
 

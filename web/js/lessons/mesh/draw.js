@@ -96,10 +96,12 @@ function labelDirections(model, P) {
   return dir;
 }
 
-// A mesh too big for labels: faces and visible edges drawn as a few hundred batched paths
+// A mesh too big for face and edge labels: faces and visible edges drawn as batched paths
 // (faces turned away first, as they are farther on average) instead of one call each, which
-// took about 750 ms per frame for 100k faces. A path is kept to BATCH shapes: the
+// took about 350 ms per frame for 100k faces. A path is kept to BATCH shapes: the
 // rasteriser's cost grows faster than linearly with the number of subpaths in one path.
+// One fill per batch means translucent faces overlapping on screen darken once inside a
+// batch, not once per face: the shading of such a big mesh is a hint of its shape only.
 const BATCH = 256;
 
 function drawBaseBatched(painter, model, colors) {
@@ -142,6 +144,7 @@ function drawBase(painter, model, state, colors) {
   const labels = model.faces.length <= LABEL_LIMIT;
   if (!labels && model.we.edges.length / 8 > LABEL_LIMIT) {
     drawBaseBatched(painter, model, colors);
+    drawVertices(painter, model, colors); // a grid of 450 faces has only 256 vertices: labelled
     return;
   }
   const faceFill = colors.series[5];
@@ -170,13 +173,18 @@ function drawBase(painter, model, state, colors) {
       painter.text(mx, my, eLabel(e), { fill: colors.ink, font: 13, weight: 600, halo: colors.background });
     }
   }
+  drawVertices(painter, model, colors);
+}
+
+// Vertex discs and v labels, up to LABEL_LIMIT vertices.
+function drawVertices(painter, model, colors) {
+  const P = model.projected;
   const V = P.length / 3;
-  if (V <= LABEL_LIMIT) {
-    const away = labelDirections(model, P);
-    for (let v = 0; v < V; v += 1) {
-      painter.circle(P[3 * v], P[3 * v + 1], 5, { fill: colors.accent, stroke: colors.background, width: 1.5 });
-      painter.text(P[3 * v], P[3 * v + 1], vLabel(v), { fill: colors.accent, font: 15, weight: 700, dx: 18 * away[2 * v], dy: -18 * away[2 * v + 1], halo: colors.background });
-    }
+  if (V > LABEL_LIMIT) return;
+  const away = labelDirections(model, P);
+  for (let v = 0; v < V; v += 1) {
+    painter.circle(P[3 * v], P[3 * v + 1], 5, { fill: colors.accent, stroke: colors.background, width: 1.5 });
+    painter.text(P[3 * v], P[3 * v + 1], vLabel(v), { fill: colors.accent, font: 15, weight: 700, dx: 18 * away[2 * v], dy: -18 * away[2 * v + 1], halo: colors.background });
   }
 }
 
