@@ -75,25 +75,47 @@ WingedEdgeMesh WingedEdgeMesh::build_impl(const IndexedMesh& mesh, const BuildOp
     // vertex (a counting sort). Sides are visited last to first, so each side's end corner
     // is the one visited just before: one load per side, no wrap-around test.
     std::vector<int32_t> bucket_end(static_cast<std::size_t>(V) + 1, 0);
+    int32_t* count = bucket_end.data() + 1;
     for (int32_t f = 0; f < F; ++f) {
         const int32_t o = fo[f], n = fo[f + 1] - o;
+        if (n == 3) {
+            // Triangles (most meshes): unrolled, unsigned compare for 0 <= index < V.
+            const int32_t a = fv[o], b = fv[o + 1], c = fv[o + 2];
+            if (static_cast<uint32_t>(a) >= static_cast<uint32_t>(V) || static_cast<uint32_t>(b) >= static_cast<uint32_t>(V) ||
+                static_cast<uint32_t>(c) >= static_cast<uint32_t>(V) || a == b || b == c || a == c)
+                refuse(mesh);
+            ++count[a < b ? a : b];
+            ++count[b < c ? b : c];
+            ++count[c < a ? c : a];
+            continue;
+        }
         if (n < 3) refuse(mesh);
         for (int32_t i = o; i < o + n; ++i)
             if (fv[i] < 0 || fv[i] >= V) refuse(mesh);
         if (!corners_distinct(&fv[o], n)) refuse(mesh);
         for (int32_t h = o + n - 1, b = fv[o]; h >= o; --h) {
             const int32_t a = fv[h];
-            ++bucket_end[(a < b ? a : b) + 1];
+            ++count[a < b ? a : b];
             b = a;
         }
     }
     for (int32_t v = 0; v < V; ++v) bucket_end[v + 1] += bucket_end[v];
     std::unique_ptr<BucketSlot[]> slots(new BucketSlot[H]); // every slot is written below
+    const auto put = [&](int32_t h, int32_t a, int32_t b) {
+        slots[bucket_end[a < b ? a : b]++] = {a < b ? b : a, 2 * h + (a > b ? 1 : 0)};
+    };
     for (int32_t f = 0; f < F; ++f) {
-        const int32_t o = fo[f];
-        for (int32_t h = fo[f + 1] - 1, b = fv[o]; h >= o; --h) {
+        const int32_t o = fo[f], n = fo[f + 1] - o;
+        if (n == 3) {
+            const int32_t a = fv[o], b = fv[o + 1], c = fv[o + 2];
+            put(o, a, b);
+            put(o + 1, b, c);
+            put(o + 2, c, a);
+            continue;
+        }
+        for (int32_t h = o + n - 1, b = fv[o]; h >= o; --h) {
             const int32_t a = fv[h];
-            slots[bucket_end[a < b ? a : b]++] = {a < b ? b : a, 2 * h + (a > b ? 1 : 0)};
+            put(h, a, b);
             b = a;
         }
     }
