@@ -415,13 +415,8 @@ IndexedMesh WingedEdgeMesh::face_set() const {
     out.face_offsets.reserve(face_edge_.size() + 1);
     out.face_vertices.reserve(2 * edges_.size()); // sides of all faces <= 2E
     for (int32_t f = 0; f < face_count(); ++f) {
-        const int32_t first = face_edge_[f];
-        int32_t e = first;
-        do {
-            const EdgeRecord& r = edges_[e];
-            out.face_vertices.push_back(r.left == f ? r.start : r.end);
-            e = next_in_face(e, f);
-        } while (e != first);
+        const std::vector<int32_t> corners = vertices_of_face(f);
+        out.face_vertices.insert(out.face_vertices.end(), corners.begin(), corners.end());
         out.face_offsets.push_back(static_cast<int32_t>(out.face_vertices.size()));
     }
     return out;

@@ -15,6 +15,19 @@ export class Transform {
   toWorld(sx, sy) { return [this.cx + (sx - this.width / 2) / this.zoom, this.cy - (sy - this.height / 2) / this.zoom]; }
 }
 
+// The arrow head at (bx, by), in screen pixels: tip and two barbs (null for a zero-length arrow).
+function arrowHead(t, ax, ay, bx, by, scale) {
+  const [x0, y0] = t.toScreen(ax, ay);
+  const [x1, y1] = t.toScreen(bx, by);
+  const len = Math.hypot(x1 - x0, y1 - y0);
+  if (len < 1e-9) return null;
+  const head = Math.min(12 * scale, len * 0.4);
+  const ux = (x1 - x0) / len;
+  const uy = (y1 - y0) / len;
+  return [[x1, y1], [x1 - head * ux + head * 0.45 * uy, y1 - head * uy - head * 0.45 * ux],
+    [x1 - head * ux - head * 0.45 * uy, y1 - head * uy + head * 0.45 * ux]];
+}
+
 export class CanvasPainter {
   constructor(ctx2d, transform, { scale = 1, background = '#fff' } = {}) {
     this.g = ctx2d;
@@ -144,18 +157,13 @@ export class CanvasPainter {
 
   arrow(ax, ay, bx, by, style = {}) {
     this.line(ax, ay, bx, by, style);
-    const [x0, y0] = this.t.toScreen(ax, ay);
-    const [x1, y1] = this.t.toScreen(bx, by);
-    const len = Math.hypot(x1 - x0, y1 - y0);
-    if (len < 1e-9) return;
-    const head = Math.min(12 * this.scale, len * 0.4);
-    const ux = (x1 - x0) / len;
-    const uy = (y1 - y0) / len;
+    const pts = arrowHead(this.t, ax, ay, bx, by, this.scale);
+    if (!pts) return;
     const g = this.g;
     g.beginPath();
-    g.moveTo(x1, y1);
-    g.lineTo(x1 - head * ux + head * 0.45 * uy, y1 - head * uy - head * 0.45 * ux);
-    g.lineTo(x1 - head * ux - head * 0.45 * uy, y1 - head * uy + head * 0.45 * ux);
+    g.moveTo(...pts[0]);
+    g.lineTo(...pts[1]);
+    g.lineTo(...pts[2]);
     g.closePath();
     g.globalAlpha = style.alpha ?? 1;
     g.fillStyle = style.stroke ?? '#000';
@@ -247,15 +255,8 @@ export class SvgPainter {
 
   arrow(ax, ay, bx, by, style = {}) {
     this.line(ax, ay, bx, by, style);
-    const [x0, y0] = this.t.toScreen(ax, ay);
-    const [x1, y1] = this.t.toScreen(bx, by);
-    const len = Math.hypot(x1 - x0, y1 - y0);
-    if (len < 1e-9) return;
-    const head = Math.min(12 * this.scale, len * 0.4);
-    const ux = (x1 - x0) / len;
-    const uy = (y1 - y0) / len;
-    const pts = [[x1, y1], [x1 - head * ux + head * 0.45 * uy, y1 - head * uy - head * 0.45 * ux],
-      [x1 - head * ux - head * 0.45 * uy, y1 - head * uy + head * 0.45 * ux]];
+    const pts = arrowHead(this.t, ax, ay, bx, by, this.scale);
+    if (!pts) return;
     this.parts.push(`<polygon points="${pts.map((p) => p.map(svgNumber).join(',')).join(' ')}" fill="${escapeXml(style.stroke ?? '#000')}"/>`);
   }
 
