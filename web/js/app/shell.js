@@ -107,9 +107,13 @@ export async function runLesson(lesson) {
   try {
     api = await loadWingspline();
   } catch (err) {
-    message.error(`The WebAssembly core could not be loaded (${err.message}). Try reloading the page.`);
+    // A 'core-load-failed' error says what is wrong and what to check (issue 13, item 14).
+    message.error(errorText(err), err?.code);
     document.body.dataset.ready = 'failed';
     return null;
+  } finally {
+    // The template's "Loading the geometry core…" status.
+    document.querySelector('.core-loading[data-core-status]')?.remove();
   }
 
   const restored = await restoreState(lesson);

@@ -49,7 +49,7 @@ async function showCore() {
     proof.hidden = false;
     document.body.dataset.coreVersion = api.version;
   } catch (err) {
-    status.textContent = `The WebAssembly core could not be loaded: ${err.message}`;
+    status.textContent = err?.code ? err.message : `The WebAssembly core could not be loaded: ${err?.message ?? err}`;
     status.dataset.state = 'error';
   }
 }
