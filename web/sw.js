@@ -64,13 +64,14 @@ self.addEventListener('install', (event) => {
     // The version covers sw.js too, so this cache is this worker's alone and a refused
     // install can drop it without touching the active worker's copy.
     const cache = await caches.open(CACHE);
-    try {
-      await Promise.all(Object.keys(manifest.files).map(async (file) => {
-        await cache.put(new URL(file, base), await fetchVerified(file, { cache: 'reload' }));
-      }));
-    } catch (err) {
+    const outcomes = await Promise.allSettled(Object.keys(manifest.files).map(async (file) => {
+      await cache.put(new URL(file, base), await fetchVerified(file, { cache: 'reload' }));
+    }));
+    const refusals = outcomes.filter((o) => o.status === 'rejected').map((o) => o.reason?.message ?? String(o.reason));
+    if (refusals.length > 0) {
+      // All or nothing: a half-verified copy would look ready and then fail offline.
       await caches.delete(CACHE);
-      throw err;
+      throw new Error(`offline copy not installed: ${refusals.join('; ')}`);
     }
     await self.skipWaiting();
   })());

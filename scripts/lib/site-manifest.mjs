@@ -1,5 +1,7 @@
-// The service worker's precache list (dist/sw-manifest.js): every file of dist/ with a content hash, so a new
-// deployment (any changed byte) installs a new cache and an unchanged one costs nothing.
+// The service worker's precache list (dist/sw-manifest.js): every file of dist/ with the SHA-256
+// of its bytes. The worker checks each file against it when caching and when serving
+// (issue 13, item 25), and the version (a hash of the list and of sw.js) names the cache,
+// so a new deployment (any changed byte) installs a new cache and an unchanged one costs nothing.
 import crypto from 'node:crypto';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -14,14 +16,16 @@ function listFiles(dir, base = dir) {
   return out;
 }
 
+const sha256 = (bytes) => crypto.createHash('sha256').update(bytes).digest('hex');
+
 export function writeServiceWorkerManifest(dist) {
-  const files = listFiles(dist).filter((f) => f !== 'sw-manifest.js' && f !== 'sw.js').sort();
-  const hash = crypto.createHash('sha256');
-  for (const f of files) {
-    hash.update(f);
-    hash.update(fs.readFileSync(path.join(dist, f)));
-  }
-  const manifest = { version: hash.digest('hex').slice(0, 16), files };
+  const names = listFiles(dist).filter((f) => f !== 'sw-manifest.js' && f !== 'sw.js').sort();
+  const files = Object.fromEntries(names.map((f) => [f, sha256(fs.readFileSync(path.join(dist, f)))]));
+  // sw.js is not precached but is part of the version: a changed worker installs into a cache
+  // of its own, so a refused install can delete it without touching the active worker's.
+  const worker = fs.existsSync(path.join(dist, 'sw.js')) ? sha256(fs.readFileSync(path.join(dist, 'sw.js'))) : '';
+  const version = sha256(JSON.stringify({ files, worker })).slice(0, 16);
+  const manifest = { version, files };
   // A script, not JSON: the browser byte-compares importScripts() files when it checks the
   // service worker for updates, so a new build is noticed although sw.js is unchanged.
   const target = path.join(dist, 'sw-manifest.js');
