@@ -366,3 +366,37 @@ TEST_CASE("file limits: corners per face, coordinates and counts are refused at 
     // Counts can be lifted for large files (benchmarks); the other limits stay.
     CHECK(parse_obj(many, kUnlimitedCounts).vertex_count() == kFileLimits.max_vertices + 1);
 }
+
+TEST_CASE("streamed reading (TextSource) gives the same mesh and the same line numbers for every piece size",
+          "[mesh][io][trust]") {
+    const std::string off = "\xEF\xBB\xBFOFF\r\n# c\r\n4 2 0\r0 0 0\n1 0 0\r\n1 1 0\r\n0 1 0\r\n\r\n3 0 1 2\r\n3 0 2 3";
+    const std::string obj = "\xEF\xBB\xBFv 0 0 0\r\nv 1 0 0\rv 1 1 0\r\n\r\nv 0 1 0\nf 1 2 3\r\nf 1 3 4\r\n";
+    const std::string bad = "OFF\r\n4 2 0\r\n0 0 0\r\n1 0 0\r\n1 1 0\r\n0 1 0\r\n3 0 1 2\r\n3 0 2 oops\r\n";
+    const IndexedMesh a = parse_off(off), b = parse_obj(obj);
+    CHECK(a.face_vertices == b.face_vertices);
+    for (std::size_t piece = 1; piece <= 13; ++piece) {
+        INFO("piece " << piece);
+        // A source that hands out at most `piece` bytes per call, so lines, CRLFs and the
+        // byte-order mark are cut at every place.
+        auto source_of = [piece](const std::string& text) {
+            return TextSource([&text, piece](char* out, std::size_t capacity, std::size_t offset) -> std::size_t {
+                if (offset >= text.size()) return 0;
+                const std::size_t k = std::min({capacity, piece, text.size() - offset});
+                text.copy(out, k, offset);
+                return k;
+            });
+        };
+        const IndexedMesh sa = parse_off(source_of(off));
+        CHECK(sa.positions == a.positions);
+        CHECK(sa.face_vertices == a.face_vertices);
+        const IndexedMesh sb = parse_obj(source_of(obj));
+        CHECK(sb.positions == b.positions);
+        CHECK(sb.face_vertices == b.face_vertices);
+        try {
+            parse_off(source_of(bad));
+            FAIL("accepted");
+        } catch (const ParseError& e) {
+            CHECK(e.line() == 8);
+        }
+    }
+}

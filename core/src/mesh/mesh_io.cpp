@@ -27,7 +27,7 @@ class LineReader {
 public:
     explicit LineReader(std::string_view text) : text_(text), at_end_(true) { skip_bom(); }
     explicit LineReader(const TextSource& source) : source_(&source) {
-        refill();
+        do refill(); while (text_.size() < 3 && !at_end_); // enough to see a byte-order mark
         skip_bom();
     }
 
@@ -101,7 +101,8 @@ private:
         buffer_.erase(0, buffer_.size() - keep);
         const std::size_t old = buffer_.size();
         buffer_.resize(old + kPiece);
-        const std::size_t got = (*source_)(&buffer_[old], kPiece);
+        const std::size_t got = (*source_)(&buffer_[old], kPiece, offset_);
+        offset_ += got;
         buffer_.resize(old + got);
         if (got == 0) at_end_ = true;
         text_ = buffer_;
@@ -110,6 +111,7 @@ private:
     }
 
     const TextSource* source_ = nullptr;
+    std::size_t offset_ = 0;
     std::string buffer_;
     std::string_view text_;
     std::size_t pos_ = 0;
@@ -260,6 +262,21 @@ IndexedMesh read_off(LineReader& in, std::size_t text_size, const MeshLimits& li
     return m;
 }
 
+// The OBJ limits checked by a first pass that stores nothing (OBJ has no header), so a
+// file over them is refused before anything grows.
+void prescan_obj(LineReader& in, const MeshLimits& limits) {
+    long vertices = 0, faces = 0;
+    while (in.next()) {
+        const std::string_view key = in.tokens()[0];
+        if (key == "v" && ++vertices > limits.max_vertices)
+            throw ParseError("too-large", in.number(), too_many(vertices, "vertices or more", limits.max_vertices));
+        if (key == "f") {
+            if (++faces > limits.max_faces) throw ParseError("too-large", in.number(), too_many(faces, "faces or more", limits.max_faces));
+            check_corners(static_cast<long>(in.tokens().size()) - 1, faces - 1, in.number(), limits);
+        }
+    }
+}
+
 IndexedMesh read_obj(LineReader& in, const MeshLimits& limits) {
     IndexedMesh m;
     // Face references as written (1-based, or negative = relative to the vertices read so
@@ -330,11 +347,15 @@ IndexedMesh parse_off(const TextSource& source, const MeshLimits& limits) {
 }
 
 IndexedMesh parse_obj(std::string_view text, const MeshLimits& limits) {
+    LineReader scan(text);
+    prescan_obj(scan, limits);
     LineReader in(text);
     return read_obj(in, limits);
 }
 
 IndexedMesh parse_obj(const TextSource& source, const MeshLimits& limits) {
+    LineReader scan(source);
+    prescan_obj(scan, limits);
     LineReader in(source);
     return read_obj(in, limits);
 }
