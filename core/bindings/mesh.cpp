@@ -6,6 +6,7 @@
 
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/indexed_mesh.h"
+#include "wingspline/mesh/limits.h"
 #include "wingspline/mesh/mesh_io.h"
 #include "wingspline/mesh/planes.h"
 #include "wingspline/mesh/queries.h"
@@ -326,17 +327,28 @@ val mesh_validate(int32_t handle) {
 // ------------------------------------------------------------------ geometry
 
 // {cross: Float64Array (4 per face: A B C D), newell: Float64Array (4 per face), residual: Float64Array (1 per face)}
+// crossCorners: Int32Array (3 per face), the vertices used as P1, P2, P3. The faces as
+// given: the other representations' vertex and face tables when built (the JS Mesh builds
+// them first when faceEdges were chosen), otherwise read back from the winged edge, which
+// with the default face edges is the same face set.
 val mesh_planes(int32_t handle) {
     return guarded([&] {
-        const auto planes = face_planes(entry(handle).winged);
+        MeshEntry& m = entry(handle);
+        const auto planes = m.representations
+                                ? face_planes(m.winged, m.representations->vertex_face_tables.face_offsets,
+                                              m.representations->vertex_face_tables.face_vertices)
+                                : face_planes(m.winged);
         std::vector<double> cross, newell, residual;
+        std::vector<int32_t> corners;
         for (const auto& p : planes) {
+            corners.insert(corners.end(), p.cross_corners.begin(), p.cross_corners.end());
             cross.insert(cross.end(), {p.cross.x, p.cross.y, p.cross.z, p.cross.w});
             newell.insert(newell.end(), {p.newell.x, p.newell.y, p.newell.z, p.newell.w});
             residual.push_back(p.residual);
         }
         val r = val::object();
         r.set("cross", to_typed_array(cross));
+        r.set("crossCorners", to_typed_array(corners));
         r.set("newell", to_typed_array(newell));
         r.set("residual", to_typed_array(residual));
         return r;
@@ -572,17 +584,25 @@ val mesh_ring_walk(int32_t handle) {
 
 // ------------------------------------------------------------------ files
 
-// The text arrives as UTF-8 bytes (a Uint8Array the JS layer encoded) and is copied into
-// the module once; as a std::string argument embind would hold two copies during the call.
-val mesh_parse(val utf8, const std::string& format) {
+// The text arrives as UTF-8 bytes (a Uint8Array the JS layer encoded) and is pulled into
+// the module in 64 KB pieces as the reader asks for them (TextSource): a file over the
+// limits is refused from its first pieces, never copied whole into the wasm memory, which
+// could then never shrink again (issue 13: a refused 55 MB file used to keep it grown).
+// check_counts = false lifts the vertex and face counts (benchmarks, large-file tests).
+val mesh_parse(val utf8, const std::string& format, bool check_counts) {
     try {
         if (format != "off" && format != "obj")
             throw Error("unknown-format", "unknown mesh format '" + format + "'; use 'off' or 'obj'");
         const std::size_t n = utf8["length"].as<std::size_t>();
-        std::unique_ptr<char[]> bytes(new char[n + 1]);
-        val(emscripten::typed_memory_view(n, reinterpret_cast<unsigned char*>(bytes.get()))).call<void>("set", utf8);
-        const std::string_view text(bytes.get(), n);
-        val r = indexed_value(format == "off" ? parse_off(text) : parse_obj(text));
+        const TextSource source = [&](char* out, std::size_t capacity, std::size_t offset) -> std::size_t {
+            const std::size_t k = offset < n ? std::min(capacity, n - offset) : 0;
+            if (k == 0) return 0;
+            val(emscripten::typed_memory_view(k, reinterpret_cast<unsigned char*>(out)))
+                .call<void>("set", utf8.call<val>("subarray", offset, offset + k));
+            return k;
+        };
+        const MeshLimits& limits = check_counts ? kFileLimits : kUnlimitedCounts;
+        val r = indexed_value(format == "off" ? parse_off(source, limits) : parse_obj(source, limits));
         r.set("ok", true);
         return r;
     } catch (const ParseError& e) {
@@ -592,6 +612,18 @@ val mesh_parse(val utf8, const std::string& format) {
     } catch (...) {
         return guarded([&]() -> val { throw; });
     }
+}
+
+// {maxCoordinate, maxFaceCorners, maxVertices, maxFaces}: limits.h, the one set of mesh limits.
+val mesh_limits() {
+    return guarded([] {
+        val r = val::object();
+        r.set("maxCoordinate", kFileLimits.max_coordinate);
+        r.set("maxFaceCorners", kFileLimits.max_face_corners);
+        r.set("maxVertices", kFileLimits.max_vertices);
+        r.set("maxFaces", kFileLimits.max_faces);
+        return r;
+    });
 }
 
 val mesh_format(val positions, val face_offsets, val face_vertices, const std::string& format) {
@@ -647,6 +679,7 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("benchBuildInCore", &bench_build_in_core);
     emscripten::function("benchNormalsInCore", &bench_normals_in_core);
     emscripten::function("meshParse", &mesh_parse);
+    emscripten::function("meshLimits", &mesh_limits);
     emscripten::function("meshFormat", &mesh_format);
     emscripten::function("meshRingWalk", &mesh_ring_walk);
 }

@@ -8,9 +8,17 @@ function records(text) {
   return text.split('\n').map((line) => line.replace(/#.*/, '').trim()).filter(Boolean).map((line) => line.split(/\s+/));
 }
 
-// Bytes as a string, one character per byte (binary garbage stays garbage, no decoding step).
+// A file as the page gets it: UTF-8 text decoded (a byte-order mark kept, so the core's
+// handling of it is what is tested); bytes that are not UTF-8 one character per byte
+// (binary garbage stays garbage).
+const utf8 = new TextDecoder('utf-8', { fatal: true, ignoreBOM: true });
 export function readCorpusFile(relative) {
-  return fs.readFileSync(new URL(relative, corpusUrl), 'latin1');
+  const bytes = fs.readFileSync(new URL(relative, corpusUrl));
+  try {
+    return utf8.decode(bytes);
+  } catch {
+    return bytes.toString('latin1');
+  }
 }
 
 export function meshCases() {

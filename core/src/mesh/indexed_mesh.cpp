@@ -115,12 +115,11 @@ ValidationReport validate_indexed(const IndexedMesh& mesh) {
                 break;
             }
             if (std::abs(c) > kMaxCoordinate) {
-                // Newell's sums multiply pairs of coordinates and add one term per corner:
-                // beyond 1e100 they can overflow to inf and the normal to NaN (found by
-                // fuzz_mesh_build), so such a mesh is refused rather than half computed.
+                // The one coordinate bound (limits.h): the state format's, and far inside
+                // what Newell's sums of pair products can hold without overflow.
                 std::ostringstream m;
-                m << vertex_label(v) << " has a coordinate too large for the normal and plane computations ("
-                  << "xyz"[k] << " = " << c << "; the limit is 1e100 in size)";
+                m << vertex_label(v) << " has a coordinate beyond the limit of " << kMaxCoordinate << " in size ("
+                  << "xyz"[k] << " = " << c << ")";
                 out.push_back(make("coordinate-out-of-range", m.str(), {v}));
                 break;
             }

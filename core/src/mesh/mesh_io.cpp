@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string_view>
@@ -14,34 +15,66 @@ namespace wingspline::mesh {
 namespace {
 
 // The text one line at a time, as whitespace-separated tokens with comments (# to the end
-// of the line) removed. Tokens are views into the text: nothing is copied, so reading a
-// large file costs its face set, not a string per number (a 61 MB OFF used to take
-// 435 MB of wasm memory in tokens).
+// of the line) removed. Tokens are views into the text (or into the current piece of a
+// streamed text): nothing is copied per number (a 61 MB OFF used to take 435 MB of wasm
+// memory in tokens). Lines end at LF, CRLF or a lone CR; a UTF-8 byte-order mark at the
+// very start is skipped (editors write both).
+//
+// Streamed (a TextSource), the reader holds one piece plus the unfinished line carried
+// over: a file is read in bounded memory and a file over the limits is refused before the
+// rest of it is ever copied (issue 13: an over-limit 55 MB file grew the wasm memory).
 class LineReader {
 public:
-    explicit LineReader(std::string_view text) : text_(text) {}
+    explicit LineReader(std::string_view text) : text_(text), at_end_(true) { skip_bom(); }
+    explicit LineReader(const TextSource& source) : source_(&source) {
+        do refill(); while (text_.size() < 3 && !at_end_); // enough to see a byte-order mark
+        skip_bom();
+    }
 
     // Moves to the next line that has tokens; false at the end of the text.
     bool next() {
-        while (pos_ <= text_.size() && !done_) {
-            std::size_t end = text_.find('\n', pos_);
-            if (end == std::string_view::npos) end = text_.size();
+        for (;;) {
+            if (pos_ >= text_.size()) {
+                if (at_end_) break;
+                refill();
+                continue;
+            }
+            std::size_t end = pos_;
+            while (end < text_.size() && text_[end] != '\n' && text_[end] != '\r') ++end;
+            if (end - pos_ > kMaxLine)
+                throw ParseError("line-too-long", number_ + 1, "the line is longer than " + std::to_string(kMaxLine) +
+                                 " characters; no line of a mesh file needs that many");
+            if (end == text_.size() && !at_end_) {
+                refill(); // the line goes on in the next piece
+                continue;
+            }
             ++number_;
             tokens_.clear();
             for (std::size_t j = pos_; j < end;) {
                 const char c = text_[j];
                 if (c == '#') break;
-                if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+                if (c == ' ' || c == '\t' || c == '\f' || c == '\v') {
                     ++j;
                     continue;
                 }
                 std::size_t k = j;
-                while (k < end && text_[k] != ' ' && text_[k] != '\t' && text_[k] != '\r' && text_[k] != '#') ++k;
+                while (k < end && text_[k] != ' ' && text_[k] != '\t' && text_[k] != '\f' && text_[k] != '\v' && text_[k] != '#') ++k;
                 tokens_.push_back(text_.substr(j, k - j));
                 j = k;
             }
-            if (end == text_.size()) done_ = true;
-            pos_ = end + 1;
+            // LF, CRLF and a lone CR (old Mac files) each end one line.
+            if (end == text_.size()) {
+                pos_ = end;
+            } else if (text_[end] == '\n') {
+                pos_ = end + 1;
+            } else if (end + 1 < text_.size()) {
+                pos_ = end + (text_[end + 1] == '\n' ? 2 : 1);
+            } else {
+                // A CR ending this piece: its LF may open the next one (skipped on refill;
+                // the tokens are views into this piece, so the refill waits for next()).
+                pos_ = end + 1;
+                pending_cr_ = !at_end_;
+            }
             if (!tokens_.empty()) {
                 last_with_tokens_ = number_;
                 return true;
@@ -56,9 +89,34 @@ public:
     int line_after_last() const { return last_with_tokens_ + 1; }
 
 private:
+    static constexpr std::size_t kPiece = 64 * 1024;
+    static constexpr std::size_t kMaxLine = 1 << 20;
+
+    void skip_bom() {
+        if (text_.substr(pos_, 3) == "\xEF\xBB\xBF") pos_ += 3;
+    }
+    // Keeps the unfinished line [pos_, end of piece) and appends the next piece.
+    void refill() {
+        const std::size_t keep = pos_ < text_.size() ? text_.size() - pos_ : 0;
+        buffer_.erase(0, buffer_.size() - keep);
+        const std::size_t old = buffer_.size();
+        buffer_.resize(old + kPiece);
+        const std::size_t got = (*source_)(&buffer_[old], kPiece, offset_);
+        offset_ += got;
+        buffer_.resize(old + got);
+        if (got == 0) at_end_ = true;
+        text_ = buffer_;
+        pos_ = pending_cr_ && keep == 0 && !buffer_.empty() && buffer_[0] == '\n' ? 1 : 0;
+        pending_cr_ = false;
+    }
+
+    const TextSource* source_ = nullptr;
+    std::size_t offset_ = 0;
+    std::string buffer_;
     std::string_view text_;
     std::size_t pos_ = 0;
-    bool done_ = false;
+    bool at_end_ = false;
+    bool pending_cr_ = false;
     int number_ = 0;
     int last_with_tokens_ = 0;
     std::vector<std::string_view> tokens_;
@@ -114,13 +172,33 @@ template <class What> long to_integer(std::string_view token, int line, What&& w
     return p.value;
 }
 
+// A coordinate of a vertex line, refused at its line when finite but beyond the bound.
+double to_coordinate(std::string_view token, int line, const char* what, const MeshLimits& limits) {
+    const double x = to_number(token, line, what);
+    if (std::isfinite(x) && std::abs(x) > limits.max_coordinate) {
+        char buf[48];
+        std::snprintf(buf, sizeof buf, "%g", limits.max_coordinate);
+        throw ParseError("coordinate-out-of-range", line, std::string(what) + " " + std::string(token.substr(0, 30)) +
+                         " is beyond the limit of " + buf + " in size");
+    }
+    return x;
+}
+
+void check_corners(long n, long face, int line, const MeshLimits& limits) {
+    if (n > limits.max_face_corners)
+        throw ParseError("face-too-large", line, "F" + std::to_string(face + 1) + " has " + std::to_string(n) +
+                         " corners; a face may have at most " + std::to_string(limits.max_face_corners));
+}
+
+std::string too_many(long n, const char* what, long limit) {
+    return "the file has " + std::to_string(n) + " " + what + "; a mesh file may have at most " + std::to_string(limit);
+}
+
 std::string face_name(long f) { return "F" + std::to_string(f + 1); }
 std::string vertex_name(long v) { return "v" + std::to_string(v + 1) + " (index " + std::to_string(v) + ")"; }
 
-} // namespace
 
-IndexedMesh parse_off(std::string_view text) {
-    LineReader in(text);
+IndexedMesh read_off(LineReader& in, std::size_t text_size, const MeshLimits& limits) {
     if (!in.next()) throw ParseError("truncated-file", 1, "the file is empty; expected the keyword OFF");
     if (in.tokens()[0] != "OFF") throw ParseError("parse-error", in.number(), "expected the keyword OFF, found " + quoted(in.tokens()[0]));
     std::vector<std::string_view> header(in.tokens().begin() + 1, in.tokens().end());
@@ -133,12 +211,15 @@ IndexedMesh parse_off(std::string_view text) {
     const long nv = to_integer(header[0], count_line, "the number of vertices");
     const long nf = to_integer(header[1], count_line, "the number of faces");
     if (nv < 0 || nf < 0) throw ParseError("parse-error", count_line, "the counts must not be negative");
+    // Refused from the header, before anything is reserved or read (issue 13).
+    if (nv > limits.max_vertices) throw ParseError("too-large", count_line, too_many(nv, "vertices", limits.max_vertices));
+    if (nf > limits.max_faces) throw ParseError("too-large", count_line, too_many(nf, "faces", limits.max_faces));
     // Room for what the header announces, but never more than the text can hold (a vertex
     // line has at least 6 bytes, "0 0 0\n", a face line 8), so a false header cannot ask
     // for gigabytes.
     IndexedMesh m;
-    const std::size_t vertices = std::min<std::size_t>(static_cast<std::size_t>(nv), text.size() / 6 + 1);
-    const std::size_t faces = std::min<std::size_t>(static_cast<std::size_t>(nf), text.size() / 8 + 1);
+    const std::size_t vertices = std::min<std::size_t>(static_cast<std::size_t>(nv), text_size / 6 + 1);
+    const std::size_t faces = std::min<std::size_t>(static_cast<std::size_t>(nf), text_size / 8 + 1);
     m.positions.reserve(3 * vertices);
     m.face_offsets.reserve(faces + 1);
     m.face_vertices.reserve(3 * faces);
@@ -150,9 +231,9 @@ IndexedMesh parse_off(std::string_view text) {
         if (t.size() < 3)
             throw ParseError("parse-error", in.number(), "expected x y z of " + vertex_name(v) + ", found " +
                              std::to_string(t.size()) + " number(s)");
-        const double x = to_number(t[0], in.number(), "the x coordinate");
-        const double y = to_number(t[1], in.number(), "the y coordinate");
-        const double z = to_number(t[2], in.number(), "the z coordinate");
+        const double x = to_coordinate(t[0], in.number(), "the x coordinate", limits);
+        const double y = to_coordinate(t[1], in.number(), "the y coordinate", limits);
+        const double z = to_coordinate(t[2], in.number(), "the z coordinate", limits);
         m.add_vertex(x, y, z);
     }
     std::vector<int32_t> corners;
@@ -165,6 +246,7 @@ IndexedMesh parse_off(std::string_view text) {
         if (n < 0 || static_cast<std::size_t>(n) + 1 > t.size())
             throw ParseError("parse-error", in.number(), face_name(f) + " announces " + std::string(t[0]) +
                              " vertex indices but the line has " + std::to_string(t.size() - 1));
+        check_corners(n, f, in.number(), limits);
         corners.clear();
         for (long i = 0; i < n; ++i) {
             const long v = to_integer(t[1 + i], in.number(), "a vertex index");
@@ -180,25 +262,44 @@ IndexedMesh parse_off(std::string_view text) {
     return m;
 }
 
-IndexedMesh parse_obj(std::string_view text) {
+// The OBJ limits checked by a first pass that stores nothing (OBJ has no header), so a
+// file over them is refused before anything grows.
+void prescan_obj(LineReader& in, const MeshLimits& limits) {
+    long vertices = 0, faces = 0;
+    while (in.next()) {
+        const std::string_view key = in.tokens()[0];
+        if (key == "v" && ++vertices > limits.max_vertices)
+            throw ParseError("too-large", in.number(), too_many(vertices, "vertices or more", limits.max_vertices));
+        if (key == "f") {
+            if (++faces > limits.max_faces) throw ParseError("too-large", in.number(), too_many(faces, "faces or more", limits.max_faces));
+            check_corners(static_cast<long>(in.tokens().size()) - 1, faces - 1, in.number(), limits);
+        }
+    }
+}
+
+IndexedMesh read_obj(LineReader& in, const MeshLimits& limits) {
     IndexedMesh m;
     // Face references as written (1-based, or negative = relative to the vertices read so
     // far), resolved once every vertex is known; flat arrays, one entry per face or corner.
     std::vector<long> refs;
     std::vector<int32_t> ref_offsets{0}, face_lines;
     std::vector<long> vertices_before;
-    LineReader in(text);
     while (in.next()) {
         const auto& t = in.tokens();
         const std::string_view key = t[0];
         if (key == "v") {
             if (t.size() < 4)
                 throw ParseError("parse-error", in.number(), "expected 'v x y z', found " + std::to_string(t.size() - 1) + " number(s)");
-            const double x = to_number(t[1], in.number(), "the x coordinate");
-            const double y = to_number(t[2], in.number(), "the y coordinate");
-            const double z = to_number(t[3], in.number(), "the z coordinate");
+            if (m.vertex_count() >= limits.max_vertices)
+                throw ParseError("too-large", in.number(), too_many(static_cast<long>(m.vertex_count()) + 1, "vertices or more", limits.max_vertices));
+            const double x = to_coordinate(t[1], in.number(), "the x coordinate", limits);
+            const double y = to_coordinate(t[2], in.number(), "the y coordinate", limits);
+            const double z = to_coordinate(t[3], in.number(), "the z coordinate", limits);
             m.add_vertex(x, y, z);
         } else if (key == "f") {
+            if (face_lines.size() >= static_cast<std::size_t>(limits.max_faces))
+                throw ParseError("too-large", in.number(), too_many(static_cast<long>(face_lines.size()) + 1, "faces or more", limits.max_faces));
+            check_corners(static_cast<long>(t.size()) - 1, static_cast<long>(face_lines.size()), in.number(), limits);
             for (std::size_t i = 1; i < t.size(); ++i) {
                 const std::string_view index = t[i].substr(0, t[i].find('/'));
                 const long v = to_integer(index, in.number(), "a vertex index (i, i/t, i//n or i/t/n)");
@@ -230,6 +331,33 @@ IndexedMesh parse_obj(std::string_view text) {
         m.add_face(corners.data(), static_cast<int32_t>(corners.size()));
     }
     return m;
+}
+
+} // namespace
+
+IndexedMesh parse_off(std::string_view text, const MeshLimits& limits) {
+    LineReader in(text);
+    return read_off(in, text.size(), limits);
+}
+
+IndexedMesh parse_off(const TextSource& source, const MeshLimits& limits) {
+    LineReader in(source);
+    // Reservations are capped by the header and the limits alone (the size is not known).
+    return read_off(in, 8 * static_cast<std::size_t>(std::max(limits.max_vertices, limits.max_faces)), limits);
+}
+
+IndexedMesh parse_obj(std::string_view text, const MeshLimits& limits) {
+    LineReader scan(text);
+    prescan_obj(scan, limits);
+    LineReader in(text);
+    return read_obj(in, limits);
+}
+
+IndexedMesh parse_obj(const TextSource& source, const MeshLimits& limits) {
+    LineReader scan(source);
+    prescan_obj(scan, limits);
+    LineReader in(source);
+    return read_obj(in, limits);
 }
 
 namespace {

@@ -19,24 +19,35 @@ glm::dvec3 newell_vector(const double* p, const int32_t* corners, int32_t n) {
     return 0.5 * s;
 }
 
-std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh) {
+std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh, const std::vector<int32_t>& face_offsets,
+                                   const std::vector<int32_t>& face_vertices) {
+    require(face_offsets.size() == static_cast<std::size_t>(mesh.face_count()) + 1, "mismatched-face-set",
+            "the face set has " + std::to_string(static_cast<long>(face_offsets.size()) - 1) + " faces but the mesh has " +
+                std::to_string(mesh.face_count()));
     std::vector<FacePlane> out(mesh.face_count());
     for (int32_t f = 0; f < mesh.face_count(); ++f) {
-        const std::vector<int32_t> c = mesh.vertices_of_face(f);
+        const int32_t* c = face_vertices.data() + face_offsets[f];
+        const int32_t n = face_offsets[f + 1] - face_offsets[f];
+        require(n >= 3, "mismatched-face-set", "face " + face_label(f) + " of the face set has fewer than three corners");
         const glm::dvec3 p1 = mesh.position(c[0]), p2 = mesh.position(c[1]), p3 = mesh.position(c[2]);
-        const glm::dvec3 n = glm::cross(p2 - p1, p3 - p1);
-        const glm::dvec3 nn = newell_vector(mesh.positions().data(), c.data(), static_cast<int32_t>(c.size()));
+        const glm::dvec3 cross = glm::cross(p2 - p1, p3 - p1);
+        const glm::dvec3 nn = newell_vector(mesh.positions().data(), c, n);
         glm::dvec3 centroid(0.0);
-        for (int32_t v : c) centroid += mesh.position(v);
-        centroid /= static_cast<double>(c.size());
+        for (int32_t i = 0; i < n; ++i) centroid += mesh.position(c[i]);
+        centroid /= static_cast<double>(n);
         const double dn = -glm::dot(nn, centroid);
         double residual = 0;
         const double len = glm::length(nn);
         if (len > 0)
-            for (int32_t v : c) residual = std::max(residual, std::abs(glm::dot(nn, mesh.position(v)) + dn) / len);
-        out[f] = {glm::dvec4(n, -glm::dot(n, p1)), glm::dvec4(nn, dn), residual};
+            for (int32_t i = 0; i < n; ++i) residual = std::max(residual, std::abs(glm::dot(nn, mesh.position(c[i])) + dn) / len);
+        out[f] = {glm::dvec4(cross, -glm::dot(cross, p1)), {c[0], c[1], c[2]}, glm::dvec4(nn, dn), residual};
     }
     return out;
+}
+
+std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh) {
+    const IndexedMesh faces = mesh.face_set();
+    return face_planes(mesh, faces.face_offsets, faces.face_vertices);
 }
 
 void newell_normals(const WingedEdgeMesh& mesh, std::vector<double>& normals) {

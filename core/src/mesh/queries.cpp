@@ -234,7 +234,11 @@ QueryAnswer adjacency_lists_query(QueryKind kind, int32_t element, const Adjacen
     case QueryKind::FacesAroundVertex: read_list(t.vertex_face_offsets, t.vertex_faces); break;
     case QueryKind::EdgesAroundVertex: read_list(t.vertex_offsets, t.vertex_edges); break;
     case QueryKind::EdgesOfFace: read_list(t.face_offsets, t.face_edges); break;
-    case QueryKind::NeighboursOfFace: read_list(t.face_offsets, t.face_faces); break;
+    case QueryKind::NeighboursOfFace:
+        // FF lists the face across each side: a face sharing two sides appears twice.
+        read_list(t.face_offsets, t.face_faces);
+        keep_first_appearance(a.answer);
+        break;
     case QueryKind::FacesOfEdge:
         for (int side = 0; side < 2; ++side) add_once(a.answer, rd(t.edge_faces, 2 * element + side));
         break;
@@ -382,6 +386,8 @@ QueryAnswer winged_edge_query(QueryKind kind, int32_t element, const WingedEdgeM
             e = is_left ? r.end_left : r.start_right;
             ++reads;
         } while (e != first && ++steps <= static_cast<std::size_t>(w.edge_count()));
+        // A face met across two of f's edges is one neighbour (a set, docs/api-mesh.md).
+        if (kind == QueryKind::NeighboursOfFace) keep_first_appearance(a.answer);
         break;
     }
     case QueryKind::FacesOfEdge: {

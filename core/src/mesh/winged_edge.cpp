@@ -5,6 +5,9 @@
 // explains every problem; the fast path only has to notice that something is wrong.
 #include "wingspline/mesh/winged_edge.h"
 
+#include <cstdio>
+#include <string>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -316,6 +319,19 @@ WingedEdgeMesh WingedEdgeMesh::build_impl(const IndexedMesh& mesh, const BuildOp
 }
 
 void WingedEdgeMesh::set_position(int32_t v, const glm::dvec3& p) {
+    // The same bound as building (limits.h): a vertex moved to 1e300 would give NaN normals
+    // and a state the page cannot reload. Refused before anything changes.
+    for (int k = 0; k < 3; ++k) {
+        const double c = p[k];
+        const std::string where = vertex_label(v) + " cannot move to " + "xyz"[k] + " = ";
+        if (!std::isfinite(c))
+            throw Error("non-finite-coordinate", where + std::to_string(c) + ": a coordinate must be a finite number");
+        if (std::abs(c) > kMaxCoordinate) {
+            char buf[64];
+            std::snprintf(buf, sizeof buf, "%g", c);
+            throw Error("coordinate-out-of-range", where + buf + ": coordinates are limited to 1e9 in size");
+        }
+    }
     positions_[3 * v] = p.x;
     positions_[3 * v + 1] = p.y;
     positions_[3 * v + 2] = p.z;
@@ -400,12 +416,28 @@ std::vector<int32_t> WingedEdgeMesh::vertices_of_face(int32_t f) const {
     return out;
 }
 
+void keep_first_appearance(std::vector<int32_t>& v) {
+    std::vector<int32_t> seen(v);
+    std::sort(seen.begin(), seen.end());
+    seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+    std::vector<char> taken(seen.size(), 0);
+    std::size_t out = 0;
+    for (int32_t x : v) {
+        const auto i = static_cast<std::size_t>(std::lower_bound(seen.begin(), seen.end(), x) - seen.begin());
+        if (!taken[i]) taken[i] = 1, v[out++] = x;
+    }
+    v.resize(out);
+}
+
 std::vector<int32_t> WingedEdgeMesh::face_neighbours(int32_t f) const {
+    // Distinct faces in the order the walk first meets them: a face across two of f's
+    // edges is one neighbour (a set, docs/api-mesh.md).
     std::vector<int32_t> out;
     for (int32_t e : edges_of_face(f)) {
         const int32_t g = edges_[e].left == f ? edges_[e].right : edges_[e].left;
         if (g != kNone) out.push_back(g);
     }
+    keep_first_appearance(out);
     return out;
 }
 

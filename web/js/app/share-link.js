@@ -8,6 +8,31 @@ import { validatePartial } from './schema.js';
 
 export const FORMAT = 'wingspline';
 export const MAX_LINK_CHARS = 200000;
+// The most a link may unpack to. A real state compresses well under 10:1, so a link of
+// MAX_LINK_CHARS (about 150 KB of deflate) unpacks to under 1.5 MB; a compressed bomb
+// (deflate reaches about 1000:1) is stopped here while it inflates (issue 13).
+export const MAX_STATE_BYTES = 16 * 2 ** 20;
+
+// Inflates deflate-raw bytes, refusing once more than `cap` bytes have come out.
+async function inflateCapped(bytes, cap) {
+  const reader = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('deflate-raw')).getReader();
+  const chunks = [];
+  let total = 0;
+  for (;;) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    total += value.length;
+    if (total > cap) {
+      await reader.cancel().catch(() => {});
+      throw new Error(`it unpacks to more than ${cap / 2 ** 20} MB, far more than any lesson state`);
+    }
+    chunks.push(value);
+  }
+  const out = new Uint8Array(total);
+  let at = 0;
+  for (const c of chunks) { out.set(c, at); at += c.length; }
+  return out;
+}
 
 function toBase64Url(bytes) {
   let binary = '';
@@ -115,7 +140,7 @@ export async function decodeState(lesson, text) {
   if (text.length > MAX_LINK_CHARS) throw new Error('it is far longer than any lesson state');
   let json;
   try {
-    json = new TextDecoder('utf-8', { fatal: true }).decode(await pipe(fromBase64Url(text), new DecompressionStream('deflate-raw')));
+    json = new TextDecoder('utf-8', { fatal: true }).decode(await inflateCapped(fromBase64Url(text), MAX_STATE_BYTES));
   } catch (err) {
     throw new Error(err.message.startsWith('it ') ? err.message : 'it is truncated or damaged (it does not decompress)');
   }

@@ -250,11 +250,16 @@ export class Mesh {
     return c;
   }
 
-  // Plane equations per face: [{cross: [A, B, C, D], newell: [A, B, C, D], residual}].
+  // Plane equations per face: [{cross: [A, B, C, D], crossCorners: [P1, P2, P3], newell:
+  // [A, B, C, D], residual}]. The cross product uses the face's own first three corners (as
+  // given, whatever its stored face edge), named in crossCorners.
   planes() {
-    const r = unwrap(this.#raw.meshPlanes(this.#live()));
+    // With chosen face edges the faces as given are kept with the other representations.
+    const handle = this.#faceSet !== null ? this.#representationsReady() : this.#live();
+    const r = unwrap(this.#raw.meshPlanes(handle));
     return Array.from(r.residual, (residual, f) => ({
       cross: Array.from(r.cross.subarray(4 * f, 4 * f + 4)),
+      crossCorners: Array.from(r.crossCorners.subarray(3 * f, 3 * f + 3)),
       newell: Array.from(r.newell.subarray(4 * f, 4 * f + 4)),
       residual,
     }));
@@ -405,6 +410,8 @@ export class Mesh {
 }
 
 export function createMeshApi(raw) {
+  const { maxCoordinate, maxFaceCorners, maxVertices, maxFaces } = unwrap(raw.meshLimits());
+  const meshLimits = Object.freeze({ maxCoordinate, maxFaceCorners, maxVertices, maxFaces });
   function named(name, a = 0, b = 0) {
     return unwrap(raw.meshNamed(name, a, b));
   }
@@ -444,11 +451,17 @@ export function createMeshApi(raw) {
       const r = unwrap(raw.meshValidateIndexed(positions, faceOffsets, faceVertices));
       return { ok: r.valid, problems: r.problems };
     },
+    // The one set of mesh limits (the core's limits.h), for the page and the state format:
+    // {maxCoordinate, maxFaceCorners, maxVertices, maxFaces}.
+    meshLimits,
     // Text -> {positions, faces}. Errors: 'parse-error', 'truncated-file',
-    // 'index-out-of-range' with error.line (1-based) and the line in the message.
-    parseMesh(text, { format = 'off', layout } = {}) {
+    // 'index-out-of-range', 'coordinate-out-of-range', 'face-too-large', 'too-large' (more
+    // vertices or faces than meshLimits; checkCounts: false lifts that) with error.line
+    // (1-based) and the line in the message. A file over the limits is refused before it
+    // is copied into the module's memory.
+    parseMesh(text, { format = 'off', layout, checkCounts = true } = {}) {
       if (typeof text !== 'string') fail('invalid-argument', 'parseMesh needs the file contents as a string');
-      const r = raw.meshParse(utf8.encode(text), String(format));
+      const r = raw.meshParse(utf8.encode(text), String(format), checkCounts !== false);
       if (!r.ok) {
         const err = new WingsplineError(r.code, r.message);
         if (r.line !== undefined) err.line = r.line;

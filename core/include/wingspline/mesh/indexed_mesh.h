@@ -3,6 +3,7 @@
 // tables"; lecture 001, "pointers to a vertex list"), and the validation report that says,
 // in a student's words, everything that keeps it from being a winged-edge mesh.
 #include "wingspline/error.h"
+#include "wingspline/mesh/limits.h"
 
 #include <cstdint>
 #include <initializer_list>
@@ -10,11 +11,6 @@
 #include <vector>
 
 namespace wingspline::mesh {
-
-// The largest coordinate magnitude a mesh may have: squares and pair products stay far
-// from overflow in every plane and normal computation (validation code
-// coordinate-out-of-range beyond it).
-inline constexpr double kMaxCoordinate = 1e100;
 
 // The invalid sentinel of every element index ("-1 = none").
 constexpr int32_t kNone = -1;

@@ -4,6 +4,7 @@
 // A = 1/2 sum (z_i + z_i+1)(y_i - y_i+1), ...), with the planarity residual.
 #include "wingspline/mesh/winged_edge.h"
 
+#include <array>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -12,7 +13,8 @@
 namespace wingspline::mesh {
 
 struct FacePlane {
-    glm::dvec4 cross;  // (A, B, C) = P1P2 x P1P3 of the first three vertices; D by substitution of P1
+    glm::dvec4 cross;  // (A, B, C) = P1P2 x P1P3 of the face's first three corners; D by substitution of P1
+    std::array<int32_t, 3> cross_corners; // the vertices used as P1, P2, P3 (so a lesson can show them)
     glm::dvec4 newell; // (A, B, C) = Newell's sums (half the cross product for a triangle); D through the centroid
     double residual;   // max distance of a vertex from the Newell plane (same units as positions)
 };
@@ -20,6 +22,14 @@ struct FacePlane {
 // Newell's (A, B, C) of the polygon corners[0..n) with positions[3*v + k].
 glm::dvec3 newell_vector(const double* positions, const int32_t* corners, int32_t n);
 
+// The planes of the faces as given: face f's corners are face_vertices[face_offsets[f] ..
+// face_offsets[f+1]) in the order the mesh was built from (P1, P2, P3 = its first three
+// corners, lecture 001), positions the winged edge's current ones. Throws
+// Error("mismatched-face-set") when the face set does not have the mesh's face count.
+std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh, const std::vector<int32_t>& face_offsets,
+                                   const std::vector<int32_t>& face_vertices);
+// The same with each face read back from the winged edge (from its stored edge): the faces
+// as given only when the mesh was built with the default face edges.
 std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh);
 // Unit normals by Newell's method, normals[3*f + k]; a degenerate face gets (0, 0, 0).
 void newell_normals(const WingedEdgeMesh& mesh, std::vector<double>& normals);

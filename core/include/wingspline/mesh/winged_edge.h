@@ -78,6 +78,9 @@ struct FaceStep {
     int32_t next = kNone;
 };
 
+// Removes repeats from v, keeping each element where it first appears (n log n).
+void keep_first_appearance(std::vector<int32_t>& v);
+
 class WingedEdgeMesh {
 public:
     // Builds the structure. Without options.edges, edges are numbered in order of first
@@ -105,6 +108,8 @@ public:
     }
     const std::vector<double>& positions() const { return positions_; }
     const std::vector<EdgeRecord>& edges() const { return edges_; }
+    // Throws Error("non-finite-coordinate" / "coordinate-out-of-range") beyond kMaxCoordinate
+    // (limits.h) and then changes nothing.
     void set_position(int32_t v, const glm::dvec3& p);
 
     // The lecture's rule, one step: the edge after e counter-clockwise around v.
@@ -135,7 +140,7 @@ public:
     std::vector<FaceStep> face_edge_steps(int32_t f) const;
     std::vector<int32_t> vertices_of_face(int32_t f) const;       // CCW, first = S-side of face edge walk
     std::array<int32_t, 2> faces_of_edge(int32_t e) const { return {edges_[e].left, edges_[e].right}; }
-    std::vector<int32_t> face_neighbours(int32_t f) const;        // across each edge, kNone skipped
+    std::vector<int32_t> face_neighbours(int32_t f) const;        // distinct faces across f's edges, first met first
 
     // The indexed face set read back from the structure: each face walked from its face
     // edge. With the default face edges this is the face set the mesh was built from.

@@ -259,7 +259,8 @@ function drawWalk(painter, model, state, colors) {
   if (frame.current >= 0 && !frame.done) highlightEdge(painter, model, frame.current, { stroke: current, width: 11, alpha: 0.55 });
   const zoom = state.view.zoom;
   const labelled = model.E <= LABEL_LIMIT;
-  frame.found.forEach((e, k) => {
+  for (let k = 0; k < frame.foundCount; k += 1) {
+    const e = frame.order[k];
     // Found edges keep their S -> E arrow and their label on top of the highlight.
     painter.arrow(...edgeEnds(model, P, e, zoom), { stroke: found, width: 4.5 });
     if (labelled) {
@@ -270,7 +271,7 @@ function drawWalk(painter, model, state, colors) {
     const x = P[3 * s] + (P[3 * t] - P[3 * s]) * 0.7; const y = P[3 * s + 1] + (P[3 * t + 1] - P[3 * s + 1]) * 0.7;
     painter.circle(x, y, 10, { fill: found, stroke: colors.background, width: 1.5 });
     painter.text(x, y, String(k + 1), { fill: colors.background, font: 12, weight: 700 });
-  });
+  }
   if (!frame.done && frame.next >= 0 && frame.line >= 2) highlightEdge(painter, model, frame.next, { stroke: found, width: 3, dash: [6, 6] });
 }
 

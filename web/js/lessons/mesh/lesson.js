@@ -12,6 +12,9 @@ import { vLabel, fLabel, eLabel } from './labels.js';
 
 export const TABS = ['winged', 'faces', 'vertex-face', 'adjacency', 'edge-list', 'queries', 'storage', 'planes'];
 export const QUERY_KINDS = ['faces-around-vertex', 'edges-around-vertex', 'edges-of-face', 'neighbours-of-face', 'faces-of-edge'];
+// The state format's bounds on an imported mesh. They must equal the core's file limits
+// (api.meshLimits, checked in tests/wasm/mesh-trust.test.mjs); the schema is built before
+// the core loads, so the lead's schema wiring may read them from the API instead.
 const MAX_IMPORT_VERTICES = 200000;
 const MAX_IMPORT_FACES = 200000;
 
@@ -166,8 +169,10 @@ function describe(model, state) {
   return `${kind}: ${model.V} vertices, ${model.E} edges, ${model.F} faces, ${state.mode3d ? '3D view' : '2D view'}. ${labels}${walk}`;
 }
 
-// Importers: the core parses (its message names the line); the page keeps its mesh when
-// parsing or building fails, because the shell only replaces the state after compute.
+// Importers: the core parses (its message names the line) and refuses what breaks the
+// mesh limits (api.meshLimits: counts from an OFF header before reading on, corners per
+// face, coordinates); the page keeps its mesh when parsing or building fails, because
+// the shell only replaces the state after compute.
 function importer(format) {
   return (textContent, state, name, ctx) => {
     const parsed = ctx.api.parseMesh(textContent, { format });
@@ -179,9 +184,6 @@ function importer(format) {
     ctx.meshPanels?.showReport(name, report.problems);
     if (errors.length) {
       throw Object.assign(new Error(`${errors[0].message}${errors.length > 1 ? ` (and ${errors.length - 1} more problem${errors.length > 2 ? 's' : ''}, listed in the validation report)` : ''}`), { code: errors[0].code });
-    }
-    if (positions.length / 3 > MAX_IMPORT_VERTICES || faces.length > MAX_IMPORT_FACES) {
-      throw Object.assign(new Error(`${name} has ${positions.length / 3} vertices and ${faces.length} faces; this page imports up to ${MAX_IMPORT_VERTICES} of each`), { code: 'too-large' });
     }
     return { ...state, meshKind: 'file', imported: { name: name.slice(0, 120), positions, faces }, moved: [], vertex: 0, face: 0, step: 0, query: { ...state.query, vertex: 0, face: 0, edge: 0 } };
   };

@@ -5,7 +5,7 @@
 import { h } from '../../app/dom.js';
 import { createPlayer } from '../../app/player.js';
 import { MESH_KINDS } from './mesh-source.js';
-import { PSEUDOCODE } from './walk.js';
+import { PSEUDOCODE, foundEdges } from './walk.js';
 import { createRepresentationTabs } from './tabs.js';
 import { vLabel, fLabel } from './labels.js';
 
@@ -236,8 +236,8 @@ export function setupPanels(ctx) {
     const what = model.walkKind === 'vertex' ? vLabel(model.walkElement) : fLabel(model.walkElement);
     stepLabel.textContent = `step ${model.stepIndex} / ${Math.max(0, model.frames.length - 1)}`;
     narration.textContent = frame ? frame.text : `${what}: nothing to walk.`;
-    const shown = frame ? frame.found.slice(-FOUND_SHOWN) : [];
-    const skipped = frame ? frame.found.length - shown.length : 0;
+    const shown = frame ? foundEdges(frame, FOUND_SHOWN) : [];
+    const skipped = frame ? frame.foundCount - shown.length : 0;
     found.replaceChildren('Found so far: ',
       ...(skipped ? [h('span', { class: 'walk-none' }, `(${skipped} earlier) `)] : []),
       ...(shown.length ? shown.map((e, k) => h('span', { class: 'found-edge' }, `${skipped + k + 1}. e`, h('sub', {}, String(e + 1))))

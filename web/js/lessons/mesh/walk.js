@@ -38,24 +38,33 @@ export function normaliseSteps(raw, kind) {
 }
 
 const LIST_LIMIT = 12;
-function shortList(labels) {
-  return labels.length <= LIST_LIMIT ? labels.join(', ') : `${labels.slice(0, LIST_LIMIT).join(', ')}, … (${labels.length - LIST_LIMIT} more)`;
+// The first labels of a list of `total` (only the first LIST_LIMIT + 1 are needed).
+function shortList(labels, total) {
+  return total <= LIST_LIMIT ? labels.join(', ') : `${labels.slice(0, LIST_LIMIT).join(', ')}, … (${total - LIST_LIMIT} more)`;
+}
+
+// The edges found by frame `frame`, in the order found (a copy of at most the last `last`).
+export function foundEdges(frame, last = Infinity) {
+  return frame.order.slice(Math.max(0, frame.foundCount - last), frame.foundCount);
 }
 
 // Frame 0: initialise (the vertex or face table row and its edge column are read).
 // Frames 1..n: at edge k the test column (S or L) and the wing column are read, the edge
 // is reported (found) and the next edge is known. Frame n+1: the While test sees e₀ again.
+// "Found so far" is one list for the whole walk (`order`, every frame holds the same
+// array) and a count per frame: a copy per frame made memory grow with the square of the
+// steps, and a 40,000-triangle fan's walk crashed the tab (issue 13).
 export function walkFrames(kind, element, steps) {
   const frames = [];
+  const order = steps.map((s) => s.edge);
   const label = kind === 'vertex' ? vLabel(element) : fLabel(element);
   const first = steps.length ? steps[0].edge : -1;
   frames.push({
     line: 0, table: kind, row: element, read: kind === 'vertex' ? VERTEX_EDGE_COLUMN : FACE_EDGE_COLUMN, compared: null,
-    current: first, next: first, found: [],
+    current: first, next: first, order, foundCount: 0,
     text: steps.length ? `Initialize: the ${kind} table stores ${eLabel(first)} for ${label}; start there.` : `${label} has no edge: nothing to walk.`,
   });
   steps.forEach((s, k) => {
-    const found = steps.slice(0, k + 1).map((x) => x.edge);
     let line;
     let read;
     let compared;
@@ -72,14 +81,14 @@ export function walkFrames(kind, element, steps) {
       why = s.metAtFirst ? `${label} is the Left face of ${eLabel(s.edge)}, so read E:L` : `${label} is the Right face of ${eLabel(s.edge)}, so read S:R`;
     }
     frames.push({
-      line, table: 'edge', row: s.edge, read, compared, current: s.edge, next: s.next, found,
+      line, table: 'edge', row: s.edge, read, compared, current: s.edge, next: s.next, order, foundCount: k + 1,
       text: `Found ${eLabel(s.edge)}. ${why}: the next edge is ${eLabel(s.next)}.`,
     });
   });
   if (steps.length) {
     frames.push({
-      line: 4, table: 'edge', row: first, read: null, compared: null, current: first, next: first, found: steps.map((s) => s.edge),
-      text: `Back at ${eLabel(first)} = e₀: the loop ends after ${steps.length} edges: ${shortList(steps.map((s) => eLabel(s.edge)))}.`,
+      line: 4, table: 'edge', row: first, read: null, compared: null, current: first, next: first, order, foundCount: order.length,
+      text: `Back at ${eLabel(first)} = e₀: the loop ends after ${steps.length} edges: ${shortList(order.slice(0, LIST_LIMIT + 1).map(eLabel), order.length)}.`,
       done: true,
     });
   }

@@ -1,0 +1,33 @@
+#pragma once
+// The mesh limits, one set (issue 13): the core enforces them where a value enters (reading
+// a file, building, moving a vertex) and the JS API exposes them (api.meshLimits), so the
+// page and the state format read these numbers instead of copying them.
+#include <cstdint>
+#include <limits>
+
+namespace wingspline::mesh {
+
+// The largest coordinate magnitude a mesh may have (build, import, setVertexPosition:
+// code coordinate-out-of-range beyond it). It is the state format's bound on any number
+// (docs/state-format.md, |x| <= 1e9), so a mesh the page accepts is one it can reload; and
+// squares and pair products (<= 1e18) stay far from overflow in every plane and normal
+// computation, where the former bound of 1e100 was only the overflow margin.
+inline constexpr double kMaxCoordinate = 1e9;
+
+// What a mesh file may hold (parse_off / parse_obj; the state format keeps the same).
+struct MeshLimits {
+    double max_coordinate;    // |x|, |y|, |z|; finite values beyond it: coordinate-out-of-range
+    int32_t max_face_corners; // corners of one face: face-too-large
+    int32_t max_vertices;     // vertices of the file: too-large
+    int32_t max_faces;        // faces of the file: too-large
+};
+
+// The page's import limits: 200,000 vertices and faces (the lesson stays interactive, the
+// state stays storable), 1,000 corners per face.
+inline constexpr MeshLimits kFileLimits{kMaxCoordinate, 1000, 200000, 200000};
+// The same with the element counts lifted (benchmarks and large-file tests): coordinates
+// and corners per face are still limited.
+inline constexpr MeshLimits kUnlimitedCounts{kMaxCoordinate, 1000, std::numeric_limits<int32_t>::max(),
+                                             std::numeric_limits<int32_t>::max()};
+
+} // namespace wingspline::mesh
