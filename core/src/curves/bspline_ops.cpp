@@ -162,7 +162,7 @@ KnotInsertion insert_knot(const Curve& curve, double u) {
     return r;
 }
 
-std::vector<BezierSegment> to_bezier_segments(const Curve& curve) {
+std::vector<BezierSegment> to_bezier_segments(const Curve& curve, std::size_t* work) {
     Curve c = as_explicit_bspline(curve);
     const int p = c.degree;
     const double a = c.knots[p];
@@ -176,8 +176,10 @@ std::vector<BezierSegment> to_bezier_segments(const Curve& curve) {
         for (;;) {
             int m = 0;
             for (double x : c.knots) m += x == v ? 1 : 0;
+            if (work) *work += c.knots.size();
             if (m >= p) break;
             c = insert_knot(c, v).curve;
+            if (work) *work += c.points.size() + c.weights.size();
         }
     }
     const int K = control_point_count(c);

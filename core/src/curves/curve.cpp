@@ -3,7 +3,6 @@
 #include "messages.h"
 #include "wingspline/curves/basis_matrix.h"
 #include "wingspline/curves/bspline_basis.h"
-#include "wingspline/curves/linear_algebra.h"
 #include "wingspline/error.h"
 
 #include <algorithm>
@@ -196,6 +195,18 @@ void validate(const Curve& c) {
                     throw Error("nodes-not-increasing", "the parameters u_i must increase strictly, but u_" +
                                                             std::to_string(i - 1) + " = " + num(c.nodes[i - 1]) + " >= u_" +
                                                             std::to_string(i) + " = " + num(c.nodes[i]));
+            // Distinct relative to their spread (any offset and scale is fine).
+            const double spread = c.nodes.back() - c.nodes.front();
+            require(std::isfinite(spread), "nodes-out-of-range",
+                    "the parameters u_0 = " + num(c.nodes.front()) + " and u_" + std::to_string(K - 1) + " = " +
+                        num(c.nodes.back()) + " are too far apart to subtract in double precision");
+            for (std::size_t i = 1; i < c.nodes.size(); ++i)
+                if (c.nodes[i] - c.nodes[i - 1] < kMinNodeSeparation * spread)
+                    throw Error("nodes-too-close",
+                                "the parameters u_" + std::to_string(i - 1) + " = " + num(c.nodes[i - 1]) + " and u_" +
+                                    std::to_string(i) + " = " + num(c.nodes[i]) + " are closer than " +
+                                    num(kMinNodeSeparation) + " of the whole range " + range(c.nodes.front(), c.nodes.back()) +
+                                    "; between them the curve would be dominated by rounding. Move them apart");
         }
         break;
     }
@@ -277,15 +288,20 @@ CurveEvaluator::CurveEvaluator(const Curve& curve) : curve_(curve) {
         break;
     }
     case CurveKind::Interpolation: {
-        const int n = K - 1;
-        std::vector<double> u = curve_.nodes;
-        if (u.empty())
-            for (int i = 0; i <= n; ++i) u.push_back(static_cast<double>(i) / n);
-        // Lecture 000: rows (u_i^n ... u_i^0), unknowns (a_n ... a_0).
-        std::vector<double> V = vandermonde(u);
-        segment_coefficients_.push_back(solve(V, curve_.points, K, d));
-        absolute_parameter_ = true;
-        domain_ = {u.front(), u.back()};
+        nodes_ = interpolation_nodes(curve_);
+        // 2^node_shift_ brings the spread into [2, 4) exactly (a power of two), so the
+        // scaled differences d_m keep the relative accuracy of u - u_m.
+        int e = 0;
+        std::frexp(nodes_.back() - nodes_.front(), &e);
+        node_shift_ = 2 - e;
+        node_weights_.resize(nodes_.size());
+        for (int j = 0; j < K; ++j) {
+            double product = 1;
+            for (int m = 0; m < K; ++m)
+                if (m != j) product *= std::ldexp(nodes_[j] - nodes_[m], node_shift_);
+            node_weights_[j] = 1.0 / product;
+        }
+        domain_ = {nodes_.front(), nodes_.back()};
         break;
     }
     }
@@ -316,12 +332,84 @@ void CurveEvaluator::check_params(double* out, std::size_t n, std::size_t index_
 
 void CurveEvaluator::evaluate(const double* params, std::size_t n, int order, double* out) const {
     if (spline_) evaluate_spline(params, n, order, false, out);
+    else if (!nodes_.empty()) evaluate_interpolation(params, n, order, false, out);
     else evaluate_polynomial(params, n, order, false, out);
 }
 
 void CurveEvaluator::evaluate_all(const double* params, std::size_t n, int max_order, double* out) const {
     if (spline_) evaluate_spline(params, n, max_order, true, out);
+    else if (!nodes_.empty()) evaluate_interpolation(params, n, max_order, true, out);
     else evaluate_polynomial(params, n, max_order, true, out);
+}
+
+std::vector<double> interpolation_nodes(const Curve& c) {
+    if (!c.nodes.empty()) return c.nodes;
+    const int n = control_point_count(c) - 1;
+    std::vector<double> u;
+    for (int i = 0; i <= n; ++i) u.push_back(static_cast<double>(i) / n);
+    return u;
+}
+
+// The Lagrange product form, in the Taylor variable t of the scaled parameter: L_j(s + t) =
+// w_j prod_(m != j) (d_m + t), truncated after t^o (o = the highest derivative needed). The
+// products are built from a running prefix and stored suffixes, so there is no division
+// and no cancellation at a node: there d_j = 0 exactly and only L_j survives. Cost per
+// parameter: O(K) for points, O(K o^2) with derivatives.
+void CurveEvaluator::evaluate_interpolation(const double* params, std::size_t n, int max_order, bool all,
+                                            double* out) const {
+    const int d = dim_;
+    const int K = static_cast<int>(nodes_.size());
+    const int o = std::min(max_order, K - 1); // derivatives above the degree vanish
+    const int terms = o + 1;
+    const int first_order = all ? 0 : max_order;
+    const int orders = max_order - first_order + 1;
+    std::vector<double> diff(static_cast<std::size_t>(K));
+    std::vector<double> suffix(static_cast<std::size_t>((K + 1) * terms)); // prod_(i >= m) (d_i + t)
+    std::vector<double> prefix(static_cast<std::size_t>(terms)), next(prefix.size()), basis(prefix.size());
+    std::vector<double> taylor(static_cast<std::size_t>(terms * d));
+    for (std::size_t j = 0; j < n; ++j) {
+        const double u = params[j];
+        int at_node = -1;
+        for (int m = 0; m < K; ++m) {
+            diff[m] = std::ldexp(u - nodes_[m], node_shift_);
+            if (diff[m] == 0) at_node = m;
+        }
+        std::fill(suffix.begin() + static_cast<std::ptrdiff_t>(K) * terms, suffix.end(), 0.0);
+        suffix[static_cast<std::size_t>(K) * terms] = 1;
+        for (int m = K - 1; m >= 0; --m) {
+            const double* s = &suffix[static_cast<std::size_t>(m + 1) * terms];
+            double* r = &suffix[static_cast<std::size_t>(m) * terms];
+            r[0] = diff[m] * s[0];
+            for (int k = 1; k < terms; ++k) r[k] = diff[m] * s[k] + s[k - 1];
+        }
+        std::fill(prefix.begin(), prefix.end(), 0.0);
+        prefix[0] = 1;
+        std::fill(taylor.begin(), taylor.end(), 0.0);
+        for (int m = 0; m < K; ++m) {
+            const double* s = &suffix[static_cast<std::size_t>(m + 1) * terms];
+            for (int k = 0; k < terms; ++k) {
+                double v = 0;
+                for (int i = 0; i <= k; ++i) v += prefix[i] * s[k - i];
+                basis[k] = node_weights_[m] * v;
+            }
+            for (int k = 0; k < terms; ++k)
+                for (int c = 0; c < d; ++c) taylor[k * d + c] += basis[k] * curve_.points[m * d + c];
+            next[0] = diff[m] * prefix[0];
+            for (int k = 1; k < terms; ++k) next[k] = diff[m] * prefix[k] + prefix[k - 1];
+            std::swap(prefix, next);
+        }
+        double* dst = out + j * static_cast<std::size_t>(orders * d);
+        for (int q = first_order; q <= max_order; ++q) {
+            double factorial = 1;
+            for (int i = 2; i <= q; ++i) factorial *= i;
+            for (int c = 0; c < d; ++c) {
+                double v = 0;
+                if (q == 0 && at_node >= 0) v = curve_.points[at_node * d + c]; // the data, exactly
+                else if (q <= o) v = std::ldexp(factorial * taylor[q * d + c], q * node_shift_);
+                dst[(q - first_order) * d + c] = v;
+            }
+        }
+    }
 }
 
 void CurveEvaluator::evaluate_polynomial(const double* params, std::size_t n, int max_order, bool all,
@@ -333,12 +421,9 @@ void CurveEvaluator::evaluate_polynomial(const double* params, std::size_t n, in
     const int orders = max_order - first_order + 1;
     for (std::size_t j = 0; j < n; ++j) {
         double u = params[j];
-        int s = 0;
-        if (!absolute_parameter_) {
-            s = std::min(static_cast<int>(std::floor(u - domain_.start)), segments - 1);
-            s = std::max(s, 0);
-            u -= domain_.start + s;
-        }
+        int s = std::min(static_cast<int>(std::floor(u - domain_.start)), segments - 1);
+        s = std::max(s, 0);
+        u -= domain_.start + s;
         const double* C = segment_coefficients_[s].data(); // row r multiplies u^(deg - r)
         for (int o = first_order; o <= max_order; ++o) {
             double* dst = out + (static_cast<std::size_t>(j) * orders + (o - first_order)) * d;
