@@ -118,6 +118,12 @@ void validate_weights(const Curve& c, int K) {
         if (!(std::isfinite(c.weights[i]) && c.weights[i] > 0))
             throw Error("invalid-weight", "weight w_" + std::to_string(i) + " of point " + std::to_string(i) + " is " +
                                               num(c.weights[i]) + "; weights must be positive finite numbers");
+    const auto [low, high] = std::minmax_element(c.weights.begin(), c.weights.end());
+    if (*high / kMaxWeightRatio > *low)
+        throw Error("weight-ratio-out-of-range",
+                    "weights w_" + std::to_string(high - c.weights.begin()) + " = " + num(*high) + " and w_" +
+                        std::to_string(low - c.weights.begin()) + " = " + num(*low) + " differ by more than a factor " +
+                        num(kMaxWeightRatio) + "; only their ratios matter, so bring them closer together");
 }
 
 } // namespace
@@ -230,8 +236,9 @@ CurveEvaluator::CurveEvaluator(const Curve& curve) : curve_(curve) {
         else knots_ = curve_.knots.empty() ? uniform_knots(K, degree_) : curve_.knots;
         const int hd = rational_ ? d + 1 : d;
         homogeneous_.resize(static_cast<std::size_t>(K * hd));
+        const int shift = weight_shift(curve_.weights); // weights at any scale (issue 13.5)
         for (int i = 0; i < K; ++i) {
-            const double w = rational_ && !curve_.weights.empty() ? curve_.weights[i] : 1.0;
+            const double w = rational_ && !curve_.weights.empty() ? std::ldexp(curve_.weights[i], shift) : 1.0;
             for (int k = 0; k < d; ++k) homogeneous_[i * hd + k] = w * curve_.points[i * d + k];
             if (rational_) homogeneous_[i * hd + d] = w;
         }
@@ -340,6 +347,40 @@ void CurveEvaluator::evaluate_all(const double* params, std::size_t n, int max_o
     if (spline_) evaluate_spline(params, n, max_order, true, out);
     else if (!nodes_.empty()) evaluate_interpolation(params, n, max_order, true, out);
     else evaluate_polynomial(params, n, max_order, true, out);
+}
+
+int weight_shift(const std::vector<double>& weights) {
+    double largest = 0;
+    for (double w : weights) largest = std::max(largest, w);
+    if (!(largest > 0 && std::isfinite(largest))) return 0;
+    int e = 0;
+    std::frexp(largest, &e);
+    return -e;
+}
+
+std::vector<double> to_homogeneous(const std::vector<double>& points, int dim, const std::vector<double>& weights) {
+    if (weights.empty()) return points;
+    const int shift = weight_shift(weights);
+    const std::size_t K = weights.size();
+    std::vector<double> h(K * (dim + 1));
+    for (std::size_t i = 0; i < K; ++i) {
+        const double w = std::ldexp(weights[i], shift);
+        for (int k = 0; k < dim; ++k) h[i * (dim + 1) + k] = w * points[i * dim + k];
+        h[i * (dim + 1) + dim] = w;
+    }
+    return h;
+}
+
+void from_homogeneous(const std::vector<double>& h, int dim, int shift, std::vector<double>& points,
+                      std::vector<double>* weights) {
+    const std::size_t K = h.size() / (dim + 1);
+    points.resize(K * dim);
+    if (weights) weights->resize(K);
+    for (std::size_t i = 0; i < K; ++i) {
+        const double w = h[i * (dim + 1) + dim];
+        if (weights) (*weights)[i] = std::ldexp(w, -shift);
+        for (int k = 0; k < dim; ++k) points[i * dim + k] = h[i * (dim + 1) + k] / w;
+    }
 }
 
 std::vector<double> interpolation_nodes(const Curve& c) {

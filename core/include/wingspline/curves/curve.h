@@ -139,6 +139,19 @@ private:
 std::vector<double> evaluate_curve(const Curve& curve, const std::vector<double>& params, int order = 0);
 std::vector<double> evaluate_curve_all(const Curve& curve, const std::vector<double>& params, int max_order);
 
+// Weights at any scale (issue 13.5): a uniform factor cancels in a rational curve, so every
+// rational computation first multiplies the weights by 2^weight_shift(weights), which puts
+// the largest in [0.5, 1) exactly (a power of two), and reports weights scaled back.
+// validate() refuses weights whose ratio exceeds kMaxWeightRatio, so the smallest scaled
+// weight stays a normal number.
+constexpr double kMaxWeightRatio = 1e300;
+int weight_shift(const std::vector<double>& weights);
+// (w x, w y, [w z,] w) with the scaled weights, stride dim + 1; the points when no weights.
+std::vector<double> to_homogeneous(const std::vector<double>& points, int dim, const std::vector<double>& weights);
+// Back from homogeneous coordinates: points = h / w, weights (if asked) = w 2^-shift.
+void from_homogeneous(const std::vector<double>& h, int dim, int shift, std::vector<double>& points,
+                      std::vector<double>* weights);
+
 // The nodes u_i of an interpolation curve (its own, or the default u_i = i/n).
 std::vector<double> interpolation_nodes(const Curve& curve);
 
