@@ -187,7 +187,7 @@ void validate(const Curve& c) {
         require(K <= kMaxInterpolationPoints, "degree-out-of-range",
                 "polynomial interpolation through " + std::to_string(K) + " points has degree " +
                     std::to_string(K - 1) + "; at most " + std::to_string(kMaxInterpolationPoints) +
-                    " points are supported (the Vandermonde system becomes too ill-conditioned)");
+                    " points are supported (with more, the curve between the points would magnify the rounding of the data by more than 1e7)");
         if (!c.nodes.empty()) {
             require(c.nodes.size() == static_cast<std::size_t>(K), "wrong-node-count",
                     std::to_string(K) + " points need " + std::to_string(K) + " parameter values u_i, not " +
