@@ -362,15 +362,22 @@ val interpolation_system(const val& spec) {
     return guarded([&] {
         const Curve c = curve_from(spec);
         const SegmentMatrices s = segment_matrices(c, 0);
-        std::vector<double> u = c.nodes;
-        const int n = curve_degree(c);
-        if (u.empty())
-            for (int i = 0; i <= n; ++i) u.push_back(static_cast<double>(i) / n);
+        const std::vector<double> u = interpolation_nodes(c);
         val r = val::object();
         r.set("nodes", to_typed_array(u));
         r.set("vandermonde", to_typed_array(vandermonde(u)));
         r.set("inverse", to_typed_array(s.M));
         r.set("coefficients", to_typed_array(s.C));
+        return r;
+    });
+}
+
+// The core's limits a lesson must respect (issue 13.1: the lesson reads them, no copy).
+val curve_limits() {
+    return guarded([&] {
+        val r = val::object();
+        r.set("maxInterpolationPoints", kMaxInterpolationPoints);
+        r.set("maxDegree", kMaxDegree);
         return r;
     });
 }
@@ -400,4 +407,5 @@ EMSCRIPTEN_BINDINGS(wingspline_curves) {
     emscripten::function("curveJointContinuity", &curve_joint_continuity);
     emscripten::function("patchSample", &patch_sample);
     emscripten::function("interpolationSystem", &interpolation_system);
+    emscripten::function("curveLimits", &curve_limits);
 }

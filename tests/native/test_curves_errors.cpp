@@ -69,7 +69,8 @@ TEST_CASE("weight and degree and point count errors", "[curves][errors]") {
     expect_error([&] { validate(make_curve(CurveKind::Bezier, {1, 2})); }, "too-few-points", "at least 2");
     expect_error([&] { validate(make_curve(CurveKind::Bezier, zigzag(22))); }, "degree-out-of-range", "degree 21");
     expect_error([&] { validate(make_curve(CurveKind::CatmullRom, zigzag(3))); }, "too-few-points", "at least 4");
-    expect_error([&] { validate(make_curve(CurveKind::Interpolation, zigzag(17))); }, "degree-out-of-range", "16 points");
+    expect_error([&] { validate(make_curve(CurveKind::Interpolation, zigzag(kMaxInterpolationPoints + 1))); }, "degree-out-of-range",
+                 std::to_string(kMaxInterpolationPoints) + " points");
     Curve h = make_curve(CurveKind::Hermite, zigzag(3));
     h.tangents = {1, 0};
     expect_error([&] { validate(h); }, "wrong-tangent-count", "one tangent per point");

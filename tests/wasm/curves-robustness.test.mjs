@@ -4,26 +4,16 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline, WingsplineError } from 'wingspline';
+import { random } from './seeded-random.mjs';
 
 const api = await loadWingspline();
-
-// mulberry32: a tiny deterministic generator
-function random(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 const KINDS = ['bezier', 'bspline', 'nurbs', 'hermite', 'catmull-rom', 'cardinal', 'interpolation'];
 const CODES = new Set(['unknown-curve-kind', 'invalid-dimension', 'invalid-argument', 'invalid-points', 'non-finite-input',
   'too-few-points', 'degree-out-of-range', 'wrong-knot-count', 'decreasing-knots', 'knot-multiplicity-exceeded',
   'empty-domain', 'wrong-weight-count', 'invalid-weight', 'wrong-tangent-count', 'wrong-node-count',
-  'nodes-not-increasing', 'parameter-out-of-range', 'singular-matrix']);
+  'nodes-not-increasing', 'parameter-out-of-range', 'singular-matrix',
+  'nodes-too-close', 'nodes-out-of-range', 'vandermonde-out-of-range', 'weight-ratio-out-of-range']);
 
 function randomCurve(rnd) {
   const pick = (list) => list[Math.floor(rnd() * list.length)];

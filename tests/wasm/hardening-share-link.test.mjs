@@ -19,6 +19,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { decodeState, encodeState } from '../../web/js/app/share-link.js';
 import { number, integer, boolean, oneOf, text, list, object } from '../../web/js/app/schema.js';
+import { random } from './seeded-random.mjs';
 
 const SEED = 0x5eed2026;
 const MUTATED_LINKS = 2500;
@@ -27,16 +28,7 @@ const HOSTILE_STATES = 600;
 const MAX_MESSAGE_CHARS = 400; // one line a student reads in the message bar
 
 // A deterministic generator (mulberry32), so a failure reproduces from the printed case.
-function rng(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+const rng = random;
 
 // A lesson shaped like the real ones (points, knots, weights, degree, flags, a label, the
 // view), with a migration from version 1 and a cross-field rule, so every stage of the

@@ -37,29 +37,6 @@ void check_t(double t) {
         throw Error("parameter-out-of-range", "the parameter t = " + detail::num(t) + " is outside the Bezier domain [0, 1]");
 }
 
-// Homogeneous coordinates: stride dim+1 (w x, w y, w z, w) when rational, else the points.
-std::vector<double> lift(const std::vector<double>& points, int dim, const std::vector<double>& weights) {
-    if (weights.empty()) return points;
-    const std::size_t K = weights.size();
-    std::vector<double> h(K * (dim + 1));
-    for (std::size_t i = 0; i < K; ++i) {
-        for (int k = 0; k < dim; ++k) h[i * (dim + 1) + k] = weights[i] * points[i * dim + k];
-        h[i * (dim + 1) + dim] = weights[i];
-    }
-    return h;
-}
-
-void project(const std::vector<double>& h, int dim, std::vector<double>& points, std::vector<double>& weights) {
-    const std::size_t K = h.size() / (dim + 1);
-    points.resize(K * dim);
-    weights.resize(K);
-    for (std::size_t i = 0; i < K; ++i) {
-        const double w = h[i * (dim + 1) + dim];
-        weights[i] = w;
-        for (int k = 0; k < dim; ++k) points[i * dim + k] = h[i * (dim + 1) + k] / w;
-    }
-}
-
 } // namespace
 
 std::vector<double> bernstein(int n, double t) {
@@ -74,14 +51,14 @@ DeCasteljauSteps de_casteljau(const std::vector<double>& points, int dim, double
     t = std::fmin(1.0, std::fmax(0.0, t));
     const bool rational = !weights.empty();
     const int hd = rational ? dim + 1 : dim;
-    std::vector<double> level = lift(points, dim, weights);
+    std::vector<double> level = to_homogeneous(points, dim, weights);
     DeCasteljauSteps r;
     r.degree = n;
     r.dim = dim;
     for (int step = 0; step <= n; ++step) {
         if (rational) {
             std::vector<double> p, w;
-            project(level, dim, p, w);
+            from_homogeneous(level, dim, weight_shift(weights), p, &w);
             r.levels.push_back(p);
             r.level_weights.push_back(w);
         } else {
@@ -138,7 +115,7 @@ ElevatedBezier elevate_bezier(const std::vector<double>& points, int dim, const 
             "elevating degree " + std::to_string(n) + " would exceed the largest degree " + std::to_string(kMaxDegree));
     const bool rational = !weights.empty();
     const int hd = rational ? dim + 1 : dim;
-    const std::vector<double> h = lift(points, dim, weights);
+    const std::vector<double> h = to_homogeneous(points, dim, weights);
     std::vector<double> q(static_cast<std::size_t>((n + 2) * hd));
     for (int i = 0; i <= n + 1; ++i) {
         const double a = static_cast<double>(i) / (n + 1);
@@ -149,7 +126,7 @@ ElevatedBezier elevate_bezier(const std::vector<double>& points, int dim, const 
         }
     }
     ElevatedBezier e;
-    if (rational) project(q, dim, e.points, e.weights);
+    if (rational) from_homogeneous(q, dim, weight_shift(weights), e.points, &e.weights);
     else e.points = std::move(q);
     return e;
 }

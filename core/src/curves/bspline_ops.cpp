@@ -53,31 +53,12 @@ void check_parameter(const Curve& c, double u, const char* what) {
                     std::string(what) + " = " + detail::num(u) + " is outside the domain " + detail::range(a, b));
 }
 
-std::vector<double> homogeneous(const Curve& c) {
-    const int d = c.dim;
-    const int K = control_point_count(c);
-    if (c.weights.empty()) return c.points;
-    std::vector<double> h(static_cast<std::size_t>(K * (d + 1)));
-    for (int i = 0; i < K; ++i) {
-        for (int k = 0; k < d; ++k) h[i * (d + 1) + k] = c.weights[i] * c.points[i * d + k];
-        h[i * (d + 1) + d] = c.weights[i];
-    }
-    return h;
-}
+std::vector<double> homogeneous(const Curve& c) { return to_homogeneous(c.points, c.dim, c.weights); }
 
-void project(const std::vector<double>& h, int d, bool rational, std::vector<double>& points, std::vector<double>* weights) {
-    if (!rational) {
-        points = h;
-        return;
-    }
-    const std::size_t n = h.size() / (d + 1);
-    points.resize(n * d);
-    if (weights) weights->resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const double w = h[i * (d + 1) + d];
-        if (weights) (*weights)[i] = w;
-        for (int k = 0; k < d; ++k) points[i * d + k] = h[i * (d + 1) + k] / w;
-    }
+void project(const std::vector<double>& h, int d, bool rational, int shift, std::vector<double>& points,
+             std::vector<double>* weights) {
+    if (rational) from_homogeneous(h, d, shift, points, weights);
+    else points = h;
 }
 
 } // namespace
@@ -92,6 +73,7 @@ DeBoorSteps de_boor(const Curve& curve, double u) {
     const bool rational = c.kind == CurveKind::Nurbs;
     const int hd = rational ? d + 1 : d;
     const std::vector<double> h = homogeneous(c);
+    const int shift = weight_shift(c.weights);
     const auto& t = c.knots;
     DeBoorSteps s;
     s.degree = p;
@@ -101,7 +83,7 @@ DeBoorSteps de_boor(const Curve& curve, double u) {
     std::vector<double> level(h.begin() + (l - p) * hd, h.begin() + (l + 1) * hd);
     for (int r = 0; r <= p; ++r) {
         std::vector<double> pts, w;
-        project(level, d, rational, pts, &w);
+        project(level, d, rational, shift, pts, &w);
         s.levels.push_back(pts);
         if (rational) s.level_weights.push_back(w);
         if (r == p) break;
@@ -138,6 +120,7 @@ KnotInsertion insert_knot(const Curve& curve, double u) {
     const bool rational = c.kind == CurveKind::Nurbs;
     const int hd = rational ? d + 1 : d;
     const std::vector<double> h = homogeneous(c);
+    const int shift = weight_shift(c.weights);
     KnotInsertion r;
     const int k = find_span_in(t.data(), first_span(t, p), last_span(t, K), u);
     r.span = k;
@@ -158,40 +141,57 @@ KnotInsertion insert_knot(const Curve& curve, double u) {
         for (int m = 0; m < hd; ++m) q[i * hd + m] = h[(i - 1) * hd + m];
     r.curve = c;
     r.curve.knots.insert(r.curve.knots.begin() + k + 1, u);
-    project(q, d, rational, r.curve.points, rational ? &r.curve.weights : nullptr);
+    project(q, d, rational, shift, r.curve.points, rational ? &r.curve.weights : nullptr);
     return r;
 }
 
-std::vector<BezierSegment> to_bezier_segments(const Curve& curve) {
-    Curve c = as_explicit_bspline(curve);
-    const int p = c.degree;
-    const double a = c.knots[p];
-    const double b = c.knots[control_point_count(c)];
-    // Raise every distinct knot value in [a, b] to multiplicity p (the ends too, which
-    // clamps an unclamped curve): then span l has t_(l-p+1..l) = t_l and t_(l+1..l+p) = t_(l+1).
-    std::vector<double> values;
-    for (double v : c.knots)
-        if (v >= a && v <= b && (values.empty() || values.back() != v)) values.push_back(v);
-    for (double v : values) {
-        for (;;) {
-            int m = 0;
-            for (double x : c.knots) m += x == v ? 1 : 0;
-            if (m >= p) break;
-            c = insert_knot(c, v).curve;
-        }
-    }
+std::vector<BezierSegment> to_bezier_segments(const Curve& curve, std::size_t* work) {
+    const Curve c = as_explicit_bspline(curve);
     const int K = control_point_count(c);
+    const int p = c.degree;
     const int d = c.dim;
+    const bool rational = c.kind == CurveKind::Nurbs;
+    const int hd = rational ? d + 1 : d;
+    const std::vector<double> h = homogeneous(c);
+    const int shift = weight_shift(c.weights);
+    const auto& t = c.knots;
+    // Each span [a, b) = [t_l, t_l+1) is converted on its own from the p + 1 points
+    // P_l-p..P_l and the 2p knots U_k = t_l-p+1+k (k = 0..2p-1) that act on it: inserting a
+    // and then b locally until each has multiplicity p (two de Boor triangles, lecture 001)
+    // gives its Bezier points f(a^(p-j), b^j). Work O(p^2) per span, so O(K p^2) in all
+    // (inserting every knot into the whole curve copied all K points each time: O(K^2)).
     std::vector<BezierSegment> segments;
+    std::vector<double> q(static_cast<std::size_t>((p + 1) * hd)), right(q.size());
+    std::size_t ops = 0;
+    auto combine = [&](int i, double alpha) { // q_i = (1 - alpha) q_i-1 + alpha q_i
+        for (int k = 0; k < hd; ++k) q[i * hd + k] = (1 - alpha) * q[(i - 1) * hd + k] + alpha * q[i * hd + k];
+        ops += static_cast<std::size_t>(hd);
+    };
     for (int l = p; l < K; ++l) {
-        if (!(c.knots[l] < c.knots[l + 1])) continue;
-        BezierSegment s;
-        s.start = c.knots[l];
-        s.end = c.knots[l + 1];
-        s.points.assign(c.points.begin() + (l - p) * d, c.points.begin() + (l + 1) * d);
-        if (c.kind == CurveKind::Nurbs) s.weights.assign(c.weights.begin() + (l - p), c.weights.begin() + l + 1);
-        segments.push_back(std::move(s));
+        if (!(t[l] < t[l + 1])) continue;
+        const double* U = &t[l - p + 1];
+        const double a = U[p - 1], b = U[p];
+        std::copy(h.begin() + static_cast<std::ptrdiff_t>(l - p) * hd, h.begin() + static_cast<std::ptrdiff_t>(l + 1) * hd, q.begin());
+        // Triangle at a: after level r, q_p = f(a^r, U_p..U_2p-1-r); keep them (right[p-r]).
+        std::copy(q.begin() + p * hd, q.end(), right.begin() + p * hd);
+        for (int r = 1; r <= p; ++r) {
+            for (int i = p; i >= r; --i) combine(i, (a - U[i - 1]) / (U[i + p - r] - U[i - 1]));
+            std::copy(q.begin() + p * hd, q.end(), right.begin() + (p - r) * hd);
+        }
+        ops += static_cast<std::size_t>(2 * (p + 1) * hd);
+        // Triangle at b on the knots (a^p, U_p..U_2p-1): entry i is final after level i,
+        // and then it is f(a^(p-i), b^i), the Bezier point i.
+        q = right;
+        for (int r = 1; r <= p; ++r)
+            for (int i = p; i >= r; --i) combine(i, (b - a) / (U[i + p - r] - a));
+        BezierSegment seg;
+        seg.start = a;
+        seg.end = b;
+        project(q, d, rational, shift, seg.points, rational ? &seg.weights : nullptr);
+        ops += static_cast<std::size_t>((p + 1) * hd);
+        segments.push_back(std::move(seg));
     }
+    if (work) *work += ops;
     return segments;
 }
 

@@ -3,7 +3,6 @@
 #include "messages.h"
 #include "wingspline/curves/basis_matrix.h"
 #include "wingspline/curves/bspline_basis.h"
-#include "wingspline/curves/linear_algebra.h"
 #include "wingspline/error.h"
 
 #include <algorithm>
@@ -119,6 +118,12 @@ void validate_weights(const Curve& c, int K) {
         if (!(std::isfinite(c.weights[i]) && c.weights[i] > 0))
             throw Error("invalid-weight", "weight w_" + std::to_string(i) + " of point " + std::to_string(i) + " is " +
                                               num(c.weights[i]) + "; weights must be positive finite numbers");
+    const auto [low, high] = std::minmax_element(c.weights.begin(), c.weights.end());
+    if (*high / kMaxWeightRatio > *low)
+        throw Error("weight-ratio-out-of-range",
+                    "weights w_" + std::to_string(high - c.weights.begin()) + " = " + num(*high) + " and w_" +
+                        std::to_string(low - c.weights.begin()) + " = " + num(*low) + " differ by more than a factor " +
+                        num(kMaxWeightRatio) + "; only their ratios matter, so bring them closer together");
 }
 
 } // namespace
@@ -182,7 +187,7 @@ void validate(const Curve& c) {
         require(K <= kMaxInterpolationPoints, "degree-out-of-range",
                 "polynomial interpolation through " + std::to_string(K) + " points has degree " +
                     std::to_string(K - 1) + "; at most " + std::to_string(kMaxInterpolationPoints) +
-                    " points are supported (the Vandermonde system becomes too ill-conditioned)");
+                    " points are supported (with more, the curve between the points would magnify the rounding of the data by more than 1e7)");
         if (!c.nodes.empty()) {
             require(c.nodes.size() == static_cast<std::size_t>(K), "wrong-node-count",
                     std::to_string(K) + " points need " + std::to_string(K) + " parameter values u_i, not " +
@@ -196,6 +201,18 @@ void validate(const Curve& c) {
                     throw Error("nodes-not-increasing", "the parameters u_i must increase strictly, but u_" +
                                                             std::to_string(i - 1) + " = " + num(c.nodes[i - 1]) + " >= u_" +
                                                             std::to_string(i) + " = " + num(c.nodes[i]));
+            // Distinct relative to their spread (any offset and scale is fine).
+            const double spread = c.nodes.back() - c.nodes.front();
+            require(std::isfinite(spread), "nodes-out-of-range",
+                    "the parameters u_0 = " + num(c.nodes.front()) + " and u_" + std::to_string(K - 1) + " = " +
+                        num(c.nodes.back()) + " are too far apart to subtract in double precision");
+            for (std::size_t i = 1; i < c.nodes.size(); ++i)
+                if (c.nodes[i] - c.nodes[i - 1] < kMinNodeSeparation * spread)
+                    throw Error("nodes-too-close",
+                                "the parameters u_" + std::to_string(i - 1) + " = " + num(c.nodes[i - 1]) + " and u_" +
+                                    std::to_string(i) + " = " + num(c.nodes[i]) + " are closer than " +
+                                    num(kMinNodeSeparation) + " of the whole range " + range(c.nodes.front(), c.nodes.back()) +
+                                    "; between them the curve would be dominated by rounding. Move them apart");
         }
         break;
     }
@@ -219,8 +236,9 @@ CurveEvaluator::CurveEvaluator(const Curve& curve) : curve_(curve) {
         else knots_ = curve_.knots.empty() ? uniform_knots(K, degree_) : curve_.knots;
         const int hd = rational_ ? d + 1 : d;
         homogeneous_.resize(static_cast<std::size_t>(K * hd));
+        const int shift = weight_shift(curve_.weights); // weights at any scale (issue 13.5)
         for (int i = 0; i < K; ++i) {
-            const double w = rational_ && !curve_.weights.empty() ? curve_.weights[i] : 1.0;
+            const double w = rational_ && !curve_.weights.empty() ? std::ldexp(curve_.weights[i], shift) : 1.0;
             for (int k = 0; k < d; ++k) homogeneous_[i * hd + k] = w * curve_.points[i * d + k];
             if (rational_) homogeneous_[i * hd + d] = w;
         }
@@ -277,15 +295,20 @@ CurveEvaluator::CurveEvaluator(const Curve& curve) : curve_(curve) {
         break;
     }
     case CurveKind::Interpolation: {
-        const int n = K - 1;
-        std::vector<double> u = curve_.nodes;
-        if (u.empty())
-            for (int i = 0; i <= n; ++i) u.push_back(static_cast<double>(i) / n);
-        // Lecture 000: rows (u_i^n ... u_i^0), unknowns (a_n ... a_0).
-        std::vector<double> V = vandermonde(u);
-        segment_coefficients_.push_back(solve(V, curve_.points, K, d));
-        absolute_parameter_ = true;
-        domain_ = {u.front(), u.back()};
+        nodes_ = interpolation_nodes(curve_);
+        // 2^node_shift_ brings the spread into [2, 4) exactly (a power of two), so the
+        // scaled differences d_m keep the relative accuracy of u - u_m.
+        int e = 0;
+        std::frexp(nodes_.back() - nodes_.front(), &e);
+        node_shift_ = 2 - e;
+        node_weights_.resize(nodes_.size());
+        for (int j = 0; j < K; ++j) {
+            double product = 1;
+            for (int m = 0; m < K; ++m)
+                if (m != j) product *= std::ldexp(nodes_[j] - nodes_[m], node_shift_);
+            node_weights_[j] = 1.0 / product;
+        }
+        domain_ = {nodes_.front(), nodes_.back()};
         break;
     }
     }
@@ -316,12 +339,118 @@ void CurveEvaluator::check_params(double* out, std::size_t n, std::size_t index_
 
 void CurveEvaluator::evaluate(const double* params, std::size_t n, int order, double* out) const {
     if (spline_) evaluate_spline(params, n, order, false, out);
+    else if (!nodes_.empty()) evaluate_interpolation(params, n, order, false, out);
     else evaluate_polynomial(params, n, order, false, out);
 }
 
 void CurveEvaluator::evaluate_all(const double* params, std::size_t n, int max_order, double* out) const {
     if (spline_) evaluate_spline(params, n, max_order, true, out);
+    else if (!nodes_.empty()) evaluate_interpolation(params, n, max_order, true, out);
     else evaluate_polynomial(params, n, max_order, true, out);
+}
+
+int weight_shift(const std::vector<double>& weights) {
+    double largest = 0;
+    for (double w : weights) largest = std::max(largest, w);
+    if (!(largest > 0 && std::isfinite(largest))) return 0;
+    int e = 0;
+    std::frexp(largest, &e);
+    return -e;
+}
+
+std::vector<double> to_homogeneous(const std::vector<double>& points, int dim, const std::vector<double>& weights) {
+    if (weights.empty()) return points;
+    const int shift = weight_shift(weights);
+    const std::size_t K = weights.size();
+    std::vector<double> h(K * (dim + 1));
+    for (std::size_t i = 0; i < K; ++i) {
+        const double w = std::ldexp(weights[i], shift);
+        for (int k = 0; k < dim; ++k) h[i * (dim + 1) + k] = w * points[i * dim + k];
+        h[i * (dim + 1) + dim] = w;
+    }
+    return h;
+}
+
+void from_homogeneous(const std::vector<double>& h, int dim, int shift, std::vector<double>& points,
+                      std::vector<double>* weights) {
+    const std::size_t K = h.size() / (dim + 1);
+    points.resize(K * dim);
+    if (weights) weights->resize(K);
+    for (std::size_t i = 0; i < K; ++i) {
+        const double w = h[i * (dim + 1) + dim];
+        if (weights) (*weights)[i] = std::ldexp(w, -shift);
+        for (int k = 0; k < dim; ++k) points[i * dim + k] = h[i * (dim + 1) + k] / w;
+    }
+}
+
+std::vector<double> interpolation_nodes(const Curve& c) {
+    if (!c.nodes.empty()) return c.nodes;
+    const int n = control_point_count(c) - 1;
+    std::vector<double> u;
+    for (int i = 0; i <= n; ++i) u.push_back(static_cast<double>(i) / n);
+    return u;
+}
+
+// The Lagrange product form, in the Taylor variable t of the scaled parameter: L_j(s + t) =
+// w_j prod_(m != j) (d_m + t), truncated after t^o (o = the highest derivative needed). The
+// products are built from a running prefix and stored suffixes, so there is no division
+// and no cancellation at a node: there d_j = 0 exactly and only L_j survives. Cost per
+// parameter: O(K) for points, O(K o^2) with derivatives.
+void CurveEvaluator::evaluate_interpolation(const double* params, std::size_t n, int max_order, bool all,
+                                            double* out) const {
+    const int d = dim_;
+    const int K = static_cast<int>(nodes_.size());
+    const int o = std::min(max_order, K - 1); // derivatives above the degree vanish
+    const int terms = o + 1;
+    const int first_order = all ? 0 : max_order;
+    const int orders = max_order - first_order + 1;
+    std::vector<double> diff(static_cast<std::size_t>(K));
+    std::vector<double> suffix(static_cast<std::size_t>((K + 1) * terms)); // prod_(i >= m) (d_i + t)
+    std::vector<double> prefix(static_cast<std::size_t>(terms)), next(prefix.size()), basis(prefix.size());
+    std::vector<double> taylor(static_cast<std::size_t>(terms * d));
+    for (std::size_t j = 0; j < n; ++j) {
+        const double u = params[j];
+        int at_node = -1;
+        for (int m = 0; m < K; ++m) {
+            diff[m] = std::ldexp(u - nodes_[m], node_shift_);
+            if (diff[m] == 0) at_node = m;
+        }
+        std::fill(suffix.begin() + static_cast<std::ptrdiff_t>(K) * terms, suffix.end(), 0.0);
+        suffix[static_cast<std::size_t>(K) * terms] = 1;
+        for (int m = K - 1; m >= 0; --m) {
+            const double* s = &suffix[static_cast<std::size_t>(m + 1) * terms];
+            double* r = &suffix[static_cast<std::size_t>(m) * terms];
+            r[0] = diff[m] * s[0];
+            for (int k = 1; k < terms; ++k) r[k] = diff[m] * s[k] + s[k - 1];
+        }
+        std::fill(prefix.begin(), prefix.end(), 0.0);
+        prefix[0] = 1;
+        std::fill(taylor.begin(), taylor.end(), 0.0);
+        for (int m = 0; m < K; ++m) {
+            const double* s = &suffix[static_cast<std::size_t>(m + 1) * terms];
+            for (int k = 0; k < terms; ++k) {
+                double v = 0;
+                for (int i = 0; i <= k; ++i) v += prefix[i] * s[k - i];
+                basis[k] = node_weights_[m] * v;
+            }
+            for (int k = 0; k < terms; ++k)
+                for (int c = 0; c < d; ++c) taylor[k * d + c] += basis[k] * curve_.points[m * d + c];
+            next[0] = diff[m] * prefix[0];
+            for (int k = 1; k < terms; ++k) next[k] = diff[m] * prefix[k] + prefix[k - 1];
+            std::swap(prefix, next);
+        }
+        double* dst = out + j * static_cast<std::size_t>(orders * d);
+        for (int q = first_order; q <= max_order; ++q) {
+            double factorial = 1;
+            for (int i = 2; i <= q; ++i) factorial *= i;
+            for (int c = 0; c < d; ++c) {
+                double v = 0;
+                if (q == 0 && at_node >= 0) v = curve_.points[at_node * d + c]; // the data, exactly
+                else if (q <= o) v = std::ldexp(factorial * taylor[q * d + c], q * node_shift_);
+                dst[(q - first_order) * d + c] = v;
+            }
+        }
+    }
 }
 
 void CurveEvaluator::evaluate_polynomial(const double* params, std::size_t n, int max_order, bool all,
@@ -333,12 +462,9 @@ void CurveEvaluator::evaluate_polynomial(const double* params, std::size_t n, in
     const int orders = max_order - first_order + 1;
     for (std::size_t j = 0; j < n; ++j) {
         double u = params[j];
-        int s = 0;
-        if (!absolute_parameter_) {
-            s = std::min(static_cast<int>(std::floor(u - domain_.start)), segments - 1);
-            s = std::max(s, 0);
-            u -= domain_.start + s;
-        }
+        int s = std::min(static_cast<int>(std::floor(u - domain_.start)), segments - 1);
+        s = std::max(s, 0);
+        u -= domain_.start + s;
         const double* C = segment_coefficients_[s].data(); // row r multiplies u^(deg - r)
         for (int o = first_order; o <= max_order; ++o) {
             double* dst = out + (static_cast<std::size_t>(j) * orders + (o - first_order)) * d;

@@ -2,7 +2,9 @@
 
 #include "wingspline/error.h"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 
 namespace wingspline::curves {
@@ -18,6 +20,38 @@ std::vector<double> vandermonde(const std::vector<double>& u) {
         }
     }
     return V;
+}
+
+std::vector<double> vandermonde_inverse(const std::vector<double>& u) {
+    const int n = static_cast<int>(u.size());
+    std::vector<double> M(static_cast<std::size_t>(n * n), 0.0);
+    std::vector<double> a(static_cast<std::size_t>(n)), next(a.size());
+    for (int j = 0; j < n; ++j) {
+        std::fill(a.begin(), a.end(), 0.0);
+        a[0] = 1; // ascending powers of u
+        int degree = 0;
+        for (int m = 0; m < n; ++m) {
+            if (m == j) continue;
+            // multiply by (u - u_m) / (u_j - u_m)
+            const double inv = 1.0 / (u[j] - u[m]);
+            std::fill(next.begin(), next.end(), 0.0);
+            for (int k = 0; k <= degree; ++k) {
+                next[k + 1] += a[k] * inv;
+                next[k] -= u[m] * inv * a[k];
+            }
+            ++degree;
+            std::swap(a, next);
+        }
+        for (int k = 0; k < n; ++k) M[(n - 1 - k) * n + j] = a[k];
+    }
+    const std::vector<double> V = vandermonde(u);
+    for (std::size_t i = 0; i < M.size(); ++i) {
+        require(std::isfinite(M[i]) && std::isfinite(V[i]), "vandermonde-out-of-range",
+                "the Vandermonde matrix of these " + std::to_string(n) + " nodes (powers u_i^" + std::to_string(n - 1) +
+                    ") or its inverse has entries beyond the range of double precision; the curve can still be "
+                    "evaluated, but its matrix form cannot be shown. Use nodes nearer 0 or fewer points");
+    }
+    return M;
 }
 
 std::vector<double> solve(std::vector<double> A, const std::vector<double>& B, int n, int m) {

@@ -101,11 +101,12 @@ SegmentMatrices segment_matrices(const Curve& c, int segment) {
     }
     case CurveKind::Interpolation: {
         s.basis = "interpolation";
-        std::vector<double> u = c.nodes;
-        if (u.empty())
-            for (int i = 0; i <= p; ++i) u.push_back(static_cast<double>(i) / p);
-        // Lecture 000: (a_n ... a_0) = V^-1 (p_0 ... p_n), so M = V^-1 and C = M G.
-        s.M = inverse_n(vandermonde(u), p + 1);
+        const std::vector<double> u = interpolation_nodes(c);
+        // Lecture 000: (a_n ... a_0) = V^-1 (p_0 ... p_n), so M = V^-1 and C = M G. Column j
+        // of V^-1 holds the power coefficients of the Lagrange polynomial L_j, expanded
+        // factor by factor from prod_(m != j) (u - u_m) / (u_j - u_m): no elimination, so no
+        // pivot test that depends on the offset or scale of the nodes.
+        s.M = vandermonde_inverse(u);
         take_points(0);
         s.start = u.front();
         s.end = u.back();

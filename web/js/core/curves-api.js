@@ -322,6 +322,13 @@ export function createCurvesApi(raw) {
       return { curve: { ...curve, nodes: r.nodes }, nodes: r.nodes, vandermonde: r.vandermonde, inverse: r.inverse, coefficients: r.coefficients };
     },
 
+    // The core's limits: { maxInterpolationPoints, maxDegree } (lessons read them here
+    // instead of keeping a copy).
+    curveLimits() {
+      const r = unwrap(raw.curveLimits());
+      return { maxInterpolationPoints: r.maxInterpolationPoints, maxDegree: r.maxDegree };
+    },
+
     // ---- bicubic patches (lecture 002): p(u,v) = u^T M P M^T v, kind 'hermite' | 'bezier';
     // points: the 4x4 geometry matrix of 3D vectors, points[3*(4*i + j) + k] (see
     // docs/api-curves.md for the Hermite layout). Returns { nu, nv, positions, normals, du,

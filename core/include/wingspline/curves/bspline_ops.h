@@ -7,6 +7,7 @@
 // homogeneous coordinates and report the weights of every intermediate point.
 #include "wingspline/curves/curve.h"
 
+#include <cstddef>
 #include <vector>
 
 namespace wingspline::curves {
@@ -44,7 +45,9 @@ struct BezierSegment {
 };
 // Knot insertion until every knot in the domain has multiplicity p: each span becomes a
 // Bezier curve of degree p (with u = (t - start)/(end - start)).
-std::vector<BezierSegment> to_bezier_segments(const Curve& curve);
+// work (optional): incremented by the number of control-point values copied or combined,
+// the measure of the algorithm's cost that the tests check for linear growth.
+std::vector<BezierSegment> to_bezier_segments(const Curve& curve, std::size_t* work = nullptr);
 
 struct KnotInfo {
     double value = 0;

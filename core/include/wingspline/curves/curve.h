@@ -34,9 +34,18 @@ const char* curve_kind_name(CurveKind kind);
 // Degrees accepted for Bezier curves and B-splines/NURBS: 1..kMaxDegree. The limit keeps
 // the per-parameter work arrays on the stack and the basis numerically meaningful.
 constexpr int kMaxDegree = 20;
-// Polynomial interpolation through at most this many points (degree 15): beyond it the
-// Vandermonde system of lecture 000 is too ill-conditioned to show anything but rounding.
-constexpr int kMaxInterpolationPoints = 16;
+// Polynomial interpolation through at most this many points (degree 31). The curve is
+// evaluated in the Lagrange product form on nodes scaled by a power of two (exact at the
+// nodes at any offset and scale); what limits the count is the problem itself: at the
+// default equispaced nodes the Lebesgue constant (the factor by which the curve between
+// the nodes magnifies a change of the data) is 1.2e7 at 32 points and doubles with every
+// further point, so beyond 32 the drawn curve would be dominated by the rounding of the
+// data (docs/api-curves.md, "Interpolation").
+constexpr int kMaxInterpolationPoints = 32;
+// Two interpolation nodes closer than this fraction of the nodes' spread are refused
+// ('nodes-too-close'): between them the interpolant grows like spread / gap, so rounding of
+// the data would be magnified by more than 1e9.
+constexpr double kMinNodeSeparation = 1e-9;
 // A parameter this far (relative to max(1, |domain ends|)) outside the domain is rounding.
 constexpr double kParameterSlack = 1e-12;
 
@@ -115,14 +124,36 @@ private:
     // division: inverse_differences_[kCubicStride*l + ...], see curve.cpp.
     static constexpr int kCubicStride = 9;
     std::vector<double> inverse_differences_;
-    // polynomial form (hermite, catmull-rom, cardinal, interpolation)
+    // polynomial form (hermite, catmull-rom, cardinal)
     std::vector<std::vector<double>> segment_coefficients_;
-    bool absolute_parameter_ = false; // interpolation: P(u) in the global u, not u - segment
+    // interpolation: the Lagrange product form P(u) = sum_j y_j w_j prod_(m != j) d_m with
+    // d_m = (u - u_m) 2^s (s: a power of two that brings the nodes' spread into [2, 4), so
+    // the products neither overflow nor underflow) and w_j = 1 / prod_(m != j) (u_j - u_m) 2^s.
+    void evaluate_interpolation(const double* params, std::size_t n, int max_order, bool all, double* out) const;
+    std::vector<double> nodes_;
+    std::vector<double> node_weights_;
+    int node_shift_ = 0;
 };
 
 // Convenience wrappers (validate + evaluate). Output layout as CurveEvaluator::evaluate.
 std::vector<double> evaluate_curve(const Curve& curve, const std::vector<double>& params, int order = 0);
 std::vector<double> evaluate_curve_all(const Curve& curve, const std::vector<double>& params, int max_order);
+
+// Weights at any scale (issue 13.5): a uniform factor cancels in a rational curve, so every
+// rational computation first multiplies the weights by 2^weight_shift(weights), which puts
+// the largest in [0.5, 1) exactly (a power of two), and reports weights scaled back.
+// validate() refuses weights whose ratio exceeds kMaxWeightRatio, so the smallest scaled
+// weight stays a normal number.
+constexpr double kMaxWeightRatio = 1e300;
+int weight_shift(const std::vector<double>& weights);
+// (w x, w y, [w z,] w) with the scaled weights, stride dim + 1; the points when no weights.
+std::vector<double> to_homogeneous(const std::vector<double>& points, int dim, const std::vector<double>& weights);
+// Back from homogeneous coordinates: points = h / w, weights (if asked) = w 2^-shift.
+void from_homogeneous(const std::vector<double>& h, int dim, int shift, std::vector<double>& points,
+                      std::vector<double>* weights);
+
+// The nodes u_i of an interpolation curve (its own, or the default u_i = i/n).
+std::vector<double> interpolation_nodes(const Curve& curve);
 
 // The default knots of a B-spline without knots: t_j = j - p, j = 0..K+p.
 std::vector<double> uniform_knots(int count, int degree);

@@ -10,8 +10,12 @@ export const FAMILIES = [
   { id: 'bspline', label: 'Non-uniform B-spline', minPoints: 2, maxPoints: 24, lecture: '001, 002' },
   { id: 'nurbs', label: 'NURBS (weights)', minPoints: 2, maxPoints: 24, lecture: '001, 002' },
   { id: 'catmull-rom', label: 'Catmull-Rom / cardinal', minPoints: 4, maxPoints: 24, lecture: '002, 003' },
-  { id: 'interpolation', label: 'Polynomial interpolation', minPoints: 2, maxPoints: 16, lecture: '000, 004' },
+  // maxPoints null: the core's own limit, api.curveLimits().maxInterpolationPoints
+  { id: 'interpolation', label: 'Polynomial interpolation', minPoints: 2, maxPoints: null, lecture: '000, 004' },
 ];
+
+// The most points `info`'s family takes: its own figure, or the core's limit.
+export const familyMaxPoints = (info, api) => info.maxPoints ?? api.curveLimits().maxInterpolationPoints;
 
 export const FAMILY_IDS = FAMILIES.map((f) => f.id);
 export const MAX_SPLINE_DEGREE = 7;
@@ -155,7 +159,7 @@ export const defaultTangents = (points) => points.map((p, i) => {
 export function switchFamily(state, family) {
   const info = familyInfo(family);
   let points = state.points.map((p) => p.slice());
-  if (points.length < info.minPoints || points.length > info.maxPoints) points = defaultPoints[family].map((p) => p.slice());
+  if (points.length < info.minPoints || points.length > (info.maxPoints ?? Infinity)) points = defaultPoints[family].map((p) => p.slice());
   const degree = isSpline(family) ? Math.min(isSpline(state.family) ? state.degree : 3, maxDegreeFor(points.length)) : state.degree;
   const next = { ...state, family, points, degree };
   next.tangents = points.length === state.tangents.length ? state.tangents : defaultTangents(points);

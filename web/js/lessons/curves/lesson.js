@@ -11,6 +11,10 @@ import { setupPanels, updatePanels, drawPlots } from './panels.js';
 import { formatNumber } from '../../ui/mathml.js';
 
 const pair = list(number(), { min: 2, max: 2 });
+// Parse bound of the per-point lists of a share link or file; each family's own limit is
+// checked by checkState and, for interpolation, by the core (api.curveLimits(); a test
+// keeps this bound above it).
+export const MAX_LIST = 64;
 export const CONSTRUCTIONS = ['none', 'de-casteljau', 'de-boor', 'subdivide', 'elevate', 'insert-knot'];
 export const OVERLAYS = {
   polygon: 'Control polygon',
@@ -31,10 +35,10 @@ export const lesson = {
   stateVersion: 1,
   schema: {
     family: oneOf(...FAMILY_IDS),
-    points: list(pair, { min: 2, max: 24 }),
-    tangents: list(pair, { min: 0, max: 24 }),
+    points: list(pair, { min: 2, max: MAX_LIST }),
+    tangents: list(pair, { min: 0, max: MAX_LIST }),
     knots: list(number(), { min: 0, max: 40 }),
-    weights: list(number(), { min: 0, max: 24 }),
+    weights: list(number(), { min: 0, max: MAX_LIST }),
     degree: integer({ min: 1, max: 7 }),
     tension: number({ min: -1, max: 1 }),
     u: number(),
@@ -68,7 +72,8 @@ export const lesson = {
   checkState(s) {
     const K = s.points.length;
     const info = familyInfo(s.family);
-    if (K < info.minPoints || K > info.maxPoints) return `${info.label} needs ${info.minPoints} to ${info.maxPoints} points, not ${K}`;
+    // (interpolation: maxPoints null, the core refuses more than its limit when computing)
+    if (K < info.minPoints || K > (info.maxPoints ?? Infinity)) return `${info.label} needs ${info.minPoints} to ${info.maxPoints} points, not ${K}`;
     if (s.family === 'hermite' && s.tangents.length !== K) return `a Hermite curve needs one tangent per point (${K}), not ${s.tangents.length}`;
     if (s.family === 'nurbs' && s.weights.length !== K) return `a NURBS needs one weight per point (${K}), not ${s.weights.length}`;
     if (usesKnots(s.family) && s.knots.length !== K + s.degree + 1) {

@@ -7,7 +7,7 @@ import { h, panel } from '../../app/dom.js';
 import { createPlayer } from '../../app/player.js';
 import { formatNumber } from '../../ui/mathml.js';
 import {
-  FAMILIES, familyInfo, usesKnots, isSpline, hasDegreeChoice, maxDegreeFor, switchFamily, addPoint, removePoint,
+  FAMILIES, familyInfo, familyMaxPoints, usesKnots, isSpline, hasDegreeChoice, maxDegreeFor, switchFamily, addPoint, removePoint,
   withDegree, clampedKnots, uniformKnots, unclampedKnots, knotGroups, continuityLabel,
 } from './families.js';
 import { constructionsFor } from './curve-model.js';
@@ -73,7 +73,8 @@ export function setupPanels(ctx, lesson) {
   function addSelected(at = null) {
     const s = state();
     const info = familyInfo(s.family);
-    if (s.points.length >= info.maxPoints) { ctx.message.warn(`${info.label} takes at most ${info.maxPoints} points here.`); return; }
+    const most = familyMaxPoints(info, ctx.api);
+    if (s.points.length >= most) { ctx.message.warn(`${info.label} takes at most ${most} points here.`); return; }
     const sel = selectedPoint(ctx);
     const next = addPoint(s, at ? s.points.length - 1 : (sel ?? s.points.length - 1), at);
     if (commit(next)) ctx.message.info(`Added P${at ? s.points.length : (sel ?? s.points.length - 1) + 1}.`);
