@@ -12,10 +12,14 @@ namespace wingspline::curves {
 
 namespace {
 
+// |v|, scaled first so that squares neither underflow (|v| near 1e-300) nor overflow.
 double norm(const double* v, int d) {
+    double m = 0;
+    for (int k = 0; k < d; ++k) m = std::max(m, std::abs(v[k]));
+    if (!(m > 0) || !std::isfinite(m)) return m;
     double s = 0;
-    for (int k = 0; k < d; ++k) s += v[k] * v[k];
-    return std::sqrt(s);
+    for (int k = 0; k < d; ++k) s += (v[k] / m) * (v[k] / m);
+    return m * std::sqrt(s);
 }
 
 // |a x b| for dim 2 (as the z component) or 3; dim 1 gives 0.
@@ -29,16 +33,15 @@ double cross_norm(const double* a, const double* b, int d) {
 }
 
 // ---- scale first (issue 13, items 2, 4, 15)
-// Every computation below works on a copy of the curve moved to its bounding box's centre
-// and divided by a power of two near its extent: the copy's coordinates lie in [-1, 1], so
-// P', P'', |P'|^3 and the Gauss-Legendre sums can neither overflow nor underflow, and the
-// division by 2^e is exact. Results are scaled back at the end (lengths times 2^e,
-// curvatures divided by 2^e). Translation only shifts points: every family's point basis
-// sums to 1 (Hermite tangents are vectors and are not shifted).
+// Every computation below works on a copy of the curve divided by a power of two near its
+// largest coordinate: the copy's coordinates lie in [-1, 1], so P', P'', |P'|^3 and the
+// Gauss-Legendre sums can neither overflow nor underflow, and the division by 2^e is exact
+// (differences of the input's coordinates survive bit for bit; moving the copy to its centre
+// first would round them away when one point is 1e300 and the others are near 1). Results
+// are scaled back at the end (lengths times 2^e, curvatures divided by 2^e).
 struct Normalised {
-    Curve curve;        // (points - centre) / 2^exponent, tangents / 2^exponent
+    Curve curve;        // points / 2^exponent, tangents / 2^exponent
     int exponent = 0;   // the scale is 2^exponent
-    double extent = 0;  // max |coordinate| of the copy (0 for a curve that is one point), <= 1
 };
 
 void bounding_box(const Curve& c, std::vector<double>& lo, std::vector<double>& hi) {
@@ -50,62 +53,46 @@ void bounding_box(const Curve& c, std::vector<double>& lo, std::vector<double>& 
     }
 }
 
-Normalised normalised(const Curve& c, const std::vector<double>& centre, int exponent) {
+Normalised normalised(const Curve& c, int exponent) {
     Normalised n;
     n.curve = c;
     n.exponent = exponent;
-    const int d = c.dim;
-    for (std::size_t i = 0; i < n.curve.points.size(); ++i) {
-        double& x = n.curve.points[i];
-        x = std::ldexp(x - centre[i % d], -exponent);
-        n.extent = std::max(n.extent, std::abs(x));
-    }
-    for (double& t : n.curve.tangents) {
-        t = std::ldexp(t, -exponent);
-        n.extent = std::max(n.extent, std::abs(t));
-    }
+    for (double& x : n.curve.points) x = std::ldexp(x, -exponent);
+    for (double& t : n.curve.tangents) t = std::ldexp(t, -exponent);
     return n;
 }
 
-// The centre of the bounding box of all curves' points and the exponent e with every
-// |point - centre| and |tangent| below 2^e.
-int common_frame(const std::vector<const Curve*>& curves, std::vector<double>& centre) {
-    const int d = curves.front()->dim;
-    std::vector<double> lo(d, std::numeric_limits<double>::infinity()), hi(d, -std::numeric_limits<double>::infinity());
-    for (const Curve* c : curves) bounding_box(*c, lo, hi);
-    centre.assign(d, 0.0);
-    for (int k = 0; k < d; ++k) centre[k] = lo[k] / 2 + hi[k] / 2; // no overflow for +-1.7e308
+// The exponent e with every |coordinate| and |tangent| of the curves below 2^e.
+int common_exponent(const std::vector<const Curve*>& curves) {
     double extent = 0;
     for (const Curve* c : curves) {
-        for (std::size_t i = 0; i < c->points.size(); ++i) extent = std::max(extent, std::abs(c->points[i] - centre[i % d]));
+        for (double x : c->points) extent = std::max(extent, std::abs(x));
         for (double t : c->tangents) extent = std::max(extent, std::abs(t));
     }
-    if (!(extent > 0)) return 0;
     int e = 0;
-    std::frexp(extent, &e); // extent = m 2^e, 0.5 <= m < 1
+    if (extent > 0) std::frexp(extent, &e); // extent = m 2^e, 0.5 <= m < 1
     return e;
 }
 
 Normalised normalised(const Curve& c) {
     validate(c);
-    std::vector<double> centre;
-    const int e = common_frame({&c}, centre);
-    return normalised(c, centre, e);
+    return normalised(c, common_exponent({&c}));
 }
 
-// The size of a k-th derivative that is rounding, not a value, for the normalised copy: the
-// control data (extent <= 1) times (2 n / D)^k, n the degree, D the domain's length (the
-// k-th derivative of a degree-n basis on a domain of length D is at most about (2n/D)^k of
-// the data), times kRoundingFloor. A derivative this small counts as zero; a difference
-// this small as no difference.
-constexpr double kRoundingFloor = 1e-12; // relative to the normalised curve's extent
-double rounding_floor(const Normalised& n, const CurveEvaluator& ev, int order) {
-    // D: the length of one polynomial piece (B-splines: the mean span; the cubic families: 1).
-    const Curve& c = n.curve;
-    double D = ev.domain().end - ev.domain().start;
-    if (c.kind == CurveKind::BSpline || c.kind == CurveKind::Nurbs) D /= std::max(1, control_point_count(c) - ev.degree());
-    else if (c.kind == CurveKind::Hermite || c.kind == CurveKind::CatmullRom || c.kind == CurveKind::Cardinal) D = 1;
-    return kRoundingFloor * n.extent * std::pow(2.0 * std::max(1, ev.degree()) / D, order);
+// The rounding of a k-th derivative at u: kRoundingFloor * sum_i |N_i^(k)(u)| |Q_i| over the
+// control items Q_i (points and Hermite tangents) of the normalised copy. Evaluation errs by
+// about 1e-16 of that sum, so a derivative below it is zero and a difference below it is no
+// difference; the factor 1e4 between them is the margin.
+constexpr double kRoundingFloor = 1e-12;
+double rounding_floor(const Curve& c, double u, int order) {
+    const BlendingValues bv = blending_functions(c, {u}, order);
+    const int K = control_point_count(c), d = c.dim;
+    double s = 0;
+    for (int i = 0; i < bv.count; ++i) {
+        const double* q = i < K ? &c.points[i * d] : &c.tangents[(i - K) * d];
+        s += std::abs(bv.values[i]) * norm(q, d);
+    }
+    return kRoundingFloor * s;
 }
 
 // The breakpoints of the curve inside [a, b] (knots or segment joints), a and b included.
@@ -192,7 +179,19 @@ CurvatureValues curvature(const Curve& curve, const std::vector<double>& params)
     const int d = ev.dim();
     std::vector<double> jet(u.size() * 3 * d);
     ev.evaluate_all(u.data(), u.size(), 2, jet.data());
-    const double zero_speed = rounding_floor(n, ev, 1);
+    // |P'| is zero when it is below its rounding floor at u (the same test as jointContinuity's
+    // zero tangent, so the lab's table and curvature plot agree). The floor needs the blending
+    // functions at u, so it is computed only where |P'| is below a cheap bound of it: the
+    // largest |coordinate| (<= 1) times the largest possible sum |N_i'| (2n per unit of parameter).
+    double piece = ev.domain().end - ev.domain().start;
+    if (n.curve.kind == CurveKind::BSpline || n.curve.kind == CurveKind::Nurbs) {
+        const auto& t = n.curve.knots.empty() ? uniform_knots(control_point_count(n.curve), ev.degree()) : n.curve.knots;
+        for (std::size_t i = 0; i + 1 < t.size(); ++i)
+            if (t[i + 1] > t[i]) piece = std::min(piece, t[i + 1] - t[i]);
+    } else if (n.curve.kind != CurveKind::Bezier && n.curve.kind != CurveKind::Interpolation) {
+        piece = std::min(piece, 1.0);
+    }
+    const double cheap_bound = 1e3 * kRoundingFloor * 2 * std::max(1, ev.degree()) / piece;
     CurvatureValues r;
     r.curvature.resize(u.size());
     r.speed.resize(u.size());
@@ -204,7 +203,7 @@ CurvatureValues curvature(const Curve& curve, const std::vector<double>& params)
         const double* d2 = &jet[j * 3 * d + 2 * d];
         const double speed = norm(d1, d);
         r.speed[j] = std::ldexp(speed, n.exponent);
-        if (!(speed > zero_speed)) {
+        if (!(speed > cheap_bound) && !(speed > rounding_floor(n.curve, u[j], 1))) {
             r.singular[j] = 1;
             r.curvature[j] = 0;
             if (d == 2) r.signed_curvature[j] = 0;
@@ -295,9 +294,9 @@ std::string short_num(double x) {
 }
 
 double distance(const double* x, const double* y, int d) {
-    double s = 0;
-    for (int k = 0; k < d; ++k) s += (x[k] - y[k]) * (x[k] - y[k]);
-    return std::sqrt(s);
+    double g[3] = {0, 0, 0};
+    for (int k = 0; k < d; ++k) g[k] = x[k] - y[k];
+    return norm(g, d);
 }
 
 // |unit(x) - sign * unit(y)| for non-zero x, y: 0 when they point the same way (sign 1).
@@ -369,12 +368,11 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
             "curve a has dim " + std::to_string(a.dim) + " but curve b has dim " + std::to_string(b.dim));
     validate(a);
     validate(b);
-    // Everything is decided on the normalised pair (one centre, one power-of-two scale for
-    // both, issue 13 item 2), so the verdict does not depend on where the drawing is, how it
+    // Everything is decided on the normalised pair (one power-of-two scale for both, issue 13
+    // item 2), so the verdict does not depend on where the drawing is, how it
     // is turned or how large it is; the evidence is scaled back to the caller's units.
-    std::vector<double> centre;
-    const int ex = common_frame({&a, &b}, centre);
-    const Normalised na = normalised(a, centre, ex), nb = normalised(b, centre, ex);
+    const int ex = common_exponent({&a, &b});
+    const Normalised na = normalised(a, ex), nb = normalised(b, ex);
     const CurveEvaluator ea(na.curve), eb(nb.curve);
     const int d = a.dim;
     std::vector<double> jet_a(3 * d), jet_b(3 * d);
@@ -390,8 +388,13 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
     double size = 0;
     for (int k = 0; k < d; ++k) size += (hi[k] - lo[k]) * (hi[k] - lo[k]);
     size = std::sqrt(size);
-    double floor_k[3];
-    for (int k = 0; k < 3; ++k) floor_k[k] = std::max(rounding_floor(na, ea, k), rounding_floor(nb, eb, k));
+    // Rounding floors per side (a zero tangent is judged on its own side) and for a difference.
+    double floor_a[3], floor_b[3], floor_k[3];
+    for (int k = 0; k < 3; ++k) {
+        floor_a[k] = rounding_floor(na.curve, ua, k);
+        floor_b[k] = rounding_floor(nb.curve, ub, k);
+        floor_k[k] = std::max(floor_a[k], floor_b[k]);
+    }
 
     JointContinuity r;
     JointEvidence& e = r.evidence;
@@ -399,8 +402,8 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
     e.a_derivatives.resize(3 * d);
     e.b_derivatives.resize(3 * d);
     for (int k = 0; k < 3 * d; ++k) {
-        e.a_derivatives[k] = std::ldexp(A[k], ex) + (k < d ? centre[k] : 0.0);
-        e.b_derivatives[k] = std::ldexp(B[k], ex) + (k < d ? centre[k] : 0.0);
+        e.a_derivatives[k] = std::ldexp(A[k], ex);
+        e.b_derivatives[k] = std::ldexp(B[k], ex);
     }
     const double gap0 = distance(A, B, d), gap1 = distance(A + d, B + d, d), gap2 = distance(A + 2 * d, B + 2 * d, d);
     e.position_gap = std::ldexp(gap0, ex);
@@ -415,19 +418,26 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
     const bool c1 = c0 && same(gap1, std::max(na1, nb1), 1);
     const bool c2 = c1 && same(gap2, std::max(na2, nb2), 2);
     r.parametric = c2 ? 2 : c1 ? 1 : c0 ? 0 : -1;
-    e.zero_tangent_a = na1 <= floor_k[1];
-    e.zero_tangent_b = nb1 <= floor_k[1];
+    e.zero_tangent_a = na1 <= floor_a[1];
+    e.zero_tangent_b = nb1 <= floor_b[1];
     e.zero_tangent = e.zero_tangent_a || e.zero_tangent_b;
-    // Curvature vectors kappa N = (P'' - (P''.T) T) / |P'|^2 (lecture 004), on the normalised pair.
+    // Curvature vectors kappa N = (P'' - (P''.T) T) / |P'|^2 (lecture 004), each side on its own
+    // power-of-two scale (|P'| near 1, so |P'|^2 cannot underflow when one side is far smaller
+    // than the other), returned in the caller's units: kappa(c J) = kappa(J) / c.
     std::vector<double> ka(d, 0.0), kb(d, 0.0);
     auto curvature_vector = [&](const double* J, double speed, std::vector<double>& out) {
+        int f = 0;
+        std::frexp(speed, &f);
+        double j1[3], j2[3];
+        for (int k = 0; k < d; ++k) j1[k] = std::ldexp(J[d + k], -f), j2[k] = std::ldexp(J[2 * d + k], -f);
+        const double v = norm(j1, d);
         double along = 0;
-        for (int k = 0; k < d; ++k) along += J[2 * d + k] * J[d + k] / speed;
-        for (int k = 0; k < d; ++k) out[k] = (J[2 * d + k] - along * J[d + k] / speed) / (speed * speed);
+        for (int k = 0; k < d; ++k) along += j2[k] * j1[k] / v;
+        for (int k = 0; k < d; ++k) out[k] = std::ldexp((j2[k] - along * j1[k] / v) / (v * v), -f - ex);
         return norm(out.data(), d);
     };
-    if (!e.zero_tangent_a) e.curvature_a = std::ldexp(curvature_vector(A, na1, ka), -ex);
-    if (!e.zero_tangent_b) e.curvature_b = std::ldexp(curvature_vector(B, nb1, kb), -ex);
+    if (!e.zero_tangent_a) e.curvature_a = curvature_vector(A, na1, ka);
+    if (!e.zero_tangent_b) e.curvature_b = curvature_vector(B, nb1, kb);
     bool g1 = false, g2 = false;
     if (c0 && !e.zero_tangent) {
         e.ratio = nb1 / na1;
@@ -435,12 +445,14 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
         for (int k = 0; k < d; ++k) dot += A[d + k] * B[d + k];
         e.tangent_angle = std::acos(std::clamp(dot / (na1 * nb1), -1.0, 1.0));
         const double kgap = distance(ka.data(), kb.data(), d);
-        e.curvature_vector_gap = std::ldexp(kgap, -ex);
-        const double m1 = std::min(na1, nb1);
-        const double kappa_floor = floor_k[2] / (m1 * m1) + 2 * floor_k[1] * std::max(na2, nb2) / (m1 * m1 * m1);
+        e.curvature_vector_gap = kgap;
+        // The rounding of a curvature vector (caller's units): floor2 / |P'|^2 + 2 floor1 |P''| / |P'|^3.
+        const double m1 = std::ldexp(std::min(na1, nb1), ex), m2 = std::ldexp(std::max(na2, nb2), ex);
+        const double f1 = std::ldexp(floor_k[1], ex), f2 = std::ldexp(floor_k[2], ex);
+        const double kappa_floor = f2 / m1 / m1 + 2 * (f1 / m1) * (m2 / m1) / m1;
         // C^k implies G^k where the tangents are non-zero (lecture 004), so C^k counts here.
         g1 = c1 || direction_gap(A + d, B + d, d) <= tolerance;
-        g2 = g1 && (c2 || kgap <= std::max(tolerance * std::max(norm(ka.data(), d), norm(kb.data(), d)), kappa_floor));
+        g2 = g1 && (c2 || kgap <= std::max(tolerance * std::max(e.curvature_a, e.curvature_b), kappa_floor));
     } else if (!e.zero_tangent) {
         e.ratio = nb1 / na1;
     }
