@@ -327,8 +327,11 @@ val curve_joint_continuity(const val& a, const val& b, double tolerance) {
         ev.set("d2Gap", e.d2_gap);
         ev.set("ratio", e.ratio);
         ev.set("tangentAngle", e.tangent_angle);
-        ev.set("curvatureA", e.curvature_a);
-        ev.set("curvatureB", e.curvature_b);
+        // A side whose P' is zero has no curvature: null, never 0 (issue 13, item 4).
+        ev.set("curvatureA", e.zero_tangent_a ? val::null() : val(e.curvature_a));
+        ev.set("curvatureB", e.zero_tangent_b ? val::null() : val(e.curvature_b));
+        ev.set("zeroTangentA", e.zero_tangent_a);
+        ev.set("zeroTangentB", e.zero_tangent_b);
         ev.set("curvatureVectorGap", e.curvature_vector_gap);
         ev.set("zeroTangent", e.zero_tangent);
         val notes = val::array();
@@ -338,6 +341,18 @@ val curve_joint_continuity(const val& a, const val& b, double tolerance) {
         r.set("parametric", j.parametric);
         r.set("geometric", j.geometric);
         r.set("evidence", ev);
+        val wordings = val::array();
+        for (std::size_t i = 0; i < j.wordings.size(); ++i) {
+            const LectureWording& w = j.wordings[i];
+            val o = val::object();
+            o.set("id", w.id);
+            o.set("source", w.source);
+            o.set("wording", w.wording);
+            o.set("geometric", w.geometric);
+            o.set("reason", w.reason);
+            wordings.set(i, o);
+        }
+        r.set("wordings", wordings);
         return r;
     });
 }

@@ -263,3 +263,54 @@ test('Hermite joints: C1 shares the tangent, C2 also matches P\'\' from the Herm
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+// Issue 13, item 21: typing 1e300 into the inspector (as a person would: click the point,
+// type, Enter) must never put Infinity or NaN in the joint table; either the lab shows a
+// finite (or plainly undefined) curvature, or it refuses the value with a clear message.
+test('typing x = 1e300 for P1 in the inspector: the joint table shows no Infinity (or the value is refused clearly)', async () => {
+  const page = await openLab();
+  const before = await state(page);
+  const p1 = await handle(page, 'p1');
+  await page.mouse.click(p1.x, p1.y);
+  await page.waitForFunction(() => !document.querySelector('#inspect-x').disabled);
+  await page.click('#inspect-x', { clickCount: 3 });
+  await page.keyboard.type('1e300');
+  await page.keyboard.press('Enter');
+  await page.waitForFunction(() => window.wingspline.state.points[1][0] === 1e300 || window.wingspline.message());
+  const after = await state(page);
+  const row = await page.$$eval('.joint-card tr', (rows) => rows.map((r) => r.textContent).find((t) => t.startsWith('curvature')));
+  assert.ok(row, 'the joint table has a curvature row');
+  assert.doesNotMatch(row, /Infinity|NaN/);
+  if (after.points[1][0] === 1e300) {
+    // lecture 001: P''(1) = 6 (P3 - 2 P2 + P1) is about 6e300 now, so the left curvature is a huge finite number
+    const [j] = await joints(page);
+    assert.ok(Number.isFinite(j.left.curvature) && j.left.curvature > 1e290, `left curvature ${j.left.curvature}`);
+  } else {
+    assert.deepEqual(after.points, before.points, 'a refused value leaves the drawing as it was');
+    assert.match(await page.evaluate(() => window.wingspline.message()), /x|coordinate|limit|large/i);
+  }
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+// Items 3 and 4: the zero-tangent preset's curvature is "undefined" in the table and in the
+// curvature plot's note (the same rule in the core for both), and every joint card shows what
+// lectures 001/004 and 003 would say.
+test('zero tangents: curvature "undefined" in the table and the plot agree; the lecture wordings are shown', async () => {
+  const page = await openLab();
+  await choosePreset(page, 'zero-tangent');
+  // the plots (and their note) are drawn on the next frame
+  await page.waitForFunction(() => document.querySelector('#curvature-undefined')?.textContent.includes('undefined'));
+  const row = await page.$$eval('.joint-card tr', (rows) => rows.map((r) => r.textContent).find((t) => t.startsWith('curvature')));
+  assert.match(row, /undefined \(\|P'⁻\| = 0 at u = 1/);
+  assert.match(row, /undefined \(\|P'⁺\| = 0 at u = 1/);
+  const note = await page.textContent('#curvature-undefined');
+  assert.match(note, /κ undefined .* u = 1 \(\|P'\| = 0\)/);
+  await page.click('.joint-card details.wordings summary');
+  const rows = await page.$$eval('.joint-card details.wordings tbody tr', (trs) => trs.map((r) => Array.from(r.cells, (c) => c.textContent)));
+  assert.equal(rows.length, 3);
+  assert.ok(rows.some((r) => r[1] === 'lectures 001, 004' && /proportional/.test(r[0])));
+  assert.ok(rows.some((r) => r[1] === 'lecture 003' && /direction of the n th derivative/.test(r[0])));
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

@@ -271,7 +271,8 @@ export function createCurvesApi(raw) {
 
     // ---- differential geometry
     // { curvature, signedCurvature (dim 2 only, else empty), speed |P'|, tangent (unit,
-    // dim per param), singular (Uint8Array, 1 where P' = 0: tangent and curvature reported as 0) }
+    // dim per param), singular (Uint8Array, 1 where P' = 0: tangent and curvature undefined, stored as 0;
+    // show 'undefined', never the 0) }
     curvature(curve, params) {
       const r = unwrap(raw.curveCurvature(normalizeCurve(curve), numbers(params, 'params')));
       return { curvature: r.curvature, signedCurvature: r.signedCurvature, speed: r.speed, tangent: r.tangent, singular: r.singular };
@@ -297,7 +298,10 @@ export function createCurvesApi(raw) {
     // Continuity where curve a ends and curve b starts: { parametric: k, geometric: k
     // (k = -1..2), evidence: { tolerance, a, b ([P, P', P''] at the joint, dim each),
     // positionGap, d1Gap, d2Gap, ratio |b'|/|a'|, tangentAngle, curvatureA, curvatureB,
-    // curvatureVectorGap, zeroTangent, notes } }. Equal means |x - y| <= tolerance * max(1, |x|, |y|).
+    // curvatureVectorGap, zeroTangent, zeroTangentA, zeroTangentB, notes }, wordings: [{ id,
+    // source, wording, geometric, reason }] } (curvatureA/B are null where that side's P' = 0).
+    // Scale-free: positions are compared relative to the joint's bounding box, derivatives and
+    // curvature vectors relative to the larger of the two (docs/api-curves.md).
     jointContinuity(a, b, { tolerance = 1e-9 } = {}) {
       const r = unwrap(raw.curveJointContinuity(normalizeCurve(a, 'a'), normalizeCurve(b, 'b'), finiteNumber(tolerance, 'tolerance')));
       const e = r.evidence;
@@ -307,8 +311,10 @@ export function createCurvesApi(raw) {
         evidence: {
           tolerance: e.tolerance, a: e.a, b: e.b, positionGap: e.positionGap, d1Gap: e.d1Gap, d2Gap: e.d2Gap,
           ratio: e.ratio, tangentAngle: e.tangentAngle, curvatureA: e.curvatureA, curvatureB: e.curvatureB,
-          curvatureVectorGap: e.curvatureVectorGap, zeroTangent: e.zeroTangent, notes: Array.from(e.notes),
+          curvatureVectorGap: e.curvatureVectorGap, zeroTangent: e.zeroTangent, zeroTangentA: e.zeroTangentA,
+          zeroTangentB: e.zeroTangentB, notes: Array.from(e.notes),
         },
+        wordings: Array.from(r.wordings, (w) => ({ id: w.id, source: w.source, wording: w.wording, geometric: w.geometric, reason: w.reason })),
       };
     },
 

@@ -41,12 +41,23 @@ struct JointEvidence {
     double curvature_a = 0, curvature_b = 0;
     double curvature_vector_gap = 0;   // |kappa_a N_a - kappa_b N_b|
     bool zero_tangent = false;         // a' or b' is the zero vector: G^1 is undefined
+    bool zero_tangent_a = false, zero_tangent_b = false; // per side: that side's curvature is undefined
     std::vector<std::string> notes;
+};
+// What one reading of "G^n" says for this joint (issue 13, item 3). The lectures word it in
+// two ways; the core's verdict is the third (reparametrisation-invariant) one.
+struct LectureWording {
+    std::string id;      // 'curvature-vector' | 'proportional' | 'direction'
+    std::string source;  // where the wording is: 'lectures 001, 004', 'lecture 003', ...
+    std::string wording; // the words, quoted
+    int geometric = -1;  // the highest k in -1..2 this reading gives
+    std::string reason;  // why it says so, and why it differs from the core's verdict if it does
 };
 struct JointContinuity {
     int parametric = -1; // highest k in -1..2 with C^k
     int geometric = -1;  // highest k in -1..2 with G^k
     JointEvidence evidence;
+    std::vector<LectureWording> wordings; // curvature-vector (= geometric), proportional, direction
 };
 // Values are "equal" when |x - y| <= tolerance * max(1, |x|, |y|) (vectors: Euclidean norms).
 // G^1: same unit tangent (both non-zero); G^2: G^1 and the same curvature vector.

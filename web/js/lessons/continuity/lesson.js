@@ -132,6 +132,7 @@ export const lesson = {
     const plotsBody = panel(ctx.panels, { id: 'plots-panel', title: 'Along the whole curve' });
     const ruleBody = panel(ctx.panels, { id: 'rule-panel', title: 'C1 implies G1, but not conversely' });
     const plotCanvas = (id, name) => h('canvas', { class: 'continuity-plot', id, role: 'img', 'aria-label': name });
+    const curvatureUndefined = h('p', { class: 'hint', id: 'curvature-undefined', 'aria-live': 'polite' });
     const plots = {
       speed: plotCanvas('plot-speed', 'Speed |P\'(u)| along the curve, joints marked'),
       second: plotCanvas('plot-second', 'Components of P\'\'(u) along the curve, joints marked'),
@@ -140,10 +141,10 @@ export const lesson = {
     plotsBody.append(
       h('h3', {}, 'Speed |P\'(u)|'), plots.speed,
       h('h3', {}, 'Second derivative P\'\'(u): x and y'), plots.second,
-      h('h3', {}, 'Curvature κ(u)'), plots.curvature,
+      h('h3', {}, 'Curvature κ(u)'), plots.curvature, curvatureUndefined,
       h('p', { class: 'hint' }, 'u runs over segment i on [i, i+1]; dashed lines mark the joints. A jump in |P\'| is a G1-but-not-C1 joint; a jump in κ is a joint that is not G2.'),
     );
-    lesson.ui = { familySelect, constraintSelect, presetSelect, uSlider, uOut, toggles, jointsBody, ruleBody, plots, addButton, removeButton };
+    lesson.ui = { curvatureUndefined, familySelect, constraintSelect, presetSelect, uSlider, uOut, toggles, jointsBody, ruleBody, plots, addButton, removeButton };
 
     function loadPreset(name) {
       player.pause();
@@ -229,13 +230,14 @@ export const lesson = {
             ['P\'(u)', fmtVec(l.d1), fmtVec(r.d1)],
             ['|P\'(u)|', formatNumber(speedL, 4), formatNumber(speedR, 4)],
             ['P\'\'(u)', fmtVec(l.d2), fmtVec(r.d2)],
-            ['curvature κ', formatNumber(l.curvature, 4), formatNumber(r.curvature, 4)],
+            ['curvature κ', curvatureCell(l, joint.u, '⁻'), curvatureCell(r, joint.u, '⁺')],
           ],
         }),
         h('p', { class: 'ratio' }, joint.zeroTangent
           ? `A first derivative is the zero vector: ${explainJoint(joint)}`
           : `|P'⁺| / |P'⁻| = ${formatNumber(joint.ratio, 4)}, angle ${formatNumber((joint.tangentAngle * 180) / Math.PI, 3)}°: ${explainJoint(joint)}`),
         joint.notes.length ? h('ul', { class: 'notes' }, joint.notes.map((n) => h('li', {}, n))) : null,
+        wordingsTable(joint),
       );
     }));
 
@@ -352,6 +354,23 @@ export const lesson = {
   }],
 };
 
+// The curvature of one side at a joint; where P' = 0 it is undefined, and the evidence says why.
+function curvatureCell(side, u, sign) {
+  if (side.curvature === null) return `undefined (|P'${sign}| = ${formatNumber(side.speed, 3)} at u = ${u}: P' = 0)`;
+  return formatNumber(side.curvature, 4);
+}
+
+// What each lecture's wording of G^n says for this joint, as the core computed it (issue 13).
+function wordingsTable(joint) {
+  if (!joint.wordings?.length) return null;
+  return h('details', { class: 'wordings', 'data-joint': joint.index },
+    h('summary', {}, 'G2 in the lectures\' words: what each reading says here'),
+    table({
+      head: [['reading', 'source', 'says', 'why']],
+      rows: joint.wordings.map((w) => [`“${w.wording}”`, w.source, label('G', w.geometric), w.reason]),
+    }));
+}
+
 function explainJoint(joint) {
   if (joint.parametric < 0) return 'the segments do not meet (C-1).';
   if (joint.parametric >= 1 && joint.geometric < 1) return 'equal (zero) derivatives but no common direction: C1 without G1.';
@@ -371,6 +390,10 @@ function drawPlots(model, state, ctx) {
     series: [{ label: 'x\'\'', color: c.series[0], pieces: comp(0) }, { label: 'y\'\'', color: c.series[1], dash: [6, 3], pieces: comp(1) }],
     marks, cursor: state.u, yLabel: 'x\'\' (solid), y\'\' (dashed)', colors: plotColors,
   });
+  const undefinedAt = model.segments.flatMap((s) => s.undefinedAt);
+  lesson.ui.curvatureUndefined.textContent = undefinedAt.length
+    ? `κ undefined (P' = 0, the plot leaves a gap) at ${undefinedAt.map((x) => `u = ${formatNumber(x.u, 4)} (|P'| = ${formatNumber(x.speed, 3)})`).join(', ')}.`
+    : '';
   drawSeriesPlot(lesson.ui.plots.curvature, {
     series: [{ label: 'κ', color: c.series[2], pieces: model.segments.map((s) => ({ u: s.u, v: s.curvature })) }],
     marks, cursor: state.u, yLabel: 'κ(u)', colors: plotColors,

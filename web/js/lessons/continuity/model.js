@@ -2,9 +2,12 @@
 // samples with first and second derivatives and curvature along the whole curve, and the
 // core's classification of every joint (api.jointContinuity) with its evidence.
 export const SAMPLES_PER_SEGMENT = 81;
-// Joints are classified with a tolerance relative to the drawing (world units, about a
-// hundredth of a pixel at the default zoom): hand-dragged points never meet exactly.
-export const JOINT_TOLERANCE = 1e-6;
+// Joints are classified by the core with a relative tolerance (docs/api-curves.md): positions
+// relative to the joint's bounding box, derivatives and curvatures relative to the larger of
+// the two compared, so the verdict does not depend on the zoom or the size of the drawing.
+// The constraint modes place points exactly (up to rounding), so 1e-9 keeps their verdicts
+// and still sees a relative difference of 1e-6.
+export const JOINT_TOLERANCE = 1e-9;
 
 // The curve objects of the core API, one per segment.
 export function segmentCurves(family, points) {
@@ -49,7 +52,12 @@ function sampleSegment(api, curve, index) {
   const k = api.curvature(curve, params);
   // The global parameter of the lab: segment i runs over [i, i + 1].
   const u = params.map((t) => index + (t - domain.start) / (domain.end - domain.start));
-  return { curve, domain, params, u, points, d1, d2, curvature: k.curvature, speed: k.speed };
+  // Where P' = 0 the curvature is undefined (the core's singular flag): NaN here, so the plot
+  // leaves a gap and names the place instead of drawing the stored 0.
+  const curvature = Float64Array.from(k.curvature, (v, j) => (k.singular[j] ? Number.NaN : v));
+  const undefinedAt = [];
+  for (let j = 0; j < n; j += 1) if (k.singular[j]) undefinedAt.push({ u: u[j], speed: k.speed[j] });
+  return { curve, domain, params, u, points, d1, d2, curvature, speed: k.speed, undefinedAt };
 }
 
 export function computeModel(api, state) {
@@ -63,6 +71,7 @@ export function computeModel(api, state) {
     const verdict = api.jointContinuity(a.curve, b.curve, { tolerance: JOINT_TOLERANCE });
     const e = verdict.evidence;
     // e.a / e.b hold [P, P', P''] of each side at the joint (2 numbers each).
+    // curvature is null where that side's P' = 0 (undefined, never 0).
     const side = (d, curvature, speed) => ({ point: [d[0], d[1]], d1: [d[2], d[3]], d2: [d[4], d[5]], curvature, speed });
     joints.push({
       index: j,
@@ -73,6 +82,7 @@ export function computeModel(api, state) {
       zeroTangent: e.zeroTangent,
       tangentAngle: e.tangentAngle,
       notes: e.notes,
+      wordings: verdict.wordings,
       left: side(e.a, e.curvatureA, a.speed[SAMPLES_PER_SEGMENT - 1]),
       right: side(e.b, e.curvatureB, b.speed[0]),
     });

@@ -1,0 +1,80 @@
+// Issue 13 ("Trust"), items 2, 3, 4, 15, 21 at the JS boundary: jointContinuity and curvature
+// at any scale, the lecture wordings of G^n, undefined curvature reported as such, and arc
+// length that returns on coordinates near 1e308 (docs/api-curves.md).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { loadWingspline } from 'wingspline';
+
+const api = await loadWingspline();
+const CURVATURE_REL = 1e-12; // relative error of a curvature against its analytic value
+const bez = (points) => ({ kind: 'bezier', dim: 2, points });
+const scaled = (points, s) => points.map((x) => x * s);
+// a: A1 = (3, -3), A2 = (0, -6) at its end; kappa = |A1 x A2| / |A1|^3 = 18 / 18^1.5 (lecture 004).
+const A = [0, 0, 1, 1, 2, 1, 3, 0];
+const KAPPA_A = 18 / 18 ** 1.5;
+
+test('item 21: a joint moved to 1e300 (as typed into the inspector) has a finite curvature', () => {
+  for (const s of [1e300, 1e-300]) {
+    const j = api.jointContinuity(bez(scaled(A, s)), bez(scaled([3, 0, 4, -1, 5, -3, 6, 0], s)));
+    assert.ok(Number.isFinite(j.evidence.curvatureA), `scale ${s}: ${j.evidence.curvatureA}`);
+    assert.ok(Math.abs(j.evidence.curvatureA * s - KAPPA_A) <= CURVATURE_REL * KAPPA_A);
+    assert.deepEqual([j.parametric, j.geometric], [2, 2]);
+  }
+  // One point of the lab's first segment typed as x = 1e300 and the rest near 1: P' at the
+  // joint (about 3) is below the rounding of an evaluation over data of size 1e300, so the
+  // core says "undefined" (null, zero tangent flagged) on that side rather than a number; never
+  // Infinity or NaN on either side.
+  const j = api.jointContinuity(bez([0, 0, 1e300, 1, 2, 1, 3, 0]), bez([3, 0, 4, -1, 5, -3, 6, 0]));
+  for (const [k, zero] of [[j.evidence.curvatureA, j.evidence.zeroTangentA], [j.evidence.curvatureB, j.evidence.zeroTangentB]]) {
+    assert.ok(zero ? k === null : Number.isFinite(k), `curvature ${k}, zero tangent ${zero}`);
+  }
+  assert.ok(Math.abs(j.evidence.curvatureB - KAPPA_A) <= CURVATURE_REL * KAPPA_A);
+  // a'' = 6 (P3 - 2 P2 + P1) = (6e300, -6): kappa- = |a' x a''| / |a'|^3 = 1.8e301 / 18^1.5
+  assert.ok(Math.abs(j.evidence.curvatureA / (1.8e301 / 18 ** 1.5) - 1) < CURVATURE_REL);
+  assert.deepEqual([j.parametric, j.geometric], [1, 1]);
+});
+
+test('item 2: the verdict does not change with the scale of the drawing', () => {
+  for (const s of [1e-8, 1e-6, 1, 1e6, 1e8]) {
+    const gap = api.jointContinuity(bez(scaled(A, s)), bez(scaled([3, 1e-4, 4, -1, 5, 0, 6, 1], s)));
+    assert.equal(gap.parametric, -1, `a 1e-4 gap at scale ${s}`);
+    const corner = api.jointContinuity(bez(scaled(A, s)), bez(scaled([3, 0, 4, 1, 5, 0, 6, 1], s)));
+    assert.deepEqual([corner.parametric, corner.geometric], [0, 0], `a right angle at scale ${s}`);
+  }
+});
+
+test('item 3: the lecture wordings of G^n come with the verdict', () => {
+  // B1 = A1, B2 = 2 A2: P'' in the same direction, the curvature doubles.
+  const j = api.jointContinuity(bez(A), bez([3, 0, 4, -1, 5, -4, 6, 0]));
+  const byId = Object.fromEntries(j.wordings.map((w) => [w.id, w]));
+  assert.deepEqual(Object.keys(byId).sort(), ['curvature-vector', 'direction', 'proportional']);
+  assert.equal(byId['curvature-vector'].geometric, j.geometric);
+  assert.equal(j.geometric, 1);
+  assert.equal(byId.proportional.geometric, 2);
+  assert.equal(byId.proportional.source, 'lectures 001, 004');
+  assert.equal(byId.direction.geometric, 2);
+  assert.equal(byId.direction.source, 'lecture 003');
+  for (const w of j.wordings) assert.ok(w.reason.length > 20 && w.wording.length > 10);
+});
+
+test('item 4: the curvature on a side with P\' = 0 is undefined (null), never 0', () => {
+  const j = api.jointContinuity(bez([0, 0, 1, 1, 3, 0, 3, 0]), bez([3, 0, 4, 1, 4, 2, 6, 1]));
+  assert.equal(j.evidence.zeroTangentA, true);
+  assert.equal(j.evidence.zeroTangentB, false);
+  assert.equal(j.evidence.curvatureA, null);
+  assert.ok(j.evidence.curvatureB > 0);
+  // the cusp of (0,0), (1,1), (0,1), (1,0) at t = 1/2, at 1e-8 and translated: flagged
+  const k = api.curvature(bez([3, 3, 3 + 1e-8, 3 + 1e-8, 3, 3 + 1e-8, 3 + 1e-8, 3]), [0.25, 0.5]);
+  assert.deepEqual(Array.from(k.singular), [0, 1]);
+  const p = api.curvature(bez([-1e-150, 1e-150, 0, -1e-150, 1e-150, 1e-150]), [0.5]);
+  assert.ok(Math.abs(p.curvature[0] / 2e150 - 1) < CURVATURE_REL);
+});
+
+test('item 15: arcLength returns (and is right) for coordinates near 1e308', () => {
+  const big = 1.5e308;
+  const start = Date.now();
+  const L = api.arcLength(bez([0, 0, big / 3, 0, 2 * (big / 3), 0, big, 0]));
+  assert.ok(Math.abs(L / big - 1) < 1e-12);
+  assert.throws(() => api.arcLength(bez([-big, -big, -big / 3, -big / 3, big / 3, big / 3, big, big])), { code: 'length-overflow' });
+  assert.ok(Date.now() - start < 2000);
+});
