@@ -136,3 +136,24 @@ test('invariance: affine maps commute with every family; perspective only with t
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+// Issue 13 item 9: every choice of the conversion panel reads as words and numbers.
+test('basis conversion: the panel never prints null, undefined or NaN', async () => {
+  const page = await openLab();
+  await page.selectOption('#scene', 'conversion');
+  for (const mode of ['keep-curve', 'keep-geometry']) {
+    await page.selectOption('#conv-mode', mode);
+    for (const from of ['bezier', 'bspline', 'catmull-rom']) {
+      await page.selectOption('#conv-from', from);
+      for (const to of ['hermite', 'bezier', 'bspline', 'catmull-rom']) {
+        await page.selectOption('#conv-to', to);
+        await page.waitForFunction(([m, f, t]) => { const c = window.wingspline.state.conversion; return c.mode === m && c.from === f && c.to === t; }, [mode, from, to]);
+        await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+        const text = await page.textContent('#conversion-panel');
+        assert.doesNotMatch(text, /null|undefined|NaN/, `${mode}, ${from} -> ${to}: ${text.slice(0, 200)}`);
+      }
+    }
+  }
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

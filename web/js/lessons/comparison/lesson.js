@@ -2,7 +2,7 @@
 // uniform B-spline and Catmull-Rom at once; the lectures' comparison table checked live by
 // the core; basis conversion both ways; affine and perspective invariance measured.
 import { object, list, number, oneOf, integer, boolean } from '../../app/schema.js';
-import { h, panel, table } from '../../app/dom.js';
+import { h, panel, table, setChildren } from '../../app/dom.js';
 import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
 import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH, pointTangents } from './families.js';
 import { computeTable, LECTURE_TABLE, ROW_NAMES } from './checks.js';
@@ -351,7 +351,7 @@ function updateConversion(ui, m, state) {
     ? math(mi('q'), mo('='), el('msup', sub('M', short[m.to]), el('mn', '-1')), sub('M', short[m.from]), mi('P'), mo('='),
       el('msup', matrix(rows4(m.Mto)), el('mn', '-1')), matrix(rows4(m.Mfrom)), matrix(geometryRows(m.g)), mo('='), matrix(geometryRows(m.q)))
     : math(mi('P'), fixed('('), mi('u'), fixed(')'), mo('='), el('msup', mi('u'), mi('T')), matrix(rows4(m.Mto)), matrix(geometryRows(m.g)));
-  ui.out.replaceChildren(
+  setChildren(ui.out,
     h('div', { class: 'formula' }, formula),
     h('p', { 'data-conversion-distance': String(m.distance) }, m.q
       ? `The ${FAMILY_NAMES[m.to]} curve of q is the ${FAMILY_NAMES[m.from]} curve of P: max distance ${fmtDistance(m.distance)} over 121 samples.`
