@@ -5,7 +5,7 @@
 import { number, integer, boolean, oneOf, text, list, object, nullable } from '../../app/schema.js';
 import { createMeshSource, MESH_KINDS } from './mesh-source.js';
 import { normaliseSteps, walkFrames } from './walk.js';
-import { drawMesh, viewRotation, projectAll, unprojectDelta, pickElement, LABEL_LIMIT } from './draw.js';
+import { drawMesh, viewRotation, projectAll, unprojectDelta, pickElement, facesAway, LABEL_LIMIT } from './draw.js';
 import { setupPanels } from './panels.js';
 import { meshExports } from './exports.js';
 import { vLabel, fLabel, eLabel } from './labels.js';
@@ -79,6 +79,9 @@ function wingedTables(entry) {
     derived.planes = null;
     derived.reps = null;
     derived.storage = null;
+    derived.centre = null;
+    derived.faceNormals = null;
+    derived.sideKey = null;
   }
   return derived.we;
 }
@@ -108,7 +111,16 @@ function compute(state, ctx) {
   if (derived.viewKey !== viewKey) {
     let zExtent = 0;
     for (let v = 0; v < V; v += 1) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
-    Object.assign(derived, { viewKey, zExtent, projected: projectAll(we.positions, R) });
+    derived.centre ??= entry.mesh.boundingBox().centre;
+    Object.assign(derived, { viewKey, zExtent, projected: projectAll(we.positions, R, derived.centre) });
+  }
+  // Seen from behind: the walked vertex's normal (faces around it, by area) or the walked
+  // face's normal, both from the core, points away from the viewer.
+  const sideKey = `${viewKey}:${walkKind}:${walkElement}`;
+  if (derived.sideKey !== sideKey) {
+    derived.sideKey = sideKey;
+    derived.fromBehind = state.mode3d && walkElement >= 0
+      && facesAway(R, walkKind === 'vertex' ? entry.mesh.vertexNormal(walkElement) : faceNormal(entry.mesh, walkElement));
   }
   return {
     mesh: entry.mesh,
@@ -124,10 +136,17 @@ function compute(state, ctx) {
     is3dMesh: derived.zExtent > 0,
     mode3d: state.mode3d,
     walkKind, walkElement, frames, frame,
+    walkSeenFromBehind: derived.fromBehind,
     stepIndex: Math.min(state.step, Math.max(0, frames.length - 1)),
     lastChange: derived.lastChange,
     derived,
   };
+}
+
+function faceNormal(mesh, f) {
+  derived.faceNormals ??= mesh.normals(); // once per mesh version, not per frame of a drag
+  const n = derived.faceNormals;
+  return [n[3 * f], n[3 * f + 1], n[3 * f + 2]];
 }
 
 function fitView(model, stage) {
