@@ -106,6 +106,8 @@ const cases = [
   ['arcLengthParams', REDUCED, () => api.arcLengthParams(nurbs, 10), () => api.arcLengthParams(decreasing, 10)],
   ['jointContinuity', REDUCED, () => api.jointContinuity(bezier, following, { tolerance: 1e-9 }), () => api.jointContinuity(bezier, decreasing)],
   ['interpolatePolynomial', REDUCED, () => api.interpolatePolynomial(geometry, 2), () => api.interpolatePolynomial(geometry, 2, [0, 1, 1, 2])],
+  ['chainGuarantees / bsplineGuarantees', REDUCED, () => { api.chainGuarantees({ basis: 'bezier', slots: 4, isPoint: [true, true, true, true], maps: [[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]] }); api.bsplineGuarantees({ knots: [0, 1, 2, 3, 4, 5, 6, 7], degree: 3, count: 4 }); },
+    () => api.bsplineGuarantees({ knots: [0, 1, 0.5, 2, 3, 4, 5, 6], degree: 3, count: 4 })],
   ['samplePatch', REDUCED, () => api.samplePatch({ kind: 'bezier', points: patch, nu: 4, nv: 4 }),
     () => api.samplePatch({ kind: 'bezier', points: patch.slice(3), nu: 4, nv: 4 })],
   ['transformPoints', REDUCED, () => api.transformPoints(geometry, 2, [0, -1, 1, 1, 0, 2, 0, 0, 1]), () => api.transformPoints(geometry, 2, [1, 0, 0, 1])],
