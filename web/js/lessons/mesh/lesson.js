@@ -107,12 +107,13 @@ function compute(state, ctx) {
   const frames = walkElement >= 0 ? stepsOf(entry, walkKind, walkElement) : [];
   const frame = frames[Math.min(state.step, frames.length - 1)] ?? null;
   const R = viewRotation(state);
-  const viewKey = `${entry.topology}:${entry.version}:${R.join(',')}`;
+  const viewKey = `${entry.topology}:${entry.version}:${state.mode3d}:${R.join(',')}`;
   if (derived.viewKey !== viewKey) {
     let zExtent = 0;
     for (let v = 0; v < V; v += 1) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
     derived.centre ??= entry.mesh.boundingBox().centre;
-    Object.assign(derived, { viewKey, zExtent, projected: projectAll(we.positions, R, derived.centre) });
+    // In 2D the positions are shown exactly as they are ((p - c) + c would round them).
+    Object.assign(derived, { viewKey, zExtent, projected: projectAll(we.positions, R, state.mode3d ? derived.centre : [0, 0, 0]) });
   }
   // Seen from behind: the walked vertex's normal (faces around it, by area) or the walked
   // face's normal, both from the core, points away from the viewer.
