@@ -9,6 +9,7 @@
 #include "wingspline/curves/bspline_ops.h"
 #include "wingspline/curves/conics.h"
 #include "wingspline/curves/curve.h"
+#include "wingspline/curves/guarantees.h"
 #include "wingspline/curves/linear_algebra.h"
 #include "wingspline/curves/patch.h"
 #include "wingspline/curves/segment.h"
@@ -357,6 +358,36 @@ val curve_joint_continuity(const val& a, const val& b, double tolerance) {
     });
 }
 
+// Issue 13 item 8: what a representation guarantees for every control polygon.
+// {parametric, geometric, joints, interpolated: Int32Array of slots}.
+val guarantees_value(const Guarantees& g) {
+    val r = val::object();
+    r.set("parametric", g.parametric);
+    r.set("geometric", g.geometric);
+    r.set("joints", g.joints);
+    r.set("interpolated", to_typed_array(g.interpolated));
+    return r;
+}
+// maps: Float64Array, segments * 4 * slots (maps[4*slots*s + slots*r + j]: weight of slot j
+// in geometry row r of segment s); isPoint: Int32Array of slots flags (1 point, 0 vector).
+val chain_guarantees_value(const std::string& basis, int slots, const val& maps, const val& is_point) {
+    return guarded([&] {
+        const std::vector<double> flat = to_doubles(maps);
+        const std::vector<int32_t> flags = to_ints(is_point);
+        require(slots >= 1 && slots <= 4096, "invalid-argument", "the construction needs 1 to 4096 slots, not " + std::to_string(slots));
+        const std::size_t per = 4 * static_cast<std::size_t>(slots);
+        require(!flat.empty() && flat.size() % per == 0, "invalid-argument",
+                "maps holds " + std::to_string(flat.size()) + " numbers: give 4 x " + std::to_string(slots) + " per segment");
+        std::vector<std::vector<double>> segs;
+        for (std::size_t o = 0; o < flat.size(); o += per) segs.emplace_back(flat.begin() + o, flat.begin() + o + per);
+        std::vector<bool> points(flags.begin(), flags.end());
+        return guarantees_value(chain_guarantees(parse_basis_kind(basis), slots, segs, points));
+    });
+}
+val bspline_guarantees_value(const val& knots, int degree, int count) {
+    return guarded([&] { return guarantees_value(bspline_guarantees(to_doubles(knots), degree, count)); });
+}
+
 val patch_sample(const std::string& kind, const val& points, int nu, int nv) {
     return guarded([&] {
         const PatchSamples s = sample_patch(parse_basis_kind(kind), to_doubles(points), nu, nv);
@@ -421,6 +452,8 @@ EMSCRIPTEN_BINDINGS(wingspline_curves) {
     emscripten::function("curveArcLengthParams", &curve_arc_length_params);
     emscripten::function("curveJointContinuity", &curve_joint_continuity);
     emscripten::function("patchSample", &patch_sample);
+    emscripten::function("chainGuarantees", &chain_guarantees_value);
+    emscripten::function("bsplineGuarantees", &bspline_guarantees_value);
     emscripten::function("interpolationSystem", &interpolation_system);
     emscripten::function("curveLimits", &curve_limits);
 }

@@ -11,6 +11,7 @@
 #include "wingspline/mesh/planes.h"
 #include "wingspline/mesh/queries.h"
 #include "wingspline/mesh/representations.h"
+#include "wingspline/mesh/view_geometry.h"
 #include "wingspline/mesh/winged_edge.h"
 
 #include <emscripten/emscripten.h>
@@ -378,6 +379,29 @@ val mesh_normals(int32_t handle, val into) {
     });
 }
 
+// {min, max, centre: Float64Array(3) each}: the bounding box a 3D view turns about (issue 13).
+val mesh_bounding_box(int32_t handle) {
+    return guarded([&] {
+        const BoundingBox b = bounding_box(entry(handle).winged);
+        const glm::dvec3 c = b.centre();
+        val r = val::object();
+        r.set("min", to_typed_array(std::vector<double>{b.min.x, b.min.y, b.min.z}));
+        r.set("max", to_typed_array(std::vector<double>{b.max.x, b.max.y, b.max.z}));
+        r.set("centre", to_typed_array(std::vector<double>{c.x, c.y, c.z}));
+        return r;
+    });
+}
+
+// {normal: Float64Array(3)}: the area-weighted unit normal at vertex v (0 0 0 if none).
+val mesh_vertex_normal(int32_t handle, int32_t v) {
+    return guarded([&] {
+        const glm::dvec3 n = vertex_normal(entry(handle).winged, v);
+        val r = val::object();
+        r.set("normal", to_typed_array(std::vector<double>{n.x, n.y, n.z}));
+        return r;
+    });
+}
+
 // ------------------------------------------------------------------ benchmark only
 
 // The native benchmark times the core's work on data already in memory; these time the
@@ -670,6 +694,8 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshNamed", &named_mesh);
     emscripten::function("meshPlanes", &mesh_planes);
     emscripten::function("meshNormals", &mesh_normals);
+    emscripten::function("meshBoundingBox", &mesh_bounding_box);
+    emscripten::function("meshVertexNormal", &mesh_vertex_normal);
     emscripten::function("meshSetVertexPosition", &mesh_set_vertex_position);
     emscripten::function("meshBytes", &mesh_bytes);
     emscripten::function("meshBuildRepresentations", &mesh_build_representations);

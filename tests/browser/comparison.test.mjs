@@ -136,3 +136,65 @@ test('invariance: affine maps commute with every family; perspective only with t
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+// Issue 13 item 9: every choice of the conversion panel reads as words and numbers.
+test('basis conversion: the panel never prints null, undefined or NaN', async () => {
+  const page = await openLab();
+  await page.selectOption('#scene', 'conversion');
+  for (const mode of ['keep-curve', 'keep-geometry']) {
+    await page.selectOption('#conv-mode', mode);
+    for (const from of ['bezier', 'bspline', 'catmull-rom']) {
+      await page.selectOption('#conv-from', from);
+      for (const to of ['hermite', 'bezier', 'bspline', 'catmull-rom']) {
+        await page.selectOption('#conv-to', to);
+        await page.waitForFunction(([m, f, t]) => { const c = window.wingspline.state.conversion; return c.mode === m && c.from === f && c.to === t; }, [mode, from, to]);
+        await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+        const text = await page.textContent('#conversion-panel');
+        assert.doesNotMatch(text, /null|undefined|NaN/, `${mode}, ${from} -> ${to}: ${text.slice(0, 200)}`);
+      }
+    }
+  }
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+// Issue 13 item 8: a cell of the lecture's table is a guarantee for every polygon; what this
+// polygon happens to do is shown beside it and never turns the lecture red.
+async function typePoint(page, id, [x, y]) {
+  const hd = (await page.evaluate(() => window.wingspline.handles())).find((k) => k.id === id);
+  await page.mouse.click(hd.x, hd.y);
+  await page.waitForFunction((want) => window.wingspline.selected === want, id);
+  await page.fill('#inspect-x', String(x));
+  await page.fill('#inspect-y', String(y));
+  await page.press('#inspect-y', 'Enter');
+  await page.waitForFunction(([i, px, py]) => { const p = window.wingspline.state.points[i]; return p[0] === px && p[1] === py; }, [Number(id.slice(1)), x, y]);
+}
+const polygonCell = (page, row, family) => page.$eval(`.polygon-cell[data-row="${row}"][data-family="${family}"]`, (c) => ({ answer: c.dataset.answer, text: c.textContent }));
+
+test('a polygon that happens to be smoother, or to touch its curve, keeps the lecture\'s guarantees', async () => {
+  const page = await openLab();
+  const [, P1, , P3] = await page.evaluate(() => window.wingspline.state.points);
+  // P2 midway between P1 and P3: the uniform B-spline passes through P2 ((P1 + 4 P2 + P3) / 6 = P2).
+  const P2 = [(P1[0] + P3[0]) / 2, (P1[1] + P3[1]) / 2];
+  await typePoint(page, 'p2', P2);
+  // P2, P3, P4 collinear with equal legs (P4 = 2 P3 - P2): this Bezier joint is C1.
+  await typePoint(page, 'p4', [2 * P3[0] - P2[0], 2 * P3[1] - P2[1]]);
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  assertMatchesLecture(await liveTable(page));
+  assert.equal(await page.$$eval('.live-cell [class="lecture differs"]', (x) => x.length), 0, 'no cell marks the lecture wrong');
+  // What this polygon does, in its own column.
+  assert.match((await polygonCell(page, 'inherent', 'bezier')).answer, /^C1 G1$/, 'this Bezier polygon happens to be C1 at its joint');
+  const touch = await polygonCell(page, 'interpolatesSome', 'bspline');
+  assert.equal(touch.answer, 'Yes');
+  assert.match(touch.text, /P2\b/, 'the B-spline happens to pass through P2');
+  // Ease of subdivision is the lecture's judgement: quoted, never checked.
+  const quoted = await page.$$eval('.live-cell[data-row="subdivision"]', (cells) => cells.map((c) => ({ quoted: c.dataset.quoted, text: c.textContent })));
+  assert.equal(quoted.length, 5);
+  for (const q of quoted) {
+    assert.equal(q.quoted, 'true');
+    assert.match(q.text, /quoted/i);
+    assert.doesNotMatch(q.text, /✓/);
+  }
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

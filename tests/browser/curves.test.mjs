@@ -313,3 +313,60 @@ test('CSV exports of the samples and the blending functions', async () => {
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+// Issue 13 item 10. The canvas's box on the page and the handles' page positions, as the app reports them.
+const canvasBox = (page) => page.$eval('#stage', (c) => { const r = c.getBoundingClientRect(); return { left: r.left, top: r.top, right: r.right, bottom: r.bottom }; });
+const CLICK_TOL_PX = 1; // page px: a stored point is rounded to 1e-4 world units, far below a pixel at the default zoom
+
+test('Shift+click on empty drawing adds a control point where the mouse is', async () => {
+  const page = await openLesson();
+  const before = await page.evaluate(() => window.wingspline.state.points.length);
+  const box = await canvasBox(page);
+  // An empty spot: the lower-left part of the canvas, at least 40 px from every handle.
+  const handles = await page.evaluate(() => window.wingspline.handles());
+  let spot = null;
+  for (let fy = 0.9; fy > 0.1 && !spot; fy -= 0.05) {
+    for (let fx = 0.1; fx < 0.9 && !spot; fx += 0.05) {
+      const x = box.left + fx * (box.right - box.left);
+      const y = box.top + fy * (box.bottom - box.top);
+      if (handles.every((hd) => Math.hypot(hd.x - x, hd.y - y) > 40)) spot = { x, y };
+    }
+  }
+  assert.ok(spot, 'an empty spot on the canvas');
+  await page.mouse.move(spot.x, spot.y);
+  await page.keyboard.down('Shift');
+  await page.mouse.down();
+  await page.mouse.up();
+  await page.keyboard.up('Shift');
+  await frame(page);
+  const after = await page.evaluate(() => window.wingspline.handles().filter((x) => /^p\d+$/.test(x.id)));
+  assert.equal(after.length, before + 1, 'one more control point');
+  const nearest = Math.min(...after.map((hd) => Math.hypot(hd.x - spot.x, hd.y - spot.y)));
+  assert.ok(nearest < CLICK_TOL_PX, `a control point where the mouse clicked (nearest ${nearest.toFixed(2)} px away)`);
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('"Add point" places every new point inside the visible canvas', async () => {
+  const page = await openLesson();
+  for (const family of ['bezier', 'bspline-uniform', 'hermite']) {
+    await chooseFamily(page, family);
+    const max = family === 'bspline-uniform' ? 24 : 16;
+    let count = await page.evaluate(() => window.wingspline.state.points.length);
+    while (count < max) {
+      await page.click('[data-action="add-point"]');
+      await frame(page);
+      const now = await page.evaluate(() => window.wingspline.state.points.length);
+      assert.equal(now, count + 1, `${family}: Add point added one point`);
+      count = now;
+      const box = await canvasBox(page);
+      const handles = await page.evaluate(() => window.wingspline.handles().filter((x) => /^p\d+$/.test(x.id)));
+      for (const hd of handles) {
+        assert.ok(hd.x >= box.left && hd.x <= box.right && hd.y >= box.top && hd.y <= box.bottom,
+          `${family}, ${count} points: ${hd.label} at (${hd.x.toFixed(0)}, ${hd.y.toFixed(0)}) lies inside the canvas ${JSON.stringify(box)}`);
+      }
+    }
+  }
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

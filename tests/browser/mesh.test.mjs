@@ -421,3 +421,59 @@ test('presentation mode, dark theme and a 1280 x 720 projector keep the page who
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+// Issue 13 item 11: the 3D view turns about the mesh's centre, and says when the walk is seen
+// from behind (its CCW order then looks clockwise on screen).
+const YAW_PER_PX = 0.01; // radians per CSS pixel of a rotating drag (panels.js)
+async function dragEmptyCanvas(page, dx) {
+  const start = await page.$eval('#stage', (c) => { const r = c.getBoundingClientRect(); return { x: r.left + 20, y: r.top + 20 }; });
+  await page.mouse.move(start.x, start.y);
+  await page.mouse.down();
+  await page.mouse.move(start.x + dx, start.y, { steps: 10 });
+  await page.mouse.up();
+  await settle(page);
+}
+// The centre of the vertices' box on the page, from the positions the app reports.
+async function projectedCentre(page) {
+  const hs = (await page.evaluate(() => window.wingspline.handles())).filter((x) => /^v\d+$/.test(x.id));
+  const xs = hs.map((x) => x.x); const ys = hs.map((x) => x.y);
+  return { x: (Math.min(...xs) + Math.max(...xs)) / 2, y: (Math.min(...ys) + Math.max(...ys)) / 2 };
+}
+const sideNote = (page) => page.evaluate(() => { const e = document.getElementById('walk-side'); return !e || e.hidden ? '' : e.textContent; });
+
+test('3D view: a half turn by dragging keeps the mesh in the canvas and says it is seen from behind', async () => {
+  const page = await openLesson();
+  // A mesh in its own frame, far from the origin as imported files often are: two CCW
+  // triangles (seen from +z) of a unit square at x, y in [20, 21], z = 0.
+  const square = 'OFF\n4 2 0\n20 20 0\n21 20 0\n21 21 0\n20 21 0\n3 0 1 2\n3 0 2 3\n';
+  await page.setInputFiles('#import-file', { name: 'far-square.off', mimeType: 'text/plain', buffer: Buffer.from(square) });
+  await page.waitForFunction(() => window.wingspline.state.meshKind === 'file');
+  await click(page, '#toggle-3d');
+  assert.equal(await page.evaluate(() => window.wingspline.state.mode3d), true);
+  const canvas = await page.$eval('#stage', (c) => { const r = c.getBoundingClientRect(); return { left: r.left, top: r.top, right: r.right, bottom: r.bottom }; });
+  const inside = (p) => p.x >= canvas.left && p.x <= canvas.right && p.y >= canvas.top && p.y <= canvas.bottom;
+  for (const walk of ['vertex', 'face']) {
+    await page.selectOption('#walk-kind', walk);
+    await settle(page);
+    assert.equal(await sideNote(page), '', `${walk} walk seen from the front: no note`);
+  }
+  const yaw0 = await page.evaluate(() => window.wingspline.state.rotation.yaw);
+  await dragEmptyCanvas(page, Math.round(Math.PI / YAW_PER_PX));
+  const yaw1 = await page.evaluate(() => window.wingspline.state.rotation.yaw);
+  assert.ok(Math.abs(yaw1 - yaw0 - Math.PI) < 0.02, `a half turn (yaw ${yaw0} -> ${yaw1})`);
+  const centre = await projectedCentre(page);
+  assert.ok(inside(centre), `the mesh's centre at (${centre.x.toFixed(0)}, ${centre.y.toFixed(0)}) stays in the canvas ${JSON.stringify(canvas)}`);
+  // The square lies in z = 0 with CCW faces seen from +z: after a half turn about the
+  // vertical axis the walk is seen from behind.
+  for (const walk of ['face', 'vertex']) {
+    await page.selectOption('#walk-kind', walk);
+    await settle(page);
+    assert.match(await sideNote(page), /behind.*clockwise/i, `${walk} walk seen from behind says so`);
+  }
+  await screenshot(page, 'mesh-3d-behind');
+  await dragEmptyCanvas(page, -Math.round(Math.PI / YAW_PER_PX));
+  assert.equal(await sideNote(page), '', 'turned back to the front: no note');
+  assert.ok(inside(await projectedCentre(page)));
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

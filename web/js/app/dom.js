@@ -17,6 +17,14 @@ export function h(tag, attrs = {}, ...children) {
   return node;
 }
 
+// node.replaceChildren(...) with h()'s rules: DOM's own replaceChildren turns a null or
+// undefined child into the text "null" / "undefined" (issue 13 item 9), this skips them.
+export function setChildren(node, ...children) {
+  node.replaceChildren();
+  append(node, children);
+  return node;
+}
+
 function append(node, children) {
   for (const child of children) {
     if (child === null || child === undefined || child === false) continue;

@@ -260,7 +260,8 @@ export async function runLesson(lesson) {
       store.endGesture();
       announce(handles().find((x) => x.id === ui.selected));
     },
-    click: lesson.click ? (x, y, event) => lesson.click(x, y, ctx, event) : null,
+    // Read when the click happens: a lesson may set its hook in setup, after the stage exists.
+    click: (x, y, event) => (lesson.click ? lesson.click(x, y, ctx, event) : false),
     // Resizing clears the canvas: redraw at once, so no frame (or screenshot) shows it blank.
     onResize: () => {
       // Until the person moves the view, the lesson's starting view stays fitted to the

@@ -77,6 +77,10 @@ function derivativeOrder(order) {
   return wholeNumber(order, 'the derivative order', 0, MAX_DERIVATIVE_ORDER);
 }
 
+function guaranteesOut(r) {
+  return { parametric: r.parametric, geometric: r.geometric, joints: r.joints, interpolated: Array.from(r.interpolated) };
+}
+
 function cubicBasis(kind, what) {
   if (typeof kind !== 'string' || !CUBIC_BASES.includes(kind)) {
     fail('unknown-basis', `${what} is ${JSON.stringify(kind)?.slice(0, 40)}; expected ${CUBIC_BASES.join(', ')}`);
@@ -340,6 +344,33 @@ export function createCurvesApi(raw) {
     // docs/api-curves.md for the Hermite layout). Returns { nu, nv, positions, normals, du,
     // dv (all [3*(nv*i + j) + k] at u = i/(nu-1), v = j/(nv-1)), twists (p_uv at the corners
     // (0,0), (0,1), (1,0), (1,1): [3*c + k]) }.
+    // ---- Guarantees (issue 13 item 8): what holds for EVERY control polygon, from the basis.
+    // A chain of cubic segments of one basis: slot j is a control point (isPoint[j] true) or a
+    // tangent vector; maps[s] is segment s's 4 x slots matrix (row-major: weight of slot j in
+    // geometry row r at maps[s][slots*r + j]). -> {parametric, geometric, joints, interpolated}:
+    // the weakest C^k / G^k over the joints and the slots every curve passes through.
+    chainGuarantees({ basis, slots, maps, isPoint } = {}) {
+      cubicBasis(basis, 'basis');
+      wholeNumber(slots, 'slots', 1, 4096);
+      if (!Array.isArray(maps) || maps.length === 0) fail('invalid-argument', 'maps must be a non-empty list of 4 x slots matrices');
+      const flat = new Float64Array(maps.length * 4 * slots);
+      maps.forEach((m, s) => {
+        const rows = numbers(m, `maps[${s}]`);
+        if (rows.length !== 4 * slots) fail('invalid-argument', `maps[${s}] has ${rows.length} weights, not 4 x ${slots}`);
+        flat.set(rows, 4 * slots * s);
+      });
+      if (!Array.isArray(isPoint) || isPoint.length !== slots) fail('invalid-argument', `isPoint needs one true/false per slot (${slots})`);
+      return guaranteesOut(unwrap(raw.chainGuarantees(basis, slots, flat, Int32Array.from(isPoint, Boolean))));
+    },
+    // A B-spline's guarantees from its knots: C^k at the weakest interior knot (p - m for a knot
+    // of multiplicity m, computed from the basis functions' derivatives) and the control points
+    // whose basis function reaches 1 (interpolated for every polygon).
+    bsplineGuarantees({ knots, degree = 3, count } = {}) {
+      wholeNumber(degree, 'degree', 1, 20);
+      wholeNumber(count, 'count', 1, 1_000_000);
+      return guaranteesOut(unwrap(raw.bsplineGuarantees(numbers(knots, 'knots'), degree, count)));
+    },
+
     samplePatch({ kind, points, nu = 16, nv = 16 } = {}) {
       if (kind !== 'hermite' && kind !== 'bezier') fail('unknown-basis', `patch kind must be 'hermite' or 'bezier', not ${JSON.stringify(kind)?.slice(0, 40)}`);
       wholeNumber(nu, 'nu', 2, 4096);

@@ -274,6 +274,20 @@ export class Mesh {
     return unwrap(this.#raw.meshNormals(this.#live(), into)).normals;
   }
 
+  // The axis-aligned bounding box {min, max, centre} ([x, y, z] each): a 3D view turns
+  // about its centre (issue 13 item 11).
+  boundingBox() {
+    const r = unwrap(this.#raw.meshBoundingBox(this.#live()));
+    return { min: Array.from(r.min), max: Array.from(r.max), centre: Array.from(r.centre) };
+  }
+
+  // The unit normal at vertex v, [x, y, z]: the faces around v weighted by their area
+  // ([0, 0, 0] for an isolated vertex). Its side tells whether the CCW walk is seen from the front.
+  vertexNormal(v) {
+    integerIn(v, 'vertex', 0, INT32_MAX);
+    return Array.from(unwrap(this.#raw.meshVertexNormal(this.#live(), v)).normal);
+  }
+
   #faceCount() {
     if (this.#faces === undefined) this.#faces = unwrap(this.#raw.meshCounts(this.#live())).faces;
     return this.#faces;

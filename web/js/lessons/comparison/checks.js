@@ -1,8 +1,12 @@
-// The comparison tables of lectures 001 and 003, every cell measured on the current curves
-// by the core: blending weights (convex hull), distances from the control points to the
-// sampled curve (interpolation), subdivision checked against the original, and the joint
-// classifier on the inherent and the easily-achieved construction.
-import { FAMILY_IDS, familySegments, inherentSegments, easySegments, nubsCurve, nonUniformKnots } from './families.js';
+// The comparison tables of lectures 001 and 003. A cell states a guarantee of the
+// representation, so it is checked for EVERY polygon (issue 13 item 8): the core's
+// structural argument on the family's construction (continuity and interpolation from the
+// basis matrices or knots, api.chainGuarantees / api.bsplineGuarantees) and the blending
+// weights (convex hull, the same for every polygon). Beside each cell, what THIS polygon
+// happens to do: distances from the control points to the sampled curve, the joint
+// classifier on the drawn curves, subdivision checked against the original. "Ease of
+// subdivision" is the lecture's judgement: quoted, never checked.
+import { FAMILY_IDS, familySegments, inherentSegments, easySegments, nubsCurve, nonUniformKnots, constructionOf } from './families.js';
 
 export const SAMPLES_PER_SEGMENT = 101;
 // A control point counts as interpolated when the curve passes within this distance
@@ -52,11 +56,13 @@ export function sampleSegments(api, segs) {
 
 function convexHullCell(api, family, sampled) {
   if (family === 'hermite') {
-    // H2 and H3 multiply tangent vectors, not points: there is no hull of points to speak of.
+    // H2 and H3 multiply tangent vectors, not points: measured, a hull of points does not apply.
     const b = api.blendingFunctions(sampled[0].curve, sampled[0].params);
     let tangentWeight = 0;
-    for (let j = 0; j < sampled[0].params.length; j += 1) tangentWeight = Math.max(tangentWeight, Math.abs(b.values[b.count * j + 2]));
-    return { answer: 'N/A', evidence: `H2, H3 weight tangent vectors (up to ${fmt(tangentWeight)}), not points` };
+    for (let j = 0; j < sampled[0].params.length; j += 1) {
+      for (const i of [2, 3]) tangentWeight = Math.max(tangentWeight, Math.abs(b.values[b.count * j + i]));
+    }
+    if (tangentWeight > WEIGHT_TOLERANCE) return { answer: 'N/A', evidence: `H2, H3 weight tangent vectors (up to ${fmt(tangentWeight)}), not points` };
   }
   let minWeight = Infinity;
   let sumError = 0;
@@ -83,19 +89,29 @@ export function controlPointDistances(points, sampled) {
   });
 }
 
-function interpolationCells(points, sampled) {
+// What this polygon does: the control points its curve passes through (within
+// INTERPOLATION_TOLERANCE), whether or not the representation guarantees it.
+function polygonInterpolation(points, sampled) {
   const d = controlPointDistances(points, sampled);
   const hit = d.map((x, i) => (x <= INTERPOLATION_TOLERANCE ? i : -1)).filter((i) => i >= 0);
-  const missIndex = d.reduce((best, x, i) => (x > INTERPOLATION_TOLERANCE && (best < 0 || x < d[best]) ? i : best), -1);
-  const maxHit = hit.reduce((m, i) => Math.max(m, d[i]), 0);
-  const some = hit.length > 0
-    ? { answer: 'Yes', evidence: `P${hit.join(', P')} (distance ${fmt(maxHit)})`, interpolated: hit }
-    : { answer: 'No', evidence: `nearest P${missIndex} is ${fmt(d[missIndex])} away`, interpolated: hit };
   const farIndex = d.reduce((best, x, i) => (x > d[best] ? i : best), 0);
-  const all = hit.length === points.length
-    ? { answer: 'Yes', evidence: `distance ${fmt(maxHit)} at every point`, interpolated: hit }
-    : { answer: 'No', evidence: `P${farIndex} is ${fmt(d[farIndex])} away`, interpolated: hit };
-  return { some, all, distances: d };
+  const nearMiss = d.reduce((best, x, i) => (x > INTERPOLATION_TOLERANCE && (best < 0 || x < d[best]) ? i : best), -1);
+  const some = hit.length ? { answer: 'Yes', evidence: `through P${hit.join(', P')}` } : { answer: 'No', evidence: `nearest P${nearMiss} is ${fmt(d[nearMiss])} away` };
+  const all = hit.length === points.length ? { answer: 'Yes', evidence: 'through every point' } : { answer: 'No', evidence: `P${farIndex} is ${fmt(d[farIndex])} away` };
+  return { some: { ...some, interpolated: hit }, all: { ...all, interpolated: hit }, distances: d };
+}
+
+// The guarantee: the control points every polygon's curve passes through (the core finds the
+// slots whose basis function is 1 at a segment end, or at a knot).
+function guaranteedInterpolation(g, count) {
+  const hit = g.interpolated.filter((j) => j < count);
+  const some = hit.length
+    ? { answer: 'Yes', evidence: `every polygon: P${hit.join(', P')} (a basis function is 1 there)`, interpolated: hit }
+    : { answer: 'No', evidence: 'no basis function reaches 1 at a joint: no point is guaranteed', interpolated: hit };
+  const all = hit.length === count
+    ? { answer: 'Yes', evidence: 'every polygon: every point', interpolated: hit }
+    : { answer: 'No', evidence: `not guaranteed for ${count - hit.length} of ${count} points`, interpolated: hit };
+  return { some, all };
 }
 
 // The non-uniform B-spline refines by knot insertion (Boehm, lecture 001 "a knot can be
@@ -109,7 +125,7 @@ function knotInsertionCell(api, sampled) {
   const refined = api.evaluateCurve(curve, s.params);
   let error = 0;
   for (let j = 0; j < refined.length; j += 2) error = Math.max(error, Math.hypot(refined[j] - s.points[j], refined[j + 1] - s.points[j + 1]));
-  return { answer: LECTURE_TABLE.subdivision.nubs, evidence: `${spans.length} knots inserted (Boehm), ${s.curve.points.length / 2} → ${curve.points.length / 2} points; curve moved ${fmt(error)}`, error };
+  return { answer: LECTURE_TABLE.subdivision.nubs, quoted: true, evidence: `${spans.length} knots inserted (Boehm), ${s.curve.points.length / 2} → ${curve.points.length / 2} points; curve moved ${fmt(error)}`, error };
 }
 
 // The spans of the non-uniform B-spline as separate curves over their own knot intervals
@@ -143,9 +159,10 @@ function subdivisionCell(api, family, sampled) {
   }
   const how = family === 'bezier' ? 'G_B^L P and G_B^R P directly'
     : family === 'hermite' ? 'to Bezier (q = M_B⁻¹ M_H g), then split' : 'to Bezier (q = M_B⁻¹ M P) first, then split';
-  return { answer: LECTURE_TABLE.subdivision[family], evidence: `${how}; halves match to ${fmt(error)}`, error };
+  return { answer: LECTURE_TABLE.subdivision[family], quoted: true, evidence: `${how}; halves match to ${fmt(error)}`, error };
 }
 
+// What this polygon does at its joints: the core's classifier on the drawn segments.
 function continuityCell(api, segs) {
   // One segment has no joint: nothing to measure, and no claim is made.
   if (segs.length < 2) return { answer: '—', evidence: 'one segment: no joint to measure', parametric: null, geometric: null };
@@ -156,28 +173,58 @@ function continuityCell(api, segs) {
     parametric = Math.min(parametric, v.parametric);
     geometric = Math.min(geometric, v.geometric);
   }
-  return { answer: `C${cLabel(parametric)} G${cLabel(geometric)}`, evidence: `weakest of ${segs.length - 1} joint${segs.length === 2 ? '' : 's'}`, parametric, geometric };
+  return { answer: `C${cLabel(parametric)} G${cLabel(geometric)}`, evidence: `this polygon, weakest of ${segs.length - 1} joint${segs.length === 2 ? '' : 's'}`, parametric, geometric };
 }
 
+// The guarantee at every joint, for every polygon (the core's structural argument).
+function guaranteedContinuity(g, how) {
+  if (g.joints === 0) return { answer: '—', evidence: 'one segment: no joint', parametric: null, geometric: null };
+  return { answer: `C${cLabel(g.parametric)} G${cLabel(g.geometric)}`, evidence: `${how}, for every polygon: weakest of ${g.joints} joint${g.joints === 1 ? '' : 's'}`,
+    parametric: g.parametric, geometric: g.geometric };
+}
+
+function guaranteesOf(api, family, count, easy = false) {
+  return family === 'nubs' ? api.bsplineGuarantees(constructionOf('nubs', count)) : api.chainGuarantees(constructionOf(family, count, { easy }));
+}
+
+// columns[family][row]: the guarantee (answer, evidence; quoted: true for the lecture's own
+// judgement); polygon[family][row]: what this polygon does.
 export function computeTable(api, points) {
   const columns = {};
+  const polygon = {};
   const curves = {};
+  const K = points.length;
   for (const family of FAMILY_IDS) {
     const segs = familySegments(family, points);
     const sampled = sampleSegments(api, segs);
     curves[family] = sampled;
-    const interp = interpolationCells(points, sampled);
-    const inherent = continuityCell(api, family === 'nubs' ? spanCurves(api, nubsCurve(points)) : inherentSegments(family, points));
+    const seen = polygonInterpolation(points, sampled);
+    const how = family === 'nubs' ? 'from the knots' : 'from the basis matrix';
+    const inherentG = guaranteesOf(api, family, K);
+    // Hermite and Bezier have a rule for more; B-splines and Catmull-Rom need none.
+    const hasRule = family === 'hermite' || family === 'bezier';
+    const easyG = hasRule ? guaranteesOf(api, family, K, true) : inherentG;
+    // The drawn Hermite curve shares tangents (the easy construction); the others are drawn bare.
+    const interp = guaranteedInterpolation(family === 'hermite' ? easyG : inherentG, K);
+    const subdivision = subdivisionCell(api, family, sampled);
+    const inherentSeen = continuityCell(api, family === 'nubs' ? spanCurves(api, nubsCurve(points)) : inherentSegments(family, points));
     columns[family] = {
       convexHull: convexHullCell(api, family, sampled),
       interpolatesSome: interp.some,
       interpolatesAll: interp.all,
-      subdivision: subdivisionCell(api, family, sampled),
-      inherent,
-      // B-splines and Catmull-Rom need no rule: their easy construction is the inherent one.
-      easy: family === 'bspline' || family === 'catmull-rom' || family === 'nubs' ? inherent : continuityCell(api, easySegments(family, points)),
-      distances: interp.distances,
+      subdivision,
+      inherent: guaranteedContinuity(inherentG, how),
+      easy: guaranteedContinuity(easyG, hasRule ? `${how} with the rule` : `${how} (no rule needed)`),
+      distances: seen.distances,
+    };
+    polygon[family] = {
+      convexHull: { answer: '—', evidence: 'the weights do not depend on the polygon' },
+      interpolatesSome: seen.some,
+      interpolatesAll: seen.all,
+      subdivision: { answer: fmt(subdivision.error), evidence: 'largest distance between the split halves and the curve' },
+      inherent: inherentSeen,
+      easy: hasRule ? continuityCell(api, easySegments(family, points)) : inherentSeen,
     };
   }
-  return { columns, curves, knots: nonUniformKnots(points.length) };
+  return { columns, polygon, curves, knots: nonUniformKnots(K) };
 }

@@ -80,3 +80,42 @@ export function easySegments(family, points) {
   }
   return familySegments(family, points);
 }
+
+// Each family's construction as the core's guarantee check reads it (issue 13 item 8):
+// which control data each segment's geometry rows are, for ANY polygon of `count` points.
+// Slots 0..count-1 are P0..P(count-1); Hermite adds tangent-vector slots after them.
+// maps[s][slots*r + j] = weight of slot j in geometry row r of segment s. `easy` is lecture
+// 001's "Achieving Continuity": Hermite neighbours share the tangent; Bezier sets
+// P3i+1 = 2 P3i - P3i-1. The non-uniform B-spline is described by its knots instead.
+export function constructionOf(family, count, { easy = false } = {}) {
+  if (family === 'nubs') return { knots: nonUniformKnots(count), degree: 3, count };
+  const segments = [];
+  let slots = count;
+  let isPoint = new Array(count).fill(true);
+  if (family === 'hermite') {
+    // Inherent: each segment has its own two tangents; easy: one tangent per point.
+    const tangentSlots = easy ? count : 2 * (count - 1);
+    slots = count + tangentSlots;
+    isPoint = [...isPoint, ...new Array(tangentSlots).fill(false)];
+    for (let i = 0; i + 1 < count; i += 1) {
+      const rows = easy ? [i, i + 1, count + i, count + i + 1] : [i, i + 1, count + 2 * i, count + 2 * i + 1];
+      segments.push(rows.map((j) => ({ [j]: 1 })));
+    }
+  } else if (family === 'bezier') {
+    for (let i = 0; i + 3 < count; i += 3) {
+      const rows = [i, i + 1, i + 2, i + 3].map((j) => ({ [j]: 1 }));
+      if (easy && i > 0) rows[1] = { [i]: 2, [i - 1]: -1 }; // P3i+1 = 2 P3i - P3i-1
+      segments.push(rows);
+    }
+  } else {
+    // Windows of four; Catmull-Rom repeats the end points (as familySegments draws it).
+    const list = family === 'catmull-rom' ? [0, ...Array.from({ length: count }, (_, i) => i), count - 1] : Array.from({ length: count }, (_, i) => i);
+    for (let i = 0; i + 3 < list.length; i += 1) segments.push(list.slice(i, i + 4).map((j) => ({ [j]: 1 })));
+  }
+  const maps = segments.map((rows) => {
+    const m = new Float64Array(4 * slots);
+    rows.forEach((row, r) => { for (const [j, w] of Object.entries(row)) m[slots * r + Number(j)] += w; });
+    return m;
+  });
+  return { basis: family, slots, isPoint, maps };
+}

@@ -2,7 +2,7 @@
 // uniform B-spline and Catmull-Rom at once; the lectures' comparison table checked live by
 // the core; basis conversion both ways; affine and perspective invariance measured.
 import { object, list, number, oneOf, integer, boolean } from '../../app/schema.js';
-import { h, panel, table } from '../../app/dom.js';
+import { h, panel, table, setChildren } from '../../app/dom.js';
 import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
 import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH, pointTangents } from './families.js';
 import { computeTable, LECTURE_TABLE, ROW_NAMES } from './checks.js';
@@ -277,7 +277,12 @@ export const lesson = {
     label: 'Comparison table (Markdown)', filename: 'comparison-table.md', type: 'text/markdown',
     make(model) {
       const head = `| | ${FAMILY_IDS.map((f) => FAMILY_NAMES[f]).join(' | ')} |\n|---|${FAMILY_IDS.map(() => '---').join('|')}|`;
-      const rows = Object.keys(ROW_NAMES).map((row) => `| ${ROW_NAMES[row]} | ${FAMILY_IDS.map((f) => `${model.table.columns[f][row].answer} (${model.table.columns[f][row].evidence})`).join(' | ')} |`);
+      const cellText = (f, row) => {
+        const c = model.table.columns[f][row];
+        const seen = model.table.polygon[f][row];
+        return `${c.answer} (${c.quoted ? 'quoted from the lecture' : c.evidence}; this polygon: ${seen.answer})`;
+      };
+      const rows = Object.keys(ROW_NAMES).map((row) => `| ${ROW_NAMES[row]} | ${FAMILY_IDS.map((f) => cellText(f, row)).join(' | ')} |`);
       return `${head}\n${rows.join('\n')}\n`;
     },
   }],
@@ -299,19 +304,29 @@ function blendingOfFirstSegment(api, family, points) {
 }
 
 function updateTable(body, tbl) {
-  const rows = Object.keys(ROW_NAMES).map((row) => [ROW_NAMES[row], ...FAMILY_IDS.map((f) => {
+  const rows = Object.keys(ROW_NAMES).map((row) => [ROW_NAMES[row], ...FAMILY_IDS.flatMap((f) => {
     const cell = tbl.columns[f][row];
+    const seen = tbl.polygon[f][row];
     const expected = LECTURE_TABLE[row][f];
-    const agrees = cell.answer === expected;
     const measured = cell.answer !== '—';
-    return h('div', { class: 'live-cell', 'data-row': row, 'data-family': f, 'data-answer': cell.answer, 'data-agrees': String(agrees) },
-      h('strong', {}, cell.answer), h('span', { class: 'evidence' }, cell.evidence),
-      measured ? h('span', { class: agrees ? 'lecture agrees' : 'lecture differs' }, `lecture: ${expected} ${agrees ? '✓' : '≠'}`)
-        : h('span', { class: 'lecture' }, `lecture: ${expected} (at a joint)`));
+    const agrees = cell.answer === expected;
+    // The lecture's own judgement is shown as a quotation: no check mark, no verdict.
+    const verdict = cell.quoted
+      ? h('span', { class: 'lecture quoted' }, 'quoted from the lecture, not checked')
+      : measured ? h('span', { class: agrees ? 'lecture agrees' : 'lecture differs' }, `lecture: ${expected} ${agrees ? '✓' : '≠'}`)
+        : h('span', { class: 'lecture' }, `lecture: ${expected} (at a joint)`);
+    return [
+      h('div', { class: 'live-cell', 'data-row': row, 'data-family': f, 'data-answer': cell.answer, 'data-agrees': cell.quoted ? null : String(agrees), 'data-quoted': cell.quoted ? 'true' : null },
+        h('strong', {}, cell.answer), h('span', { class: 'evidence' }, cell.evidence), verdict),
+      h('div', { class: 'polygon-cell', 'data-row': row, 'data-family': f, 'data-answer': seen.answer },
+        h('strong', {}, seen.answer), h('span', { class: 'evidence' }, seen.evidence)),
+    ];
   })]);
   body.replaceChildren(
-    table({ caption: 'Lecture 003 (Hermite to Catmull-Rom) and lecture 001 (non-uniform B-spline), each cell measured now', head: [['', ...FAMILY_IDS.map((f) => FAMILY_NAMES[f])]], rows, className: 'data-table comparison-table' }),
-    h('p', { class: 'hint' }, 'Convex hull: the blending weights of the points are ≥ 0 and sum to 1 (lecture 003). Interpolation: distance from each control point to the curve. Continuity: the core\'s classifier at every joint, on the bare representation (inherent) and after the easy rule (Hermite shares tangents; Bezier mirrors P3i-1 about the joint).'),
+    table({ caption: 'Lecture 003 (Hermite to Catmull-Rom) and lecture 001 (non-uniform B-spline): each guarantee checked for every polygon, beside what this polygon does',
+      head: [['', ...FAMILY_IDS.map((f) => ({ text: FAMILY_NAMES[f], colspan: 2 }))], ['', ...FAMILY_IDS.flatMap(() => ['guaranteed', 'this polygon'])]],
+      rows, className: 'data-table comparison-table' }),
+    h('p', { class: 'hint' }, 'Guaranteed: what holds for every control polygon. Continuity and interpolation come from the core\'s structural argument: the derivatives at a joint are linear in the control data, so C^k holds for every polygon exactly when their coefficients (basis matrix, or the basis functions at a knot) agree, and a point is always interpolated when its basis function is 1 at a joint. Convex hull: the blending weights of the points are ≥ 0 and sum to 1 (lecture 003). This polygon: distances from the control points to the curve and the core\'s classifier at its joints, which may be smoother than guaranteed. Ease of subdivision is the lecture\'s judgement, quoted; beside it, how well this polygon\'s split halves match.'),
   );
 }
 
@@ -351,7 +366,7 @@ function updateConversion(ui, m, state) {
     ? math(mi('q'), mo('='), el('msup', sub('M', short[m.to]), el('mn', '-1')), sub('M', short[m.from]), mi('P'), mo('='),
       el('msup', matrix(rows4(m.Mto)), el('mn', '-1')), matrix(rows4(m.Mfrom)), matrix(geometryRows(m.g)), mo('='), matrix(geometryRows(m.q)))
     : math(mi('P'), fixed('('), mi('u'), fixed(')'), mo('='), el('msup', mi('u'), mi('T')), matrix(rows4(m.Mto)), matrix(geometryRows(m.g)));
-  ui.out.replaceChildren(
+  setChildren(ui.out,
     h('div', { class: 'formula' }, formula),
     h('p', { 'data-conversion-distance': String(m.distance) }, m.q
       ? `The ${FAMILY_NAMES[m.to]} curve of q is the ${FAMILY_NAMES[m.from]} curve of P: max distance ${fmtDistance(m.distance)} over 121 samples.`

@@ -174,14 +174,17 @@ export function switchFamily(state, family) {
 }
 
 // Adds a point after index `after` (the midpoint with the next, or beyond the end).
-export function addPoint(state, after, at = null) {
+// `box` ({minX, minY, maxX, maxY}, world units: the visible view less a margin), when given,
+// shortens a point that continues the polygon past an end so it stays in view; the caller
+// re-fits the view when that is not possible (the end point itself at or beyond the edge).
+export function addPoint(state, after, at = null, box = null) {
   const K = state.points.length;
   const i = Math.min(Math.max(after, -1), K - 1);
   let p;
   if (at) p = at;
   else if (i < K - 1 && i >= 0) p = mid(state.points[i], state.points[i + 1]);
-  else if (i === K - 1) p = extend(state.points[K - 2] ?? [0, 0], state.points[K - 1]);
-  else p = extend(state.points[1], state.points[0]);
+  else if (i === K - 1) p = extend(state.points[K - 2] ?? [0, 0], state.points[K - 1], box);
+  else p = extend(state.points[1], state.points[0], box);
   const points = insertAt(state.points, i + 1, p.map(round));
   const tangents = insertAt(state.tangents, i + 1, [1, 0]);
   const weights = insertAt(state.weights, i + 1, 1);
@@ -208,5 +211,21 @@ export function withDegree(state, degree) {
 }
 
 const mid = (a, b) => [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
-const extend = (a, b) => [2 * b[0] - a[0], 2 * b[1] - a[1]];
+// b + s (b - a): s = 1 (one more leg of the same length), or the largest s that stays in
+// `box` when that is at least MIN_LEG_FRACTION of a leg (a shorter one would crowd b).
+const MIN_LEG_FRACTION = 0.25;
+function extend(a, b, box = null) {
+  const d = [b[0] - a[0], b[1] - a[1]];
+  let s = 1;
+  if (box) {
+    const lo = [box.minX, box.minY];
+    const hi = [box.maxX, box.maxY];
+    for (const k of [0, 1]) {
+      if (d[k] > 0) s = Math.min(s, (hi[k] - b[k]) / d[k]);
+      else if (d[k] < 0) s = Math.min(s, (lo[k] - b[k]) / d[k]);
+    }
+    if (!(s >= MIN_LEG_FRACTION)) s = 1;
+  }
+  return [b[0] + s * d[0], b[1] + s * d[1]];
+}
 const insertAt = (arr, i, v) => [...arr.slice(0, i), v, ...arr.slice(i)];

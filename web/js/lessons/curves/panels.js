@@ -70,14 +70,31 @@ export function setupPanels(ctx, lesson) {
   });
   uPlayer.onChange(() => { playU.textContent = uPlayer.playing ? 'Pause u' : 'Play u'; playU.setAttribute('aria-pressed', String(uPlayer.playing)); });
 
+  // New points keep this far (CSS px) inside the canvas edge: the handle and its label show.
+  const ADD_MARGIN_PX = 24;
   function addSelected(at = null) {
     const s = state();
     const info = familyInfo(s.family);
     const most = familyMaxPoints(info, ctx.api);
     if (s.points.length >= most) { ctx.message.warn(`${info.label} takes at most ${most} points here.`); return; }
     const sel = selectedPoint(ctx);
-    const next = addPoint(s, at ? s.points.length - 1 : (sel ?? s.points.length - 1), at);
-    if (commit(next)) ctx.message.info(`Added P${at ? s.points.length : (sel ?? s.points.length - 1) + 1}.`);
+    const index = at ? s.points.length : (sel ?? s.points.length - 1) + 1;
+    const box = visibleBox(ADD_MARGIN_PX);
+    const next = addPoint(s, index - 1, at, box);
+    if (!commit(next)) return;
+    // A point that could not be placed in view (its neighbours are at or past the edge):
+    // the view moves to show the whole curve, so nothing is added out of sight.
+    const [x, y] = next.points[index];
+    if (!at && !(x >= box.minX && x <= box.maxX && y >= box.minY && y <= box.maxY)) ctx.setView(ctx.lesson.fitView(ctx.model, ctx.stage));
+    ctx.message.info(`Added P${index}.`);
+  }
+  // The world box the canvas shows, less `marginPx` on each side.
+  function visibleBox(marginPx) {
+    const { width, height } = ctx.stage.size;
+    const t = ctx.stage.transform();
+    const [x0, y0] = t.toWorld(marginPx, height - marginPx);
+    const [x1, y1] = t.toWorld(width - marginPx, marginPx);
+    return { minX: Math.min(x0, x1), minY: Math.min(y0, y1), maxX: Math.max(x0, x1), maxY: Math.max(y0, y1) };
   }
   function removeSelected() {
     const s = state();

@@ -19,16 +19,27 @@ export function viewRotation(state) {
   return [cy, 0, sy, sp * sy, cp, -sp * cy, -cp * sy, sp, cp * cy];
 }
 
-export function projectAll(positions, R) {
+// The view turns about `centre` (the core's bounding-box centre, issue 13 item 11):
+// R (p - c) + c, so the mesh spins in place instead of swinging round the world origin and
+// leaving the canvas; in 2D (R = I) positions are shown as they are.
+export function projectAll(positions, R, centre = [0, 0, 0]) {
   const n = positions.length / 3;
   const out = new Float64Array(3 * n);
+  const [cx, cy, cz] = centre;
   for (let v = 0; v < n; v += 1) {
-    const x = positions[3 * v]; const y = positions[3 * v + 1]; const z = positions[3 * v + 2];
-    out[3 * v] = R[0] * x + R[1] * y + R[2] * z;
-    out[3 * v + 1] = R[3] * x + R[4] * y + R[5] * z;
-    out[3 * v + 2] = R[6] * x + R[7] * y + R[8] * z;
+    const x = positions[3 * v] - cx; const y = positions[3 * v + 1] - cy; const z = positions[3 * v + 2] - cz;
+    out[3 * v] = R[0] * x + R[1] * y + R[2] * z + cx;
+    out[3 * v + 1] = R[3] * x + R[4] * y + R[5] * z + cy;
+    out[3 * v + 2] = R[6] * x + R[7] * y + R[8] * z + cz;
   }
   return out;
+}
+
+// Whether a normal n points away from the viewer: its component along the view's depth
+// axis (third row of R, towards the viewer) is negative. A CCW walk about such a normal
+// appears clockwise on screen.
+export function facesAway(R, n) {
+  return R[6] * n[0] + R[7] * n[1] + R[8] * n[2] < 0;
 }
 
 // A screen-plane displacement (dx, dy) back to world coordinates: R^T (dx, dy, 0).

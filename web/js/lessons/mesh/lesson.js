@@ -5,7 +5,7 @@
 import { number, integer, boolean, oneOf, text, list, object, nullable } from '../../app/schema.js';
 import { createMeshSource, MESH_KINDS } from './mesh-source.js';
 import { normaliseSteps, walkFrames } from './walk.js';
-import { drawMesh, viewRotation, projectAll, unprojectDelta, pickElement, LABEL_LIMIT } from './draw.js';
+import { drawMesh, viewRotation, projectAll, unprojectDelta, pickElement, facesAway, LABEL_LIMIT } from './draw.js';
 import { setupPanels } from './panels.js';
 import { meshExports } from './exports.js';
 import { vLabel, fLabel, eLabel } from './labels.js';
@@ -82,6 +82,9 @@ function wingedTables(entry) {
     derived.planes = null;
     derived.reps = null;
     derived.storage = null;
+    derived.centre = null;
+    derived.faceNormals = null;
+    derived.sideKey = null;
   }
   return derived.we;
 }
@@ -107,11 +110,21 @@ function compute(state, ctx) {
   const frames = walkElement >= 0 ? stepsOf(entry, walkKind, walkElement) : [];
   const frame = frames[Math.min(state.step, frames.length - 1)] ?? null;
   const R = viewRotation(state);
-  const viewKey = `${entry.topology}:${entry.version}:${R.join(',')}`;
+  const viewKey = `${entry.topology}:${entry.version}:${state.mode3d}:${R.join(',')}`;
   if (derived.viewKey !== viewKey) {
     let zExtent = 0;
     for (let v = 0; v < V; v += 1) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
-    Object.assign(derived, { viewKey, zExtent, projected: projectAll(we.positions, R) });
+    derived.centre ??= entry.mesh.boundingBox().centre;
+    // In 2D the positions are shown exactly as they are ((p - c) + c would round them).
+    Object.assign(derived, { viewKey, zExtent, projected: projectAll(we.positions, R, state.mode3d ? derived.centre : [0, 0, 0]) });
+  }
+  // Seen from behind: the walked vertex's normal (faces around it, by area) or the walked
+  // face's normal, both from the core, points away from the viewer.
+  const sideKey = `${viewKey}:${walkKind}:${walkElement}`;
+  if (derived.sideKey !== sideKey) {
+    derived.sideKey = sideKey;
+    derived.fromBehind = state.mode3d && walkElement >= 0
+      && facesAway(R, walkKind === 'vertex' ? entry.mesh.vertexNormal(walkElement) : faceNormal(entry.mesh, walkElement));
   }
   return {
     mesh: entry.mesh,
@@ -127,10 +140,17 @@ function compute(state, ctx) {
     is3dMesh: derived.zExtent > 0,
     mode3d: state.mode3d,
     walkKind, walkElement, frames, frame,
+    walkSeenFromBehind: derived.fromBehind,
     stepIndex: Math.min(state.step, Math.max(0, frames.length - 1)),
     lastChange: derived.lastChange,
     derived,
   };
+}
+
+function faceNormal(mesh, f) {
+  derived.faceNormals ??= mesh.normals(); // once per mesh version, not per frame of a drag
+  const n = derived.faceNormals;
+  return [n[3 * f], n[3 * f + 1], n[3 * f + 2]];
 }
 
 function fitView(model, stage) {

@@ -89,6 +89,8 @@ export function setupPanels(ctx) {
   const code = h('ol', { class: 'pseudocode', id: 'walk-code', 'aria-label': 'Pseudocode' });
   const narration = h('p', { class: 'walk-text', id: 'walk-text', 'aria-live': 'polite' });
   const found = h('p', { class: 'walk-found', id: 'walk-found' });
+  // Shown when the walked element's normal points away from the viewer (issue 13 item 11).
+  const side = h('p', { class: 'walk-side hint', id: 'walk-side', 'aria-live': 'polite', hidden: true });
   walkKind.addEventListener('change', () => commit({ walk: walkKind.value, step: 0 }, { history: false }));
   walkElement.addEventListener('change', () => {
     const n = Number(walkElement.value) - 1;
@@ -125,7 +127,7 @@ export function setupPanels(ctx) {
       playButton,
       button('Step ▶', () => player.next(), 'Step forward (→ or PageDown)'),
       labelled('speed', speed), stepLabel),
-    narration, found);
+    narration, side, found);
 
   const notOnCanvas = (event) => event.target !== stage;
   ctx.keymap.add({ keys: [' '], label: 'play / pause the walk', group: 'Walk', action: () => player.toggle(), when: notOnCanvas });
@@ -236,6 +238,10 @@ export function setupPanels(ctx) {
     const what = model.walkKind === 'vertex' ? vLabel(model.walkElement) : fLabel(model.walkElement);
     stepLabel.textContent = `step ${model.stepIndex} / ${Math.max(0, model.frames.length - 1)}`;
     narration.textContent = frame ? frame.text : `${what}: nothing to walk.`;
+    side.hidden = !model.walkSeenFromBehind;
+    side.textContent = model.walkSeenFromBehind
+      ? `Viewed from behind: the normal of ${what} points away from you, so the counter-clockwise walk appears clockwise here. Turn the mesh to see it from the front.`
+      : '';
     const shown = frame ? foundEdges(frame, FOUND_SHOWN) : [];
     const skipped = frame ? frame.foundCount - shown.length : 0;
     found.replaceChildren('Found so far: ',
