@@ -314,3 +314,17 @@ test('zero tangents: curvature "undefined" in the table and the plot agree; the 
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+// A state whose preset has no note (a name from a JSON file or a link, which the schema
+// accepts as text) once printed the literal word "null" under the rule (issue 13, item 9's
+// pattern: replaceChildren writes a null child as text).
+test('a preset without a note prints no "null" in the rule panel', async () => {
+  const page = await openLab();
+  await page.evaluate(() => { const c = window.wingspline.ctx; c.commit({ ...c.state, preset: 'my-own-curve' }); });
+  await page.waitForFunction(() => window.wingspline.state.preset === 'my-own-curve');
+  const text = await page.textContent('#rule-panel');
+  assert.match(text, /C1 \(equal first derivatives\) implies G1/);
+  for (const word of ['null', 'undefined', 'NaN']) assert.ok(!text.includes(word), `the rule panel prints "${word}": ${text}`);
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

@@ -4,7 +4,7 @@
 // along the whole curve, and a point travelling at parametric speed.
 import { object, list, number, oneOf, boolean, text } from '../../app/schema.js';
 import { createPlayer } from '../../app/player.js';
-import { h, panel, table } from '../../app/dom.js';
+import { h, panel, table, setChildren } from '../../app/dom.js';
 import { formatNumber } from '../../ui/mathml.js';
 import { drawSeriesPlot } from '../../ui/series-plot.js';
 import { drawCurve, drawPolygon, drawSamples, drawVector } from '../curves/overlays.js';
@@ -242,7 +242,7 @@ export const lesson = {
     }));
 
     const note = PRESETS[state.preset]?.note ?? '';
-    ui.ruleBody.replaceChildren(
+    setChildren(ui.ruleBody,
       h('p', {}, 'C1 (equal first derivatives) implies G1 (same tangent direction): equal non-zero vectors point the same way. The converse fails: G1 only needs P\'⁺ = α P\'⁻ with α > 0, and α ≠ 1 is G1 without C1. The exception (lecture 004): when both tangents are zero, C1 holds and G1 can fail.'),
       h('p', {}, 'Now: ', model.joints.map((j) => `J${j.index} ${label('C', j.parametric)}, ${label('G', j.geometric)}`).join('; '), '.'),
       note ? h('p', { class: 'hint' }, note) : null,
