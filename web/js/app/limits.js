@@ -1,0 +1,17 @@
+// The limits of what a lesson state may hold: one set, used where a value enters (the
+// inspector, a lesson's entries, imported files: ctx.commit checks every change against the
+// lesson's schema) and where it is read back (share links, local storage, state files:
+// share-link.js validates with the same schema). A value the page accepts is therefore one
+// its own state format reads back on the next visit (issue 13, item 22).
+//
+// The mesh limits are the core's (the coordinate bound, corners per face and the import
+// counts); when the JS API exposes them (web/js/core/mesh-api.js), point these names at it
+// so there is a single source.
+
+// |x| of any coordinate or free number of a state, in world units.
+export const COORDINATE_BOUND = 1e9;
+// Corners of one face of an imported mesh.
+export const MAX_FACE_CORNERS = 1000;
+// Vertices and faces of an imported mesh (the import limit).
+export const MAX_MESH_VERTICES = 200000;
+export const MAX_MESH_FACES = 200000;
