@@ -15,6 +15,8 @@
 //     exports?: [{ label, filename, type, make(model, state) }]
 //     importers?: { off(text, state, name) -> next state, ... }
 //     inspector?: false                 no shell inspector (the lesson has its own inputs)
+//     contentFields?: { key: { what, file, export, label(value) } }  large fields kept in
+//                                      IndexedDB by content hash (docs/state-format.md)
 //   }
 //
 // ctx (what a lesson may use): api, state (getter), commit(next, opts), setView(view),
