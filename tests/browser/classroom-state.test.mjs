@@ -378,3 +378,20 @@ describe('Values are checked where they enter with the limits of the state forma
     await context.close();
   });
 });
+
+describe('Classroom fixture: saved work this page cannot read', () => {
+  test('is kept aside, never written over (a state from a newer Wingspline)', async () => {
+    const context = await newContext();
+    const page = await openLesson(context, new URL('fixture.html', env.site.url).href);
+    const newer = envelopeCode('fixture', 99, { points: [{ x: 5, y: 5 }], future: true });
+    await page.evaluate(() => window.wingspline.flush()); // the page's own first save is done
+    await page.evaluate((code) => localStorage.setItem('wingspline:fixture:state', code), newer);
+    await page.goto(new URL('fixture.html', env.site.url).href.replace(/#.*/, '') + '?again');
+    await waitReady(page);
+    assert.match(await page.evaluate(() => window.wingspline.message()), /could not be read.*kept aside/);
+    await editByKeyboard(page);
+    assert.equal(await page.evaluate(() => localStorage.getItem('wingspline:fixture:unreadable')), newer, 'the unreadable work is kept');
+    assert.notEqual(await page.evaluate(() => localStorage.getItem('wingspline:fixture:state')), newer);
+    await context.close();
+  });
+});
