@@ -8,7 +8,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import { useSiteAndBrowser } from '../helpers/browser.mjs';
 import {
-  lessonsUnderTest, startClassroomSite, openLesson, nothingExecuted, payloads, stateBits, bitsOf,
+  lessonsUnderTest, startClassroomSite, openLesson, waitReady, nothingExecuted, payloads, stateBits, bitsOf,
   awkwardView, tinyView, setView
 } from '../helpers/classroom.mjs';
 
@@ -122,5 +122,108 @@ describe('Classroom fixture: lesson exports', () => {
     await page.waitForFunction(() => window.wingspline.state.points.length === 3);
     assert.deepEqual((await stateBits(page)).points, bitsOf(points));
     await context.close();
+  });
+});
+
+// Issue 13, item 12: an imported mesh of 20,000 vertices or more used to make the link and
+// the saved state too long to read back, and the lecture mesh was saved over it. Imported
+// meshes are now kept in IndexedDB by content hash and the state refers to them.
+// A grid of nx x ny vertices as OFF text, coordinates with many digits (so the file does
+// not compress to nothing), triangles of two per cell.
+function gridOff(nx, ny) {
+  const lines = ['OFF', `${nx * ny} ${2 * (nx - 1) * (ny - 1)} 0`];
+  for (let j = 0; j < ny; j += 1) {
+    for (let i = 0; i < nx; i += 1) lines.push(`${(i / 7).toFixed(9)} ${(j / 3).toFixed(9)} ${Math.sin(i * 0.37 + j * 0.11).toFixed(9)}`);
+  }
+  for (let j = 0; j + 1 < ny; j += 1) {
+    for (let i = 0; i + 1 < nx; i += 1) {
+      const a = j * nx + i;
+      lines.push(`3 ${a} ${a + 1} ${a + nx + 1}`, `3 ${a} ${a + nx + 1} ${a + nx}`);
+    }
+  }
+  return `${lines.join('\n')}\n`;
+}
+const BIG = { nx: 160, ny: 160, name: 'big-grid.off' }; // 25,600 vertices, 50,562 faces
+const LINK_MAX_CHARS = 2000; // a link to a big mesh names it, it does not carry it
+
+async function importOff(page, name, text) {
+  await page.setInputFiles('#import-file', { name, mimeType: 'text/plain', buffer: Buffer.from(text) });
+  await page.waitForFunction((n) => window.wingspline.message().startsWith(`Imported ${n}`), name, { timeout: 60000 });
+  await page.evaluate(() => window.wingspline.flush());
+}
+const meshSummary = (page) => page.evaluate(() => ({
+  kind: window.wingspline.state.meshKind, name: window.wingspline.state.imported?.name ?? null,
+  V: window.wingspline.model.V, F: window.wingspline.model.F,
+}));
+
+describe('Mesh: imported meshes are kept (issue 13, item 12)', () => {
+  const meshUrl = () => new URL('mesh.html', env.site.url).href;
+
+  test('a 25,600-vertex OFF imported with the file chooser is still there after a reload', async () => {
+    const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+    const page = await openLesson(context, meshUrl());
+    await importOff(page, BIG.name, gridOff(BIG.nx, BIG.ny));
+    const expected = { kind: 'file', name: BIG.name, V: BIG.nx * BIG.ny, F: 2 * (BIG.nx - 1) * (BIG.ny - 1) };
+    assert.deepEqual(await meshSummary(page), expected);
+    assert.ok(page.url().length < LINK_MAX_CHARS, `the link stays small (${page.url().length} characters)`);
+    await page.reload();
+    await waitReady(page);
+    assert.equal(await page.evaluate(() => window.wingspline.message()), '', 'no warning after the reload');
+    assert.deepEqual(await meshSummary(page), expected, 'reload from the link');
+    await page.goto(meshUrl());
+    await waitReady(page);
+    assert.deepEqual(await meshSummary(page), expected, 'reopened without a link (saved work)');
+    assert.deepEqual(page.problems, []);
+    await context.close();
+  });
+
+  test('a link to a big imported mesh: the share button offers the file, another browser is told and keeps its work', async () => {
+    const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 }, acceptDownloads: true });
+    const page = await openLesson(context, meshUrl());
+    await importOff(page, BIG.name, gridOff(BIG.nx, BIG.ny));
+    await page.click('[data-action=share]');
+    await page.waitForFunction(() => /only stored in this browser/.test(window.wingspline.message()));
+    assert.match(await page.evaluate(() => window.wingspline.message()), /share the OFF file/i);
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#message [data-message-action]')]);
+    assert.equal(download.suggestedFilename(), 'mesh.off');
+    const off = fs.readFileSync(await download.path(), 'utf8');
+    assert.match(off, new RegExp(`^OFF\\s+${BIG.nx * BIG.ny}\\s+${2 * (BIG.nx - 1) * (BIG.ny - 1)}\\s`));
+    const link = page.url();
+    await context.close();
+
+    // Another browser, with work of its own.
+    const other = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+    let mine = await openLesson(other, meshUrl());
+    await mine.selectOption('#mesh-kind', 'cube');
+    await mine.waitForFunction(() => window.wingspline.state.meshKind === 'cube');
+    await mine.evaluate(() => window.wingspline.flush());
+    const saved = await stateBits(mine);
+    await mine.close();
+    mine = await openLesson(other, link);
+    const text = await mine.evaluate(() => window.wingspline.message());
+    assert.match(text, /imported mesh/, text);
+    assert.match(text, /big-grid\.off/, 'the message names the file to ask for');
+    assert.deepEqual(await stateBits(mine), saved, 'the saved work is shown, not the default');
+    await mine.evaluate(() => window.wingspline.flush());
+    await mine.goto(meshUrl());
+    await waitReady(mine);
+    assert.deepEqual(await stateBits(mine), saved, 'and the saved work was not overwritten');
+    await other.close();
+  });
+
+  test('a small imported mesh still travels inside the link to another browser', async () => {
+    const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+    const page = await openLesson(context, meshUrl());
+    await importOff(page, 'small-grid.off', gridOff(6, 5));
+    const link = page.url();
+    const expected = await meshSummary(page);
+    await page.click('[data-action=share]');
+    await page.waitForFunction(() => /Link copied|address bar/.test(window.wingspline.message()));
+    await context.close();
+    const other = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+    const fresh = await openLesson(other, link);
+    assert.deepEqual(await meshSummary(fresh), expected);
+    assert.equal(await fresh.evaluate(() => window.wingspline.message()), '');
+    await other.close();
   });
 });

@@ -94,6 +94,102 @@ for (const lesson of lessonsUnderTest) {
       await context.close();
     });
 
+    // Issue 13, item 18: opening a link must not throw the saved work away.
+    test('opening a share link keeps the previous work: undo and "Restore" bring it back', async () => {
+      const context = await newContext();
+      // A link made from the lesson's starting point, moved.
+      const maker = await openLesson(context, new URL(lesson.page, env.site.url).href);
+      await setView(maker, tinyView);
+      const link = await maker.evaluate(() => window.wingspline.shareUrl());
+      const linked = await stateBits(maker);
+      await maker.close();
+      const other = await newContext();
+      // The person's own saved work in the other browser.
+      let page = await openLesson(other, new URL(lesson.page, env.site.url).href);
+      await editByKeyboard(page);
+      await setView(page, awkwardView);
+      const mine = await stateBits(page);
+      assert.notDeepEqual(mine, linked);
+      await page.close();
+      // The link opened in a new tab of that browser.
+      page = await openLesson(other, link);
+      assert.deepEqual(await stateBits(page), linked, 'the link is shown');
+      assert.match(await page.evaluate(() => window.wingspline.message()), /previous work/i, 'the page says the previous work is kept');
+      assert.equal(await page.isEnabled('[data-action=undo]'), true, 'undo is available after a link load');
+      await page.click('[data-action=undo]');
+      assert.deepEqual(await stateBits(page), mine, 'undo returns to the previous saved work');
+      await page.click('[data-action=redo]');
+      assert.deepEqual(await stateBits(page), linked);
+      // The offer in the status area does the same.
+      await page.click('#message [data-message-action]');
+      assert.deepEqual(await stateBits(page), mine, '"Restore your previous work"');
+      await page.evaluate(() => window.wingspline.flush());
+      await page.goto(new URL(lesson.page, env.site.url).href);
+      await waitReady(page);
+      assert.deepEqual(await stateBits(page), mine, 'the restored work is the saved work again');
+      assert.deepEqual(page.problems, []);
+      await other.close();
+      await context.close();
+    });
+
+    test('a damaged link never overwrites the saved work', async () => {
+      const context = await newContext();
+      let page = await openLesson(context, new URL(lesson.page, env.site.url).href);
+      await editByKeyboard(page);
+      await setView(page, awkwardView);
+      const mine = await stateBits(page);
+      await page.close();
+      const damaged = `${new URL(lesson.page, env.site.url).href}#s=QUJDREVGR0hJSktMTU5PUA`;
+      page = await openLesson(context, damaged); // in a new tab
+      assert.match(await page.evaluate(() => window.wingspline.message()), /could not be used/);
+      assert.deepEqual(await stateBits(page), mine, 'the saved work is shown, not the default');
+      // Pasted into the open tab's address bar: refused, the work stays.
+      await page.goto(`${damaged}A`);
+      await page.waitForFunction(() => /could not be used/.test(window.wingspline.message()) && /unchanged/.test(window.wingspline.message()));
+      assert.deepEqual(await stateBits(page), mine, 'a pasted damaged link changes nothing');
+      await page.evaluate(() => window.wingspline.flush());
+      await page.goto(new URL(lesson.page, env.site.url).href);
+      await waitReady(page);
+      assert.deepEqual(await stateBits(page), mine, 'and it is still the saved work');
+      await context.close();
+    });
+
+    // Issue 13, item 24: a link pasted into the address bar of a tab showing the lesson.
+    test('a link pasted into an open tab is followed, and undo returns to the work before it', async () => {
+      const context = await newContext();
+      const maker = await openLesson(context, new URL(lesson.page, env.site.url).href);
+      await setView(maker, tinyView);
+      const link = await maker.evaluate(() => window.wingspline.shareUrl());
+      const linked = await stateBits(maker);
+      await maker.close();
+      const other = await newContext();
+      const page = await openLesson(other, new URL(lesson.page, env.site.url).href);
+      await editByKeyboard(page);
+      await setView(page, awkwardView);
+      const mine = await stateBits(page);
+      assert.notDeepEqual(mine, linked);
+      const loads = await page.evaluate(() => performance.getEntriesByType('navigation').length + ':' + performance.timeOrigin);
+      await page.goto(link); // same document, only the fragment changes: no reload
+      await page.waitForFunction((url) => window.location.href === url, link);
+      assert.equal(await page.evaluate(() => performance.getEntriesByType('navigation').length + ':' + performance.timeOrigin), loads, 'the tab was not reloaded');
+      await page.waitForFunction(() => window.wingspline.state.view.zoom === 33.3);
+      assert.deepEqual(await stateBits(page), linked, 'the pasted link is shown');
+      // The next edit builds on the link, and the address bar keeps following the state.
+      await editByKeyboard(page);
+      const edited = await stateBits(page);
+      assert.equal((await stateBits(page)).view.zoom, linked.view.zoom);
+      await page.reload();
+      await waitReady(page);
+      assert.deepEqual(await stateBits(page), edited, 'the edit made after the pasted link is kept');
+      await page.goto(link);
+      await page.waitForFunction(() => window.wingspline.state.view.zoom === 33.3);
+      await page.click('[data-action=undo]');
+      assert.deepEqual(await stateBits(page), edited, 'undo after a pasted link returns to the work before it');
+      assert.deepEqual(page.problems, []);
+      await other.close();
+      await context.close();
+    });
+
     describe('tampered links', () => {
       const id = lesson.id;
       const good = (state) => envelopeCode(id, lesson.fixture ? 2 : 1, state);
@@ -195,6 +291,107 @@ describe('Classroom fixture: older links', () => {
     // The note is shown as text: the markup is visible characters, not an element.
     assert.equal(await page.textContent('#fixture-note'), payloads.img);
     assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
+    await context.close();
+  });
+});
+
+// Issue 13, item 19: local storage full (another page of the origin, a big import).
+describe('Classroom fixture: storage full', () => {
+  test('edits that can no longer be saved locally are said once, and the link keeps them', async () => {
+    const context = await newContext();
+    const page = await openLesson(context, new URL('fixture.html', env.site.url).href);
+    // Another page of the origin fills the storage to the last byte.
+    const filled = await page.evaluate(() => {
+      let i = 0;
+      for (let size = 1 << 20; size >= 1; size >>= 1) {
+        const chunk = 'x'.repeat(size);
+        try { for (;;) { localStorage.setItem(`other-page-${i}`, chunk); i += 1; } } catch { /* full at this size */ }
+      }
+      return i;
+    });
+    assert.ok(filled > 0);
+    await editByKeyboard(page);
+    await page.waitForSelector('#message[data-code=storage-full]');
+    const text = await page.evaluate(() => window.wingspline.message());
+    assert.match(text, /not saved in this browser/i);
+    assert.match(text, /link/i, 'the message says where the work is kept');
+    assert.equal(await page.getAttribute('#message', 'data-kind'), 'warn', 'a polite warning, not an alert');
+    await page.click('#message .message-close');
+    await editByKeyboard(page);
+    await editByKeyboard(page);
+    assert.doesNotMatch(await page.evaluate(() => window.wingspline.message()), /not saved/, 'said once, not on every edit');
+    assert.equal(await page.getAttribute('#message', 'data-code'), null);
+    const edited = await stateBits(page);
+    // A new page from the address bar's link (not the pending-edit rescue of a reload).
+    const link = page.url();
+    const again = await openLesson(context, link);
+    assert.deepEqual(await stateBits(again), edited, 'the link holds the work');
+    assert.deepEqual(page.problems, []);
+    await context.close();
+  });
+});
+
+// Issue 13, item 22: a value the state format would refuse on reload is refused where it
+// is typed, with a message, and the old value stays.
+describe('Values are checked where they enter with the limits of the state format', () => {
+  test('the point inspector refuses x = 5e9 and keeps the old value; 1e9 is accepted', async () => {
+    const context = await newContext();
+    const page = await openLesson(context, new URL('fixture.html', env.site.url).href);
+    await page.focus('#stage');
+    await page.keyboard.press(']');
+    const before0 = await stateBits(page);
+    const oldX = await page.inputValue('#inspect-x');
+    await page.fill('#inspect-x', '5e9');
+    await page.press('#inspect-x', 'Enter');
+    await page.waitForSelector('#message[data-kind=error]');
+    const text = await page.evaluate(() => window.wingspline.message());
+    assert.match(text, /5000000000/, text);
+    assert.match(text, /1000000000|1e9/, 'the message gives the limit');
+    assert.deepEqual(await stateBits(page), before0, 'the state is unchanged');
+    assert.equal(await page.inputValue('#inspect-x'), oldX, 'the field shows the old value again');
+    await page.fill('#inspect-x', '1e9');
+    await page.press('#inspect-x', 'Enter');
+    await page.waitForFunction(() => window.wingspline.state.points.some((p) => p.x === 1e9));
+    await page.evaluate(() => window.wingspline.flush());
+    const kept = await stateBits(page);
+    await page.reload();
+    await waitReady(page);
+    assert.equal(await page.evaluate(() => window.wingspline.message()), '', 'the reload reads back what was accepted');
+    assert.deepEqual(await stateBits(page), kept);
+    await context.close();
+  });
+
+  test('a surfaces entry of 150 is refused with a message; the entry keeps its value', async () => {
+    const context = await newContext();
+    const page = await openLesson(context, new URL('surfaces.html', env.site.url).href);
+    await page.focus('#stage');
+    for (let k = 0; k < 6; k += 1) await page.keyboard.press(']');
+    assert.equal(await page.evaluate(() => window.wingspline.selected), 'a11');
+    const before0 = await stateBits(page);
+    const oldX = await page.inputValue('#entry-x');
+    await page.fill('#entry-x', '150');
+    await page.dispatchEvent('#entry-x', 'change');
+    await page.waitForSelector('#message[data-kind=error]');
+    assert.match(await page.evaluate(() => window.wingspline.message()), /150.*100|100.*150/);
+    assert.deepEqual(await stateBits(page), before0);
+    assert.equal(await page.inputValue('#entry-x'), oldX);
+    await context.close();
+  });
+});
+
+describe('Classroom fixture: saved work this page cannot read', () => {
+  test('is kept aside, never written over (a state from a newer Wingspline)', async () => {
+    const context = await newContext();
+    const page = await openLesson(context, new URL('fixture.html', env.site.url).href);
+    const newer = envelopeCode('fixture', 99, { points: [{ x: 5, y: 5 }], future: true });
+    await page.evaluate(() => window.wingspline.flush()); // the page's own first save is done
+    await page.evaluate((code) => localStorage.setItem('wingspline:fixture:state', code), newer);
+    await page.goto(new URL('fixture.html', env.site.url).href.replace(/#.*/, '') + '?again');
+    await waitReady(page);
+    assert.match(await page.evaluate(() => window.wingspline.message()), /could not be read.*kept aside/);
+    await editByKeyboard(page);
+    assert.equal(await page.evaluate(() => localStorage.getItem('wingspline:fixture:unreadable')), newer, 'the unreadable work is kept');
+    assert.notEqual(await page.evaluate(() => localStorage.getItem('wingspline:fixture:state')), newer);
     await context.close();
   });
 });

@@ -18,7 +18,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { decodeState, encodeState } from '../../web/js/app/share-link.js';
-import { number, integer, boolean, oneOf, text, list, object } from '../../web/js/app/schema.js';
+import { number, integer, boolean, oneOf, text, list, object, nullable } from '../../web/js/app/schema.js';
 import { random } from './seeded-random.mjs';
 
 const SEED = 0x5eed2026;
@@ -235,4 +235,83 @@ test('an older link is migrated, and a migration that meets a malformed old stat
     await checkDecoder(await compress(JSON.stringify({ format: 'wingspline', lesson: 'curves', version: 1, state: bad })),
       `version-1 state ${JSON.stringify(bad)}`);
   }
+});
+
+// Issue 13, item 12: a large field (an imported mesh) travels by reference. The link holds
+// {"$content": "sha256-<hex>", "label"} and the text lives in a content store (IndexedDB in
+// the page; a Map here). What is checked: the link stays small, the reference resolves to
+// the identical state, the store is keyed by the SHA-256 of the text (computed here with
+// node:crypto, independently of the page's crypto.subtle), a missing or tampered entry is a
+// one-sentence Error naming the file, and small values still travel inline.
+const nullableMesh = nullable(object({
+  name: text({ maxLength: 120 }),
+  positions: list(number(), { min: 9, max: 600000 }),
+  faces: list(list(integer({ min: 0, max: 200000 }), { min: 3, max: 1000 }), { min: 1, max: 200000 }),
+}));
+
+test('a large field is stored by its SHA-256 and the link only refers to it', async () => {
+  const { createHash } = await import('node:crypto');
+  const meshLesson = {
+    id: 'mesh',
+    title: 'Mesh representations',
+    stateVersion: 1,
+    schema: {
+      imported: nullableMesh,
+      view: object({ cx: number(), cy: number(), zoom: number({ min: 1, max: 1e5 }) }),
+    },
+    defaultState: () => ({ imported: null, view: { cx: 0, cy: 0, zoom: 50 } }),
+    contentFields: { imported: { label: (v) => v.name } },
+  };
+  const store = new Map();
+  const contents = { get: async (hash) => store.get(hash) ?? null, put: async (hash, textValue) => { store.set(hash, textValue); } };
+  const next = rng(SEED + 4);
+  const n = 3000;
+  const big = {
+    name: 'big <b>grid</b>.off',
+    positions: Array.from({ length: 3 * n }, () => (next() - 0.5) * 1e3),
+    faces: Array.from({ length: n - 2 }, (_, i) => [0, i + 1, i + 2]),
+  };
+  const state = { imported: big, view: { cx: 0.1 + 0.2, cy: -0, zoom: 64 } };
+  const link = await encodeState(meshLesson, state, { contents });
+  assert.ok(link.length < 400, `the link refers to the mesh (${link.length} characters)`);
+  assert.equal(store.size, 1);
+  const [[hash, stored]] = store;
+  assert.equal(hash, `sha256-${createHash('sha256').update(stored, 'utf8').digest('hex')}`, 'keyed by the SHA-256 of its text');
+  assert.deepEqual(JSON.parse(stored), big);
+  const back = await decodeState(meshLesson, link, { contents });
+  assert.deepEqual(back.problems, []);
+  assert.deepEqual(back.state, state);
+  assert.ok(Object.is(back.state.view.cy, -0));
+
+  // Another browser: the reference cannot be resolved. One sentence that names the file.
+  const empty = { get: async () => null, put: async () => {} };
+  for (const where of [empty, undefined]) {
+    await assert.rejects(decodeState(meshLesson, link, { contents: where }), (err) => {
+      assert.equal(err.constructor, Error);
+      assert.ok(isOneSentence(err.message), err.message);
+      assert.match(err.message, /big <b>grid<\/b>\.off/);
+      assert.match(err.message, /only stored in the browser/);
+      return true;
+    });
+  }
+  // A store entry whose text does not match its hash is not used.
+  const tampered = { get: async () => stored.replace(/\d/, '7'), put: async () => {} };
+  await assert.rejects(decodeState(meshLesson, link, { contents: tampered }), (err) => err.constructor === Error && isOneSentence(err.message));
+  // Hostile references: never a TypeError, never a fetch of something else.
+  for (const ref of [{ $content: 'md5-00' }, { $content: 7, label: 'x' }, { $content: `sha256-${'0'.repeat(64)}`, label: { toString: 1 } }, { $content: 'sha256-../../etc', label: 'x' }]) {
+    const bad = await compress(JSON.stringify({ format: 'wingspline', lesson: 'mesh', version: 1, state: { imported: ref, view: state.view } }));
+    try {
+      const result = await decodeState(meshLesson, bad, { contents });
+      assert.equal(result.state.imported, null);
+      assert.ok(result.problems.length > 0);
+    } catch (err) {
+      assert.equal(err.constructor, Error);
+      assert.ok(isOneSentence(err.message), err.message);
+    }
+  }
+
+  // A small mesh (a few hundred numbers) travels inline: the link works between machines.
+  const small = { name: 'tet.off', positions: [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1], faces: [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]] };
+  const smallLink = await encodeState(meshLesson, { ...state, imported: small }, { contents: empty });
+  assert.deepEqual((await decodeState(meshLesson, smallLink)).state.imported, small);
 });

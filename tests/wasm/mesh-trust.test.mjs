@@ -59,6 +59,14 @@ test('api.meshLimits: the core\'s one set of mesh limits', () => {
   assert.ok(Object.isFrozen(api.meshLimits));
 });
 
+test('the page\'s limits (web/js/app/limits.js, read by every schema before the core loads) are the core\'s', async () => {
+  const limits = await import('../../web/js/app/limits.js');
+  assert.deepEqual({
+    maxCoordinate: limits.COORDINATE_BOUND, maxFaceCorners: limits.MAX_FACE_CORNERS,
+    maxVertices: limits.MAX_MESH_VERTICES, maxFaces: limits.MAX_MESH_FACES,
+  }, { ...api.meshLimits });
+});
+
 test('setVertexPosition beyond the coordinate limit is refused, changes nothing, and normals stay finite', () => {
   const mesh = api.buildMesh(api.generateMesh('tetrahedron'));
   try {

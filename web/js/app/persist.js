@@ -3,10 +3,19 @@
 // Writing is debounced (and compression is asynchronous), so an edit made just before a
 // reload is also written synchronously to session storage on pagehide, together with the
 // link it supersedes; a reload of that same link restores the newer state.
-import { encodeState, decodeState, envelope, readEnvelope, stringifyExact } from './share-link.js';
+// Large fields (an imported mesh) are kept in IndexedDB by content hash and the link refers
+// to them (share-link.js, content-store.js).
+//
+// The person's saved work is never lost to a link or a state that cannot be read (issue
+// 13, items 12 and 18): a link that cannot be used shows the saved work instead; a link
+// that can replaces it as one undoable step (restoreState's `previous`); a saved state
+// this page cannot read is kept aside under `wingspline:<lesson>:unreadable` before
+// anything is written over it.
+import { decodeState, readEnvelopeResolved, externalize, externalizeKnown, compressEnvelope, envelope, stringifyExact } from './share-link.js';
 
 const storageKey = (lesson) => `wingspline:${lesson.id}:state`;
 const pendingKey = (lesson) => `wingspline:${lesson.id}:pending`;
+const unreadableKey = (lesson) => `wingspline:${lesson.id}:unreadable`;
 
 function sessionStore() {
   try {
@@ -17,7 +26,7 @@ function sessionStore() {
 }
 
 // The state this tab had not yet written when it was last hidden, if it belongs to `code`.
-function takePending(lesson, code) {
+async function takePending(lesson, code, contents) {
   const session = sessionStore();
   const raw = session?.getItem(pendingKey(lesson));
   if (!raw) return null;
@@ -25,14 +34,14 @@ function takePending(lesson, code) {
   try {
     const record = JSON.parse(raw);
     if (record?.fromCode !== code) return null;
-    const { state, problems } = readEnvelope(lesson, JSON.parse(record.json));
+    const { state, problems } = await readEnvelopeResolved(lesson, JSON.parse(record.json), { contents });
     return problems.length ? null : state;
   } catch {
     return null;
   }
 }
 
-function readHashCode() {
+export function readHashCode() {
   const params = new URLSearchParams(window.location.hash.slice(1));
   return params.get('s');
 }
@@ -44,51 +53,106 @@ function safeStorage() {
     window.localStorage.removeItem(probe);
     return window.localStorage;
   } catch {
-    return null; // private mode or storage disabled: the URL still keeps the state
+    // Private mode, storage disabled, or full to the last byte: reading still works.
+    try {
+      return window.localStorage ?? null;
+    } catch {
+      return null;
+    }
   }
 }
 
-// Resolves to { state, source: 'link'|'storage'|'default', problem }.
-export async function restoreState(lesson) {
+const sameState = (a, b) => {
+  try {
+    return stringifyExact(a) === stringifyExact(b);
+  } catch {
+    return false;
+  }
+};
+
+// A saved state this page cannot read (made by a newer Wingspline, its mesh gone from this
+// browser) is moved aside, so the next save does not destroy it.
+function keepAside(lesson, storage, code) {
+  try {
+    storage?.setItem(unreadableKey(lesson), code);
+  } catch {
+    // storage full: the saved code stays where it is until the next successful save
+  }
+}
+
+// Resolves to { state, source: 'link'|'storage'|'default', problem, previous }.
+// `previous`: the saved work a link replaced (undo returns to it), or null.
+export async function restoreState(lesson, { contents } = {}) {
   const code = readHashCode();
-  const pending = takePending(lesson, code);
-  if (pending) return { state: pending, source: code === null ? 'storage' : 'link', problem: null };
-  if (code !== null) {
+  const storage = safeStorage();
+  const storedCode = storage?.getItem(storageKey(lesson)) ?? null;
+  const pending = await takePending(lesson, code, contents);
+  if (pending) return { state: pending, source: code === null ? 'storage' : 'link', problem: null, previous: null };
+
+  let saved = null;
+  let savedError = null;
+  if (storedCode) {
     try {
-      const { state, problems } = await decodeState(lesson, code);
+      saved = await decodeState(lesson, storedCode, { contents });
+    } catch (err) {
+      savedError = err.message;
+      keepAside(lesson, storage, storedCode);
+    }
+  }
+  const savedProblem = savedError
+    ? `Your saved work could not be read (${savedError}); it is kept aside in this browser`
+    : saved?.problems.length ? `Part of your saved work was reset (${saved.problems[0]})` : null;
+
+  if (code !== null && code !== storedCode) {
+    try {
+      const { state, problems } = await decodeState(lesson, code, { contents });
+      const previous = saved && !sameState(saved.state, state) ? saved.state : null;
       return {
         state,
         source: 'link',
         problem: problems.length ? `Part of this link was not usable (${problems[0]}); that part was reset.` : null,
+        previous,
       };
     } catch (err) {
-      return { state: lesson.defaultState(), source: 'default', problem: `This share link could not be used: ${err.message}. Showing the lesson's starting point instead.` };
+      if (saved) {
+        return { state: saved.state, source: 'storage', problem: `This share link could not be used: ${err.message}. Showing your saved work instead.`, previous: null };
+      }
+      return { state: lesson.defaultState(), source: 'default', problem: `This share link could not be used: ${err.message}. Showing the lesson's starting point instead.`, previous: null };
     }
   }
-  const stored = safeStorage()?.getItem(storageKey(lesson));
-  if (stored) {
-    try {
-      const { state, problems } = await decodeState(lesson, stored);
-      return { state, source: 'storage', problem: problems.length ? `Part of your saved work was reset (${problems[0]}).` : null };
-    } catch (err) {
-      return { state: lesson.defaultState(), source: 'default', problem: `Your saved work could not be read (${err.message}); starting fresh.` };
-    }
-  }
-  return { state: lesson.defaultState(), source: 'default', problem: null };
+  if (saved) return { state: saved.state, source: code === null ? 'storage' : 'link', problem: savedProblem ? `${savedProblem}.` : null, previous: null };
+  if (savedError) return { state: lesson.defaultState(), source: 'default', problem: `${savedProblem}; starting fresh.`, previous: null };
+  return { state: lesson.defaultState(), source: 'default', problem: null, previous: null };
 }
 
-// Returns a function save(state) that writes URL and storage, debounced.
-export function createPersister(lesson, { delayMs = 200 } = {}) {
+// Decodes a link pasted into the address bar of the open page (hashchange): resolves to
+// { state, problem } or rejects with an Error of one sentence.
+export async function readLink(lesson, code, { contents } = {}) {
+  const { state, problems } = await decodeState(lesson, code, { contents });
+  return { state, problem: problems.length ? `Part of this link was not usable (${problems[0]}); that part was reset.` : null };
+}
+
+// Returns a persister: save(state) writes URL and storage, debounced.
+// notify(kind, detail) is called once per kind when something cannot be kept:
+// 'storage-full' (local storage refuses the state: the link still holds it) and
+// 'content-not-stored' (a large field could not be put in IndexedDB).
+export function createPersister(lesson, { delayMs = 200, contents = null, notify = () => {} } = {}) {
   let timer = null;
   let pending = null;
   let lastCode = readHashCode();
   const storage = safeStorage();
+  const said = new Set();
+  const sayOnce = (kind, detail) => {
+    if (said.has(kind)) return;
+    said.add(kind);
+    notify(kind, detail);
+  };
 
   // Synchronous last word before the page goes away (reload, navigation, tab closed).
   function keepPending() {
     if (!pending) return;
     try {
-      sessionStore()?.setItem(pendingKey(lesson), JSON.stringify({ fromCode: readHashCode(), json: stringifyExact(envelope(lesson, pending)) }));
+      sessionStore()?.setItem(pendingKey(lesson), JSON.stringify({ fromCode: readHashCode(), json: stringifyExact(envelope(lesson, externalizeKnown(lesson, pending))) }));
     } catch {
       // storage disabled or full: the debounced write is all there is
     }
@@ -102,13 +166,19 @@ export function createPersister(lesson, { delayMs = 200 } = {}) {
     return inflight;
   }
 
+  async function linkOf(state) {
+    const { state: written, refs, unstored } = await externalize(lesson, state, contents);
+    return { code: await compressEnvelope(lesson, written), refs, unstored };
+  }
+
   // Writes run one after the other, so a slow compression can never let an older state
   // overwrite a newer one, and flushNow() can wait for the one under way.
   async function write() {
     const state = pending;
     if (state === null) return;
-    const code = await encodeState(lesson, state);
+    const { code, unstored } = await linkOf(state);
     if (pending === state) pending = null;
+    if (unstored.length) sayOnce('content-not-stored', unstored);
     if (code === lastCode) return;
     lastCode = code;
     const url = new URL(window.location.href);
@@ -116,8 +186,10 @@ export function createPersister(lesson, { delayMs = 200 } = {}) {
     window.history.replaceState(window.history.state, '', url);
     try {
       storage?.setItem(storageKey(lesson), code);
+      said.delete('storage-full'); // room again: a later shortage is said again
     } catch {
-      // storage full: the link still holds the state
+      // Storage full (another page of the origin, a big import): the link holds the state.
+      if (storage) sayOnce('storage-full');
     }
   }
 
@@ -134,10 +206,28 @@ export function createPersister(lesson, { delayMs = 200 } = {}) {
         await inflight;
       }
     },
-    async shareUrl(state) {
+    // The saved code is moved aside (the page could not show it): the next save keeps it.
+    keepSavedAside() {
+      const code = storage?.getItem(storageKey(lesson));
+      if (code) keepAside(lesson, storage, code);
+    },
+    // The code this page last wrote to the address bar: a hash change to anything else
+    // came from outside (a pasted link, back/forward).
+    get lastCode() { return lastCode; },
+    // Writes the state to the address bar again even if unchanged (after a refused link).
+    rewrite(state) {
+      lastCode = null;
+      this.save(state);
+    },
+    // { url, refs }: refs name the large fields the link only refers to.
+    async shareLink(state) {
+      const { code, refs } = await linkOf(state);
       const url = new URL(window.location.href);
-      url.hash = `s=${await encodeState(lesson, state)}`;
-      return url.href;
+      url.hash = `s=${code}`;
+      return { url: url.href, refs };
+    },
+    async shareUrl(state) {
+      return (await this.shareLink(state)).url;
     },
   };
 }

@@ -1,6 +1,9 @@
 // Validators for lesson state read from a share link, local storage or an imported file.
 // Each validator takes (value, path) and returns the clean value or throws a SchemaError
 // naming the path ("points[3].x is not a number"). Nothing from outside is used unchecked.
+// The same validators check every change the page makes (ctx.commit in shell.js, with
+// checkChange below), so the page never holds a value its state format would refuse.
+import { COORDINATE_BOUND } from './limits.js';
 
 export class SchemaError extends Error {
   constructor(path, message) {
@@ -16,7 +19,7 @@ const describe = (v) => {
   return typeof v === 'object' ? 'an object' : String(v);
 };
 
-export const number = ({ min = -1e9, max = 1e9 } = {}) => (v, path) => {
+export const number = ({ min = -COORDINATE_BOUND, max = COORDINATE_BOUND } = {}) => (v, path) => {
   if (typeof v !== 'number' || !Number.isFinite(v)) throw new SchemaError(path, `must be a finite number, not ${describe(v)}`);
   if (v < min || v > max) throw new SchemaError(path, `must be between ${min} and ${max}, not ${v}`);
   return v;
@@ -96,4 +99,24 @@ export function validatePartial(shape, raw, defaults) {
   if (missing.length === keys.length) problems.push("it holds none of this lesson's settings");
   else for (const key of missing) problems.push(`${key} is missing`);
   return { state, problems };
+}
+
+// Checks a change before it is committed: the fields of `next` that are not the very same
+// value as in `previous` (states are spread copies, so untouched fields are shared and were
+// checked when they entered) go through the schema, then the lesson's cross-field rule.
+// Returns null, or one sentence naming the field and the limit.
+export function checkChange(shape, next, previous, checkState) {
+  for (const [key, check] of Object.entries(shape)) {
+    if (previous && next[key] === previous[key]) continue;
+    try {
+      check(next[key], key);
+    } catch (err) {
+      return err instanceof SchemaError ? err.message : `${key} could not be checked`;
+    }
+  }
+  try {
+    return checkState?.(next) ?? null;
+  } catch (err) {
+    return `the change breaks a rule of the lesson (${err.message})`;
+  }
 }

@@ -4,6 +4,11 @@
 // (#s=...), so a static host never sees it and the link stays short.
 // Reading goes: decode -> parse -> check the envelope -> migrate older versions -> validate
 // field by field. Every failure becomes one sentence for the message line.
+// A large field that the lesson declares in `lesson.contentFields` (the mesh lesson's
+// imported mesh) travels by reference: {"$content": "sha256-<hex>", "label": "..."}, its
+// text kept in a content store (content-store.js, IndexedDB) by its SHA-256; values of at
+// most INLINE_CONTENT_MAX_CHARS characters of JSON still travel inline, so a link to a
+// small mesh works on any machine (docs/state-format.md, "Large fields").
 import { validatePartial } from './schema.js';
 
 export const FORMAT = 'wingspline';
@@ -33,6 +38,13 @@ async function inflateCapped(bytes, cap) {
   for (const c of chunks) { out.set(c, at); at += c.length; }
   return out;
 }
+
+// 16 KiB of JSON: the lecture's meshes, a cube, a few hundred faces (about 300 vertices
+// with full-precision coordinates). Compressed, such a link stays under about 8,000
+// characters, which chat programs and mail clients carry whole.
+export const INLINE_CONTENT_MAX_CHARS = 16384;
+const CONTENT_REF = /^sha256-[0-9a-f]{64}$/;
+const LABEL_MAX_CHARS = 120;
 
 function toBase64Url(bytes) {
   let binary = '';
@@ -90,7 +102,129 @@ export function envelopeJson(lesson, state) {
   return stringifyExact(envelope(lesson, state), 2) + '\n';
 }
 
-export async function encodeState(lesson, state) {
+async function sha256(textValue) {
+  const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', new TextEncoder().encode(textValue)));
+  return `sha256-${Array.from(digest, (b) => b.toString(16).padStart(2, '0')).join('')}`;
+}
+
+// Per value object (a large field rides unchanged from state to state, spread copies share
+// it): its JSON text's length and, once computed, its hash; so a save after a walk step
+// does not serialise and hash 600,000 numbers again.
+const contentCache = new WeakMap();
+function contentText(value) {
+  let entry = contentCache.get(value);
+  if (!entry) {
+    const json = stringifyExact(value);
+    entry = { json, chars: json.length, hash: null };
+    contentCache.set(value, entry);
+  }
+  return entry;
+}
+
+function contentLabel(lesson, key, value) {
+  const label = lesson.contentFields[key].label?.(value);
+  return typeof label === 'string' ? label.slice(0, LABEL_MAX_CHARS) : key;
+}
+
+// The state as written to a link: large content fields replaced by references. With
+// `contents`, the text is stored there first (a field whose store refuses it stays
+// inline); without it, only fields whose hash is already known are replaced (the
+// synchronous write on pagehide). Resolves to { state, refs: [{ key, label, hash }], unstored: [keys] }.
+export async function externalize(lesson, state, contents) {
+  const refs = [];
+  const unstored = [];
+  if (!lesson.contentFields || !state) return { state, refs, unstored };
+  const out = { ...state };
+  for (const key of Object.keys(lesson.contentFields)) {
+    const value = state[key];
+    if (value === null || typeof value !== 'object') continue;
+    const entry = contentText(value);
+    if (entry.chars <= INLINE_CONTENT_MAX_CHARS) continue;
+    if (contents) {
+      try {
+        entry.hash = entry.hash ?? await sha256(entry.json);
+        await contents.put(entry.hash, entry.json);
+      } catch {
+        unstored.push(key);
+        continue;
+      }
+    } else if (!entry.hash) {
+      continue;
+    }
+    const label = contentLabel(lesson, key, value);
+    out[key] = { $content: entry.hash, label };
+    refs.push({ key, label, hash: entry.hash });
+  }
+  return { state: out, refs, unstored };
+}
+
+// The synchronous form for pagehide: only hashes already computed are used.
+export function externalizeKnown(lesson, state) {
+  if (!lesson.contentFields || !state) return state;
+  const out = { ...state };
+  for (const key of Object.keys(lesson.contentFields)) {
+    const value = state[key];
+    const entry = value && typeof value === 'object' ? contentCache.get(value) : null;
+    if (entry?.hash && entry.chars > INLINE_CONTENT_MAX_CHARS) out[key] = { $content: entry.hash, label: contentLabel(lesson, key, value) };
+  }
+  return out;
+}
+
+const isRef = (v) => v !== null && typeof v === 'object' && !Array.isArray(v) && Object.prototype.hasOwnProperty.call(v, '$content');
+
+// Replaces the references of a parsed envelope's state by their stored values. A reference
+// that cannot be resolved (another browser, an entry dropped, a text that no longer has its
+// hash) refuses the whole state with one sentence naming the file: the rest of the state
+// means little without it, and the person's saved work is shown instead.
+async function internalize(lesson, data, contents) {
+  const state = data?.state;
+  // A state of another lesson or format is refused by readEnvelope with its own sentence.
+  if (data?.format !== FORMAT || data?.lesson !== lesson.id) return data;
+  if (!lesson.contentFields || state === null || typeof state !== 'object' || Array.isArray(state)) return data;
+  let out = null;
+  for (const key of Object.keys(lesson.contentFields)) {
+    if (!Object.prototype.hasOwnProperty.call(state, key) || !isRef(state[key])) continue;
+    const ref = state[key];
+    // A malformed reference is a wrong value of the field: the schema names it.
+    if (typeof ref.$content !== 'string' || !CONTENT_REF.test(ref.$content) || typeof ref.label !== 'string') continue;
+    const label = ref.label.slice(0, LABEL_MAX_CHARS);
+    const { what = 'an imported file', file = 'the file' } = lesson.contentFields[key];
+    const missing = `it refers to ${what} ("${label}") that is only stored in the browser where the link was made: ask for ${file} and import it`;
+    let stored = null;
+    try {
+      stored = contents ? await contents.get(ref.$content) : null;
+    } catch {
+      stored = null;
+    }
+    if (typeof stored !== 'string') throw new Error(missing);
+    if (await sha256(stored) !== ref.$content) throw new Error(`the stored copy of "${label}" in this browser is damaged: import the file again`);
+    let value;
+    try {
+      value = JSON.parse(stored);
+    } catch {
+      throw new Error(`the stored copy of "${label}" in this browser is damaged: import the file again`);
+    }
+    out = out ?? { ...state };
+    out[key] = value;
+    // The value read back is the one stored under this hash: no need to hash it again.
+    contentCache.set(value, { json: stored, chars: stored.length, hash: ref.$content });
+  }
+  return out ? { ...data, state: out } : data;
+}
+
+// The envelope of a parsed link, storage entry or file, references resolved, then checked
+// as readEnvelope does.
+export async function readEnvelopeResolved(lesson, data, { contents } = {}) {
+  return readEnvelope(lesson, await internalize(lesson, data, contents));
+}
+
+export async function encodeState(lesson, state, { contents } = {}) {
+  const { state: written } = await externalize(lesson, state, contents);
+  return compressEnvelope(lesson, written);
+}
+
+// The link code of a state already externalized.
+export async function compressEnvelope(lesson, state) {
   const json = stringifyExact(envelope(lesson, state));
   return toBase64Url(await pipe(new TextEncoder().encode(json), new CompressionStream('deflate-raw')));
 }
@@ -135,7 +269,7 @@ export function readEnvelope(lesson, data) {
   return result;
 }
 
-export async function decodeState(lesson, text) {
+export async function decodeState(lesson, text, { contents } = {}) {
   if (typeof text !== 'string' || text.length === 0) throw new Error('it is empty');
   if (text.length > MAX_LINK_CHARS) throw new Error('it is far longer than any lesson state');
   let json;
@@ -150,5 +284,5 @@ export async function decodeState(lesson, text) {
   } catch {
     throw new Error('it is damaged (its contents are not valid JSON)');
   }
-  return readEnvelope(lesson, data);
+  return readEnvelopeResolved(lesson, data, { contents });
 }

@@ -15,6 +15,8 @@
 //     exports?: [{ label, filename, type, make(model, state) }]
 //     importers?: { off(text, state, name) -> next state, ... }
 //     inspector?: false                 no shell inspector (the lesson has its own inputs)
+//     contentFields?: { key: { what, file, export, label(value) } }  large fields kept in
+//                                      IndexedDB by content hash (docs/state-format.md)
 //   }
 //
 // ctx (what a lesson may use): api, state (getter), commit(next, opts), setView(view),
@@ -31,8 +33,10 @@
 // offline. Markup from files and links is only ever set as text.
 import { loadWingspline, WingsplineError } from '../core/wingspline.js';
 import { createStore } from './store.js';
-import { restoreState, createPersister } from './persist.js';
-import { readEnvelope, envelopeJson } from './share-link.js';
+import { restoreState, createPersister, readHashCode, readLink } from './persist.js';
+import { readEnvelopeResolved, envelopeJson } from './share-link.js';
+import { createContentStore } from './content-store.js';
+import { checkChange } from './schema.js';
 import { createStage } from './stage.js';
 import { CanvasPainter, SvgPainter } from './painter.js';
 import { createKeymap } from './keymap.js';
@@ -53,13 +57,15 @@ const fmt = (x) => (Object.is(x, -0) ? '0' : String(Number(x.toFixed(3))));
 
 function createMessageLine(el) {
   let timer = null;
-  function show(kind, text, { code, sticky = kind !== 'info' } = {}) {
+  // action: { label, run } adds one button (an offer: "Restore your previous work").
+  function show(kind, text, { code, action = null, sticky = kind !== 'info' || !!action } = {}) {
     clearTimeout(timer);
     el.dataset.kind = kind;
     if (code) el.dataset.code = code; else delete el.dataset.code;
     el.setAttribute('role', kind === 'error' ? 'alert' : 'status');
     const close = h('button', { type: 'button', class: 'message-close', 'aria-label': 'Dismiss message', onclick: clear }, '×');
-    el.replaceChildren(h('span', { class: 'message-text' }, oneLine(text)), close);
+    const offer = action && h('button', { type: 'button', class: 'message-action tool', 'data-message-action': action.id ?? 'action', onclick: () => { clear(); action.run(); } }, action.label);
+    el.replaceChildren(h('span', { class: 'message-text' }, oneLine(text)), offer, close);
     el.hidden = false;
     if (!sticky) timer = setTimeout(clear, 4000);
   }
@@ -70,8 +76,8 @@ function createMessageLine(el) {
     delete el.dataset.code;
   }
   return {
-    info: (text) => show('info', text),
-    warn: (text) => show('warn', text),
+    info: (text, options) => show('info', text, options),
+    warn: (text, options) => show('warn', text, options),
     error: (text, code) => show('error', text, { code }),
     clear,
     get text() { return el.hidden ? '' : (el.querySelector('.message-text')?.textContent ?? ''); },
@@ -116,9 +122,13 @@ export async function runLesson(lesson) {
     document.querySelector('.core-loading[data-core-status]')?.remove();
   }
 
-  const restored = await restoreState(lesson);
-  const store = createStore(restored.state);
-  const persister = createPersister(lesson);
+  // Large fields (an imported mesh) live in IndexedDB by content hash; the link refers to them.
+  const contents = createContentStore();
+  const restored = await restoreState(lesson, { contents });
+  // A link that replaced saved work is one undoable step: Undo brings the work back.
+  const store = createStore(restored.previous ?? restored.state);
+  if (restored.previous) store.replace(restored.state, 'link');
+  const persister = createPersister(lesson, { contents, notify: (kind) => sayKept(kind) });
   const ui = { selected: null, hover: null, hoverPoint: null, present: isPresenting() };
   let model = null;
   let autoFit = false; // the default view follows the canvas size until the person pans or zooms
@@ -144,13 +154,22 @@ export async function runLesson(lesson) {
     store,
   };
 
-  // Recompute first; only a state the core accepts is committed.
+  // Check, recompute, then commit: a value the state format would refuse on reload (the
+  // schema, with the limits of limits.js) is refused here with a message, and so is a state
+  // the core refuses; either way the old state stays, and the panels show it again.
   function commit(next, { history = true, coalesce = null, recompute = true } = {}) {
+    const refused = checkChange(lesson.schema, next, store.state, lesson.checkState);
+    if (refused) {
+      message.error(`Not changed: ${refused}.`, 'out-of-limits');
+      refresh();
+      return false;
+    }
     if (recompute) {
       try {
         model = lesson.compute(next, ctx);
       } catch (err) {
         message.error(errorText(err), err?.code);
+        refresh();
         return false;
       }
     }
@@ -164,7 +183,7 @@ export async function runLesson(lesson) {
 
   let needsPanelUpdate = true;
   store.subscribe((state, reason) => {
-    if (reason === 'undo' || reason === 'redo' || reason === 'import') {
+    if (reason === 'undo' || reason === 'redo' || reason === 'import' || reason === 'link') {
       try {
         model = lesson.compute(state, ctx);
       } catch (err) {
@@ -314,6 +333,10 @@ export async function runLesson(lesson) {
       store.endGesture();
       const moved = handles().find((h2) => h2.id === handle.id) ?? handle;
       announce(moved);
+    } else {
+      // Refused: the fields show the handle's value again (the message says why).
+      inspector.x.value = String(handle.x);
+      inspector.y.value = String(handle.y);
     }
   }
   function updateInspector() {
@@ -355,16 +378,19 @@ export async function runLesson(lesson) {
   const exportMenu = h('details', { class: 'menu advanced' }, h('summary', { class: 'tool' }, 'Export'),
     h('div', { class: 'menu-items' }, exportItems.map((item) => h('button', {
       type: 'button', 'data-export': typeof item.filename === 'function' ? item.label : item.filename,
-      async onclick() {
+      onclick() {
         exportMenu.open = false;
-        try {
-          const content = await item.make(model, store.state, ctx);
-          download(typeof item.filename === 'function' ? item.filename(store.state) : item.filename, content, item.type);
-        } catch (err) {
-          message.error(`Export failed: ${errorText(err)}`);
-        }
+        return runExport(item);
       },
     }, item.label))));
+  async function runExport(item) {
+    try {
+      const content = await item.make(model, store.state, ctx);
+      download(typeof item.filename === 'function' ? item.filename(store.state) : item.filename, content, item.type);
+    } catch (err) {
+      message.error(`Export failed: ${errorText(err)}`);
+    }
+  }
 
   const importTypes = ['.json', ...Object.keys(lesson.importers ?? {}).map((ext) => `.${ext}`)];
   // The picker is opened by a real button (visible focus, keyboard); the input stays hidden.
@@ -372,7 +398,7 @@ export async function runLesson(lesson) {
 
   // Import: the file is read, checked and computed before anything changes; a refusal
   // names the file (as text) and the reason, and the lesson keeps what it had.
-  function importFile({ name, text }) {
+  async function importFile({ name, text }) {
     const ext = name.toLowerCase().split('.').pop();
     const refuse = (reason) => { throw new WingsplineError('import-error', reason); };
     try {
@@ -381,7 +407,7 @@ export async function runLesson(lesson) {
         let data;
         try { data = JSON.parse(text); } catch { refuse('it is not valid JSON'); }
         let read;
-        try { read = readEnvelope(lesson, data); } catch (err) { refuse(err.message); }
+        try { read = await readEnvelopeResolved(lesson, data, { contents }); } catch (err) { refuse(err.message); }
         if (read.problems.length) refuse(`it does not hold a valid state (${read.problems[0]})`);
         next = read.state;
       } else if (lesson.importers?.[ext]) {
@@ -389,6 +415,9 @@ export async function runLesson(lesson) {
       } else {
         refuse(`this lesson imports ${importTypes.join(', ')} files`);
       }
+      // The same limits as a link read back (a face of 1001 corners, a coordinate of 5e9).
+      const outside = checkChange(lesson.schema, next, store.state, lesson.checkState);
+      if (outside) refuse(outside);
       const newModel = lesson.compute(next, ctx);
       model = newModel;
       store.replace(next);
@@ -400,16 +429,82 @@ export async function runLesson(lesson) {
   }
   installImport({ input: fileInput, dropTarget: document.body, onFile: importFile, onError: (text) => message.error(text, 'import-error') });
 
+  // A link to a state with a large field (an imported mesh) only refers to it: it opens on
+  // this browser only, and the person is offered the file to send with it.
   async function share() {
-    const url = await persister.shareUrl(store.state);
+    const { url, refs } = await persister.shareLink(store.state);
+    let copied = true;
     try {
       await navigator.clipboard.writeText(url);
-      message.info('Link copied: it opens this lesson exactly as you see it now.');
     } catch {
+      copied = false;
+    }
+    const field = refs.length ? lesson.contentFields[refs[0].key] : null;
+    const item = field && exportItems.find((x) => x.filename === field.export);
+    if (field) {
+      message.warn(`This link refers to ${field.what ?? 'an imported file'} ("${refs[0].label}") that is only stored in this browser; share ${field.file ?? 'the file'} with it.`, {
+        code: 'link-refers-to-local-content',
+        action: item ? { id: 'export', label: `Export ${field.file ?? 'the file'}`, run: () => runExport(item) } : null,
+      });
+    } else if (copied) {
+      message.info('Link copied: it opens this lesson exactly as you see it now.');
+    } else {
       message.info('The address bar holds the link to this exact state; copy it from there.');
     }
     return url;
   }
+
+  // ---------------------------------------------------------------- kept work
+  // What the persister could not keep, said once (issue 13, item 19).
+  function sayKept(kind) {
+    if (kind === 'storage-full') {
+      message.warn('This browser\'s storage for this site is full, so your changes are not saved in this browser any more; they are kept in the link in the address bar (bookmark or copy it).', { code: 'storage-full' });
+    } else if (kind === 'content-not-stored') {
+      message.warn('The imported file could not be stored in this browser (its storage is full or disabled); keep the file: it may not come back after a reload.', { code: 'content-not-stored' });
+    }
+  }
+
+  // A link replaced the work shown before it: say so, offer it back (issue 13, item 18).
+  function offerPrevious(previous, problem) {
+    const text = `${problem ? `${problem} ` : 'Opened the shared link. '}Your previous work is kept: Undo brings it back.`;
+    message[problem ? 'warn' : 'info'](text, {
+      code: 'previous-work-kept',
+      action: { id: 'restore', label: 'Restore your previous work', run: () => restorePrevious(previous) },
+    });
+  }
+  function restorePrevious(previous) {
+    try {
+      model = lesson.compute(previous, ctx);
+      store.replace(previous, 'import');
+      message.info('Your previous work is back (Undo shows the link again).');
+    } catch (err) {
+      message.error(errorText(err), err?.code);
+    }
+  }
+
+  // A link pasted into the address bar of this open tab (or back/forward between links):
+  // loaded like a link opened in a new tab, as one undoable step (issue 13, item 24).
+  let following = null;
+  async function followAddress() {
+    const code = readHashCode();
+    if (code === null || code === persister.lastCode || code === following) return;
+    following = code;
+    try {
+      const { state, problem } = await readLink(lesson, code, { contents });
+      if (readHashCode() !== code) return; // another address came meanwhile
+      const previous = store.state;
+      model = lesson.compute(state, ctx);
+      store.replace(state, 'link');
+      offerPrevious(previous, problem);
+    } catch (err) {
+      message.warn(`This share link could not be used: ${err.message}. Your work is unchanged.`, { code: 'link-refused' });
+      persister.rewrite(store.state);
+    } finally {
+      following = null;
+    }
+  }
+  window.addEventListener('hashchange', followAddress);
+  window.addEventListener('popstate', followAddress);
 
   function announceStatus(text) {
     if (els.announce) els.announce.textContent = oneLine(text);
@@ -504,15 +599,20 @@ export async function runLesson(lesson) {
   try {
     model = lesson.compute(store.state, ctx);
   } catch (err) {
-    // A stored state the current core refuses: fall back to the default, say so.
-    message.warn(`The saved state could not be shown (${errorText(err)}); showing the starting point.`);
-    const fresh = lesson.defaultState();
-    model = lesson.compute(fresh, ctx);
-    store.set(fresh, { history: false, reason: 'view' });
+    // A restored state the current core refuses: the work a link replaced if there is one,
+    // else the default, and the saved code is kept aside, not written over.
+    const fallback = restored.previous ?? lesson.defaultState();
+    message.warn(`The ${restored.source === 'link' ? 'link' : 'saved state'} could not be shown (${errorText(err)}); showing ${restored.previous ? 'your previous work' : 'the starting point'}.`);
+    if (!restored.previous && restored.source === 'storage') persister.keepSavedAside();
+    model = lesson.compute(fallback, ctx);
+    store.set(fallback, { history: false, reason: 'view' });
+    restored.previous = null;
+    restored.problem = null;
   }
   lesson.setup(ctx);
   buildInspector();
-  if (restored.problem) message.warn(restored.problem);
+  if (restored.previous) offerPrevious(restored.previous, restored.problem);
+  else if (restored.problem) message.warn(restored.problem);
   autoFit = restored.source === 'default';
   if (restored.source === 'default' && lesson.fitView) {
     // The default view is fitted to the canvas once its size is known.

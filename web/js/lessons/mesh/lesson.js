@@ -3,7 +3,8 @@
 // them, the representations' query costs and storage, and plane equations and normals.
 // The state is plain JSON (schema below); the model is what the core returned for it.
 import { number, integer, boolean, oneOf, text, list, object, nullable } from '../../app/schema.js';
-import { createMeshSource, MESH_KINDS } from './mesh-source.js';
+import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
+import { createMeshSource, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
 import { normaliseSteps, walkFrames } from './walk.js';
 import { drawMesh, viewRotation, projectAll, unprojectDelta, pickElement, facesAway, LABEL_LIMIT } from './draw.js';
 import { setupPanels } from './panels.js';
@@ -12,11 +13,10 @@ import { vLabel, fLabel, eLabel } from './labels.js';
 
 export const TABS = ['winged', 'faces', 'vertex-face', 'adjacency', 'edge-list', 'queries', 'storage', 'planes'];
 export const QUERY_KINDS = ['faces-around-vertex', 'edges-around-vertex', 'edges-of-face', 'neighbours-of-face', 'faces-of-edge'];
-// The state format's bounds on an imported mesh. They must equal the core's file limits
-// (api.meshLimits, checked in tests/wasm/mesh-trust.test.mjs); the schema is built before
-// the core loads, so the lead's schema wiring may read them from the API instead.
-const MAX_IMPORT_VERTICES = 200000;
-const MAX_IMPORT_FACES = 200000;
+// The state format's bounds on an imported mesh: app/limits.js, which equals the core's file
+// limits (api.meshLimits; tests/wasm/mesh-trust.test.mjs checks that they agree).
+const MAX_IMPORT_VERTICES = MAX_MESH_VERTICES;
+const MAX_IMPORT_FACES = MAX_MESH_FACES;
 
 const source = createMeshSource();
 
@@ -28,7 +28,7 @@ const schema = {
   imported: nullable(object({
     name: text({ maxLength: 120 }),
     positions: list(number(), { min: 9, max: 3 * MAX_IMPORT_VERTICES }),
-    faces: list(list(integer({ min: 0, max: MAX_IMPORT_VERTICES }), { min: 3, max: 1000 }), { min: 1, max: MAX_IMPORT_FACES }),
+    faces: list(list(integer({ min: 0, max: MAX_IMPORT_VERTICES - 1 }), { min: 3, max: MAX_FACE_CORNERS }), { min: 1, max: MAX_IMPORT_FACES }),
   })),
   moved: list(object({ v: integer({ min: 0, max: 10000000 }), p: list(number(), { min: 3, max: 3 }) }), { max: 100000 }),
   walk: oneOf('vertex', 'face'),
@@ -216,6 +216,7 @@ export const meshLesson = {
   schema,
   defaultState,
   checkState,
+  contentFields: IMPORTED_CONTENT,
   compute,
   setup: (ctx) => setupPanels(ctx),
   update: (model, state, ctx) => ctx.meshPanels?.update(model, state),

@@ -16,6 +16,15 @@ export const MESH_KINDS = [
   { id: 'file', label: 'Your file (OFF/OBJ)' },
 ];
 
+// The imported mesh (state.imported = { name, positions, faces }) is the one large field of
+// the lesson's state: links and local storage hold it by content hash, the mesh itself in
+// IndexedDB, unless it is small enough to travel inline (share-link.js, `contentFields`;
+// docs/state-format.md, "Large fields"). A link that only refers to it tells the person to
+// send the OFF file with it, and offers the export.
+export const IMPORTED_CONTENT = {
+  imported: { what: 'an imported mesh', file: 'the OFF file', export: 'mesh.off', label: (imported) => imported.name },
+};
+
 // The key that identifies one topology + base geometry: equal keys share one core mesh.
 export function sourceKey(state) {
   switch (state.meshKind) {

@@ -1,0 +1,18 @@
+// The limits of what a lesson state may hold: one set, used where a value enters (the
+// inspector, a lesson's entries, imported files: ctx.commit checks every change against the
+// lesson's schema) and where it is read back (share links, local storage, state files:
+// share-link.js validates with the same schema). A value the page accepts is therefore one
+// its own state format reads back on the next visit (issue 13, item 22).
+//
+// The mesh limits are the core's (core/include/wingspline/mesh/limits.h, exposed as
+// api.meshLimits). Schemas are built when a lesson module loads, before the core does, so
+// the numbers are repeated here once; tests/wasm/mesh-trust.test.mjs fails if they ever
+// differ from the core's.
+
+// |x| of any coordinate or free number of a state, in world units.
+export const COORDINATE_BOUND = 1e9;
+// Corners of one face of an imported mesh.
+export const MAX_FACE_CORNERS = 1000;
+// Vertices and faces of an imported mesh (the import limit).
+export const MAX_MESH_VERTICES = 200000;
+export const MAX_MESH_FACES = 200000;
