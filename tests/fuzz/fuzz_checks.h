@@ -31,7 +31,11 @@ inline void check_indexed(const wingspline::mesh::IndexedMesh& m) {
 // A reader's error: a stable code, a line inside the file (or the one after its end), and
 // the message starting with that line.
 inline void check_parse_error(const wingspline::mesh::ParseError& e, const std::string& text) {
-    const int lines = static_cast<int>(std::count(text.begin(), text.end(), '\n')) + 1;
+    // Lines end at LF, CRLF or a lone CR, as the readers count them (mesh_io.cpp).
+    int lines = 1;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == '\n' || (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n'))) ++lines;
+    }
     FUZZ_REQUIRE(!e.code().empty());
     FUZZ_REQUIRE(e.line() >= 1 && e.line() <= lines + 1);
     const std::string prefix = "line " + std::to_string(e.line()) + ": ";

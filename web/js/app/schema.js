@@ -19,15 +19,19 @@ const describe = (v) => {
   return typeof v === 'object' ? 'an object' : String(v);
 };
 
+// Bounds as a person reads them: 1e+9 rather than 1000000000.
+const bound = (n) => (Math.abs(n) >= 1e6 ? n.toExponential() : String(n));
+const outside = (v, min, max) => `must be between ${bound(min)} and ${bound(max)} (the limits a saved lesson keeps), not ${v}`;
+
 export const number = ({ min = -COORDINATE_BOUND, max = COORDINATE_BOUND } = {}) => (v, path) => {
   if (typeof v !== 'number' || !Number.isFinite(v)) throw new SchemaError(path, `must be a finite number, not ${describe(v)}`);
-  if (v < min || v > max) throw new SchemaError(path, `must be between ${min} and ${max}, not ${v}`);
+  if (v < min || v > max) throw new SchemaError(path, outside(v, min, max));
   return v;
 };
 
 export const integer = ({ min = 0, max = 1e6 } = {}) => (v, path) => {
   if (!Number.isInteger(v)) throw new SchemaError(path, `must be a whole number, not ${describe(v)}`);
-  if (v < min || v > max) throw new SchemaError(path, `must be between ${min} and ${max}, not ${v}`);
+  if (v < min || v > max) throw new SchemaError(path, outside(v, min, max));
   return v;
 };
 
