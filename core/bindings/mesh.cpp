@@ -3,6 +3,7 @@
 // Everything else crosses as plain values: typed arrays with documented strides, or small
 // objects. Faces cross as CSR: faceOffsets (F + 1 entries) and faceVertices.
 #include "boundary.h"
+#include "mesh_access.h"
 
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/indexed_mesh.h"
@@ -13,8 +14,6 @@
 #include "wingspline/mesh/representations.h"
 #include "wingspline/mesh/view_geometry.h"
 #include "wingspline/mesh/winged_edge.h"
-
-#include <emscripten/emscripten.h>
 
 #include <algorithm>
 #include <memory>
@@ -402,47 +401,6 @@ val mesh_vertex_normal(int32_t handle, int32_t v) {
     });
 }
 
-// ------------------------------------------------------------------ benchmark only
-
-// The native benchmark times the core's work on data already in memory; these time the
-// same work inside the module (emscripten_get_now, ms) so the wasm and native figures
-// compare like for like. The JS API figures add the boundary: copies in and out.
-val bench_build_in_core(val positions, val face_offsets, val face_vertices, int32_t repetitions) {
-    return guarded([&] {
-        const IndexedMesh m = indexed_from(positions, face_offsets, face_vertices);
-        std::vector<double> seconds;
-        double checksum = 0;
-        for (int32_t i = 0; i < repetitions; ++i) {
-            const double t0 = emscripten_get_now();
-            const WingedEdgeMesh w = WingedEdgeMesh::build(m);
-            seconds.push_back((emscripten_get_now() - t0) / 1000.0);
-            checksum += w.edge(w.edge_count() - 1).end_right + w.edge_count();
-        }
-        val r = val::object();
-        r.set("seconds", to_typed_array(seconds));
-        r.set("checksum", checksum);
-        return r;
-    });
-}
-
-val bench_normals_in_core(int32_t handle, int32_t repetitions) {
-    return guarded([&] {
-        const WingedEdgeMesh& w = entry(handle).winged;
-        std::vector<double> normals, seconds;
-        double checksum = 0;
-        for (int32_t i = 0; i < repetitions; ++i) {
-            const double t0 = emscripten_get_now();
-            newell_normals(w, normals);
-            seconds.push_back((emscripten_get_now() - t0) / 1000.0);
-            checksum += normals[0] + normals[normals.size() - 1];
-        }
-        val r = val::object();
-        r.set("seconds", to_typed_array(seconds));
-        r.set("checksum", checksum);
-        return r;
-    });
-}
-
 // Moves one vertex in every representation; reports how many xyz copies each rewrote.
 val mesh_set_vertex_position(int32_t handle, int32_t v, double x, double y, double z) {
     return guarded([&] {
@@ -595,17 +553,6 @@ val mesh_bytes(int32_t handle) {
     });
 }
 
-// For the benchmark and leak tests: walks every vertex ring (BENCH.md mesh_ring).
-val mesh_ring_walk(int32_t handle) {
-    return guarded([&] {
-        const RingWalkTotals totals = entry(handle).winged.walk_every_ring();
-        val r = val::object();
-        r.set("visited", totals.visited);
-        r.set("checksum", totals.neighbour_sum);
-        return r;
-    });
-}
-
 // ------------------------------------------------------------------ files
 
 // The text arrives as UTF-8 bytes (a Uint8Array the JS layer encoded) and is pulled into
@@ -677,6 +624,13 @@ val named_mesh(const std::string& name, int32_t a, int32_t b) {
 }
 
 } // namespace
+
+// mesh_access.h: what the benchmark bindings (bench.cpp) read from this file.
+const WingedEdgeMesh& winged_of_handle(int32_t handle) { return entry(handle).winged; }
+IndexedMesh indexed_from_arrays(const val& positions, const val& face_offsets, const val& face_vertices) {
+    return indexed_from(positions, face_offsets, face_vertices);
+}
+
 } // namespace wingspline::bindings
 
 EMSCRIPTEN_BINDINGS(wingspline_mesh) {
@@ -702,10 +656,7 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshStorage", &mesh_storage);
     emscripten::function("meshRepresentations", &mesh_representations);
     emscripten::function("meshQuery", &mesh_query);
-    emscripten::function("benchBuildInCore", &bench_build_in_core);
-    emscripten::function("benchNormalsInCore", &bench_normals_in_core);
     emscripten::function("meshParse", &mesh_parse);
     emscripten::function("meshLimits", &mesh_limits);
     emscripten::function("meshFormat", &mesh_format);
-    emscripten::function("meshRingWalk", &mesh_ring_walk);
 }

@@ -24,8 +24,10 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
+import { benchHooks } from 'wingspline/bench-hooks';
 
 const api = await loadWingspline();
+const hooks = benchHooks(api);
 const FULL = 100000;
 const REDUCED = 5000;
 const WARM_UP = 200;
@@ -86,11 +88,11 @@ const cases = [
   ['mesh face queries', REDUCED, () => { lecture.edgesOfFace(1); lecture.verticesOfFace(1); lecture.faceNeighbours(1); lecture.faceEdgeSteps(1); },
     () => lecture.faceEdgeSteps(V_MISSING)],
   ['mesh.facesOfEdge', REDUCED, () => lecture.facesOfEdge(2), () => lecture.edgesOfFace(V_MISSING)],
-  ['mesh counts / bytes / validate / ringWalk', REDUCED, () => { lecture.counts(); lecture.bytes(); lecture.validate(); lecture.ringWalk(); },
+  ['mesh counts / bytes / validate / ringWalk', REDUCED, () => { lecture.counts(); lecture.bytes(); lecture.validate(); hooks.ringWalk(lecture); },
     () => lecture.verticesOfFace(V_MISSING)],
   ['mesh planes / normals', REDUCED, () => { lecture.planes(); lecture.normals(); }, () => lecture.faceNeighbours(V_MISSING)],
   ['mesh.setVertexPosition', REDUCED, () => lecture.setVertexPosition(4, [2, -1, 0]), () => lecture.setVertexPosition(V_MISSING, [0, 0, 0])],
-  ['timeBuildInCore', REDUCED, () => api.timeBuildInCore(tetra, 1), () => api.timeBuildInCore(nonManifold, 1)],
+  ['hooks.timeBuildInCore', REDUCED, () => hooks.timeBuildInCore(tetra, 1), () => hooks.timeBuildInCore(nonManifold, 1)],
   ['deBoor', REDUCED, () => api.deBoor(bspline, 0.5), () => api.deBoor(decreasing, 0.5)],
   ['insertKnot', REDUCED, () => api.insertKnot(bspline, 1.5), () => api.insertKnot(decreasing, 0.5)],
   ['bsplineToBezier', REDUCED, () => api.bsplineToBezier(bspline), () => api.bsplineToBezier(decreasing)],
@@ -116,7 +118,7 @@ const cases = [
     () => lecture.query('edges-of-face', V_MISSING)],
   ['mesh.boundingBox / vertexNormal', REDUCED, () => { lecture.boundingBox(); lecture.vertexNormal(1); }, () => lecture.vertexNormal(V_MISSING)],
   ['mesh.query', REDUCED, () => lecture.query('faces-around-vertex', 1), () => lecture.query('faces-around-vertex', V_MISSING)],
-  ['mesh.timeNormalsInCore', REDUCED, () => lecture.timeNormalsInCore(1), () => lecture.timeNormalsInCore(0)],
+  ['hooks.timeNormalsInCore', REDUCED, () => hooks.timeNormalsInCore(lecture, 1), () => hooks.timeNormalsInCore(lecture, 0)],
   ['memoryUsage / liveMeshCount', REDUCED, () => { api.memoryUsage(); api.liveMeshCount(); },
     () => api.facesAroundVertex?.(0) ?? lecture.facesAroundVertex(V_MISSING)],
 ];

@@ -127,7 +127,17 @@ function storageValue(s) {
   };
 }
 
+// For bench-hooks.js only (benchAccess below): a live mesh's handle, read through the class's
+// private field, and the raw module of an api object (keyed on its buildMesh function,
+// which the api object shares with the object createMeshApi returns).
+let handleOfMesh;
+const rawOfBuildMesh = new WeakMap();
+
 export class Mesh {
+  static {
+    handleOfMesh = (mesh) => mesh.#live();
+  }
+
   #raw;
   #handle;
   // The face set (CSR) the mesh was built from, kept in JS only when the caller chose the
@@ -399,20 +409,6 @@ export class Mesh {
     return Object.fromEntries(REPRESENTATIONS.map((key) => [key, { answer: r.answers[key].answer, entriesRead: r.answers[key].entriesRead }]));
   }
 
-  // Walks every vertex ring in C++ (the mesh_ring benchmark): {visited, checksum}.
-  ringWalk() {
-    const { visited, checksum } = unwrap(this.#raw.meshRingWalk(this.#live()));
-    return { visited, checksum };
-  }
-
-  // Benchmark only: times newell_normals inside the module (no copy out), the way the
-  // native benchmark does; {seconds: Float64Array (one per repetition), checksum}.
-  timeNormalsInCore(repetitions) {
-    integerIn(repetitions, 'repetitions', 1, 1000);
-    const { seconds, checksum } = unwrap(this.#raw.benchNormalsInCore(this.#live(), repetitions));
-    return { seconds, checksum };
-  }
-
   // Bytes held by the winged-edge tables (vertex, edge and face tables).
   bytes() { return unwrap(this.#raw.meshBytes(this.#live())).bytes; }
 
@@ -422,6 +418,21 @@ export class Mesh {
     return { ok: r.valid, problems: r.problems };
   }
 }
+
+// The benchmark hooks' way in (web/js/core/bench-hooks.js); wingspline.js does not export
+// it and nothing on the api object reaches it.
+export const benchAccess = Object.freeze({
+  rawOf(api) {
+    const raw = rawOfBuildMesh.get(api?.buildMesh);
+    if (!raw) fail('invalid-argument', 'benchHooks needs the object loadWingspline() resolves to');
+    return raw;
+  },
+  handleOf(mesh) {
+    if (!(mesh instanceof Mesh)) fail('invalid-argument', 'expected a mesh built by buildMesh()');
+    return handleOfMesh(mesh);
+  },
+  indexedInput,
+});
 
 export function createMeshApi(raw) {
   const { maxCoordinate, maxFaceCorners, maxVertices, maxFaces } = unwrap(raw.meshLimits());
@@ -439,7 +450,7 @@ export function createMeshApi(raw) {
       faceEdges: Array.from(r.faceEdges),
     };
   }
-  return {
+  const meshApi = {
     // Builds the winged edge (and the other representations) from an indexed face set.
     // Refuses what a winged edge cannot hold: error.code = the first problem's code,
     // error.details = every problem (as validateMesh reports them).
@@ -488,14 +499,6 @@ export function createMeshApi(raw) {
       const { positions, faceOffsets, faceVertices } = indexedInput(input);
       return unwrap(raw.meshFormat(positions, faceOffsets, faceVertices, String(format))).text;
     },
-    // Benchmark only: copies the face set in once, then times the winged-edge build inside
-    // the module R times, as the native benchmark does: {seconds: Float64Array, checksum}.
-    timeBuildInCore(input, repetitions) {
-      integerIn(repetitions, 'repetitions', 1, 1000);
-      const { positions, faceOffsets, faceVertices } = indexedInput(input);
-      const { seconds, checksum } = unwrap(raw.benchBuildInCore(positions, faceOffsets, faceVertices, repetitions));
-      return { seconds, checksum };
-    },
     // How many built meshes have not been disposed (for leak tests).
     liveMeshCount() {
       return unwrap(raw.meshLiveCount()).count;
@@ -519,4 +522,6 @@ export function createMeshApi(raw) {
       return indexedOutput(r, o.layout);
     },
   };
+  rawOfBuildMesh.set(meshApi.buildMesh, raw);
+  return meshApi;
 }

@@ -95,6 +95,9 @@ public:
     // The same, taking the positions over instead of copying them (a caller that made the
     // face set only to build from it, as the wasm binding does). On refusal `mesh` is intact.
     static WingedEdgeMesh build(IndexedMesh&& mesh, const BuildOptions& options = {});
+    // The same tables by the lecture's path alone, without the fixed-degree kernels
+    // (fast_kernels.cpp); the tests check build() against it on random meshes.
+    static WingedEdgeMesh build_reference(const IndexedMesh& mesh, const BuildOptions& options = {});
 
     int32_t vertex_count() const { return static_cast<int32_t>(vertex_edge_.size()); }
     int32_t edge_count() const { return static_cast<int32_t>(edges_.size()); }
@@ -154,7 +157,7 @@ public:
 
 private:
     static WingedEdgeMesh build_impl(const IndexedMesh& mesh, const BuildOptions& options,
-                                     std::vector<double>* positions_to_take);
+                                     std::vector<double>* positions_to_take, bool fast_kernels);
 
     std::vector<double> positions_;    // positions_[3*v + k]
     std::vector<int32_t> vertex_edge_; // one incident edge per vertex (kNone if isolated)
