@@ -4,7 +4,7 @@
 // The state is plain JSON (schema below); the model is what the core returned for it.
 import { number, integer, boolean, oneOf, text, list, object, nullable } from '../../app/schema.js';
 import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
-import { createMeshSource, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
+import { createMeshSource, cacheKeys, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
 import { normaliseSteps, walkFrames } from './walk.js';
 import { drawMesh, viewRotation, projectAll, unprojectDelta, pickElement, facesAway, LABEL_LIMIT } from './draw.js';
 import { setupPanels } from './panels.js';
@@ -20,6 +20,20 @@ const MAX_IMPORT_FACES = MAX_MESH_FACES;
 
 const source = createMeshSource();
 
+// The mesh operations a state may hold, replayed in order on the built mesh (issue 14).
+// Each is checked for shape here; whether it fits the mesh (an edge of that vertex or face)
+// is the core's check when it is replayed, which names the operation if it refuses.
+const MAX_OPS = 1000;
+const elementIndex = integer({ min: 0, max: 10000000 });
+const OP_SHAPES = {
+  'set-vertex-edge': object({ op: text({ maxLength: 40 }), v: elementIndex, e: elementIndex }),
+  'set-face-edge': object({ op: text({ maxLength: 40 }), f: elementIndex, e: elementIndex }),
+};
+const operation = (v, path) => {
+  const op = oneOf(...Object.keys(OP_SHAPES))(v?.op, `${path}.op`);
+  return OP_SHAPES[op](v, path);
+};
+
 const schema = {
   meshKind: oneOf(...MESH_KINDS.map((k) => k.id)),
   fanSize: integer({ min: 1, max: 64 }),
@@ -31,6 +45,7 @@ const schema = {
     faces: list(list(integer({ min: 0, max: MAX_IMPORT_VERTICES - 1 }), { min: 3, max: MAX_FACE_CORNERS }), { min: 1, max: MAX_IMPORT_FACES }),
   })),
   moved: list(object({ v: integer({ min: 0, max: 10000000 }), p: list(number(), { min: 3, max: 3 }) }), { max: 100000 }),
+  ops: list(operation, { max: MAX_OPS }),
   walk: oneOf('vertex', 'face'),
   vertex: integer({ min: 0, max: 10000000 }),
   face: integer({ min: 0, max: 10000000 }),
@@ -51,6 +66,7 @@ function defaultState() {
     sphere: { slices: 12, stacks: 6 },
     imported: null,
     moved: [],
+    ops: [],
     walk: 'vertex',
     vertex: 1, // v2: the slide's example
     face: 0,
@@ -69,15 +85,17 @@ function checkState(state) {
   return null;
 }
 
-// Per-topology and per-position caches, so a traversal step costs one frame lookup.
-const derived = { topology: -1, version: -1, viewKey: null, projected: null, zExtent: 0, we: null, counts: null, steps: new Map(), planes: null, lastChange: null };
+// Per-topology and per-version caches (keyed on the mesh's id and version, cacheKeys), so a
+// traversal step costs one frame lookup.
+const derived = { topology: null, version: null, viewKey: null, projected: null, zExtent: 0, we: null, counts: null, steps: new Map(), planes: null, lastChange: null };
 
-function wingedTables(entry) {
-  if (derived.topology !== entry.topology) {
-    Object.assign(derived, { topology: entry.topology, version: -1, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, lastChange: null });
+function wingedTables(entry, keys) {
+  if (derived.topology !== keys.topology) {
+    const sameSource = derived.source === keys.source;
+    Object.assign(derived, { source: keys.source, topology: keys.topology, version: null, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, lastChange: sameSource ? derived.lastChange : null });
   }
-  if (derived.version !== entry.version) {
-    derived.version = entry.version;
+  if (derived.version !== keys.version) {
+    derived.version = keys.version;
     derived.we = entry.mesh.wingedEdgeArrays();
     derived.planes = null;
     derived.reps = null;
@@ -100,7 +118,8 @@ function stepsOf(entry, kind, element) {
 
 function compute(state, ctx) {
   const { entry, changes } = source.sync(state, ctx.api);
-  const we = wingedTables(entry);
+  const keys = cacheKeys(entry);
+  const we = wingedTables(entry, keys);
   if (changes.length) derived.lastChange = changes[changes.length - 1];
   const V = we.vertexEdge.length;
   const F = we.faceEdge.length;
@@ -110,7 +129,7 @@ function compute(state, ctx) {
   const frames = walkElement >= 0 ? stepsOf(entry, walkKind, walkElement) : [];
   const frame = frames[Math.min(state.step, frames.length - 1)] ?? null;
   const R = viewRotation(state);
-  const viewKey = `${entry.topology}:${entry.version}:${state.mode3d}:${R.join(',')}`;
+  const viewKey = `${keys.version}:${state.mode3d}:${R.join(',')}`;
   if (derived.viewKey !== viewKey) {
     let zExtent = 0;
     for (let v = 0; v < V; v += 1) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
@@ -128,8 +147,10 @@ function compute(state, ctx) {
   }
   return {
     mesh: entry.mesh,
-    topology: entry.topology,
-    version: entry.version,
+    source: keys.source,
+    topology: keys.topology,
+    version: keys.version,
+    lastOperation: entry.lastOperation,
     positions: we.positions,
     projected: derived.projected,
     rotation: R,
@@ -205,14 +226,16 @@ function importer(format) {
     if (errors.length) {
       throw Object.assign(new Error(`${errors[0].message}${errors.length > 1 ? ` (and ${errors.length - 1} more problem${errors.length > 2 ? 's' : ''}, listed in the validation report)` : ''}`), { code: errors[0].code });
     }
-    return { ...state, meshKind: 'file', imported: { name: name.slice(0, 120), positions, faces }, moved: [], vertex: 0, face: 0, step: 0, query: { ...state.query, vertex: 0, face: 0, edge: 0 } };
+    return { ...state, meshKind: 'file', imported: { name: name.slice(0, 120), positions, faces }, moved: [], ops: [], vertex: 0, face: 0, step: 0, query: { ...state.query, vertex: 0, face: 0, edge: 0 } };
   };
 }
 
 export const meshLesson = {
   id: 'mesh',
   title: 'Mesh representations',
-  stateVersion: 1,
+  stateVersion: 2,
+  // Version 2 (issue 14) holds the mesh operations; a version 1 state had none.
+  migrations: { 1: (old) => ({ ...old, ops: [] }) },
   schema,
   defaultState,
   checkState,

@@ -43,7 +43,7 @@ export function setupPanels(ctx) {
   const fitButton = h('button', { type: 'button', class: 'tool', onclick: () => ctx.setView(ctx.lesson.fitView(ctx.model, ctx.stage)) }, 'Fit');
 
   function chooseMesh(patch) {
-    const next = { ...state(), ...patch, moved: [], vertex: 0, face: 0, step: 0 };
+    const next = { ...state(), ...patch, moved: [], ops: [], vertex: 0, face: 0, step: 0 };
     if (next.meshKind === 'lecture') next.vertex = 1;
     next.query = { ...next.query, vertex: next.vertex, face: 0, edge: 0 };
     next.mode3d = patch.meshKind && !['lecture', 'foley', 'fan', 'file'].includes(next.meshKind) ? true : (patch.meshKind ? false : next.mode3d);
@@ -251,16 +251,17 @@ export function setupPanels(ctx) {
     if (player.speed !== s.speed) player.setSpeed(s.speed);
   }
 
-  let shownTopology = null;
+  let shownSource = null;
   const panels = {
     update(model, s) {
       syncControls();
       if (!model) return;
-      if (shownTopology !== null && shownTopology !== model.topology) {
+      // Another mesh was chosen (not another state of this one): fit the view to it.
+      if (shownSource !== null && shownSource !== model.source) {
         const view = ctx.lesson.fitView(model, ctx.stage);
         queueMicrotask(() => ctx.setView(view));
       }
-      shownTopology = model.topology;
+      shownSource = model.source;
       updateWalk(model, s);
       tabs.update(model, s);
     },

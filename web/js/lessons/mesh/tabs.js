@@ -7,6 +7,7 @@ import { h } from '../../app/dom.js';
 import { createVirtualTable } from './virtual-table.js';
 import { EDGE_COLUMNS } from './walk.js';
 import { num } from './labels.js';
+import { createStoredEdgeControl } from './stored-edge.js';
 
 const sub = (letter, i) => (i >= 0 ? h('span', { class: 'lbl' }, letter, h('sub', {}, String(i + 1))) : '');
 const V = (i) => sub('v', i);
@@ -144,8 +145,9 @@ export function createRepresentationTabs(ctx, labels) {
   // ------------------------------------------------------------ fill the panels
   const changeNote = (id) => h('p', { class: 'change-note', id, 'aria-live': 'polite' });
   const notes = { faces: changeNote('change-independent'), vf: changeNote('change-vertex-face'), winged: changeNote('change-winged') };
+  const storedEdge = createStoredEdgeControl(ctx);
   panels.winged.append(h('p', { class: 'hint' }, 'Baumgart\'s winged edge as on the slide: S, E (start and end vertex), L, R (left and right face) and the four wings: the left and right edge at the Start, and at the End. Boundary edges have one face; their wings treat the boundary as a face.'),
-    notes.winged, tables.wingedVertex.root, tables.wingedEdge.root, tables.wingedFace.root);
+    notes.winged, storedEdge.root, tables.wingedVertex.root, tables.wingedEdge.root, tables.wingedFace.root);
   panels.faces.append(h('p', { class: 'hint' }, 'Each face lists vertex coordinates (lecture 000): changing a vertex requires changing the coordinates of each instance. Drag a vertex and count.'),
     notes.faces, tables.independent.root);
   panels['vertex-face'].append(h('p', { class: 'hint' }, 'Each face lists vertex references: changing a vertex changes a single point.'), notes.vf, tables.vfVertex.root, tables.vfFace.root);
@@ -264,6 +266,7 @@ export function createRepresentationTabs(ctx, labels) {
       }
       const change = describeChange(model.lastChange);
       for (const note of Object.values(notes)) note.textContent = change;
+      if (state.tab === 'winged') storedEdge.update(model);
       if (state.tab === 'storage') updateStorage();
       if (state.tab === 'queries') queryPanel.update(model, state);
       markElements();
