@@ -6,7 +6,7 @@ import { number, integer, boolean, oneOf, text, list, object, nullable } from '.
 import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
 import { createMeshSource, cacheKeys, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
 import { normaliseSteps, walkFrames } from './walk.js';
-import { drawMesh, viewRotation, projectAll, unprojectDelta, facesAway, LABEL_LIMIT } from './draw.js';
+import { drawMesh, createBaseCache, viewRotation, projectAll, unprojectDelta, facesAway, LABEL_LIMIT } from './draw.js';
 import { setupPanels } from './panels.js';
 import { meshExports } from './exports.js';
 import { vLabel, fLabel, eLabel } from './labels.js';
@@ -17,8 +17,6 @@ export const QUERY_KINDS = ['faces-around-vertex', 'edges-around-vertex', 'edges
 // limits (api.meshLimits; tests/wasm/mesh-trust.test.mjs checks that they agree).
 const MAX_IMPORT_VERTICES = MAX_MESH_VERTICES;
 const MAX_IMPORT_FACES = MAX_MESH_FACES;
-
-const source = createMeshSource();
 
 // The mesh operations a state may hold, replayed in order on the built mesh (issue 14).
 // Each is checked for shape here; whether it fits the mesh (an edge of that vertex or face)
@@ -86,10 +84,12 @@ function checkState(state) {
 }
 
 // Per-topology and per-version caches (keyed on the mesh's id and version, cacheKeys), so a
-// traversal step costs one frame lookup.
-const derived = { topology: null, version: null, viewKey: null, projected: null, zExtent: 0, we: null, counts: null, steps: new Map(), planes: null, lastChange: null };
+// traversal step costs one frame lookup. One per lesson view (setup).
+function createDerived() {
+  return { topology: null, version: null, viewKey: null, projected: null, zExtent: 0, we: null, counts: null, steps: new Map(), planes: null, lastChange: null };
+}
 
-function wingedTables(entry, keys) {
+function wingedTables(derived, entry, keys) {
   if (derived.topology !== keys.topology) {
     const sameSource = derived.source === keys.source;
     Object.assign(derived, { source: keys.source, topology: keys.topology, version: null, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, lastChange: sameSource ? derived.lastChange : null });
@@ -107,7 +107,7 @@ function wingedTables(entry, keys) {
   return derived.we;
 }
 
-function stepsOf(entry, kind, element) {
+function stepsOf(derived, entry, kind, element) {
   const key = `${kind}:${element}`;
   if (!derived.steps.has(key)) {
     const raw = kind === 'vertex' ? entry.mesh.traversalSteps(element) : entry.mesh.faceEdgeSteps(element);
@@ -117,16 +117,17 @@ function stepsOf(entry, kind, element) {
 }
 
 function compute(view, state, ctx) {
+  const { source, derived } = view;
   const { entry, changes } = source.sync(state, ctx.api);
   const keys = cacheKeys(entry);
-  const we = wingedTables(entry, keys);
+  const we = wingedTables(derived, entry, keys);
   if (changes.length) derived.lastChange = changes[changes.length - 1];
   const V = we.vertexEdge.length;
   const F = we.faceEdge.length;
   const E = we.edges.length / 8;
   const walkKind = state.walk;
   const walkElement = walkKind === 'vertex' ? Math.min(state.vertex, V - 1) : Math.min(state.face, F - 1);
-  const frames = walkElement >= 0 ? stepsOf(entry, walkKind, walkElement) : [];
+  const frames = walkElement >= 0 ? stepsOf(derived, entry, walkKind, walkElement) : [];
   const frame = frames[Math.min(state.step, frames.length - 1)] ?? null;
   const R = viewRotation(state);
   const viewKey = `${keys.version}:${state.mode3d}:${R.join(',')}`;
@@ -143,7 +144,7 @@ function compute(view, state, ctx) {
   if (derived.sideKey !== sideKey) {
     derived.sideKey = sideKey;
     derived.fromBehind = state.mode3d && walkElement >= 0
-      && facesAway(R, walkKind === 'vertex' ? entry.mesh.vertexNormal(walkElement) : faceNormal(entry.mesh, walkElement));
+      && facesAway(R, walkKind === 'vertex' ? entry.mesh.vertexNormal(walkElement) : faceNormal(derived, entry.mesh, walkElement));
   }
   return {
     mesh: entry.mesh,
@@ -168,7 +169,7 @@ function compute(view, state, ctx) {
   };
 }
 
-function faceNormal(mesh, f) {
+function faceNormal(derived, mesh, f) {
   derived.faceNormals ??= mesh.normals(); // once per mesh version, not per frame of a drag
   const n = derived.faceNormals;
   return [n[3 * f], n[3 * f + 1], n[3 * f + 2]];
@@ -222,7 +223,7 @@ function importer(format) {
     // Every problem, not only the first: the panel lists them with the elements involved.
     const report = ctx.api.validateMesh({ positions, faces });
     const errors = report.problems.filter((p) => p.severity === 'error');
-    view.showReport(name, report.problems);
+    view.panels.showReport(name, report.problems);
     if (errors.length) {
       throw Object.assign(new Error(`${errors[0].message}${errors.length > 1 ? ` (and ${errors.length - 1} more problem${errors.length > 2 ? 's' : ''}, listed in the validation report)` : ''}`), { code: errors[0].code });
     }
@@ -241,12 +242,11 @@ export const meshLesson = {
   checkState,
   contentFields: IMPORTED_CONTENT,
   compute,
-  setup: (ctx) => setupPanels(ctx),
-  update: (view, model, state) => view.update(model, state),
-  draw: (view, painter, model, state, ctx) => {
-    drawMesh(painter, model, state, ctx);
-    view.afterDraw(model, state);
-  },
+  // The view: the panels, the live mesh (source), the caches derived from it and the
+  // picture cache of a big mesh; nothing of the lesson lives at module level.
+  setup: (ctx) => ({ panels: setupPanels(ctx), source: createMeshSource(), derived: createDerived(), baseCache: createBaseCache() }),
+  update: (view, model, state) => view.panels.update(model, state),
+  draw: (view, painter, model, state, ctx) => drawMesh(view.baseCache, painter, model, state, ctx),
   handles,
   moveHandle,
   describe,
@@ -258,7 +258,7 @@ export const meshLesson = {
     if (state.walk === 'vertex' && state.vertex !== v) ctx.commit({ ...state, vertex: v, step: 0 }, { history: false });
   },
   click(view, x, y, ctx, event) {
-    return view.canvasClick(x, y, event);
+    return view.panels.canvasClick(x, y, event);
   },
   exports: meshExports,
   importers: { off: importer('off'), obj: importer('obj') },

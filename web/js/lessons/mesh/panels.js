@@ -160,7 +160,7 @@ export function setupPanels(ctx) {
   }
 
   // ------------------------------------------------------------ tabs
-  const tabs = createRepresentationTabs(ctx, TAB_LABELS);
+  const tabs = createRepresentationTabs(ctx, TAB_LABELS, { pickElement: (element) => pickElement(element) });
   ctx.panels.replaceChildren(report, walkPanel, tabs.root);
 
   // ------------------------------------------------------------ canvas hover, click, rotate
@@ -265,13 +265,11 @@ export function setupPanels(ctx) {
       updateWalk(model, s);
       tabs.update(model, s);
     },
-    afterDraw() {},
     canvasClick,
     pickElement,
     showReport,
     player,
   };
-  ctx.meshPanels = panels;
   syncControls();
   return panels;
 }

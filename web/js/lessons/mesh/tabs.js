@@ -45,7 +45,8 @@ const SHORT_NAMES = {
   'edge-list': 'edge list', 'winged-edge': 'winged edge',
 };
 
-export function createRepresentationTabs(ctx, labels) {
+// pickElement(element): a table row was clicked (the panels highlight it everywhere).
+export function createRepresentationTabs(ctx, labels, { pickElement }) {
   const tabIds = Object.keys(labels);
   const tablist = h('div', { class: 'mesh-tabs', role: 'tablist', 'aria-label': 'Representations' });
   const panels = {};
@@ -84,7 +85,7 @@ export function createRepresentationTabs(ctx, labels) {
   };
   const hoverRow = (kind) => (index) => { ctx.ui.meshHover = { kind, index }; markElements(); ctx.render(); };
   const leave = () => { ctx.ui.meshHover = null; markElements(); ctx.render(); };
-  const pickRow = (kind) => (index) => ctx.meshPanels.pickElement({ kind, index });
+  const pickRow = (kind) => (index) => pickElement({ kind, index });
   const table = (spec) => createVirtualTable({ onRowEnter: hoverRow(spec.kind), onRowLeave: leave, onRowClick: pickRow(spec.kind), ...spec });
 
   // ------------------------------------------------------------ winged edge (lecture 000)
