@@ -24,19 +24,22 @@ namespace {
 
 using namespace wingspline::mesh;
 
-// The winged edge is built with the mesh; the other representations only on first use
-// (meshBuildRepresentations, from the face set read back from the winged edge, or the one
-// the JS Mesh keeps when the caller chose the face edges), so a mesh's
-// wasm memory is the winged edge's own until a lesson asks for the others.
+// The winged edge is built with the mesh; the other representations are its cache
+// (RepresentationCache): derived from the winged edge's current face set on first use and
+// again whenever the mesh's version moved on, so a mesh's wasm memory is the winged edge's
+// own until a lesson asks for the others, and no operation leaves a stale copy.
 struct MeshEntry {
     WingedEdgeMesh winged;
-    std::unique_ptr<Representations> representations;
+    RepresentationCache representations;
 };
 
-Representations& representations_of(MeshEntry& m) {
-    if (!m.representations)
-        throw Error("representations-not-built", "the other representations of this mesh have not been built yet");
-    return *m.representations;
+const Representations& representations_of(MeshEntry& m) { return m.representations.of(m.winged); }
+
+val version_value(const MeshVersion& v) {
+    val r = val::object();
+    r.set("topology", static_cast<double>(v.topology));
+    r.set("geometry", static_cast<double>(v.geometry));
+    return r;
 }
 
 struct Registry {
@@ -333,11 +336,8 @@ val mesh_validate(int32_t handle) {
 // with the default face edges is the same face set.
 val mesh_planes(int32_t handle) {
     return guarded([&] {
-        MeshEntry& m = entry(handle);
-        const auto planes = m.representations
-                                ? face_planes(m.winged, m.representations->vertex_face_tables.face_offsets,
-                                              m.representations->vertex_face_tables.face_vertices)
-                                : face_planes(m.winged);
+        // The faces as given: face_set() lists each face from its first corner (issue 14).
+        const auto planes = face_planes(entry(handle).winged);
         std::vector<double> cross, newell, residual;
         std::vector<int32_t> corners;
         for (const auto& p : planes) {
@@ -406,40 +406,94 @@ val mesh_set_vertex_position(int32_t handle, int32_t v, double x, double y, doub
     return guarded([&] {
         MeshEntry& m = entry(handle);
         require_vertex(m.winged, v);
-        Representations& reps = representations_of(m);
         m.winged.set_position(v, {x, y, z});
-        const auto copies = set_vertex_position(reps, v, {x, y, z});
+        const auto copies = m.representations.follow_position(m.winged, v, {x, y, z});
         val changed = val::object();
         for (int r = 0; r + 1 < kRepresentationCount; ++r) changed.set(representation_key(static_cast<Representation>(r)), copies[r]);
         changed.set(representation_key(Representation::WingedEdge), 1);
         val r = val::object();
         r.set("changedEntries", changed);
+        r.set("version", version_value(m.winged.version()));
         return r;
     });
 }
 
-// ------------------------------------------------------------------ the other representations
+// ------------------------------------------------------------------ the change model
 
-// Builds the four other representations from the face set the mesh was built from (once).
-val mesh_build_representations(int32_t handle, val face_offsets, val face_vertices) {
-    return guarded([&] {
-        MeshEntry& m = entry(handle);
-        if (!m.representations) {
-            // Without a face set from JS, the faces are read back from the winged edge (the
-            // default face edges keep each face's corner order as given).
-            IndexedMesh faces;
-            if (face_offsets.isNull() || face_offsets.isUndefined()) {
-                faces = m.winged.face_set();
-            } else {
-                faces.positions = m.winged.positions();
-                faces.face_offsets = to_ints(face_offsets);
-                faces.face_vertices = to_ints(face_vertices);
-            }
-            m.representations = std::make_unique<Representations>(build_representations(faces, m.winged));
+// {topology, geometry}: which state of the mesh this is (winged_edge.h, MeshVersion).
+val mesh_version(int32_t handle) {
+    return guarded([&] { return version_value(entry(handle).winged.version()); });
+}
+
+val element_list(const std::vector<Vertex>& vs, const std::vector<Edge>& es, const std::vector<Face>& fs) {
+    const auto ints = [](const auto& hs) {
+        std::vector<int32_t> out;
+        for (const auto& h : hs) out.push_back(h.idx);
+        return int_array(out);
+    };
+    val r = val::object();
+    r.set("vertices", ints(vs));
+    r.set("edges", ints(es));
+    r.set("faces", ints(fs));
+    return r;
+}
+
+// {op, added, removed: {vertices, edges, faces}, rows: [{table, row, fields: [{field,
+// before, after}]}], before, after: {topology, geometry}}
+val change_value(const ChangeRecord& c) {
+    val rows = val::array();
+    for (std::size_t i = 0; i < c.rows.size(); ++i) {
+        val fields = val::array();
+        for (std::size_t k = 0; k < c.rows[i].fields.size(); ++k) {
+            val field = val::object();
+            field.set("field", c.rows[i].fields[k].field);
+            field.set("before", c.rows[i].fields[k].before);
+            field.set("after", c.rows[i].fields[k].after);
+            fields.set(k, field);
         }
-        return val::object();
+        val row = val::object();
+        row.set("table", std::string(table_name(c.rows[i].table)));
+        row.set("row", c.rows[i].row);
+        row.set("fields", fields);
+        rows.set(i, row);
+    }
+    val r = val::object();
+    r.set("op", c.op);
+    r.set("added", element_list(c.added_vertices, c.added_edges, c.added_faces));
+    r.set("removed", element_list(c.removed_vertices, c.removed_edges, c.removed_faces));
+    r.set("rows", rows);
+    r.set("before", version_value(c.before));
+    r.set("after", version_value(c.after));
+    return r;
+}
+
+// One checked operation by name: check = true only asks check_<op> ({ok: true, allowed,
+// code, message}, nothing changed); otherwise runs <op> and returns its change record, or
+// the refusal as {ok: false, code, message} with the mesh unchanged.
+val mesh_operation(int32_t handle, const std::string& op, int32_t element, int32_t edge, bool check) {
+    return guarded([&] {
+        WingedEdgeMesh& w = entry(handle).winged;
+        CheckResult verdict;
+        if (op == "set-vertex-edge")
+            verdict = w.check_set_vertex_edge(Vertex(element), Edge(edge));
+        else if (op == "set-face-edge")
+            verdict = w.check_set_face_edge(Face(element), Edge(edge));
+        else
+            throw Error("unknown-operation", "unknown mesh operation '" + op + "'; use set-vertex-edge or set-face-edge");
+        if (check) {
+            val r = val::object();
+            r.set("allowed", verdict.ok);
+            r.set("code", verdict.code);
+            r.set("message", verdict.message);
+            return r;
+        }
+        if (!verdict.ok) throw Error(verdict.code, verdict.message);
+        return change_value(op == "set-vertex-edge" ? w.set_vertex_edge(Vertex(element), Edge(edge))
+                                                    : w.set_face_edge(Face(element), Edge(edge)));
     });
 }
+
+// ------------------------------------------------------------------ the other representations
 
 // {[key]: {entries, bytes, arrays: [{name, entries, bytesPerEntry}]}}
 val mesh_storage(int32_t handle) {
@@ -652,7 +706,8 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshVertexNormal", &mesh_vertex_normal);
     emscripten::function("meshSetVertexPosition", &mesh_set_vertex_position);
     emscripten::function("meshBytes", &mesh_bytes);
-    emscripten::function("meshBuildRepresentations", &mesh_build_representations);
+    emscripten::function("meshVersion", &mesh_version);
+    emscripten::function("meshOperation", &mesh_operation);
     emscripten::function("meshStorage", &mesh_storage);
     emscripten::function("meshRepresentations", &mesh_representations);
     emscripten::function("meshQuery", &mesh_query);

@@ -383,7 +383,18 @@ WingedEdgeMesh WingedEdgeMesh::build_impl(const IndexedMesh& mesh, const BuildOp
     check_no_duplicate_faces(mesh, m);
 
     if (!options.vertex_edges.empty()) apply_vertex_edges(options, m.edges_, degree, m.vertex_edge_);
-    if (!options.face_edges.empty()) apply_face_edges(options, m.edges_, m.face_edge_);
+    if (!options.face_edges.empty()) {
+        apply_face_edges(options, m.edges_, m.face_edge_);
+        // face_set() lists each face from its first corner as given, wherever its walk now starts.
+        const int32_t* fo = mesh.face_offsets.data();
+        const int32_t* fv = mesh.face_vertices.data();
+        for (int32_t f = 0; f < F; ++f)
+            if (m.walk_start_corner(f) != fv[fo[f]]) {
+                m.face_first_corner_.resize(F);
+                for (int32_t g = 0; g < F; ++g) m.face_first_corner_[g] = fv[fo[g]];
+                break;
+            }
+    }
     // Last, so that every refusal above still sees the caller's positions.
     if (positions_to_take)
         m.positions_ = std::move(*positions_to_take);
@@ -406,9 +417,114 @@ void WingedEdgeMesh::set_position(int32_t v, const glm::dvec3& p) {
             throw Error("coordinate-out-of-range", where + buf + ": coordinates are limited to 1e9 in size");
         }
     }
+    if (positions_[3 * v] == p.x && positions_[3 * v + 1] == p.y && positions_[3 * v + 2] == p.z) return;
     positions_[3 * v] = p.x;
     positions_[3 * v + 1] = p.y;
     positions_[3 * v + 2] = p.z;
+    ++version_.geometry;
+}
+
+// ------------------------------------------------------------------ the change model
+
+const char* table_name(MeshTable t) {
+    switch (t) {
+    case MeshTable::Vertex: return "vertex";
+    case MeshTable::Edge: return "edge";
+    case MeshTable::Face: return "face";
+    }
+    return "unknown";
+}
+
+namespace {
+std::string range_message(const char* what, int32_t index, int32_t count) {
+    return std::string(what) + " index " + std::to_string(index) + " is out of range: the mesh has " + what + "s 0 to " +
+           std::to_string(count - 1);
+}
+std::string edge_list(const std::vector<int32_t>& edges) {
+    std::string out;
+    for (int32_t e : edges) out += (out.empty() ? "" : ", ") + edge_label(e);
+    return out;
+}
+} // namespace
+
+CheckResult WingedEdgeMesh::check_element(Vertex v) const {
+    if (v.idx < 0 || v.idx >= vertex_count()) return CheckResult::refuse("invalid-element", range_message("vertex", v.idx, vertex_count()));
+    if (is_deleted(v)) return CheckResult::refuse("deleted-element", vertex_label(v.idx) + " has been deleted");
+    return CheckResult::accept();
+}
+CheckResult WingedEdgeMesh::check_element(Edge e) const {
+    if (e.idx < 0 || e.idx >= edge_count()) return CheckResult::refuse("invalid-element", range_message("edge", e.idx, edge_count()));
+    if (is_deleted(e)) return CheckResult::refuse("deleted-element", edge_label(e.idx) + " has been deleted");
+    return CheckResult::accept();
+}
+CheckResult WingedEdgeMesh::check_element(Face f) const {
+    if (f.idx < 0 || f.idx >= face_count()) return CheckResult::refuse("invalid-element", range_message("face", f.idx, face_count()));
+    if (is_deleted(f)) return CheckResult::refuse("deleted-element", face_label(f.idx) + " has been deleted");
+    return CheckResult::accept();
+}
+
+CheckResult WingedEdgeMesh::check_set_vertex_edge(Vertex v, Edge e) const {
+    for (const CheckResult& c : {check_element(v), check_element(e)})
+        if (!c.ok) return c;
+    const EdgeRecord& r = edges_[e.idx];
+    if (r.start == v.idx || r.end == v.idx) return CheckResult::accept();
+    if (vertex_edge_[v.idx] == kNone)
+        return CheckResult::refuse("edge-not-incident", vertex_label(v.idx) + " belongs to no face, so it has no edge to store (" +
+                                   edge_label(e.idx) + " does not touch it)");
+    return CheckResult::refuse("edge-not-incident", edge_label(e.idx) + " does not touch " + vertex_label(v.idx) +
+                               ": the vertex table stores one of " + vertex_label(v.idx) + "'s own edges (" +
+                               edge_list(edges_around_vertex(v.idx)) + ")");
+}
+
+CheckResult WingedEdgeMesh::check_set_face_edge(Face f, Edge e) const {
+    for (const CheckResult& c : {check_element(f), check_element(e)})
+        if (!c.ok) return c;
+    const EdgeRecord& r = edges_[e.idx];
+    if (r.left == f.idx || r.right == f.idx) return CheckResult::accept();
+    return CheckResult::refuse("edge-not-on-face", edge_label(e.idx) + " is not a side of " + face_label(f.idx) +
+                               ": the face table stores one of " + face_label(f.idx) + "'s own edges (" +
+                               edge_list(edges_of_face(f.idx)) + ")");
+}
+
+namespace {
+void require_ok(const CheckResult& c) {
+    if (!c.ok) throw Error(c.code, c.message);
+}
+} // namespace
+
+ChangeRecord WingedEdgeMesh::set_vertex_edge(Vertex v, Edge e) {
+    require_ok(check_set_vertex_edge(v, e));
+    ChangeRecord change;
+    change.op = "set-vertex-edge";
+    change.before = version_;
+    const int32_t before = vertex_edge_[v.idx];
+    if (before != e.idx) {
+        vertex_edge_[v.idx] = e.idx;
+        ++version_.topology;
+        change.rows.push_back({MeshTable::Vertex, v.idx, {{"edge", before, e.idx}}});
+    }
+    change.after = version_;
+    return change;
+}
+
+ChangeRecord WingedEdgeMesh::set_face_edge(Face f, Edge e) {
+    require_ok(check_set_face_edge(f, e));
+    ChangeRecord change;
+    change.op = "set-face-edge";
+    change.before = version_;
+    const int32_t before = face_edge_[f.idx];
+    if (before != e.idx) {
+        // Keep the face set's listing: until now every face was listed from its walk start.
+        if (face_first_corner_.empty()) {
+            face_first_corner_.resize(face_edge_.size());
+            for (int32_t g = 0; g < face_count(); ++g) face_first_corner_[g] = walk_start_corner(g);
+        }
+        face_edge_[f.idx] = e.idx;
+        ++version_.topology;
+        change.rows.push_back({MeshTable::Face, f.idx, {{"edge", before, e.idx}}});
+    }
+    change.after = version_;
+    return change;
 }
 
 std::vector<int32_t> WingedEdgeMesh::edges_around_vertex(int32_t v) const {
@@ -500,7 +616,11 @@ IndexedMesh WingedEdgeMesh::face_set() const {
     out.face_vertices.reserve(2 * edges_.size()); // sides of all faces <= 2E
     for (int32_t f = 0; f < face_count(); ++f) {
         const std::vector<int32_t> corners = vertices_of_face(f);
-        out.face_vertices.insert(out.face_vertices.end(), corners.begin(), corners.end());
+        const auto first = face_first_corner_.empty()
+                               ? corners.begin()
+                               : std::find(corners.begin(), corners.end(), face_first_corner_[f]);
+        out.face_vertices.insert(out.face_vertices.end(), first, corners.end());
+        out.face_vertices.insert(out.face_vertices.end(), corners.begin(), first);
         out.face_offsets.push_back(static_cast<int32_t>(out.face_vertices.size()));
     }
     return out;
@@ -638,6 +758,12 @@ ValidationReport WingedEdgeMesh::validate() const {
         if (!ok || e != first)
             add("open-face-loop", "walking the edges of " + face_label(f) + " from " + edge_label(first) +
                 " does not come back around the face", {}, {first}, {f});
+    }
+    for (int32_t f = 0; f < static_cast<int32_t>(face_first_corner_.size()) && f < F; ++f) {
+        const std::vector<int32_t> corners = vertices_of_face(f);
+        if (std::find(corners.begin(), corners.end(), face_first_corner_[f]) == corners.end())
+            add("face-first-corner-not-on-face", face_label(f) + " is listed from " + vertex_label(face_first_corner_[f]) +
+                ", which is not one of its corners", {face_first_corner_[f]}, {}, {f});
     }
     if (walked != sides)
         add("open-face-loop", "the face loops cover " + std::to_string(walked) + " edge sides but the edge table names " +

@@ -79,6 +79,7 @@ const overflowObserver = typeof ResizeObserver === 'undefined' ? null : new Resi
   }
 });
 
+/** @param {ParentNode} [root] */
 export function watchScrollRegions(root = document) {
   if (!overflowObserver) return;
   for (const box of root.querySelectorAll(SCROLL_BOXES)) {

@@ -133,6 +133,13 @@ function storageValue(s) {
 let handleOfMesh;
 const rawOfBuildMesh = new WeakMap();
 
+// The mesh operations (docs/api-mesh.md, "Changing a mesh"): the op name the core knows
+// and the element kind each one names.
+const OPERATIONS = Object.freeze({
+  'set-vertex-edge': 'vertex',
+  'set-face-edge': 'face',
+});
+
 export class Mesh {
   static {
     handleOfMesh = (mesh) => mesh.#live();
@@ -140,22 +147,41 @@ export class Mesh {
 
   #raw;
   #handle;
-  // The face set (CSR) the mesh was built from, kept in JS only when the caller chose the
-  // face edges (then a face's walk may start at another corner) until the other
-  // representations are first needed. Otherwise the core reads the faces back from the
-  // winged edge, whose default face edge is each face's first side.
-  #faceSet;
-  #faces; // F, cached on first need (connectivity never changes)
-  #representationsBuilt = false;
+  #id;
+  // {topology, geometry}: the core's MeshVersion, mirrored from every call that may change
+  // it (this object is the only owner of its handle, so the mirror cannot go stale; the
+  // wasm tests compare it with the core's). Every cache below is keyed on it.
+  #version = Object.freeze({ topology: 0, geometry: 0 });
+  #faces = { topology: -1, count: 0 }; // F, for the topology it was read at
 
-  constructor(raw, handle, faceSet = null) {
+  constructor(raw, handle) {
     this.#raw = raw;
     this.#handle = handle;
-    this.#faceSet = faceSet;
+    this.#id = handle;
     safetyNet?.register(this, { raw, handle }, this);
   }
 
   get disposed() { return this.#handle === 0; }
+
+  // Which mesh this is: unique among the meshes built by one module, never reused. A
+  // version is comparable only within one mesh, so a cache key is (id, version).
+  get id() { return this.#id; }
+
+  // Which state of this mesh this is: {topology, geometry}. topology moves on by one with
+  // every operation that changed the connectivity tables, geometry with every position change.
+  get version() { return this.#version; }
+
+  #setVersion(v) {
+    if (v.topology !== this.#version.topology || v.geometry !== this.#version.geometry) {
+      this.#version = Object.freeze({ topology: v.topology, geometry: v.geometry });
+    }
+  }
+
+  // The core's own count, for tests of the mirror above.
+  coreVersion() {
+    const { topology, geometry } = unwrap(this.#raw.meshVersion(this.#live()));
+    return { topology, geometry };
+  }
 
   // Frees the mesh in the core. Idempotent; every other call afterwards throws 'disposed'.
   dispose() {
@@ -168,21 +194,6 @@ export class Mesh {
   #live() {
     if (this.#handle === 0) throw new WingsplineError('disposed', 'this mesh has been disposed; build it again with buildMesh()');
     return this.#handle;
-  }
-
-  // Builds independent faces, vertex/face tables, the adjacency lists and the edge list in
-  // the core on first use (they are not part of the winged edge's bytes).
-  #representationsReady() {
-    const handle = this.#live();
-    if (this.#faceSet !== null) {
-      const { faceOffsets, faceVertices } = this.#faceSet;
-      unwrap(this.#raw.meshBuildRepresentations(handle, faceOffsets, faceVertices));
-      this.#faceSet = null;
-    } else if (!this.#representationsBuilt) {
-      unwrap(this.#raw.meshBuildRepresentations(handle, null, null));
-    }
-    this.#representationsBuilt = true;
-    return handle;
   }
 
   #adjacency(kind, element, what) {
@@ -264,9 +275,7 @@ export class Mesh {
   // [A, B, C, D], residual}]. The cross product uses the face's own first three corners (as
   // given, whatever its stored face edge), named in crossCorners.
   planes() {
-    // With chosen face edges the faces as given are kept with the other representations.
-    const handle = this.#faceSet !== null ? this.#representationsReady() : this.#live();
-    const r = unwrap(this.#raw.meshPlanes(handle));
+    const r = unwrap(this.#raw.meshPlanes(this.#live()));
     return Array.from(r.residual, (residual, f) => ({
       cross: Array.from(r.cross.subarray(4 * f, 4 * f + 4)),
       crossCorners: Array.from(r.crossCorners.subarray(3 * f, 3 * f + 3)),
@@ -299,8 +308,10 @@ export class Mesh {
   }
 
   #faceCount() {
-    if (this.#faces === undefined) this.#faces = unwrap(this.#raw.meshCounts(this.#live())).faces;
-    return this.#faces;
+    if (this.#faces.topology !== this.#version.topology) {
+      this.#faces = { topology: this.#version.topology, count: unwrap(this.#raw.meshCounts(this.#live())).faces };
+    }
+    return this.#faces.count;
   }
 
   // Moves vertex v in every representation; {changedEntries: {[representation]: xyz copies
@@ -310,15 +321,55 @@ export class Mesh {
     if (!isNumberArray(position) || position.length !== 3 || !Array.from(position).every(Number.isFinite)) {
       fail('invalid-argument', 'the position must be three finite numbers [x, y, z]');
     }
-    const r = unwrap(this.#raw.meshSetVertexPosition(this.#representationsReady(), v, position[0], position[1], position[2]));
+    const r = unwrap(this.#raw.meshSetVertexPosition(this.#live(), v, position[0], position[1], position[2]));
+    this.#setVersion(r.version);
     return { changedEntries: { ...r.changedEntries } };
+  }
+
+  // ---------------------------------------------------------------- changing the mesh
+  // Checked operations (docs/api-mesh.md, "Changing a mesh"): check<Op> changes nothing and
+  // returns {ok: true} or {ok: false, code, message}; <op> refuses the same way (throws a
+  // WingsplineError with that code, the mesh unchanged) or returns its change record
+  // {op, added, removed: {vertices, edges, faces}, rows: [{table, row, fields: [{field,
+  // before, after}]}], before, after: {topology, geometry}}.
+  #operation(op, element, edge, check) {
+    integerIn(element, OPERATIONS[op], -INT32_MAX, INT32_MAX);
+    integerIn(edge, 'edge', -INT32_MAX, INT32_MAX);
+    const r = unwrap(this.#raw.meshOperation(this.#live(), op, element, edge, check));
+    if (check) return r.allowed ? { ok: true } : { ok: false, code: r.code, message: r.message };
+    this.#setVersion(r.after);
+    return {
+      op: r.op,
+      added: r.added,
+      removed: r.removed,
+      rows: r.rows,
+      before: { ...r.before },
+      after: { ...r.after },
+    };
+  }
+
+  // The vertex table stores one incident edge per vertex; store edge e for vertex v instead
+  // (e must touch v). The walk around v then starts at e.
+  checkSetVertexEdge(v, e) { return this.#operation('set-vertex-edge', v, e, true); }
+  setVertexEdge(v, e) { return this.#operation('set-vertex-edge', v, e, false); }
+  // The same for the face table: e must be a side of f; the walk along f starts at e.
+  checkSetFaceEdge(f, e) { return this.#operation('set-face-edge', f, e, true); }
+  setFaceEdge(f, e) { return this.#operation('set-face-edge', f, e, false); }
+
+  // One operation as the lesson state holds it: {op: 'set-vertex-edge', v, e} or
+  // {op: 'set-face-edge', f, e}. Returns its change record.
+  apply(operation) {
+    if (operation === null || typeof operation !== 'object' || !Object.hasOwn(OPERATIONS, operation.op)) {
+      fail('unknown-operation', `unknown mesh operation ${JSON.stringify(String(operation?.op)).slice(0, 60)}; use ${Object.keys(OPERATIONS).join(' or ')}`);
+    }
+    return operation.op === 'set-vertex-edge' ? this.setVertexEdge(operation.v, operation.e) : this.setFaceEdge(operation.f, operation.e);
   }
 
   // Storage of each representation, from its real arrays: {[representation]: {entries,
   // bytes, arrays: [{name, entries, bytesPerEntry, bytes}]}}; an entry is one array element
   // (a double coordinate or an int32 index).
   storage() {
-    const r = unwrap(this.#raw.meshStorage(this.#representationsReady()));
+    const r = unwrap(this.#raw.meshStorage(this.#live()));
     return Object.fromEntries(REPRESENTATIONS.map((key) => [key, storageValue(r.storage[key])]));
   }
 
@@ -328,8 +379,7 @@ export class Mesh {
     const { limit = INT32_MAX, offset = 0 } = options ?? {};
     integerIn(limit, 'limit', 0, INT32_MAX);
     integerIn(offset, 'offset', 0, INT32_MAX);
-    const handle = this.#representationsReady();
-    const r = unwrap(this.#raw.meshRepresentations(handle, offset, limit));
+    const r = unwrap(this.#raw.meshRepresentations(this.#live(), offset, limit));
     const storage = this.storage();
     const c = this.counts();
     const vertexTotals = { vertices: c.vertices, edges: c.edges, faces: c.faces };
@@ -405,7 +455,7 @@ export class Mesh {
   query(kind, element) {
     if (!QUERY_KINDS.includes(kind)) fail('unknown-query', `unknown query '${String(kind).slice(0, 40)}'; use ${QUERY_KINDS.join(', ')}`);
     integerIn(element, kind.endsWith('vertex') ? 'vertex' : kind.endsWith('edge') ? 'edge' : 'face', 0, INT32_MAX);
-    const r = unwrap(this.#raw.meshQuery(this.#representationsReady(), kind, element));
+    const r = unwrap(this.#raw.meshQuery(this.#live(), kind, element));
     return Object.fromEntries(REPRESENTATIONS.map((key) => [key, { answer: r.answers[key].answer, entriesRead: r.answers[key].entriesRead }]));
   }
 
@@ -459,16 +509,10 @@ export function createMeshApi(raw) {
       const edges = optionalInts(input.edges, 'edges', true);
       const vertexEdges = optionalInts(input.vertexEdges, 'vertexEdges');
       const faceEdges = optionalInts(input.faceEdges, 'faceEdges');
+      // The core keeps each face's first corner as given (chosen face edges may start its
+      // walk elsewhere), so the other representations are derived from the core alone.
       const r = unwrap(raw.meshBuild(positions, faceOffsets, faceVertices, edges, vertexEdges, faceEdges));
-      // Chosen face edges may start a face's walk at another corner, so then the mesh keeps
-      // the face set for its other representations (its own copy: the caller may reuse
-      // bulk arrays it passed in). Otherwise the core reads the faces back from the winged edge.
-      if (faceEdges.length === 0) return new Mesh(raw, r.handle);
-      const own = input.faces === undefined;
-      return new Mesh(raw, r.handle, {
-        faceOffsets: own ? faceOffsets.slice() : faceOffsets,
-        faceVertices: own ? faceVertices.slice() : faceVertices,
-      });
+      return new Mesh(raw, r.handle);
     },
     // Every problem of an indexed face set, without building: {ok, problems}.
     validateMesh(input) {

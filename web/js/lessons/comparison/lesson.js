@@ -81,7 +81,7 @@ export const lesson = {
     view: { cx: 0, cy: 0, zoom: 90 },
   }),
 
-  compute(state, ctx) {
+  compute(view, state, ctx) {
     const api = ctx.api;
     return {
       state,
@@ -92,7 +92,7 @@ export const lesson = {
     };
   },
 
-  fitView(model, stage) {
+  fitView(view, model, stage) {
     const pts = model.state.scene === 'invariance' ? [...model.state.points, ...model.invariance.mapped] : model.state.points;
     const xs = pts.map((p) => p[0]);
     const ys = pts.map((p) => p[1]);
@@ -104,7 +104,7 @@ export const lesson = {
   setup(ctx) {
     const sceneSelect = h('select', { id: 'scene', onchange: () => {
       // Each scene gets a view that shows all of it (the invariance scene adds the mapped points).
-      if (ctx.commit({ ...ctx.state, scene: sceneSelect.value })) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+      if (ctx.commit({ ...ctx.state, scene: sceneSelect.value })) ctx.fitView();
     } },
       Object.entries(SCENES).map(([k, v]) => h('option', { value: k }, v)));
     const familyBoxes = FAMILY_IDS.map((f) => {
@@ -115,7 +115,7 @@ export const lesson = {
     const addSegment = () => {
       const state = ctx.state;
       if (state.points.length + 3 > MAX_POINTS) { ctx.message.error(`At most ${MAX_POINTS} points (ten segments)`, 'too-many-points'); return; }
-      if (ctx.commit({ ...state, points: withNewSegment(state.points) })) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+      if (ctx.commit({ ...state, points: withNewSegment(state.points) })) ctx.fitView();
     };
     const removeSegment = () => {
       const state = ctx.state;
@@ -178,9 +178,10 @@ export const lesson = {
     } });
     FAMILY_IDS.forEach((f, i) => ctx.keymap.add({ keys: [String(i + 1)], label: `show / hide ${FAMILY_NAMES[f]}`, group: 'Lesson',
       action: () => ctx.commit({ ...ctx.state, show: { ...ctx.state.show, [f]: !ctx.state.show[f] } }, { recompute: false }) }));
+    return {};
   },
 
-  update(model, state, ctx) {
+  update(view, model, state, ctx) {
     const ui = lesson.ui;
     if (ui.shownScene !== state.scene) {
       ui.shownScene = state.scene;
@@ -205,7 +206,7 @@ export const lesson = {
       title: m.q ? `${name(m.to)}: the same curve from q` : `${name(m.to)}: the same G with M swapped` });
   },
 
-  draw(painter, model, state, ctx) {
+  draw(view, painter, model, state, ctx) {
     if (!model) return;
     const c = ctx.colors;
     const strokeOf = (f) => c.series[FAMILY_COLOR[f]];
@@ -243,7 +244,7 @@ export const lesson = {
         legend.push([c.series[2], `rational Bezier of T(P), weights w(P_i) (max distance ${fmtDistance(inv.rational.distance)})`, [2, 4]]);
       }
     }
-    for (const hd of lesson.handles(model, state)) {
+    for (const hd of lesson.handles(view, model, state)) {
       const on = hd.id === ctx.ui.selected;
       painter.circle(hd.x, hd.y, on ? 8 : 6, { fill: on ? c.highlight : c.background, stroke: c.ink, width: 1.5 });
       painter.text(hd.x, hd.y, hd.label, { fill: c.ink, font: 12, dx: 12, dy: -12, align: 'left', halo: c.background });
@@ -254,11 +255,11 @@ export const lesson = {
     legend.forEach(([color, words], i) => painter.text(lx, ly - i * lineH, `━ ${words}`, { fill: color, font: 13, align: 'left', halo: c.background }));
   },
 
-  handles(model, state) {
+  handles(view, model, state) {
     return state.points.map(([x, y], i) => ({ id: `p${i}`, x, y, label: `P${i}` }));
   },
 
-  moveHandle(state, id, x, y) {
+  moveHandle(view, state, id, x, y) {
     const i = Number(id.slice(1));
     if (!Number.isInteger(i) || i < 0 || i >= state.points.length) return null;
     const points = state.points.map((p) => p.slice());
@@ -266,7 +267,7 @@ export const lesson = {
     return { ...state, points };
   },
 
-  describe(model, state) {
+  describe(view, model, state) {
     if (!model) return '';
     const cols = model.table.columns;
     const parts = FAMILY_IDS.map((f) => `${FAMILY_NAMES[f]}: interpolates ${cols[f].interpolatesAll.answer === 'Yes' ? 'all' : cols[f].interpolatesSome.answer === 'Yes' ? `P${cols[f].interpolatesSome.interpolated.join(', P')}` : 'no'} control points, inherent ${cols[f].inherent.answer}`);
@@ -275,7 +276,7 @@ export const lesson = {
 
   exports: [{
     label: 'Comparison table (Markdown)', filename: 'comparison-table.md', type: 'text/markdown',
-    make(model) {
+    make(view, model) {
       const head = `| | ${FAMILY_IDS.map((f) => FAMILY_NAMES[f]).join(' | ')} |\n|---|${FAMILY_IDS.map(() => '---').join('|')}|`;
       const cellText = (f, row) => {
         const c = model.table.columns[f][row];

@@ -79,15 +79,15 @@ export const lesson = {
   },
   defaultState: () => presetState(DEFAULT_PRESET),
 
-  compute(state, ctx) {
+  compute(view, state, ctx) {
     return { ...computeModel(ctx.api, state), state };
   },
 
-  fitView(model, stage) {
+  fitView(view, model, stage) {
     const xs = [];
     const ys = [];
     for (const s of model.segments) for (let j = 0; j < s.points.length; j += 2) { xs.push(s.points[j]); ys.push(s.points[j + 1]); }
-    for (const hd of lesson.handles(model, model.state)) { xs.push(hd.x); ys.push(hd.y); }
+    for (const hd of lesson.handles(view, model, model.state)) { xs.push(hd.x); ys.push(hd.y); }
     const [minY, maxY] = [Math.min(...ys), Math.max(...ys)];
     // Room at the top for the legend.
     return stage.fit(Math.min(...xs), minY, Math.max(...xs), maxY + 0.3 * (maxY - minY));
@@ -149,7 +149,7 @@ export const lesson = {
     function loadPreset(name) {
       player.pause();
       const next = presetState(name, ctx.state.view);
-      if (ctx.commit(next)) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+      if (ctx.commit(next)) ctx.fitView();
     }
     function switchFamily(family) {
       player.pause();
@@ -175,7 +175,7 @@ export const lesson = {
     function addSegment() {
       const state = ctx.state;
       if (segmentsOf(state) >= MAX_SEGMENTS) return;
-      if (ctx.commit({ ...state, points: appendSegment(state.points, state.family, state.constraint) })) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+      if (ctx.commit({ ...state, points: appendSegment(state.points, state.family, state.constraint) })) ctx.fitView();
     }
     function removeSegment() {
       const state = ctx.state;
@@ -199,9 +199,10 @@ export const lesson = {
       if (!isPiecewise(ctx.state.family)) return;
       switchConstraint(CONSTRAINTS[(CONSTRAINTS.indexOf(ctx.state.constraint) + 1) % CONSTRAINTS.length]);
     } });
+    return {};
   },
 
-  update(model, state, ctx) {
+  update(view, model, state, ctx) {
     const ui = lesson.ui;
     ui.familySelect.value = state.family;
     ui.constraintSelect.value = state.constraint;
@@ -249,7 +250,7 @@ export const lesson = {
     );
   },
 
-  draw(painter, model, state, ctx) {
+  draw(view, painter, model, state, ctx) {
     if (!model) return;
     const c = ctx.colors;
     const segColors = [c.series[0], c.series[2]];
@@ -291,7 +292,7 @@ export const lesson = {
     }
     // handles
     const selected = ctx.ui.selected;
-    for (const hd of lesson.handles(model, state)) {
+    for (const hd of lesson.handles(view, model, state)) {
       const on = hd.id === selected;
       painter.circle(hd.x, hd.y, on ? 8 : 6, { fill: on ? c.highlight : c.background, stroke: c.ink, width: 1.5 });
     }
@@ -311,14 +312,14 @@ export const lesson = {
     legend.forEach(([color, words], i) => painter.text(lx, ly - i * lineH, `■ ${words}`, { fill: color, font: 12, align: 'left', halo: c.background }));
   },
 
-  handles(model, state) {
+  handles(view, model, state) {
     return state.points.map((_, i) => {
       const [x, y] = handlePosition(state, i);
       return { id: `p${i}`, x, y, label: pointName(state, i) };
     });
   },
 
-  moveHandle(state, id, x, y) {
+  moveHandle(view, state, id, x, y) {
     const i = Number(id.slice(1));
     if (!Number.isInteger(i) || i < 0 || i >= state.points.length) return null;
     let to = [x, y];
@@ -334,7 +335,7 @@ export const lesson = {
     return { ...state, points: dragWithConstraint(state.points, state.family, state.constraint, i, to) };
   },
 
-  describe(model, state) {
+  describe(view, model, state) {
     if (!model) return '';
     const joints = model.joints.map((j) => `joint ${j.index}: ${label('C', j.parametric)} and ${label('G', j.geometric)}, speed ${formatNumber(j.left.speed, 3)} before and ${formatNumber(j.right.speed, 3)} after`).join('; ');
     return `${FAMILY_NAMES[state.family]} curve of ${model.segmentCount} segments, dragging keeps ${state.constraint}. ${joints}. Travelling point at u = ${formatNumber(state.u, 3)}, (${formatNumber(model.traveller.point[0], 3)}, ${formatNumber(model.traveller.point[1], 3)}).`;
@@ -342,7 +343,7 @@ export const lesson = {
 
   exports: [{
     label: 'Samples along the curve (CSV)', filename: 'continuity-samples.csv', type: 'text/csv',
-    make(model) {
+    make(view, model) {
       const lines = ['u,x,y,dx,dy,ddx,ddy,speed,curvature'];
       for (const s of model.segments) {
         for (let j = 0; j < s.u.length; j += 1) {

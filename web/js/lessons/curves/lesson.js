@@ -83,7 +83,7 @@ export const lesson = {
     return null;
   },
 
-  compute(state, ctx) {
+  compute(view, state, ctx) {
     const problem = lesson.checkState(state);
     if (problem) {
       const err = new Error(problem);
@@ -93,10 +93,10 @@ export const lesson = {
     return computeCurveModel(ctx.api, state);
   },
 
-  setup(ctx) { setupPanels(ctx, lesson); },
-  update(model, state, ctx) { updatePanels(model, state, ctx); },
+  setup(ctx) { setupPanels(ctx, lesson); return {}; },
+  update(view, model, state, ctx) { updatePanels(model, state, ctx); },
 
-  fitView(model, stage) {
+  fitView(view, model, stage) {
     let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
     const grow = (x, y) => { minX = Math.min(minX, x); maxX = Math.max(maxX, x); minY = Math.min(minY, y); maxY = Math.max(maxY, y); };
     for (let j = 0; j < model.samples.length; j += 2) grow(model.samples[j], model.samples[j + 1]);
@@ -109,7 +109,7 @@ export const lesson = {
 
   usesHoverPoint: false,
 
-  draw(painter, model, state, ctx) {
+  draw(view, painter, model, state, ctx) {
     const c = ctx.colors;
     const zoom = state.view.zoom;
     const K = state.points.length;
@@ -166,7 +166,7 @@ export const lesson = {
     if (painter.g) drawPlots(model, state, ctx, item);
   },
 
-  handles(model, state) {
+  handles(view, model, state) {
     const out = state.points.map(([x, y], i) => ({ id: `p${i}`, x, y, label: `control point P${i}` }));
     if (state.family === 'hermite') {
       state.tangents.forEach(([tx, ty], i) => {
@@ -177,7 +177,7 @@ export const lesson = {
     return out;
   },
 
-  moveHandle(state, id, x, y) {
+  moveHandle(view, state, id, x, y) {
     const i = Number(id.slice(1));
     const rx = round(x);
     const ry = round(y);
@@ -195,7 +195,7 @@ export const lesson = {
     return null;
   },
 
-  describe(model, state) {
+  describe(view, model, state) {
     const info = familyInfo(state.family);
     const pts = state.points.map(([x, y], i) => `P${i} (${formatNumber(x, 3)}, ${formatNumber(y, 3)})`).join(', ');
     return `${info.label}, degree ${model.degree}, ${state.points.length} control points: ${pts}. ` +
@@ -210,7 +210,7 @@ export const lesson = {
       label: 'Sampled points (CSV)',
       filename: 'curve-samples.csv',
       type: 'text/csv',
-      make(model) {
+      make(view, model) {
         const lines = ['u,x,y'];
         for (let j = 0; j < model.params.length; j += 1) lines.push(`${model.params[j]},${model.samples[2 * j]},${model.samples[2 * j + 1]}`);
         return lines.join('\n') + '\n';
@@ -220,7 +220,7 @@ export const lesson = {
       label: 'Blending function values (CSV)',
       filename: 'blending-functions.csv',
       type: 'text/csv',
-      make(model, state) {
+      make(view, model, state) {
         const { count, values, params } = model.plot;
         const names = blendingLabels(state, count).map((n) => n.replace(',', '_'));
         const lines = [['u', ...names].join(',')];

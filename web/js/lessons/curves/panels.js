@@ -46,7 +46,7 @@ export function setupPanels(ctx, lesson) {
   // ---------------------------------------------------------------- under the drawing
   const family = h('select', { id: 'curve-family', onchange: (e) => {
     const next = switchFamily(state(), e.target.value);
-    if (commit(next)) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+    if (commit(next)) ctx.fitView();
     else e.target.value = state().family;
   } }, FAMILIES.map((f) => h('option', { value: f.id }, f.label)));
   const degree = h('select', { id: 'curve-degree', onchange: (e) => commit(withDegree(state(), Number(e.target.value))) });
@@ -85,7 +85,7 @@ export function setupPanels(ctx, lesson) {
     // A point that could not be placed in view (its neighbours are at or past the edge):
     // the view moves to show the whole curve, so nothing is added out of sight.
     const [x, y] = next.points[index];
-    if (!at && !(x >= box.minX && x <= box.maxX && y >= box.minY && y <= box.maxY)) ctx.setView(ctx.lesson.fitView(ctx.model, ctx.stage));
+    if (!at && !(x >= box.minX && x <= box.maxX && y >= box.minY && y <= box.maxY)) ctx.fitView();
     ctx.message.info(`Added P${index}.`);
   }
   // The world box the canvas shows, less `marginPx` on each side.
@@ -115,7 +115,7 @@ export function setupPanels(ctx, lesson) {
   ctx.controls.append(row1, row2, plots);
   const blending = createBlendingPlot(plots, {
     label: 'Blending functions',
-    onSeek(u, { final }) { if (final) ctx.store.endGesture(); else setU(u, 'u-plot'); },
+    onSeek(u, { final }) { if (final) ctx.endGesture(); else setU(u, 'u-plot'); },
   });
   const stripBox = h('div', { class: 'knot-strip-box' });
   plots.append(stripBox);
@@ -123,7 +123,7 @@ export function setupPanels(ctx, lesson) {
     label: 'Knot strip',
     onChange(knots, { final }) {
       if (knots) commit(clearConstruction({ ...state(), knots }), { coalesce: final ? null : 'knot-drag' });
-      if (final) ctx.store.endGesture();
+      if (final) ctx.endGesture();
     },
   });
 
@@ -266,7 +266,7 @@ export function setupPanels(ctx, lesson) {
     const s = state();
     const next = clearConstruction({ ...s, ...circlePreset(ctx.api, 2), tangents: [], u: 0 });
     next.tangents = next.points.map(() => [1, 0]);
-    if (commit(next)) { ctx.setView(lesson.fitView(ctx.model, ctx.stage)); ctx.message.info('Exact circle: a quadratic NURBS with 9 points and weights 1, √2/2.'); }
+    if (commit(next)) { ctx.fitView(); ctx.message.info('Exact circle: a quadratic NURBS with 9 points and weights 1, √2/2.'); }
   } }, 'Exact circle preset');
   const weightList = h('div', { class: 'weight-list' });
   const insetBox = h('div', { class: 'inset-box' });
@@ -302,7 +302,7 @@ export function setupPanels(ctx, lesson) {
     setU(Math.min(d.end, Math.max(d.start, state().u + (sign * (d.end - d.start)) / 50)));
   }
 
-  lesson.click = (x, y, c, event) => {
+  lesson.click = (view, x, y, c, event) => {
     if (!event?.shiftKey) return false;
     addSelected([Math.round(x * 1e4) / 1e4, Math.round(y * 1e4) / 1e4]);
     return true;

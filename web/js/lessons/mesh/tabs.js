@@ -7,6 +7,7 @@ import { h } from '../../app/dom.js';
 import { createVirtualTable } from './virtual-table.js';
 import { EDGE_COLUMNS } from './walk.js';
 import { num } from './labels.js';
+import { createStoredEdgeControl } from './stored-edge.js';
 
 const sub = (letter, i) => (i >= 0 ? h('span', { class: 'lbl' }, letter, h('sub', {}, String(i + 1))) : '');
 const V = (i) => sub('v', i);
@@ -44,7 +45,8 @@ const SHORT_NAMES = {
   'edge-list': 'edge list', 'winged-edge': 'winged edge',
 };
 
-export function createRepresentationTabs(ctx, labels) {
+// pickElement(element): a table row was clicked (the panels highlight it everywhere).
+export function createRepresentationTabs(ctx, labels, { pickElement }) {
   const tabIds = Object.keys(labels);
   const tablist = h('div', { class: 'mesh-tabs', role: 'tablist', 'aria-label': 'Representations' });
   const panels = {};
@@ -83,7 +85,7 @@ export function createRepresentationTabs(ctx, labels) {
   };
   const hoverRow = (kind) => (index) => { ctx.ui.meshHover = { kind, index }; markElements(); ctx.render(); };
   const leave = () => { ctx.ui.meshHover = null; markElements(); ctx.render(); };
-  const pickRow = (kind) => (index) => ctx.meshPanels.pickElement({ kind, index });
+  const pickRow = (kind) => (index) => pickElement({ kind, index });
   const table = (spec) => createVirtualTable({ onRowEnter: hoverRow(spec.kind), onRowLeave: leave, onRowClick: pickRow(spec.kind), ...spec });
 
   // ------------------------------------------------------------ winged edge (lecture 000)
@@ -144,8 +146,9 @@ export function createRepresentationTabs(ctx, labels) {
   // ------------------------------------------------------------ fill the panels
   const changeNote = (id) => h('p', { class: 'change-note', id, 'aria-live': 'polite' });
   const notes = { faces: changeNote('change-independent'), vf: changeNote('change-vertex-face'), winged: changeNote('change-winged') };
+  const storedEdge = createStoredEdgeControl(ctx);
   panels.winged.append(h('p', { class: 'hint' }, 'Baumgart\'s winged edge as on the slide: S, E (start and end vertex), L, R (left and right face) and the four wings: the left and right edge at the Start, and at the End. Boundary edges have one face; their wings treat the boundary as a face.'),
-    notes.winged, tables.wingedVertex.root, tables.wingedEdge.root, tables.wingedFace.root);
+    notes.winged, storedEdge.root, tables.wingedVertex.root, tables.wingedEdge.root, tables.wingedFace.root);
   panels.faces.append(h('p', { class: 'hint' }, 'Each face lists vertex coordinates (lecture 000): changing a vertex requires changing the coordinates of each instance. Drag a vertex and count.'),
     notes.faces, tables.independent.root);
   panels['vertex-face'].append(h('p', { class: 'hint' }, 'Each face lists vertex references: changing a vertex changes a single point.'), notes.vf, tables.vfVertex.root, tables.vfFace.root);
@@ -264,6 +267,7 @@ export function createRepresentationTabs(ctx, labels) {
       }
       const change = describeChange(model.lastChange);
       for (const note of Object.values(notes)) note.textContent = change;
+      if (state.tab === 'winged') storedEdge.update(model);
       if (state.tab === 'storage') updateStorage();
       if (state.tab === 'queries') queryPanel.update(model, state);
       markElements();
