@@ -4,6 +4,7 @@
 // objects. Faces cross as CSR: faceOffsets (F + 1 entries) and faceVertices.
 #include "boundary.h"
 #include "mesh_access.h"
+#include "tables.h"
 
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/indexed_mesh.h"
@@ -178,54 +179,6 @@ val validate_indexed_mesh(val positions, val face_offsets, val face_vertices) {
 }
 
 // ------------------------------------------------------------------ the winged edge
-
-// {positions: Float64Array (3 per vertex), vertexEdge: Int32Array (1 per vertex),
-//  edges: Int32Array (8 per edge: start, end, left, right, startLeft, startRight,
-//  endLeft, endRight), faceEdge: Int32Array (1 per face)}
-// Rows [first, first + rows) of a table with `stride` numbers per row (cut at its end).
-template <class T> val window_rows(const std::vector<T>& table, std::size_t stride, int32_t first, int32_t rows) {
-    const std::size_t total = table.size() / stride;
-    const std::size_t begin = std::min(total, static_cast<std::size_t>(first));
-    const std::size_t end = std::min(total, begin + static_cast<std::size_t>(rows));
-    return to_typed_array(table.data() + stride * begin, stride * (end - begin));
-}
-
-// Rows [first, first + rows) of a CSR table: offsets (n + 1 entries, still absolute) and the
-// items they cover (so row i's items are list[offsets[i] - offsets[0] .. offsets[i+1] - offsets[0])).
-void set_csr(val& out, const char* offsets_name, const std::vector<int32_t>& offsets,
-             std::initializer_list<std::pair<const char*, const std::vector<int32_t>*>> lists, int32_t first, int32_t rows) {
-    const std::size_t total = offsets.size() - 1;
-    const std::size_t begin = std::min(total, static_cast<std::size_t>(first));
-    const std::size_t end = std::min(total, begin + static_cast<std::size_t>(rows));
-    out.set(offsets_name, to_typed_array(offsets.data() + begin, end - begin + 1));
-    for (const auto& [name, list] : lists)
-        out.set(name, to_typed_array(list->data() + offsets[begin], offsets[end] - offsets[begin]));
-}
-
-// The three tables, rows [first, first + rows) of each (a lesson scrolling a big mesh
-// fetches only the rows it shows; the JS API's wingedEdge() asks for all of them).
-val mesh_winged_edge(int32_t handle, int32_t first, int32_t rows) {
-    return guarded([&] {
-        require(first >= 0 && rows >= 0, "invalid-argument", "offset and limit must not be negative");
-        const WingedEdgeMesh& w = entry(handle).winged;
-        const auto window = [&](int32_t total) {
-            const int32_t begin = std::min(total, first);
-            return std::pair<int32_t, int32_t>{begin, begin + std::min(total - begin, rows)};
-        };
-        const auto [v0, v1] = window(w.vertex_count());
-        const auto [e0, e1] = window(w.edge_count());
-        const auto [f0, f1] = window(w.face_count());
-        std::vector<int32_t> vertex_edge, face_edge;
-        for (int32_t v = v0; v < v1; ++v) vertex_edge.push_back(w.vertex_edge(v));
-        for (int32_t f = f0; f < f1; ++f) face_edge.push_back(w.face_edge(f));
-        val r = val::object();
-        r.set("positions", window_rows(w.positions(), 3, first, rows));
-        r.set("vertexEdge", to_typed_array(vertex_edge));
-        r.set("edges", to_typed_array(reinterpret_cast<const int32_t*>(w.edges().data() + e0), 8 * static_cast<std::size_t>(e1 - e0)));
-        r.set("faceEdge", to_typed_array(face_edge));
-        return r;
-    });
-}
 
 void require_vertex(const WingedEdgeMesh& w, int32_t v) {
     require(v >= 0 && v < w.vertex_count(), "invalid-element",
@@ -523,58 +476,14 @@ val mesh_storage(int32_t handle) {
     });
 }
 
-// The first `rows` entries of a table with `stride` numbers per row.
-// Every representation's arrays, each table cut to rows [first, first + rows) (see
-// docs/api-mesh.md; the JS layer turns them into row objects).
-val mesh_representations(int32_t handle, int32_t first, int32_t rows) {
+// Rows [first, first + rows) of every table of one representation, described once in
+// core/src/mesh/tables.cpp and turned into plain values by the generic binding (tables.h).
+val mesh_tables(int32_t handle, const std::string& key, int32_t first, int32_t rows) {
     return guarded([&] {
-        require(first >= 0 && rows >= 0, "invalid-argument", "offset and limit must not be negative");
         MeshEntry& m = entry(handle);
-        const Representations& reps = representations_of(m);
+        const Representation which = representation_named(key);
         val r = val::object();
-
-        val ind = val::object();
-        const std::vector<int32_t>& fo = reps.independent_faces.face_offsets;
-        set_csr(ind, "faceOffsets", fo, {}, first, rows);
-        const std::size_t faces = fo.size() - 1;
-        const std::size_t f0 = std::min(faces, static_cast<std::size_t>(first));
-        const std::size_t f1 = std::min(faces, f0 + static_cast<std::size_t>(rows));
-        ind.set("cornerPositions", window_rows(reps.independent_faces.corner_positions, 3, fo[f0], fo[f1] - fo[f0]));
-        r.set("independentFaces", ind);
-
-        const VertexFaceTables& t = reps.vertex_face_tables;
-        val tables = val::object();
-        tables.set("positions", window_rows(t.positions, 3, first, rows));
-        set_csr(tables, "faceOffsets", t.face_offsets, {{"faceVertices", &t.face_vertices}}, first, rows);
-        r.set("vertexFaceTables", tables);
-
-        const AdjacencyLists& a = reps.adjacency_lists;
-        val adj = val::object();
-        adj.set("positions", window_rows(a.positions, 3, first, rows));
-        set_csr(adj, "vertexOffsets", a.vertex_offsets, {{"vertexVertices", &a.vertex_vertices}, {"vertexEdges", &a.vertex_edges}}, first, rows);
-        set_csr(adj, "vertexFaceOffsets", a.vertex_face_offsets, {{"vertexFaces", &a.vertex_faces}}, first, rows);
-        adj.set("edgeVertices", window_rows(a.edge_vertices, 2, first, rows));
-        set_csr(adj, "edgeEdgeOffsets", a.edge_edge_offsets, {{"edgeEdges", &a.edge_edges}}, first, rows);
-        adj.set("edgeFaces", window_rows(a.edge_faces, 2, first, rows));
-        set_csr(adj, "faceOffsets", a.face_offsets,
-                {{"faceVertices", &a.face_vertices}, {"faceEdges", &a.face_edges}, {"faceFaces", &a.face_faces}}, first, rows);
-        r.set("adjacencyLists", adj);
-
-        const PartialAdjacencyLists& p = reps.partial_adjacency_lists;
-        val part = val::object();
-        part.set("positions", window_rows(p.positions, 3, first, rows));
-        set_csr(part, "vertexOffsets", p.vertex_offsets, {{"vertexEdges", &p.vertex_edges}}, first, rows);
-        part.set("edgeVertices", window_rows(p.edge_vertices, 2, first, rows));
-        part.set("edgeFaces", window_rows(p.edge_faces, 2, first, rows));
-        set_csr(part, "faceOffsets", p.face_offsets, {{"faceEdges", &p.face_edges}}, first, rows);
-        r.set("partialAdjacencyLists", part);
-
-        const EdgeList& l = reps.edge_list;
-        val list = val::object();
-        list.set("positions", window_rows(l.positions, 3, first, rows));
-        list.set("edges", window_rows(l.edges, 4, first, rows));
-        set_csr(list, "polygonOffsets", l.polygon_offsets, {{"polygonEdges", &l.polygon_edges}}, first, rows);
-        r.set("edgeList", list);
+        r.set("tables", tables_value(representation_tables(which, which == Representation::WingedEdge ? nullptr : &representations_of(m), m.winged), first, rows));
         return r;
     });
 }
@@ -693,7 +602,6 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshDispose", &mesh_dispose);
     emscripten::function("meshLiveCount", &mesh_live_count);
     emscripten::function("meshValidateIndexed", &validate_indexed_mesh);
-    emscripten::function("meshWingedEdge", &mesh_winged_edge);
     emscripten::function("meshAdjacency", &mesh_adjacency);
     emscripten::function("meshTraversalSteps", &mesh_traversal_steps);
     emscripten::function("meshFaceEdgeSteps", &mesh_face_edge_steps);
@@ -709,7 +617,7 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshVersion", &mesh_version);
     emscripten::function("meshOperation", &mesh_operation);
     emscripten::function("meshStorage", &mesh_storage);
-    emscripten::function("meshRepresentations", &mesh_representations);
+    emscripten::function("meshTables", &mesh_tables);
     emscripten::function("meshQuery", &mesh_query);
     emscripten::function("meshParse", &mesh_parse);
     emscripten::function("meshLimits", &mesh_limits);

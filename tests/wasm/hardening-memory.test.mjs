@@ -122,6 +122,8 @@ const cases = [
   ['transformPoints', REDUCED, () => api.transformPoints(geometry, 2, [0, -1, 1, 1, 0, 2, 0, 0, 1]), () => api.transformPoints(geometry, 2, [1, 0, 0, 1])],
   ['mesh.storage / representations', REDUCED, () => { lecture.storage(); lecture.representations({ limit: 3 }); },
     () => lecture.query('edges-of-face', V_MISSING)],
+  ['mesh.tables', REDUCED, () => { lecture.tables('edge-list', { offset: 1, limit: 2 }); lecture.tables('winged-edge'); },
+    () => lecture.tables('edge-list', { offset: -1 })],
   ['mesh.boundingBox / vertexNormal', REDUCED, () => { lecture.boundingBox(); lecture.vertexNormal(1); }, () => lecture.vertexNormal(V_MISSING)],
   ['mesh.query', REDUCED, () => lecture.query('faces-around-vertex', 1), () => lecture.query('faces-around-vertex', V_MISSING)],
   ['hooks.timeNormalsInCore', REDUCED, () => hooks.timeNormalsInCore(lecture, 1), () => hooks.timeNormalsInCore(lecture, 0)],

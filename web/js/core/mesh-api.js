@@ -3,12 +3,12 @@
 // handle, and mesh.dispose() frees it at once (a FinalizationRegistry is only a safety net
 // for a forgotten dispose, never the mechanism). See docs/api-mesh.md.
 import { WingsplineError, unwrap, fail, integerIn, isNumberArray } from './errors.js';
+import { readTable, findDescriptor } from './tables.js';
 
 // Mesh files cross into the module as UTF-8 bytes, copied once (see meshParse).
 const utf8 = new TextEncoder();
 
 const INT32_MAX = 2147483647;
-const EDGE_FIELDS = ['start', 'end', 'left', 'right', 'startLeft', 'startRight', 'endLeft', 'endRight'];
 
 function checkPositions(positions) {
   if (!isNumberArray(positions)) fail('invalid-argument', 'positions must be an array or Float64Array of numbers (x, y, z per vertex)');
@@ -82,6 +82,14 @@ function indexedOutput(r, layout) {
   return out;
 }
 
+function deepFreeze(x) {
+  if (x !== null && typeof x === 'object') {
+    for (const v of Object.values(x)) deepFreeze(v);
+    Object.freeze(x);
+  }
+  return x;
+}
+
 function pairs(flat) {
   const out = [];
   for (let i = 0; i + 1 < flat.length; i += 2) out.push([flat[i], flat[i + 1]]);
@@ -99,25 +107,6 @@ export const REPRESENTATIONS = Object.freeze([
 export const QUERY_KINDS = Object.freeze([
   'faces-around-vertex', 'edges-around-vertex', 'edges-of-face', 'faces-of-edge', 'neighbours-of-face',
 ]);
-
-// CSR rows [offsets[i], offsets[i+1]) of each list as plain arrays, one object per row.
-// CSR rows from a window of a table: offsets are absolute, the lists start at offsets[0].
-function csrRows(offsets, lists) {
-  const rows = [];
-  const base = offsets[0] ?? 0;
-  for (let i = 0; i + 1 < offsets.length; i += 1) {
-    const row = {};
-    for (const [name, list] of Object.entries(lists)) row[name] = Array.from(list.subarray(offsets[i] - base, offsets[i + 1] - base));
-    rows.push(row);
-  }
-  return rows;
-}
-
-function xyzRows(positions) {
-  const rows = [];
-  for (let i = 0; 3 * i + 2 < positions.length; i += 1) rows.push([positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]]);
-  return rows;
-}
 
 function storageValue(s) {
   return {
@@ -154,10 +143,13 @@ export class Mesh {
   #version = Object.freeze({ topology: 0, geometry: 0 });
   #faces = { topology: -1, count: 0 }; // F, for the topology it was read at
 
-  constructor(raw, handle) {
+  #descriptors; // every table's descriptor (the core's, read once per API)
+
+  constructor(raw, handle, descriptors = []) {
     this.#raw = raw;
     this.#handle = handle;
     this.#id = handle;
+    this.#descriptors = descriptors;
     safetyNet?.register(this, { raw, handle }, this);
   }
 
@@ -201,31 +193,30 @@ export class Mesh {
     return unwrap(this.#raw.meshAdjacency(this.#live(), kind, element)).indices;
   }
 
-  // The lecture's three tables: {vertices: [{edge, x, y, z}], edges: [{start, end, left,
-  // right, startLeft, startRight, endLeft, endRight}], faces: [{edge}]}.
-  wingedEdge() { return this.#wingedEdgeRows(INT32_MAX); }
-
-  // The first `limit` rows of each winged-edge table.
-  // Rows offset .. offset + limit - 1 of the three tables (the core copies only those).
-  #wingedEdgeRows(limit, offset = 0) {
-    const r = unwrap(this.#raw.meshWingedEdge(this.#live(), offset, limit));
-    const vertices = Array.from(r.vertexEdge, (edge, i) => ({
-      edge, x: r.positions[3 * i], y: r.positions[3 * i + 1], z: r.positions[3 * i + 2],
-    }));
-    const edges = [];
-    for (let e = 0; 8 * e < r.edges.length; e += 1) {
-      const row = {};
-      EDGE_FIELDS.forEach((name, k) => { row[name] = r.edges[8 * e + k]; });
-      edges.push(row);
-    }
-    const faces = Array.from(r.faceEdge, (edge) => ({ edge }));
-    return { vertices, edges, faces };
+  // The lecture's three tables as rows: {vertices: [{x, y, z, edge}], edges: [{start, end,
+  // left, right, startLeft, startRight, endLeft, endRight}], faces: [{edge}]}.
+  wingedEdge() {
+    return Object.fromEntries(Object.entries(this.tables('winged-edge')).map(([name, t]) => [name, t.rows()]));
   }
 
-  // The same tables as flat typed arrays: edges[8*e + k] in EDGE_FIELDS order.
+  // The same tables as flat typed arrays (their descriptors' array names): positions (3
+  // per vertex), vertexEdge, edges (8 per edge, in edgeFields order), faceEdge.
   wingedEdgeArrays() {
-    const r = unwrap(this.#raw.meshWingedEdge(this.#live(), 0, INT32_MAX));
-    return { positions: r.positions, vertexEdge: r.vertexEdge, edges: r.edges, faceEdge: r.faceEdge, edgeFields: [...EDGE_FIELDS] };
+    const tables = this.tables('winged-edge');
+    return { ...tables.vertices.arrays, ...tables.edges.arrays, ...tables.faces.arrays, edgeFields: tables.edges.columns.map((c) => c.name) };
+  }
+
+  // The tables of one representation, each read by the generic reader (tables.js):
+  // {[tableName]: Table}; rows offset .. offset + limit - 1 of each (default: all rows).
+  tables(representation, options = {}) {
+    if (!REPRESENTATIONS.includes(representation)) {
+      fail('unknown-representation', `unknown representation '${String(representation).slice(0, 40)}'; use ${REPRESENTATIONS.join(', ')}`);
+    }
+    const { limit = INT32_MAX, offset = 0 } = options ?? {};
+    integerIn(limit, 'limit', 0, INT32_MAX);
+    integerIn(offset, 'offset', 0, INT32_MAX);
+    const r = unwrap(this.#raw.meshTables(this.#live(), representation, offset, limit));
+    return Object.fromEntries(r.tables.map((data) => [data.name, readTable(findDescriptor(this.#descriptors, representation, data.name), data)]));
   }
 
   edgesAroundVertex(v) { return this.#adjacency('edges-around-vertex', v, 'vertex'); }
@@ -373,81 +364,18 @@ export class Mesh {
     return Object.fromEntries(REPRESENTATIONS.map((key) => [key, storageValue(r.storage[key])]));
   }
 
-  // Plain-value tables of all six representations (shapes in docs/api-mesh.md): rows
-  // offset .. offset + limit - 1 of every table; `totals` always gives the full row counts.
+  // Plain-value tables of all six representations: {[key]: {offset, [tableName]: rows
+  // (one object per row, keyed by column name), totals: {[tableName]: full row count},
+  // storage}}; rows offset .. offset + limit - 1 of every table (docs/api-mesh.md).
   representations(options = {}) {
-    const { limit = INT32_MAX, offset = 0 } = options ?? {};
-    integerIn(limit, 'limit', 0, INT32_MAX);
-    integerIn(offset, 'offset', 0, INT32_MAX);
-    const r = unwrap(this.#raw.meshRepresentations(this.#live(), offset, limit));
+    const { offset = 0 } = options ?? {};
     const storage = this.storage();
-    const c = this.counts();
-    const vertexTotals = { vertices: c.vertices, edges: c.edges, faces: c.faces };
-    const ind = r.independentFaces;
-    const independentFaces = [];
-    const cornerBase = ind.faceOffsets[0] ?? 0;
-    for (let f = 0; f + 1 < ind.faceOffsets.length; f += 1) {
-      independentFaces.push(xyzRows(ind.cornerPositions.subarray(3 * (ind.faceOffsets[f] - cornerBase), 3 * (ind.faceOffsets[f + 1] - cornerBase))));
-    }
-    const t = r.vertexFaceTables;
-    const a = r.adjacencyLists;
-    const adjacencyVertices = csrRows(a.vertexOffsets, { vertices: a.vertexVertices, edges: a.vertexEdges });
-    const adjacencyVertexFaces = csrRows(a.vertexFaceOffsets, { faces: a.vertexFaces });
-    const adjacencyEdgeEdges = csrRows(a.edgeEdgeOffsets, { edges: a.edgeEdges });
-    const p = r.partialAdjacencyLists;
-    const partialVertices = csrRows(p.vertexOffsets, { edges: p.vertexEdges });
-    const l = r.edgeList;
-    const we = this.#wingedEdgeRows(limit, offset);
-    return {
-      'independent-faces': { offset, faces: independentFaces, totals: { faces: c.faces }, storage: storage['independent-faces'] },
-      'vertex-face-tables': {
-        offset,
-        vertices: xyzRows(t.positions),
-        faces: csrRows(t.faceOffsets, { vertices: t.faceVertices }).map((row) => row.vertices),
-        totals: { vertices: c.vertices, faces: c.faces },
-        storage: storage['vertex-face-tables'],
-      },
-      'adjacency-lists': {
-        offset,
-        vertices: xyzRows(a.positions).map((position, v) => ({
-          position, vertices: adjacencyVertices[v].vertices, edges: adjacencyVertices[v].edges, faces: adjacencyVertexFaces[v].faces,
-        })),
-        edges: adjacencyEdgeEdges.map((row, e) => ({
-          vertices: [a.edgeVertices[2 * e], a.edgeVertices[2 * e + 1]], edges: row.edges, faces: [a.edgeFaces[2 * e], a.edgeFaces[2 * e + 1]],
-        })),
-        faces: csrRows(a.faceOffsets, { vertices: a.faceVertices, edges: a.faceEdges, faces: a.faceFaces }),
-        totals: vertexTotals,
-        storage: storage['adjacency-lists'],
-      },
-      'partial-adjacency-lists': {
-        offset,
-        vertices: xyzRows(p.positions).map((position, v) => ({ position, edges: partialVertices[v].edges })),
-        edges: Array.from({ length: p.edgeVertices.length / 2 }, (_, e) => ({
-          vertices: [p.edgeVertices[2 * e], p.edgeVertices[2 * e + 1]], faces: [p.edgeFaces[2 * e], p.edgeFaces[2 * e + 1]],
-        })),
-        faces: csrRows(p.faceOffsets, { edges: p.faceEdges }),
-        totals: vertexTotals,
-        storage: storage['partial-adjacency-lists'],
-      },
-      'edge-list': {
-        offset,
-        vertices: xyzRows(l.positions),
-        edges: Array.from({ length: l.edges.length / 4 }, (_, e) => ({
-          v1: l.edges[4 * e], v2: l.edges[4 * e + 1], p1: l.edges[4 * e + 2], p2: l.edges[4 * e + 3],
-        })),
-        polygons: csrRows(l.polygonOffsets, { edges: l.polygonEdges }).map((row) => row.edges),
-        totals: { vertices: c.vertices, edges: c.edges, polygons: c.faces },
-        storage: storage['edge-list'],
-      },
-      'winged-edge': {
-        offset,
-        vertices: we.vertices,
-        edges: we.edges,
-        faces: we.faces,
-        totals: vertexTotals,
-        storage: storage['winged-edge'],
-      },
-    };
+    return Object.fromEntries(REPRESENTATIONS.map((key) => {
+      const tables = Object.values(this.tables(key, options));
+      const rows = Object.fromEntries(tables.map((t) => [t.name, t.rows()]));
+      const totals = Object.fromEntries(tables.map((t) => [t.name, t.total]));
+      return [key, { offset, ...rows, totals, storage: storage[key] }];
+    }));
   }
 
   // One adjacency query answered by every representation: {[representation]: {answer:
@@ -487,6 +415,8 @@ export const benchAccess = Object.freeze({
 export function createMeshApi(raw) {
   const { maxCoordinate, maxFaceCorners, maxVertices, maxFaces } = unwrap(raw.meshLimits());
   const meshLimits = Object.freeze({ maxCoordinate, maxFaceCorners, maxVertices, maxFaces });
+  // Every table's descriptor (core/src/mesh/tables.cpp), read once: see tables.js.
+  const tableDescriptors = deepFreeze(unwrap(raw.meshTableDescriptors()).tables);
   function named(name, a = 0, b = 0) {
     return unwrap(raw.meshNamed(name, a, b));
   }
@@ -512,7 +442,7 @@ export function createMeshApi(raw) {
       // The core keeps each face's first corner as given (chosen face edges may start its
       // walk elsewhere), so the other representations are derived from the core alone.
       const r = unwrap(raw.meshBuild(positions, faceOffsets, faceVertices, edges, vertexEdges, faceEdges));
-      return new Mesh(raw, r.handle);
+      return new Mesh(raw, r.handle, tableDescriptors);
     },
     // Every problem of an indexed face set, without building: {ok, problems}.
     validateMesh(input) {
@@ -523,6 +453,9 @@ export function createMeshApi(raw) {
     // The one set of mesh limits (the core's limits.h), for the page and the state format:
     // {maxCoordinate, maxFaceCorners, maxVertices, maxFaces}.
     meshLimits,
+    // The descriptors of every representation's tables (frozen): {representation, name,
+    // title, rows: 'vertex'|'edge'|'face', arrays, columns}; read a table with tables.js.
+    tableDescriptors,
     // Text -> {positions, faces}. Errors: 'parse-error', 'truncated-file',
     // 'index-out-of-range', 'coordinate-out-of-range', 'face-too-large', 'too-large' (more
     // vertices or faces than meshLimits; checkCounts: false lifts that) with error.line

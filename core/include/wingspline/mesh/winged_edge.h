@@ -180,6 +180,8 @@ public:
     }
     const std::vector<double>& positions() const { return positions_; }
     const std::vector<EdgeRecord>& edges() const { return edges_; }
+    const std::vector<int32_t>& vertex_edges() const { return vertex_edge_; } // the vertex table's edge column
+    const std::vector<int32_t>& face_edges() const { return face_edge_; }     // the face table
     // Throws Error("non-finite-coordinate" / "coordinate-out-of-range") beyond kMaxCoordinate
     // (limits.h) and then changes nothing. Moves the geometry version on when p differs.
     void set_position(int32_t v, const glm::dvec3& p);
