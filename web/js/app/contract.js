@@ -14,8 +14,12 @@
 
 /**
  * The lesson's state: one plain, JSON-safe object, validated field by field by `schema`.
- * Every lesson keeps the 2D view of the stage in `state.view`.
- * @typedef {{ view: CameraView, [field: string]: any }} State
+ * Every lesson keeps the 2D view of the stage in `state.view`. No state field is named like
+ * a member of Ctx (typed `never` here), so a hook written with its parameters shifted (the
+ * state where ctx belongs) fails the type check where it uses ctx.
+ * @typedef {{ view: CameraView, api?: never, ui?: never, colors?: never, commit?: never,
+ *   message?: never, stage?: never, keymap?: never, panels?: never, controls?: never,
+ *   [field: string]: any }} State
  */
 
 /**

@@ -1,3 +1,4 @@
+// @ts-check
 // Comparison lab (lectures 001, 002, 003): one control polygon under Hermite, Bezier,
 // uniform B-spline and Catmull-Rom at once; the lectures' comparison table checked live by
 // the core; basis conversion both ways; affine and perspective invariance measured.
@@ -51,6 +52,7 @@ const fmtDistance = (x) => (x === 0 ? '0' : x < 1e-3 ? x.toExponential(1) : form
 // A bracket that keeps its text size next to tall matrices.
 const fixed = (text) => { const o = mo(text); o.setAttribute('stretchy', 'false'); return o; };
 
+/** @type {import('../../app/contract.js').Lesson} */
 export const lesson = {
   id: 'comparison',
   title: 'Comparison lab',

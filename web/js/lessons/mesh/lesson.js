@@ -1,3 +1,4 @@
+// @ts-check
 // The mesh lesson (issue 4; lectures 000, 001, 003): one mesh, every representation of it
 // live, the winged-edge walks around a vertex and along a face animated as the slide tells
 // them, the representations' query costs and storage, and plane equations and normals.
@@ -231,6 +232,7 @@ function importer(format) {
   };
 }
 
+/** @type {import('../../app/contract.js').Lesson} */
 export const meshLesson = {
   id: 'mesh',
   title: 'Mesh representations',
