@@ -60,6 +60,7 @@ async function asanLayer() {
 export const layers = [
   { name: 'native', run: () => catchTests(path.join(repoRoot, 'build', 'native', 'wingspline_tests')) },
   { name: 'wasm', run: () => nodeTests('tests/wasm') },
+  { name: 'lessons', run: () => nodeTests('tests/lessons') },
   { name: 'browser', run: () => nodeTests('tests/browser') },
   { name: 'asan', run: asanLayer },
   { name: 'fuzz', run: () => fuzzLayer() },
