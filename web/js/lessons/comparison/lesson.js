@@ -8,7 +8,7 @@ import { formatSize as fmtDistance } from '../../ui/format.js';
 import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH, pointTangents } from './families.js';
 import { computeTable, LECTURE_TABLE, ROW_NAMES } from './checks.js';
 import { computeConversion, computeInvariance } from './transforms.js';
-import { drawCurve, drawPolygon } from '../../ui/curve-overlays.js';
+import { drawCurve, drawPolygon, drawLegend } from '../../ui/curve-overlays.js';
 import { createBlendingPlot } from '../../ui/blending-plot.js';
 import { createMatrixPanel } from '../../ui/matrix-panel.js';
 
@@ -251,10 +251,7 @@ export const lesson = {
       painter.circle(hd.x, hd.y, on ? 8 : 6, { fill: on ? c.highlight : c.background, stroke: c.ink, width: 1.5 });
       painter.text(hd.x, hd.y, hd.label, { fill: c.ink, font: 12, dx: 12, dy: -12, align: 'left', halo: c.background });
     }
-    const tr = painter.t;
-    const [lx, ly] = tr.toWorld(12, 16);
-    const lineH = (20 * (painter.scale ?? 1)) / tr.zoom;
-    legend.forEach(([color, words], i) => painter.text(lx, ly - i * lineH, `━ ${words}`, { fill: color, font: 13, align: 'left', halo: c.background }));
+    drawLegend(painter, legend, { marker: '━', font: 13, halo: c.background });
   },
 
   handles(view, model, state) { return handlesOf(state); },

@@ -8,7 +8,7 @@ import { h, panel, table, setChildren } from '../../app/dom.js';
 import { formatNumber } from '../../ui/mathml.js';
 import { formatVector as fmtVec } from '../../ui/format.js';
 import { drawSeriesPlot } from '../../ui/series-plot.js';
-import { drawCurve, drawPolygon, drawSamples, drawVector } from '../../ui/curve-overlays.js';
+import { drawCurve, drawPolygon, drawSamples, drawVector, drawLegend } from '../../ui/curve-overlays.js';
 import { PRESETS, DEFAULT_PRESET } from './presets.js';
 import { CONSTRAINTS, dragWithConstraint, enforceAll, appendSegment } from './constraints.js';
 import { computeModel, segmentCurves, SAMPLES_PER_SEGMENT } from './model.js';
@@ -310,14 +310,11 @@ export const lesson = {
     drawVector(painter, t.point, t.velocity, FIRST_SCALE, { stroke: c.series[4], width: 3, halo: c.background }, 'velocity P\'/3');
     painter.circle(t.point[0], t.point[1], 7, { fill: c.series[4], stroke: c.ink, width: 1.5 });
     // legend (screen corner, in world coordinates of the current view)
-    const tr = painter.t;
-    const [lx, ly] = tr.toWorld(12, 16);
-    const lineH = 20 / tr.zoom * (painter.scale ?? 1);
     const legend = [
       [c.series[1], 'P\'/3 from the left (solid)'], [c.series[5], 'P\'/3 from the right (dashed)'],
       [c.series[3], 'P\'\'/6 left'], [c.series[6], 'P\'\'/6 right (dashed)'], [c.series[4], 'travelling point, velocity P\'/3'],
     ];
-    legend.forEach(([color, words], i) => painter.text(lx, ly - i * lineH, `■ ${words}`, { fill: color, font: 12, align: 'left', halo: c.background }));
+    drawLegend(painter, legend, { marker: '■', font: 12, halo: c.background });
   },
 
   // The plots of |P'|, P'' and the curvature follow every frame (the cursor at u).
