@@ -1,3 +1,4 @@
+// @ts-check
 // Comparison lab (lectures 001, 002, 003): one control polygon under Hermite, Bezier,
 // uniform B-spline and Catmull-Rom at once; the lectures' comparison table checked live by
 // the core; basis conversion both ways; affine and perspective invariance measured.
@@ -52,6 +53,7 @@ const fixed = (text) => { const o = mo(text); o.setAttribute('stretchy', 'false'
 
 const handlesOf = (state) => state.points.map(([x, y], i) => ({ id: `p${i}`, x, y, label: `P${i}` }));
 
+/** @type {import('../../app/contract.js').Lesson} */
 export const lesson = {
   id: 'comparison',
   title: 'Comparison lab',

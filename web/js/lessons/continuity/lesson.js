@@ -1,3 +1,4 @@
+// @ts-check
 // Continuity lab (lectures 000, 001, 002, 004): a piecewise curve, its joints classified by
 // the core as C^k and G^k with the evidence (derivatives from both sides, their ratio, the
 // curvatures), constraint modes while dragging, plots of |P'(u)|, P''(u) and the curvature
@@ -65,6 +66,7 @@ function handlesOf(state) {
   });
 }
 
+/** @type {import('../../app/contract.js').Lesson} */
 export const lesson = {
   id: 'continuity',
   title: 'Continuity lab',

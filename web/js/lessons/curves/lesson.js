@@ -1,3 +1,4 @@
+// @ts-check
 // The curve explorer (issue 6; lectures 000-004): one page for every curve family of the
 // course. State: the family, points, tangents, knots, weights, degree, tension, u, the
 // construction and its step, the overlays, the matrix form, the view. All mathematics in
@@ -19,6 +20,7 @@ export const MAX_LIST = 64;
 
 const overlaySchema = object(Object.fromEntries(Object.keys(OVERLAYS).map((k) => [k, boolean()])));
 
+/** @type {import('../../app/contract.js').Lesson} */
 export const lesson = {
   id: 'curves',
   title: 'Curve explorer',

@@ -62,9 +62,9 @@ function meshText(model, ctx, format) {
 }
 
 export const meshExports = [
-  { label: 'Winged-edge tables (CSV)', filename: 'mesh-winged-edge.csv', type: 'text/csv', make: (model) => wingedCsv(model) },
-  { label: 'Winged-edge tables (Markdown)', filename: 'mesh-winged-edge.md', type: 'text/markdown', make: (model) => wingedMarkdown(model) },
-  { label: 'Winged-edge tables (LaTeX)', filename: 'mesh-winged-edge.tex', type: 'application/x-tex', make: (model) => wingedLatex(model) },
-  { label: 'Mesh (OFF)', filename: 'mesh.off', type: 'text/plain', make: (model, state, ctx) => meshText(model, ctx, 'off') },
-  { label: 'Mesh (OBJ)', filename: 'mesh.obj', type: 'text/plain', make: (model, state, ctx) => meshText(model, ctx, 'obj') },
+  { label: 'Winged-edge tables (CSV)', filename: 'mesh-winged-edge.csv', type: 'text/csv', make: (view, model) => wingedCsv(model) },
+  { label: 'Winged-edge tables (Markdown)', filename: 'mesh-winged-edge.md', type: 'text/markdown', make: (view, model) => wingedMarkdown(model) },
+  { label: 'Winged-edge tables (LaTeX)', filename: 'mesh-winged-edge.tex', type: 'application/x-tex', make: (view, model) => wingedLatex(model) },
+  { label: 'Mesh (OFF)', filename: 'mesh.off', type: 'text/plain', make: (view, model, state, ctx) => meshText(model, ctx, 'off') },
+  { label: 'Mesh (OBJ)', filename: 'mesh.obj', type: 'text/plain', make: (view, model, state, ctx) => meshText(model, ctx, 'obj') },
 ];

@@ -1,3 +1,4 @@
+// @ts-check
 // The mesh lesson (issue 4; lectures 000, 001, 003): one mesh, every representation of it
 // live, the winged-edge walks around a vertex and along a face animated as the slide tells
 // them, the representations' query costs and storage, and plane equations and normals.
@@ -6,7 +7,7 @@ import { number, integer, boolean, oneOf, text, list, object, nullable } from '.
 import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
 import { createMeshSource, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
 import { normaliseSteps, walkFrames } from './walk.js';
-import { drawMesh, viewRotation, projectAll, unprojectDelta, pickElement, facesAway, LABEL_LIMIT } from './draw.js';
+import { drawMesh, viewRotation, projectAll, unprojectDelta, facesAway, LABEL_LIMIT } from './draw.js';
 import { setupPanels } from './panels.js';
 import { meshExports } from './exports.js';
 import { vLabel, fLabel, eLabel } from './labels.js';
@@ -98,7 +99,7 @@ function stepsOf(entry, kind, element) {
   return derived.steps.get(key);
 }
 
-function compute(state, ctx) {
+function compute(view, state, ctx) {
   const { entry, changes } = source.sync(state, ctx.api);
   const we = wingedTables(entry);
   if (changes.length) derived.lastChange = changes[changes.length - 1];
@@ -153,7 +154,7 @@ function faceNormal(mesh, f) {
   return [n[3 * f], n[3 * f + 1], n[3 * f + 2]];
 }
 
-function fitView(model, stage) {
+function fitView(view, model, stage) {
   if (!model) return defaultState().view;
   const P = model.projected;
   let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
@@ -164,7 +165,7 @@ function fitView(model, stage) {
   return stage.fit(minX, minY, maxX, maxY, 0.18); // margin: room for the labels beside the vertices
 }
 
-function handles(model) {
+function handles(view, model) {
   if (!model || model.V > 20000) return [];
   const out = [];
   for (let v = 0; v < model.V; v += 1) out.push({ id: `v${v}`, x: model.projected[3 * v], y: model.projected[3 * v + 1], label: vLabel(v) });
@@ -172,7 +173,7 @@ function handles(model) {
 }
 
 // A vertex dragged in the view plane moves by R^T (dx, dy, 0) in the world (in 2D: x, y).
-function moveHandle(state, id, x, y, model) {
+function moveHandle(view, state, id, x, y, model) {
   const v = Number(id.slice(1));
   if (!model || !Number.isInteger(v) || v >= model.V) return null;
   const [dx, dy, dz] = unprojectDelta(model.rotation, x - model.projected[3 * v], y - model.projected[3 * v + 1]);
@@ -181,7 +182,7 @@ function moveHandle(state, id, x, y, model) {
   return { ...state, moved };
 }
 
-function describe(model, state) {
+function describe(view, model, state) {
   if (!model) return 'No mesh.';
   const kind = MESH_KINDS.find((k) => k.id === state.meshKind)?.label ?? state.meshKind;
   const labels = model.V <= LABEL_LIMIT ? 'Vertices, directed edges (arrows from S to E) and faces are labelled as on the slides.' : 'Too many elements for labels.';
@@ -194,14 +195,14 @@ function describe(model, state) {
 // face, coordinates); the page keeps its mesh when parsing or building fails, because
 // the shell only replaces the state after compute.
 function importer(format) {
-  return (textContent, state, name, ctx) => {
+  return (view, textContent, state, name, ctx) => {
     const parsed = ctx.api.parseMesh(textContent, { format });
     const positions = Array.from(parsed.positions);
     const faces = (parsed.faces ?? []).map((f) => Array.from(f));
     // Every problem, not only the first: the panel lists them with the elements involved.
     const report = ctx.api.validateMesh({ positions, faces });
     const errors = report.problems.filter((p) => p.severity === 'error');
-    ctx.meshPanels?.showReport(name, report.problems);
+    view.showReport(name, report.problems);
     if (errors.length) {
       throw Object.assign(new Error(`${errors[0].message}${errors.length > 1 ? ` (and ${errors.length - 1} more problem${errors.length > 2 ? 's' : ''}, listed in the validation report)` : ''}`), { code: errors[0].code });
     }
@@ -209,6 +210,7 @@ function importer(format) {
   };
 }
 
+/** @type {import('../../app/contract.js').Lesson} */
 export const meshLesson = {
   id: 'mesh',
   title: 'Mesh representations',
@@ -219,25 +221,24 @@ export const meshLesson = {
   contentFields: IMPORTED_CONTENT,
   compute,
   setup: (ctx) => setupPanels(ctx),
-  update: (model, state, ctx) => ctx.meshPanels?.update(model, state),
-  draw: (painter, model, state, ctx) => {
+  update: (view, model, state) => view.update(model, state),
+  draw: (view, painter, model, state, ctx) => {
     drawMesh(painter, model, state, ctx);
-    ctx.meshPanels?.afterDraw(model, state);
+    view.afterDraw(model, state);
   },
   handles,
   moveHandle,
   describe,
   fitView,
-  onSelect(id, ctx) {
+  onSelect(view, id, ctx) {
     if (id === null) return;
     const v = Number(String(id).slice(1));
     const state = ctx.state;
     if (state.walk === 'vertex' && state.vertex !== v) ctx.commit({ ...state, vertex: v, step: 0 }, { history: false });
   },
-  click(x, y, ctx, event) {
-    return ctx.meshPanels?.canvasClick(x, y, event) ?? false;
+  click(view, x, y, ctx, event) {
+    return view.canvasClick(x, y, event);
   },
-  pick: (model, x, y, zoom) => pickElement(model, x, y, zoom),
   exports: meshExports,
   importers: { off: importer('off'), obj: importer('obj') },
   labels: { vLabel, eLabel, fLabel },
