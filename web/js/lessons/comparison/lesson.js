@@ -137,7 +137,7 @@ export const lesson = {
     const blendBody = panel(ctx.panels, { id: 'blending-panel', title: 'Blending weights (the convex hull row)' });
     const blendPlots = BLEND_FAMILIES.map((f) => createBlendingPlot(blendBody, { label: FAMILY_NAMES[f], height: 130 }));
 
-    const select = (id, options, value, onchange, names = FAMILY_NAMES) => {
+    const select = (id, options, value, onchange, names = /** @type {Record<string, string>} */ (FAMILY_NAMES)) => {
       const s = h('select', { id, onchange: () => onchange(s.value) }, options.map((o) => h('option', { value: o }, names[o] ?? o)));
       s.value = value;
       return s;

@@ -77,11 +77,7 @@ export const lesson = {
 
   compute(view, state, ctx) {
     const problem = lesson.checkState(state);
-    if (problem) {
-      const err = new Error(problem);
-      err.code = 'inconsistent-state';
-      throw err;
-    }
+    if (problem) throw Object.assign(new Error(problem), { code: 'inconsistent-state' });
     return computeCurveModel(ctx.api, state, view.cache);
   },
 
