@@ -81,6 +81,8 @@ export async function runLesson(lesson) {
   let view = {};
   let model = null;
   let modelState = null; // the state `model` was computed from
+  /** @type {{ update(): void } | null} */
+  let inspector = null; // built after the lesson's own controls
   let autoFit = false; // the default view follows the canvas size until the person pans or zooms
   let frame = 0;
   let colors = drawingColors();
@@ -363,9 +365,9 @@ export async function runLesson(lesson) {
     restored.previous = null;
     restored.problem = null;
   }
-  const inspector = lesson.inspector === false || !els.controls || !lesson.moveHandle
-    ? null
-    : createInspector({ controls: els.controls, selectedHandle, moveTo, message });
+  if (lesson.inspector !== false && els.controls && lesson.moveHandle) {
+    inspector = createInspector({ controls: els.controls, selectedHandle, moveTo, message });
+  }
   if (restored.previous) offerPrevious(restored.previous, restored.problem);
   else if (restored.problem) message.warn(restored.problem);
   autoFit = restored.source === 'default';
