@@ -99,6 +99,7 @@ export const layers = [
   { name: 'types', run: typesLayer },
   { name: 'native', run: () => catchTests(path.join(repoRoot, 'build', 'native', 'wingspline_tests')) },
   { name: 'wasm', run: () => nodeTests('tests/wasm') },
+  { name: 'lessons', run: () => nodeTests('tests/lessons') },
   { name: 'browser', run: () => nodeTests('tests/browser') },
   { name: 'asan', run: asanLayer },
   { name: 'fuzz', run: () => fuzzLayer() },

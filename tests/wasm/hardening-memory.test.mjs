@@ -49,6 +49,8 @@ const zeroWeight = { ...nurbs, weights: [1, 1, 0] };
 const params = Float64Array.from({ length: 16 }, (_, j) => j / 15);
 const outside = [0.5, 1.5];
 const geometry = [0, 0, 1, 2, 3, 2, 4, 0];
+// Two cubic segments of 4 entries each (Bezier P0..P3, or Hermite p0, p1, t0, t1).
+const chain = [0, 0, 1, 2, 2, 2, 3, 0, 3, 0, 4, -2, 5, 1, 6, 0];
 const bspline = { kind: 'bspline', dim: 2, degree: 3, points: [0, 0, 1, 2, 3, 2, 4, 0, 5, 1], knots: [0, 0, 0, 0, 1, 2, 2, 2, 2] };
 const following = { kind: 'bezier', dim: 2, points: [4, 0, 5, -2, 7, -2, 8, 0] }; // starts where bezier ends
 // A bicubic Bezier patch: p_ij = (i, j, (i - 1.5)(j - 1.5) / 2), points[3*(4*i + j) + k].
@@ -103,6 +105,14 @@ const cases = [
   ['insertKnot', REDUCED, () => api.insertKnot(bspline, 1.5), () => api.insertKnot(decreasing, 0.5)],
   ['bsplineToBezier', REDUCED, () => api.bsplineToBezier(bspline), () => api.bsplineToBezier(decreasing)],
   ['knotMultiplicities', REDUCED, () => api.knotMultiplicities(bspline), () => api.knotMultiplicities(decreasing)],
+  ['segmentAt', REDUCED, () => api.segmentAt(bspline, 1.5), () => api.segmentAt(decreasing, 0.5)],
+  ['clampedKnots', REDUCED, () => api.clampedKnots(7, 3), () => api.clampedKnots(3, 3)],
+  ['uniformKnots', REDUCED, () => api.uniformKnots(7, 3), () => api.uniformKnots(3, 3)],
+  ['unclampedKnots', REDUCED, () => api.unclampedKnots(bspline.knots, 3), () => api.unclampedKnots(decreasing.knots, 3)],
+  ['isClampedKnots', REDUCED, () => api.isClampedKnots(bspline.knots, 3), () => api.isClampedKnots([0, 1], 3)],
+  ['dragWithConstraint', REDUCED, () => api.dragWithConstraint(chain, 2, 'bezier', 'C2', 2, [2.5, 1.5]), () => api.dragWithConstraint(chain, 2, 'bezier', 'C2', 99, [0, 0])],
+  ['enforceConstraint', REDUCED, () => api.enforceConstraint(chain, 2, 'hermite', 'C2'), () => api.enforceConstraint(chain.slice(2), 2, 'hermite', 'C2')],
+  ['appendSegment', REDUCED, () => api.appendSegment(chain, 2, 'bezier', 'G1'), () => api.appendSegment(chain, 2, 'bezier', 'G2')],
   ['nurbsCircle / nurbsEllipse', REDUCED, () => { api.nurbsCircle({ center: [0, 0], radius: 1 }); api.nurbsEllipse({ center: [0, 0], rx: 2, ry: 1 }); },
     () => api.nurbsCircle({ center: [0, 0], radius: -1 })],
   ['nurbsArc', REDUCED, () => api.nurbsArc({ center: [0, 0], radius: 1, startAngle: 0, endAngle: 2 }),
