@@ -264,5 +264,4 @@ export const meshLesson = {
   },
   exports: meshExports,
   importers: { off: importer('off'), obj: importer('obj') },
-  labels: { vLabel, eLabel, fLabel },
 };
