@@ -19,8 +19,8 @@ const describe = (v) => {
   return typeof v === 'object' ? 'an object' : String(v);
 };
 
-// Bounds as a person reads them: 1e+9 rather than 1000000000.
-const bound = (n) => (Math.abs(n) >= 1e6 ? n.toExponential() : String(n));
+// Bounds as a person reads them: 1e9 rather than 1000000000.
+const bound = (n) => (Math.abs(n) >= 1e6 ? n.toExponential().replace('e+', 'e') : String(n));
 const outside = (v, min, max) => `must be between ${bound(min)} and ${bound(max)} (the limits a saved lesson keeps), not ${v}`;
 
 export const number = ({ min = -COORDINATE_BOUND, max = COORDINATE_BOUND } = {}) => (v, path) => {
