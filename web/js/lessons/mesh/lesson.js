@@ -3,7 +3,7 @@
 // live, the winged-edge walks around a vertex and along a face animated as the slide tells
 // them, the representations' query costs and storage, and plane equations and normals.
 // The state is plain JSON (schema below); the model is what the core returned for it.
-import { number, integer, boolean, oneOf, text, list, object, nullable } from '../../app/schema.js';
+import { number, integer, boolean, oneOf, text, list, object, nullable, viewSchema } from '../../app/schema.js';
 import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
 import { createMeshSource, cacheKeys, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
 import { normaliseSteps, walkFrames } from './walk.js';
@@ -54,7 +54,7 @@ const schema = {
   query: object({ kind: oneOf(...QUERY_KINDS), vertex: integer({ min: 0, max: 10000000 }), face: integer({ min: 0, max: 10000000 }), edge: integer({ min: 0, max: 10000000 }) }),
   mode3d: boolean(),
   rotation: object({ yaw: number({ min: -100, max: 100 }), pitch: number({ min: -100, max: 100 }) }),
-  view: object({ cx: number(), cy: number(), zoom: number({ min: 1, max: 1e5 }) }),
+  view: viewSchema(),
 };
 
 function defaultState() {

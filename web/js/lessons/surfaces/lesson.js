@@ -5,7 +5,7 @@
 // interpolated corners, the twist vectors, the formula with live numbers, and two patches
 // joined with C0 or C1 across their shared boundary. setup returns the view (the controls
 // and panel bodies update fills in); the lesson keeps nothing at module level.
-import { object, list, number, oneOf, boolean, integer } from '../../app/schema.js';
+import { object, list, number, oneOf, boolean, integer, viewSchema } from '../../app/schema.js';
 import { h, panel, table } from '../../app/dom.js';
 import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
 import { createCamera, projectAll } from './view3d.js';
@@ -125,7 +125,7 @@ export const lesson = {
     camera: object({ yaw: number({ min: -360, max: 360 }), pitch: number({ min: -90, max: 90 }), perspective: boolean() }),
     show: object({ net: boolean(), iso: boolean(), shaded: boolean(), twists: boolean() }),
     marker: object({ i: integer({ min: 0, max: GRID - 1 }), j: integer({ min: 0, max: GRID - 1 }) }),
-    view: object({ cx: number(), cy: number(), zoom: number({ min: 1, max: 1e5 }) }),
+    view: viewSchema(),
   },
   defaultState,
 
