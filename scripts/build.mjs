@@ -7,6 +7,7 @@ import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { repoRoot, log, must } from './lib/run.mjs';
 import { writeServiceWorkerManifest } from './lib/site-manifest.mjs';
+import { lessonPage } from './lib/lesson-page.mjs';
 
 const jobs = ['-j', '2'];
 
@@ -55,18 +56,11 @@ function mirror(src, dst, keep = new Set(), skip = new Set()) {
   }
 }
 
-const escapeHtml = (text) => String(text).replace(/[<>&"']/g, (c) => ({ '<': '&lt;', '>': '&gt;', '&': '&amp;', '"': '&quot;', "'": '&#39;' })[c]);
-
 // Every lesson page is the one frame (web/templates/lesson.html) with the lesson's id and
 // title from the registry, so the pages cannot drift apart.
 async function lessonPages() {
   const { lessons } = await import(pathToFileURL(path.join(repoRoot, 'web', 'js', 'lessons', 'registry.js')).href);
-  const frame = fs.readFileSync(path.join(repoRoot, 'web', 'templates', 'lesson.html'), 'utf8')
-    .replace(/<!-- The frame of every lesson page\.[\s\S]*?-->\n/, '');
-  return lessons.map((lesson) => ({
-    file: lesson.page,
-    html: frame.replaceAll('{{id}}', escapeHtml(lesson.id)).replaceAll('{{title}}', escapeHtml(lesson.title)),
-  }));
+  return lessons.map((lesson) => ({ file: lesson.page, html: lessonPage(lesson) }));
 }
 
 export async function assembleSite() {

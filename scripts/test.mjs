@@ -1,4 +1,6 @@
-// npm test: set up, build, then run the three test layers and print one summary.
+// npm test: set up, build, then run the test layers and print one summary.
+//   types    tsc --noEmit -p jsconfig.json: the shell and every lesson.js against the JSDoc
+//            lesson contract (web/js/app/contract.js)
 //   native   Catch2 through CTest (build/native)
 //   wasm     node --test tests/wasm   (the JS API over the wasm module)
 //   browser  node --test tests/browser (playwright-core + Debian's Chromium)

@@ -8,8 +8,10 @@
 #include "wingspline/curves/bezier.h"
 #include "wingspline/curves/bspline_ops.h"
 #include "wingspline/curves/conics.h"
+#include "wingspline/curves/constraints.h"
 #include "wingspline/curves/curve.h"
 #include "wingspline/curves/guarantees.h"
+#include "wingspline/curves/knot_vectors.h"
 #include "wingspline/curves/linear_algebra.h"
 #include "wingspline/curves/patch.h"
 #include "wingspline/curves/segment.h"
@@ -257,11 +259,65 @@ val bspline_knot_multiplicities(const val& spec) {
             continuity.push_back(k.continuity);
         }
         val r = val::object();
+        r.set("knots", to_typed_array(as_explicit_bspline(curve_from(spec)).knots));
         r.set("values", to_typed_array(values));
         r.set("multiplicities", ints(mult));
         r.set("firstIndices", ints(first));
         r.set("interior", ints(interior));
         r.set("continuity", ints(continuity));
+        return r;
+    });
+}
+
+// Issue 14 (maths out of the lessons): the segment holding a parameter, knot vector presets,
+// and the continuity constraints of a piecewise curve while it is dragged.
+val curve_segment_at(const val& spec, double t) {
+    return guarded([&] {
+        val r = val::object();
+        r.set("segment", segment_at(curve_from(spec), t));
+        return r;
+    });
+}
+
+// style: 'clamped' | 'uniform' (count, degree) or 'unclamped' (from knots, degree).
+val knot_vector(const std::string& style, int count, int degree, const val& knots) {
+    return guarded([&] {
+        std::vector<double> t;
+        if (style == "clamped") t = clamped_knots(count, degree);
+        else if (style == "unclamped") t = unclamped_knots(to_doubles(knots), degree);
+        else if (style == "uniform") {
+            require(degree >= 1 && degree <= kMaxDegree && count >= degree + 1, "invalid-argument",
+                    "a uniform B-spline needs a degree from 1 to " + std::to_string(kMaxDegree) + " and at least degree + 1 points");
+            t = uniform_knots(count, degree);
+        } else throw Error("invalid-argument", "the knot style must be clamped, uniform or unclamped");
+        val r = val::object();
+        r.set("knots", to_typed_array(t));
+        return r;
+    });
+}
+
+val knots_clamped(const val& knots, int degree) {
+    return guarded([&] {
+        val r = val::object();
+        r.set("clamped", is_clamped(to_doubles(knots), degree));
+        return r;
+    });
+}
+
+// op: 'drag' (index, to), 'enforce' or 'append'.
+val joint_constraint(const std::string& op, const val& points, int dim, const std::string& family, const std::string& mode,
+                     int index, const val& to) {
+    return guarded([&] {
+        const std::vector<double> p = to_doubles(points);
+        const BasisKind basis = parse_basis_kind(family);
+        const JointConstraint m = parse_joint_constraint(mode);
+        std::vector<double> out;
+        if (op == "drag") out = drag_with_constraint(p, dim, basis, m, index, to_doubles(to));
+        else if (op == "enforce") out = enforce_constraint(p, dim, basis, m);
+        else if (op == "append") out = append_segment(p, dim, basis, m);
+        else throw Error("invalid-argument", "the constraint operation must be drag, enforce or append");
+        val r = val::object();
+        r.set("points", to_typed_array(out));
         return r;
     });
 }
@@ -447,6 +503,10 @@ EMSCRIPTEN_BINDINGS(wingspline_curves) {
     emscripten::function("bsplineToBezier", &bspline_to_bezier);
     emscripten::function("bsplineKnotMultiplicities", &bspline_knot_multiplicities);
     emscripten::function("nurbsPreset", &nurbs_preset);
+    emscripten::function("curveSegmentAt", &curve_segment_at);
+    emscripten::function("knotVector", &knot_vector);
+    emscripten::function("knotsClamped", &knots_clamped);
+    emscripten::function("jointConstraint", &joint_constraint);
     emscripten::function("curveCurvature", &curve_curvature);
     emscripten::function("curveArcLength", &curve_arc_length);
     emscripten::function("curveArcLengthParams", &curve_arc_length_params);

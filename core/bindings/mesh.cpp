@@ -3,6 +3,8 @@
 // Everything else crosses as plain values: typed arrays with documented strides, or small
 // objects. Faces cross as CSR: faceOffsets (F + 1 entries) and faceVertices.
 #include "boundary.h"
+#include "mesh_access.h"
+#include "tables.h"
 
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/indexed_mesh.h"
@@ -14,8 +16,6 @@
 #include "wingspline/mesh/view_geometry.h"
 #include "wingspline/mesh/winged_edge.h"
 
-#include <emscripten/emscripten.h>
-
 #include <algorithm>
 #include <memory>
 #include <unordered_map>
@@ -25,19 +25,22 @@ namespace {
 
 using namespace wingspline::mesh;
 
-// The winged edge is built with the mesh; the other representations only on first use
-// (meshBuildRepresentations, from the face set read back from the winged edge, or the one
-// the JS Mesh keeps when the caller chose the face edges), so a mesh's
-// wasm memory is the winged edge's own until a lesson asks for the others.
+// The winged edge is built with the mesh; the other representations are its cache
+// (RepresentationCache): derived from the winged edge's current face set on first use and
+// again whenever the mesh's version moved on, so a mesh's wasm memory is the winged edge's
+// own until a lesson asks for the others, and no operation leaves a stale copy.
 struct MeshEntry {
     WingedEdgeMesh winged;
-    std::unique_ptr<Representations> representations;
+    RepresentationCache representations;
 };
 
-Representations& representations_of(MeshEntry& m) {
-    if (!m.representations)
-        throw Error("representations-not-built", "the other representations of this mesh have not been built yet");
-    return *m.representations;
+const Representations& representations_of(MeshEntry& m) { return m.representations.of(m.winged); }
+
+val version_value(const MeshVersion& v) {
+    val r = val::object();
+    r.set("topology", static_cast<double>(v.topology));
+    r.set("geometry", static_cast<double>(v.geometry));
+    return r;
 }
 
 struct Registry {
@@ -177,54 +180,6 @@ val validate_indexed_mesh(val positions, val face_offsets, val face_vertices) {
 
 // ------------------------------------------------------------------ the winged edge
 
-// {positions: Float64Array (3 per vertex), vertexEdge: Int32Array (1 per vertex),
-//  edges: Int32Array (8 per edge: start, end, left, right, startLeft, startRight,
-//  endLeft, endRight), faceEdge: Int32Array (1 per face)}
-// Rows [first, first + rows) of a table with `stride` numbers per row (cut at its end).
-template <class T> val window_rows(const std::vector<T>& table, std::size_t stride, int32_t first, int32_t rows) {
-    const std::size_t total = table.size() / stride;
-    const std::size_t begin = std::min(total, static_cast<std::size_t>(first));
-    const std::size_t end = std::min(total, begin + static_cast<std::size_t>(rows));
-    return to_typed_array(table.data() + stride * begin, stride * (end - begin));
-}
-
-// Rows [first, first + rows) of a CSR table: offsets (n + 1 entries, still absolute) and the
-// items they cover (so row i's items are list[offsets[i] - offsets[0] .. offsets[i+1] - offsets[0])).
-void set_csr(val& out, const char* offsets_name, const std::vector<int32_t>& offsets,
-             std::initializer_list<std::pair<const char*, const std::vector<int32_t>*>> lists, int32_t first, int32_t rows) {
-    const std::size_t total = offsets.size() - 1;
-    const std::size_t begin = std::min(total, static_cast<std::size_t>(first));
-    const std::size_t end = std::min(total, begin + static_cast<std::size_t>(rows));
-    out.set(offsets_name, to_typed_array(offsets.data() + begin, end - begin + 1));
-    for (const auto& [name, list] : lists)
-        out.set(name, to_typed_array(list->data() + offsets[begin], offsets[end] - offsets[begin]));
-}
-
-// The three tables, rows [first, first + rows) of each (a lesson scrolling a big mesh
-// fetches only the rows it shows; the JS API's wingedEdge() asks for all of them).
-val mesh_winged_edge(int32_t handle, int32_t first, int32_t rows) {
-    return guarded([&] {
-        require(first >= 0 && rows >= 0, "invalid-argument", "offset and limit must not be negative");
-        const WingedEdgeMesh& w = entry(handle).winged;
-        const auto window = [&](int32_t total) {
-            const int32_t begin = std::min(total, first);
-            return std::pair<int32_t, int32_t>{begin, begin + std::min(total - begin, rows)};
-        };
-        const auto [v0, v1] = window(w.vertex_count());
-        const auto [e0, e1] = window(w.edge_count());
-        const auto [f0, f1] = window(w.face_count());
-        std::vector<int32_t> vertex_edge, face_edge;
-        for (int32_t v = v0; v < v1; ++v) vertex_edge.push_back(w.vertex_edge(v));
-        for (int32_t f = f0; f < f1; ++f) face_edge.push_back(w.face_edge(f));
-        val r = val::object();
-        r.set("positions", window_rows(w.positions(), 3, first, rows));
-        r.set("vertexEdge", to_typed_array(vertex_edge));
-        r.set("edges", to_typed_array(reinterpret_cast<const int32_t*>(w.edges().data() + e0), 8 * static_cast<std::size_t>(e1 - e0)));
-        r.set("faceEdge", to_typed_array(face_edge));
-        return r;
-    });
-}
-
 void require_vertex(const WingedEdgeMesh& w, int32_t v) {
     require(v >= 0 && v < w.vertex_count(), "invalid-element",
             "vertex index " + std::to_string(v) + " is out of range: the mesh has vertices 0 to " + std::to_string(w.vertex_count() - 1));
@@ -334,11 +289,8 @@ val mesh_validate(int32_t handle) {
 // with the default face edges is the same face set.
 val mesh_planes(int32_t handle) {
     return guarded([&] {
-        MeshEntry& m = entry(handle);
-        const auto planes = m.representations
-                                ? face_planes(m.winged, m.representations->vertex_face_tables.face_offsets,
-                                              m.representations->vertex_face_tables.face_vertices)
-                                : face_planes(m.winged);
+        // The faces as given: face_set() lists each face from its first corner (issue 14).
+        const auto planes = face_planes(entry(handle).winged);
         std::vector<double> cross, newell, residual;
         std::vector<int32_t> corners;
         for (const auto& p : planes) {
@@ -402,86 +354,99 @@ val mesh_vertex_normal(int32_t handle, int32_t v) {
     });
 }
 
-// ------------------------------------------------------------------ benchmark only
-
-// The native benchmark times the core's work on data already in memory; these time the
-// same work inside the module (emscripten_get_now, ms) so the wasm and native figures
-// compare like for like. The JS API figures add the boundary: copies in and out.
-val bench_build_in_core(val positions, val face_offsets, val face_vertices, int32_t repetitions) {
-    return guarded([&] {
-        const IndexedMesh m = indexed_from(positions, face_offsets, face_vertices);
-        std::vector<double> seconds;
-        double checksum = 0;
-        for (int32_t i = 0; i < repetitions; ++i) {
-            const double t0 = emscripten_get_now();
-            const WingedEdgeMesh w = WingedEdgeMesh::build(m);
-            seconds.push_back((emscripten_get_now() - t0) / 1000.0);
-            checksum += w.edge(w.edge_count() - 1).end_right + w.edge_count();
-        }
-        val r = val::object();
-        r.set("seconds", to_typed_array(seconds));
-        r.set("checksum", checksum);
-        return r;
-    });
-}
-
-val bench_normals_in_core(int32_t handle, int32_t repetitions) {
-    return guarded([&] {
-        const WingedEdgeMesh& w = entry(handle).winged;
-        std::vector<double> normals, seconds;
-        double checksum = 0;
-        for (int32_t i = 0; i < repetitions; ++i) {
-            const double t0 = emscripten_get_now();
-            newell_normals(w, normals);
-            seconds.push_back((emscripten_get_now() - t0) / 1000.0);
-            checksum += normals[0] + normals[normals.size() - 1];
-        }
-        val r = val::object();
-        r.set("seconds", to_typed_array(seconds));
-        r.set("checksum", checksum);
-        return r;
-    });
-}
-
 // Moves one vertex in every representation; reports how many xyz copies each rewrote.
 val mesh_set_vertex_position(int32_t handle, int32_t v, double x, double y, double z) {
     return guarded([&] {
         MeshEntry& m = entry(handle);
         require_vertex(m.winged, v);
-        Representations& reps = representations_of(m);
         m.winged.set_position(v, {x, y, z});
-        const auto copies = set_vertex_position(reps, v, {x, y, z});
+        const auto copies = m.representations.follow_position(m.winged, v, {x, y, z});
         val changed = val::object();
         for (int r = 0; r + 1 < kRepresentationCount; ++r) changed.set(representation_key(static_cast<Representation>(r)), copies[r]);
         changed.set(representation_key(Representation::WingedEdge), 1);
         val r = val::object();
         r.set("changedEntries", changed);
+        r.set("version", version_value(m.winged.version()));
         return r;
     });
 }
 
-// ------------------------------------------------------------------ the other representations
+// ------------------------------------------------------------------ the change model
 
-// Builds the four other representations from the face set the mesh was built from (once).
-val mesh_build_representations(int32_t handle, val face_offsets, val face_vertices) {
-    return guarded([&] {
-        MeshEntry& m = entry(handle);
-        if (!m.representations) {
-            // Without a face set from JS, the faces are read back from the winged edge (the
-            // default face edges keep each face's corner order as given).
-            IndexedMesh faces;
-            if (face_offsets.isNull() || face_offsets.isUndefined()) {
-                faces = m.winged.face_set();
-            } else {
-                faces.positions = m.winged.positions();
-                faces.face_offsets = to_ints(face_offsets);
-                faces.face_vertices = to_ints(face_vertices);
-            }
-            m.representations = std::make_unique<Representations>(build_representations(faces, m.winged));
+// {topology, geometry}: which state of the mesh this is (winged_edge.h, MeshVersion).
+val mesh_version(int32_t handle) {
+    return guarded([&] { return version_value(entry(handle).winged.version()); });
+}
+
+val element_list(const std::vector<Vertex>& vs, const std::vector<Edge>& es, const std::vector<Face>& fs) {
+    const auto ints = [](const auto& hs) {
+        std::vector<int32_t> out;
+        for (const auto& h : hs) out.push_back(h.idx);
+        return int_array(out);
+    };
+    val r = val::object();
+    r.set("vertices", ints(vs));
+    r.set("edges", ints(es));
+    r.set("faces", ints(fs));
+    return r;
+}
+
+// {op, added, removed: {vertices, edges, faces}, rows: [{table, row, fields: [{field,
+// before, after}]}], before, after: {topology, geometry}}
+val change_value(const ChangeRecord& c) {
+    val rows = val::array();
+    for (std::size_t i = 0; i < c.rows.size(); ++i) {
+        val fields = val::array();
+        for (std::size_t k = 0; k < c.rows[i].fields.size(); ++k) {
+            val field = val::object();
+            field.set("field", c.rows[i].fields[k].field);
+            field.set("before", c.rows[i].fields[k].before);
+            field.set("after", c.rows[i].fields[k].after);
+            fields.set(k, field);
         }
-        return val::object();
+        val row = val::object();
+        row.set("table", std::string(table_name(c.rows[i].table)));
+        row.set("row", c.rows[i].row);
+        row.set("fields", fields);
+        rows.set(i, row);
+    }
+    val r = val::object();
+    r.set("op", c.op);
+    r.set("added", element_list(c.added_vertices, c.added_edges, c.added_faces));
+    r.set("removed", element_list(c.removed_vertices, c.removed_edges, c.removed_faces));
+    r.set("rows", rows);
+    r.set("before", version_value(c.before));
+    r.set("after", version_value(c.after));
+    return r;
+}
+
+// One checked operation by name: check = true only asks check_<op> ({ok: true, allowed,
+// code, message}, nothing changed); otherwise runs <op> and returns its change record, or
+// the refusal as {ok: false, code, message} with the mesh unchanged.
+val mesh_operation(int32_t handle, const std::string& op, int32_t element, int32_t edge, bool check) {
+    return guarded([&] {
+        WingedEdgeMesh& w = entry(handle).winged;
+        CheckResult verdict;
+        if (op == "set-vertex-edge")
+            verdict = w.check_set_vertex_edge(Vertex(element), Edge(edge));
+        else if (op == "set-face-edge")
+            verdict = w.check_set_face_edge(Face(element), Edge(edge));
+        else
+            throw Error("unknown-operation", "unknown mesh operation '" + op + "'; use set-vertex-edge or set-face-edge");
+        if (check) {
+            val r = val::object();
+            r.set("allowed", verdict.ok);
+            r.set("code", verdict.code);
+            r.set("message", verdict.message);
+            return r;
+        }
+        if (!verdict.ok) throw Error(verdict.code, verdict.message);
+        return change_value(op == "set-vertex-edge" ? w.set_vertex_edge(Vertex(element), Edge(edge))
+                                                    : w.set_face_edge(Face(element), Edge(edge)));
     });
 }
+
+// ------------------------------------------------------------------ the other representations
 
 // {[key]: {entries, bytes, arrays: [{name, entries, bytesPerEntry}]}}
 val mesh_storage(int32_t handle) {
@@ -511,58 +476,14 @@ val mesh_storage(int32_t handle) {
     });
 }
 
-// The first `rows` entries of a table with `stride` numbers per row.
-// Every representation's arrays, each table cut to rows [first, first + rows) (see
-// docs/api-mesh.md; the JS layer turns them into row objects).
-val mesh_representations(int32_t handle, int32_t first, int32_t rows) {
+// Rows [first, first + rows) of every table of one representation, described once in
+// core/src/mesh/tables.cpp and turned into plain values by the generic binding (tables.h).
+val mesh_tables(int32_t handle, const std::string& key, int32_t first, int32_t rows) {
     return guarded([&] {
-        require(first >= 0 && rows >= 0, "invalid-argument", "offset and limit must not be negative");
         MeshEntry& m = entry(handle);
-        const Representations& reps = representations_of(m);
+        const Representation which = representation_named(key);
         val r = val::object();
-
-        val ind = val::object();
-        const std::vector<int32_t>& fo = reps.independent_faces.face_offsets;
-        set_csr(ind, "faceOffsets", fo, {}, first, rows);
-        const std::size_t faces = fo.size() - 1;
-        const std::size_t f0 = std::min(faces, static_cast<std::size_t>(first));
-        const std::size_t f1 = std::min(faces, f0 + static_cast<std::size_t>(rows));
-        ind.set("cornerPositions", window_rows(reps.independent_faces.corner_positions, 3, fo[f0], fo[f1] - fo[f0]));
-        r.set("independentFaces", ind);
-
-        const VertexFaceTables& t = reps.vertex_face_tables;
-        val tables = val::object();
-        tables.set("positions", window_rows(t.positions, 3, first, rows));
-        set_csr(tables, "faceOffsets", t.face_offsets, {{"faceVertices", &t.face_vertices}}, first, rows);
-        r.set("vertexFaceTables", tables);
-
-        const AdjacencyLists& a = reps.adjacency_lists;
-        val adj = val::object();
-        adj.set("positions", window_rows(a.positions, 3, first, rows));
-        set_csr(adj, "vertexOffsets", a.vertex_offsets, {{"vertexVertices", &a.vertex_vertices}, {"vertexEdges", &a.vertex_edges}}, first, rows);
-        set_csr(adj, "vertexFaceOffsets", a.vertex_face_offsets, {{"vertexFaces", &a.vertex_faces}}, first, rows);
-        adj.set("edgeVertices", window_rows(a.edge_vertices, 2, first, rows));
-        set_csr(adj, "edgeEdgeOffsets", a.edge_edge_offsets, {{"edgeEdges", &a.edge_edges}}, first, rows);
-        adj.set("edgeFaces", window_rows(a.edge_faces, 2, first, rows));
-        set_csr(adj, "faceOffsets", a.face_offsets,
-                {{"faceVertices", &a.face_vertices}, {"faceEdges", &a.face_edges}, {"faceFaces", &a.face_faces}}, first, rows);
-        r.set("adjacencyLists", adj);
-
-        const PartialAdjacencyLists& p = reps.partial_adjacency_lists;
-        val part = val::object();
-        part.set("positions", window_rows(p.positions, 3, first, rows));
-        set_csr(part, "vertexOffsets", p.vertex_offsets, {{"vertexEdges", &p.vertex_edges}}, first, rows);
-        part.set("edgeVertices", window_rows(p.edge_vertices, 2, first, rows));
-        part.set("edgeFaces", window_rows(p.edge_faces, 2, first, rows));
-        set_csr(part, "faceOffsets", p.face_offsets, {{"faceEdges", &p.face_edges}}, first, rows);
-        r.set("partialAdjacencyLists", part);
-
-        const EdgeList& l = reps.edge_list;
-        val list = val::object();
-        list.set("positions", window_rows(l.positions, 3, first, rows));
-        list.set("edges", window_rows(l.edges, 4, first, rows));
-        set_csr(list, "polygonOffsets", l.polygon_offsets, {{"polygonEdges", &l.polygon_edges}}, first, rows);
-        r.set("edgeList", list);
+        r.set("tables", tables_value(representation_tables(which, which == Representation::WingedEdge ? nullptr : &representations_of(m), m.winged), first, rows));
         return r;
     });
 }
@@ -591,17 +512,6 @@ val mesh_bytes(int32_t handle) {
         const WingedEdgeMesh& w = entry(handle).winged;
         val r = val::object();
         r.set("bytes", static_cast<double>(w.bytes()));
-        return r;
-    });
-}
-
-// For the benchmark and leak tests: walks every vertex ring (BENCH.md mesh_ring).
-val mesh_ring_walk(int32_t handle) {
-    return guarded([&] {
-        const RingWalkTotals totals = entry(handle).winged.walk_every_ring();
-        val r = val::object();
-        r.set("visited", totals.visited);
-        r.set("checksum", totals.neighbour_sum);
         return r;
     });
 }
@@ -677,6 +587,13 @@ val named_mesh(const std::string& name, int32_t a, int32_t b) {
 }
 
 } // namespace
+
+// mesh_access.h: what the benchmark bindings (bench.cpp) read from this file.
+const WingedEdgeMesh& winged_of_handle(int32_t handle) { return entry(handle).winged; }
+IndexedMesh indexed_from_arrays(const val& positions, const val& face_offsets, const val& face_vertices) {
+    return indexed_from(positions, face_offsets, face_vertices);
+}
+
 } // namespace wingspline::bindings
 
 EMSCRIPTEN_BINDINGS(wingspline_mesh) {
@@ -685,7 +602,6 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshDispose", &mesh_dispose);
     emscripten::function("meshLiveCount", &mesh_live_count);
     emscripten::function("meshValidateIndexed", &validate_indexed_mesh);
-    emscripten::function("meshWingedEdge", &mesh_winged_edge);
     emscripten::function("meshAdjacency", &mesh_adjacency);
     emscripten::function("meshTraversalSteps", &mesh_traversal_steps);
     emscripten::function("meshFaceEdgeSteps", &mesh_face_edge_steps);
@@ -698,14 +614,12 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshVertexNormal", &mesh_vertex_normal);
     emscripten::function("meshSetVertexPosition", &mesh_set_vertex_position);
     emscripten::function("meshBytes", &mesh_bytes);
-    emscripten::function("meshBuildRepresentations", &mesh_build_representations);
+    emscripten::function("meshVersion", &mesh_version);
+    emscripten::function("meshOperation", &mesh_operation);
     emscripten::function("meshStorage", &mesh_storage);
-    emscripten::function("meshRepresentations", &mesh_representations);
+    emscripten::function("meshTables", &mesh_tables);
     emscripten::function("meshQuery", &mesh_query);
-    emscripten::function("benchBuildInCore", &bench_build_in_core);
-    emscripten::function("benchNormalsInCore", &bench_normals_in_core);
     emscripten::function("meshParse", &mesh_parse);
     emscripten::function("meshLimits", &mesh_limits);
     emscripten::function("meshFormat", &mesh_format);
-    emscripten::function("meshRingWalk", &mesh_ring_walk);
 }

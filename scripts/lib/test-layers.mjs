@@ -57,9 +57,49 @@ async function asanLayer() {
   return catchTests(path.join(repoRoot, 'build', 'native-asan', 'wingspline_tests'), ['~[large]'], env);
 }
 
+// The lesson contract (web/js/app/contract.js) checked by TypeScript over the JSDoc types:
+// `tsc --noEmit -p jsconfig.json` over the files that carry `// @ts-check` (the shell, its
+// parts, every lesson.js). One pass per checked file without an error, one failure per
+// file with errors (tsc's messages are printed); a lesson.js without `// @ts-check` or
+// without its `@type {...Lesson}` annotation is a failure too, so no lesson leaves the
+// contract unchecked.
+export async function typesLayer() {
+  const config = JSON.parse(fs.readFileSync(path.join(repoRoot, 'jsconfig.json'), 'utf8'));
+  const checked = config.include.flatMap((pattern) => globFiles(pattern))
+    .filter((file) => fs.readFileSync(path.join(repoRoot, file), 'utf8').startsWith('// @ts-check'));
+  const unchecked = ['web/js/lessons', 'tests/fixtures/site/js/lessons'].flatMap((dir) => globFiles(`${dir}/*/lesson.js`))
+    .filter((file) => {
+      const text = fs.readFileSync(path.join(repoRoot, file), 'utf8');
+      return !text.startsWith('// @ts-check') || !/@type \{import\('[./]*app\/contract\.js'\)\.Lesson\}/.test(text);
+    });
+  for (const file of unchecked) process.stdout.write(`${file}: a lesson.js starts with // @ts-check and annotates its lesson /** @type {import('../../app/contract.js').Lesson} */\n`);
+  const tsc = path.join(repoRoot, 'node_modules', 'typescript', 'bin', 'tsc');
+  const r = await capture(process.execPath, [tsc, '--noEmit', '--pretty', 'false', '-p', 'jsconfig.json'], { echo: true });
+  const withErrors = new Set([...r.stdout.matchAll(/^(\S[^(\n]*)\(\d+,\d+\): error/gm)].map((m) => m[1]));
+  const fail = withErrors.size + unchecked.length + (r.code !== 0 && withErrors.size === 0 ? 1 : 0);
+  return { code: fail ? 1 : 0, pass: checked.filter((f) => !withErrors.has(f)).length, fail, skip: 0 };
+}
+
+// The files a jsconfig include pattern names ('dir/*.js', 'dir/*/name.js'), relative, sorted.
+function globFiles(pattern) {
+  const parts = pattern.split('/');
+  let found = [''];
+  for (const part of parts) {
+    const re = new RegExp(`^${part.replace(/[.]/g, '\\.').replace(/\*/g, '[^/]*')}$`);
+    found = found.flatMap((dir) => {
+      const full = path.join(repoRoot, dir);
+      if (!fs.existsSync(full) || !fs.statSync(full).isDirectory()) return [];
+      return fs.readdirSync(full).filter((name) => re.test(name)).map((name) => (dir ? `${dir}/${name}` : name));
+    });
+  }
+  return found.sort();
+}
+
 export const layers = [
+  { name: 'types', run: typesLayer },
   { name: 'native', run: () => catchTests(path.join(repoRoot, 'build', 'native', 'wingspline_tests')) },
   { name: 'wasm', run: () => nodeTests('tests/wasm') },
+  { name: 'lessons', run: () => nodeTests('tests/lessons') },
   { name: 'browser', run: () => nodeTests('tests/browser') },
   { name: 'asan', run: asanLayer },
   { name: 'fuzz', run: () => fuzzLayer() },

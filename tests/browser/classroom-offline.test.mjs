@@ -61,7 +61,10 @@ async function pageWorks(page, file) {
     await page.waitForSelector('[data-core-status][data-state=ready]', { timeout: 15000 });
   } else {
     await waitReady(page);
-    assert.ok((await page.evaluate(() => window.wingspline.handles().length)) >= 0);
+    // The lesson the file names is running and its core computed a model.
+    const shown = await page.evaluate(() => ({ lesson: window.wingspline.lesson, computed: window.wingspline.model !== null && window.wingspline.model !== undefined }));
+    assert.equal(`${shown.lesson}.html`, file.split('/').pop());
+    assert.ok(shown.computed, `${file}: the core computed the lesson`);
   }
 }
 

@@ -477,3 +477,68 @@ test('3D view: a half turn by dragging keeps the mesh in the canvas and says it 
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+// Issue 14: the vertex table stores one of v2's edges (the slide: e6); a person chooses e3
+// in the winged-edge tab. The row changes, the walk starts there (CCW from e3: e3, e2, e6,
+// e5), undo restores e6, and a reload and a share link keep the choice.
+test('choosing another stored edge for v2 changes its table row and the walk; undo, reload and a link keep it', async () => {
+  const page = await openLesson();
+  const v2Edge = async () => (await tableCells(page, 'we-vertex-table'))[1][4];
+  assert.equal(await v2Edge(), 'e6');
+  assert.equal(await page.textContent('label[for=stored-edge]'), 'Edge stored for v2:');
+  // Only v2's own edges are offered, in edge order.
+  assert.deepEqual(await page.$$eval('#stored-edge option', (os) => os.map((o) => o.textContent)), ['e2', 'e3', 'e5', 'e6']);
+  await page.focus('#stored-edge');
+  await page.selectOption('#stored-edge', { label: 'e3' });
+  await settle(page);
+  assert.equal(await v2Edge(), 'e3');
+  assert.match(await page.textContent('#stored-edge-note'), /vertex table, row v2: edge e6 → e3/);
+  // The walk starts at the stored edge and meets v2's edges in the same CCW order.
+  await page.click('#walk-title');
+  await press(page, 'Home');
+  assert.match(await page.textContent('#walk-text'), /stores e3 for v2/);
+  await press(page, 'End');
+  assert.match(await page.textContent('#walk-text'), /e3, e2, e6, e5/);
+  // The other rows are the slide's.
+  assert.deepEqual(await tableCells(page, 'we-edge-table'), SLIDE_EDGE_TABLE);
+  // Undo restores the slide's row; redo is a new choice.
+  await press(page, 'Control+z');
+  assert.equal(await v2Edge(), 'e6');
+  assert.equal(await page.$eval('#stored-edge', (s) => s.selectedOptions[0].textContent), 'e6');
+  await page.selectOption('#stored-edge', { label: 'e5' });
+  await settle(page);
+  assert.equal(await v2Edge(), 'e5');
+  await page.evaluate(async () => window.wingspline.flush());
+  await page.reload();
+  await page.waitForSelector('body[data-ready=true]');
+  assert.equal(await v2Edge(), 'e5', 'a reload keeps the choice');
+  const link = await page.evaluate(() => window.wingspline.shareUrl());
+  await page.context().close();
+  const other = await openPage(env.browser, link);
+  await other.waitForSelector('body[data-ready=true]', { timeout: 15000 });
+  assert.equal((await tableCells(other, 'we-vertex-table'))[1][4], 'e5', 'a share link carries it');
+  assert.deepEqual(other.problems, []);
+  await other.context().close();
+});
+
+test('choosing the stored edge of a face: F2 stores e5, its walk starts there', async () => {
+  const page = await openLesson();
+  await page.selectOption('#walk-kind', 'face');
+  await page.fill('#walk-element', '2');
+  await page.press('#walk-element', 'Enter');
+  await settle(page);
+  assert.equal(await page.textContent('label[for=stored-edge]'), 'Edge stored for F2:');
+  // F2 = (v2 v4 v3): its sides are e3, e4, e5.
+  assert.deepEqual(await page.$$eval('#stored-edge option', (os) => os.map((o) => o.textContent)), ['e3', 'e4', 'e5']);
+  await page.selectOption('#stored-edge', { label: 'e5' });
+  await settle(page);
+  assert.deepEqual((await tableCells(page, 'we-face-table'))[1], ['F2', 'e5']);
+  await page.click('#walk-title');
+  await press(page, 'End');
+  assert.match(await page.textContent('#walk-text'), /e5, e4, e3/);
+  // The face set did not change: F2 is still listed (v2 v4 v3).
+  await click(page, '#tab-vertex-face');
+  assert.deepEqual((await tableCells(page, 'vf-face-table'))[1], ['F2', 'v2', 'v4', 'v3']);
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

@@ -2,10 +2,12 @@
 // marked ready in the registry, plus the test-only fixture lesson under tests/fixtures/site),
 // share links built the way the page builds them, bit patterns of numbers, and a trap that
 // records any script a tampered link or file might manage to run.
+import fs from 'node:fs';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import { repoRoot, startSite } from './browser.mjs';
 import { lessons } from '../../web/js/lessons/registry.js';
+import { lessonPage } from '../../scripts/lib/lesson-page.mjs';
 
 export const fixturesSite = path.join(repoRoot, 'tests', 'fixtures', 'site');
 
@@ -14,8 +16,17 @@ export const fixture = { id: 'fixture', title: 'Classroom fixture', page: 'fixtu
 export const readyLessons = lessons.filter((l) => l.ready).map((l) => ({ id: l.id, title: l.title, page: l.page }));
 export const lessonsUnderTest = [...readyLessons, fixture];
 
+// The fixture's page is written from the real lesson frame (web/templates/lesson.html), as
+// the build writes every lesson's page, into a folder served before tests/fixtures/site.
+export const fixturePages = path.join(repoRoot, 'build', 'test-pages');
+export function writeFixturePage() {
+  fs.mkdirSync(fixturePages, { recursive: true });
+  fs.writeFileSync(path.join(fixturePages, fixture.page), lessonPage(fixture));
+}
+
 export function startClassroomSite(options = {}) {
-  return startSite({ overlays: [fixturesSite], ...options });
+  writeFixturePage();
+  return startSite({ overlays: [fixturePages, fixturesSite], ...options });
 }
 
 // dist/ pages: the landing page and every ready lesson (the fixture is not part of dist/).

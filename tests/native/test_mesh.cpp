@@ -63,10 +63,45 @@ TEST_CASE("the lecture example reproduces the slide's edge, vertex and face tabl
 }
 
 TEST_CASE("the same tables come out of the wing rule without the slide's numbering", "[mesh][winged]") {
-    // Default build: the wings of every edge must satisfy the rule's definition.
-    const WingedEdgeMesh w = build_valid(lecture_example().mesh);
-    CHECK(w.edge_count() == 7);
+    // Default build (the core numbers the edges itself): the same seven edges as the slide's
+    // numbered build, each with the same faces and the same wings once the edges are matched by
+    // their end points. The match is made here from the vertex pairs, independently of the core.
+    const NamedMesh ex = lecture_example();
+    const WingedEdgeMesh slide = build_valid(ex.mesh, ex.options);
+    const WingedEdgeMesh w = build_valid(ex.mesh);
+    REQUIRE(w.edge_count() == 7);
     CHECK(w.counts().boundary_edges == 5);
+    // to_slide[e]: the slide's number of the default build's edge e (same start and end, or
+    // reversed: then left/right and the wing pairs swap).
+    std::vector<int32_t> to_slide(7, kNone);
+    std::vector<bool> reversed(7, false);
+    for (int32_t e = 0; e < 7; ++e)
+        for (int32_t s = 0; s < 7; ++s) {
+            const EdgeRecord &a = w.edge(e), &b = slide.edge(s);
+            if (a.start == b.start && a.end == b.end) to_slide[e] = s;
+            if (a.start == b.end && a.end == b.start) { to_slide[e] = s; reversed[e] = true; }
+        }
+    const auto mapped = [&](int32_t e) { return e == kNone ? kNone : to_slide[e]; };
+    for (int32_t e = 0; e < 7; ++e) {
+        REQUIRE(to_slide[e] != kNone);
+        const EdgeRecord &a = w.edge(e), &b = slide.edge(to_slide[e]);
+        if (!reversed[e]) {
+            CHECK(a.left == b.left);
+            CHECK(a.right == b.right);
+            CHECK(mapped(a.start_left) == b.start_left);
+            CHECK(mapped(a.start_right) == b.start_right);
+            CHECK(mapped(a.end_left) == b.end_left);
+            CHECK(mapped(a.end_right) == b.end_right);
+        } else {
+            // Walking the edge the other way swaps left and right, and the start's wings become the end's.
+            CHECK(a.left == b.right);
+            CHECK(a.right == b.left);
+            CHECK(mapped(a.start_left) == b.end_right);
+            CHECK(mapped(a.start_right) == b.end_left);
+            CHECK(mapped(a.end_left) == b.start_right);
+            CHECK(mapped(a.end_right) == b.start_left);
+        }
+    }
 }
 
 TEST_CASE("CCW around v2 is e6, e5, e3, e2; every ring covers its vertex's edges", "[mesh][traversal]") {

@@ -24,8 +24,10 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
+import { benchHooks } from 'wingspline/bench-hooks';
 
 const api = await loadWingspline();
+const hooks = benchHooks(api);
 const FULL = 100000;
 const REDUCED = 5000;
 const WARM_UP = 200;
@@ -47,6 +49,8 @@ const zeroWeight = { ...nurbs, weights: [1, 1, 0] };
 const params = Float64Array.from({ length: 16 }, (_, j) => j / 15);
 const outside = [0.5, 1.5];
 const geometry = [0, 0, 1, 2, 3, 2, 4, 0];
+// Two cubic segments of 4 entries each (Bezier P0..P3, or Hermite p0, p1, t0, t1).
+const chain = [0, 0, 1, 2, 2, 2, 3, 0, 3, 0, 4, -2, 5, 1, 6, 0];
 const bspline = { kind: 'bspline', dim: 2, degree: 3, points: [0, 0, 1, 2, 3, 2, 4, 0, 5, 1], knots: [0, 0, 0, 0, 1, 2, 2, 2, 2] };
 const following = { kind: 'bezier', dim: 2, points: [4, 0, 5, -2, 7, -2, 8, 0] }; // starts where bezier ends
 // A bicubic Bezier patch: p_ij = (i, j, (i - 1.5)(j - 1.5) / 2), points[3*(4*i + j) + k].
@@ -86,15 +90,29 @@ const cases = [
   ['mesh face queries', REDUCED, () => { lecture.edgesOfFace(1); lecture.verticesOfFace(1); lecture.faceNeighbours(1); lecture.faceEdgeSteps(1); },
     () => lecture.faceEdgeSteps(V_MISSING)],
   ['mesh.facesOfEdge', REDUCED, () => lecture.facesOfEdge(2), () => lecture.edgesOfFace(V_MISSING)],
-  ['mesh counts / bytes / validate / ringWalk', REDUCED, () => { lecture.counts(); lecture.bytes(); lecture.validate(); lecture.ringWalk(); },
+  ['mesh counts / bytes / validate / ringWalk', REDUCED, () => { lecture.counts(); lecture.bytes(); lecture.validate(); hooks.ringWalk(lecture); },
     () => lecture.verticesOfFace(V_MISSING)],
   ['mesh planes / normals', REDUCED, () => { lecture.planes(); lecture.normals(); }, () => lecture.faceNeighbours(V_MISSING)],
   ['mesh.setVertexPosition', REDUCED, () => lecture.setVertexPosition(4, [2, -1, 0]), () => lecture.setVertexPosition(V_MISSING, [0, 0, 0])],
-  ['timeBuildInCore', REDUCED, () => api.timeBuildInCore(tetra, 1), () => api.timeBuildInCore(nonManifold, 1)],
+  ['hooks.timeBuildInCore', REDUCED, () => hooks.timeBuildInCore(tetra, 1), () => hooks.timeBuildInCore(nonManifold, 1)],
+  // Issue 14: each succeeding round chooses another stored edge and back (the version moves
+  // on, so the representations are derived again: the old ones must be freed).
+  ['mesh operations', REDUCED, () => {
+    lecture.coreVersion(); lecture.checkSetVertexEdge(0, 1); lecture.setVertexEdge(0, 1); lecture.setVertexEdge(0, 0);
+    lecture.checkSetFaceEdge(0, 1); lecture.setFaceEdge(0, 1); lecture.apply({ op: 'set-face-edge', f: 0, e: 0 }); lecture.representations({ limit: 2 });
+  }, () => lecture.setVertexEdge(0, 6)],
   ['deBoor', REDUCED, () => api.deBoor(bspline, 0.5), () => api.deBoor(decreasing, 0.5)],
   ['insertKnot', REDUCED, () => api.insertKnot(bspline, 1.5), () => api.insertKnot(decreasing, 0.5)],
   ['bsplineToBezier', REDUCED, () => api.bsplineToBezier(bspline), () => api.bsplineToBezier(decreasing)],
   ['knotMultiplicities', REDUCED, () => api.knotMultiplicities(bspline), () => api.knotMultiplicities(decreasing)],
+  ['segmentAt', REDUCED, () => api.segmentAt(bspline, 1.5), () => api.segmentAt(decreasing, 0.5)],
+  ['clampedKnots', REDUCED, () => api.clampedKnots(7, 3), () => api.clampedKnots(3, 3)],
+  ['uniformKnots', REDUCED, () => api.uniformKnots(7, 3), () => api.uniformKnots(3, 3)],
+  ['unclampedKnots', REDUCED, () => api.unclampedKnots(bspline.knots, 3), () => api.unclampedKnots(decreasing.knots, 3)],
+  ['isClampedKnots', REDUCED, () => api.isClampedKnots(bspline.knots, 3), () => api.isClampedKnots([0, 1], 3)],
+  ['dragWithConstraint', REDUCED, () => api.dragWithConstraint(chain, 2, 'bezier', 'C2', 2, [2.5, 1.5]), () => api.dragWithConstraint(chain, 2, 'bezier', 'C2', 99, [0, 0])],
+  ['enforceConstraint', REDUCED, () => api.enforceConstraint(chain, 2, 'hermite', 'C2'), () => api.enforceConstraint(chain.slice(2), 2, 'hermite', 'C2')],
+  ['appendSegment', REDUCED, () => api.appendSegment(chain, 2, 'bezier', 'G1'), () => api.appendSegment(chain, 2, 'bezier', 'G2')],
   ['nurbsCircle / nurbsEllipse', REDUCED, () => { api.nurbsCircle({ center: [0, 0], radius: 1 }); api.nurbsEllipse({ center: [0, 0], rx: 2, ry: 1 }); },
     () => api.nurbsCircle({ center: [0, 0], radius: -1 })],
   ['nurbsArc', REDUCED, () => api.nurbsArc({ center: [0, 0], radius: 1, startAngle: 0, endAngle: 2 }),
@@ -114,9 +132,11 @@ const cases = [
   ['transformPoints', REDUCED, () => api.transformPoints(geometry, 2, [0, -1, 1, 1, 0, 2, 0, 0, 1]), () => api.transformPoints(geometry, 2, [1, 0, 0, 1])],
   ['mesh.storage / representations', REDUCED, () => { lecture.storage(); lecture.representations({ limit: 3 }); },
     () => lecture.query('edges-of-face', V_MISSING)],
+  ['mesh.tables', REDUCED, () => { lecture.tables('edge-list', { offset: 1, limit: 2 }); lecture.tables('winged-edge'); },
+    () => lecture.tables('edge-list', { offset: -1 })],
   ['mesh.boundingBox / vertexNormal', REDUCED, () => { lecture.boundingBox(); lecture.vertexNormal(1); }, () => lecture.vertexNormal(V_MISSING)],
   ['mesh.query', REDUCED, () => lecture.query('faces-around-vertex', 1), () => lecture.query('faces-around-vertex', V_MISSING)],
-  ['mesh.timeNormalsInCore', REDUCED, () => lecture.timeNormalsInCore(1), () => lecture.timeNormalsInCore(0)],
+  ['hooks.timeNormalsInCore', REDUCED, () => hooks.timeNormalsInCore(lecture, 1), () => hooks.timeNormalsInCore(lecture, 0)],
   ['memoryUsage / liveMeshCount', REDUCED, () => { api.memoryUsage(); api.liveMeshCount(); },
     () => api.facesAroundVertex?.(0) ?? lecture.facesAroundVertex(V_MISSING)],
 ];
@@ -142,7 +162,9 @@ test('the table covers every function of the API and of a mesh', () => {
   const missing = Object.keys(api).filter((k) => typeof api[k] === 'function' && !text.includes(`api.${k}(`));
   assert.deepEqual(missing, [], 'API functions without a memory case');
   const methods = Object.getOwnPropertyNames(Object.getPrototypeOf(lecture))
-    .filter((k) => k !== 'constructor' && k !== 'disposed' && k !== 'dispose');
+    .filter((k) => k !== 'constructor' && k !== 'dispose')
+    // Getters (disposed, id, version) are read, not called.
+    .filter((k) => !Object.getOwnPropertyDescriptor(Object.getPrototypeOf(lecture), k).get);
   assert.deepEqual(methods.filter((k) => !text.includes(`lecture.${k}(`)), [], 'Mesh methods without a memory case');
 });
 

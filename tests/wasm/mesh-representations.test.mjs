@@ -20,6 +20,9 @@ function withMesh(input, body) {
 }
 
 const sortedList = (a) => Array.from(a).sort((x, y) => x - y);
+// Rows are objects keyed by the descriptors' column names (issue 14): one column of them.
+const column = (rows, name) => rows.map((row) => row[name]);
+const xyz = (rows) => rows.map(({ x, y, z }) => [x, y, z]);
 
 test('lecture 000: the slide\'s face tables in the independent-faces and vertex-face tables', () => {
   const input = api.lectureExample();
@@ -28,9 +31,9 @@ test('lecture 000: the slide\'s face tables in the independent-faces and vertex-
     assert.deepEqual(Object.keys(reps).sort(), [...KEYS].sort());
     const x = (i) => Array.from(input.positions.subarray(3 * (i - 1), 3 * i)); // slide's (x_i, y_i, z_i)
     // F1 (x1)(x2)(x3), F2 (x2)(x4)(x3), F3 (x2)(x5)(x4).
-    assert.deepEqual(reps['independent-faces'].faces, [[x(1), x(2), x(3)], [x(2), x(4), x(3)], [x(2), x(5), x(4)]]);
-    assert.deepEqual(reps['vertex-face-tables'].faces, [[0, 1, 2], [1, 3, 2], [1, 4, 3]]);
-    assert.deepEqual(reps['vertex-face-tables'].vertices, [1, 2, 3, 4, 5].map(x));
+    assert.deepEqual(column(reps['independent-faces'].faces, 'corners'), [[x(1), x(2), x(3)], [x(2), x(4), x(3)], [x(2), x(5), x(4)]]);
+    assert.deepEqual(column(reps['vertex-face-tables'].faces, 'vertices'), [[0, 1, 2], [1, 3, 2], [1, 4, 3]]);
+    assert.deepEqual(xyz(reps['vertex-face-tables'].vertices), [1, 2, 3, 4, 5].map(x));
     assert.deepEqual(reps['vertex-face-tables'].totals, { vertices: 5, faces: 3 });
     // v2's full adjacency: edges e2 e3 e5 e6, faces F1 F2 F3; partial keeps only the edges.
     const v2 = reps['adjacency-lists'].vertices[1];
@@ -51,7 +54,7 @@ test('lecture 001: Foley\'s edge list E = (V1, V2, P1, P2), polygons as edge lis
       { v1: 0, v2: 1, p1: 0, p2: -1 }, { v1: 1, v2: 2, p1: 1, p2: -1 }, { v1: 2, v2: 3, p1: 1, p2: -1 },
       { v1: 3, v2: 1, p1: 0, p2: 1 }, { v1: 3, v2: 0, p1: 0, p2: -1 },
     ]);
-    assert.deepEqual(list.polygons, [[0, 3, 4], [1, 2, 3]]); // P1 = (E1, E4, E5), P2 = (E2, E3, E4)
+    assert.deepEqual(column(list.polygons, 'edges'), [[0, 3, 4], [1, 2, 3]]); // P1 = (E1, E4, E5), P2 = (E2, E3, E4)
   });
 });
 
@@ -153,10 +156,10 @@ test('setVertexPosition rewrites the stored copies and the scans find the new po
       'independent-faces': 3, 'vertex-face-tables': 1, 'adjacency-lists': 1, 'partial-adjacency-lists': 1, 'edge-list': 1, 'winged-edge': 1,
     });
     const reps = mesh.representations();
-    const copies = reps['independent-faces'].faces.flat().filter((p) => p.join() === '-1,-2,-3').length;
+    const copies = column(reps['independent-faces'].faces, 'corners').flat().filter((p) => p.join() === '-1,-2,-3').length;
     assert.equal(copies, 3);
-    assert.deepEqual(reps['vertex-face-tables'].vertices[0], [-1, -2, -3]);
-    assert.deepEqual(reps['edge-list'].vertices[0], [-1, -2, -3]);
+    assert.deepEqual(reps['vertex-face-tables'].vertices[0], { x: -1, y: -2, z: -3 });
+    assert.deepEqual(reps['edge-list'].vertices[0], { position: [-1, -2, -3] });
     assert.deepEqual(reps['adjacency-lists'].vertices[0].position, [-1, -2, -3]);
     assert.deepEqual(sortedList(mesh.query('faces-around-vertex', 0)['independent-faces'].answer), [0, 2, 4]);
     assert.deepEqual(mesh.storage(), before); // moving a point never changes the storage
@@ -220,7 +223,7 @@ test('faces are read back from the winged edge: the tables show the faces as giv
   try {
     assert.equal(mesh.validate().ok, true);
     const reps = mesh.representations();
-    assert.deepEqual(reps['vertex-face-tables'].faces, faces);
+    assert.deepEqual(column(reps['vertex-face-tables'].faces, 'vertices'), faces);
     // Each face's edge in the winged-edge table is its first side (first two corners).
     const { edges, faces: faceRows } = mesh.wingedEdge();
     faceRows.forEach(({ edge }, f) => {
@@ -241,7 +244,7 @@ test('with chosen face edges the mesh keeps its own copy of the faces: the calle
   const mesh = api.buildMesh({ positions: ex.positions, faceOffsets, faceVertices, edges: ex.edges, vertexEdges: ex.vertexEdges, faceEdges: ex.faceEdges });
   try {
     faceVertices.set([4, 3, 2, 1, 0, 4, 3, 2, 1]);
-    assert.deepEqual(mesh.representations()['vertex-face-tables'].faces, [[0, 1, 2], [1, 3, 2], [1, 4, 3]]);
+    assert.deepEqual(column(mesh.representations()['vertex-face-tables'].faces, 'vertices'), [[0, 1, 2], [1, 3, 2], [1, 4, 3]]);
   } finally {
     mesh.dispose();
   }

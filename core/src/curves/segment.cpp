@@ -31,6 +31,29 @@ int segment_count(const Curve& c) {
     return 1;
 }
 
+int segment_at(const Curve& c, double t) {
+    const int count = segment_count(c); // validates
+    const CurveEvaluator ev(c);
+    const double u = ev.checked_params(&t, 1)[0];
+    if (count <= 1) return 0;
+    if (c.kind == CurveKind::BSpline || c.kind == CurveKind::Nurbs) {
+        const int K = control_point_count(c);
+        const int p = curve_degree(c);
+        const std::vector<double> knots = c.knots.empty() ? uniform_knots(K, p) : c.knots;
+        int index = -1;
+        for (int l = p; l < K; ++l) {
+            if (knots[l + 1] > knots[l]) {
+                ++index;
+                if (u < knots[l + 1]) return index;
+            }
+        }
+        return std::max(0, index);
+    }
+    const Domain d = ev.domain();
+    const double at = std::floor((u - d.start) / (d.end - d.start) * count);
+    return static_cast<int>(std::min<double>(count - 1, std::max(0.0, at)));
+}
+
 namespace {
 
 std::vector<double> from_mat4(const Mat4& m) { return std::vector<double>(m.begin(), m.end()); }

@@ -55,42 +55,14 @@ void newell_normals(const WingedEdgeMesh& mesh, std::vector<double>& normals) {
     newell_normals(mesh, normals.data());
 }
 
-void newell_normals(const WingedEdgeMesh& mesh, double* normals) {
-    // Walk each face's edges by the lecture's rule (L: the next edge is the end-left wing,
-    // R: the start-right wing) and sum Newell's term of each side a -> b the face walks.
-    // Measured alternatives (BENCH.md mesh_normals, three runs each, wasm / native):
-    //  * one pass over the edge table, adding each edge's term to L and subtracting it
-    //    from R: fastest natively, but up to 2.0x in wasm at 1M faces;
-    //  * loading only b and carrying it over as the next side's a: up to 1.9x at 1M;
-    //  * selects instead of the kept branch: 1.6-2.0x at every size;
-    //  * this walk: at most 1.6x at every size.
-    const int32_t F = mesh.face_count();
-    const double* p = mesh.positions().data();
-    const EdgeRecord* edges = mesh.edges().data();
-    for (int32_t f = 0; f < F; ++f) {
-        double sx = 0, sy = 0, sz = 0;
-        const int32_t first = mesh.face_edge(f);
-        int32_t e = first;
-        do {
-            const EdgeRecord& r = edges[e];
-            int32_t a, b;
-            if (r.left == f) {
-                a = r.start, b = r.end, e = r.end_left;
-            } else {
-                WINGSPLINE_KEEP_BRANCH();
-                a = r.end, b = r.start, e = r.start_right;
-            }
-            const double* pa = p + 3 * a;
-            const double* pb = p + 3 * b;
-            sx += (pa[2] + pb[2]) * (pa[1] - pb[1]);
-            sy += (pa[0] + pb[0]) * (pa[2] - pb[2]);
-            sz += (pa[1] + pb[1]) * (pa[0] - pb[0]);
-        } while (e != first);
-        const double len = std::sqrt(sx * sx + sy * sy + sz * sz);
-        const double inv = len > 0 ? 1.0 / len : 0.0;
-        normals[3 * f] = sx * inv;
-        normals[3 * f + 1] = sy * inv;
-        normals[3 * f + 2] = sz * inv;
+void newell_normals_reference(const WingedEdgeMesh& mesh, std::vector<double>& normals) {
+    normals.assign(3 * static_cast<std::size_t>(mesh.face_count()), 0.0);
+    for (int32_t f = 0; f < mesh.face_count(); ++f) {
+        const std::vector<int32_t> corners = mesh.vertices_of_face(f);
+        const glm::dvec3 n = newell_vector(mesh.positions().data(), corners.data(), static_cast<int32_t>(corners.size()));
+        const double len = glm::length(n);
+        if (len > 0)
+            for (int k = 0; k < 3; ++k) normals[3 * f + k] = n[k] / len;
     }
 }
 

@@ -253,4 +253,26 @@ std::array<int32_t, kRepresentationCount - 1> set_vertex_position(Representation
     return {copies, 1, 1, 1, 1};
 }
 
+const Representations& RepresentationCache::of(const WingedEdgeMesh& winged) {
+    if (!reps_ || version_ != winged.version()) {
+        reps_ = std::make_unique<Representations>(build_representations(winged.face_set(), winged));
+        version_ = winged.version();
+        ++derivations_;
+    }
+    return *reps_;
+}
+
+std::array<int32_t, kRepresentationCount - 1> RepresentationCache::follow_position(const WingedEdgeMesh& winged, int32_t v,
+                                                                                   const glm::dvec3& p) {
+    // Current in everything but this vertex's position: follow it in place. Otherwise (first
+    // use, or the topology moved on) derive from the winged edge, which already holds p.
+    // (Only this vertex: the geometry moved on by at most this one move.)
+    const MeshVersion now = winged.version();
+    const bool one_move = reps_ && version_.topology == now.topology && now.geometry - version_.geometry <= 1;
+    if (!one_move) of(winged);
+    const auto copies = set_vertex_position(*reps_, v, p);
+    version_ = now;
+    return copies;
+}
+
 } // namespace wingspline::mesh

@@ -1,9 +1,18 @@
-// Building Baumgart's winged edge from an indexed face set without any map per edge:
-// half-edges are bucketed by their lower vertex (a counting sort, CSR layout), twins are
-// matched inside each small bucket, and the wings are read off each face's previous and
-// next corner. Anything the structure cannot hold is handed to validate_indexed(), which
-// explains every problem; the fast path only has to notice that something is wrong.
+// Building Baumgart's winged edge (lecture 000) from an indexed face set without any map
+// per edge: half-edges are bucketed by their lower vertex (a counting sort, CSR layout),
+// twins are matched inside each small bucket, and the wings are read off each face's
+// previous and next corner. Anything the structure cannot hold is handed to
+// validate_indexed(), which explains every problem; the build only has to notice that
+// something is wrong.
+//
+// This file is the reference path: each phase of build() below is one named function that
+// fills or checks one part of the lecture's tables, written the way the lecture reads.
+// The fixed-degree kernels that the benchmarks need (triangles unrolled, the ring walk
+// inlined) live beside it in fast_kernels.cpp and are tested to give identical tables
+// (tests/native/test_mesh_kernels.cpp; docs/architecture.md, "Teaching path and fast kernels").
 #include "wingspline/mesh/winged_edge.h"
+
+#include "fast_kernels.h"
 
 #include <cstdio>
 #include <string>
@@ -14,14 +23,9 @@
 
 namespace wingspline::mesh {
 
-namespace {
+using detail::BucketSlot;
 
-// One half-edge in the bucket of its lower vertex: the other vertex, and the half-edge
-// index times two plus 1 when it runs from the higher vertex to the lower one.
-struct BucketSlot {
-    int32_t other;
-    int32_t code;
-};
+namespace {
 
 [[noreturn]] void refuse(const IndexedMesh& mesh) { throw InvalidMesh(validate_indexed(mesh)); }
 
@@ -54,82 +58,49 @@ bool corners_distinct(const int32_t* c, int32_t n) {
     return std::adjacent_find(s.begin(), s.end()) == s.end();
 }
 
-} // namespace
-
-WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions& options) {
-    return build_impl(mesh, options, nullptr);
-}
-
-WingedEdgeMesh WingedEdgeMesh::build(IndexedMesh&& mesh, const BuildOptions& options) {
-    return build_impl(mesh, options, &mesh.positions);
-}
-
-WingedEdgeMesh WingedEdgeMesh::build_impl(const IndexedMesh& mesh, const BuildOptions& options,
-                                          std::vector<double>* positions_to_take) {
-    const int32_t V = mesh.vertex_count();
-    const int32_t F = mesh.face_count();
-    const std::vector<int32_t>& fo = mesh.face_offsets;
-    const std::vector<int32_t>& fv = mesh.face_vertices;
-    if (F <= 0 || mesh.positions.size() != 3 * static_cast<std::size_t>(V)) refuse(mesh);
+// Phase 0, the vertex table's positions: at least one face, three finite coordinates per
+// vertex, none beyond kMaxCoordinate (limits.h).
+void check_positions(const IndexedMesh& mesh) {
+    if (mesh.face_count() <= 0 || mesh.positions.size() != 3 * static_cast<std::size_t>(mesh.vertex_count())) refuse(mesh);
     for (double c : mesh.positions)
         if (!std::isfinite(c) || std::abs(c) > kMaxCoordinate) refuse(mesh);
-    const int32_t H = fo[F];
-    // Per face: check the corners, then count its sides into the bucket of their lower
-    // vertex (a counting sort). Sides are visited last to first, so each side's end corner
-    // is the one visited just before: one load per side, no wrap-around test.
-    std::vector<int32_t> bucket_end(static_cast<std::size_t>(V) + 1, 0);
-    int32_t* count = bucket_end.data() + 1;
-    for (int32_t f = 0; f < F; ++f) {
-        const int32_t o = fo[f], n = fo[f + 1] - o;
-        if (n == 3) {
-            // Triangles (most meshes): unrolled, unsigned compare for 0 <= index < V.
-            const int32_t a = fv[o], b = fv[o + 1], c = fv[o + 2];
-            if (static_cast<uint32_t>(a) >= static_cast<uint32_t>(V) || static_cast<uint32_t>(b) >= static_cast<uint32_t>(V) ||
-                static_cast<uint32_t>(c) >= static_cast<uint32_t>(V) || a == b || b == c || a == c)
-                refuse(mesh);
-            ++count[a < b ? a : b];
-            ++count[b < c ? b : c];
-            ++count[c < a ? c : a];
-            continue;
-        }
-        if (n < 3) refuse(mesh);
-        for (int32_t i = o; i < o + n; ++i)
-            if (fv[i] < 0 || fv[i] >= V) refuse(mesh);
-        if (!corners_distinct(&fv[o], n)) refuse(mesh);
-        for (int32_t h = o + n - 1, b = fv[o]; h >= o; --h) {
-            const int32_t a = fv[h];
-            ++count[a < b ? a : b];
-            b = a;
-        }
-    }
-    for (int32_t v = 0; v < V; ++v) bucket_end[v + 1] += bucket_end[v];
-    std::unique_ptr<BucketSlot[]> slots(new BucketSlot[H]); // every slot is written below
-    const auto put = [&](int32_t h, int32_t a, int32_t b) {
-        slots[bucket_end[a < b ? a : b]++] = {a < b ? b : a, 2 * h + (a > b ? 1 : 0)};
-    };
-    for (int32_t f = 0; f < F; ++f) {
-        const int32_t o = fo[f], n = fo[f + 1] - o;
-        if (n == 3) {
-            const int32_t a = fv[o], b = fv[o + 1], c = fv[o + 2];
-            put(o, a, b);
-            put(o + 1, b, c);
-            put(o + 2, c, a);
-            continue;
-        }
-        for (int32_t h = o + n - 1, b = fv[o]; h >= o; --h) {
-            const int32_t a = fv[h];
-            put(h, a, b);
-            b = a;
-        }
-    }
-    // Now bucket v is [bucket_end[v-1], bucket_end[v]) (bucket_end[-1] = 0).
+}
 
-    // Twins: inside a bucket, equal `other` means the same undirected edge.
-    std::vector<int32_t> edge_of(H, kNone); // first each half-edge's twin, then its edge
+// Phase 1, count: every face of the face set is checked (at least three distinct corners,
+// each an existing vertex) and each of its sides, corner i -> corner i + 1, is counted into
+// the bucket of its lower vertex. false if some face cannot be used.
+bool count_sides(const IndexedMesh& mesh, int32_t* count) {
+    const std::vector<int32_t>& fo = mesh.face_offsets;
+    const std::vector<int32_t>& fv = mesh.face_vertices;
+    for (int32_t f = 0; f < mesh.face_count(); ++f) {
+        const int32_t o = fo[f], n = fo[f + 1] - o;
+        if (!detail::face_corners_ok(&fv[o], n, mesh.vertex_count())) return false;
+        for (int32_t i = 0; i < n; ++i) ++count[std::min(fv[o + i], fv[o + (i + 1) % n])];
+    }
+    return true;
+}
+
+// Phase 2, bucket the sides by vertex pair: side h (corner h -> corner h + 1 of its face)
+// goes into the bucket of its lower vertex, naming the higher one (a counting sort). On
+// entry bucket_end[v] is where bucket v starts; on return, where it ends.
+void bucket_sides(const IndexedMesh& mesh, int32_t* bucket_end, BucketSlot* slots) {
+    const std::vector<int32_t>& fo = mesh.face_offsets;
+    const std::vector<int32_t>& fv = mesh.face_vertices;
+    for (int32_t f = 0; f < mesh.face_count(); ++f) {
+        const int32_t o = fo[f], n = fo[f + 1] - o;
+        for (int32_t i = 0; i < n; ++i) detail::put_side(slots, bucket_end, o + i, fv[o + i], fv[o + (i + 1) % n]);
+    }
+}
+
+// Phase 3, twins: inside a bucket, equal `other` means the same undirected edge, met by
+// two faces that must walk it in opposite directions (the mesh is oriented). edge_of[h]
+// becomes h's twin (kNone on a boundary); returns the number of pairs.
+int32_t pair_twins(const IndexedMesh& mesh, const std::vector<int32_t>& bucket_end, BucketSlot* slots,
+                   std::vector<int32_t>& edge_of) {
     int32_t pairs = 0;
-    for (int32_t v = 0; v < V; ++v) {
-        BucketSlot* first = slots.get() + (v == 0 ? 0 : bucket_end[v - 1]);
-        BucketSlot* last = slots.get() + bucket_end[v];
+    for (int32_t v = 0; v < mesh.vertex_count(); ++v) {
+        BucketSlot* first = slots + (v == 0 ? 0 : bucket_end[v - 1]);
+        BucketSlot* last = slots + bucket_end[v];
         if (last - first > 1) sort_bucket(first, last);
         for (BucketSlot* s = first; s < last;) {
             BucketSlot* t = s + 1;
@@ -145,72 +116,78 @@ WingedEdgeMesh WingedEdgeMesh::build_impl(const IndexedMesh& mesh, const BuildOp
             s = t;
         }
     }
+    return pairs;
+}
 
-    // Edge numbers: order of first appearance walking the faces, oriented as first walked.
-    // In place: a half-edge whose twin comes earlier takes the twin's (already final) number.
-    WingedEdgeMesh m;
-    const int32_t E = H - pairs;
-    m.edges_.resize(E);
-    m.vertex_edge_.assign(V, kNone);
-    m.face_edge_.assign(F, kNone);
-    for (int32_t f = 0, e = 0; f < F; ++f) {
+// Phase 4, number the edges (the edge table's rows and its S and E columns): order of
+// first appearance walking the faces, oriented as first walked. In place: a half-edge
+// whose twin comes earlier takes the twin's (already final) number.
+void number_edges(const IndexedMesh& mesh, std::vector<int32_t>& edge_of, std::vector<EdgeRecord>& edges) {
+    const std::vector<int32_t>& fo = mesh.face_offsets;
+    const std::vector<int32_t>& fv = mesh.face_vertices;
+    for (int32_t f = 0, e = 0; f < mesh.face_count(); ++f) {
         const int32_t o = fo[f], last = fo[f + 1] - 1;
         for (int32_t h = o; h <= last; ++h) {
             const int32_t t = edge_of[h];
             if (t == kNone || t > h) {
-                m.edges_[e].start = fv[h];
-                m.edges_[e].end = fv[h == last ? o : h + 1];
+                edges[e].start = fv[h];
+                edges[e].end = fv[h == last ? o : h + 1];
                 edge_of[h] = e++;
             } else {
                 edge_of[h] = edge_of[t];
             }
         }
     }
+}
 
-    if (!options.edges.empty()) {
-        // The caller fixes numbering and orientation: find each [s, t] in its bucket.
-        if (static_cast<int32_t>(options.edges.size()) != E)
-            throw Error("invalid-edge-list", "the edge list has " + std::to_string(options.edges.size()) +
-                        " edges but the faces have " + std::to_string(E));
-        std::vector<int32_t> renumber(E, kNone);
-        for (int32_t i = 0; i < E; ++i) {
-            const int32_t s = options.edges[i][0], t = options.edges[i][1];
-            const std::string label = edge_label(i) + " = [" + std::to_string(s) + ", " + std::to_string(t) + "]";
-            if (s < 0 || t < 0 || s >= V || t >= V || s == t)
-                throw Error("invalid-edge-list", label + " does not name two different vertices of the mesh");
-            const int32_t lo = std::min(s, t), hi = std::max(s, t);
-            const BucketSlot* first = slots.get() + (lo == 0 ? 0 : bucket_end[lo - 1]);
-            const BucketSlot* last = slots.get() + bucket_end[lo];
-            const BucketSlot* hit = std::lower_bound(first, last, hi,
-                                                     [](const BucketSlot& a, int32_t x) { return a.other < x; });
-            if (hit == last || hit->other != hi)
-                throw Error("invalid-edge-list", label + ": " + vertex_label(s) + "-" + vertex_label(t) +
-                            " is not an edge of any face");
-            int32_t& slot = renumber[edge_of[hit->code >> 1]];
-            if (slot != kNone)
-                throw Error("invalid-edge-list", label + " repeats " + edge_label(slot) + " (" + vertex_label(s) + "-" +
-                            vertex_label(t) + ")");
-            slot = i;
-            m.edges_[i].start = s;
-            m.edges_[i].end = t;
-        }
-        for (int32_t& e : edge_of) e = renumber[e];
+// Phase 4b, the caller's numbering (BuildOptions::edges, e.g. the slide's e1..e7): find
+// each [s, t] in its bucket and renumber and reorient the edge table to match.
+void apply_edge_list(const BuildOptions& options, int32_t V, const std::vector<int32_t>& bucket_end,
+                     const BucketSlot* slots, std::vector<int32_t>& edge_of, std::vector<EdgeRecord>& edges) {
+    const int32_t E = static_cast<int32_t>(edges.size());
+    if (static_cast<int32_t>(options.edges.size()) != E)
+        throw Error("invalid-edge-list", "the edge list has " + std::to_string(options.edges.size()) +
+                    " edges but the faces have " + std::to_string(E));
+    std::vector<int32_t> renumber(E, kNone);
+    for (int32_t i = 0; i < E; ++i) {
+        const int32_t s = options.edges[i][0], t = options.edges[i][1];
+        const std::string label = edge_label(i) + " = [" + std::to_string(s) + ", " + std::to_string(t) + "]";
+        if (s < 0 || t < 0 || s >= V || t >= V || s == t)
+            throw Error("invalid-edge-list", label + " does not name two different vertices of the mesh");
+        const int32_t lo = std::min(s, t), hi = std::max(s, t);
+        const BucketSlot* first = slots + (lo == 0 ? 0 : bucket_end[lo - 1]);
+        const BucketSlot* last = slots + bucket_end[lo];
+        const BucketSlot* hit = std::lower_bound(first, last, hi,
+                                                 [](const BucketSlot& a, int32_t x) { return a.other < x; });
+        if (hit == last || hit->other != hi)
+            throw Error("invalid-edge-list", label + ": " + vertex_label(s) + "-" + vertex_label(t) +
+                        " is not an edge of any face");
+        int32_t& slot = renumber[edge_of[hit->code >> 1]];
+        if (slot != kNone)
+            throw Error("invalid-edge-list", label + " repeats " + edge_label(slot) + " (" + vertex_label(s) + "-" +
+                        vertex_label(t) + ")");
+        slot = i;
+        edges[i].start = s;
+        edges[i].end = t;
     }
-    slots.reset();
-    bucket_end = std::vector<int32_t>();
+    for (int32_t& e : edge_of) e = renumber[e];
+}
 
-    // Wings from each face's previous and next corner; L traverses S->E, R traverses E->S.
-    // A side that no face claims is a boundary; the boundary loop is the face there.
-    std::vector<int32_t> boundary_out(V, kNone); // edge of the boundary half-edge leaving v
-    std::vector<int32_t>& boundary_in = m.vertex_edge_; // ...arriving at v (the default vertex edge)
-    for (int32_t f = 0; f < F; ++f) {
+// Phase 5, the edge table's L and R columns and the four wings from each face's previous
+// and next corner: L traverses S->E, R traverses E->S. Also the face table (each face's
+// first side).
+void fill_face_wings(const IndexedMesh& mesh, const std::vector<int32_t>& edge_of, std::vector<EdgeRecord>& edges,
+                     std::vector<int32_t>& face_edge) {
+    const std::vector<int32_t>& fo = mesh.face_offsets;
+    const std::vector<int32_t>& fv = mesh.face_vertices;
+    for (int32_t f = 0; f < mesh.face_count(); ++f) {
         const int32_t o = fo[f], last = fo[f + 1] - 1;
         const int32_t first = edge_of[o];
-        m.face_edge_[f] = first; // default face edge: the face's first side (corner 1 -> 2)
+        face_edge[f] = first; // default face edge: the face's first side (corner 1 -> 2)
         int32_t prev = edge_of[last], e = first;
         for (int32_t h = o; h <= last; ++h) {
             const int32_t next = h == last ? first : edge_of[h + 1];
-            EdgeRecord& r = m.edges_[e];
+            EdgeRecord& r = edges[e];
             if (r.start == fv[h]) {
                 r.left = f;
                 r.start_left = prev;
@@ -224,9 +201,17 @@ WingedEdgeMesh WingedEdgeMesh::build_impl(const IndexedMesh& mesh, const BuildOp
             e = next;
         }
     }
-    edge_of = std::vector<int32_t>();
+}
+
+// Phase 6, the boundary wings: a side that no face claims is a boundary, and the lecture
+// defines its wings "as though the boundary was also a face". boundary_in[v] (the vertex
+// table's default edge) and boundary_out[v] are the boundary edges arriving at and leaving
+// v; a second one at the same vertex is a bow-tie.
+void fill_boundary_wings(const IndexedMesh& mesh, std::vector<EdgeRecord>& edges, std::vector<int32_t>& boundary_in,
+                         std::vector<int32_t>& boundary_out) {
+    const int32_t E = static_cast<int32_t>(edges.size());
     for (int32_t e = 0; e < E; ++e) {
-        const EdgeRecord& r = m.edges_[e];
+        const EdgeRecord& r = edges[e];
         if (r.left != kNone && r.right != kNone) continue;
         // The boundary half-edge runs opposite to the face's: S->E when L is missing.
         const int32_t from = r.left == kNone ? r.start : r.end;
@@ -236,7 +221,7 @@ WingedEdgeMesh WingedEdgeMesh::build_impl(const IndexedMesh& mesh, const BuildOp
         boundary_in[to] = e;
     }
     for (int32_t e = 0; e < E; ++e) {
-        EdgeRecord& r = m.edges_[e];
+        EdgeRecord& r = edges[e];
         if (r.left == kNone) {
             r.start_left = boundary_in[r.start];
             r.end_left = boundary_out[r.end];
@@ -245,21 +230,27 @@ WingedEdgeMesh WingedEdgeMesh::build_impl(const IndexedMesh& mesh, const BuildOp
             r.end_right = boundary_in[r.end];
         }
     }
+}
 
-    // Default vertex edge: after the boundary gap (already in place), else the lowest.
-    std::vector<int32_t>& degree = boundary_out;
+// Phase 7, the vertex table's edge column: after the boundary gap (already in place),
+// else the lowest-numbered incident edge. Also counts each vertex's degree.
+void choose_vertex_edges(const std::vector<EdgeRecord>& edges, std::vector<int32_t>& vertex_edge,
+                         std::vector<int32_t>& degree) {
     std::fill(degree.begin(), degree.end(), 0);
-    for (int32_t e = 0; e < E; ++e) {
-        const EdgeRecord& r = m.edges_[e];
+    for (int32_t e = 0; e < static_cast<int32_t>(edges.size()); ++e) {
+        const EdgeRecord& r = edges[e];
         ++degree[r.start];
         ++degree[r.end];
-        if (m.vertex_edge_[r.start] == kNone) m.vertex_edge_[r.start] = e;
-        if (m.vertex_edge_[r.end] == kNone) m.vertex_edge_[r.end] = e;
+        if (vertex_edge[r.start] == kNone) vertex_edge[r.start] = e;
+        if (vertex_edge[r.end] == kNone) vertex_edge[r.end] = e;
     }
+}
 
-    // One fan per vertex: the CCW walk must meet every incident edge (else a bow-tie).
-    for (int32_t v = 0; v < V; ++v) {
-        const int32_t first = m.vertex_edge_[v];
+// Phase 8, manifoldness at the vertices: one fan per vertex, so the lecture's CCW walk
+// must meet every incident edge (else a bow-tie).
+void check_one_fan_per_vertex(const IndexedMesh& mesh, const WingedEdgeMesh& m, const std::vector<int32_t>& degree) {
+    for (int32_t v = 0; v < m.vertex_count(); ++v) {
+        const int32_t first = m.vertex_edge(v);
         if (first == kNone) continue;
         int32_t e = first, steps = 0;
         do {
@@ -268,47 +259,141 @@ WingedEdgeMesh WingedEdgeMesh::build_impl(const IndexedMesh& mesh, const BuildOp
         } while (e != first && steps <= degree[v]);
         if (steps != degree[v]) refuse(mesh);
     }
-    // Two faces on exactly the same edges (a pillow of duplicates).
-    for (int32_t f = 0; f < F; ++f) {
-        const EdgeRecord& r0 = m.edges_[m.face_edge_[f]];
+}
+
+// Phase 9, no two faces on exactly the same edges (a pillow of duplicates), by the
+// lecture's walk along each face.
+void check_no_duplicate_faces(const IndexedMesh& mesh, const WingedEdgeMesh& m) {
+    const std::vector<int32_t>& fo = mesh.face_offsets;
+    for (int32_t f = 0; f < m.face_count(); ++f) {
+        const EdgeRecord& r0 = m.edge(m.face_edge(f));
         const int32_t g = r0.left == f ? r0.right : r0.left;
         if (g == kNone || fo[g + 1] - fo[g] != fo[f + 1] - fo[f]) continue;
         bool all_shared = true;
-        int32_t e = m.face_edge_[f];
+        int32_t e = m.face_edge(f);
         do {
-            const EdgeRecord& r = m.edges_[e];
+            const EdgeRecord& r = m.edge(e);
             if ((r.left == f ? r.right : r.left) != g) all_shared = false;
             e = m.next_in_face(e, f);
-        } while (all_shared && e != m.face_edge_[f]);
+        } while (all_shared && e != m.face_edge(f));
         if (all_shared) refuse(mesh);
     }
+}
 
-    if (!options.vertex_edges.empty()) {
-        if (static_cast<int32_t>(options.vertex_edges.size()) != V)
-            throw Error("invalid-vertex-edge", "vertexEdges has " + std::to_string(options.vertex_edges.size()) +
-                        " entries but the mesh has " + std::to_string(V) + " vertices");
-        for (int32_t v = 0; v < V; ++v) {
-            const int32_t e = options.vertex_edges[v];
-            const bool isolated = degree[v] == 0;
-            const bool ok = isolated ? e == kNone
-                                     : (e >= 0 && e < E && (m.edges_[e].start == v || m.edges_[e].end == v));
-            if (!ok)
-                throw Error("invalid-vertex-edge", "vertexEdges gives " + (e >= 0 && e < E ? edge_label(e) : std::to_string(e)) +
-                            " for " + vertex_label(v) + ", but that edge does not touch " + vertex_label(v));
-            m.vertex_edge_[v] = e;
-        }
+// Phase 10, the caller's vertex edges (BuildOptions::vertex_edges, e.g. the slide's
+// vertex table): each must touch its vertex; an isolated vertex keeps kNone.
+void apply_vertex_edges(const BuildOptions& options, const std::vector<EdgeRecord>& edges,
+                        const std::vector<int32_t>& degree, std::vector<int32_t>& vertex_edge) {
+    const int32_t V = static_cast<int32_t>(vertex_edge.size()), E = static_cast<int32_t>(edges.size());
+    if (static_cast<int32_t>(options.vertex_edges.size()) != V)
+        throw Error("invalid-vertex-edge", "vertexEdges has " + std::to_string(options.vertex_edges.size()) +
+                    " entries but the mesh has " + std::to_string(V) + " vertices");
+    for (int32_t v = 0; v < V; ++v) {
+        const int32_t e = options.vertex_edges[v];
+        const bool isolated = degree[v] == 0;
+        const bool ok = isolated ? e == kNone
+                                 : (e >= 0 && e < E && (edges[e].start == v || edges[e].end == v));
+        if (!ok)
+            throw Error("invalid-vertex-edge", "vertexEdges gives " + (e >= 0 && e < E ? edge_label(e) : std::to_string(e)) +
+                        " for " + vertex_label(v) + ", but that edge does not touch " + vertex_label(v));
+        vertex_edge[v] = e;
     }
+}
+
+// Phase 11, the caller's face edges (BuildOptions::face_edges, e.g. the slide's face
+// table): each must be a side of its face.
+void apply_face_edges(const BuildOptions& options, const std::vector<EdgeRecord>& edges, std::vector<int32_t>& face_edge) {
+    const int32_t F = static_cast<int32_t>(face_edge.size()), E = static_cast<int32_t>(edges.size());
+    if (static_cast<int32_t>(options.face_edges.size()) != F)
+        throw Error("invalid-face-edge", "faceEdges has " + std::to_string(options.face_edges.size()) +
+                    " entries but the mesh has " + std::to_string(F) + " faces");
+    for (int32_t f = 0; f < F; ++f) {
+        const int32_t e = options.face_edges[f];
+        if (e < 0 || e >= E || (edges[e].left != f && edges[e].right != f))
+            throw Error("invalid-face-edge", "faceEdges gives " + (e >= 0 && e < E ? edge_label(e) : std::to_string(e)) +
+                        " for " + face_label(f) + ", but that edge is not a side of " + face_label(f));
+        face_edge[f] = e;
+    }
+}
+
+} // namespace
+
+namespace detail {
+
+bool face_corners_ok(const int32_t* corners, int32_t n, int32_t V) {
+    if (n < 3) return false;
+    for (int32_t i = 0; i < n; ++i)
+        if (corners[i] < 0 || corners[i] >= V) return false;
+    return corners_distinct(corners, n);
+}
+
+} // namespace detail
+
+WingedEdgeMesh WingedEdgeMesh::build(const IndexedMesh& mesh, const BuildOptions& options) {
+    return build_impl(mesh, options, nullptr, true);
+}
+
+WingedEdgeMesh WingedEdgeMesh::build(IndexedMesh&& mesh, const BuildOptions& options) {
+    return build_impl(mesh, options, &mesh.positions, true);
+}
+
+WingedEdgeMesh WingedEdgeMesh::build_reference(const IndexedMesh& mesh, const BuildOptions& options) {
+    return build_impl(mesh, options, nullptr, false);
+}
+
+WingedEdgeMesh WingedEdgeMesh::build_impl(const IndexedMesh& mesh, const BuildOptions& options,
+                                          std::vector<double>* positions_to_take, bool fast_kernels) {
+    const int32_t V = mesh.vertex_count();
+    const int32_t F = mesh.face_count();
+    check_positions(mesh);
+    const int32_t H = mesh.face_offsets[F];
+
+    // Phases 1 and 2: count the sides per lower vertex, then bucket them (CSR).
+    std::vector<int32_t> bucket_end(static_cast<std::size_t>(V) + 1, 0);
+    if (!(fast_kernels ? detail::count_sides_fast(mesh, bucket_end.data() + 1) : count_sides(mesh, bucket_end.data() + 1)))
+        refuse(mesh);
+    for (int32_t v = 0; v < V; ++v) bucket_end[v + 1] += bucket_end[v];
+    std::unique_ptr<BucketSlot[]> slots(new BucketSlot[H]); // every slot is written below
+    if (fast_kernels)
+        detail::bucket_sides_fast(mesh, bucket_end.data(), slots.get());
+    else
+        bucket_sides(mesh, bucket_end.data(), slots.get());
+    // Now bucket v is [bucket_end[v-1], bucket_end[v]) (bucket_end[-1] = 0).
+
+    std::vector<int32_t> edge_of(H, kNone); // first each half-edge's twin, then its edge
+    const int32_t pairs = pair_twins(mesh, bucket_end, slots.get(), edge_of);
+
+    WingedEdgeMesh m;
+    m.edges_.resize(H - pairs);
+    m.vertex_edge_.assign(V, kNone);
+    m.face_edge_.assign(F, kNone);
+    number_edges(mesh, edge_of, m.edges_);
+    if (!options.edges.empty()) apply_edge_list(options, V, bucket_end, slots.get(), edge_of, m.edges_);
+    slots.reset();
+    bucket_end = std::vector<int32_t>();
+
+    fill_face_wings(mesh, edge_of, m.edges_, m.face_edge_);
+    edge_of = std::vector<int32_t>();
+    std::vector<int32_t> scratch(V, kNone); // the boundary edge leaving each vertex, then its degree
+    fill_boundary_wings(mesh, m.edges_, m.vertex_edge_, scratch);
+    std::vector<int32_t>& degree = scratch;
+    choose_vertex_edges(m.edges_, m.vertex_edge_, degree);
+
+    check_one_fan_per_vertex(mesh, m, degree);
+    check_no_duplicate_faces(mesh, m);
+
+    if (!options.vertex_edges.empty()) apply_vertex_edges(options, m.edges_, degree, m.vertex_edge_);
     if (!options.face_edges.empty()) {
-        if (static_cast<int32_t>(options.face_edges.size()) != F)
-            throw Error("invalid-face-edge", "faceEdges has " + std::to_string(options.face_edges.size()) +
-                        " entries but the mesh has " + std::to_string(F) + " faces");
-        for (int32_t f = 0; f < F; ++f) {
-            const int32_t e = options.face_edges[f];
-            if (e < 0 || e >= E || (m.edges_[e].left != f && m.edges_[e].right != f))
-                throw Error("invalid-face-edge", "faceEdges gives " + (e >= 0 && e < E ? edge_label(e) : std::to_string(e)) +
-                            " for " + face_label(f) + ", but that edge is not a side of " + face_label(f));
-            m.face_edge_[f] = e;
-        }
+        apply_face_edges(options, m.edges_, m.face_edge_);
+        // face_set() lists each face from its first corner as given, wherever its walk now starts.
+        const int32_t* fo = mesh.face_offsets.data();
+        const int32_t* fv = mesh.face_vertices.data();
+        for (int32_t f = 0; f < F; ++f)
+            if (m.walk_start_corner(f) != fv[fo[f]]) {
+                m.face_first_corner_.resize(F);
+                for (int32_t g = 0; g < F; ++g) m.face_first_corner_[g] = fv[fo[g]];
+                break;
+            }
     }
     // Last, so that every refusal above still sees the caller's positions.
     if (positions_to_take)
@@ -332,9 +417,114 @@ void WingedEdgeMesh::set_position(int32_t v, const glm::dvec3& p) {
             throw Error("coordinate-out-of-range", where + buf + ": coordinates are limited to 1e9 in size");
         }
     }
+    if (positions_[3 * v] == p.x && positions_[3 * v + 1] == p.y && positions_[3 * v + 2] == p.z) return;
     positions_[3 * v] = p.x;
     positions_[3 * v + 1] = p.y;
     positions_[3 * v + 2] = p.z;
+    ++version_.geometry;
+}
+
+// ------------------------------------------------------------------ the change model
+
+const char* table_name(MeshTable t) {
+    switch (t) {
+    case MeshTable::Vertex: return "vertex";
+    case MeshTable::Edge: return "edge";
+    case MeshTable::Face: return "face";
+    }
+    return "unknown";
+}
+
+namespace {
+std::string range_message(const char* what, int32_t index, int32_t count) {
+    return std::string(what) + " index " + std::to_string(index) + " is out of range: the mesh has " + what + "s 0 to " +
+           std::to_string(count - 1);
+}
+std::string edge_list(const std::vector<int32_t>& edges) {
+    std::string out;
+    for (int32_t e : edges) out += (out.empty() ? "" : ", ") + edge_label(e);
+    return out;
+}
+} // namespace
+
+CheckResult WingedEdgeMesh::check_element(Vertex v) const {
+    if (v.idx < 0 || v.idx >= vertex_count()) return CheckResult::refuse("invalid-element", range_message("vertex", v.idx, vertex_count()));
+    if (is_deleted(v)) return CheckResult::refuse("deleted-element", vertex_label(v.idx) + " has been deleted");
+    return CheckResult::accept();
+}
+CheckResult WingedEdgeMesh::check_element(Edge e) const {
+    if (e.idx < 0 || e.idx >= edge_count()) return CheckResult::refuse("invalid-element", range_message("edge", e.idx, edge_count()));
+    if (is_deleted(e)) return CheckResult::refuse("deleted-element", edge_label(e.idx) + " has been deleted");
+    return CheckResult::accept();
+}
+CheckResult WingedEdgeMesh::check_element(Face f) const {
+    if (f.idx < 0 || f.idx >= face_count()) return CheckResult::refuse("invalid-element", range_message("face", f.idx, face_count()));
+    if (is_deleted(f)) return CheckResult::refuse("deleted-element", face_label(f.idx) + " has been deleted");
+    return CheckResult::accept();
+}
+
+CheckResult WingedEdgeMesh::check_set_vertex_edge(Vertex v, Edge e) const {
+    for (const CheckResult& c : {check_element(v), check_element(e)})
+        if (!c.ok) return c;
+    const EdgeRecord& r = edges_[e.idx];
+    if (r.start == v.idx || r.end == v.idx) return CheckResult::accept();
+    if (vertex_edge_[v.idx] == kNone)
+        return CheckResult::refuse("edge-not-incident", vertex_label(v.idx) + " belongs to no face, so it has no edge to store (" +
+                                   edge_label(e.idx) + " does not touch it)");
+    return CheckResult::refuse("edge-not-incident", edge_label(e.idx) + " does not touch " + vertex_label(v.idx) +
+                               ": the vertex table stores one of " + vertex_label(v.idx) + "'s own edges (" +
+                               edge_list(edges_around_vertex(v.idx)) + ")");
+}
+
+CheckResult WingedEdgeMesh::check_set_face_edge(Face f, Edge e) const {
+    for (const CheckResult& c : {check_element(f), check_element(e)})
+        if (!c.ok) return c;
+    const EdgeRecord& r = edges_[e.idx];
+    if (r.left == f.idx || r.right == f.idx) return CheckResult::accept();
+    return CheckResult::refuse("edge-not-on-face", edge_label(e.idx) + " is not a side of " + face_label(f.idx) +
+                               ": the face table stores one of " + face_label(f.idx) + "'s own edges (" +
+                               edge_list(edges_of_face(f.idx)) + ")");
+}
+
+namespace {
+void require_ok(const CheckResult& c) {
+    if (!c.ok) throw Error(c.code, c.message);
+}
+} // namespace
+
+ChangeRecord WingedEdgeMesh::set_vertex_edge(Vertex v, Edge e) {
+    require_ok(check_set_vertex_edge(v, e));
+    ChangeRecord change;
+    change.op = "set-vertex-edge";
+    change.before = version_;
+    const int32_t before = vertex_edge_[v.idx];
+    if (before != e.idx) {
+        vertex_edge_[v.idx] = e.idx;
+        ++version_.topology;
+        change.rows.push_back({MeshTable::Vertex, v.idx, {{"edge", before, e.idx}}});
+    }
+    change.after = version_;
+    return change;
+}
+
+ChangeRecord WingedEdgeMesh::set_face_edge(Face f, Edge e) {
+    require_ok(check_set_face_edge(f, e));
+    ChangeRecord change;
+    change.op = "set-face-edge";
+    change.before = version_;
+    const int32_t before = face_edge_[f.idx];
+    if (before != e.idx) {
+        // Keep the face set's listing: until now every face was listed from its walk start.
+        if (face_first_corner_.empty()) {
+            face_first_corner_.resize(face_edge_.size());
+            for (int32_t g = 0; g < face_count(); ++g) face_first_corner_[g] = walk_start_corner(g);
+        }
+        face_edge_[f.idx] = e.idx;
+        ++version_.topology;
+        change.rows.push_back({MeshTable::Face, f.idx, {{"edge", before, e.idx}}});
+    }
+    change.after = version_;
+    return change;
 }
 
 std::vector<int32_t> WingedEdgeMesh::edges_around_vertex(int32_t v) const {
@@ -347,28 +537,6 @@ std::vector<int32_t> WingedEdgeMesh::edges_around_vertex(int32_t v) const {
         e = next_ccw(e, v);
     } while (e != first && out.size() <= edges_.size());
     return out;
-}
-
-RingWalkTotals WingedEdgeMesh::walk_every_ring() const {
-    RingWalkTotals totals;
-    for (int32_t v = 0; v < vertex_count(); ++v) {
-        const int32_t first = vertex_edge_[v];
-        if (first == kNone) continue;
-        int32_t e = first;
-        do {
-            const EdgeRecord& r = edges_[e];
-            totals.visited += 1;
-            if (r.start == v) {
-                totals.neighbour_sum += r.end;
-                e = r.start_left;
-            } else {
-                WINGSPLINE_KEEP_BRANCH();
-                totals.neighbour_sum += r.start;
-                e = r.end_right;
-            }
-        } while (e != first);
-    }
-    return totals;
 }
 
 std::vector<TraversalStep> WingedEdgeMesh::traversal_steps(int32_t v) const {
@@ -448,7 +616,11 @@ IndexedMesh WingedEdgeMesh::face_set() const {
     out.face_vertices.reserve(2 * edges_.size()); // sides of all faces <= 2E
     for (int32_t f = 0; f < face_count(); ++f) {
         const std::vector<int32_t> corners = vertices_of_face(f);
-        out.face_vertices.insert(out.face_vertices.end(), corners.begin(), corners.end());
+        const auto first = face_first_corner_.empty()
+                               ? corners.begin()
+                               : std::find(corners.begin(), corners.end(), face_first_corner_[f]);
+        out.face_vertices.insert(out.face_vertices.end(), first, corners.end());
+        out.face_vertices.insert(out.face_vertices.end(), corners.begin(), first);
         out.face_offsets.push_back(static_cast<int32_t>(out.face_vertices.size()));
     }
     return out;
@@ -586,6 +758,12 @@ ValidationReport WingedEdgeMesh::validate() const {
         if (!ok || e != first)
             add("open-face-loop", "walking the edges of " + face_label(f) + " from " + edge_label(first) +
                 " does not come back around the face", {}, {first}, {f});
+    }
+    for (int32_t f = 0; f < static_cast<int32_t>(face_first_corner_.size()) && f < F; ++f) {
+        const std::vector<int32_t> corners = vertices_of_face(f);
+        if (std::find(corners.begin(), corners.end(), face_first_corner_[f]) == corners.end())
+            add("face-first-corner-not-on-face", face_label(f) + " is listed from " + vertex_label(face_first_corner_[f]) +
+                ", which is not one of its corners", {face_first_corner_[f]}, {}, {f});
     }
     if (walked != sides)
         add("open-face-loop", "the face loops cover " + std::to_string(walked) + " edge sides but the edge table names " +

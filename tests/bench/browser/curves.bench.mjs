@@ -22,16 +22,17 @@ if (wants('ui_drag')) {
       const { ctx } = window.wingspline;
       const s = ctx.state;
       ctx.commit({ ...s, points: [[0, 0], [1, 2], [2, 2.5], [3, 2], [4, 1], [5, 0]], weights: [1, 1, 1, 1, 1, 1], tangents: Array(6).fill([1, 0]) });
-      ctx.setView(ctx.lesson.fitView(ctx.model, ctx.stage)); // all six points on screen
+      ctx.fitView(); // all six points on screen
     });
     const samples = await page.evaluate(() => window.wingspline.model.samples.length / 2);
     const p = (await page.evaluate(() => window.wingspline.handles())).find((x) => x.id === 'p2');
     // Instrument: the pointermove handler (the core recomputes inside it) from a window
     // capture listener (first) to a window bubble listener (last), plus the panel update
-    // and the drawing of the frame that follows (lesson.update and lesson.draw, wrapped).
+    // and the drawing of the frame that follows (lesson.update, lesson.draw and
+    // lesson.afterFrame (the side plots), wrapped; the shell reads hooks when it calls them).
     // The idle wait for the next frame is not work and is not counted.
     await page.evaluate(() => {
-      const { lesson } = window.wingspline.ctx;
+      const lesson = window.wingspline.hooks;
       const times = [];
       const phases = [];
       window.__dragTimes = times;
@@ -42,12 +43,15 @@ if (wants('ui_drag')) {
       window.addEventListener('pointermove', () => { pending = performance.now() - t0; }, false);
       const update = lesson.update;
       const draw = lesson.draw;
+      const afterFrame = lesson.afterFrame;
       let updateTime = 0;
+      let drawStart = 0;
       lesson.update = (...args) => { const a = performance.now(); update(...args); updateTime = performance.now() - a; };
-      lesson.draw = (...args) => {
-        const a = performance.now();
-        draw(...args);
-        const drawTime = performance.now() - a;
+      lesson.draw = (...args) => { drawStart = performance.now(); draw(...args); };
+      // The shell calls afterFrame after draw on every canvas frame: the frame ends here.
+      lesson.afterFrame = (...args) => {
+        afterFrame?.(...args);
+        const drawTime = performance.now() - drawStart;
         if (pending !== null) {
           times.push(pending + updateTime + drawTime);
           phases.push([pending, updateTime, drawTime]);

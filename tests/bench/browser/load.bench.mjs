@@ -10,6 +10,7 @@ import zlib from 'node:zlib';
 import { report, wants } from '../wasm/harness.mjs';
 import { launchBrowser, startSite, repoRoot } from '../../helpers/browser.mjs';
 import { lessons } from '../../../web/js/lessons/registry.js';
+import { startClassroomSite } from '../../helpers/classroom.mjs';
 
 const REPETITIONS = 7;
 const gzipSize = (bytes) => zlib.gzipSync(bytes, { level: 9 }).length;
@@ -29,7 +30,7 @@ function distGzipBytes() {
 if (wants('ui_load')) {
   const first = lessons.find((l) => l.ready);
   const pageFile = first ? first.page : 'fixture.html';
-  const site = await startSite({ overlays: first ? [] : [path.join(repoRoot, 'tests', 'fixtures', 'site')] });
+  const site = first ? await startSite() : await startClassroomSite();
   const browser = await launchBrowser();
   const ms = [];
   let transfer = null;

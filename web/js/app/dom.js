@@ -42,6 +42,7 @@ export function panel(container, { id, title, open = true }) {
 }
 
 // A table from header rows and body rows (arrays of strings/numbers/Nodes).
+/** @param {{ caption?: string, head?: any[][], rows?: any[][], className?: string }} options */
 export function table({ caption, head = [], rows = [], className = 'data-table' }) {
   const thead = h('thead', {}, head.map((row) => h('tr', {}, row.map((cell) =>
     typeof cell === 'object' && cell !== null && !(cell instanceof Node)
@@ -79,6 +80,7 @@ const overflowObserver = typeof ResizeObserver === 'undefined' ? null : new Resi
   }
 });
 
+/** @param {ParentNode} [root] */
 export function watchScrollRegions(root = document) {
   if (!overflowObserver) return;
   for (const box of root.querySelectorAll(SCROLL_BOXES)) {

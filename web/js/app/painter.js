@@ -9,7 +9,11 @@
 export class Transform {
   // world (x, y) -> screen (cssX, cssY): y up in the world, down on screen.
   constructor({ cx = 0, cy = 0, zoom = 100, width = 800, height = 600 } = {}) {
-    Object.assign(this, { cx, cy, zoom, width, height });
+    this.cx = cx;
+    this.cy = cy;
+    this.zoom = zoom;
+    this.width = width;
+    this.height = height;
   }
   toScreen(x, y) { return [this.width / 2 + (x - this.cx) * this.zoom, this.height / 2 - (y - this.cy) * this.zoom]; }
   toWorld(sx, sy) { return [this.cx + (sx - this.width / 2) / this.zoom, this.cy - (sy - this.height / 2) / this.zoom]; }

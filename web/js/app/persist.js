@@ -136,7 +136,7 @@ export async function readLink(lesson, code, { contents } = {}) {
 // notify(kind, detail) is called once per kind when something cannot be kept:
 // 'storage-full' (local storage refuses the state: the link still holds it) and
 // 'content-not-stored' (a large field could not be put in IndexedDB).
-export function createPersister(lesson, { delayMs = 200, contents = null, notify = () => {} } = {}) {
+export function createPersister(lesson, { delayMs = 200, contents = null, notify = (kind, detail) => {} } = {}) {
   let timer = null;
   let pending = null;
   let lastCode = readHashCode();

@@ -124,3 +124,7 @@ export function checkChange(shape, next, previous, checkState) {
     return `the change breaks a rule of the lesson (${err.message})`;
   }
 }
+
+// The 2D view a drawing lesson keeps in its state: the centre (world units) and the zoom
+// (CSS pixels per world unit).
+export const viewSchema = () => object({ cx: number(), cy: number(), zoom: number({ min: 1, max: 1e5 }) });

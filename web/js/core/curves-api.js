@@ -251,7 +251,41 @@ export function createCurvesApi(raw) {
     // inside the domain), continuity (C^(p-m) at that knot; -1: the curve may jump) }.
     knotMultiplicities(curve) {
       const r = unwrap(raw.bsplineKnotMultiplicities(normalizeCurve(curve)));
-      return { values: r.values, multiplicities: r.multiplicities, firstIndices: r.firstIndices, interior: r.interior, continuity: r.continuity };
+      return { knots: r.knots, values: r.values, multiplicities: r.multiplicities, firstIndices: r.firstIndices, interior: r.interior, continuity: r.continuity };
+    },
+    // The index of the segment (as segmentMatrices numbers them) holding the parameter u:
+    // B-splines count the non-empty knot spans, the end of the domain is in the last segment.
+    segmentAt(curve, u) {
+      return unwrap(raw.curveSegmentAt(normalizeCurve(curve), finiteNumber(u, 'u'))).segment;
+    },
+    // Knot vector presets (K + p + 1 values, Float64Array; new values rounded to 1e-9):
+    // clamped (p+1 zeros, interior j/(K-p), p+1 ones), uniform (t_j = j - p), unclamped
+    // (the same domain and interior knots, the ends spread with the neighbouring spacing).
+    clampedKnots(count, degree) {
+      return unwrap(raw.knotVector('clamped', wholeNumber(count, 'count', 1, 2 ** 31 - 1), wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'), EMPTY)).knots;
+    },
+    uniformKnots(count, degree) {
+      return unwrap(raw.knotVector('uniform', wholeNumber(count, 'count', 1, 2 ** 31 - 1), wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'), EMPTY)).knots;
+    },
+    unclampedKnots(knots, degree) {
+      return unwrap(raw.knotVector('unclamped', 0, wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'), numbers(knots, 'knots'))).knots;
+    },
+    isClampedKnots(knots, degree) {
+      return unwrap(raw.knotsClamped(numbers(knots, 'knots'), wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'))).clamped;
+    },
+    // Continuity constraints of a piecewise curve (4 entries per segment: Bezier P0..P3 or
+    // Hermite p0, p1, t0, t1; dim numbers each), mode 'free' | 'C0' | 'G1' | 'C1' | 'C2':
+    // the entries after dragging entry `index` to `to`, after applying the mode at every
+    // joint, or with one more segment (B-spline and Catmull-Rom windows: one more point).
+    dragWithConstraint(points, dim, family, mode, index, to) {
+      return unwrap(raw.jointConstraint('drag', numbers(points, 'points'), dimension(dim), cubicBasis(family, 'family'), String(mode),
+        wholeNumber(index, 'index', 0, 2 ** 31 - 1), numbers(to, 'to'))).points;
+    },
+    enforceConstraint(points, dim, family, mode) {
+      return unwrap(raw.jointConstraint('enforce', numbers(points, 'points'), dimension(dim), cubicBasis(family, 'family'), String(mode), 0, EMPTY)).points;
+    },
+    appendSegment(points, dim, family, mode) {
+      return unwrap(raw.jointConstraint('append', numbers(points, 'points'), dimension(dim), cubicBasis(family, 'family'), String(mode), 0, EMPTY)).points;
     },
     // Exact conics as NURBS curves (degree 2), ready for evaluateCurve.
     nurbsCircle({ center = [0, 0], radius = 1, dim = center.length } = {}) {

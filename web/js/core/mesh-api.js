@@ -3,12 +3,12 @@
 // handle, and mesh.dispose() frees it at once (a FinalizationRegistry is only a safety net
 // for a forgotten dispose, never the mechanism). See docs/api-mesh.md.
 import { WingsplineError, unwrap, fail, integerIn, isNumberArray } from './errors.js';
+import { readTable, findDescriptor } from './tables.js';
 
 // Mesh files cross into the module as UTF-8 bytes, copied once (see meshParse).
 const utf8 = new TextEncoder();
 
 const INT32_MAX = 2147483647;
-const EDGE_FIELDS = ['start', 'end', 'left', 'right', 'startLeft', 'startRight', 'endLeft', 'endRight'];
 
 function checkPositions(positions) {
   if (!isNumberArray(positions)) fail('invalid-argument', 'positions must be an array or Float64Array of numbers (x, y, z per vertex)');
@@ -82,6 +82,14 @@ function indexedOutput(r, layout) {
   return out;
 }
 
+function deepFreeze(x) {
+  if (x !== null && typeof x === 'object') {
+    for (const v of Object.values(x)) deepFreeze(v);
+    Object.freeze(x);
+  }
+  return x;
+}
+
 function pairs(flat) {
   const out = [];
   for (let i = 0; i + 1 < flat.length; i += 2) out.push([flat[i], flat[i + 1]]);
@@ -100,25 +108,6 @@ export const QUERY_KINDS = Object.freeze([
   'faces-around-vertex', 'edges-around-vertex', 'edges-of-face', 'faces-of-edge', 'neighbours-of-face',
 ]);
 
-// CSR rows [offsets[i], offsets[i+1]) of each list as plain arrays, one object per row.
-// CSR rows from a window of a table: offsets are absolute, the lists start at offsets[0].
-function csrRows(offsets, lists) {
-  const rows = [];
-  const base = offsets[0] ?? 0;
-  for (let i = 0; i + 1 < offsets.length; i += 1) {
-    const row = {};
-    for (const [name, list] of Object.entries(lists)) row[name] = Array.from(list.subarray(offsets[i] - base, offsets[i + 1] - base));
-    rows.push(row);
-  }
-  return rows;
-}
-
-function xyzRows(positions) {
-  const rows = [];
-  for (let i = 0; 3 * i + 2 < positions.length; i += 1) rows.push([positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]]);
-  return rows;
-}
-
 function storageValue(s) {
   return {
     entries: s.entries,
@@ -127,25 +116,64 @@ function storageValue(s) {
   };
 }
 
+// For bench-hooks.js only (benchAccess below): a live mesh's handle, read through the class's
+// private field, and the raw module of an api object (keyed on its buildMesh function,
+// which the api object shares with the object createMeshApi returns).
+let handleOfMesh;
+const rawOfBuildMesh = new WeakMap();
+
+// The mesh operations (docs/api-mesh.md, "Changing a mesh"): the op name the core knows
+// and the element kind each one names.
+const OPERATIONS = Object.freeze({
+  'set-vertex-edge': 'vertex',
+  'set-face-edge': 'face',
+});
+
 export class Mesh {
+  static {
+    handleOfMesh = (mesh) => mesh.#live();
+  }
+
   #raw;
   #handle;
-  // The face set (CSR) the mesh was built from, kept in JS only when the caller chose the
-  // face edges (then a face's walk may start at another corner) until the other
-  // representations are first needed. Otherwise the core reads the faces back from the
-  // winged edge, whose default face edge is each face's first side.
-  #faceSet;
-  #faces; // F, cached on first need (connectivity never changes)
-  #representationsBuilt = false;
+  #id;
+  // {topology, geometry}: the core's MeshVersion, mirrored from every call that may change
+  // it (this object is the only owner of its handle, so the mirror cannot go stale; the
+  // wasm tests compare it with the core's). Every cache below is keyed on it.
+  #version = Object.freeze({ topology: 0, geometry: 0 });
+  #faces = { topology: -1, count: 0 }; // F, for the topology it was read at
 
-  constructor(raw, handle, faceSet = null) {
+  #descriptors; // every table's descriptor (the core's, read once per API)
+
+  constructor(raw, handle, descriptors = []) {
     this.#raw = raw;
     this.#handle = handle;
-    this.#faceSet = faceSet;
+    this.#id = handle;
+    this.#descriptors = descriptors;
     safetyNet?.register(this, { raw, handle }, this);
   }
 
   get disposed() { return this.#handle === 0; }
+
+  // Which mesh this is: unique among the meshes built by one module, never reused. A
+  // version is comparable only within one mesh, so a cache key is (id, version).
+  get id() { return this.#id; }
+
+  // Which state of this mesh this is: {topology, geometry}. topology moves on by one with
+  // every operation that changed the connectivity tables, geometry with every position change.
+  get version() { return this.#version; }
+
+  #setVersion(v) {
+    if (v.topology !== this.#version.topology || v.geometry !== this.#version.geometry) {
+      this.#version = Object.freeze({ topology: v.topology, geometry: v.geometry });
+    }
+  }
+
+  // The core's own count, for tests of the mirror above.
+  coreVersion() {
+    const { topology, geometry } = unwrap(this.#raw.meshVersion(this.#live()));
+    return { topology, geometry };
+  }
 
   // Frees the mesh in the core. Idempotent; every other call afterwards throws 'disposed'.
   dispose() {
@@ -160,51 +188,35 @@ export class Mesh {
     return this.#handle;
   }
 
-  // Builds independent faces, vertex/face tables, the adjacency lists and the edge list in
-  // the core on first use (they are not part of the winged edge's bytes).
-  #representationsReady() {
-    const handle = this.#live();
-    if (this.#faceSet !== null) {
-      const { faceOffsets, faceVertices } = this.#faceSet;
-      unwrap(this.#raw.meshBuildRepresentations(handle, faceOffsets, faceVertices));
-      this.#faceSet = null;
-    } else if (!this.#representationsBuilt) {
-      unwrap(this.#raw.meshBuildRepresentations(handle, null, null));
-    }
-    this.#representationsBuilt = true;
-    return handle;
-  }
-
   #adjacency(kind, element, what) {
     integerIn(element, what, 0, INT32_MAX);
     return unwrap(this.#raw.meshAdjacency(this.#live(), kind, element)).indices;
   }
 
-  // The lecture's three tables: {vertices: [{edge, x, y, z}], edges: [{start, end, left,
-  // right, startLeft, startRight, endLeft, endRight}], faces: [{edge}]}.
-  wingedEdge() { return this.#wingedEdgeRows(INT32_MAX); }
-
-  // The first `limit` rows of each winged-edge table.
-  // Rows offset .. offset + limit - 1 of the three tables (the core copies only those).
-  #wingedEdgeRows(limit, offset = 0) {
-    const r = unwrap(this.#raw.meshWingedEdge(this.#live(), offset, limit));
-    const vertices = Array.from(r.vertexEdge, (edge, i) => ({
-      edge, x: r.positions[3 * i], y: r.positions[3 * i + 1], z: r.positions[3 * i + 2],
-    }));
-    const edges = [];
-    for (let e = 0; 8 * e < r.edges.length; e += 1) {
-      const row = {};
-      EDGE_FIELDS.forEach((name, k) => { row[name] = r.edges[8 * e + k]; });
-      edges.push(row);
-    }
-    const faces = Array.from(r.faceEdge, (edge) => ({ edge }));
-    return { vertices, edges, faces };
+  // The lecture's three tables as rows: {vertices: [{x, y, z, edge}], edges: [{start, end,
+  // left, right, startLeft, startRight, endLeft, endRight}], faces: [{edge}]}.
+  wingedEdge() {
+    return Object.fromEntries(Object.entries(this.tables('winged-edge')).map(([name, t]) => [name, t.rows()]));
   }
 
-  // The same tables as flat typed arrays: edges[8*e + k] in EDGE_FIELDS order.
+  // The same tables as flat typed arrays (their descriptors' array names): positions (3
+  // per vertex), vertexEdge, edges (8 per edge, in edgeFields order), faceEdge.
   wingedEdgeArrays() {
-    const r = unwrap(this.#raw.meshWingedEdge(this.#live(), 0, INT32_MAX));
-    return { positions: r.positions, vertexEdge: r.vertexEdge, edges: r.edges, faceEdge: r.faceEdge, edgeFields: [...EDGE_FIELDS] };
+    const tables = this.tables('winged-edge');
+    return { ...tables.vertices.arrays, ...tables.edges.arrays, ...tables.faces.arrays, edgeFields: tables.edges.columns.map((c) => c.name) };
+  }
+
+  // The tables of one representation, each read by the generic reader (tables.js):
+  // {[tableName]: Table}; rows offset .. offset + limit - 1 of each (default: all rows).
+  tables(representation, options = {}) {
+    if (!REPRESENTATIONS.includes(representation)) {
+      fail('unknown-representation', `unknown representation '${String(representation).slice(0, 40)}'; use ${REPRESENTATIONS.join(', ')}`);
+    }
+    const { limit = INT32_MAX, offset = 0 } = options ?? {};
+    integerIn(limit, 'limit', 0, INT32_MAX);
+    integerIn(offset, 'offset', 0, INT32_MAX);
+    const r = unwrap(this.#raw.meshTables(this.#live(), representation, offset, limit));
+    return Object.fromEntries(r.tables.map((data) => [data.name, readTable(findDescriptor(this.#descriptors, representation, data.name), data)]));
   }
 
   edgesAroundVertex(v) { return this.#adjacency('edges-around-vertex', v, 'vertex'); }
@@ -254,9 +266,7 @@ export class Mesh {
   // [A, B, C, D], residual}]. The cross product uses the face's own first three corners (as
   // given, whatever its stored face edge), named in crossCorners.
   planes() {
-    // With chosen face edges the faces as given are kept with the other representations.
-    const handle = this.#faceSet !== null ? this.#representationsReady() : this.#live();
-    const r = unwrap(this.#raw.meshPlanes(handle));
+    const r = unwrap(this.#raw.meshPlanes(this.#live()));
     return Array.from(r.residual, (residual, f) => ({
       cross: Array.from(r.cross.subarray(4 * f, 4 * f + 4)),
       crossCorners: Array.from(r.crossCorners.subarray(3 * f, 3 * f + 3)),
@@ -289,8 +299,10 @@ export class Mesh {
   }
 
   #faceCount() {
-    if (this.#faces === undefined) this.#faces = unwrap(this.#raw.meshCounts(this.#live())).faces;
-    return this.#faces;
+    if (this.#faces.topology !== this.#version.topology) {
+      this.#faces = { topology: this.#version.topology, count: unwrap(this.#raw.meshCounts(this.#live())).faces };
+    }
+    return this.#faces.count;
   }
 
   // Moves vertex v in every representation; {changedEntries: {[representation]: xyz copies
@@ -300,94 +312,70 @@ export class Mesh {
     if (!isNumberArray(position) || position.length !== 3 || !Array.from(position).every(Number.isFinite)) {
       fail('invalid-argument', 'the position must be three finite numbers [x, y, z]');
     }
-    const r = unwrap(this.#raw.meshSetVertexPosition(this.#representationsReady(), v, position[0], position[1], position[2]));
+    const r = unwrap(this.#raw.meshSetVertexPosition(this.#live(), v, position[0], position[1], position[2]));
+    this.#setVersion(r.version);
     return { changedEntries: { ...r.changedEntries } };
+  }
+
+  // ---------------------------------------------------------------- changing the mesh
+  // Checked operations (docs/api-mesh.md, "Changing a mesh"): check<Op> changes nothing and
+  // returns {ok: true} or {ok: false, code, message}; <op> refuses the same way (throws a
+  // WingsplineError with that code, the mesh unchanged) or returns its change record
+  // {op, added, removed: {vertices, edges, faces}, rows: [{table, row, fields: [{field,
+  // before, after}]}], before, after: {topology, geometry}}.
+  #operation(op, element, edge, check) {
+    integerIn(element, OPERATIONS[op], -INT32_MAX, INT32_MAX);
+    integerIn(edge, 'edge', -INT32_MAX, INT32_MAX);
+    const r = unwrap(this.#raw.meshOperation(this.#live(), op, element, edge, check));
+    if (check) return r.allowed ? { ok: true } : { ok: false, code: r.code, message: r.message };
+    this.#setVersion(r.after);
+    return {
+      op: r.op,
+      added: r.added,
+      removed: r.removed,
+      rows: r.rows,
+      before: { ...r.before },
+      after: { ...r.after },
+    };
+  }
+
+  // The vertex table stores one incident edge per vertex; store edge e for vertex v instead
+  // (e must touch v). The walk around v then starts at e.
+  checkSetVertexEdge(v, e) { return this.#operation('set-vertex-edge', v, e, true); }
+  setVertexEdge(v, e) { return this.#operation('set-vertex-edge', v, e, false); }
+  // The same for the face table: e must be a side of f; the walk along f starts at e.
+  checkSetFaceEdge(f, e) { return this.#operation('set-face-edge', f, e, true); }
+  setFaceEdge(f, e) { return this.#operation('set-face-edge', f, e, false); }
+
+  // One operation as the lesson state holds it: {op: 'set-vertex-edge', v, e} or
+  // {op: 'set-face-edge', f, e}. Returns its change record.
+  apply(operation) {
+    if (operation === null || typeof operation !== 'object' || !Object.hasOwn(OPERATIONS, operation.op)) {
+      fail('unknown-operation', `unknown mesh operation ${JSON.stringify(String(operation?.op)).slice(0, 60)}; use ${Object.keys(OPERATIONS).join(' or ')}`);
+    }
+    return operation.op === 'set-vertex-edge' ? this.setVertexEdge(operation.v, operation.e) : this.setFaceEdge(operation.f, operation.e);
   }
 
   // Storage of each representation, from its real arrays: {[representation]: {entries,
   // bytes, arrays: [{name, entries, bytesPerEntry, bytes}]}}; an entry is one array element
   // (a double coordinate or an int32 index).
   storage() {
-    const r = unwrap(this.#raw.meshStorage(this.#representationsReady()));
+    const r = unwrap(this.#raw.meshStorage(this.#live()));
     return Object.fromEntries(REPRESENTATIONS.map((key) => [key, storageValue(r.storage[key])]));
   }
 
-  // Plain-value tables of all six representations (shapes in docs/api-mesh.md): rows
-  // offset .. offset + limit - 1 of every table; `totals` always gives the full row counts.
+  // Plain-value tables of all six representations: {[key]: {offset, [tableName]: rows
+  // (one object per row, keyed by column name), totals: {[tableName]: full row count},
+  // storage}}; rows offset .. offset + limit - 1 of every table (docs/api-mesh.md).
   representations(options = {}) {
-    const { limit = INT32_MAX, offset = 0 } = options ?? {};
-    integerIn(limit, 'limit', 0, INT32_MAX);
-    integerIn(offset, 'offset', 0, INT32_MAX);
-    const handle = this.#representationsReady();
-    const r = unwrap(this.#raw.meshRepresentations(handle, offset, limit));
+    const { offset = 0 } = options ?? {};
     const storage = this.storage();
-    const c = this.counts();
-    const vertexTotals = { vertices: c.vertices, edges: c.edges, faces: c.faces };
-    const ind = r.independentFaces;
-    const independentFaces = [];
-    const cornerBase = ind.faceOffsets[0] ?? 0;
-    for (let f = 0; f + 1 < ind.faceOffsets.length; f += 1) {
-      independentFaces.push(xyzRows(ind.cornerPositions.subarray(3 * (ind.faceOffsets[f] - cornerBase), 3 * (ind.faceOffsets[f + 1] - cornerBase))));
-    }
-    const t = r.vertexFaceTables;
-    const a = r.adjacencyLists;
-    const adjacencyVertices = csrRows(a.vertexOffsets, { vertices: a.vertexVertices, edges: a.vertexEdges });
-    const adjacencyVertexFaces = csrRows(a.vertexFaceOffsets, { faces: a.vertexFaces });
-    const adjacencyEdgeEdges = csrRows(a.edgeEdgeOffsets, { edges: a.edgeEdges });
-    const p = r.partialAdjacencyLists;
-    const partialVertices = csrRows(p.vertexOffsets, { edges: p.vertexEdges });
-    const l = r.edgeList;
-    const we = this.#wingedEdgeRows(limit, offset);
-    return {
-      'independent-faces': { offset, faces: independentFaces, totals: { faces: c.faces }, storage: storage['independent-faces'] },
-      'vertex-face-tables': {
-        offset,
-        vertices: xyzRows(t.positions),
-        faces: csrRows(t.faceOffsets, { vertices: t.faceVertices }).map((row) => row.vertices),
-        totals: { vertices: c.vertices, faces: c.faces },
-        storage: storage['vertex-face-tables'],
-      },
-      'adjacency-lists': {
-        offset,
-        vertices: xyzRows(a.positions).map((position, v) => ({
-          position, vertices: adjacencyVertices[v].vertices, edges: adjacencyVertices[v].edges, faces: adjacencyVertexFaces[v].faces,
-        })),
-        edges: adjacencyEdgeEdges.map((row, e) => ({
-          vertices: [a.edgeVertices[2 * e], a.edgeVertices[2 * e + 1]], edges: row.edges, faces: [a.edgeFaces[2 * e], a.edgeFaces[2 * e + 1]],
-        })),
-        faces: csrRows(a.faceOffsets, { vertices: a.faceVertices, edges: a.faceEdges, faces: a.faceFaces }),
-        totals: vertexTotals,
-        storage: storage['adjacency-lists'],
-      },
-      'partial-adjacency-lists': {
-        offset,
-        vertices: xyzRows(p.positions).map((position, v) => ({ position, edges: partialVertices[v].edges })),
-        edges: Array.from({ length: p.edgeVertices.length / 2 }, (_, e) => ({
-          vertices: [p.edgeVertices[2 * e], p.edgeVertices[2 * e + 1]], faces: [p.edgeFaces[2 * e], p.edgeFaces[2 * e + 1]],
-        })),
-        faces: csrRows(p.faceOffsets, { edges: p.faceEdges }),
-        totals: vertexTotals,
-        storage: storage['partial-adjacency-lists'],
-      },
-      'edge-list': {
-        offset,
-        vertices: xyzRows(l.positions),
-        edges: Array.from({ length: l.edges.length / 4 }, (_, e) => ({
-          v1: l.edges[4 * e], v2: l.edges[4 * e + 1], p1: l.edges[4 * e + 2], p2: l.edges[4 * e + 3],
-        })),
-        polygons: csrRows(l.polygonOffsets, { edges: l.polygonEdges }).map((row) => row.edges),
-        totals: { vertices: c.vertices, edges: c.edges, polygons: c.faces },
-        storage: storage['edge-list'],
-      },
-      'winged-edge': {
-        offset,
-        vertices: we.vertices,
-        edges: we.edges,
-        faces: we.faces,
-        totals: vertexTotals,
-        storage: storage['winged-edge'],
-      },
-    };
+    return Object.fromEntries(REPRESENTATIONS.map((key) => {
+      const tables = Object.values(this.tables(key, options));
+      const rows = Object.fromEntries(tables.map((t) => [t.name, t.rows()]));
+      const totals = Object.fromEntries(tables.map((t) => [t.name, t.total]));
+      return [key, { offset, ...rows, totals, storage: storage[key] }];
+    }));
   }
 
   // One adjacency query answered by every representation: {[representation]: {answer:
@@ -395,22 +383,8 @@ export class Mesh {
   query(kind, element) {
     if (!QUERY_KINDS.includes(kind)) fail('unknown-query', `unknown query '${String(kind).slice(0, 40)}'; use ${QUERY_KINDS.join(', ')}`);
     integerIn(element, kind.endsWith('vertex') ? 'vertex' : kind.endsWith('edge') ? 'edge' : 'face', 0, INT32_MAX);
-    const r = unwrap(this.#raw.meshQuery(this.#representationsReady(), kind, element));
+    const r = unwrap(this.#raw.meshQuery(this.#live(), kind, element));
     return Object.fromEntries(REPRESENTATIONS.map((key) => [key, { answer: r.answers[key].answer, entriesRead: r.answers[key].entriesRead }]));
-  }
-
-  // Walks every vertex ring in C++ (the mesh_ring benchmark): {visited, checksum}.
-  ringWalk() {
-    const { visited, checksum } = unwrap(this.#raw.meshRingWalk(this.#live()));
-    return { visited, checksum };
-  }
-
-  // Benchmark only: times newell_normals inside the module (no copy out), the way the
-  // native benchmark does; {seconds: Float64Array (one per repetition), checksum}.
-  timeNormalsInCore(repetitions) {
-    integerIn(repetitions, 'repetitions', 1, 1000);
-    const { seconds, checksum } = unwrap(this.#raw.benchNormalsInCore(this.#live(), repetitions));
-    return { seconds, checksum };
   }
 
   // Bytes held by the winged-edge tables (vertex, edge and face tables).
@@ -423,9 +397,26 @@ export class Mesh {
   }
 }
 
+// The benchmark hooks' way in (web/js/core/bench-hooks.js); wingspline.js does not export
+// it and nothing on the api object reaches it.
+export const benchAccess = Object.freeze({
+  rawOf(api) {
+    const raw = rawOfBuildMesh.get(api?.buildMesh);
+    if (!raw) fail('invalid-argument', 'benchHooks needs the object loadWingspline() resolves to');
+    return raw;
+  },
+  handleOf(mesh) {
+    if (!(mesh instanceof Mesh)) fail('invalid-argument', 'expected a mesh built by buildMesh()');
+    return handleOfMesh(mesh);
+  },
+  indexedInput,
+});
+
 export function createMeshApi(raw) {
   const { maxCoordinate, maxFaceCorners, maxVertices, maxFaces } = unwrap(raw.meshLimits());
   const meshLimits = Object.freeze({ maxCoordinate, maxFaceCorners, maxVertices, maxFaces });
+  // Every table's descriptor (core/src/mesh/tables.cpp), read once: see tables.js.
+  const tableDescriptors = deepFreeze(unwrap(raw.meshTableDescriptors()).tables);
   function named(name, a = 0, b = 0) {
     return unwrap(raw.meshNamed(name, a, b));
   }
@@ -439,7 +430,7 @@ export function createMeshApi(raw) {
       faceEdges: Array.from(r.faceEdges),
     };
   }
-  return {
+  const meshApi = {
     // Builds the winged edge (and the other representations) from an indexed face set.
     // Refuses what a winged edge cannot hold: error.code = the first problem's code,
     // error.details = every problem (as validateMesh reports them).
@@ -448,16 +439,10 @@ export function createMeshApi(raw) {
       const edges = optionalInts(input.edges, 'edges', true);
       const vertexEdges = optionalInts(input.vertexEdges, 'vertexEdges');
       const faceEdges = optionalInts(input.faceEdges, 'faceEdges');
+      // The core keeps each face's first corner as given (chosen face edges may start its
+      // walk elsewhere), so the other representations are derived from the core alone.
       const r = unwrap(raw.meshBuild(positions, faceOffsets, faceVertices, edges, vertexEdges, faceEdges));
-      // Chosen face edges may start a face's walk at another corner, so then the mesh keeps
-      // the face set for its other representations (its own copy: the caller may reuse
-      // bulk arrays it passed in). Otherwise the core reads the faces back from the winged edge.
-      if (faceEdges.length === 0) return new Mesh(raw, r.handle);
-      const own = input.faces === undefined;
-      return new Mesh(raw, r.handle, {
-        faceOffsets: own ? faceOffsets.slice() : faceOffsets,
-        faceVertices: own ? faceVertices.slice() : faceVertices,
-      });
+      return new Mesh(raw, r.handle, tableDescriptors);
     },
     // Every problem of an indexed face set, without building: {ok, problems}.
     validateMesh(input) {
@@ -468,6 +453,9 @@ export function createMeshApi(raw) {
     // The one set of mesh limits (the core's limits.h), for the page and the state format:
     // {maxCoordinate, maxFaceCorners, maxVertices, maxFaces}.
     meshLimits,
+    // The descriptors of every representation's tables (frozen): {representation, name,
+    // title, rows: 'vertex'|'edge'|'face', arrays, columns}; read a table with tables.js.
+    tableDescriptors,
     // Text -> {positions, faces}. Errors: 'parse-error', 'truncated-file',
     // 'index-out-of-range', 'coordinate-out-of-range', 'face-too-large', 'too-large' (more
     // vertices or faces than meshLimits; checkCounts: false lifts that) with error.line
@@ -487,14 +475,6 @@ export function createMeshApi(raw) {
     formatMesh(input, { format = 'off' } = {}) {
       const { positions, faceOffsets, faceVertices } = indexedInput(input);
       return unwrap(raw.meshFormat(positions, faceOffsets, faceVertices, String(format))).text;
-    },
-    // Benchmark only: copies the face set in once, then times the winged-edge build inside
-    // the module R times, as the native benchmark does: {seconds: Float64Array, checksum}.
-    timeBuildInCore(input, repetitions) {
-      integerIn(repetitions, 'repetitions', 1, 1000);
-      const { positions, faceOffsets, faceVertices } = indexedInput(input);
-      const { seconds, checksum } = unwrap(raw.benchBuildInCore(positions, faceOffsets, faceVertices, repetitions));
-      return { seconds, checksum };
     },
     // How many built meshes have not been disposed (for leak tests).
     liveMeshCount() {
@@ -519,4 +499,6 @@ export function createMeshApi(raw) {
       return indexedOutput(r, o.layout);
     },
   };
+  rawOfBuildMesh.set(meshApi.buildMesh, raw);
+  return meshApi;
 }

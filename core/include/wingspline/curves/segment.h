@@ -31,6 +31,12 @@ struct SegmentMatrices {
 };
 
 int segment_count(const Curve& curve);
+// The index of the polynomial segment that holds the parameter t (segment_matrices numbers
+// them): B-splines and NURBS count the non-empty knot spans t_l <= t < t_l+1 from l = p;
+// the other families split their domain into segment_count equal parts [i, i+1). The end of
+// the domain belongs to the last segment (the left-sided rule of the evaluator). Refuses t
+// outside the domain ('parameter-out-of-range') and a non-finite t ('non-finite-input').
+int segment_at(const Curve& curve, double t);
 // Throws 'segment-out-of-range' naming the valid indices.
 SegmentMatrices segment_matrices(const Curve& curve, int segment);
 

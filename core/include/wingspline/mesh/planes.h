@@ -34,6 +34,10 @@ std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh);
 // Unit normals by Newell's method, normals[3*f + k]; a degenerate face gets (0, 0, 0).
 void newell_normals(const WingedEdgeMesh& mesh, std::vector<double>& normals);
 // The same into out[0 .. 3F), which the caller owns (no allocation, no zero fill).
+// (The fast kernel, fast_kernels.cpp; the same normals as newell_normals_reference.)
 void newell_normals(const WingedEdgeMesh& mesh, double* out);
+// The lecture's path: each face's corners read by the face walk, newell_vector of them,
+// divided by its length. Slower; the tests check newell_normals against it.
+void newell_normals_reference(const WingedEdgeMesh& mesh, std::vector<double>& normals);
 
 } // namespace wingspline::mesh

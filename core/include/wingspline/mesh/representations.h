@@ -14,6 +14,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -128,6 +129,31 @@ struct Representations {
 // winged edge built from it (for the edge numbering and the current positions). Throws
 // Error("mismatched-face-set") when `faces` is not the face set `winged` was built from.
 Representations build_representations(const IndexedMesh& faces, const WingedEdgeMesh& winged);
+
+// The other representations as a cache of the winged edge (docs/architecture.md, "The
+// mesh's change model"): derived from the winged edge's current face set (face_set()) on
+// first use, and derived again whenever the mesh's version is not the one they were derived
+// for, so an operation on the winged edge never leaves a stale copy behind. Moving a vertex
+// is the one change followed in place (follow_position), because lecture 000 counts the
+// copies each representation rewrites.
+class RepresentationCache {
+public:
+    // The representations of `winged` as it is now.
+    const Representations& of(const WingedEdgeMesh& winged);
+    // After winged.set_position(v, p): writes p into every stored copy (building first if
+    // needed) and returns set_vertex_position's counts. The cache is then current again.
+    std::array<int32_t, kRepresentationCount - 1> follow_position(const WingedEdgeMesh& winged, int32_t v, const glm::dvec3& p);
+    bool built() const { return reps_ != nullptr; }
+    // The version they were derived for (meaningful only when built()).
+    MeshVersion version() const { return version_; }
+    // How many times they were derived (tests: a cache hit derives nothing).
+    int32_t derivations() const { return derivations_; }
+
+private:
+    std::unique_ptr<Representations> reps_;
+    MeshVersion version_;
+    int32_t derivations_ = 0;
+};
 
 // Storage of all six, in Representation order.
 std::array<Storage, kRepresentationCount> representation_storage(const Representations& reps,

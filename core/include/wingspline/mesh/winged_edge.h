@@ -16,6 +16,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -78,6 +79,74 @@ struct FaceStep {
     int32_t next = kNone;
 };
 
+// ------------------------------------------------------------------ the change model
+// Element ids that say what they are (pmp-library's typed handles): a Vertex, an Edge and a
+// Face are distinct types around one int32 index, so a mutator cannot be handed a face
+// where it wants an edge. kNone (-1) is the invalid sentinel. The tables and the wire
+// format stay flat int32 arrays; handles are used where an id crosses an API in the core
+// (the change model below; older accessors still take plain indices and move over as
+// they are touched).
+template <class Tag> struct Handle {
+    int32_t idx = kNone;
+    constexpr Handle() = default;
+    constexpr explicit Handle(int32_t i) : idx(i) {}
+    constexpr bool is_valid() const { return idx >= 0; }
+    constexpr bool operator==(Handle o) const { return idx == o.idx; }
+    constexpr bool operator!=(Handle o) const { return idx != o.idx; }
+};
+using Vertex = Handle<struct VertexTag>;
+using Edge = Handle<struct EdgeTag>;
+using Face = Handle<struct FaceTag>;
+
+// Two counters that say which state of a mesh a cache was derived from. topology moves on
+// with every change of the connectivity tables (vertex edge, edge table, face edge),
+// geometry with every change of a position. Each moves by exactly one per call that
+// changed something, never when a call changed nothing or was refused.
+struct MeshVersion {
+    uint32_t topology = 0;
+    uint32_t geometry = 0;
+    bool operator==(const MeshVersion& o) const { return topology == o.topology && geometry == o.geometry; }
+    bool operator!=(const MeshVersion& o) const { return !(*this == o); }
+};
+
+// What check_<op>() says: ok, or a stable code and a message naming the elements.
+struct CheckResult {
+    bool ok = true;
+    std::string code;
+    std::string message;
+    static CheckResult accept() { return {}; }
+    static CheckResult refuse(std::string code, std::string message) { return {false, std::move(code), std::move(message)}; }
+};
+
+// The three connectivity tables of lecture 000.
+enum class MeshTable { Vertex, Edge, Face };
+const char* table_name(MeshTable t); // "vertex", "edge", "face"
+
+// One field of one table row, before and after (an edge index, a face index, ...).
+struct FieldChange {
+    std::string field; // the column as the docs and the JS rows name it: "edge", "start", "startLeft", ...
+    int32_t before = kNone;
+    int32_t after = kNone;
+};
+struct RowChange {
+    MeshTable table = MeshTable::Vertex;
+    int32_t row = kNone;
+    std::vector<FieldChange> fields;
+};
+
+// What one operation did: the elements it added and removed (removed ones stay as marked
+// gaps, see is_deleted()), and every table row it changed with its fields before and after
+// (enough to show the change and to undo it). Empty when the operation changed nothing.
+struct ChangeRecord {
+    std::string op; // "set-vertex-edge", ...
+    std::vector<Vertex> added_vertices, removed_vertices;
+    std::vector<Edge> added_edges, removed_edges;
+    std::vector<Face> added_faces, removed_faces;
+    std::vector<RowChange> rows;
+    MeshVersion before, after;
+    bool changed() const { return before != after; }
+};
+
 // Removes repeats from v, keeping each element where it first appears (n log n).
 void keep_first_appearance(std::vector<int32_t>& v);
 
@@ -95,6 +164,9 @@ public:
     // The same, taking the positions over instead of copying them (a caller that made the
     // face set only to build from it, as the wasm binding does). On refusal `mesh` is intact.
     static WingedEdgeMesh build(IndexedMesh&& mesh, const BuildOptions& options = {});
+    // The same tables by the lecture's path alone, without the fixed-degree kernels
+    // (fast_kernels.cpp); the tests check build() against it on random meshes.
+    static WingedEdgeMesh build_reference(const IndexedMesh& mesh, const BuildOptions& options = {});
 
     int32_t vertex_count() const { return static_cast<int32_t>(vertex_edge_.size()); }
     int32_t edge_count() const { return static_cast<int32_t>(edges_.size()); }
@@ -108,9 +180,43 @@ public:
     }
     const std::vector<double>& positions() const { return positions_; }
     const std::vector<EdgeRecord>& edges() const { return edges_; }
+    const std::vector<int32_t>& vertex_edges() const { return vertex_edge_; } // the vertex table's edge column
+    const std::vector<int32_t>& face_edges() const { return face_edge_; }     // the face table
     // Throws Error("non-finite-coordinate" / "coordinate-out-of-range") beyond kMaxCoordinate
-    // (limits.h) and then changes nothing.
+    // (limits.h) and then changes nothing. Moves the geometry version on when p differs.
     void set_position(int32_t v, const glm::dvec3& p);
+
+    // ---------------------------------------------------------------- change model
+    // Which state of the mesh this is (see MeshVersion); a freshly built mesh is {0, 0}.
+    MeshVersion version() const { return version_; }
+
+    // Checked mutators, in pmp-library's manner (is_flip_ok before flip): check_<op>()
+    // changes nothing and says whether <op> may run; <op>() calls it first and, if refused,
+    // throws Error(code, message) with the structure bit-identical. A successful <op>()
+    // returns its ChangeRecord and leaves validate() clean; docs/architecture.md, "The
+    // mesh's change model", lists the files an operation touches.
+    //
+    // set-vertex-edge: the vertex table stores one incident edge per vertex (lecture 000);
+    // choose another one. e must touch v. Reuses every element, creates none; changes one
+    // vertex-table row (field "edge"); the walk around v then starts at e. Choosing the
+    // edge already stored is accepted and changes nothing (no version change).
+    CheckResult check_set_vertex_edge(Vertex v, Edge e) const;
+    ChangeRecord set_vertex_edge(Vertex v, Edge e);
+    // set-face-edge: the same for the face table; e must be a side of f. The face set is
+    // unchanged (face_set() still lists f from the same first corner); the walk along f
+    // starts at e.
+    CheckResult check_set_face_edge(Face f, Edge e) const;
+    ChangeRecord set_face_edge(Face f, Edge e);
+
+    // Removed elements (a future collapse or delete) are not compacted away: their rows
+    // stay, marked deleted, so every index a student is looking at keeps its meaning, and
+    // a later garbage collection (an explicit step, as pmp's garbage_collection()) will
+    // compact the tables and say how the indices moved. No operation removes anything
+    // yet, so the marks are held only once one does (empty vectors = nothing deleted).
+    bool is_deleted(Vertex v) const { return !vertex_deleted_.empty() && vertex_deleted_[v.idx]; }
+    bool is_deleted(Edge e) const { return !edge_deleted_.empty() && edge_deleted_[e.idx]; }
+    bool is_deleted(Face f) const { return !face_deleted_.empty() && face_deleted_[f.idx]; }
+    bool has_garbage() const { return !vertex_deleted_.empty() || !edge_deleted_.empty() || !face_deleted_.empty(); }
 
     // The lecture's rule, one step: the edge after e counter-clockwise around v.
     int32_t next_ccw(int32_t e, int32_t v) const {
@@ -142,8 +248,10 @@ public:
     std::array<int32_t, 2> faces_of_edge(int32_t e) const { return {edges_[e].left, edges_[e].right}; }
     std::vector<int32_t> face_neighbours(int32_t f) const;        // distinct faces across f's edges, first met first
 
-    // The indexed face set read back from the structure: each face walked from its face
-    // edge. With the default face edges this is the face set the mesh was built from.
+    // The indexed face set read back from the structure: each face's corners in walk order,
+    // listed from the face's first corner as the mesh was built (so a face edge chosen at
+    // build time or by set_face_edge changes where the walk starts, not the face set). The
+    // other representations are derived from this (representations.h, RepresentationCache).
     IndexedMesh face_set() const;
 
     MeshCounts counts() const;
@@ -154,12 +262,27 @@ public:
 
 private:
     static WingedEdgeMesh build_impl(const IndexedMesh& mesh, const BuildOptions& options,
-                                     std::vector<double>* positions_to_take);
+                                     std::vector<double>* positions_to_take, bool fast_kernels);
 
     std::vector<double> positions_;    // positions_[3*v + k]
     std::vector<int32_t> vertex_edge_; // one incident edge per vertex (kNone if isolated)
     std::vector<EdgeRecord> edges_;
     std::vector<int32_t> face_edge_;   // one edge per face
+    // The corner each face is listed from in face_set() (the first corner of the face as
+    // given). Empty while every face's stored edge starts at its first corner, which is
+    // the default build; filled when the caller chose face edges or set_face_edge moved
+    // one. Not one of the slide's tables, so not counted in bytes().
+    std::vector<int32_t> face_first_corner_;
+    MeshVersion version_;
+    std::vector<char> vertex_deleted_, edge_deleted_, face_deleted_; // see is_deleted()
+
+    CheckResult check_element(Vertex v) const;
+    CheckResult check_element(Edge e) const;
+    CheckResult check_element(Face f) const;
+    int32_t walk_start_corner(int32_t f) const {
+        const EdgeRecord& r = edges_[face_edge_[f]];
+        return r.left == f ? r.start : r.end;
+    }
 };
 
 } // namespace wingspline::mesh

@@ -6,6 +6,8 @@
 // happens to do: distances from the control points to the sampled curve, the joint
 // classifier on the drawn curves, subdivision checked against the original. "Ease of
 // subdivision" is the lecture's judgement: quoted, never checked.
+import { linspace } from '../../app/arrays.js';
+import { formatSize as fmt } from '../../ui/format.js';
 import { FAMILY_IDS, familySegments, inherentSegments, easySegments, nubsCurve, nonUniformKnots, constructionOf } from './families.js';
 
 export const SAMPLES_PER_SEGMENT = 101;
@@ -36,14 +38,6 @@ export const ROW_NAMES = {
   easy: 'Easily achieved continuity',
 };
 
-export function linspace(a, b, n) {
-  const out = new Float64Array(n);
-  for (let j = 0; j < n; j += 1) out[j] = a + ((b - a) * j) / (n - 1);
-  out[n - 1] = b;
-  return out;
-}
-
-const fmt = (x) => (x === 0 ? '0.0' : Math.abs(x) < 1e-3 ? x.toExponential(1) : String(Number(x.toPrecision(3))));
 const cLabel = (k) => (k < 0 ? '-1' : String(k));
 
 export function sampleSegments(api, segs) {

@@ -1,6 +1,8 @@
 // The four families of lecture 003's table built on one control polygon P0..P(K-1), as
 // curve objects of the core API. Only control data is arranged here; every point on every
 // curve comes from the core.
+import { flat } from '../../app/arrays.js';
+
 // Lecture 003's four columns and lecture 001's non-uniform B-spline.
 export const FAMILY_IDS = ['hermite', 'bezier', 'bspline', 'catmull-rom', 'nubs'];
 export const FAMILY_NAMES = { hermite: 'Hermite', bezier: 'Bezier', bspline: 'B-spline', 'catmull-rom': 'Catmull-Rom', nubs: 'Non-uniform B-spline' };
@@ -18,7 +20,6 @@ export function nonUniformKnots(count) {
 }
 export const nubsCurve = (points) => ({ kind: 'bspline', dim: 2, degree: 3, points: flat(points), knots: nonUniformKnots(points.length) });
 
-const flat = (list) => list.flatMap((p) => p);
 const sub = (a, b) => [a[0] - b[0], a[1] - b[1]];
 const half = (a) => [a[0] / 2, a[1] / 2];
 

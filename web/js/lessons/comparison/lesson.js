@@ -1,15 +1,17 @@
+// @ts-check
 // Comparison lab (lectures 001, 002, 003): one control polygon under Hermite, Bezier,
 // uniform B-spline and Catmull-Rom at once; the lectures' comparison table checked live by
 // the core; basis conversion both ways; affine and perspective invariance measured.
-import { object, list, number, oneOf, integer, boolean } from '../../app/schema.js';
+import { object, list, number, oneOf, integer, boolean, viewSchema } from '../../app/schema.js';
 import { h, panel, table, setChildren } from '../../app/dom.js';
 import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
+import { formatSize as fmtDistance } from '../../ui/format.js';
 import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH, pointTangents } from './families.js';
 import { computeTable, LECTURE_TABLE, ROW_NAMES } from './checks.js';
 import { computeConversion, computeInvariance } from './transforms.js';
-import { drawCurve, drawPolygon } from '../curves/overlays.js';
-import { createBlendingPlot } from '../curves/blending-plot.js';
-import { createMatrixPanel } from '../curves/matrix-panel.js';
+import { drawCurve, drawPolygon, drawLegend } from '../../ui/curve-overlays.js';
+import { createBlendingPlot } from '../../ui/blending-plot.js';
+import { createMatrixPanel } from '../../ui/matrix-panel.js';
 
 // The blending functions of one segment per point-based family: the convex hull row's
 // evidence (lecture 003: weights in [0, 1] summing to 1), drawn with the curve explorer's plot.
@@ -46,11 +48,12 @@ function withNewSegment(points) {
 }
 
 const fmt = (x) => formatNumber(x, 3);
-// Distances: tiny ones keep their size visible (1.1e-16, not 0).
-const fmtDistance = (x) => (x === 0 ? '0' : x < 1e-3 ? x.toExponential(1) : formatNumber(x, 3));
 // A bracket that keeps its text size next to tall matrices.
 const fixed = (text) => { const o = mo(text); o.setAttribute('stretchy', 'false'); return o; };
 
+const handlesOf = (state) => state.points.map(([x, y], i) => ({ id: `p${i}`, x, y, label: `P${i}` }));
+
+/** @type {import('../../app/contract.js').Lesson} */
 export const lesson = {
   id: 'comparison',
   title: 'Comparison lab',
@@ -65,7 +68,7 @@ export const lesson = {
       shear: number({ min: -2, max: 2 }), tx: number({ min: -10, max: 10 }), ty: number({ min: -10, max: 10 }),
       px: number({ min: -0.5, max: 0.5 }), py: number({ min: -0.5, max: 0.5 }),
     }),
-    view: object({ cx: number(), cy: number(), zoom: number({ min: 1, max: 1e5 }) }),
+    view: viewSchema(),
   },
   checkState(state) {
     if ((state.points.length - 1) % 3 !== 0) return `the polygon needs 3n + 1 points (whole cubic Bezier segments), not ${state.points.length}`;
@@ -81,7 +84,7 @@ export const lesson = {
     view: { cx: 0, cy: 0, zoom: 90 },
   }),
 
-  compute(state, ctx) {
+  compute(view, state, ctx) {
     const api = ctx.api;
     return {
       state,
@@ -92,7 +95,7 @@ export const lesson = {
     };
   },
 
-  fitView(model, stage) {
+  fitView(view, model, stage) {
     const pts = model.state.scene === 'invariance' ? [...model.state.points, ...model.invariance.mapped] : model.state.points;
     const xs = pts.map((p) => p[0]);
     const ys = pts.map((p) => p[1]);
@@ -104,7 +107,7 @@ export const lesson = {
   setup(ctx) {
     const sceneSelect = h('select', { id: 'scene', onchange: () => {
       // Each scene gets a view that shows all of it (the invariance scene adds the mapped points).
-      if (ctx.commit({ ...ctx.state, scene: sceneSelect.value })) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+      if (ctx.commit({ ...ctx.state, scene: sceneSelect.value })) ctx.fitView();
     } },
       Object.entries(SCENES).map(([k, v]) => h('option', { value: k }, v)));
     const familyBoxes = FAMILY_IDS.map((f) => {
@@ -115,7 +118,7 @@ export const lesson = {
     const addSegment = () => {
       const state = ctx.state;
       if (state.points.length + 3 > MAX_POINTS) { ctx.message.error(`At most ${MAX_POINTS} points (ten segments)`, 'too-many-points'); return; }
-      if (ctx.commit({ ...state, points: withNewSegment(state.points) })) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+      if (ctx.commit({ ...state, points: withNewSegment(state.points) })) ctx.fitView();
     };
     const removeSegment = () => {
       const state = ctx.state;
@@ -134,7 +137,7 @@ export const lesson = {
     const blendBody = panel(ctx.panels, { id: 'blending-panel', title: 'Blending weights (the convex hull row)' });
     const blendPlots = BLEND_FAMILIES.map((f) => createBlendingPlot(blendBody, { label: FAMILY_NAMES[f], height: 130 }));
 
-    const select = (id, options, value, onchange, names = FAMILY_NAMES) => {
+    const select = (id, options, value, onchange, names = /** @type {Record<string, string>} */ (FAMILY_NAMES)) => {
       const s = h('select', { id, onchange: () => onchange(s.value) }, options.map((o) => h('option', { value: o }, names[o] ?? o)));
       s.value = value;
       return s;
@@ -168,7 +171,8 @@ export const lesson = {
       out: h('div', { class: 'invariance-out' }),
     };
     invBody.append(h('label', { for: 'tf-kind' }, 'Map ', inv.kind), h('div', { class: 'slider-grid' }, inv.sliders.map((s) => s.label)), inv.out);
-    lesson.ui = { sceneSelect, familyBoxes, tableBody, conv, inv, blendPlots, addButton, removeButton };
+    const ui = { sceneSelect, familyBoxes, tableBody, conv, inv, blendPlots, addButton, removeButton, shownScene: null,
+      convPanel: convBody.parentElement, invPanel: invBody.parentElement };
     ctx.keymap.add({ keys: ['n'], label: 'add a segment (three points)', group: 'Lesson', action: addSegment });
     ctx.keymap.add({ keys: ['x'], label: 'remove the last segment', group: 'Lesson', action: removeSegment });
 
@@ -178,14 +182,15 @@ export const lesson = {
     } });
     FAMILY_IDS.forEach((f, i) => ctx.keymap.add({ keys: [String(i + 1)], label: `show / hide ${FAMILY_NAMES[f]}`, group: 'Lesson',
       action: () => ctx.commit({ ...ctx.state, show: { ...ctx.state.show, [f]: !ctx.state.show[f] } }, { recompute: false }) }));
+    // The view: the panels' elements (and which scene's panel was last opened).
+    return ui;
   },
 
-  update(model, state, ctx) {
-    const ui = lesson.ui;
+  update(ui, model, state, ctx) {
     if (ui.shownScene !== state.scene) {
       ui.shownScene = state.scene;
-      document.getElementById('conversion-panel').open = state.scene === 'conversion';
-      document.getElementById('invariance-panel').open = state.scene === 'invariance';
+      ui.convPanel.open = state.scene === 'conversion';
+      ui.invPanel.open = state.scene === 'invariance';
     }
     ui.sceneSelect.value = state.scene;
     for (const b of ui.familyBoxes) b.box.checked = state.show[b.f];
@@ -205,7 +210,7 @@ export const lesson = {
       title: m.q ? `${name(m.to)}: the same curve from q` : `${name(m.to)}: the same G with M swapped` });
   },
 
-  draw(painter, model, state, ctx) {
+  draw(view, painter, model, state, ctx) {
     if (!model) return;
     const c = ctx.colors;
     const strokeOf = (f) => c.series[FAMILY_COLOR[f]];
@@ -243,22 +248,17 @@ export const lesson = {
         legend.push([c.series[2], `rational Bezier of T(P), weights w(P_i) (max distance ${fmtDistance(inv.rational.distance)})`, [2, 4]]);
       }
     }
-    for (const hd of lesson.handles(model, state)) {
+    for (const hd of handlesOf(state)) {
       const on = hd.id === ctx.ui.selected;
       painter.circle(hd.x, hd.y, on ? 8 : 6, { fill: on ? c.highlight : c.background, stroke: c.ink, width: 1.5 });
       painter.text(hd.x, hd.y, hd.label, { fill: c.ink, font: 12, dx: 12, dy: -12, align: 'left', halo: c.background });
     }
-    const tr = painter.t;
-    const [lx, ly] = tr.toWorld(12, 16);
-    const lineH = (20 * (painter.scale ?? 1)) / tr.zoom;
-    legend.forEach(([color, words], i) => painter.text(lx, ly - i * lineH, `━ ${words}`, { fill: color, font: 13, align: 'left', halo: c.background }));
+    drawLegend(painter, legend, { marker: '━', font: 13, halo: c.background });
   },
 
-  handles(model, state) {
-    return state.points.map(([x, y], i) => ({ id: `p${i}`, x, y, label: `P${i}` }));
-  },
+  handles(view, model, state) { return handlesOf(state); },
 
-  moveHandle(state, id, x, y) {
+  moveHandle(view, state, id, x, y) {
     const i = Number(id.slice(1));
     if (!Number.isInteger(i) || i < 0 || i >= state.points.length) return null;
     const points = state.points.map((p) => p.slice());
@@ -266,7 +266,7 @@ export const lesson = {
     return { ...state, points };
   },
 
-  describe(model, state) {
+  describe(view, model, state) {
     if (!model) return '';
     const cols = model.table.columns;
     const parts = FAMILY_IDS.map((f) => `${FAMILY_NAMES[f]}: interpolates ${cols[f].interpolatesAll.answer === 'Yes' ? 'all' : cols[f].interpolatesSome.answer === 'Yes' ? `P${cols[f].interpolatesSome.interpolated.join(', P')}` : 'no'} control points, inherent ${cols[f].inherent.answer}`);
@@ -275,7 +275,7 @@ export const lesson = {
 
   exports: [{
     label: 'Comparison table (Markdown)', filename: 'comparison-table.md', type: 'text/markdown',
-    make(model) {
+    make(view, model) {
       const head = `| | ${FAMILY_IDS.map((f) => FAMILY_NAMES[f]).join(' | ')} |\n|---|${FAMILY_IDS.map(() => '---').join('|')}|`;
       const cellText = (f, row) => {
         const c = model.table.columns[f][row];

@@ -2,11 +2,10 @@
 // on the current polygon. The maps applied to points are the experiment's input; the
 // curves before and after are evaluated by the core and compared.
 import { familySegments, FAMILY_IDS } from './families.js';
-import { linspace } from './checks.js';
+import { linspace, flat } from '../../app/arrays.js';
 
 const SAMPLES = 121;
 const MID = 60; // the sample at u = 1/2, where the matrix panels evaluate
-const flat = (list) => list.flatMap((p) => p);
 
 export function segmentCurve(kind, g) {
   return kind === 'hermite'

@@ -1,13 +1,15 @@
+// @ts-check
 // Continuity lab (lectures 000, 001, 002, 004): a piecewise curve, its joints classified by
 // the core as C^k and G^k with the evidence (derivatives from both sides, their ratio, the
 // curvatures), constraint modes while dragging, plots of |P'(u)|, P''(u) and the curvature
 // along the whole curve, and a point travelling at parametric speed.
-import { object, list, number, oneOf, boolean, text } from '../../app/schema.js';
+import { object, list, number, oneOf, boolean, text, viewSchema } from '../../app/schema.js';
 import { createPlayer } from '../../app/player.js';
 import { h, panel, table, setChildren } from '../../app/dom.js';
 import { formatNumber } from '../../ui/mathml.js';
+import { formatVector as fmtVec } from '../../ui/format.js';
 import { drawSeriesPlot } from '../../ui/series-plot.js';
-import { drawCurve, drawPolygon, drawSamples, drawVector } from '../curves/overlays.js';
+import { drawCurve, drawPolygon, drawSamples, drawVector, drawLegend } from '../../ui/curve-overlays.js';
 import { PRESETS, DEFAULT_PRESET } from './presets.js';
 import { CONSTRAINTS, dragWithConstraint, enforceAll, appendSegment } from './constraints.js';
 import { computeModel, segmentCurves, SAMPLES_PER_SEGMENT } from './model.js';
@@ -55,8 +57,16 @@ function handlePosition(state, i) {
   return p;
 }
 
-const fmtVec = (v) => `(${formatNumber(v[0], 3)}, ${formatNumber(v[1], 3)})`;
 
+// Every control entry is a handle (Hermite tangents drawn at P + T/3).
+function handlesOf(state) {
+  return state.points.map((_, i) => {
+    const [x, y] = handlePosition(state, i);
+    return { id: `p${i}`, x, y, label: pointName(state, i) };
+  });
+}
+
+/** @type {import('../../app/contract.js').Lesson} */
 export const lesson = {
   id: 'continuity',
   title: 'Continuity lab',
@@ -68,7 +78,7 @@ export const lesson = {
     points: list(pair, { min: 5, max: 64 }),
     u: number({ min: 0, max: 64 }),
     show: object({ first: boolean(), second: boolean(), beads: boolean() }),
-    view: object({ cx: number(), cy: number(), zoom: number({ min: 1, max: 1e5 }) }),
+    view: viewSchema(),
   },
   checkState(state) {
     if (isPiecewise(state.family) && (state.points.length % 4 !== 0 || state.points.length < 8)) {
@@ -79,15 +89,15 @@ export const lesson = {
   },
   defaultState: () => presetState(DEFAULT_PRESET),
 
-  compute(state, ctx) {
+  compute(view, state, ctx) {
     return { ...computeModel(ctx.api, state), state };
   },
 
-  fitView(model, stage) {
+  fitView(view, model, stage) {
     const xs = [];
     const ys = [];
     for (const s of model.segments) for (let j = 0; j < s.points.length; j += 2) { xs.push(s.points[j]); ys.push(s.points[j + 1]); }
-    for (const hd of lesson.handles(model, model.state)) { xs.push(hd.x); ys.push(hd.y); }
+    for (const hd of handlesOf(model.state)) { xs.push(hd.x); ys.push(hd.y); }
     const [minY, maxY] = [Math.min(...ys), Math.max(...ys)];
     // Room at the top for the legend.
     return stage.fit(Math.min(...xs), minY, Math.max(...xs), maxY + 0.3 * (maxY - minY));
@@ -100,7 +110,6 @@ export const lesson = {
       onStep: (k) => ctx.commit({ ...ctx.state, u: k / PLAY_STEPS_PER_SEGMENT }, { history: false }),
       stepsPerSecond: 20,
     });
-    lesson.player = player;
 
     const familySelect = h('select', { id: 'family', onchange: () => switchFamily(familySelect.value) },
       FAMILIES.map((f) => h('option', { value: f }, FAMILY_NAMES[f])));
@@ -144,12 +153,12 @@ export const lesson = {
       h('h3', {}, 'Curvature κ(u)'), plots.curvature, curvatureUndefined,
       h('p', { class: 'hint' }, 'u runs over segment i on [i, i+1]; dashed lines mark the joints. A jump in |P\'| is a G1-but-not-C1 joint; a jump in κ is a joint that is not G2.'),
     );
-    lesson.ui = { curvatureUndefined, familySelect, constraintSelect, presetSelect, uSlider, uOut, toggles, jointsBody, ruleBody, plots, addButton, removeButton };
+    const ui = { curvatureUndefined, familySelect, constraintSelect, presetSelect, uSlider, uOut, toggles, jointsBody, ruleBody, plots, addButton, removeButton };
 
     function loadPreset(name) {
       player.pause();
       const next = presetState(name, ctx.state.view);
-      if (ctx.commit(next)) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+      if (ctx.commit(next)) ctx.fitView();
     }
     function switchFamily(family) {
       player.pause();
@@ -175,7 +184,7 @@ export const lesson = {
     function addSegment() {
       const state = ctx.state;
       if (segmentsOf(state) >= MAX_SEGMENTS) return;
-      if (ctx.commit({ ...state, points: appendSegment(state.points, state.family, state.constraint) })) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+      if (ctx.commit({ ...state, points: appendSegment(ctx.api, state.points, state.family, state.constraint) })) ctx.fitView();
     }
     function removeSegment() {
       const state = ctx.state;
@@ -186,7 +195,7 @@ export const lesson = {
     }
     function switchConstraint(mode) {
       const state = ctx.state;
-      const points = isPiecewise(state.family) ? enforceAll(state.points, state.family, mode) : state.points;
+      const points = isPiecewise(state.family) ? enforceAll(ctx.api, state.points, state.family, mode) : state.points;
       ctx.commit({ ...state, constraint: mode, points });
     }
 
@@ -199,10 +208,13 @@ export const lesson = {
       if (!isPiecewise(ctx.state.family)) return;
       switchConstraint(CONSTRAINTS[(CONSTRAINTS.indexOf(ctx.state.constraint) + 1) % CONSTRAINTS.length]);
     } });
+    // The view: the panels' elements, the travelling point's player, and the core (the
+    // constraint modes move points through it while a handle is dragged).
+    return { ui, player, api: ctx.api };
   },
 
-  update(model, state, ctx) {
-    const ui = lesson.ui;
+  update(view, model, state, ctx) {
+    const ui = view.ui;
     ui.familySelect.value = state.family;
     ui.constraintSelect.value = state.constraint;
     ui.constraintSelect.disabled = !isPiecewise(state.family);
@@ -249,7 +261,7 @@ export const lesson = {
     );
   },
 
-  draw(painter, model, state, ctx) {
+  draw(view, painter, model, state, ctx) {
     if (!model) return;
     const c = ctx.colors;
     const segColors = [c.series[0], c.series[2]];
@@ -291,7 +303,7 @@ export const lesson = {
     }
     // handles
     const selected = ctx.ui.selected;
-    for (const hd of lesson.handles(model, state)) {
+    for (const hd of handlesOf(state)) {
       const on = hd.id === selected;
       painter.circle(hd.x, hd.y, on ? 8 : 6, { fill: on ? c.highlight : c.background, stroke: c.ink, width: 1.5 });
     }
@@ -299,26 +311,20 @@ export const lesson = {
     const t = model.traveller;
     drawVector(painter, t.point, t.velocity, FIRST_SCALE, { stroke: c.series[4], width: 3, halo: c.background }, 'velocity P\'/3');
     painter.circle(t.point[0], t.point[1], 7, { fill: c.series[4], stroke: c.ink, width: 1.5 });
-    if (ctx.stage && painter.g) drawPlots(model, state, ctx);
     // legend (screen corner, in world coordinates of the current view)
-    const tr = painter.t;
-    const [lx, ly] = tr.toWorld(12, 16);
-    const lineH = 20 / tr.zoom * (painter.scale ?? 1);
     const legend = [
       [c.series[1], 'P\'/3 from the left (solid)'], [c.series[5], 'P\'/3 from the right (dashed)'],
       [c.series[3], 'P\'\'/6 left'], [c.series[6], 'P\'\'/6 right (dashed)'], [c.series[4], 'travelling point, velocity P\'/3'],
     ];
-    legend.forEach(([color, words], i) => painter.text(lx, ly - i * lineH, `■ ${words}`, { fill: color, font: 12, align: 'left', halo: c.background }));
+    drawLegend(painter, legend, { marker: '■', font: 12, halo: c.background });
   },
 
-  handles(model, state) {
-    return state.points.map((_, i) => {
-      const [x, y] = handlePosition(state, i);
-      return { id: `p${i}`, x, y, label: pointName(state, i) };
-    });
-  },
+  // The plots of |P'|, P'' and the curvature follow every frame (the cursor at u).
+  afterFrame(view, model, state, ctx) { drawPlots(view.ui, model, state, ctx); },
 
-  moveHandle(state, id, x, y) {
+  handles(view, model, state) { return handlesOf(state); },
+
+  moveHandle(view, state, id, x, y) {
     const i = Number(id.slice(1));
     if (!Number.isInteger(i) || i < 0 || i >= state.points.length) return null;
     let to = [x, y];
@@ -331,10 +337,10 @@ export const lesson = {
       points[i] = to;
       return { ...state, points };
     }
-    return { ...state, points: dragWithConstraint(state.points, state.family, state.constraint, i, to) };
+    return { ...state, points: dragWithConstraint(view.api, state.points, state.family, state.constraint, i, to) };
   },
 
-  describe(model, state) {
+  describe(view, model, state) {
     if (!model) return '';
     const joints = model.joints.map((j) => `joint ${j.index}: ${label('C', j.parametric)} and ${label('G', j.geometric)}, speed ${formatNumber(j.left.speed, 3)} before and ${formatNumber(j.right.speed, 3)} after`).join('; ');
     return `${FAMILY_NAMES[state.family]} curve of ${model.segmentCount} segments, dragging keeps ${state.constraint}. ${joints}. Travelling point at u = ${formatNumber(state.u, 3)}, (${formatNumber(model.traveller.point[0], 3)}, ${formatNumber(model.traveller.point[1], 3)}).`;
@@ -342,7 +348,7 @@ export const lesson = {
 
   exports: [{
     label: 'Samples along the curve (CSV)', filename: 'continuity-samples.csv', type: 'text/csv',
-    make(model) {
+    make(view, model) {
       const lines = ['u,x,y,dx,dy,ddx,ddy,speed,curvature'];
       for (const s of model.segments) {
         for (let j = 0; j < s.u.length; j += 1) {
@@ -379,22 +385,22 @@ function explainJoint(joint) {
   return 'the directions differ: a corner (C0 only).';
 }
 
-function drawPlots(model, state, ctx) {
+function drawPlots(ui, model, state, ctx) {
   const c = ctx.colors;
   const plotColors = { ink: c.ink, muted: c.muted, grid: c.grid, background: c.background };
   const marks = model.joints.map((j) => ({ u: j.u, label: `J${j.index}` }));
   const speedPieces = model.segments.map((s) => ({ u: s.u, v: s.speed }));
-  drawSeriesPlot(lesson.ui.plots.speed, { series: [{ label: '|P\'|', color: c.series[4], pieces: speedPieces }], marks, cursor: state.u, yLabel: '|P\'(u)|', colors: plotColors });
+  drawSeriesPlot(ui.plots.speed, { series: [{ label: '|P\'|', color: c.series[4], pieces: speedPieces }], marks, cursor: state.u, yLabel: '|P\'(u)|', colors: plotColors });
   const comp = (k) => model.segments.map((s) => ({ u: s.u, v: s.u.map((_, j) => s.d2[2 * j + k]) }));
-  drawSeriesPlot(lesson.ui.plots.second, {
+  drawSeriesPlot(ui.plots.second, {
     series: [{ label: 'x\'\'', color: c.series[0], pieces: comp(0) }, { label: 'y\'\'', color: c.series[1], dash: [6, 3], pieces: comp(1) }],
     marks, cursor: state.u, yLabel: 'x\'\' (solid), y\'\' (dashed)', colors: plotColors,
   });
   const undefinedAt = model.segments.flatMap((s) => s.undefinedAt);
-  lesson.ui.curvatureUndefined.textContent = undefinedAt.length
+  ui.curvatureUndefined.textContent = undefinedAt.length
     ? `κ undefined (P' = 0, the plot leaves a gap) at ${undefinedAt.map((x) => `u = ${formatNumber(x.u, 4)} (|P'| = ${formatNumber(x.speed, 3)})`).join(', ')}.`
     : '';
-  drawSeriesPlot(lesson.ui.plots.curvature, {
+  drawSeriesPlot(ui.plots.curvature, {
     series: [{ label: 'κ', color: c.series[2], pieces: model.segments.map((s) => ({ u: s.u, v: s.curvature })) }],
     marks, cursor: state.u, yLabel: 'κ(u)', colors: plotColors,
   });

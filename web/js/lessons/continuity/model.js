@@ -1,17 +1,17 @@
 // Everything the continuity lab computes, through the core: the segments as curve objects,
 // samples with first and second derivatives and curvature along the whole curve, and the
 // core's classification of every joint (api.jointContinuity) with its evidence.
+import { flat, linspace } from '../../app/arrays.js';
+
 export const SAMPLES_PER_SEGMENT = 81;
-// Joints are classified by the core with a relative tolerance (docs/api-curves.md): positions
-// relative to the joint's bounding box, derivatives and curvatures relative to the larger of
-// the two compared, so the verdict does not depend on the zoom or the size of the drawing.
-// The constraint modes place points exactly (up to rounding), so 1e-9 keeps their verdicts
-// and still sees a relative difference of 1e-6.
-export const JOINT_TOLERANCE = 1e-9;
+// Joints are classified by the core with its default relative tolerance (1e-9,
+// docs/api-curves.md): positions relative to the joint's bounding box, derivatives and
+// curvatures relative to the larger of the two compared, so the verdict does not depend on
+// the zoom or the size of the drawing. The constraint modes place points exactly (up to
+// rounding), so it keeps their verdicts and still sees a relative difference of 1e-6.
 
 // The curve objects of the core API, one per segment.
 export function segmentCurves(family, points) {
-  const flat = (list) => list.flatMap((p) => p);
   const curves = [];
   if (family === 'bezier') {
     for (let i = 0; i + 3 < points.length; i += 4) curves.push({ kind: 'bezier', dim: 2, points: flat(points.slice(i, i + 4)) });
@@ -24,13 +24,6 @@ export function segmentCurves(family, points) {
     for (let i = 0; i + 3 < points.length; i += 1) curves.push({ kind: family, dim: 2, points: flat(points.slice(i, i + 4)) });
   }
   return curves;
-}
-
-function linspace(a, b, n) {
-  const out = new Float64Array(n);
-  for (let j = 0; j < n; j += 1) out[j] = a + ((b - a) * j) / (n - 1);
-  out[n - 1] = b;
-  return out;
 }
 
 // One segment sampled: points, P', P'' and curvature at SAMPLES_PER_SEGMENT parameters.
@@ -68,7 +61,7 @@ export function computeModel(api, state) {
   for (let j = 1; j < segments.length; j += 1) {
     const a = segments[j - 1];
     const b = segments[j];
-    const verdict = api.jointContinuity(a.curve, b.curve, { tolerance: JOINT_TOLERANCE });
+    const verdict = api.jointContinuity(a.curve, b.curve);
     const e = verdict.evidence;
     // e.a / e.b hold [P, P', P''] of each side at the joint (2 numbers each).
     // curvature is null where that side's P' = 0 (undefined, never 0).

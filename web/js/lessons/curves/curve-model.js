@@ -2,8 +2,9 @@
 // module (the lesson's `compute`). The result is a plain model the drawing and the panels
 // read; nothing here draws. One core call per curve and purpose (batch API): the samples,
 // the blending values at the same parameters, the derivatives at u, the segment matrices.
-import { curveSpec, familyDegree, isSpline, usesKnots, knotGroups, uniformKnots, pairs } from './families.js';
+import { curveSpec, familyDegree, isSpline, usesKnots } from './families.js';
 import { convexHull } from './hull.js';
+import { linspace, pairs } from '../../app/arrays.js';
 
 export const SAMPLES_PER_CURVE = 1000;
 const COMB_SAMPLES = 120;
@@ -11,50 +12,62 @@ const COMB_SAMPLES = 120;
 // to the plot parameter at the same fraction of the domain; both are uniform in u).
 const PLOT_PARAMS = 250;
 
-// The parameters t_j = a + (b - a) j/(n-1): uniform in the parameter, as the lecture
-// samples a curve (the sample-points overlay shows how uneven that is along the curve).
-export function uniformParams(start, end, n) {
-  const out = new Float64Array(n);
-  for (let j = 0; j < n; j += 1) out[j] = start + ((end - start) * j) / (n - 1);
-  out[n - 1] = end;
-  return out;
+// The parameters are uniform in the parameter (linspace), as the lecture samples a curve
+// (the sample-points overlay shows how uneven that is along the curve).
+const uniformParams = linspace;
+
+// The lesson's model cache (kept in its view, one per page): the parts that depend only on
+// the curve (not on u, the overlays or the construction step), so playing u or stepping a
+// construction costs no resampling. The samples go into one of two reused buffers (the core
+// fills them: no garbage per pointer move); the one the current model holds is never the
+// one being written.
+export function createModelCache() {
+  return {
+    key: null,
+    value: null,
+    sampleBuffers: [new Float64Array(2 * SAMPLES_PER_CURVE), new Float64Array(2 * SAMPLES_PER_CURVE)],
+    nextSampleBuffer: 0,
+  };
 }
 
-// A cache of the parts that depend only on the curve (not on u, the overlays or the
-// construction step), so playing u or stepping a construction costs no resampling.
-let cache = { key: null, value: null };
-// The samples go into one of two reused buffers (the core fills them: no garbage per
-// pointer move); the one the current model holds is never the one being written.
-const sampleBuffers = [new Float64Array(2 * SAMPLES_PER_CURVE), new Float64Array(2 * SAMPLES_PER_CURVE)];
-let nextSampleBuffer = 0;
-const atBuffer = new Float64Array(1);
-
-function curvePart(api, state, spec) {
+function curvePart(api, state, spec, cache) {
   const key = JSON.stringify([state.family, state.points, state.tangents, state.knots, state.weights, state.degree, state.tension]);
   if (cache.key === key) return cache.value;
   const domain = api.curveDomain(spec);
-  const params = cache.value && cache.value.domain.start === domain.start && cache.value.domain.end === domain.end
-    ? cache.value.params : uniformParams(domain.start, domain.end, SAMPLES_PER_CURVE);
-  const curve = api.evaluateCurve(spec, params, { out: sampleBuffers[nextSampleBuffer] });
-  nextSampleBuffer = 1 - nextSampleBuffer;
   const sameDomain = cache.value && cache.value.domain.start === domain.start && cache.value.domain.end === domain.end;
+  const params = sameDomain ? cache.value.params : uniformParams(domain.start, domain.end, SAMPLES_PER_CURVE);
+  const curve = api.evaluateCurve(spec, params, { out: cache.sampleBuffers[cache.nextSampleBuffer] });
+  cache.nextSampleBuffer = 1 - cache.nextSampleBuffer;
   const plotParams = sameDomain ? cache.value.plotParams : uniformParams(domain.start, domain.end, PLOT_PARAMS);
   const blending = api.blendingFunctions(spec, plotParams);
   const value = { domain, params, curve, plotParams, blending };
-  cache = { key, value };
+  cache.key = key;
+  cache.value = value;
   return value;
 }
 
-export function computeCurveModel(api, state) {
+// The knots as the core reports them: the whole vector (a uniform B-spline's implicit t_j =
+// j - p included) and each distinct value with its multiplicity m, the index of its first
+// copy and the continuity C^(p-m) there.
+function knotModel(api, spec, domain) {
+  const r = api.knotMultiplicities(spec);
+  const groups = Array.from(r.values, (value, k) => ({
+    value, multiplicity: r.multiplicities[k], firstIndex: r.firstIndices[k], interior: r.interior[k] === 1, continuity: r.continuity[k],
+  }));
+  const inside = groups.filter((g) => g.value >= domain.start && g.value <= domain.end);
+  const positions = api.evaluateCurve(spec, Float64Array.from(inside.map((g) => g.value)));
+  return { values: Array.from(r.knots), groups, inside, positions };
+}
+
+export function computeCurveModel(api, state, cache) {
   const spec = curveSpec(state);
-  const part = curvePart(api, state, spec);
+  const part = curvePart(api, state, spec, cache);
   const { domain } = part;
   const degree = familyDegree(state);
   const u = Math.min(Math.max(state.u, domain.start), domain.end);
-  atBuffer[0] = u;
   // P, P', P'' at u in one pass: values[2k + c] is component c of the k-th derivative.
-  const pd = api.evaluateWithDerivatives(spec, atBuffer, 2);
-  const segmentIndex = segmentAt(api, spec, domain, u);
+  const pd = api.evaluateWithDerivatives(spec, Float64Array.of(u), 2);
+  const segmentIndex = api.segmentAt(spec, u);
   const segment = api.segmentMatrices(spec, segmentIndex);
 
   const model = {
@@ -81,11 +94,7 @@ export function computeCurveModel(api, state) {
   };
 
   if (isSpline(state.family)) {
-    const knots = usesKnots(state.family) ? state.knots : uniformKnots(state.points.length, state.degree);
-    const groups = knotGroups(knots, state.degree);
-    const inside = groups.filter((g) => g.value >= domain.start && g.value <= domain.end);
-    const where = api.evaluateCurve(spec, Float64Array.from(inside.map((g) => g.value)));
-    model.knots = { values: knots, groups, inside, positions: where };
+    model.knots = knotModel(api, spec, domain);
   } else {
     // Segment joints: the curve at the segment boundaries of the piecewise families.
     const n = domain.segmentCount ?? 1;
@@ -98,26 +107,6 @@ export function computeCurveModel(api, state) {
   if (state.family === 'nurbs') model.homogeneous = homogeneousView(api, state, spec, part, u);
   model.construction = construction(api, state, spec, u, degree);
   return model;
-}
-
-function segmentAt(api, spec, domain, u) {
-  const count = domain.segmentCount ?? 1;
-  if (count <= 1) return 0;
-  if (spec.knots || spec.kind === 'bspline' || spec.kind === 'nurbs') {
-    // Non-empty spans of the knot vector in order; segment i is the i-th of them.
-    const knots = spec.knots ?? Float64Array.from(uniformKnots(spec.points.length / spec.dim, spec.degree));
-    const p = spec.degree;
-    const K = spec.points.length / spec.dim;
-    let index = -1;
-    for (let l = p; l < K; l += 1) {
-      if (knots[l + 1] > knots[l]) {
-        index += 1;
-        if (u < knots[l + 1]) return index;
-      }
-    }
-    return Math.max(0, index);
-  }
-  return Math.min(count - 1, Math.max(0, Math.floor(((u - domain.start) / (domain.end - domain.start)) * count)));
 }
 
 function segmentPointIndices(segment, state) {
@@ -211,10 +200,6 @@ function construction(api, state, spec, u, degree) {
     };
   }
   return null;
-}
-
-export function resetModelCache() {
-  cache = { key: null, value: null };
 }
 
 // Which construction kinds a family offers (those the loaded core provides: the page

@@ -1,7 +1,9 @@
 // The curve families of lectures 000-004 as the lesson's state knows them, and the
 // bookkeeping that keeps a state consistent when the family, the degree or the number of
 // points changes (knot count K + p + 1, one weight and one tangent per point). No curve
-// mathematics here: the core evaluates; this module only builds the description it reads.
+// mathematics here: the core evaluates and makes the knot vectors; this module only builds
+// the description it reads and keeps the state's lists the right length.
+import { flat } from '../../app/arrays.js';
 
 export const FAMILIES = [
   { id: 'hermite', label: 'Hermite (points and tangents)', minPoints: 2, maxPoints: 16, lecture: '000, 001, 003, 004' },
@@ -35,56 +37,12 @@ export function familyDegree(state) {
 
 export const maxDegreeFor = (count) => Math.max(1, Math.min(MAX_SPLINE_DEGREE, count - 1));
 
-// Knot vectors of K + p + 1 entries (lecture 002: "open/clamped knots").
-export function clampedKnots(count, degree) {
-  const interior = count - degree - 1;
-  const knots = [];
-  for (let j = 0; j <= degree; j += 1) knots.push(0);
-  for (let j = 1; j <= interior; j += 1) knots.push(round(j / (interior + 1)));
-  for (let j = 0; j <= degree; j += 1) knots.push(1);
-  return knots;
-}
+// Knot vectors of K + p + 1 entries (lecture 002: open/clamped, uniform, unclamped) come
+// from the core: api.clampedKnots, api.uniformKnots, api.unclampedKnots, api.isClampedKnots.
 
-// t_j = j - p: the knots the core uses for a uniform B-spline without knots (domain [0, K-p]).
-export function uniformKnots(count, degree) {
-  return Array.from({ length: count + degree + 1 }, (_, j) => j - degree);
-}
-
-// The interior knots kept, the repeated end knots spread out with the neighbouring spacing.
-export function unclampedKnots(knots, degree) {
-  const n = knots.length;
-  const a = knots[degree];
-  const b = knots[n - 1 - degree];
-  const inner = knots.slice(degree, n - degree);
-  const steps = [];
-  for (let i = 1; i < inner.length; i += 1) if (inner[i] > inner[i - 1]) steps.push(inner[i] - inner[i - 1]);
-  const h = steps.length ? steps[0] : 1;
-  const hEnd = steps.length ? steps[steps.length - 1] : 1;
-  const out = knots.slice();
-  for (let j = degree - 1; j >= 0; j -= 1) out[j] = round(a - (degree - j) * h);
-  for (let j = n - degree; j < n; j += 1) out[j] = round(b + (j - (n - 1 - degree)) * hEnd);
-  return out;
-}
-
-export function isClamped(knots, degree) {
-  const n = knots.length;
-  for (let j = 1; j <= degree; j += 1) {
-    if (knots[j] !== knots[0] || knots[n - 1 - j] !== knots[n - 1]) return false;
-  }
-  return true;
-}
-
-// Distinct knot values with their multiplicity m, and the continuity C^(p-m) there
-// (lecture 002: a knot of multiplicity m lowers the continuity to C^(p-m)).
-export function knotGroups(knots, degree) {
-  const groups = [];
-  knots.forEach((value, index) => {
-    const last = groups[groups.length - 1];
-    if (last && last.value === value) { last.multiplicity += 1; last.indices.push(index); } else groups.push({ value, multiplicity: 1, indices: [index] });
-  });
-  for (const g of groups) g.continuity = degree - g.multiplicity;
-  return groups;
-}
+// The default scene's knots: the clamped vector of 4 points of degree 3 (p + 1 zeros, p + 1
+// ones; a test checks it against api.clampedKnots(4, 3)).
+export const DEFAULT_KNOTS = [0, 0, 0, 0, 1, 1, 1, 1];
 
 export function continuityLabel(k) {
   return k < 0 ? 'C-1 (break)' : `C${k}`;
@@ -92,10 +50,14 @@ export function continuityLabel(k) {
 
 const round = (x) => Math.round(x * 1e9) / 1e9;
 
-// Knots for `count` points of `degree` in the style of `previous` (clamped or uniform).
-export function knotsLike(previous, count, degree, previousDegree = degree) {
-  if (previous && previous.length && !isClamped(previous, previousDegree)) return uniformKnots(count, degree);
-  return clampedKnots(count, degree);
+// Knots for `count` points of `degree` in the style of `previous` (clamped or uniform). The
+// families without knots keep a vector too (switching back to a B-spline starts from it);
+// there the degree is capped at what `count` points carry, and a vector too short to say
+// counts as clamped.
+export function knotsLike(api, previous, count, degree, previousDegree = degree) {
+  const p = Math.min(degree, maxDegreeFor(count));
+  const uniform = previous?.length >= 2 * previousDegree + 2 && !api.isClampedKnots(previous, previousDegree);
+  return Array.from(uniform ? api.uniformKnots(count, p) : api.clampedKnots(count, p));
 }
 
 // The description of the curve the core reads (issue 5: {kind, dim, points, degree?,
@@ -124,18 +86,6 @@ export function curveSpec(state) {
   }
 }
 
-export function flat(pairs) {
-  const out = new Float64Array(pairs.length * 2);
-  pairs.forEach(([x, y], i) => { out[2 * i] = x; out[2 * i + 1] = y; });
-  return out;
-}
-
-export const pairs = (xy, stride = 2) => {
-  const out = [];
-  for (let i = 0; i + 1 < xy.length; i += stride) out.push([xy[i], xy[i + 1]]);
-  return out;
-};
-
 // Default scenes. The Bezier cubic is BENCH.md's P0..P3 (z dropped).
 export const defaultPoints = {
   hermite: [[0, 0], [2, 1.5], [4, 0]],
@@ -156,7 +106,7 @@ export const defaultTangents = (points) => points.map((p, i) => {
 });
 
 // A consistent state for `family`, keeping the points when the family can use them.
-export function switchFamily(state, family) {
+export function switchFamily(api, state, family) {
   const info = familyInfo(family);
   let points = state.points.map((p) => p.slice());
   if (points.length < info.minPoints || points.length > (info.maxPoints ?? Infinity)) points = defaultPoints[family].map((p) => p.slice());
@@ -165,9 +115,9 @@ export function switchFamily(state, family) {
   next.tangents = points.length === state.tangents.length ? state.tangents : defaultTangents(points);
   next.weights = points.length === state.weights.length ? state.weights : points.map(() => 1);
   next.knots = usesKnots(family)
-    ? (state.knots.length === points.length + degree + 1 && usesKnots(state.family) ? state.knots : clampedKnots(points.length, degree))
+    ? (state.knots.length === points.length + degree + 1 && usesKnots(state.family) ? state.knots : Array.from(api.clampedKnots(points.length, degree)))
     : state.knots;
-  if (!usesKnots(family) && next.knots.length !== points.length + degree + 1) next.knots = clampedKnots(points.length, Math.min(degree, maxDegreeFor(points.length)));
+  if (!usesKnots(family) && next.knots.length !== points.length + degree + 1) next.knots = Array.from(api.clampedKnots(points.length, Math.min(degree, maxDegreeFor(points.length))));
   next.construction = { kind: 'none', step: 0 };
   next.u = 0;
   return next;
@@ -177,7 +127,7 @@ export function switchFamily(state, family) {
 // `box` ({minX, minY, maxX, maxY}, world units: the visible view less a margin), when given,
 // shortens a point that continues the polygon past an end so it stays in view; the caller
 // re-fits the view when that is not possible (the end point itself at or beyond the edge).
-export function addPoint(state, after, at = null, box = null) {
+export function addPoint(api, state, after, at = null, box = null) {
   const K = state.points.length;
   const i = Math.min(Math.max(after, -1), K - 1);
   let p;
@@ -188,25 +138,25 @@ export function addPoint(state, after, at = null, box = null) {
   const points = insertAt(state.points, i + 1, p.map(round));
   const tangents = insertAt(state.tangents, i + 1, [1, 0]);
   const weights = insertAt(state.weights, i + 1, 1);
-  return withCount({ ...state, points, tangents, weights }, state);
+  return withCount(api, { ...state, points, tangents, weights }, state);
 }
 
-export function removePoint(state, index) {
+export function removePoint(api, state, index) {
   const points = state.points.filter((_, i) => i !== index);
   const tangents = state.tangents.filter((_, i) => i !== index);
   const weights = state.weights.filter((_, i) => i !== index);
-  return withCount({ ...state, points, tangents, weights }, state);
+  return withCount(api, { ...state, points, tangents, weights }, state);
 }
 
 // Knots and degree that fit the new number of points, in the old knots' style.
-function withCount(next, previous) {
+function withCount(api, next, previous) {
   const degree = isSpline(next.family) ? Math.min(previous.degree, maxDegreeFor(next.points.length)) : previous.degree;
-  const knots = knotsLike(previous.knots, next.points.length, degree, previous.degree);
+  const knots = knotsLike(api, previous.knots, next.points.length, degree, previous.degree);
   return { ...next, degree, knots, construction: { kind: 'none', step: 0 } };
 }
 
-export function withDegree(state, degree) {
-  const knots = knotsLike(state.knots, state.points.length, degree, state.degree);
+export function withDegree(api, state, degree) {
+  const knots = knotsLike(api, state.knots, state.points.length, degree, state.degree);
   return { ...state, degree, knots, construction: { kind: 'none', step: 0 } };
 }
 

@@ -6,7 +6,7 @@
 //   const inset = createHomogeneousInset(container);
 //   inset.update({ lifted: [[wx, wy, w]...], curve3: Float64Array (stride 3),
 //                  projected: [[x, y]...], curve2: Float64Array (stride 2), at: [X, Y, W], colors });
-import { createPlotCanvas } from './plot-canvas.js';
+import { createPlotCanvas } from '../../ui/plot-canvas.js';
 
 const DEPTH = [0.45, -0.3]; // screen direction of the y axis (oblique projection)
 

@@ -5,9 +5,12 @@
 // with the keyboard ([ and ] choose a knot, arrows move it). Reusable by other lessons.
 //
 //   const strip = createKnotStrip(container, { onChange(knots, {final}) });
-//   strip.update({ knots, degree, domain, u, editable, colors, present });
-import { createPlotCanvas } from './plot-canvas.js';
-import { knotGroups, continuityLabel } from './families.js';
+//   strip.update({ knots, groups, degree, domain, u, editable, colors, present });
+// groups: the distinct knots as the core reports them ({ value, multiplicity, firstIndex,
+// continuity }, api.knotMultiplicities).
+import { createPlotCanvas } from '../../ui/plot-canvas.js';
+import { formatShort as fmt } from '../../ui/format.js';
+import { continuityLabel } from './families.js';
 
 const PAD_X = 28;
 const AXIS_Y = 58;
@@ -63,11 +66,10 @@ export function createKnotStrip(container, { onChange, label = 'Knot strip' } = 
     g.lineWidth = 2;
     g.beginPath(); g.moveTo(xOf(data.u), AXIS_Y - 10); g.lineTo(xOf(data.u), AXIS_Y + 10); g.stroke();
     // knots
-    const groups = knotGroups(data.knots, data.degree);
     g.textAlign = 'center';
-    for (const group of groups) {
+    for (const group of data.groups) {
       const x = xOf(group.value);
-      for (const j of group.indices) {
+      for (let j = group.firstIndex; j < group.firstIndex + group.multiplicity; j += 1) {
         const [mx, my] = markerPosition(j);
         g.beginPath();
         g.moveTo(mx, my - 5); g.lineTo(mx + 5, my + 4); g.lineTo(mx - 5, my + 4); g.closePath();
@@ -172,5 +174,4 @@ export function createKnotStrip(container, { onChange, label = 'Knot strip' } = 
   };
 }
 
-const fmt = (x) => String(Number(x.toPrecision(3)));
 const sub = (j) => String(j).split('').map((d) => '₀₁₂₃₄₅₆₇₈₉'[Number(d)]).join('');

@@ -1,13 +1,15 @@
+// @ts-check
 // The curve explorer (issue 6; lectures 000-004): one page for every curve family of the
 // course. State: the family, points, tangents, knots, weights, degree, tension, u, the
 // construction and its step, the overlays, the matrix form, the view. All mathematics in
 // compute() through the core (curve-model.js); draw() only draws; the panels show the
 // numbers the core returned.
-import { number, integer, boolean, oneOf, list, object } from '../../app/schema.js';
-import { FAMILY_IDS, familyInfo, usesKnots, isSpline, defaultPoints, defaultTangents, clampedKnots, pairs } from './families.js';
+import { number, integer, boolean, oneOf, list, object, viewSchema } from '../../app/schema.js';
+import { FAMILY_IDS, familyInfo, usesKnots, isSpline, defaultPoints, defaultTangents, DEFAULT_KNOTS } from './families.js';
+import { OVERLAYS, CONSTRUCTIONS, DEFAULT_OVERLAYS, blendingLabels } from './names.js';
 import { computeCurveModel, constructionsFor } from './curve-model.js';
-import { drawCurve, drawInfluence, drawPolygon, drawHull, drawVector, drawComb, drawMarks, drawSamples, drawLevels } from './overlays.js';
-import { setupPanels, updatePanels, drawPlots } from './panels.js';
+import { drawCurve, drawInfluence, drawPolygon, drawHull, drawVector, drawComb, drawMarks, drawSamples, drawLevels } from '../../ui/curve-overlays.js';
+import { createPanels, updatePanels, drawPlots } from './panels.js';
 import { formatNumber } from '../../ui/mathml.js';
 
 const pair = list(number(), { min: 2, max: 2 });
@@ -15,20 +17,10 @@ const pair = list(number(), { min: 2, max: 2 });
 // checked by checkState and, for interpolation, by the core (api.curveLimits(); a test
 // keeps this bound above it).
 export const MAX_LIST = 64;
-export const CONSTRUCTIONS = ['none', 'de-casteljau', 'de-boor', 'subdivide', 'elevate', 'insert-knot'];
-export const OVERLAYS = {
-  polygon: 'Control polygon',
-  hull: 'Convex hull',
-  tangent: "Tangent P'(u)",
-  second: "Second derivative P''(u)",
-  comb: 'Curvature comb',
-  knots: 'Knots / segment joints',
-  samples: 'Sample points (every 20th of 1,000)',
-  influence: 'Tint the curve by the point under the mouse',
-};
 
 const overlaySchema = object(Object.fromEntries(Object.keys(OVERLAYS).map((k) => [k, boolean()])));
 
+/** @type {import('../../app/contract.js').Lesson} */
 export const lesson = {
   id: 'curves',
   title: 'Curve explorer',
@@ -46,7 +38,7 @@ export const lesson = {
     overlays: overlaySchema,
     transposed: boolean(),
     compare: boolean(),
-    view: object({ cx: number(), cy: number(), zoom: number({ min: 1, max: 1e5 }) }),
+    view: viewSchema(),
   },
 
   defaultState() {
@@ -55,13 +47,13 @@ export const lesson = {
       family: 'bezier',
       points,
       tangents: defaultTangents(points),
-      knots: clampedKnots(points.length, 3),
+      knots: DEFAULT_KNOTS.slice(),
       weights: points.map(() => 1),
       degree: 3,
       tension: 0,
       u: 0.35,
       construction: { kind: 'none', step: 0 },
-      overlays: { polygon: true, hull: false, tangent: false, second: false, comb: false, knots: true, samples: false, influence: true },
+      overlays: { ...DEFAULT_OVERLAYS },
       transposed: false,
       compare: true,
       view: { cx: 2, cy: 1, zoom: 120 },
@@ -83,20 +75,16 @@ export const lesson = {
     return null;
   },
 
-  compute(state, ctx) {
+  compute(view, state, ctx) {
     const problem = lesson.checkState(state);
-    if (problem) {
-      const err = new Error(problem);
-      err.code = 'inconsistent-state';
-      throw err;
-    }
-    return computeCurveModel(ctx.api, state);
+    if (problem) throw Object.assign(new Error(problem), { code: 'inconsistent-state' });
+    return computeCurveModel(ctx.api, state, view.cache);
   },
 
-  setup(ctx) { setupPanels(ctx, lesson); },
-  update(model, state, ctx) { updatePanels(model, state, ctx); },
+  setup(ctx) { return createPanels(ctx); },
+  update(view, model, state, ctx) { updatePanels(view, model, state, ctx); },
 
-  fitView(model, stage) {
+  fitView(view, model, stage) {
     let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
     const grow = (x, y) => { minX = Math.min(minX, x); maxX = Math.max(maxX, x); minY = Math.min(minY, y); maxY = Math.max(maxY, y); };
     for (let j = 0; j < model.samples.length; j += 2) grow(model.samples[j], model.samples[j + 1]);
@@ -109,7 +97,7 @@ export const lesson = {
 
   usesHoverPoint: false,
 
-  draw(painter, model, state, ctx) {
+  draw(view, painter, model, state, ctx) {
     const c = ctx.colors;
     const zoom = state.view.zoom;
     const K = state.points.length;
@@ -163,10 +151,24 @@ export const lesson = {
         painter.text(x + tx / 3, y + ty / 3, `T${i}/3`, { fill: seriesOf(i), font: 12, dx: 12, dy: 10, halo: c.background, align: 'left' });
       });
     }
-    if (painter.g) drawPlots(model, state, ctx, item);
   },
 
-  handles(model, state) {
+  // The blending plot, the knot strip and the homogeneous inset follow every frame (the
+  // cursor at u, the hovered point's curve highlighted).
+  afterFrame(view, model, state, ctx) {
+    drawPlots(view, model, state, ctx, hoveredItem(ctx.ui.hover, state.points.length, state.family));
+  },
+
+  // Shift+click adds a control point at the mouse.
+  click(view, x, y, ctx, event) {
+    if (!event?.shiftKey) return false;
+    view.addAt(x, y);
+    return true;
+  },
+  // The panels show the selected point's tangent and weight.
+  onSelect(view, id, ctx) { ctx.refresh(); },
+
+  handles(view, model, state) {
     const out = state.points.map(([x, y], i) => ({ id: `p${i}`, x, y, label: `control point P${i}` }));
     if (state.family === 'hermite') {
       state.tangents.forEach(([tx, ty], i) => {
@@ -177,7 +179,7 @@ export const lesson = {
     return out;
   },
 
-  moveHandle(state, id, x, y) {
+  moveHandle(view, state, id, x, y) {
     const i = Number(id.slice(1));
     const rx = round(x);
     const ry = round(y);
@@ -195,7 +197,7 @@ export const lesson = {
     return null;
   },
 
-  describe(model, state) {
+  describe(view, model, state) {
     const info = familyInfo(state.family);
     const pts = state.points.map(([x, y], i) => `P${i} (${formatNumber(x, 3)}, ${formatNumber(y, 3)})`).join(', ');
     return `${info.label}, degree ${model.degree}, ${state.points.length} control points: ${pts}. ` +
@@ -210,7 +212,7 @@ export const lesson = {
       label: 'Sampled points (CSV)',
       filename: 'curve-samples.csv',
       type: 'text/csv',
-      make(model) {
+      make(view, model) {
         const lines = ['u,x,y'];
         for (let j = 0; j < model.params.length; j += 1) lines.push(`${model.params[j]},${model.samples[2 * j]},${model.samples[2 * j + 1]}`);
         return lines.join('\n') + '\n';
@@ -220,7 +222,7 @@ export const lesson = {
       label: 'Blending function values (CSV)',
       filename: 'blending-functions.csv',
       type: 'text/csv',
-      make(model, state) {
+      make(view, model, state) {
         const { count, values, params } = model.plot;
         const names = blendingLabels(state, count).map((n) => n.replace(',', '_'));
         const lines = [['u', ...names].join(',')];
@@ -235,18 +237,6 @@ export const lesson = {
   ],
 };
 
-// Blending function i belongs to point i (Hermite: items K..2K-1 are the tangents).
-export function blendingLabels(state, count) {
-  const K = state.points.length;
-  const p = state.degree;
-  return Array.from({ length: count }, (_, i) => {
-    if (state.family === 'hermite') return i < K ? `H_P${i}` : `H_T${i - K}`;
-    if (isSpline(state.family)) return state.family === 'nurbs' ? `R${i},${p}` : `N${i},${p}`;
-    if (state.family === 'bezier') return `B${i},${K - 1}`;
-    if (state.family === 'interpolation') return `L${i}`;
-    return `B_P${i}`;
-  });
-}
 
 function hoveredItem(hovered, K, family) {
   if (typeof hovered !== 'string') return null;
@@ -304,4 +294,4 @@ function gridStep(zoom) {
 }
 
 const round = (x) => Math.round(x * 1e4) / 1e4;
-export { constructionsFor, pairs };
+export { constructionsFor, OVERLAYS, CONSTRUCTIONS, blendingLabels };

@@ -8,14 +8,15 @@ import { createPlayer } from '../../app/player.js';
 import { formatNumber } from '../../ui/mathml.js';
 import {
   FAMILIES, familyInfo, familyMaxPoints, usesKnots, isSpline, hasDegreeChoice, maxDegreeFor, switchFamily, addPoint, removePoint,
-  withDegree, clampedKnots, uniformKnots, unclampedKnots, knotGroups, continuityLabel,
+  withDegree, continuityLabel,
 } from './families.js';
-import { constructionsFor } from './curve-model.js';
-import { createBlendingPlot } from './blending-plot.js';
-import { createMatrixPanel } from './matrix-panel.js';
+import { pairs } from '../../app/arrays.js';
+import { constructionsFor, createModelCache } from './curve-model.js';
+import { createBlendingPlot } from '../../ui/blending-plot.js';
+import { createMatrixPanel } from '../../ui/matrix-panel.js';
 import { createKnotStrip } from './knot-strip.js';
 import { createHomogeneousInset } from './homogeneous-inset.js';
-import { OVERLAYS, blendingLabels } from './lesson.js';
+import { OVERLAYS, DEFAULT_OVERLAYS, blendingLabels } from './names.js';
 
 const U_STEPS = 120;
 const CONSTRUCTION_LABELS = {
@@ -31,25 +32,25 @@ const CONSTRUCTION_LABELS = {
 // knots 0,0,0,1/4,1/4,1/2,1/2,3/4,3/4,1,1,1.
 export function circlePreset(api, radius = 2) {
   const c = api.nurbsCircle({ center: [0, 0], radius });
-  const points = [];
-  for (let j = 0; j + 1 < c.points.length; j += 2) points.push([c.points[j], c.points[j + 1]]);
+  const points = pairs(c.points);
   return { family: 'nurbs', degree: c.degree, points, weights: Array.from(c.weights), knots: Array.from(c.knots) };
 }
 
-let els = null;
-
-export function setupPanels(ctx, lesson) {
+// Builds every control and panel of the page and returns the lesson's view: the DOM
+// references, the players and the per-page caches the later hooks read (the lesson
+// contract, web/js/app/contract.js).
+export function createPanels(ctx) {
   const commit = (next, opts) => ctx.commit(next, opts);
   const state = () => ctx.state;
   const clearConstruction = (s) => ({ ...s, construction: { kind: 'none', step: 0 } });
 
   // ---------------------------------------------------------------- under the drawing
   const family = h('select', { id: 'curve-family', onchange: (e) => {
-    const next = switchFamily(state(), e.target.value);
-    if (commit(next)) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+    const next = switchFamily(ctx.api, state(), e.target.value);
+    if (commit(next)) ctx.fitView();
     else e.target.value = state().family;
   } }, FAMILIES.map((f) => h('option', { value: f.id }, f.label)));
-  const degree = h('select', { id: 'curve-degree', onchange: (e) => commit(withDegree(state(), Number(e.target.value))) });
+  const degree = h('select', { id: 'curve-degree', onchange: (e) => commit(withDegree(ctx.api, state(), Number(e.target.value))) });
   const tension = h('input', { type: 'range', id: 'curve-tension', min: -0.5, max: 1, step: 0.05, oninput: (e) => commit({ ...state(), tension: Number(e.target.value) }, { coalesce: 'tension' }) });
   const tensionOut = h('output', { for: 'curve-tension' });
   const uSlider = h('input', { type: 'range', id: 'curve-u', step: 'any', oninput: (e) => setU(Number(e.target.value)) });
@@ -80,12 +81,12 @@ export function setupPanels(ctx, lesson) {
     const sel = selectedPoint(ctx);
     const index = at ? s.points.length : (sel ?? s.points.length - 1) + 1;
     const box = visibleBox(ADD_MARGIN_PX);
-    const next = addPoint(s, index - 1, at, box);
+    const next = addPoint(ctx.api, s, index - 1, at, box);
     if (!commit(next)) return;
     // A point that could not be placed in view (its neighbours are at or past the edge):
     // the view moves to show the whole curve, so nothing is added out of sight.
     const [x, y] = next.points[index];
-    if (!at && !(x >= box.minX && x <= box.maxX && y >= box.minY && y <= box.maxY)) ctx.setView(ctx.lesson.fitView(ctx.model, ctx.stage));
+    if (!at && !(x >= box.minX && x <= box.maxX && y >= box.minY && y <= box.maxY)) ctx.fitView();
     ctx.message.info(`Added P${index}.`);
   }
   // The world box the canvas shows, less `marginPx` on each side.
@@ -102,7 +103,7 @@ export function setupPanels(ctx, lesson) {
     const info = familyInfo(s.family);
     if (sel === null) { ctx.message.warn('Select a control point first (click it, or focus the drawing and press ]).'); return; }
     if (s.points.length <= info.minPoints) { ctx.message.warn(`${info.label} needs at least ${info.minPoints} points.`); return; }
-    if (commit(removePoint(s, sel))) { ctx.ui.selected = null; ctx.message.info(`Removed P${sel}.`); }
+    if (commit(removePoint(ctx.api, s, sel))) { ctx.ui.selected = null; ctx.message.info(`Removed P${sel}.`); }
   }
 
   const row1 = h('div', { class: 'curve-row' },
@@ -115,7 +116,7 @@ export function setupPanels(ctx, lesson) {
   ctx.controls.append(row1, row2, plots);
   const blending = createBlendingPlot(plots, {
     label: 'Blending functions',
-    onSeek(u, { final }) { if (final) ctx.store.endGesture(); else setU(u, 'u-plot'); },
+    onSeek(u, { final }) { if (final) ctx.endGesture(); else setU(u, 'u-plot'); },
   });
   const stripBox = h('div', { class: 'knot-strip-box' });
   plots.append(stripBox);
@@ -123,7 +124,7 @@ export function setupPanels(ctx, lesson) {
     label: 'Knot strip',
     onChange(knots, { final }) {
       if (knots) commit(clearConstruction({ ...state(), knots }), { coalesce: final ? null : 'knot-drag' });
-      if (final) ctx.store.endGesture();
+      if (final) ctx.endGesture();
     },
   });
 
@@ -248,16 +249,17 @@ export function setupPanels(ctx, lesson) {
 
   const knotsBody = panel(ctx.panels, { id: 'panel-knots', title: 'Knots, multiplicity and continuity' });
   const presets = h('div', { class: 'button-row' },
-    h('button', { type: 'button', class: 'tool', 'data-action': 'knots-clamped', onclick: () => setKnots(clampedKnots(state().points.length, state().degree)) }, 'Clamped'),
-    h('button', { type: 'button', class: 'tool', 'data-action': 'knots-unclamped', onclick: () => setKnots(unclampedKnots(state().knots, state().degree)) }, 'Unclamped'),
-    h('button', { type: 'button', class: 'tool', 'data-action': 'knots-uniform', onclick: () => setKnots(uniformKnots(state().points.length, state().degree)) }, 'Uniform'));
+    h('button', { type: 'button', class: 'tool', 'data-action': 'knots-clamped', onclick: () => setKnots(Array.from(ctx.api.clampedKnots(state().points.length, state().degree))) }, 'Clamped'),
+    h('button', { type: 'button', class: 'tool', 'data-action': 'knots-unclamped', onclick: () => setKnots(Array.from(ctx.api.unclampedKnots(state().knots, state().degree))) }, 'Unclamped'),
+    h('button', { type: 'button', class: 'tool', 'data-action': 'knots-uniform', onclick: () => setKnots(Array.from(ctx.api.uniformKnots(state().points.length, state().degree))) }, 'Uniform'));
   const knotTable = h('div', { class: 'knot-table' });
   const removalNote = h('p', { class: 'hint', id: 'knot-removal-note' },
     'Raising m inserts the knot again (Boehm): the curve does not move. Lowering m is knot removal, which moves the curve unless it already has the higher continuity there; take a raise back with Undo, which is exact.');
   knotsBody.append(presets, knotTable, removalNote);
+  // A preset keeps u, moved onto the new knots' domain [t_p, t_K] (the core's curveDomain).
   function setKnots(knots) {
     const s = state();
-    const d = { start: knots[s.degree], end: knots[knots.length - 1 - s.degree] };
+    const d = ctx.api.curveDomain({ ...ctx.model.spec, kind: 'bspline', weights: undefined, knots });
     commit(clearConstruction({ ...s, knots, u: Math.min(d.end, Math.max(d.start, s.u)) }));
   }
 
@@ -266,7 +268,7 @@ export function setupPanels(ctx, lesson) {
     const s = state();
     const next = clearConstruction({ ...s, ...circlePreset(ctx.api, 2), tangents: [], u: 0 });
     next.tangents = next.points.map(() => [1, 0]);
-    if (commit(next)) { ctx.setView(lesson.fitView(ctx.model, ctx.stage)); ctx.message.info('Exact circle: a quadratic NURBS with 9 points and weights 1, √2/2.'); }
+    if (commit(next)) { ctx.fitView(); ctx.message.info('Exact circle: a quadratic NURBS with 9 points and weights 1, √2/2.'); }
   } }, 'Exact circle preset');
   const weightList = h('div', { class: 'weight-list' });
   const insetBox = h('div', { class: 'inset-box' });
@@ -286,7 +288,7 @@ export function setupPanels(ctx, lesson) {
     toggleOverlays: () => {
       const o = state().overlays;
       const anyOn = Object.values(o).some(Boolean);
-      const next = anyOn ? Object.fromEntries(Object.keys(o).map((k) => [k, false])) : (savedOverlays ?? lesson.defaultState().overlays);
+      const next = anyOn ? Object.fromEntries(Object.keys(o).map((k) => [k, false])) : (savedOverlays ?? { ...DEFAULT_OVERLAYS });
       savedOverlays = anyOn ? o : null;
       commit({ ...state(), overlays: next }, { recompute: true });
     },
@@ -302,16 +304,13 @@ export function setupPanels(ctx, lesson) {
     setU(Math.min(d.end, Math.max(d.start, state().u + (sign * (d.end - d.start)) / 50)));
   }
 
-  lesson.click = (x, y, c, event) => {
-    if (!event?.shiftKey) return false;
-    addSelected([Math.round(x * 1e4) / 1e4, Math.round(y * 1e4) / 1e4]);
-    return true;
-  };
-  lesson.onSelect = () => ctx.refresh();
+  // Shift+click on the drawing adds a point there (the lesson's click hook calls this).
+  const addAt = (x, y) => addSelected([Math.round(x * 1e4) / 1e4, Math.round(y * 1e4) / 1e4]);
 
-  els = { family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, transposed, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
+  const view = { addAt, cache: createModelCache(), family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, transposed, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
     inspector, tangentFields, weightFields, knotField, knotTable, knotsPanel: knotsBody.parentElement, nurbsPanel: nurbsBody.parentElement, weightList, inset,
     degreeLabel: row1.querySelector('.degree-label'), tensionGroup: row1.querySelector('.tension-group'), lastKnotKey: null, lastWeightKey: null, conPlayer, uPlayer, commit, state, setKnots };
+  return view;
 }
 
 function selectedPoint(ctx) {
@@ -325,8 +324,7 @@ function selectedTangent(ctx) {
 
 const setValue = (input, v) => { if (document.activeElement !== input) input.value = String(v); };
 
-export function updatePanels(model, state, ctx) {
-  if (!els) return;
+export function updatePanels(els, model, state, ctx) {
   const K = state.points.length;
   els.family.value = state.family;
   // degree
@@ -396,7 +394,7 @@ export function updatePanels(model, state, ctx) {
     const key = JSON.stringify(state.weights);
     if (key !== els.lastWeightKey) {
       els.lastWeightKey = key;
-      els.weightList.replaceChildren(...state.weights.map((w, j) => weightRow(w, j, ctx)));
+      els.weightList.replaceChildren(...state.weights.map((w, j) => weightRow(els, w, j, ctx)));
     }
   }
 }
@@ -449,14 +447,13 @@ function raiseMultiplicity(value, ctx) {
   const s = ctx.state;
   let r;
   try { r = ctx.api.insertKnot(ctx.model.spec, value); } catch (err) { ctx.message.error(err.message, err.code); return; }
-  const points = [];
-  for (let j = 0; j + 1 < r.curve.points.length; j += 2) points.push([r.curve.points[j], r.curve.points[j + 1]]);
+  const points = pairs(r.curve.points);
   const knots = Array.from(r.curve.knots);
   const next = { ...s, points, knots, weights: r.curve.weights?.length ? Array.from(r.curve.weights) : points.map(() => 1),
     tangents: points.map(() => [1, 0]), construction: { kind: 'none', step: 0 } };
   if (ctx.commit(next)) {
-    const m = knots.filter((k) => k === value).length;
-    ctx.message.info(`Knot ${formatNumber(value, 4)} now has multiplicity ${m} (C${s.degree - m} there); the curve did not move, P${r.newPoints.join(', P')} are new.`);
+    const g = ctx.model.knots.groups.find((k) => k.value === value);
+    ctx.message.info(`Knot ${formatNumber(value, 4)} now has multiplicity ${g.multiplicity} (C${g.continuity} there); the curve did not move, P${r.newPoints.join(', P')} are new.`);
   }
 }
 
@@ -465,25 +462,24 @@ function raiseMultiplicity(value, ctx) {
 // already C^(p-m+1) there, and the core has no knot removal to judge or minimise the change;
 // a button that silently moved the curve would teach the wrong thing (issue 6 decision).
 
-function weightRow(w, j, ctx) {
+function weightRow(els, w, j, ctx) {
   const id = `weight-${j}`;
   const slider = h('input', { type: 'range', id, min: 0.05, max: 5, step: 0.05, value: w, 'data-weight': j,
-    oninput: (e) => setWeight(j, Number(e.target.value), ctx, 'weight-slider') });
+    oninput: (e) => setWeight(els, j, Number(e.target.value), ctx, 'weight-slider') });
   const num = h('input', { type: 'number', min: 0, step: 0.05, value: w, 'aria-label': `weight of P${j} (exact)`,
-    onchange: (e) => setWeight(j, Number(e.target.value), ctx, null) });
+    onchange: (e) => setWeight(els, j, Number(e.target.value), ctx, null) });
   return h('div', { class: 'weight-row' }, h('label', { for: id }, `w${j}`), slider, num);
 }
 
-function setWeight(j, w, ctx, coalesce) {
+function setWeight(els, j, w, ctx, coalesce) {
   const s = ctx.state;
   const weights = s.weights.slice();
   weights[j] = w;
   if (!ctx.commit({ ...s, weights }, { coalesce })) els.lastWeightKey = null;
 }
 
-// Secondary canvases redrawn with every frame (the cursor and the hover highlight).
-export function drawPlots(model, state, ctx, hoveredItem) {
-  if (!els) return;
+// Secondary canvases redrawn after every frame (the cursor and the hover highlight).
+export function drawPlots(els, model, state, ctx, hoveredItem) {
   const K = state.points.length;
   const labels = blendingLabels(state, model.plot.count);
   const hermite = state.family === 'hermite';
@@ -503,7 +499,7 @@ export function drawPlots(model, state, ctx, hoveredItem) {
     caption: captionFor(state),
   });
   if (model.knots) {
-    els.strip.update({ knots: model.knots.values, degree: state.degree, domain: model.domain, u: model.u,
+    els.strip.update({ knots: model.knots.values, groups: model.knots.groups, degree: state.degree, domain: model.domain, u: model.u,
       editable: usesKnots(state.family), colors: ctx.colors, present: ctx.ui.present });
   }
   if (model.homogeneous) {

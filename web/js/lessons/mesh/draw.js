@@ -199,11 +199,14 @@ function drawVertices(painter, model, colors) {
   }
 }
 
-const baseCache = { key: null, sceneKey: null, view: null, canvas: null, ms: 0, timer: 0 };
+// One per lesson view (setup): the picture of the last base drawing of a big mesh.
+export function createBaseCache() {
+  return { key: null, sceneKey: null, view: null, canvas: null, ms: 0, timer: 0 };
+}
 const SLOW_BASE_MS = 30;     // a base picture slower than this is not redrawn while panning
 const SETTLE_MS = 200;       // ... but once the view has been still this long
 
-function drawBaseCached(painter, model, state, ctx) {
+function drawBaseCached(baseCache, painter, model, state, ctx) {
   const E = model.we.edges.length / 8;
   if (!(painter instanceof CanvasPainter) || E < CACHE_EDGES) {
     drawBase(painter, model, state, ctx.colors);
@@ -286,9 +289,9 @@ function drawWalk(painter, model, state, colors) {
   if (!frame.done && frame.next >= 0 && frame.line >= 2) highlightEdge(painter, model, frame.next, { stroke: found, width: 3, dash: [6, 6] });
 }
 
-export function drawMesh(painter, model, state, ctx) {
+export function drawMesh(baseCache, painter, model, state, ctx) {
   if (!model) return;
-  drawBaseCached(painter, model, state, ctx);
+  drawBaseCached(baseCache, painter, model, state, ctx);
   drawWalk(painter, model, state, ctx.colors);
   drawElement(painter, model, ctx.ui.meshHover, ctx.colors, false);
   drawElement(painter, model, ctx.ui.meshPick, ctx.colors, true);

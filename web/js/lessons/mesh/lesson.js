@@ -1,12 +1,13 @@
+// @ts-check
 // The mesh lesson (issue 4; lectures 000, 001, 003): one mesh, every representation of it
 // live, the winged-edge walks around a vertex and along a face animated as the slide tells
 // them, the representations' query costs and storage, and plane equations and normals.
 // The state is plain JSON (schema below); the model is what the core returned for it.
-import { number, integer, boolean, oneOf, text, list, object, nullable } from '../../app/schema.js';
+import { number, integer, boolean, oneOf, text, list, object, nullable, viewSchema } from '../../app/schema.js';
 import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
-import { createMeshSource, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
+import { createMeshSource, cacheKeys, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
 import { normaliseSteps, walkFrames } from './walk.js';
-import { drawMesh, viewRotation, projectAll, unprojectDelta, pickElement, facesAway, LABEL_LIMIT } from './draw.js';
+import { drawMesh, createBaseCache, viewRotation, projectAll, unprojectDelta, facesAway, LABEL_LIMIT } from './draw.js';
 import { setupPanels } from './panels.js';
 import { meshExports } from './exports.js';
 import { vLabel, fLabel, eLabel } from './labels.js';
@@ -18,7 +19,19 @@ export const QUERY_KINDS = ['faces-around-vertex', 'edges-around-vertex', 'edges
 const MAX_IMPORT_VERTICES = MAX_MESH_VERTICES;
 const MAX_IMPORT_FACES = MAX_MESH_FACES;
 
-const source = createMeshSource();
+// The mesh operations a state may hold, replayed in order on the built mesh (issue 14).
+// Each is checked for shape here; whether it fits the mesh (an edge of that vertex or face)
+// is the core's check when it is replayed, which names the operation if it refuses.
+const MAX_OPS = 1000;
+const elementIndex = integer({ min: 0, max: 10000000 });
+const OP_SHAPES = {
+  'set-vertex-edge': object({ op: text({ maxLength: 40 }), v: elementIndex, e: elementIndex }),
+  'set-face-edge': object({ op: text({ maxLength: 40 }), f: elementIndex, e: elementIndex }),
+};
+const operation = (v, path) => {
+  const op = oneOf(...Object.keys(OP_SHAPES))(v?.op, `${path}.op`);
+  return OP_SHAPES[op](v, path);
+};
 
 const schema = {
   meshKind: oneOf(...MESH_KINDS.map((k) => k.id)),
@@ -31,6 +44,7 @@ const schema = {
     faces: list(list(integer({ min: 0, max: MAX_IMPORT_VERTICES - 1 }), { min: 3, max: MAX_FACE_CORNERS }), { min: 1, max: MAX_IMPORT_FACES }),
   })),
   moved: list(object({ v: integer({ min: 0, max: 10000000 }), p: list(number(), { min: 3, max: 3 }) }), { max: 100000 }),
+  ops: list(operation, { max: MAX_OPS }),
   walk: oneOf('vertex', 'face'),
   vertex: integer({ min: 0, max: 10000000 }),
   face: integer({ min: 0, max: 10000000 }),
@@ -40,7 +54,7 @@ const schema = {
   query: object({ kind: oneOf(...QUERY_KINDS), vertex: integer({ min: 0, max: 10000000 }), face: integer({ min: 0, max: 10000000 }), edge: integer({ min: 0, max: 10000000 }) }),
   mode3d: boolean(),
   rotation: object({ yaw: number({ min: -100, max: 100 }), pitch: number({ min: -100, max: 100 }) }),
-  view: object({ cx: number(), cy: number(), zoom: number({ min: 1, max: 1e5 }) }),
+  view: viewSchema(),
 };
 
 function defaultState() {
@@ -51,6 +65,7 @@ function defaultState() {
     sphere: { slices: 12, stacks: 6 },
     imported: null,
     moved: [],
+    ops: [],
     walk: 'vertex',
     vertex: 1, // v2: the slide's example
     face: 0,
@@ -69,15 +84,19 @@ function checkState(state) {
   return null;
 }
 
-// Per-topology and per-position caches, so a traversal step costs one frame lookup.
-const derived = { topology: -1, version: -1, viewKey: null, projected: null, zExtent: 0, we: null, counts: null, steps: new Map(), planes: null, lastChange: null };
+// Per-topology and per-version caches (keyed on the mesh's id and version, cacheKeys), so a
+// traversal step costs one frame lookup. One per lesson view (setup).
+function createDerived() {
+  return { topology: null, version: null, viewKey: null, projected: null, zExtent: 0, we: null, counts: null, steps: new Map(), planes: null, lastChange: null };
+}
 
-function wingedTables(entry) {
-  if (derived.topology !== entry.topology) {
-    Object.assign(derived, { topology: entry.topology, version: -1, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, lastChange: null });
+function wingedTables(derived, entry, keys) {
+  if (derived.topology !== keys.topology) {
+    const sameSource = derived.source === keys.source;
+    Object.assign(derived, { source: keys.source, topology: keys.topology, version: null, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, lastChange: sameSource ? derived.lastChange : null });
   }
-  if (derived.version !== entry.version) {
-    derived.version = entry.version;
+  if (derived.version !== keys.version) {
+    derived.version = keys.version;
     derived.we = entry.mesh.wingedEdgeArrays();
     derived.planes = null;
     derived.reps = null;
@@ -89,7 +108,7 @@ function wingedTables(entry) {
   return derived.we;
 }
 
-function stepsOf(entry, kind, element) {
+function stepsOf(derived, entry, kind, element) {
   const key = `${kind}:${element}`;
   if (!derived.steps.has(key)) {
     const raw = kind === 'vertex' ? entry.mesh.traversalSteps(element) : entry.mesh.faceEdgeSteps(element);
@@ -98,19 +117,21 @@ function stepsOf(entry, kind, element) {
   return derived.steps.get(key);
 }
 
-function compute(state, ctx) {
+function compute(view, state, ctx) {
+  const { source, derived } = view;
   const { entry, changes } = source.sync(state, ctx.api);
-  const we = wingedTables(entry);
+  const keys = cacheKeys(entry);
+  const we = wingedTables(derived, entry, keys);
   if (changes.length) derived.lastChange = changes[changes.length - 1];
   const V = we.vertexEdge.length;
   const F = we.faceEdge.length;
   const E = we.edges.length / 8;
   const walkKind = state.walk;
   const walkElement = walkKind === 'vertex' ? Math.min(state.vertex, V - 1) : Math.min(state.face, F - 1);
-  const frames = walkElement >= 0 ? stepsOf(entry, walkKind, walkElement) : [];
+  const frames = walkElement >= 0 ? stepsOf(derived, entry, walkKind, walkElement) : [];
   const frame = frames[Math.min(state.step, frames.length - 1)] ?? null;
   const R = viewRotation(state);
-  const viewKey = `${entry.topology}:${entry.version}:${state.mode3d}:${R.join(',')}`;
+  const viewKey = `${keys.version}:${state.mode3d}:${R.join(',')}`;
   if (derived.viewKey !== viewKey) {
     let zExtent = 0;
     for (let v = 0; v < V; v += 1) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
@@ -124,12 +145,14 @@ function compute(state, ctx) {
   if (derived.sideKey !== sideKey) {
     derived.sideKey = sideKey;
     derived.fromBehind = state.mode3d && walkElement >= 0
-      && facesAway(R, walkKind === 'vertex' ? entry.mesh.vertexNormal(walkElement) : faceNormal(entry.mesh, walkElement));
+      && facesAway(R, walkKind === 'vertex' ? entry.mesh.vertexNormal(walkElement) : faceNormal(derived, entry.mesh, walkElement));
   }
   return {
     mesh: entry.mesh,
-    topology: entry.topology,
-    version: entry.version,
+    source: keys.source,
+    topology: keys.topology,
+    version: keys.version,
+    lastOperation: entry.lastOperation,
     positions: we.positions,
     projected: derived.projected,
     rotation: R,
@@ -147,13 +170,13 @@ function compute(state, ctx) {
   };
 }
 
-function faceNormal(mesh, f) {
+function faceNormal(derived, mesh, f) {
   derived.faceNormals ??= mesh.normals(); // once per mesh version, not per frame of a drag
   const n = derived.faceNormals;
   return [n[3 * f], n[3 * f + 1], n[3 * f + 2]];
 }
 
-function fitView(model, stage) {
+function fitView(view, model, stage) {
   if (!model) return defaultState().view;
   const P = model.projected;
   let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
@@ -164,7 +187,7 @@ function fitView(model, stage) {
   return stage.fit(minX, minY, maxX, maxY, 0.18); // margin: room for the labels beside the vertices
 }
 
-function handles(model) {
+function handles(view, model) {
   if (!model || model.V > 20000) return [];
   const out = [];
   for (let v = 0; v < model.V; v += 1) out.push({ id: `v${v}`, x: model.projected[3 * v], y: model.projected[3 * v + 1], label: vLabel(v) });
@@ -172,7 +195,7 @@ function handles(model) {
 }
 
 // A vertex dragged in the view plane moves by R^T (dx, dy, 0) in the world (in 2D: x, y).
-function moveHandle(state, id, x, y, model) {
+function moveHandle(view, state, id, x, y, model) {
   const v = Number(id.slice(1));
   if (!model || !Number.isInteger(v) || v >= model.V) return null;
   const [dx, dy, dz] = unprojectDelta(model.rotation, x - model.projected[3 * v], y - model.projected[3 * v + 1]);
@@ -181,7 +204,7 @@ function moveHandle(state, id, x, y, model) {
   return { ...state, moved };
 }
 
-function describe(model, state) {
+function describe(view, model, state) {
   if (!model) return 'No mesh.';
   const kind = MESH_KINDS.find((k) => k.id === state.meshKind)?.label ?? state.meshKind;
   const labels = model.V <= LABEL_LIMIT ? 'Vertices, directed edges (arrows from S to E) and faces are labelled as on the slides.' : 'Too many elements for labels.';
@@ -194,51 +217,51 @@ function describe(model, state) {
 // face, coordinates); the page keeps its mesh when parsing or building fails, because
 // the shell only replaces the state after compute.
 function importer(format) {
-  return (textContent, state, name, ctx) => {
+  return (view, textContent, state, name, ctx) => {
     const parsed = ctx.api.parseMesh(textContent, { format });
     const positions = Array.from(parsed.positions);
     const faces = (parsed.faces ?? []).map((f) => Array.from(f));
     // Every problem, not only the first: the panel lists them with the elements involved.
     const report = ctx.api.validateMesh({ positions, faces });
     const errors = report.problems.filter((p) => p.severity === 'error');
-    ctx.meshPanels?.showReport(name, report.problems);
+    view.panels.showReport(name, report.problems);
     if (errors.length) {
       throw Object.assign(new Error(`${errors[0].message}${errors.length > 1 ? ` (and ${errors.length - 1} more problem${errors.length > 2 ? 's' : ''}, listed in the validation report)` : ''}`), { code: errors[0].code });
     }
-    return { ...state, meshKind: 'file', imported: { name: name.slice(0, 120), positions, faces }, moved: [], vertex: 0, face: 0, step: 0, query: { ...state.query, vertex: 0, face: 0, edge: 0 } };
+    return { ...state, meshKind: 'file', imported: { name: name.slice(0, 120), positions, faces }, moved: [], ops: [], vertex: 0, face: 0, step: 0, query: { ...state.query, vertex: 0, face: 0, edge: 0 } };
   };
 }
 
+/** @type {import('../../app/contract.js').Lesson} */
 export const meshLesson = {
   id: 'mesh',
   title: 'Mesh representations',
-  stateVersion: 1,
+  stateVersion: 2,
+  // Version 2 (issue 14) holds the mesh operations; a version 1 state had none.
+  migrations: { 1: (old) => ({ ...old, ops: [] }) },
   schema,
   defaultState,
   checkState,
   contentFields: IMPORTED_CONTENT,
   compute,
-  setup: (ctx) => setupPanels(ctx),
-  update: (model, state, ctx) => ctx.meshPanels?.update(model, state),
-  draw: (painter, model, state, ctx) => {
-    drawMesh(painter, model, state, ctx);
-    ctx.meshPanels?.afterDraw(model, state);
-  },
+  // The view: the panels, the live mesh (source), the caches derived from it and the
+  // picture cache of a big mesh; nothing of the lesson lives at module level.
+  setup: (ctx) => ({ panels: setupPanels(ctx), source: createMeshSource(), derived: createDerived(), baseCache: createBaseCache() }),
+  update: (view, model, state) => view.panels.update(model, state),
+  draw: (view, painter, model, state, ctx) => drawMesh(view.baseCache, painter, model, state, ctx),
   handles,
   moveHandle,
   describe,
   fitView,
-  onSelect(id, ctx) {
+  onSelect(view, id, ctx) {
     if (id === null) return;
     const v = Number(String(id).slice(1));
     const state = ctx.state;
     if (state.walk === 'vertex' && state.vertex !== v) ctx.commit({ ...state, vertex: v, step: 0 }, { history: false });
   },
-  click(x, y, ctx, event) {
-    return ctx.meshPanels?.canvasClick(x, y, event) ?? false;
+  click(view, x, y, ctx, event) {
+    return view.panels.canvasClick(x, y, event);
   },
-  pick: (model, x, y, zoom) => pickElement(model, x, y, zoom),
   exports: meshExports,
   importers: { off: importer('off'), obj: importer('obj') },
-  labels: { vLabel, eLabel, fLabel },
 };

@@ -4,6 +4,10 @@
 // is disposed only after the new one was accepted, so a refused file keeps the page's mesh.
 // Moved vertices are applied with setVertexPosition, which reports per representation how
 // many stored entries had to change (lecture 000: independent faces rewrite every copy).
+// The state's operations (state.ops, e.g. {op: 'set-vertex-edge', v, e}) are replayed on
+// the built mesh in order; a list that is not the applied list plus new operations at its
+// end (undo, a link) rebuilds the mesh and replays it. Nothing here counts versions: the
+// mesh does (mesh.id, mesh.version), and every cache is keyed on them (cacheKeys below).
 
 export const MESH_KINDS = [
   { id: 'lecture', label: 'Lecture example (v1..v5, lecture 000)' },
@@ -85,12 +89,22 @@ export function sourceOf(state, api) {
 
 const POSITION_EPS = 0; // positions are compared exactly: the state holds the doubles the core got
 
-export function createMeshSource() {
-  let live = null; // { key, mesh, base: Float64Array, faces, applied: Map<v, [x,y,z]>, version }
+// The keys every cache of the lesson uses: one mesh state is (mesh id, version). `topology`
+// changes with the connectivity (walks, queries, counts), `version` with anything (tables,
+// positions); `source` only when another mesh was chosen (the view is fitted again).
+export function cacheKeys(entry) {
+  const { topology, geometry } = entry.mesh.version;
+  return { source: entry.key, topology: `${entry.mesh.id}.${topology}`, version: `${entry.mesh.id}.${topology}.${geometry}` };
+}
 
-  function build(state, api) {
+const sameOp = (a, b) => a.op === b.op && a.v === b.v && a.f === b.f && a.e === b.e;
+
+export function createMeshSource() {
+  let live = null; // { key, mesh, base: Float64Array, faces, applied: Map<v, [x,y,z]>, ops: [], lastOperation }
+
+  function build(state, api, force = false) {
     const key = sourceKey(state);
-    if (live && live.key === key) return live;
+    if (live && live.key === key && !force) return live;
     const source = sourceOf(state, api);
     const faces = faceList(source);
     const positions = Float64Array.from(source.positions);
@@ -100,7 +114,7 @@ export function createMeshSource() {
     }
     const mesh = api.buildMesh(spec);
     const previous = live;
-    live = { key, mesh, base: positions, faces, applied: new Map(), version: 0, topology: (previous?.topology ?? 0) + 1 };
+    live = { key, mesh, base: positions, faces, applied: new Map(), ops: [], lastOperation: null };
     previous?.mesh.dispose();
     return live;
   }
@@ -121,16 +135,35 @@ export function createMeshSource() {
       changes.push({ vertex: v, changed: live.mesh.setVertexPosition(v, p) });
       if (wanted.has(v)) live.applied.set(v, p.slice()); else live.applied.delete(v);
     }
-    if (changes.length) live.version += 1;
     return changes;
   }
 
+  // Brings the mesh's operations to state.ops: new ones at the end are applied; any other
+  // difference rebuilds the mesh and replays them all. A refused operation changed nothing
+  // in the core (checked mutators) and its error names it; live.ops stays what was applied.
+  function applyOps(state, api) {
+    const ops = state.ops ?? [];
+    const prefix = live.ops.length <= ops.length && live.ops.every((o, i) => sameOp(o, ops[i]));
+    if (!prefix) build(state, api, true);
+    for (let i = live.ops.length; i < ops.length; i += 1) {
+      try {
+        live.lastOperation = live.mesh.apply(ops[i]);
+      } catch (err) {
+        err.message = `Operation ${i + 1} (${ops[i].op}) was refused: ${err.message}`;
+        throw err;
+      }
+      live.ops.push({ ...ops[i] });
+    }
+    if (!ops.length) live.lastOperation = null;
+  }
+
   return {
-    // The live mesh for this state (built or reused, moves applied).
+    // The live mesh for this state (built or reused, operations replayed, moves applied).
     sync(state, api) {
-      const entry = build(state, api);
+      build(state, api);
+      applyOps(state, api);
       const changes = applyMoves(state);
-      return { entry, changes };
+      return { entry: live, changes };
     },
     get live() { return live; },
   };

@@ -8,6 +8,7 @@ import { MESH_KINDS } from './mesh-source.js';
 import { PSEUDOCODE, foundEdges } from './walk.js';
 import { createRepresentationTabs } from './tabs.js';
 import { vLabel, fLabel } from './labels.js';
+import { pickElement as elementAt } from './draw.js';
 
 const TAB_LABELS = {
   winged: 'Winged edge', faces: 'Independent faces', 'vertex-face': 'Vertex & face tables', adjacency: 'Adjacency lists',
@@ -40,18 +41,18 @@ export function setupPanels(ctx) {
   };
   const importButton = h('button', { type: 'button', class: 'tool', onclick: () => document.getElementById('import-file')?.click() }, 'Open OFF/OBJ…');
   const toggle3d = h('button', { type: 'button', class: 'tool', id: 'toggle-3d', 'aria-pressed': 'false', onclick: () => set3d(!state().mode3d) }, '3D view');
-  const fitButton = h('button', { type: 'button', class: 'tool', onclick: () => ctx.setView(ctx.lesson.fitView(ctx.model, ctx.stage)) }, 'Fit');
+  const fitButton = h('button', { type: 'button', class: 'tool', onclick: () => ctx.fitView() }, 'Fit');
 
   function chooseMesh(patch) {
-    const next = { ...state(), ...patch, moved: [], vertex: 0, face: 0, step: 0 };
+    const next = { ...state(), ...patch, moved: [], ops: [], vertex: 0, face: 0, step: 0 };
     if (next.meshKind === 'lecture') next.vertex = 1;
     next.query = { ...next.query, vertex: next.vertex, face: 0, edge: 0 };
     next.mode3d = patch.meshKind && !['lecture', 'foley', 'fan', 'file'].includes(next.meshKind) ? true : (patch.meshKind ? false : next.mode3d);
-    if (ctx.commit(next)) ctx.setView(ctx.lesson.fitView(ctx.model, ctx.stage));
+    if (ctx.commit(next)) ctx.fitView();
     else syncControls();
   }
   function set3d(on) {
-    if (ctx.commit({ ...state(), mode3d: on })) ctx.setView(ctx.lesson.fitView(ctx.model, ctx.stage));
+    if (ctx.commit({ ...state(), mode3d: on })) ctx.fitView();
   }
   meshSelect.addEventListener('change', () => {
     if (meshSelect.value === 'file' && !state().imported) {
@@ -159,7 +160,7 @@ export function setupPanels(ctx) {
   }
 
   // ------------------------------------------------------------ tabs
-  const tabs = createRepresentationTabs(ctx, TAB_LABELS);
+  const tabs = createRepresentationTabs(ctx, TAB_LABELS, { pickElement: (element) => pickElement(element) });
   ctx.panels.replaceChildren(report, walkPanel, tabs.root);
 
   // ------------------------------------------------------------ canvas hover, click, rotate
@@ -177,7 +178,7 @@ export function setupPanels(ctx) {
     const rect = stage.getBoundingClientRect();
     const [x, y] = ctx.stage.transform().toWorld(event.clientX - rect.left, event.clientY - rect.top);
     const overHandle = ctx.ui.hover;
-    setHover(overHandle ? { kind: 'vertex', index: Number(String(overHandle).slice(1)) } : ctx.lesson.pick(ctx.model, x, y, state().view.zoom));
+    setHover(overHandle ? { kind: 'vertex', index: Number(String(overHandle).slice(1)) } : elementAt(ctx.model, x, y, state().view.zoom));
   });
   stage.addEventListener('pointerleave', () => setHover(null));
 
@@ -191,7 +192,7 @@ export function setupPanels(ctx) {
   window.addEventListener('pointerup', () => { rotating = null; });
 
   function canvasClick(x, y, event) {
-    const element = ctx.lesson.pick(ctx.model, x, y, state().view.zoom);
+    const element = elementAt(ctx.model, x, y, state().view.zoom);
     if (element) pickElement(element, { fromCanvas: true });
     if (state().mode3d && event && !event.shiftKey) {
       rotating = { x: event.clientX, y: event.clientY, ...state().rotation };
@@ -251,26 +252,24 @@ export function setupPanels(ctx) {
     if (player.speed !== s.speed) player.setSpeed(s.speed);
   }
 
-  let shownTopology = null;
+  let shownSource = null;
   const panels = {
     update(model, s) {
       syncControls();
       if (!model) return;
-      if (shownTopology !== null && shownTopology !== model.topology) {
-        const view = ctx.lesson.fitView(model, ctx.stage);
-        queueMicrotask(() => ctx.setView(view));
+      // Another mesh was chosen (not another state of this one): fit the view to it.
+      if (shownSource !== null && shownSource !== model.source) {
+        queueMicrotask(() => ctx.fitView());
       }
-      shownTopology = model.topology;
+      shownSource = model.source;
       updateWalk(model, s);
       tabs.update(model, s);
     },
-    afterDraw() {},
     canvasClick,
     pickElement,
     showReport,
     player,
   };
-  ctx.meshPanels = panels;
   syncControls();
   return panels;
 }

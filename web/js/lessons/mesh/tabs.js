@@ -5,14 +5,12 @@
 // adjacency rows ask the core only for those rows.
 import { h } from '../../app/dom.js';
 import { createVirtualTable } from './virtual-table.js';
-import { EDGE_COLUMNS } from './walk.js';
 import { num } from './labels.js';
+import { createStoredEdgeControl } from './stored-edge.js';
+import { readTable, findDescriptor } from '../../core/tables.js';
 
 const sub = (letter, i) => (i >= 0 ? h('span', { class: 'lbl' }, letter, h('sub', {}, String(i + 1))) : '');
-const V = (i) => sub('v', i);
-const E = (i) => sub('e', i);
 const F = (i) => sub('F', i);
-const lambda = (node) => (node === '' ? 'λ' : node);
 const triple = (p) => `(${num(p[0])}, ${num(p[1])}, ${num(p[2])})`;
 // Representation tables longer than this show their first rows and say so (the winged-edge
 // tables, read as typed arrays, are never cut).
@@ -39,12 +37,55 @@ export const PROS_CONS = {
     cons: ['mesh needs to be oriented'] },
 };
 
+// The letters each representation names its elements with (Foley: V, E, P; λ = no polygon).
+const NOTATION = {
+  default: { vertex: 'v', edge: 'e', face: 'F', none: '' },
+  'edge-list': { vertex: 'V', edge: 'E', face: 'P', none: 'λ' },
+};
+
+// Header rows from a descriptor: the labels, and above them the groups (the winged edge's
+// wings: L R under S, L R under E) when any column has one.
+function headOf(d) {
+  const labels = ['', ...d.columns.map((c) => c.label)];
+  if (!d.columns.some((c) => c.group)) return [labels];
+  const groups = [{ text: '', colspan: 1 }];
+  for (const c of d.columns) {
+    const last = groups[groups.length - 1];
+    if (last.text === c.group) last.colspan += 1;
+    else groups.push({ text: c.group, colspan: 1 });
+  }
+  return [groups, labels];
+}
+
+// The cells of one row from what each column holds: coordinates as numbers or (x, y, z),
+// references as the slide's labels, lists of references in one cell. A table whose only
+// column is a list shows one cell per item, as the slides' face tables do (F₁ V₁ V₂ V₃).
+function rowCells(d, row, letters) {
+  const coordinate = (x) => (Array.isArray(x) ? triple(x) : num(x));
+  const spread = d.columns.length === 1 && d.columns[0].layout === 'csr';
+  const cells = [];
+  for (const c of d.columns) {
+    const value = row[c.name];
+    if (c.refers === null) {
+      if (spread) cells.push(...value.map(coordinate));
+      else cells.push(coordinate(value));
+      continue;
+    }
+    const label = (i) => sub(letters[c.refers], i);
+    if (spread) cells.push(...value.map(label));
+    else if (Array.isArray(value)) cells.push(listOf(value, label));
+    else cells.push(value >= 0 ? label(value) : letters.none);
+  }
+  return cells;
+}
+
 const SHORT_NAMES = {
   'vertex-face-tables': 'vertex and face tables', 'adjacency-lists': 'adjacency lists', 'partial-adjacency-lists': 'partial adjacency lists',
   'edge-list': 'edge list', 'winged-edge': 'winged edge',
 };
 
-export function createRepresentationTabs(ctx, labels) {
+// pickElement(element): a table row was clicked (the panels highlight it everywhere).
+export function createRepresentationTabs(ctx, labels, { pickElement }) {
   const tabIds = Object.keys(labels);
   const tablist = h('div', { class: 'mesh-tabs', role: 'tablist', 'aria-label': 'Representations' });
   const panels = {};
@@ -67,69 +108,68 @@ export function createRepresentationTabs(ctx, labels) {
   const root = h('section', { class: 'mesh-representations', 'aria-label': 'Representations' }, tablist, ...Object.values(panels));
 
   let model = null;
-  // Row i of one table of a representation, from the core's arrays. They are fetched in
-  // blocks of REPRESENTATION_ROWS rows (every table's rows [b, b + ROWS) at once) and kept
-  // until the mesh changes, so scrolling a 100k-row table fetches only the block in view.
-  const at = (name, table, i) => {
-    const block = Math.floor(i / REPRESENTATION_ROWS) * REPRESENTATION_ROWS;
-    model.derived.reps ??= new Map();
-    let reps = model.derived.reps.get(block);
-    if (!reps) {
-      if (model.derived.reps.size >= REPRESENTATION_BLOCKS_KEPT) model.derived.reps.delete(model.derived.reps.keys().next().value);
-      reps = model.mesh.representations({ offset: block, limit: REPRESENTATION_ROWS });
-      model.derived.reps.set(block, reps);
+  // Every representation table is drawn from its descriptor (web/js/core/tables.js): the
+  // caption, the headers (the slide's S E L R and the wings under S and E), one row per
+  // element of its kind, each cell by what its column holds. The winged edge's tables are
+  // read from the lesson's own copy of its arrays (model.we, never cut); the others are
+  // fetched from the core in blocks of REPRESENTATION_ROWS rows (every table of one
+  // representation at once) and kept until the mesh changes, so scrolling a 100k-row table
+  // fetches only the block in view.
+  const wingedTables = new WeakMap(); // model.we -> {name: Table}
+  const tableAt = (representation, name, i) => {
+    if (representation === 'winged-edge') {
+      if (!wingedTables.has(model.we)) {
+        const read = (n) => readTable(findDescriptor(ctx.api.tableDescriptors, 'winged-edge', n), { rows: model[n === 'vertices' ? 'V' : n === 'edges' ? 'E' : 'F'], arrays: model.we });
+        wingedTables.set(model.we, { vertices: read('vertices'), edges: read('edges'), faces: read('faces') });
+      }
+      return wingedTables.get(model.we)[name];
     }
-    return reps[name][table][i - block];
+    const block = Math.floor(i / REPRESENTATION_ROWS) * REPRESENTATION_ROWS;
+    const key = `${representation}:${block}`;
+    model.derived.reps ??= new Map();
+    let tablesOfBlock = model.derived.reps.get(key);
+    if (!tablesOfBlock) {
+      if (model.derived.reps.size >= REPRESENTATION_BLOCKS_KEPT) model.derived.reps.delete(model.derived.reps.keys().next().value);
+      tablesOfBlock = model.mesh.tables(representation, { offset: block, limit: REPRESENTATION_ROWS });
+      model.derived.reps.set(key, tablesOfBlock);
+    }
+    return tablesOfBlock[name];
   };
   const hoverRow = (kind) => (index) => { ctx.ui.meshHover = { kind, index }; markElements(); ctx.render(); };
   const leave = () => { ctx.ui.meshHover = null; markElements(); ctx.render(); };
-  const pickRow = (kind) => (index) => ctx.meshPanels.pickElement({ kind, index });
-  const table = (spec) => createVirtualTable({ onRowEnter: hoverRow(spec.kind), onRowLeave: leave, onRowClick: pickRow(spec.kind), ...spec });
+  const pickRow = (kind) => (index) => pickElement({ kind, index });
+  const table = (spec) => ({ kind: spec.kind, ...createVirtualTable({ onRowEnter: hoverRow(spec.kind), onRowLeave: leave, onRowClick: pickRow(spec.kind), ...spec }) });
+  // A table of the core, shown from its descriptor alone.
+  const described = (representation, name, id) => {
+    const d = findDescriptor(ctx.api.tableDescriptors, representation, name);
+    const letters = NOTATION[representation] ?? NOTATION.default;
+    return table({ id, kind: d.rows, caption: d.title, head: headOf(d), rowLabel: (i) => sub(letters[d.rows], i),
+      row: (i) => rowCells(d, tableAt(representation, name, i).row(i), letters) });
+  };
 
-  // ------------------------------------------------------------ winged edge (lecture 000)
   const tables = {
-    wingedVertex: table({ id: 'we-vertex-table', kind: 'vertex', caption: 'VERTEX TABLE', head: [['', 'x', 'y', 'z', 'edge']],
-      rowLabel: V, row: (v) => [num(model.positions[3 * v]), num(model.positions[3 * v + 1]), num(model.positions[3 * v + 2]), E(model.we.vertexEdge[v])] }),
-    wingedEdge: table({ id: 'we-edge-table', kind: 'edge', caption: 'EDGE TABLE',
-      head: [[{ text: '', colspan: 5 }, { text: 'S', colspan: 2 }, { text: 'E', colspan: 2 }], ['', 'S', 'E', 'L', 'R', 'L', 'R', 'L', 'R']],
-      rowLabel: E, row: (e) => {
-        const r = model.we.edges.subarray(8 * e, 8 * e + 8);
-        return [V(r[0]), V(r[1]), F(r[2]), F(r[3]), E(r[4]), E(r[5]), E(r[6]), E(r[7])];
-      } }),
-    wingedFace: table({ id: 'we-face-table', kind: 'face', caption: 'FACE TABLE', head: [['', 'edge']], rowLabel: F, row: (f) => [E(model.we.faceEdge[f])] }),
+    // ---------------------------------------------------------- winged edge (lecture 000)
+    wingedVertex: described('winged-edge', 'vertices', 'we-vertex-table'),
+    wingedEdge: described('winged-edge', 'edges', 'we-edge-table'),
+    wingedFace: described('winged-edge', 'faces', 'we-face-table'),
     // ---------------------------------------------------------- independent faces (000)
-    // These tables show the core's own arrays of each representation (mesh.representations),
-    // so a moved vertex shows up in every copy the core had to rewrite.
-    independent: table({ id: 'independent-face-table', kind: 'face', caption: 'FACE TABLE (each face lists vertex coordinates)',
-      head: [['', 'corners (x, y, z)']], rowLabel: F, row: (f) => at('independent-faces', 'faces', f).map(triple) }),
+    // These tables show the core's own arrays of each representation, so a moved vertex
+    // shows up in every copy the core had to rewrite.
+    independent: described('independent-faces', 'faces', 'independent-face-table'),
     // ---------------------------------------------------------- vertex and face tables (000)
-    vfVertex: table({ id: 'vf-vertex-table', kind: 'vertex', caption: 'VERTEX TABLE', head: [['', 'X', 'Y', 'Z']], rowLabel: V,
-      row: (v) => at('vertex-face-tables', 'vertices', v).map((x) => num(x)) }),
-    vfFace: table({ id: 'vf-face-table', kind: 'face', caption: 'FACE TABLE (each face lists vertex references)', head: [['', 'vertices']], rowLabel: F,
-      row: (f) => at('vertex-face-tables', 'faces', f).map((v) => V(v)) }),
+    vfVertex: described('vertex-face-tables', 'vertices', 'vf-vertex-table'),
+    vfFace: described('vertex-face-tables', 'faces', 'vf-face-table'),
     // ---------------------------------------------------------- adjacency lists (000)
-    adjVertex: table({ id: 'adj-vertex-table', kind: 'vertex', caption: 'Adjacency lists: per vertex', head: [['', 'position', 'vertices', 'edges', 'faces']], rowLabel: V,
-      row: (v) => { const r = at('adjacency-lists', 'vertices', v); return [triple(r.position), listOf(r.vertices, V), listOf(r.edges, E), listOf(r.faces, F)]; } }),
-    adjEdge: table({ id: 'adj-edge-table', kind: 'edge', caption: 'Adjacency lists: per edge', head: [['', 'vertices', 'edges', 'faces']], rowLabel: E,
-      row: (e) => { const r = at('adjacency-lists', 'edges', e); return [listOf(r.vertices, V), listOf(r.edges, E), listOf(r.faces, F)]; } }),
-    adjFace: table({ id: 'adj-face-table', kind: 'face', caption: 'Adjacency lists: per face', head: [['', 'vertices', 'edges', 'faces']], rowLabel: F,
-      row: (f) => { const r = at('adjacency-lists', 'faces', f); return [listOf(r.vertices, V), listOf(r.edges, E), listOf(r.faces, F)]; } }),
-    partialVertex: table({ id: 'partial-vertex-table', kind: 'vertex', caption: 'Partial adjacency lists: per vertex', head: [['', 'position', 'edges']], rowLabel: V,
-      row: (v) => { const r = at('partial-adjacency-lists', 'vertices', v); return [triple(r.position), listOf(r.edges, E)]; } }),
-    partialEdge: table({ id: 'partial-edge-table', kind: 'edge', caption: 'Partial adjacency lists: per edge', head: [['', 'vertices', 'faces']], rowLabel: E,
-      row: (e) => { const r = at('partial-adjacency-lists', 'edges', e); return [listOf(r.vertices, V), listOf(r.faces, F)]; } }),
-    partialFace: table({ id: 'partial-face-table', kind: 'face', caption: 'Partial adjacency lists: per face', head: [['', 'edges']], rowLabel: F,
-      row: (f) => [listOf(at('partial-adjacency-lists', 'faces', f).edges, E)] }),
+    adjVertex: described('adjacency-lists', 'vertices', 'adj-vertex-table'),
+    adjEdge: described('adjacency-lists', 'edges', 'adj-edge-table'),
+    adjFace: described('adjacency-lists', 'faces', 'adj-face-table'),
+    partialVertex: described('partial-adjacency-lists', 'vertices', 'partial-vertex-table'),
+    partialEdge: described('partial-adjacency-lists', 'edges', 'partial-edge-table'),
+    partialFace: described('partial-adjacency-lists', 'faces', 'partial-face-table'),
     // ---------------------------------------------------------- pointers to an edge list (001)
-    foleyVertex: table({ id: 'foley-vertex-table', kind: 'vertex', caption: 'V = (V₁, V₂, …)', head: [['', '(x, y, z)']], rowLabel: (v) => sub('V', v),
-      row: (v) => [triple(at('edge-list', 'vertices', v))] }),
-    foleyEdge: table({ id: 'foley-edge-table', kind: 'edge', caption: 'Eᵢ = (V₁, V₂, P₁, P₂)   (λ: no polygon on that side)', head: [['', 'V₁', 'V₂', 'P₁', 'P₂']], rowLabel: (e) => sub('E', e),
-      row: (e) => {
-        const r = at('edge-list', 'edges', e);
-        return [sub('V', r.v1), sub('V', r.v2), lambda(sub('P', r.p1)), lambda(sub('P', r.p2))];
-      } }),
-    foleyPolygon: table({ id: 'foley-polygon-table', kind: 'face', caption: 'Pᵢ = (E…)', head: [['', 'edges']], rowLabel: (f) => sub('P', f),
-      row: (f) => listOf(at('edge-list', 'polygons', f), (e) => sub('E', e)) }),
+    foleyVertex: described('edge-list', 'vertices', 'foley-vertex-table'),
+    foleyEdge: described('edge-list', 'edges', 'foley-edge-table'),
+    foleyPolygon: described('edge-list', 'polygons', 'foley-polygon-table'),
     // ---------------------------------------------------------- planes (001, 003)
     planes: table({ id: 'plane-table', kind: 'face', caption: 'Ax + By + Cz + D = 0 per face',
       head: [[{ text: '', colspan: 1 }, { text: 'cross product P₁P₂ × P₁P₃ (001)', colspan: 4 }, { text: 'Newell (003)', colspan: 4 }, { text: '', colspan: 2 }],
@@ -144,8 +184,9 @@ export function createRepresentationTabs(ctx, labels) {
   // ------------------------------------------------------------ fill the panels
   const changeNote = (id) => h('p', { class: 'change-note', id, 'aria-live': 'polite' });
   const notes = { faces: changeNote('change-independent'), vf: changeNote('change-vertex-face'), winged: changeNote('change-winged') };
+  const storedEdge = createStoredEdgeControl(ctx);
   panels.winged.append(h('p', { class: 'hint' }, 'Baumgart\'s winged edge as on the slide: S, E (start and end vertex), L, R (left and right face) and the four wings: the left and right edge at the Start, and at the End. Boundary edges have one face; their wings treat the boundary as a face.'),
-    notes.winged, tables.wingedVertex.root, tables.wingedEdge.root, tables.wingedFace.root);
+    notes.winged, storedEdge.root, tables.wingedVertex.root, tables.wingedEdge.root, tables.wingedFace.root);
   panels.faces.append(h('p', { class: 'hint' }, 'Each face lists vertex coordinates (lecture 000): changing a vertex requires changing the coordinates of each instance. Drag a vertex and count.'),
     notes.faces, tables.independent.root);
   panels['vertex-face'].append(h('p', { class: 'hint' }, 'Each face lists vertex references: changing a vertex changes a single point.'), notes.vf, tables.vfVertex.root, tables.vfFace.root);
@@ -167,10 +208,7 @@ export function createRepresentationTabs(ctx, labels) {
     winged: ['wingedVertex', 'wingedEdge', 'wingedFace'], faces: ['independent'], 'vertex-face': ['vfVertex', 'vfFace'],
     adjacency: ['adjVertex', 'adjEdge', 'adjFace', 'partialVertex', 'partialEdge', 'partialFace'], 'edge-list': ['foleyVertex', 'foleyEdge', 'foleyPolygon'], planes: ['planes'],
   };
-  const tableKind = {
-    wingedVertex: 'vertex', wingedEdge: 'edge', wingedFace: 'face', independent: 'face', vfVertex: 'vertex', vfFace: 'face',
-    adjVertex: 'vertex', adjEdge: 'edge', adjFace: 'face', partialVertex: 'vertex', partialEdge: 'edge', partialFace: 'face', foleyVertex: 'vertex', foleyEdge: 'edge', foleyPolygon: 'face', planes: 'face',
-  };
+  const tableKind = Object.fromEntries(Object.entries(tables).map(([name, t]) => [name, t.kind]));
   const counts = { vertex: () => model.V, edge: () => model.E, face: () => model.F };
   const drawnVersion = {};
 
@@ -264,6 +302,7 @@ export function createRepresentationTabs(ctx, labels) {
       }
       const change = describeChange(model.lastChange);
       for (const note of Object.values(notes)) note.textContent = change;
+      if (state.tab === 'winged') storedEdge.update(model);
       if (state.tab === 'storage') updateStorage();
       if (state.tab === 'queries') queryPanel.update(model, state);
       markElements();

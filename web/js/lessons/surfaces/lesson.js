@@ -1,9 +1,11 @@
+// @ts-check
 // Surface patches (lecture 002): bicubic Hermite and Bezier patches p(u,v) = u^T M P M^T v
 // sampled by the core, shown in a small 3D view (turntable camera, painter's algorithm over
 // shaded quads, iso-curves in u and v), the 4x4 net draggable in the view plane, the
 // interpolated corners, the twist vectors, the formula with live numbers, and two patches
-// joined with C0 or C1 across their shared boundary.
-import { object, list, number, oneOf, boolean, integer } from '../../app/schema.js';
+// joined with C0 or C1 across their shared boundary. setup returns the view (the controls
+// and panel bodies update fills in); the lesson keeps nothing at module level.
+import { object, list, number, oneOf, boolean, integer, viewSchema } from '../../app/schema.js';
 import { h, panel, table } from '../../app/dom.js';
 import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
 import { createCamera, projectAll } from './view3d.js';
@@ -105,6 +107,8 @@ const DEGREES_PER_PX = 0.5;
 // An angle in degrees as -180 <= a < 180.
 const wrapDegrees = (a) => ((((a + 180) % 360) + 360) % 360) - 180;
 
+/** @type {import('../../app/contract.js').Lesson} */
+/** @type {import('../../app/contract.js').Lesson} */
 export const lesson = {
   id: 'surfaces',
   title: 'Surface patches',
@@ -121,11 +125,11 @@ export const lesson = {
     camera: object({ yaw: number({ min: -360, max: 360 }), pitch: number({ min: -90, max: 90 }), perspective: boolean() }),
     show: object({ net: boolean(), iso: boolean(), shaded: boolean(), twists: boolean() }),
     marker: object({ i: integer({ min: 0, max: GRID - 1 }), j: integer({ min: 0, max: GRID - 1 }) }),
-    view: object({ cx: number(), cy: number(), zoom: number({ min: 1, max: 1e5 }) }),
+    view: viewSchema(),
   },
   defaultState,
 
-  compute(state, ctx) {
+  compute(view, state, ctx) {
     const api = ctx.api;
     const patches = {};
     for (const patch of PATCHES) {
@@ -150,7 +154,7 @@ export const lesson = {
     return { state, patches, boundary, M: api.basisMatrix(state.kind) };
   },
 
-  fitView(model, stage) {
+  fitView(view, model, stage) {
     const camera = createCamera(model.state.camera);
     const xs = [];
     const ys = [];
@@ -203,7 +207,7 @@ export const lesson = {
     formulaBody.append(h('div', { class: 'xyz-row' }, h('label', { for: 'marker-u' }, 'u ', markerU), h('label', { for: 'marker-v' }, 'v ', markerV)), formulaOut);
     const cornersBody = panel(ctx.panels, { id: 'corners-panel', title: 'Corners and twist vectors' });
     const boundaryBody = panel(ctx.panels, { id: 'boundary-panel', title: 'Two patches: across the shared boundary' });
-    lesson.ui = { kindSelect, yaw, pitch, boxes, joinSelect, inputs, inspectorTitle, markerU, markerV, formulaOut, cornersBody, boundaryBody };
+    const view = { kindSelect, yaw, pitch, boxes, joinSelect, inputs, inspectorTitle, markerU, markerV, formulaOut, cornersBody, boundaryBody };
 
     function switchKind(kind) {
       const state = ctx.state;
@@ -214,7 +218,7 @@ export const lesson = {
     function setJoined(on) {
       const state = ctx.state;
       const next = { ...state, joined: on, ...(on ? joinPatches(state.kind, state.a, state.b, state.join, 'a') : {}) };
-      if (ctx.commit(next)) ctx.setView(lesson.fitView(ctx.model, ctx.stage));
+      if (ctx.commit(next)) ctx.fitView();
     }
     function setJoin(mode) {
       const state = ctx.state;
@@ -238,25 +242,25 @@ export const lesson = {
     ctx.keymap.add({ keys: ['o'], label: 'orthographic / perspective', group: 'View', action: () => commitView({ camera: { ...ctx.state.camera, perspective: !ctx.state.camera.perspective } }) });
     ctx.keymap.add({ keys: ['h'], label: 'Bezier / Hermite basis (same surface)', group: 'Lesson', action: () => switchKind(ctx.state.kind === 'bezier' ? 'hermite' : 'bezier') });
     ctx.keymap.add({ keys: ['j'], label: 'second patch on / off', group: 'Lesson', action: () => setJoined(!ctx.state.joined) });
+    return view;
   },
 
-  update(model, state, ctx) {
-    const ui = lesson.ui;
-    ui.kindSelect.value = state.kind;
-    ui.yaw.value = String(state.camera.yaw);
-    ui.pitch.value = String(state.camera.pitch);
-    for (const b of ui.boxes) b.input.checked = b.get(state);
-    ui.joinSelect.value = state.join;
-    ui.joinSelect.disabled = !state.joined;
-    ui.markerU.value = String(state.marker.i);
-    ui.markerV.value = String(state.marker.j);
+  update(view, model, state, ctx) {
+    view.kindSelect.value = state.kind;
+    view.yaw.value = String(state.camera.yaw);
+    view.pitch.value = String(state.camera.pitch);
+    for (const b of view.boxes) b.input.checked = b.get(state);
+    view.joinSelect.value = state.join;
+    view.joinSelect.disabled = !state.joined;
+    view.markerU.value = String(state.marker.i);
+    view.markerV.value = String(state.marker.j);
 
     const sel = parseId(ctx.ui.selected);
     const entry = sel && (sel.patch === 'a' || state.joined) ? state[sel.patch][4 * sel.i + sel.j] : null;
-    ui.inspectorTitle.textContent = entry
+    view.inspectorTitle.textContent = entry
       ? `Patch ${PATCH_NAMES[sel.patch]}, row ${sel.i}, column ${sel.j}: ${entryName(state.kind, sel.i, sel.j)}${state.kind === 'hermite' && (sel.i >= 2 || sel.j >= 2) ? ' (a vector)' : ''}`
       : 'No entry selected.';
-    ui.inputs.forEach((x, k) => { x.input.disabled = !entry; x.input.value = entry ? String(Number(entry[k].toPrecision(6))) : ''; });
+    view.inputs.forEach((x, k) => { x.input.disabled = !entry; x.input.value = entry ? String(Number(entry[k].toPrecision(6))) : ''; });
 
     // The formula with the matrices the core used, and the value at the marker.
     const A = model.patches.a;
@@ -267,7 +271,7 @@ export const lesson = {
     const Mrows = rows4(model.M);
     const MT = Mrows[0].map((_, c) => Mrows.map((r) => r[c]));
     const powers = (t) => [[t ** 3, t ** 2, t, 1]];
-    ui.formulaOut.replaceChildren(
+    view.formulaOut.replaceChildren(
       h('div', { class: 'formula' }, math(mi('p'), fixed('('), mi('u'), mo(','), mi('v'), fixed(')'), mo('='),
         el('msup', mi('u'), mi('T')), matrix(Mrows), mi('P'), matrix(MT), mi('v'))),
       h('div', { class: 'formula-row' }, ['x', 'y', 'z'].map((axis, k) => h('div', { class: 'formula' },
@@ -287,7 +291,7 @@ export const lesson = {
           c.distance <= CORNER_TOLERANCE ? `0 ✓ (${c.distance.toExponential(0)})` : fmt(c.distance), fmt3(tw)]);
       });
     }
-    ui.cornersBody.replaceChildren(table({
+    view.cornersBody.replaceChildren(table({
       caption: 'The patch interpolates its corner points; p_uv is the twist (flat there when 0)',
       head: [['corner', 'p(u,v) from the core', 'control entry', 'distance', 'twist p_uv']], rows: cornerRows, className: 'data-table corners-table',
     }));
@@ -296,7 +300,7 @@ export const lesson = {
       const b = model.boundary;
       const c0 = b.positionGap <= 1e-9;
       const c1 = c0 && b.duGap <= 1e-9;
-      ui.boundaryBody.replaceChildren(
+      view.boundaryBody.replaceChildren(
         h('p', { id: 'boundary-verdict', 'data-c0': String(c0), 'data-c1': String(c1) },
           `Across A's u = 1 edge and B's u = 0 edge: position gap ${b.positionGap.toExponential(1)} (${c0 ? 'C0 ✓' : 'not C0'}), p_u gap ${b.duGap.toExponential(1)} (${c1 ? 'C1 ✓' : 'not C1'}).`),
         h('p', { class: 'hint' }, state.kind === 'bezier'
@@ -304,11 +308,11 @@ export const lesson = {
           : 'Hermite: C0 shares the boundary points and v-tangents; C1 also shares the u-tangents and twists.'),
       );
     } else {
-      ui.boundaryBody.replaceChildren(h('p', { class: 'hint' }, 'Tick "second patch" to join a second patch along the u = 1 edge.'));
+      view.boundaryBody.replaceChildren(h('p', { class: 'hint' }, 'Tick "second patch" to join a second patch along the u = 1 edge.'));
     }
   },
 
-  draw(painter, model, state, ctx) {
+  draw(view, painter, model, state, ctx) {
     if (!model) return;
     const c = ctx.colors;
     const camera = createCamera(state.camera);
@@ -406,26 +410,26 @@ export const lesson = {
     const tr = painter.t;
     const [ox, oy] = tr.toWorld(60, tr.height - 60);
     const axisLen = 40 / tr.zoom;
-    [['x', [1, 0, 0]], ['y', [0, 1, 0]], ['z', [0, 0, 1]]].forEach(([name, dir], k) => {
+    /** @type {[string, number[]][]} */ ([['x', [1, 0, 0]], ['y', [0, 1, 0]], ['z', [0, 0, 1]]]).forEach(([name, dir], k) => {
       const [ax, ay] = createCamera({ ...state.camera, perspective: false }).project(...dir);
       painter.arrow(ox, oy, ox + ax * axisLen, oy + ay * axisLen, { stroke: c.series[[0, 1, 2][k]], width: 2 });
       painter.text(ox + ax * axisLen * 1.3, oy + ay * axisLen * 1.3, name, { fill: c.ink, font: 12 });
     });
     const [lx, ly] = tr.toWorld(12, 16);
     const lineH = (20 * (painter.scale ?? 1)) / tr.zoom;
-    [[c.series[0], '━ iso-curves u = const'], [c.series[1], '━ iso-curves v = const'], [c.series[2], '○ corners (interpolated)'],
-      [c.series[3], '→ twist vectors p_uv / 9'], [c.series[4], '● p(u, v) at the marker']]
+    /** @type {[string, string][]} */ ([[c.series[0], '━ iso-curves u = const'], [c.series[1], '━ iso-curves v = const'], [c.series[2], '○ corners (interpolated)'],
+      [c.series[3], '→ twist vectors p_uv / 9'], [c.series[4], '● p(u, v) at the marker']])
       .forEach(([color, words], i) => painter.text(lx, ly - i * lineH, words, { fill: color, font: 13, align: 'left', halo: c.background }));
   },
 
-  handles(model, state) {
+  handles(view, model, state) {
     return netHandles(state).map(({ id, x, y, label }) => ({ id, x, y, label }));
   },
 
   // A drag on empty canvas turns the view (half a degree per pixel: across, turn; down,
   // look more from above); Shift-drag pans, as the stage does by default. The pointer
   // that started the drag steers; a second finger pinches to zoom as usual.
-  click(x, y, ctx, event) {
+  click(view, x, y, ctx, event) {
     if (!event || event.shiftKey || (event.button ?? 0) !== 0) return false;
     const start = { id: event.pointerId, x: event.clientX, y: event.clientY, ...ctx.state.camera };
     const move = (e) => {
@@ -447,7 +451,7 @@ export const lesson = {
     return true;
   },
 
-  moveHandle(state, id, x, y) {
+  moveHandle(view, state, id, x, y) {
     const sel = parseId(id);
     if (!sel) return null;
     const camera = createCamera(state.camera);
@@ -459,7 +463,7 @@ export const lesson = {
     return withEntry(state, sel.patch, sel.i, sel.j, value);
   },
 
-  describe(model, state) {
+  describe(view, model, state) {
     if (!model) return '';
     const a = model.patches.a;
     const corners = a.corners.map((c) => `p(${c.u},${c.v}) = ${fmt3(c.value)}`).join(', ');
@@ -469,7 +473,7 @@ export const lesson = {
 
   exports: [{
     label: 'Patch A samples (CSV)', filename: 'patch-samples.csv', type: 'text/csv',
-    make(model) {
+    make(view, model) {
       const s = model.patches.a.samples;
       const lines = ['u,v,x,y,z,nx,ny,nz'];
       for (let i = 0; i < GRID; i += 1) {

@@ -108,3 +108,13 @@ const SUB = '₀₁₂₃₄₅₆₇₈₉';
 const SUP = '⁰¹²³⁴⁵⁶⁷⁸⁹';
 const sub = (k) => String(k).split('').map((d) => SUB[Number(d)]).join('');
 const sup = (k) => String(k).split('').map((d) => SUP[Number(d)]).join('');
+
+// A legend in the top left corner of the view (12, 16 CSS px in), one line per
+// [color, words] entry, each led by `marker` in its colour; line height 20 px (times the
+// painter's export scale).
+export function drawLegend(painter, entries, { marker = '■', font = 12, halo }) {
+  const tr = painter.t;
+  const [lx, ly] = tr.toWorld(12, 16);
+  const lineH = (20 * (painter.scale ?? 1)) / tr.zoom;
+  entries.forEach(([color, words], i) => painter.text(lx, ly - i * lineH, `${marker} ${words}`, { fill: color, font, align: 'left', halo }));
+}

@@ -8,6 +8,7 @@
 //                 colorIndex?, dashed?, knots?, highlight?, present? });
 // values[count*j + i] is function i at params[j] (the core's layout).
 import { createPlotCanvas, dashFor } from './plot-canvas.js';
+import { formatShort as fmt } from './format.js';
 
 const PAD = { left: 40, right: 12, top: 14, bottom: 24 };
 
@@ -144,4 +145,3 @@ export function createBlendingPlot(container, { label = 'Blending functions', he
   };
 }
 
-const fmt = (x) => String(Number(x.toPrecision(3)));

@@ -7,7 +7,7 @@
 //
 //   const panel = createMatrixPanel(container);
 //   panel.update({ segment, u, point, transposed, title });
-import { math, mi, mo, mn, el, formatNumber } from '../../ui/mathml.js';
+import { math, mi, mo, mn, el, formatNumber } from './mathml.js';
 
 export const MATRIX_DIGITS = 4;
 

@@ -1,0 +1,16 @@
+#pragma once
+// What bench.cpp needs from mesh.cpp: the winged edge of a live handle (throws
+// Error("disposed") for a disposed or unknown one) and the checked face-set reader.
+#include "boundary.h"
+
+#include "wingspline/mesh/indexed_mesh.h"
+#include "wingspline/mesh/winged_edge.h"
+
+#include <cstdint>
+
+namespace wingspline::bindings {
+
+const mesh::WingedEdgeMesh& winged_of_handle(int32_t handle);
+mesh::IndexedMesh indexed_from_arrays(const val& positions, const val& face_offsets, const val& face_vertices);
+
+} // namespace wingspline::bindings

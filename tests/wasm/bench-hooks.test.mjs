@@ -1,0 +1,88 @@
+// The benchmark and leak-test hooks live in their own entry (web/js/core/bench-hooks.js,
+// 'wingspline/bench-hooks'), outside the student API (issue 14, part 4): nothing reachable
+// from the module's exports, the api object, a built mesh or the values they return names
+// them. The hooks themselves still work, checked against independent recomputation.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import * as wingspline from 'wingspline';
+import { loadWingspline } from 'wingspline';
+import { benchHooks } from 'wingspline/bench-hooks';
+
+const api = await loadWingspline();
+const HOOK_NAMES = ['benchBuildInCore', 'benchNormalsInCore', 'benchRingWalk', 'meshRingWalk', 'ringWalk',
+  'timeBuildInCore', 'timeNormalsInCore', 'benchHooks', 'benchAccess'];
+
+// Every property name reachable from `root` through own properties and prototypes
+// (functions are not called; a mesh is inspected as an object).
+function reachableNames(root) {
+  const names = new Set();
+  const seen = new Set();
+  const queue = [root];
+  while (queue.length) {
+    const x = queue.pop();
+    if (x === null || (typeof x !== 'object' && typeof x !== 'function') || seen.has(x)) continue;
+    if (x === Object.prototype || x === Function.prototype) continue;
+    seen.add(x);
+    for (const key of Reflect.ownKeys(x)) {
+      if (typeof key === 'string') names.add(key);
+      const d = Object.getOwnPropertyDescriptor(x, key);
+      if (d && 'value' in d) queue.push(d.value);
+    }
+    queue.push(Object.getPrototypeOf(x));
+  }
+  return names;
+}
+
+test('the student API exposes no benchmark or leak-test hook', () => {
+  const mesh = api.buildMesh(api.generateMesh('cube'));
+  try {
+    for (const [what, root] of [['module exports', wingspline], ['api', api], ['a built mesh', mesh]]) {
+      const names = reachableNames(root);
+      for (const hook of HOOK_NAMES) assert.ok(!names.has(hook), `${what} reaches '${hook}'`);
+    }
+    assert.deepEqual(Object.keys(wingspline).sort(), ['WingsplineError', 'loadWingspline']);
+  } finally {
+    mesh.dispose();
+  }
+});
+
+test('bench hooks: the ring walk visits 2E edges and sums the neighbours, counted from the edge table', () => {
+  const hooks = benchHooks(api);
+  for (const input of [api.generateMesh('sphere', { slices: 9, stacks: 5 }), api.generateMesh('grid', { nx: 4, ny: 3 })]) {
+    const mesh = api.buildMesh(input);
+    try {
+      const { edges } = mesh.wingedEdgeArrays();
+      // Each edge is met once from each end: from S (neighbour E) and from E (neighbour S).
+      let sum = 0;
+      for (let e = 0; e < edges.length; e += 8) sum += edges[e] + edges[e + 1];
+      const walk = hooks.ringWalk(mesh);
+      assert.equal(walk.visited, edges.length / 4);
+      assert.equal(walk.checksum, sum);
+    } finally {
+      mesh.dispose();
+    }
+  }
+});
+
+test('bench hooks: the in-core timers time R repetitions and refuse what the API refuses', () => {
+  const hooks = benchHooks(api);
+  const cube = api.generateMesh('cube');
+  const build = hooks.timeBuildInCore(cube, 3);
+  assert.equal(build.seconds.length, 3);
+  assert.ok(Array.from(build.seconds).every((s) => s >= 0));
+  // checksum: per repetition, the last edge's end-right wing plus E (12 on a cube).
+  const mesh = api.buildMesh(cube);
+  try {
+    const { edges } = mesh.wingedEdgeArrays();
+    assert.equal(build.checksum, 3 * (edges[edges.length - 1] + 12));
+    const normals = hooks.timeNormalsInCore(mesh, 2);
+    assert.equal(normals.seconds.length, 2);
+    const n = mesh.normals();
+    assert.equal(normals.checksum, 2 * (n[0] + n[n.length - 1]));
+    assert.throws(() => hooks.timeNormalsInCore(mesh, 0), { code: 'invalid-argument' });
+  } finally {
+    mesh.dispose();
+  }
+  assert.throws(() => hooks.ringWalk(mesh), { code: 'disposed' });
+  assert.throws(() => hooks.timeBuildInCore({ positions: [0, 0, 0, 1, 0, 0], faces: [[0, 1, 1]] }, 1));
+});

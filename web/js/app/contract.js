@@ -1,0 +1,207 @@
+// @ts-check
+// The lesson contract: the one place it is written down. A lesson module exports one object
+// of type Lesson; runLesson(lesson) (shell.js) runs it. `setup` runs first and returns the
+// lesson's view: a plain object holding everything the lesson builds or caches (DOM
+// references, panels, players, per-lesson caches). The shell keeps it and passes it as the
+// first argument to every later hook. No hook writes onto the lesson object, onto ctx, or
+// into module-level variables. Hooks are read from the lesson object each time they are
+// called, so optional hooks may be absent.
+//
+// Checked by `tsc --noEmit -p jsconfig.json` (the `types` layer of npm test): every
+// lesson.js carries `// @ts-check` and annotates its lesson object with
+// `/** @type {import('../../app/contract.js').Lesson} */`, so a hook whose parameters do not
+// match fails the layer. This file holds no code: nothing to run, only types to import.
+
+/**
+ * The lesson's state: one plain, JSON-safe object, validated field by field by `schema`.
+ * Every lesson keeps the 2D view of the stage in `state.view`. No state field is named like
+ * a member of Ctx (typed `never` here), so a hook written with its parameters shifted (the
+ * state where ctx belongs) fails the type check where it uses ctx.
+ * @typedef {{ view: CameraView, api?: never, ui?: never, colors?: never, commit?: never,
+ *   message?: never, stage?: never, keymap?: never, panels?: never, controls?: never,
+ *   [field: string]: any }} State
+ */
+
+/**
+ * What the stage shows: the world point at the canvas centre and pixels per world unit.
+ * @typedef {{ cx: number, cy: number, zoom: number }} CameraView
+ */
+
+/**
+ * What a lesson's compute returned: everything draw, update and the other hooks show. Opaque
+ * to the shell.
+ * @typedef {any} Model
+ */
+
+/**
+ * What a lesson's setup built and returns (DOM references, panels, players, caches). Opaque
+ * to the shell, which only hands it back to the lesson's hooks.
+ * @typedef {Object<string, any>} View
+ */
+
+/**
+ * A drawable point of the lesson (world coordinates). `draggable: false` shows it without
+ * letting it move.
+ * @typedef {{ id: string, x: number, y: number, label: string, draggable?: boolean, [extra: string]: any }} Handle
+ */
+
+/**
+ * Drawing style for a painter call: stroke and fill colours, width and dash in CSS pixels,
+ * font size in pixels, text alignment, alpha, and for text an offset (dx, dy) and a halo.
+ * @typedef {{ stroke?: string, fill?: string, width?: number, dash?: number[], font?: number,
+ *   align?: string, baseline?: string, alpha?: number, dx?: number, dy?: number, halo?: string,
+ *   [extra: string]: any }} Style
+ */
+
+/**
+ * The world -> screen transform of a frame (y up in the world, down on screen).
+ * @typedef {{ cx: number, cy: number, zoom: number, width: number, height: number,
+ *   toScreen(x: number, y: number): number[], toWorld(sx: number, sy: number): number[] }} Transform
+ */
+
+/**
+ * What draw receives: the canvas painter on screen, the SVG painter for an exported figure;
+ * both have this interface (app/painter.js). `xy` is a flat array x0, y0, x1, y1, ... with
+ * the given stride (2, or 3 with z ignored). The canvas context itself is not part of the
+ * contract: side canvases (plots) are drawn in afterFrame.
+ * @typedef {{
+ *   t: Transform,
+ *   scale: number,
+ *   background: string,
+ *   clear(): void,
+ *   line(ax: number, ay: number, bx: number, by: number, style?: Style): void,
+ *   polyline(xy: ArrayLike<number>, style?: Style, stride?: number): void,
+ *   polygon(xy: ArrayLike<number>, style?: Style, stride?: number): void,
+ *   polygons(xy: ArrayLike<number>, offsets: ArrayLike<number>, style?: Style): void,
+ *   segments(xy: ArrayLike<number>, style?: Style): void,
+ *   circle(x: number, y: number, radiusPx: number, style?: Style): void,
+ *   text(x: number, y: number, string: string, style?: Style): void,
+ *   arrow(ax: number, ay: number, bx: number, by: number, style?: Style): void,
+ * }} Painter
+ */
+
+/**
+ * The lesson canvas (app/stage.js): its element, the current transform, the view fitting a
+ * box, and where a world point is on the page.
+ * @typedef {{
+ *   canvas: HTMLCanvasElement,
+ *   transform(): Transform,
+ *   fit(minX: number, minY: number, maxX: number, maxY: number, margin?: number): CameraView,
+ *   toClient(x: number, y: number): { x: number, y: number },
+ *   [extra: string]: any,
+ * }} Stage
+ */
+
+/**
+ * The message line under the toolbar. `action` adds one button (an offer such as "Restore
+ * your previous work").
+ * @typedef {{
+ *   info(text: string, options?: { code?: string, action?: { id?: string, label: string, run(): void } | null, sticky?: boolean }): void,
+ *   warn(text: string, options?: { code?: string, action?: { id?: string, label: string, run(): void } | null, sticky?: boolean }): void,
+ *   error(text: string, code?: string): void,
+ *   clear(): void,
+ *   readonly text: string,
+ * }} MessageLine
+ */
+
+/**
+ * The page's key map (app/keymap.js): a lesson registers its keys in setup.
+ * @typedef {{
+ *   add(binding: { keys: string[], label: string, group?: string, when?: (event: KeyboardEvent) => boolean, action?: (event: KeyboardEvent) => void }): void,
+ *   [extra: string]: any,
+ * }} Keymap
+ */
+
+/**
+ * The presenter-remote actions a lesson may bind (all optional): PageDown/PageUp, Space/k,
+ * Home, o/b/. reach them.
+ * @typedef {{ next?: () => void, prev?: () => void, playPause?: () => void, reset?: () => void, toggleOverlays?: () => void }} PresenterActions
+ */
+
+/**
+ * Options of a change: history:false for a change that is not an undo step; coalesce: a key
+ * that merges a gesture's many changes into one undo step; recompute:false for a change the
+ * model does not depend on (the view).
+ * @typedef {{ history?: boolean, coalesce?: string | null, recompute?: boolean }} CommitOptions
+ */
+
+/**
+ * What a lesson may use (the second-to-last argument of most hooks).
+ * @typedef {{
+ *   api: any,
+ *   readonly state: State,
+ *   readonly model: Model,
+ *   commit(next: State, options?: CommitOptions): boolean,
+ *   setView(view: CameraView): void,
+ *   fitView(): void,
+ *   render(): void,
+ *   refresh(): void,
+ *   message: MessageLine,
+ *   keymap: Keymap,
+ *   ui: { selected: string | null, hover: string | null, hoverPoint: number[] | null, present: boolean, [extra: string]: any },
+ *   stage: Stage,
+ *   readonly colors: { background: string, ink: string, muted: string, highlight: string, series: string[], [name: string]: any },
+ *   panels: HTMLElement,
+ *   controls: HTMLElement,
+ *   setPresenter(actions: PresenterActions): void,
+ *   endGesture(): void,
+ * }} Ctx
+ *
+ * `state` is the accepted state and `model` the model computed from it (null before the
+ * first compute). `commit(next)` checks `next` against the schema, recomputes, and keeps
+ * the old state with a message if either refuses (returns false). `fitView()` fits the view
+ * to the lesson's drawing (lesson.fitView); `endGesture()` ends a coalesced gesture so the
+ * next change is its own undo step. `render()` redraws; `refresh()` also updates the panels.
+ */
+
+/**
+ * One export of the lesson's Export menu; `make` returns the file's content.
+ * @typedef {{ label: string, filename: string | ((state: State) => string), type: string,
+ *   make(view: View, model: Model, state: State, ctx: Ctx): string | Blob | Promise<string | Blob | null> }} ExportItem
+ */
+
+/**
+ * A large field stored by content hash (docs/state-format.md, "Large fields").
+ * @typedef {{ what?: string, file?: string, export?: string, label(value: any): string, [extra: string]: any }} ContentField
+ */
+
+/**
+ * The lesson object.
+ * @typedef {{
+ *   id: string,
+ *   title: string,
+ *   stateVersion: number,
+ *   schema: Object<string, any>,
+ *   migrations?: Object<number, (old: any) => any>,
+ *   checkState?: (state: State) => string | null,
+ *   contentFields?: Object<string, ContentField>,
+ *   defaultState(): State,
+ *   setup(ctx: Ctx): View,
+ *   compute(view: View, state: State, ctx: Ctx): Model,
+ *   update?: (view: View, model: Model, state: State, ctx: Ctx) => void,
+ *   draw(view: View, painter: Painter, model: Model, state: State, ctx: Ctx): void,
+ *   afterFrame?: (view: View, model: Model, state: State, ctx: Ctx) => void,
+ *   handles?: (view: View, model: Model, state: State) => Handle[],
+ *   moveHandle?: (view: View, state: State, id: string, x: number, y: number, model: Model) => State | null,
+ *   describe?: (view: View, model: Model, state: State) => string,
+ *   fitView?: (view: View, model: Model, stage: Stage) => CameraView,
+ *   click?: (view: View, x: number, y: number, ctx: Ctx, event: PointerEvent) => boolean,
+ *   onSelect?: (view: View, id: string | null, ctx: Ctx) => void,
+ *   usesHoverPoint?: boolean,
+ *   inspector?: false,
+ *   exports?: ExportItem[],
+ *   importers?: Object<string, (view: View, text: string, state: State, name: string, ctx: Ctx) => State>,
+ * }} Lesson
+ *
+ * `setup` builds panels and controls, registers keys and returns the view. `compute` makes
+ * every core call (it may throw: bad input). `update` refreshes the DOM panels (not on pure
+ * view changes). `draw` draws on the canvas or the SVG figure, no mathematics. `afterFrame`
+ * draws side canvases (plots) after each canvas frame, never for the SVG export. `handles`
+ * lists the draggable points; `moveHandle` returns the state with one moved (null: refused).
+ * `describe` is the text for screen readers. `click` on empty canvas returns true if the
+ * lesson consumed it. `onSelect` follows the selected handle. `usesHoverPoint`: redraw on
+ * every pointer move, not only when the hovered handle changes. `inspector: false`: no shell
+ * inspector (the lesson has its own inputs). `importers[ext]` turns a file into a state.
+ */
+
+export {};

@@ -1,0 +1,94 @@
+// @ts-check
+// Files in and out of a lesson. Export: the state (JSON), the figure (SVG, PNG) and the
+// lesson's own exports. Import: a state (JSON) or a file one of the lesson's importers
+// reads, from the file picker or dropped on the page. An imported file is read, checked
+// against the schema and computed before anything changes (the shell's accept); a refusal
+// names the file (as text) and the reason, and the lesson keeps what it had.
+import { WingsplineError } from '../core/errors.js';
+import { readEnvelopeResolved, envelopeJson } from './share-link.js';
+import { checkChange } from './schema.js';
+import { download, installImport } from './file-io.js';
+import { h } from './dom.js';
+import { errorText } from './message-line.js';
+
+/**
+ * @typedef {import('./contract.js').Lesson} Lesson
+ * @typedef {import('./contract.js').State} State
+ * @param {{
+ *   lesson: Lesson,
+ *   contents: any,
+ *   hookArgs: () => [import('./contract.js').View, import('./contract.js').Model, State, import('./contract.js').Ctx],
+ *   svgFigure: () => string,
+ *   canvas: HTMLCanvasElement,
+ *   accept: (next: State, reason: string, report: (err: any) => void) => boolean,
+ *   message: import('./contract.js').MessageLine,
+ *   announceStatus: (text: string) => void,
+ * }} parts
+ */
+export function createImportExport({ lesson, contents, hookArgs, svgFigure, canvas, accept, message, announceStatus }) {
+  const state = () => hookArgs()[2];
+  /** @type {import('./contract.js').ExportItem[]} */
+  const exportItems = [
+    { label: 'Lesson state (JSON)', filename: `${lesson.id}-state.json`, type: 'application/json',
+      make: () => envelopeJson(lesson, state()) },
+    { label: 'Figure (SVG)', filename: `${lesson.id}.svg`, type: 'image/svg+xml', make: svgFigure },
+    { label: 'Figure (PNG)', filename: `${lesson.id}.png`, type: 'image/png',
+      make: () => new Promise((resolve) => canvas.toBlob(resolve, 'image/png')) },
+    ...(lesson.exports ?? []),
+  ];
+
+  async function runExport(item) {
+    try {
+      const content = await item.make(...hookArgs());
+      download(typeof item.filename === 'function' ? item.filename(state()) : item.filename, content, item.type);
+    } catch (err) {
+      message.error(`Export failed: ${errorText(err)}`);
+    }
+  }
+
+  const importTypes = ['.json', ...Object.keys(lesson.importers ?? {}).map((ext) => `.${ext}`)];
+  // The picker is opened by a real button (visible focus, keyboard); the input stays hidden.
+  const fileInput = /** @type {HTMLInputElement} */ (h('input', { type: 'file', accept: importTypes.join(','), hidden: true, id: 'import-file', tabindex: '-1', 'aria-label': 'Import a file' }));
+
+  // The state a file holds, checked; throws an 'import-error' naming the reason.
+  async function readImport(name, text) {
+    const ext = name.toLowerCase().split('.').pop();
+    const refuse = (reason) => { throw new WingsplineError('import-error', reason); };
+    let next;
+    if (ext === 'json') {
+      let data;
+      try { data = JSON.parse(text); } catch { refuse('it is not valid JSON'); }
+      let read;
+      try { read = await readEnvelopeResolved(lesson, data, { contents }); } catch (err) { refuse(err.message); }
+      if (read.problems.length) refuse(`it does not hold a valid state (${read.problems[0]})`);
+      next = read.state;
+    } else if (lesson.importers?.[ext]) {
+      const [view, , current, ctx] = hookArgs();
+      next = lesson.importers[ext](view, text, current, name, ctx);
+    } else {
+      refuse(`this lesson imports ${importTypes.join(', ')} files`);
+    }
+    // The same limits as a link read back (a face of 1001 corners, a coordinate of 5e9).
+    const outside = checkChange(lesson.schema, next, state(), lesson.checkState);
+    if (outside) refuse(outside);
+    return next;
+  }
+
+  async function importFile({ name, text }) {
+    const refused = (err) => message.error(`${name} was not imported: ${errorText(err)}`, err?.code ?? 'import-error');
+    let next;
+    try {
+      next = await readImport(name, text);
+    } catch (err) {
+      refused(err);
+      return;
+    }
+    if (accept(next, 'import', refused)) {
+      message.info(`Imported ${name}`);
+      announceStatus(`Imported ${name}`);
+    }
+  }
+  installImport({ input: fileInput, dropTarget: document.body, onFile: importFile, onError: (text) => message.error(text, 'import-error') });
+
+  return { exportItems, runExport, fileInput };
+}

@@ -1,0 +1,131 @@
+// @ts-check
+// The lesson toolbar and the keys that go with it: undo and redo, share link, the Export
+// menu, Import, theme, presentation mode, the key map and reset; print (a clean figure on
+// white paper) and the system theme following. Presentation mode keeps the essentials
+// (undo, present, keys, reset); the rest is .advanced.
+import { h } from './dom.js';
+import { cycleTheme, currentTheme, isPresenting, setPresenting } from './theme.js';
+
+/**
+ * @param {{
+ *   header: HTMLElement,
+ *   lesson: import('./contract.js').Lesson,
+ *   store: any,
+ *   persister: any,
+ *   keymap: import('./contract.js').Keymap,
+ *   message: import('./contract.js').MessageLine,
+ *   announceStatus: (text: string) => void,
+ *   ui: import('./contract.js').Ctx['ui'],
+ *   files: { exportItems: import('./contract.js').ExportItem[], runExport: (item: import('./contract.js').ExportItem) => Promise<void>, fileInput: HTMLInputElement },
+ *   recolor: (options?: { now?: boolean }) => void,
+ *   reset: () => void,
+ *   fitView: () => void,
+ * }} parts
+ * @returns {{ update(): void }}
+ */
+export function createToolbar({ header, lesson, store, persister, keymap, message, announceStatus, ui, files, recolor, reset, fitView }) {
+  const { exportItems, runExport, fileInput } = files;
+  const buttons = {};
+  function toolButton(key, label, onclick, title = label, { advanced = false } = {}) {
+    buttons[key] = h('button', { type: 'button', class: advanced ? 'tool advanced' : 'tool', onclick, title, 'data-action': key }, label);
+    return buttons[key];
+  }
+
+  // A disclosure of plain buttons (not an ARIA menu, which would promise arrow-key roving).
+  const exportMenu = /** @type {HTMLDetailsElement} */ (h('details', { class: 'menu advanced' }, h('summary', { class: 'tool' }, 'Export'),
+    h('div', { class: 'menu-items' }, exportItems.map((item) => h('button', {
+      type: 'button', 'data-export': typeof item.filename === 'function' ? item.label : item.filename,
+      onclick() {
+        exportMenu.open = false;
+        return runExport(item);
+      },
+    }, item.label)))));
+
+  // A link to a state with a large field (an imported mesh) only refers to it: it opens on
+  // this browser only, and the person is offered the file to send with it.
+  async function share() {
+    const { url, refs } = await persister.shareLink(store.state);
+    let copied = true;
+    try {
+      await navigator.clipboard.writeText(url);
+    } catch {
+      copied = false;
+    }
+    const field = refs.length ? lesson.contentFields?.[refs[0].key] : null;
+    const item = field && exportItems.find((x) => x.filename === field.export);
+    if (field) {
+      message.warn(`This link refers to ${field.what ?? 'an imported file'} ("${refs[0].label}") that is only stored in this browser; share ${field.file ?? 'the file'} with it.`, {
+        code: 'link-refers-to-local-content',
+        action: item ? { id: 'export', label: `Export ${field.file ?? 'the file'}`, run: () => runExport(item) } : null,
+      });
+    } else if (copied) {
+      message.info('Link copied: it opens this lesson exactly as you see it now.');
+    } else {
+      message.info('The address bar holds the link to this exact state; copy it from there.');
+    }
+    return url;
+  }
+
+  async function togglePresent(on = !isPresenting()) {
+    ui.present = on;
+    await setPresenting(on);
+    recolor();
+  }
+  // Leaving full screen (Escape in the browser) also leaves presentation mode.
+  document.addEventListener('fullscreenchange', () => {
+    if (!document.fullscreenElement && isPresenting()) togglePresent(false);
+  });
+
+  function changeTheme() {
+    cycleTheme();
+    recolor();
+    announceStatus(`Theme: ${currentTheme()}`);
+  }
+
+  // Print: a clean figure on white paper whatever the screen theme, with its tables.
+  let printTheme = null;
+  window.addEventListener('beforeprint', () => {
+    printTheme = document.documentElement.dataset.theme ?? null;
+    document.documentElement.dataset.theme = 'light';
+    recolor({ now: true });
+  });
+  window.addEventListener('afterprint', () => {
+    if (printTheme) document.documentElement.dataset.theme = printTheme; else delete document.documentElement.dataset.theme;
+    printTheme = null;
+    recolor();
+  });
+  window.matchMedia?.('(prefers-color-scheme: dark)').addEventListener?.('change', () => recolor());
+
+  header.replaceChildren(
+    toolButton('undo', 'Undo', () => store.undo(), 'Undo (Ctrl+Z)'),
+    toolButton('redo', 'Redo', () => store.redo(), 'Redo (Ctrl+Shift+Z)'),
+    toolButton('share', 'Share link', share, undefined, { advanced: true }),
+    exportMenu,
+    toolButton('import', 'Import', () => fileInput.click(), 'Import a state (JSON) or a lesson file; dropping a file on the page works too', { advanced: true }),
+    fileInput,
+    toolButton('theme', 'Theme', changeTheme, 'Theme: system, light, dark (T)', { advanced: true }),
+    toolButton('present', 'Present', () => togglePresent(), 'Presentation mode (P)'),
+    toolButton('keys', 'Keys ?', () => keymap.showDialog(), 'Keyboard map (?)'),
+    toolButton('reset', 'Reset lesson', reset, 'Back to the lesson\'s starting point'),
+  );
+
+  keymap.add({ keys: ['Ctrl+z'], label: 'undo', group: 'Editing', action: () => store.undo() });
+  keymap.add({ keys: ['Ctrl+Shift+z', 'Ctrl+y'], label: 'redo', group: 'Editing', action: () => store.redo() });
+  // Handled by the focused canvas (stage.js); listed here so the key map shows them.
+  keymap.add({ keys: ['[', ']'], label: 'select the previous / next handle (canvas focused)', group: 'Editing' });
+  keymap.add({ keys: ['ArrowLeft', 'ArrowRight', 'ArrowUp', 'ArrowDown'], label: 'move the selected handle (Shift: finer)', group: 'Editing' });
+  keymap.add({ keys: ['p'], label: 'presentation mode on / off', group: 'View', action: () => togglePresent() });
+  keymap.add({ keys: ['Escape'], label: 'leave presentation mode', group: 'View', when: () => isPresenting() && !document.querySelector('dialog[open]'), action: () => togglePresent(false) });
+  keymap.add({ keys: ['t'], label: 'theme: system, light, dark', group: 'View', action: changeTheme });
+  keymap.add({ keys: ['0'], label: 'fit the drawing to the window', group: 'View', action: fitView });
+  keymap.add({ keys: ['?'], label: 'show this key map', group: 'View', action: () => keymap.showDialog() });
+
+  return {
+    update() {
+      buttons.undo.disabled = !store.canUndo;
+      buttons.redo.disabled = !store.canRedo;
+      buttons.theme.textContent = `Theme: ${currentTheme()}`;
+      buttons.present.setAttribute('aria-pressed', String(ui.present));
+    },
+  };
+}
