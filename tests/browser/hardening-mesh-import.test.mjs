@@ -124,7 +124,9 @@ test('a 40,000-triangle fan imports and its walk steps to the end without crashi
     await page.waitForFunction(() => window.wingspline.model.stepIndex === 0, null, { timeout: 60000 });
     for (let k = 0; k < 3; k += 1) await page.keyboard.press('ArrowRight');
     await page.waitForFunction(() => window.wingspline.model.frame?.foundCount === 3, null, { timeout: 60000 });
-    assert.match(await page.textContent('#walk-found'), /1\. e\s*\d+.*2\. e\s*\d+.*3\. e\s*\d+/s);
+    // The panel follows the model on the next frame.
+    await page.waitForFunction(() => /1\. e\s*\d+.*2\. e\s*\d+.*3\. e\s*\d+/s.test(document.querySelector('#walk-found').textContent), null, { timeout: 10000 })
+      .catch(async () => assert.fail(`the found list shows three edges: ${await page.textContent('#walk-found')}`));
     assert.deepEqual(page.problems, []);
   } finally {
     await context.close();

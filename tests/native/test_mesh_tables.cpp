@@ -163,7 +163,11 @@ TEST_CASE("tables: the layout check fails on data that breaks its descriptor", "
     edges.arrays[0].size -= 1; // one number short of 8 per edge
     CHECK_FALSE(table_layout_problems(edges, 5, 7, 3).empty());
     TableData faces = find(tables, Representation::VertexFaceTables, "faces");
-    faces.arrays[1].size += 1; // a face vertex the offsets do not cover
+    // A face vertex the offsets do not cover (a real, longer array: the check may read it all).
+    std::vector<int32_t> longer(faces.arrays[1].i32, faces.arrays[1].i32 + faces.arrays[1].size);
+    longer.push_back(0);
+    faces.arrays[1].i32 = longer.data();
+    faces.arrays[1].size = longer.size();
     CHECK_FALSE(table_layout_problems(faces, 5, 7, 3).empty());
     const TableData& we = find(tables, Representation::WingedEdge, "edges");
     CHECK_FALSE(table_layout_problems(we, 5, 6, 3).empty()); // e7 names an edge out of range

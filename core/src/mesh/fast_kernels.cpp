@@ -33,7 +33,8 @@ bool count_sides_fast(const IndexedMesh& mesh, int32_t* count) {
             ++count[c < a ? c : a];
             continue;
         }
-        if (!face_corners_ok(&fv[o], n, V)) return false;
+        // n < 3 first: a face without corners has no fv[o] to point at.
+        if (n < 3 || !face_corners_ok(fv.data() + o, n, V)) return false;
         for (int32_t h = o + n - 1, b = fv[o]; h >= o; --h) {
             const int32_t a = fv[h];
             ++count[a < b ? a : b];

@@ -74,7 +74,7 @@ bool count_sides(const IndexedMesh& mesh, int32_t* count) {
     const std::vector<int32_t>& fv = mesh.face_vertices;
     for (int32_t f = 0; f < mesh.face_count(); ++f) {
         const int32_t o = fo[f], n = fo[f + 1] - o;
-        if (!detail::face_corners_ok(&fv[o], n, mesh.vertex_count())) return false;
+        if (n < 3 || !detail::face_corners_ok(fv.data() + o, n, mesh.vertex_count())) return false;
         for (int32_t i = 0; i < n; ++i) ++count[std::min(fv[o + i], fv[o + (i + 1) % n])];
     }
     return true;
