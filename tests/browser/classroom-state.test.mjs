@@ -347,6 +347,8 @@ describe('Values are checked where they enter with the limits of the state forma
     const page = await openLesson(context, new URL('fixture.html', env.site.url).href);
     await page.focus('#stage');
     await page.keyboard.press(']');
+    // The fields follow the selection on the next frame: let two frames pass before reading.
+    await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
     const before0 = await stateBits(page);
     const oldX = await page.inputValue('#inspect-x');
     await page.fill('#inspect-x', '5e9');
@@ -375,6 +377,8 @@ describe('Values are checked where they enter with the limits of the state forma
     await page.focus('#stage');
     for (let k = 0; k < 6; k += 1) await page.keyboard.press(']');
     assert.equal(await page.evaluate(() => window.wingspline.selected), 'a11');
+    // The fields follow the selection on the next frame: let two frames pass before reading.
+    await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
     const before0 = await stateBits(page);
     const oldX = await page.inputValue('#entry-x');
     await page.fill('#entry-x', '150');
