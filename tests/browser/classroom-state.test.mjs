@@ -358,7 +358,8 @@ describe('Values are checked where they enter with the limits of the state forma
     assert.match(text, /5000000000/, text);
     assert.match(text, /1000000000|1e9/, 'the message gives the limit');
     assert.deepEqual(await stateBits(page), before0, 'the state is unchanged');
-    assert.equal(await page.inputValue('#inspect-x'), oldX, 'the field shows the old value again');
+    await page.waitForFunction((old) => document.querySelector('#inspect-x').value === old, oldX, { timeout: 5000 })
+      .catch(async () => assert.equal(await page.inputValue('#inspect-x'), oldX, 'the field shows the old value again'));
     await page.fill('#inspect-x', '1e9');
     await page.press('#inspect-x', 'Enter');
     await page.waitForFunction(() => window.wingspline.state.points.some((p) => p.x === 1e9));
@@ -386,7 +387,9 @@ describe('Values are checked where they enter with the limits of the state forma
     await page.waitForSelector('#message[data-kind=error]');
     assert.match(await page.evaluate(() => window.wingspline.message()), /150.*100|100.*150/);
     assert.deepEqual(await stateBits(page), before0);
-    assert.equal(await page.inputValue('#entry-x'), oldX);
+    // The refused value is replaced by the old one on the next frame.
+    await page.waitForFunction((old) => document.querySelector('#entry-x').value === old, oldX, { timeout: 5000 })
+      .catch(async () => assert.equal(await page.inputValue('#entry-x'), oldX));
     await context.close();
   });
 });
