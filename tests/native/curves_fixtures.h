@@ -4,10 +4,27 @@
 #include "wingspline/curves/basis_matrix.h"
 #include "wingspline/curves/curve.h"
 
+#include "wingspline/error.h"
+
+#include <catch2/catch.hpp>
+
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace curves_fixtures {
+
+// Runs f, expects an Error with `code` whose message contains `fragment`.
+template <class F> void expect_error(F&& f, const std::string& code, const std::string& fragment) {
+    try {
+        f();
+        FAIL("expected error " << code);
+    } catch (const wingspline::Error& e) {
+        CHECK(e.code() == code);
+        INFO("message: " << e.what());
+        CHECK(std::string(e.what()).find(fragment) != std::string::npos);
+    }
+}
 
 using wingspline::curves::Curve;
 using wingspline::curves::CurveKind;

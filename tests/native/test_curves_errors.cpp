@@ -12,17 +12,6 @@ using namespace wingspline::curves;
 using namespace curves_fixtures;
 
 namespace {
-// Runs f, expects an Error with `code` whose message contains `fragment`.
-template <class F> void expect_error(F&& f, const std::string& code, const std::string& fragment) {
-    try {
-        f();
-        FAIL("expected error " << code);
-    } catch (const wingspline::Error& e) {
-        CHECK(e.code() == code);
-        INFO("message: " << e.what());
-        CHECK(std::string(e.what()).find(fragment) != std::string::npos);
-    }
-}
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
 } // namespace

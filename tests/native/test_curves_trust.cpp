@@ -29,17 +29,6 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 // relative to the largest data value (dimensionless factor of max |y|).
 constexpr double kThroughData = 8 * kEps;
 
-template <class F> void expect_code(F&& f, const std::string& code, const std::string& fragment) {
-    try {
-        f();
-        FAIL("expected error " << code);
-    } catch (const wingspline::Error& e) {
-        CHECK(e.code() == code);
-        INFO("message: " << e.what());
-        CHECK(std::string(e.what()).find(fragment) != std::string::npos);
-    }
-}
-
 double max_abs(const std::vector<double>& v) {
     double m = 0;
     for (double x : v) m = std::max(m, std::abs(x));
@@ -120,12 +109,12 @@ TEST_CASE("interpolation: any distinct nodes have an interpolant (issue 13.1)", 
         REQUIRE(kMaxInterpolationPoints >= 32);
         const Curve c = make_curve(CurveKind::Interpolation, zigzag(kMaxInterpolationPoints));
         CHECK(worst_miss_at_nodes(c) <= kThroughData);
-        expect_code([&] { validate(make_curve(CurveKind::Interpolation, zigzag(kMaxInterpolationPoints + 1))); },
+        expect_error([&] { validate(make_curve(CurveKind::Interpolation, zigzag(kMaxInterpolationPoints + 1))); },
                     "degree-out-of-range", std::to_string(kMaxInterpolationPoints) + " points");
     }
     SECTION("nodes that nearly coincide relative to their spread are refused, naming them") {
-        expect_code([&] { validate(interpolation({0, 0, 1, 1, 2, 0}, {0, 1e-12, 1})); }, "nodes-too-close", "u_0");
-        expect_code([&] { validate(interpolation({0, 0, 1, 1, 2, 0}, {5e6, 5e6 + 1e-6, 5e6 + 1e4})); }, "nodes-too-close", "u_1");
+        expect_error([&] { validate(interpolation({0, 0, 1, 1, 2, 0}, {0, 1e-12, 1})); }, "nodes-too-close", "u_0");
+        expect_error([&] { validate(interpolation({0, 0, 1, 1, 2, 0}, {5e6, 5e6 + 1e-6, 5e6 + 1e4})); }, "nodes-too-close", "u_1");
         // the same relative gaps at another scale are accepted
         CHECK(worst_miss_at_nodes(interpolation({0, 0, 1, 1, 2, 0}, {0, 1e-6, 1})) <= kThroughData);
         CHECK(worst_miss_at_nodes(interpolation({0, 0, 1, 1, 2, 0}, {-3e-300, -2e-300, 7e-300})) <= kThroughData);
@@ -293,9 +282,9 @@ TEST_CASE("NURBS: weights whose ratio leaves the range of double are refused (is
     Curve c = clamped_with_double_knot();
     c.kind = CurveKind::Nurbs;
     c.weights = {1, 1, 1e300, 1, 1, 1, 1e-10, 1};
-    expect_code([&] { validate(c); }, "weight-ratio-out-of-range", "w_6");
+    expect_error([&] { validate(c); }, "weight-ratio-out-of-range", "w_6");
     c.weights[6] = 1e-2; // ratio 1e302 is still too far
-    expect_code([&] { validate(c); }, "weight-ratio-out-of-range", "w_2");
+    expect_error([&] { validate(c); }, "weight-ratio-out-of-range", "w_2");
     c.weights[2] = 1e250; // ratio 1e252: fine
     for (double v : evaluate_curve(c, linspace(0, 5, 21))) CHECK(std::isfinite(v));
 }
