@@ -360,7 +360,7 @@ test('hovering a table row marks the element on the canvas, and the canvas marks
   const page = await openLesson();
   await page.hover('#we-edge-table tr[data-row="2"]');
   await settle(page);
-  assert.deepEqual(await page.evaluate(() => window.wingspline.ctx.ui.meshHover), { kind: 'edge', index: 2 }, 'e3 is marked for the canvas');
+  assert.deepEqual(await page.evaluate(() => window.wingspline.view.selection.hover), { kind: 'edge', index: 2 }, 'e3 is marked for the canvas');
   // The centroid of F3 = (v2 v5 v4) on the canvas: the F3 row of the face table lights up.
   const point = await page.evaluate(() => {
     const m = window.wingspline.model;

@@ -489,59 +489,57 @@ namespace {
 constexpr int kReciprocalsPerSpan = 9;
 
 // The cubic Cox-de Boor triangle with the span's reciprocal knot differences (no division):
-// the same arithmetic as basis_functions_fixed<3> with a/b replaced by a*(1/b).
-inline void cubic_basis(int span, double u, const double* t, const double* inv, double* N) {
-    const double left1 = u - t[span], left2 = u - t[span - 1], left3 = u - t[span - 2];
-    const double right1 = t[span + 1] - u, right2 = t[span + 2] - u, right3 = t[span + 3] - u;
+// the same arithmetic as basis_functions_fixed<3> with a/b replaced by a*(1/b). Split in
+// two: the functions of degree 2 (which the first derivatives also need), then degree 3.
+struct CubicLower {
+    double left1, left2, left3, right1, right2, right3;
+    double n20, n21, n22; // N_{span-2+r, 2}(u), r = 0..2
+};
+
+inline CubicLower cubic_degree2(int span, double u, const double* t, const double* inv) {
+    CubicLower c;
+    c.left1 = u - t[span]; c.left2 = u - t[span - 1]; c.left3 = u - t[span - 2];
+    c.right1 = t[span + 1] - u; c.right2 = t[span + 2] - u; c.right3 = t[span + 3] - u;
     // j = 1
     double temp = inv[0];
-    const double n10 = right1 * temp, n11 = left1 * temp;
+    const double n10 = c.right1 * temp, n11 = c.left1 * temp;
     // j = 2
     temp = n10 * inv[1];
-    const double n20 = right1 * temp;
-    double saved = left2 * temp;
+    c.n20 = c.right1 * temp;
+    const double saved = c.left2 * temp;
     temp = n11 * inv[2];
-    const double n21 = saved + right2 * temp;
-    const double n22 = left1 * temp;
-    // j = 3
-    temp = n20 * inv[3];
-    N[0] = right1 * temp;
-    saved = left3 * temp;
-    temp = n21 * inv[4];
-    N[1] = saved + right2 * temp;
-    saved = left2 * temp;
-    temp = n22 * inv[5];
-    N[2] = saved + right3 * temp;
-    N[3] = left1 * temp;
+    c.n21 = saved + c.right2 * temp;
+    c.n22 = c.left1 * temp;
+    return c;
+}
+
+// j = 3: N[0..3] = N_{span-3+r, 3}(u) from the degree-2 functions.
+inline void cubic_degree3(const CubicLower& c, const double* inv, double* N) {
+    double temp = c.n20 * inv[3];
+    N[0] = c.right1 * temp;
+    double saved = c.left3 * temp;
+    temp = c.n21 * inv[4];
+    N[1] = saved + c.right2 * temp;
+    saved = c.left2 * temp;
+    temp = c.n22 * inv[5];
+    N[2] = saved + c.right3 * temp;
+    N[3] = c.left1 * temp;
+}
+
+inline void cubic_basis(int span, double u, const double* t, const double* inv, double* N) {
+    cubic_degree3(cubic_degree2(span, u, t, inv), inv, N);
 }
 
 // The same plus the first derivatives from the degree-2 functions n20, n21, n22.
 inline void cubic_basis_d1(int span, double u, const double* t, const double* inv, double* N, double* dN) {
-    const double left1 = u - t[span], left2 = u - t[span - 1], left3 = u - t[span - 2];
-    const double right1 = t[span + 1] - u, right2 = t[span + 2] - u, right3 = t[span + 3] - u;
-    double temp = inv[0];
-    const double n10 = right1 * temp, n11 = left1 * temp;
-    temp = n10 * inv[1];
-    const double n20 = right1 * temp;
-    double saved = left2 * temp;
-    temp = n11 * inv[2];
-    const double n21 = saved + right2 * temp;
-    const double n22 = left1 * temp;
+    const CubicLower c = cubic_degree2(span, u, t, inv);
     // N'_i,3 = 3 (N_i,2 / (t_i+3 - t_i) - N_i+1,2 / (t_i+4 - t_i+1))
-    const double a1 = n20 * inv[6], a2 = n21 * inv[7], a3 = n22 * inv[8];
+    const double a1 = c.n20 * inv[6], a2 = c.n21 * inv[7], a3 = c.n22 * inv[8];
     dN[0] = -3 * a1;
     dN[1] = 3 * (a1 - a2);
     dN[2] = 3 * (a2 - a3);
     dN[3] = 3 * a3;
-    temp = n20 * inv[3];
-    N[0] = right1 * temp;
-    saved = left3 * temp;
-    temp = n21 * inv[4];
-    N[1] = saved + right2 * temp;
-    saved = left2 * temp;
-    temp = n22 * inv[5];
-    N[2] = saved + right3 * temp;
-    N[3] = left1 * temp;
+    cubic_degree3(c, inv, N);
 }
 
 // Keeps `span` on the span of u: params that increase are found by a short forward walk,

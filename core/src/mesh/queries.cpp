@@ -29,6 +29,19 @@ void add_once(std::vector<int32_t>& out, int32_t x) {
     if (x != kNone && std::find(out.begin(), out.end(), x) == out.end()) out.push_back(x);
 }
 
+// The answer a face-table scan gives when corner c (of the face's corners begin..end-1) is
+// the vertex asked about: the face itself, or the two sides that meet at c (the side that
+// leaves c and the side that arrives at it; names[c] is the side c -> c+1).
+void answer_at_corner(QueryKind kind, QueryAnswer& a, const std::vector<int32_t>& names, int32_t f, int32_t c,
+                      int32_t begin, int32_t end) {
+    if (kind == QueryKind::FacesAroundVertex) {
+        a.answer.push_back(f);
+    } else {
+        a.answer.push_back(names[c]);
+        a.answer.push_back(names[c == begin ? end - 1 : c - 1]);
+    }
+}
+
 // ---------------------------------------------------------------- independent faces
 
 // Compares corner c with p coordinate by coordinate, stopping at the first difference.
@@ -54,12 +67,7 @@ QueryAnswer independent_faces_query(QueryKind kind, int32_t element, const Indep
             end = rd(off, f + 1);
             for (int32_t c = begin; c < end; ++c)
                 if (same_point(rd, xyz, c, p)) {
-                    if (kind == QueryKind::FacesAroundVertex) {
-                        a.answer.push_back(f);
-                    } else {
-                        a.answer.push_back(names[c]);
-                        a.answer.push_back(names[c == begin ? end - 1 : c - 1]);
-                    }
+                    answer_at_corner(kind, a, names, f, c, begin, end);
                     break;
                 }
         }
@@ -153,12 +161,7 @@ QueryAnswer vertex_face_tables_query(QueryKind kind, int32_t element, const Vert
         scan_faces([&](int32_t f, int32_t begin, int32_t end) {
             for (int32_t c = begin; c < end; ++c)
                 if (rd(fv, c) == element) {
-                    if (kind == QueryKind::FacesAroundVertex) {
-                        a.answer.push_back(f);
-                    } else {
-                        a.answer.push_back(names[c]);
-                        a.answer.push_back(names[c == begin ? end - 1 : c - 1]);
-                    }
+                    answer_at_corner(kind, a, names, f, c, begin, end);
                     break;
                 }
         });

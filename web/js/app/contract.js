@@ -138,7 +138,7 @@
  *   refresh(): void,
  *   message: MessageLine,
  *   keymap: Keymap,
- *   ui: { selected: string | null, hover: string | null, hoverPoint: number[] | null, present: boolean, [extra: string]: any },
+ *   ui: { selected: string | null, hover: string | null, hoverPoint: number[] | null, present: boolean },
  *   stage: Stage,
  *   readonly colors: { background: string, ink: string, muted: string, highlight: string, series: string[], [name: string]: any },
  *   panels: HTMLElement,

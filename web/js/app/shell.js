@@ -391,6 +391,8 @@ export async function runLesson(lesson) {
     get state() { return structuredClone(store.state); },
     get model() { return model; },
     get selected() { return ui.selected; },
+    // The lesson's view (what setup returned), for tests that ask what a lesson shows.
+    get view() { return view; },
     // x, y: page (client) position to drag with page.mouse; world: the handle's coordinates.
     handles: () => handles().map((x) => ({ id: x.id, label: x.label, world: { x: x.x, y: x.y }, draggable: x.draggable !== false, ...ctx.stage.toClient(x.x, x.y) })),
     toClient: (x, y) => ctx.stage.toClient(x, y),

@@ -27,6 +27,20 @@ inline int find_span_in(const double* knots, int first, int last, double u) {
     return lo;
 }
 
+// One row of the Cox-de Boor triangle: N[0..j-1] (degree j-1) -> N[0..j] (degree j) at u,
+// filling left[j], right[j] (A2.2's inner loop, shared by every basis routine here).
+inline void raise_basis_degree(int span, double u, int j, const double* t, double* left, double* right, double* N) {
+    left[j] = u - t[span + 1 - j];
+    right[j] = t[span + j] - u;
+    double saved = 0.0;
+    for (int r = 0; r < j; ++r) {
+        const double temp = N[r] / (right[r + 1] + left[j - r]);
+        N[r] = saved + right[r + 1] * temp;
+        saved = left[j - r] * temp;
+    }
+    N[j] = saved;
+}
+
 // N[0..degree] = N_{span-degree+r, degree}(u), r = 0..degree (The NURBS Book, A2.2), for any
 // degree <= MaxP. One body for both uses: basis_functions (the degree known at run time)
 // and basis_functions_fixed<P> (known at compile time, so the loops unroll).
@@ -35,17 +49,7 @@ inline void basis_functions_upto(int span, double u, int degree, const double* t
     double left[MaxP + 1];
     double right[MaxP + 1];
     N[0] = 1.0;
-    for (int j = 1; j <= degree; ++j) {
-        left[j] = u - t[span + 1 - j];
-        right[j] = t[span + j] - u;
-        double saved = 0.0;
-        for (int r = 0; r < j; ++r) {
-            const double temp = N[r] / (right[r + 1] + left[j - r]);
-            N[r] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
-        }
-        N[j] = saved;
-    }
+    for (int j = 1; j <= degree; ++j) raise_basis_degree(span, u, j, t, left, right, N);
 }
 
 template <int P> inline void basis_functions_fixed(int span, double u, const double* t, double* N) {
@@ -59,8 +63,6 @@ template <int P> inline void basis_functions_d1_fixed(int span, double u, const 
     double right[P + 1];
     N[0] = 1.0;
     for (int j = 1; j <= P; ++j) {
-        left[j] = u - t[span + 1 - j];
-        right[j] = t[span + j] - u;
         if (j == P) {
             // N holds the P functions of degree P-1: N_{span-P+1+q, P-1}, q = 0..P-1.
             for (int r = 0; r <= P; ++r) {
@@ -70,13 +72,7 @@ template <int P> inline void basis_functions_d1_fixed(int span, double u, const 
                 dN[r] = P * d;
             }
         }
-        double saved = 0.0;
-        for (int r = 0; r < j; ++r) {
-            const double temp = N[r] / (right[r + 1] + left[j - r]);
-            N[r] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
-        }
-        N[j] = saved;
+        raise_basis_degree(span, u, j, t, left, right, N);
     }
 }
 

@@ -289,12 +289,12 @@ function drawWalk(painter, model, state, colors) {
   if (!frame.done && frame.next >= 0 && frame.line >= 2) highlightEdge(painter, model, frame.next, { stroke: found, width: 3, dash: [6, 6] });
 }
 
-export function drawMesh(baseCache, painter, model, state, ctx) {
+export function drawMesh(baseCache, selection, painter, model, state, ctx) {
   if (!model) return;
   drawBaseCached(baseCache, painter, model, state, ctx);
   drawWalk(painter, model, state, ctx.colors);
-  drawElement(painter, model, ctx.ui.meshHover, ctx.colors, false);
-  drawElement(painter, model, ctx.ui.meshPick, ctx.colors, true);
+  drawElement(painter, model, selection.hover, ctx.colors, false);
+  drawElement(painter, model, selection.pick, ctx.colors, true);
 }
 
 // The element under a canvas point (world coordinates of the view plane): an edge within

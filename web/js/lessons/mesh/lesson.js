@@ -245,10 +245,13 @@ export const meshLesson = {
   contentFields: IMPORTED_CONTENT,
   compute,
   // The view: the panels, the live mesh (source), the caches derived from it and the
-  // picture cache of a big mesh; nothing of the lesson lives at module level.
-  setup: (ctx) => ({ panels: setupPanels(ctx), source: createMeshSource(), derived: createDerived(), baseCache: createBaseCache() }),
+  // picture cache of a big mesh, the hovered and picked element; nothing of the lesson lives at module level.
+  setup: (ctx) => {
+    const selection = { hover: null, pick: null }; // the hovered and picked element: {kind, index}
+    return { selection, panels: setupPanels(ctx, selection), source: createMeshSource(), derived: createDerived(), baseCache: createBaseCache() };
+  },
   update: (view, model, state) => view.panels.update(model, state),
-  draw: (view, painter, model, state, ctx) => drawMesh(view.baseCache, painter, model, state, ctx),
+  draw: (view, painter, model, state, ctx) => drawMesh(view.baseCache, view.selection, painter, model, state, ctx),
   handles,
   moveHandle,
   describe,

@@ -30,7 +30,8 @@ export const IMPORTED_CONTENT = {
 };
 
 // The key that identifies one topology + base geometry: equal keys share one core mesh.
-export function sourceKey(state) {
+// importedKey: the key of an imported mesh (a mesh source memoises it, createImportedKeys).
+export function sourceKey(state, importedKey) {
   switch (state.meshKind) {
     case 'fan': return `fan:${state.fanSize}`;
     case 'grid': return `grid:${state.grid.nx}x${state.grid.ny}`;
@@ -41,11 +42,13 @@ export function sourceKey(state) {
 }
 
 // The imported mesh rides along unchanged from state to state (spread copies share it), so
-// its key is hashed once per object, not on every walk step.
-const importedKeys = new WeakMap();
-function importedKey(imported) {
-  if (!importedKeys.has(imported)) importedKeys.set(imported, `file:${imported.name}:${imported.faces.length}:${hashPositions(imported)}`);
-  return importedKeys.get(imported);
+// its key is hashed once per object, not on every walk step; one memo per mesh source.
+function createImportedKeys() {
+  const keys = new WeakMap();
+  return (imported) => {
+    if (!keys.has(imported)) keys.set(imported, `file:${imported.name}:${imported.faces.length}:${hashPositions(imported)}`);
+    return keys.get(imported);
+  };
 }
 
 function hashPositions({ positions, faces }) {
@@ -101,9 +104,10 @@ const sameOp = (a, b) => a.op === b.op && a.v === b.v && a.f === b.f && a.e === 
 
 export function createMeshSource() {
   let live = null; // { key, mesh, base: Float64Array, faces, applied: Map<v, [x,y,z]>, ops: [], lastOperation }
+  const importedKey = createImportedKeys();
 
   function build(state, api, force = false) {
-    const key = sourceKey(state);
+    const key = sourceKey(state, importedKey);
     if (live && live.key === key && !force) return live;
     const source = sourceOf(state, api);
     const faces = faceList(source);

@@ -21,7 +21,9 @@ function labelled(labelText, control) {
   return h('label', {}, labelText, ' ', control);
 }
 
-export function setupPanels(ctx) {
+// selection: the view's hovered and picked element ({kind, index} or null), owned by the
+// lesson view (lesson.js setup) and read by the tables and the drawing.
+export function setupPanels(ctx, selection) {
   const state = () => ctx.state;
   const commit = (patch, opts) => ctx.commit({ ...state(), ...patch }, opts);
   const stage = ctx.stage.canvas;
@@ -160,16 +162,14 @@ export function setupPanels(ctx) {
   }
 
   // ------------------------------------------------------------ tabs
-  const tabs = createRepresentationTabs(ctx, TAB_LABELS, { pickElement: (element) => pickElement(element) });
+  const tabs = createRepresentationTabs(ctx, TAB_LABELS, { pickElement: (element) => pickElement(element), selection });
   ctx.panels.replaceChildren(report, walkPanel, tabs.root);
 
   // ------------------------------------------------------------ canvas hover, click, rotate
-  ctx.ui.meshHover = null;
-  ctx.ui.meshPick = null;
   const sameElement = (a, b) => (a === b) || (a && b && a.kind === b.kind && a.index === b.index);
   function setHover(element) {
-    if (sameElement(ctx.ui.meshHover, element)) return;
-    ctx.ui.meshHover = element;
+    if (sameElement(selection.hover, element)) return;
+    selection.hover = element;
     tabs.markElements();
     ctx.render();
   }
@@ -203,7 +203,7 @@ export function setupPanels(ctx) {
 
   // A picked element is highlighted everywhere; a face or vertex also becomes the walk's.
   function pickElement(element, { fromCanvas = false } = {}) {
-    ctx.ui.meshPick = element;
+    selection.pick = element;
     tabs.markElements({ reveal: fromCanvas });
     if (element?.kind === 'face' && state().walk === 'face' && state().face !== element.index) commit({ face: element.index, step: 0 }, { history: false });
     ctx.render();

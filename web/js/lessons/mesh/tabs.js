@@ -84,8 +84,9 @@ const SHORT_NAMES = {
   'edge-list': 'edge list', 'winged-edge': 'winged edge',
 };
 
-// pickElement(element): a table row was clicked (the panels highlight it everywhere).
-export function createRepresentationTabs(ctx, labels, { pickElement }) {
+// pickElement(element): a table row was clicked (the panels highlight it everywhere);
+// selection: the lesson view's {hover, pick} (panels.js), read when the marks are drawn.
+export function createRepresentationTabs(ctx, labels, { pickElement, selection }) {
   const tabIds = Object.keys(labels);
   const tablist = h('div', { class: 'mesh-tabs', role: 'tablist', 'aria-label': 'Representations' });
   const panels = {};
@@ -135,8 +136,8 @@ export function createRepresentationTabs(ctx, labels, { pickElement }) {
     }
     return tablesOfBlock[name];
   };
-  const hoverRow = (kind) => (index) => { ctx.ui.meshHover = { kind, index }; markElements(); ctx.render(); };
-  const leave = () => { ctx.ui.meshHover = null; markElements(); ctx.render(); };
+  const hoverRow = (kind) => (index) => { selection.hover = { kind, index }; markElements(); ctx.render(); };
+  const leave = () => { selection.hover = null; markElements(); ctx.render(); };
   const pickRow = (kind) => (index) => pickElement({ kind, index });
   const table = (spec) => ({ kind: spec.kind, ...createVirtualTable({ onRowEnter: hoverRow(spec.kind), onRowLeave: leave, onRowClick: pickRow(spec.kind), ...spec }) });
   // A table of the core, shown from its descriptor alone.
@@ -222,8 +223,8 @@ export function createRepresentationTabs(ctx, labels, { pickElement }) {
       const rows = { 'is-hovered': [], 'is-picked': [], 'is-highlighted': [] };
       const read = [];
       const compared = [];
-      if (ctx.ui.meshHover?.kind === kind) rows['is-hovered'].push(ctx.ui.meshHover.index);
-      if (ctx.ui.meshPick?.kind === kind) rows['is-picked'].push(ctx.ui.meshPick.index);
+      if (selection.hover?.kind === kind) rows['is-hovered'].push(selection.hover.index);
+      if (selection.pick?.kind === kind) rows['is-picked'].push(selection.pick.index);
       if (frame && tab === 'winged') {
         const walkTable = frame.table === 'edge' ? 'wingedEdge' : frame.table === 'vertex' ? 'wingedVertex' : 'wingedFace';
         if (walkTable === name) {
@@ -233,7 +234,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement }) {
         }
       }
       tables[name].mark({ rows, read, compared });
-      if (reveal && ctx.ui.meshPick?.kind === kind) tables[name].reveal(ctx.ui.meshPick.index);
+      if (reveal && selection.pick?.kind === kind) tables[name].reveal(selection.pick.index);
       else if (frame && tab === 'winged' && rows['is-highlighted'].length) tables[name].reveal(frame.row);
     }
   }
