@@ -100,7 +100,12 @@ export function cacheKeys(entry) {
   return { source: entry.key, topology: `${entry.mesh.id}.${topology}`, version: `${entry.mesh.id}.${topology}.${geometry}` };
 }
 
-const sameOp = (a, b) => a.op === b.op && a.v === b.v && a.f === b.f && a.e === b.e;
+// Two operations of state.ops are the same when every field is (ops are small flat records:
+// element numbers, a parameter t, a position p).
+const sameOp = (a, b) => {
+  const ka = Object.keys(a);
+  return ka.length === Object.keys(b).length && ka.every((k) => (Array.isArray(a[k]) ? Array.isArray(b[k]) && a[k].length === b[k].length && a[k].every((x, i) => x === b[k][i]) : a[k] === b[k]));
+};
 
 export function createMeshSource() {
   let live = null; // { key, mesh, base: Float64Array, faces, applied: Map<v, [x,y,z]>, ops: [], lastOperation }
@@ -123,6 +128,9 @@ export function createMeshSource() {
     return live;
   }
 
+  // The position of v before state.moved: where the file or the operations put it.
+  const baseOf = (v) => [live.base[3 * v], live.base[3 * v + 1], live.base[3 * v + 2]];
+
   // Brings the core's positions to base + state.moved; returns the change reports.
   function applyMoves(state) {
     const wanted = new Map(state.moved.map((m) => [m.v, m.p]));
@@ -133,8 +141,8 @@ export function createMeshSource() {
     }
     const targets = new Set([...wanted.keys(), ...live.applied.keys()]);
     for (const v of targets) {
-      const p = wanted.get(v) ?? [live.base[3 * v], live.base[3 * v + 1], live.base[3 * v + 2]];
-      const now = live.applied.get(v) ?? [live.base[3 * v], live.base[3 * v + 1], live.base[3 * v + 2]];
+      const p = wanted.get(v) ?? baseOf(v);
+      const now = live.applied.get(v) ?? baseOf(v);
       if (Math.abs(p[0] - now[0]) <= POSITION_EPS && Math.abs(p[1] - now[1]) <= POSITION_EPS && Math.abs(p[2] - now[2]) <= POSITION_EPS) continue;
       changes.push({ vertex: v, changed: live.mesh.setVertexPosition(v, p) });
       if (wanted.has(v)) live.applied.set(v, p.slice()); else live.applied.delete(v);
@@ -143,22 +151,29 @@ export function createMeshSource() {
   }
 
   // Brings the mesh's operations to state.ops: new ones at the end are applied; any other
-  // difference rebuilds the mesh and replays them all. A refused operation changed nothing
-  // in the core (checked mutators) and its error names it; live.ops stays what was applied.
+  // difference rebuilds the mesh and replays them all. Operations run on the positions the
+  // operations before them left (state.moved is applied after all of them, so a lesson
+  // that changes the topology first turns its pending moves into move-vertex operations:
+  // see edit.js). A refused operation changed nothing in the core (checked mutators) and
+  // its error names it; live.ops stays what was applied.
   function applyOps(state, api) {
     const ops = state.ops ?? [];
     const prefix = live.ops.length <= ops.length && live.ops.every((o, i) => sameOp(o, ops[i]));
     if (!prefix) build(state, api, true);
+    if (live.ops.length === ops.length) return;
+    // Take the moves back first: the new operations run where the older ones left the mesh.
+    applyMoves({ moved: [] });
     for (let i = live.ops.length; i < ops.length; i += 1) {
       try {
         live.lastOperation = live.mesh.apply(ops[i]);
       } catch (err) {
         err.message = `Operation ${i + 1} (${ops[i].op}) was refused: ${err.message}`;
+        live.base = Float64Array.from(live.mesh.wingedEdgeArrays().positions);
         throw err;
       }
-      live.ops.push({ ...ops[i] });
+      live.ops.push(structuredClone(ops[i]));
     }
-    if (!ops.length) live.lastOperation = null;
+    live.base = Float64Array.from(live.mesh.wingedEdgeArrays().positions);
   }
 
   return {
