@@ -48,9 +48,10 @@ export function unprojectDelta(R, dx, dy) {
 }
 
 function faceOrder(model, P) {
-  const order = model.faces.map((_, f) => f);
+  const order = [];
+  model.faces.forEach((face, f) => { if (face.length) order.push(f); }); // a removed face has no corners
   if (!model.mode3d) return order;
-  const depth = model.faces.map((face) => face.reduce((s, v) => s + P[3 * v + 2], 0) / face.length);
+  const depth = model.faces.map((face) => face.reduce((s, v) => s + P[3 * v + 2], 0) / Math.max(1, face.length));
   return order.sort((a, b) => depth[a] - depth[b]);
 }
 
@@ -97,6 +98,7 @@ function edgeSeen(model, front, e) {
 function labelDirections(model, P) {
   const dir = new Float64Array(2 * (P.length / 3));
   for (const face of model.faces) {
+    if (!face.length) continue;
     const [cx, cy] = centroid(face, P);
     for (const v of face) { dir[2 * v] += P[3 * v] - cx; dir[2 * v + 1] += P[3 * v + 1] - cy; }
   }
@@ -123,7 +125,7 @@ function drawBaseBatched(painter, model, colors) {
     let xy = [];
     let offsets = [0];
     model.faces.forEach((face, f) => {
-      if (front[f] !== facing) return;
+      if (front[f] !== facing || !face.length) return;
       for (const v of face) xy.push(P[3 * v], P[3 * v + 1]);
       offsets.push(xy.length / 2);
       if (offsets.length > BATCH) {
@@ -138,7 +140,7 @@ function drawBaseBatched(painter, model, colors) {
   const edgeStyle = { stroke: colors.ink, width: 0.8, alpha: 0.7 };
   let segments = [];
   for (let e = 0; e < E; e += 1) {
-    if (model.mode3d && !edgeSeen(model, front, e)) continue;
+    if (model.edgeGap?.[e] || (model.mode3d && !edgeSeen(model, front, e))) continue;
     const s = model.we.edges[8 * e]; const t = model.we.edges[8 * e + 1];
     segments.push(P[3 * s], P[3 * s + 1], P[3 * t], P[3 * t + 1]);
     if (segments.length >= 4 * BATCH) {
@@ -166,19 +168,21 @@ function drawBase(painter, model, state, colors) {
   const E = model.we.edges.length / 8;
   const arrows = E <= LABEL_LIMIT;
   for (let e = 0; e < E; e += 1) {
-    if (!arrows && model.mode3d && !edgeSeen(model, front, e)) continue;
+    if (model.edgeGap?.[e] || (!arrows && model.mode3d && !edgeSeen(model, front, e))) continue;
     const [ax, ay, bx, by] = arrows ? edgeEnds(model, P, e, zoom) : [P[3 * model.we.edges[8 * e]], P[3 * model.we.edges[8 * e] + 1], P[3 * model.we.edges[8 * e + 1]], P[3 * model.we.edges[8 * e + 1] + 1]];
     if (arrows) painter.arrow(ax, ay, bx, by, { stroke: colors.ink, width: 1.6 });
     else painter.line(ax, ay, bx, by, { stroke: colors.ink, width: 0.8, alpha: 0.7 });
   }
   if (labels) {
     model.faces.forEach((face, f) => {
+      if (!face.length) return;
       const [x, y] = centroid(face, P);
       painter.text(x, y, fLabel(f), { fill: colors.series[2], font: 16, weight: 700, halo: colors.background });
     });
   }
   if (arrows) {
     for (let e = 0; e < E; e += 1) {
+      if (model.edgeGap?.[e]) continue;
       const s = model.we.edges[8 * e]; const t = model.we.edges[8 * e + 1];
       const mx = (P[3 * s] + P[3 * t]) / 2; const my = (P[3 * s + 1] + P[3 * t + 1]) / 2;
       painter.text(mx, my, eLabel(e), { fill: colors.ink, font: 13, weight: 600, halo: colors.background });
@@ -194,6 +198,7 @@ function drawVertices(painter, model, colors) {
   if (V > LABEL_LIMIT) return;
   const away = labelDirections(model, P);
   for (let v = 0; v < V; v += 1) {
+    if (model.vertexGap?.[v]) continue;
     painter.circle(P[3 * v], P[3 * v + 1], 5, { fill: colors.accent, stroke: colors.background, width: 1.5 });
     painter.text(P[3 * v], P[3 * v + 1], vLabel(v), { fill: colors.accent, font: 15, weight: 700, dx: 18 * away[2 * v], dy: -18 * away[2 * v + 1], halo: colors.background });
   }
@@ -306,6 +311,7 @@ export function pickElement(model, x, y, zoom) {
   let best = null;
   let bestD = tolerance;
   for (let e = 0; e < E; e += 1) {
+    if (model.edgeGap?.[e]) continue;
     const s = model.we.edges[8 * e]; const t = model.we.edges[8 * e + 1];
     const ax = P[3 * s]; const ay = P[3 * s + 1]; const dx = P[3 * t] - ax; const dy = P[3 * t + 1] - ay;
     const len2 = dx * dx + dy * dy;
@@ -317,6 +323,7 @@ export function pickElement(model, x, y, zoom) {
   let face = null;
   let faceDepth = -Infinity;
   model.faces.forEach((f, index) => {
+    if (!f.length) return;
     let inside = false;
     for (let i = 0, j = f.length - 1; i < f.length; j = i, i += 1) {
       const xi = P[3 * f[i]]; const yi = P[3 * f[i] + 1]; const xj = P[3 * f[j]]; const yj = P[3 * f[j] + 1];

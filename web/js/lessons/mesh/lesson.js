@@ -5,7 +5,8 @@
 // The state is plain JSON (schema below); the model is what the core returned for it.
 import { number, integer, boolean, oneOf, text, list, object, nullable, viewSchema } from '../../app/schema.js';
 import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
-import { createMeshSource, cacheKeys, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
+import { createMeshSource, cacheKeys, faceList, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
+import { arraysAtStep, visibleSteps } from './edit-playback.js';
 import { normaliseSteps, walkFrames } from './walk.js';
 import { drawMesh, createBaseCache, viewRotation, projectAll, unprojectDelta, facesAway, LABEL_LIMIT } from './draw.js';
 import { setupPanels } from './panels.js';
@@ -24,9 +25,21 @@ const MAX_IMPORT_FACES = MAX_MESH_FACES;
 // is the core's check when it is replayed, which names the operation if it refuses.
 const MAX_OPS = 1000;
 const elementIndex = integer({ min: 0, max: 10000000 });
+const opName = text({ maxLength: 40 });
+const parameter = number({ min: 0, max: 1 });
 const OP_SHAPES = {
-  'set-vertex-edge': object({ op: text({ maxLength: 40 }), v: elementIndex, e: elementIndex }),
-  'set-face-edge': object({ op: text({ maxLength: 40 }), f: elementIndex, e: elementIndex }),
+  'set-vertex-edge': object({ op: opName, v: elementIndex, e: elementIndex }),
+  'set-face-edge': object({ op: opName, f: elementIndex, e: elementIndex }),
+  // The Euler operations of issue 15 (edit-ops.js), with their arguments as the core names them.
+  'split-edge': object({ op: opName, e: elementIndex, t: parameter }),
+  'split-face': object({ op: opName, f: elementIndex, a: elementIndex, b: elementIndex }),
+  'join-faces': object({ op: opName, e: elementIndex }),
+  'flip-edge': object({ op: opName, e: elementIndex }),
+  'collapse-edge': object({ op: opName, e: elementIndex, t: parameter }),
+  'poke-face': object({ op: opName, f: elementIndex }),
+  // A vertex moved before a later edit (edit-ops.js withEdit), and the renumbering step.
+  'move-vertex': object({ op: opName, v: elementIndex, p: list(number(), { min: 3, max: 3 }) }),
+  compact: object({ op: opName }),
 };
 const operation = (v, path) => {
   const op = oneOf(...Object.keys(OP_SHAPES))(v?.op, `${path}.op`);
@@ -54,6 +67,10 @@ const schema = {
   query: object({ kind: oneOf(...QUERY_KINDS), vertex: integer({ min: 0, max: 10000000 }), face: integer({ min: 0, max: 10000000 }), edge: integer({ min: 0, max: 10000000 }) }),
   mode3d: boolean(),
   rotation: object({ yaw: number({ min: -100, max: 100 }), pitch: number({ min: -100, max: 100 }) }),
+  // The edit panel: t for split and collapse; how many assignments of the last edit are
+  // shown (-1: all, the edit done).
+  editT: number({ min: 0.1, max: 0.9 }),
+  editStep: integer({ min: -1, max: 100000 }),
   view: viewSchema(),
 };
 
@@ -76,6 +93,8 @@ function defaultState() {
     mode3d: false,
     rotation: { yaw: 0.6, pitch: 0.45 },
     view: { cx: 1, cy: 0.5, zoom: 150 },
+    editT: 0.5,
+    editStep: -1,
   };
 }
 
@@ -93,7 +112,7 @@ function createDerived() {
 function wingedTables(derived, entry, keys) {
   if (derived.topology !== keys.topology) {
     const sameSource = derived.source === keys.source;
-    Object.assign(derived, { source: keys.source, topology: keys.topology, version: null, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, lastChange: sameSource ? derived.lastChange : null });
+    Object.assign(derived, { source: keys.source, topology: keys.topology, version: null, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, faces: null, gaps: null, lastChange: sameSource ? derived.lastChange : null });
   }
   if (derived.version !== keys.version) {
     derived.version = keys.version;
@@ -123,6 +142,14 @@ function compute(view, state, ctx) {
   const keys = cacheKeys(entry);
   const we = wingedTables(derived, entry, keys);
   if (changes.length) derived.lastChange = changes[changes.length - 1];
+  // After an edit the faces are the mesh's own (a removed face is a gap: no corners).
+  const edited = entry.ops.length > 0;
+  const faces = edited ? (derived.faces ??= faceList(entry.mesh.tables('vertex-face-tables').faces.arrays)) : entry.faces;
+  derived.gaps ??= edited ? entry.mesh.gaps() : { vertices: [], edges: [], faces: [] };
+  const gaps = derived.gaps.vertices.length + derived.gaps.edges.length + derived.gaps.faces.length;
+  const record = entry.lastOperation;
+  const editSteps = visibleSteps(record).length;
+  const editStep = state.editStep < 0 || state.editStep > editSteps ? editSteps : state.editStep;
   const V = we.vertexEdge.length;
   const F = we.faceEdge.length;
   const E = we.edges.length / 8;
@@ -152,12 +179,22 @@ function compute(view, state, ctx) {
     source: keys.source,
     topology: keys.topology,
     version: keys.version,
-    lastOperation: entry.lastOperation,
     positions: we.positions,
     projected: derived.projected,
     rotation: R,
-    faces: entry.faces,
+    faces,
     we,
+    // The winged-edge tables as the edit player shows them (after editStep assignments).
+    weShown: record && editStep < editSteps ? arraysAtStep(we, record, editStep) : we,
+    lastOperation: record,
+    lastEdit: lastEditOf(state.ops),
+    editStep,
+    editCount: state.ops.filter((o) => o.op !== 'move-vertex').length,
+    gaps,
+    gapLists: derived.gaps,
+    // 1 where a removed element left its number (drawing and picking skip it); null: no gaps.
+    vertexGap: gaps ? marks(V, derived.gaps.vertices) : null,
+    edgeGap: gaps ? marks(E, derived.gaps.edges) : null,
     V, E, F,
     counts: derived.counts,
     is3dMesh: derived.zExtent > 0,
@@ -168,6 +205,18 @@ function compute(view, state, ctx) {
     lastChange: derived.lastChange,
     derived,
   };
+}
+
+function marks(n, list) {
+  const out = new Uint8Array(n);
+  for (const i of list) out[i] = 1;
+  return out;
+}
+
+// The last edit of the state (the one the player shows), its moves aside.
+function lastEditOf(ops) {
+  for (let i = ops.length - 1; i >= 0; i -= 1) if (ops[i].op !== 'move-vertex') return ops[i];
+  return null;
 }
 
 function faceNormal(derived, mesh, f) {
@@ -190,7 +239,7 @@ function fitView(view, model, stage) {
 function handles(view, model) {
   if (!model || model.V > 20000) return [];
   const out = [];
-  for (let v = 0; v < model.V; v += 1) out.push({ id: `v${v}`, x: model.projected[3 * v], y: model.projected[3 * v + 1], label: vLabel(v) });
+  for (let v = 0; v < model.V; v += 1) if (!model.vertexGap?.[v]) out.push({ id: `v${v}`, x: model.projected[3 * v], y: model.projected[3 * v + 1], label: vLabel(v) });
   return out;
 }
 
@@ -236,9 +285,10 @@ function importer(format) {
 export const meshLesson = {
   id: 'mesh',
   title: 'Mesh representations',
-  stateVersion: 2,
-  // Version 2 (issue 14) holds the mesh operations; a version 1 state had none.
-  migrations: { 1: (old) => ({ ...old, ops: [] }) },
+  stateVersion: 3,
+  // Version 2 (issue 14) holds the mesh operations; a version 1 state had none. Version 3
+  // (issue 15) adds the edit panel's t and playback step.
+  migrations: { 1: (old) => ({ ...old, ops: [] }), 2: (old) => ({ ...old, editT: 0.5, editStep: -1 }) },
   schema,
   defaultState,
   checkState,
@@ -259,6 +309,7 @@ export const meshLesson = {
   onSelect(view, id, ctx) {
     if (id === null) return;
     const v = Number(String(id).slice(1));
+    view.selection.pick = { kind: 'vertex', index: v }; // the edit panel's element too
     const state = ctx.state;
     if (state.walk === 'vertex' && state.vertex !== v) ctx.commit({ ...state, vertex: v, step: 0 }, { history: false });
   },

@@ -107,6 +107,20 @@ const sameOp = (a, b) => {
   return ka.length === Object.keys(b).length && ka.every((k) => (Array.isArray(a[k]) ? Array.isArray(b[k]) && a[k].length === b[k].length && a[k].every((x, i) => x === b[k][i]) : a[k] === b[k]));
 };
 
+// One operation of the state on the live mesh; returns the change record the edit player
+// shows (a move keeps the previous one; compact has none: it renumbers everything).
+function applyOne(mesh, operation, previous) {
+  if (operation.op === 'move-vertex') {
+    mesh.setVertexPosition(operation.v, operation.p);
+    return previous;
+  }
+  if (operation.op === 'compact') {
+    mesh.compact();
+    return null;
+  }
+  return mesh.apply(operation);
+}
+
 export function createMeshSource() {
   let live = null; // { key, mesh, base: Float64Array, faces, applied: Map<v, [x,y,z]>, ops: [], lastOperation }
   const importedKey = createImportedKeys();
@@ -165,7 +179,7 @@ export function createMeshSource() {
     applyMoves({ moved: [] });
     for (let i = live.ops.length; i < ops.length; i += 1) {
       try {
-        live.lastOperation = live.mesh.apply(ops[i]);
+        live.lastOperation = applyOne(live.mesh, ops[i], live.lastOperation);
       } catch (err) {
         err.message = `Operation ${i + 1} (${ops[i].op}) was refused: ${err.message}`;
         live.base = Float64Array.from(live.mesh.wingedEdgeArrays().positions);

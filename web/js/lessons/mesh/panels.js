@@ -9,6 +9,7 @@ import { PSEUDOCODE, foundEdges } from './walk.js';
 import { createRepresentationTabs } from './tabs.js';
 import { vLabel, fLabel } from './labels.js';
 import { pickElement as elementAt } from './draw.js';
+import { createEditPanel } from './edit-panel.js';
 
 const TAB_LABELS = {
   winged: 'Winged edge', faces: 'Independent faces', 'vertex-face': 'Vertex & face tables', adjacency: 'Adjacency lists',
@@ -163,7 +164,8 @@ export function setupPanels(ctx, selection) {
 
   // ------------------------------------------------------------ tabs
   const tabs = createRepresentationTabs(ctx, TAB_LABELS, { pickElement: (element) => pickElement(element), selection });
-  ctx.panels.replaceChildren(report, walkPanel, tabs.root);
+  const edit = createEditPanel(ctx, selection, { pick: (element) => pickElement(element, { fromCanvas: true }) });
+  ctx.panels.replaceChildren(report, walkPanel, edit.root, tabs.root);
 
   // ------------------------------------------------------------ canvas hover, click, rotate
   const sameElement = (a, b) => (a === b) || (a && b && a.kind === b.kind && a.index === b.index);
@@ -204,6 +206,7 @@ export function setupPanels(ctx, selection) {
   // A picked element is highlighted everywhere; a face or vertex also becomes the walk's.
   function pickElement(element, { fromCanvas = false } = {}) {
     selection.pick = element;
+    if (ctx.model) edit.update(ctx.model);
     tabs.markElements({ reveal: fromCanvas });
     if (element?.kind === 'face' && state().walk === 'face' && state().face !== element.index) commit({ face: element.index, step: 0 }, { history: false });
     ctx.render();
@@ -263,6 +266,7 @@ export function setupPanels(ctx, selection) {
       }
       shownSource = model.source;
       updateWalk(model, s);
+      edit.update(model);
       tabs.update(model, s);
     },
     canvasClick,

@@ -8,6 +8,8 @@ import { createVirtualTable } from './virtual-table.js';
 import { num } from './labels.js';
 import { createStoredEdgeControl } from './stored-edge.js';
 import { readTable, findDescriptor } from '../../core/tables.js';
+import { VERTEX_EDGE_COLUMN, FACE_EDGE_COLUMN } from './walk.js';
+import { visibleSteps, rowsNotYetWritten, EDGE_FIELDS } from './edit-playback.js';
 
 const sub = (letter, i) => (i >= 0 ? h('span', { class: 'lbl' }, letter, h('sub', {}, String(i + 1))) : '');
 const F = (i) => sub('F', i);
@@ -116,14 +118,16 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   // fetched from the core in blocks of REPRESENTATION_ROWS rows (every table of one
   // representation at once) and kept until the mesh changes, so scrolling a 100k-row table
   // fetches only the block in view.
-  const wingedTables = new WeakMap(); // model.we -> {name: Table}
+  const wingedTables = new WeakMap(); // model.weShown -> {name: Table}
   const tableAt = (representation, name, i) => {
     if (representation === 'winged-edge') {
-      if (!wingedTables.has(model.we)) {
-        const read = (n) => readTable(findDescriptor(ctx.api.tableDescriptors, 'winged-edge', n), { rows: model[n === 'vertices' ? 'V' : n === 'edges' ? 'E' : 'F'], arrays: model.we });
-        wingedTables.set(model.we, { vertices: read('vertices'), edges: read('edges'), faces: read('faces') });
+      // weShown: the tables as the edit player shows them (model.we once the edit is done).
+      const arrays = model.weShown;
+      if (!wingedTables.has(arrays)) {
+        const read = (n) => readTable(findDescriptor(ctx.api.tableDescriptors, 'winged-edge', n), { rows: model[n === 'vertices' ? 'V' : n === 'edges' ? 'E' : 'F'], arrays });
+        wingedTables.set(arrays, { vertices: read('vertices'), edges: read('edges'), faces: read('faces') });
       }
-      return wingedTables.get(model.we)[name];
+      return wingedTables.get(arrays)[name];
     }
     const block = Math.floor(i / REPRESENTATION_ROWS) * REPRESENTATION_ROWS;
     const key = `${representation}:${block}`;
@@ -233,9 +237,27 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
           if (frame.compared !== null) compared.push([frame.row, frame.compared]);
         }
       }
+      if (tab === 'winged') markEdit(name, kind, rows, read);
       tables[name].mark({ rows, read, compared });
       if (reveal && selection.pick?.kind === kind) tables[name].reveal(selection.pick.index);
       else if (frame && tab === 'winged' && rows['is-highlighted'].length) tables[name].reveal(frame.row);
+    }
+  }
+
+  // The edit player (edit-panel.js): the cell the current assignment wrote, the rows the
+  // last edit changed, and the rows it adds that are not written yet.
+  function markEdit(name, kind, rows, read) {
+    const record = model.lastOperation;
+    const steps = visibleSteps(record);
+    if (!steps.length) return;
+    const table = { wingedVertex: 'vertex', wingedEdge: 'edge', wingedFace: 'face' }[name];
+    rows['is-edited'] = [];
+    rows['is-pending'] = rowsNotYetWritten(record, model.editStep)[kind] ?? [];
+    for (let i = 0; i < model.editStep; i += 1) if (steps[i].table === table) rows['is-edited'].push(steps[i].row);
+    const current = steps[model.editStep - 1];
+    if (current && current.table === table && model.editStep < steps.length) {
+      rows['is-highlighted'].push(current.row);
+      read.push([current.row, table === 'edge' ? 1 + EDGE_FIELDS.indexOf(current.field) : table === 'vertex' ? VERTEX_EDGE_COLUMN : FACE_EDGE_COLUMN]);
     }
   }
 
@@ -293,7 +315,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
         buttons[id].tabIndex = on ? 0 : -1;
         panels[id].hidden = !on;
       }
-      const dataKey = `${model.topology}:${model.version}`;
+      const dataKey = `${model.topology}:${model.version}:${model.editStep}`;
       for (const name of tabTables[state.tab] ?? []) {
         if (name === 'planes') ensurePlanes();
         if (drawnVersion[name] !== dataKey) {

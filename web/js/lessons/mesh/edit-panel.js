@@ -1,0 +1,205 @@
+// "Edit the mesh" (issue 15): the picked vertex, edge or face (canvas, table row, touch or
+// the number fields here), the operations that apply to it (each enabled or saying why
+// not, from mesh.check), the last edit played back one pointer assignment at a time, the
+// counts and Euler's formula, and how many stored entries every representation rewrote.
+// Edits go into state.ops (edit-ops.js withEdit), so undo, links and reload keep them.
+import { h } from '../../app/dom.js';
+import { createPlayer } from '../../app/player.js';
+import { EDIT_OPS, EDIT_OP, checkArgs, withEdit } from './edit-ops.js';
+import { visibleSteps, stepText } from './edit-playback.js';
+import { vLabel, eLabel, fLabel } from './labels.js';
+
+const LABEL = { vertex: vLabel, edge: eLabel, face: fLabel };
+const REPRESENTATION_NAMES = {
+  'independent-faces': 'Independent faces',
+  'vertex-face-tables': 'Vertex and face tables',
+  'adjacency-lists': 'Adjacency lists',
+  'partial-adjacency-lists': 'Partial adjacency lists',
+  'edge-list': 'Edge list',
+  'winged-edge': 'Winged edge',
+};
+
+// selection: the view's {hover, pick}; pick({kind, index}) makes an element the picked one.
+export function createEditPanel(ctx, selection, { pick }) {
+  const state = () => ctx.state;
+  const kindSelect = h('select', { id: 'edit-kind', 'aria-label': 'Kind of element to edit' },
+    h('option', { value: 'vertex' }, 'vertex'), h('option', { value: 'edge' }, 'edge'), h('option', { value: 'face' }, 'face'));
+  const number = h('input', { type: 'number', id: 'edit-element', min: 1, step: 1, 'aria-label': 'Element number (1-based, as in the tables)' });
+  const choose = () => {
+    const kind = kindSelect.value;
+    const n = Number(number.value) - 1;
+    const limit = { vertex: ctx.model.V, edge: ctx.model.E, face: ctx.model.F }[kind];
+    if (!Number.isInteger(n) || n < 0 || n >= limit) {
+      ctx.message.error(`Choose a ${kind} number from 1 to ${limit}`, 'invalid-element');
+      return;
+    }
+    pick({ kind, index: n });
+  };
+  kindSelect.addEventListener('change', choose);
+  number.addEventListener('change', choose);
+
+  const tInput = h('input', { type: 'range', id: 'edit-t', min: 0.1, max: 0.9, step: 0.05, 'aria-label': 'Parameter t along the edge (split and collapse)' });
+  const tValue = h('output', { for: 'edit-t', id: 'edit-t-value' });
+  tInput.addEventListener('input', () => ctx.commit({ ...state(), editT: Number(tInput.value) }, { history: false, recompute: false }));
+  const cornerA = h('select', { id: 'edit-corner-a', 'aria-label': 'First corner of the new edge' });
+  const cornerB = h('select', { id: 'edit-corner-b', 'aria-label': 'Second corner of the new edge' });
+  const corners = h('span', { class: 'edit-corners' }, h('label', {}, 'from ', cornerA), ' ', h('label', {}, 'to ', cornerB));
+  for (const s of [cornerA, cornerB]) s.addEventListener('change', () => refreshButtons());
+
+  const picked = h('p', { class: 'edit-picked', id: 'edit-picked', 'aria-live': 'polite' });
+  const buttons = new Map();
+  const reasons = h('ul', { class: 'edit-reasons hint', id: 'edit-reasons' });
+  for (const entry of EDIT_OPS) {
+    const b = h('button', { type: 'button', class: 'tool', 'data-op': entry.op, title: `${entry.label} (${entry.key}): ${entry.counts}`, onclick: () => run(entry.op) }, entry.label);
+    buttons.set(entry.op, b);
+  }
+  const compactButton = h('button', { type: 'button', class: 'tool', id: 'edit-compact', onclick: () => runCompact(),
+    title: 'Renumber the tables without the gaps removed elements left' }, 'Compact numbering');
+
+  const euler = h('p', { class: 'edit-euler', id: 'edit-euler', 'aria-live': 'polite' });
+  const costs = h('table', { class: 'data-table edit-costs', id: 'edit-costs' });
+  const stepList = h('ol', { class: 'pseudocode edit-steps', id: 'edit-steps', 'aria-label': 'Pointer assignments of the last edit' });
+  const stepLabel = h('span', { class: 'walk-step', id: 'edit-step' });
+  const lastTitle = h('h3', { id: 'edit-last' }, 'Last edit');
+
+  const player = createPlayer({
+    count: () => visibleSteps(ctx.model?.lastOperation).length + 1,
+    getStep: () => shownSteps(),
+    onStep: (i) => ctx.commit({ ...state(), editStep: i }, { history: false }),
+    stepsPerSecond: 2,
+  });
+  const shownSteps = () => {
+    const n = visibleSteps(ctx.model?.lastOperation).length;
+    const s = state().editStep;
+    return s < 0 || s > n ? n : s;
+  };
+  const tool = (label, action, title, id) => h('button', { type: 'button', class: 'tool', title, 'aria-label': title, onclick: action, id }, label);
+  const playButton = tool('▶ Play', () => player.toggle(), 'Play the last edit assignment by assignment', 'edit-play');
+  player.onChange(() => { playButton.textContent = player.playing ? '⏸ Pause' : '▶ Play'; playButton.setAttribute('aria-pressed', String(player.playing)); });
+
+  const root = h('section', { class: 'walk-panel edit-panel', id: 'edit-panel', 'aria-labelledby': 'edit-title' },
+    h('h2', { id: 'edit-title' }, 'Edit the mesh'),
+    h('div', { class: 'walk-choice' }, h('label', {}, 'Pick ', kindSelect), number, picked),
+    h('div', { class: 'walk-choice' }, h('label', {}, 't ', tInput), tValue, corners),
+    h('div', { class: 'edit-buttons', role: 'group', 'aria-label': 'Operations' }, ...buttons.values(), compactButton),
+    reasons,
+    euler,
+    lastTitle,
+    h('div', { class: 'walk-controls', role: 'group', 'aria-label': 'Edit player' },
+      tool('⏮', () => player.restart(), 'Before the edit', 'edit-restart'),
+      tool('◀ Back', () => player.prev(), 'Previous assignment', 'edit-back'),
+      playButton,
+      tool('Step ▶', () => player.next(), 'Next assignment', 'edit-next'),
+      tool('⏭', () => player.end(), 'After the edit', 'edit-end'),
+      stepLabel),
+    stepList,
+    costs);
+
+  // The operation of the state that pressing `op` makes now, or null when nothing fits.
+  function operationFor(op) {
+    const entry = EDIT_OP[op];
+    const p = selection.pick;
+    if (!p || p.kind !== entry.needs || !ctx.model) return null;
+    return entry.make(p.index, { t: state().editT, a: Number(cornerA.value), b: Number(cornerB.value) });
+  }
+
+  function checkOf(op) {
+    const operation = operationFor(op);
+    const entry = EDIT_OP[op];
+    if (!operation) return { ok: false, message: `pick ${entry.needs === 'edge' ? 'an edge' : `a ${entry.needs}`} first` };
+    return ctx.model.mesh.check(op, ...checkArgs(operation));
+  }
+
+  function run(op) {
+    const check = checkOf(op);
+    if (!check.ok) {
+      ctx.message.error(`${EDIT_OP[op].label}: ${check.message}`, check.code ?? 'not-applicable');
+      return;
+    }
+    const operation = operationFor(op);
+    if (ctx.commit(withEdit(state(), operation))) ctx.message.info(`Done: ${EDIT_OP[op].what(operation)}. Step through the assignments below, or undo (Ctrl+Z).`);
+  }
+
+  function runCompact() {
+    if (ctx.commit(withEdit(state(), { op: 'compact' }))) {
+      selection.pick = null;
+      ctx.message.info('Compacted: the gaps are gone and the elements after them moved up; the tables show the new numbers.');
+    }
+  }
+
+  for (const entry of EDIT_OPS) {
+    ctx.keymap.add({ keys: [entry.key], label: `${entry.label.toLowerCase()} (the picked ${entry.needs})`, group: 'Edit',
+      action: () => run(entry.op), when: () => selection.pick?.kind === entry.needs });
+  }
+
+  let lastCornersKey = null;
+  function refreshCorners(model) {
+    const p = selection.pick;
+    corners.hidden = p?.kind !== 'face';
+    if (p?.kind !== 'face') return;
+    const key = `${model.topology}:${p.index}`;
+    if (key === lastCornersKey) return;
+    lastCornersKey = key;
+    const list = Array.from(model.mesh.verticesOfFace(p.index));
+    const options = () => list.map((v) => h('option', { value: String(v) }, vLabel(v)));
+    cornerA.replaceChildren(...options());
+    cornerB.replaceChildren(...options());
+    cornerA.value = String(list[0]);
+    cornerB.value = String(list[Math.min(2, list.length - 1)]);
+  }
+
+  function refreshButtons() {
+    const items = [];
+    for (const entry of EDIT_OPS) {
+      const b = buttons.get(entry.op);
+      const applies = selection.pick?.kind === entry.needs;
+      b.hidden = Boolean(selection.pick) && !applies;
+      const check = applies ? checkOf(entry.op) : null;
+      b.disabled = !check?.ok;
+      b.setAttribute('aria-disabled', String(!check?.ok));
+      if (applies && !check.ok) items.push(h('li', { 'data-op': entry.op, 'data-code': check.code }, `${entry.label}: ${check.message}`));
+    }
+    if (!selection.pick) items.push(h('li', {}, 'Pick a vertex, edge or face (click or tap it, click its table row, or type its number above); the operations that apply to it appear here.'));
+    reasons.replaceChildren(...items);
+  }
+
+  function refreshEuler(model) {
+    const c = model.counts;
+    euler.textContent = `V − E + F = ${c.vertices} − ${c.edges} + ${c.faces} = ${c.euler}` +
+      ` · boundary loops ${c.boundaryLoops}${model.gaps ? ` · ${model.gaps} numbers are gaps left by removed elements` : ''}` +
+      ` · edits ${model.editCount}`;
+  }
+
+  function refreshPlayback(model) {
+    const record = model.lastOperation;
+    const steps = visibleSteps(record);
+    const shown = shownSteps();
+    lastTitle.textContent = record ? `Last edit: ${EDIT_OP[record.op]?.what(model.lastEdit) ?? record.op} — ${steps.length} assignments` : 'Last edit: none yet';
+    stepLabel.textContent = record ? `${shown} of ${steps.length}` : '';
+    for (const b of root.querySelectorAll('.walk-controls button')) b.disabled = !record;
+    stepList.replaceChildren(...steps.map((s, i) => h('li', { 'data-step': i, class: i < shown ? (i === shown - 1 ? 'is-current' : 'is-done') : '' }, stepText(s))));
+    stepList.querySelector('.is-current')?.scrollIntoView?.({ block: 'nearest' });
+    const cost = model.editCost;
+    if (!cost) { costs.replaceChildren(); return; }
+    costs.replaceChildren(
+      h('caption', {}, 'Stored entries rewritten by the last edit'),
+      h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'representation'), h('th', { scope: 'col' }, 'entries'))),
+      h('tbody', {}, Object.entries(cost).map(([key, n]) => h('tr', { 'data-representation': key }, h('th', { scope: 'row' }, REPRESENTATION_NAMES[key] ?? key), h('td', {}, String(n))))));
+  }
+
+  return {
+    root,
+    update(model) {
+      const p = selection.pick;
+      picked.textContent = p ? `Picked: ${LABEL[p.kind](p.index)}` : 'Nothing picked';
+      if (p) { kindSelect.value = p.kind; number.value = String(p.index + 1); }
+      number.max = String({ vertex: model.V, edge: model.E, face: model.F }[kindSelect.value]);
+      tInput.value = String(state().editT);
+      tValue.textContent = String(state().editT);
+      refreshCorners(model);
+      refreshButtons();
+      refreshEuler(model);
+      refreshPlayback(model);
+    },
+  };
+}
