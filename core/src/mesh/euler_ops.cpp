@@ -832,4 +832,36 @@ bool WingedEdgeMesh::poke_face_unrecorded(Face f) {
     return run_unrecorded(A::poke_face(*this, f), version_, [&](NoRecorder& r) { poke_face_impl(f, r); });
 }
 
+void WingedEdgeMesh::reserve(int32_t vertices, int32_t edges, int32_t faces) {
+    positions_.reserve(3 * static_cast<std::size_t>(vertices));
+    vertex_edge_.reserve(vertices);
+    edges_.reserve(edges);
+    face_edge_.reserve(faces);
+}
+
+int32_t flip_every_third_edge(WingedEdgeMesh& mesh) {
+    int32_t flips = 0;
+    for (int32_t e = 0; e < mesh.edge_count(); e += 3) flips += mesh.flip_edge_unrecorded(Edge(e));
+    return flips;
+}
+
+int32_t split_every_edge(WingedEdgeMesh& mesh) {
+    const int32_t E = mesh.edge_count();
+    mesh.reserve(mesh.vertex_count() + E, 4 * E, mesh.face_count() + 2 * E);
+    int32_t splits = 0;
+    for (int32_t e = 0; e < E; ++e) {
+        const EdgeRecord& r = mesh.edge(e);
+        // the corners opposite e in its two faces, if they are triangles (read before the split)
+        const int32_t E_ = r.end, L = r.left, R = r.right;
+        const int32_t c = L != kNone && mesh.next_in_face(r.end_left, L) == r.start_left ? mesh.other_vertex(r.end_left, E_) : kNone;
+        const int32_t d = R != kNone && mesh.next_in_face(r.start_right, R) == r.end_right ? mesh.other_vertex(r.end_right, E_) : kNone;
+        if (!mesh.split_edge_unrecorded(Edge(e), 0.5)) continue;
+        ++splits;
+        const Vertex m(mesh.vertex_count() - 1);
+        if (c != kNone) mesh.split_face_unrecorded(Face(L), m, Vertex(c));
+        if (d != kNone) mesh.split_face_unrecorded(Face(R), m, Vertex(d));
+    }
+    return splits;
+}
+
 } // namespace wingspline::mesh

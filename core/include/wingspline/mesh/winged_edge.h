@@ -273,6 +273,9 @@ public:
     ChangeRecord poke_face(Face f);
     bool poke_face_unrecorded(Face f);
 
+    // Room for this many elements in all, so that a run of operations does not reallocate.
+    void reserve(int32_t vertices, int32_t edges, int32_t faces);
+
     // Removes the gaps the operations left: every table is renumbered keeping the order of
     // the elements that remain. Returns old -> new per kind. Moves the topology version on
     // when there was something to remove.
@@ -367,5 +370,13 @@ private:
         return r.left == f ? r.start : r.end;
     }
 };
+
+// BENCH.md mesh_edit_flip: for every edge e with e % 3 == 0, in increasing order, flip it if
+// the check allows. Returns the number of flips made. Unrecorded (the benchmark path).
+int32_t flip_every_third_edge(WingedEdgeMesh& mesh);
+// BENCH.md mesh_edit_split: split every edge of the mesh as built (0 .. E-1, in order) at its
+// midpoint and split each triangle beside it from the new vertex to the opposite corner (as
+// OpenMesh's TriMesh split). Returns the number of edges split. Unrecorded.
+int32_t split_every_edge(WingedEdgeMesh& mesh);
 
 } // namespace wingspline::mesh
