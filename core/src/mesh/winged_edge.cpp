@@ -677,6 +677,21 @@ IndexedMesh WingedEdgeMesh::face_set() const {
     return out;
 }
 
+IndexedMesh WingedEdgeMesh::live_face_set() const {
+    IndexedMesh all = face_set();
+    if (!has_garbage()) return all;
+    std::vector<int32_t> to(vertex_count(), kNone);
+    IndexedMesh out;
+    for (int32_t v = 0; v < vertex_count(); ++v)
+        if (!is_deleted(Vertex(v))) to[v] = out.add_vertex(positions_[3 * v], positions_[3 * v + 1], positions_[3 * v + 2]);
+    for (int32_t f = 0; f < all.face_count(); ++f) {
+        if (all.face_size(f) == 0) continue;
+        for (int32_t i = 0; i < all.face_size(f); ++i) out.face_vertices.push_back(to[all.corner(f, i)]);
+        out.face_offsets.push_back(static_cast<int32_t>(out.face_vertices.size()));
+    }
+    return out;
+}
+
 MeshCounts WingedEdgeMesh::counts() const {
     // Gaps left by edits (is_deleted) are not counted.
     MeshCounts c;

@@ -330,6 +330,10 @@ public:
     // build time or by set_face_edge changes where the walk starts, not the face set). The
     // other representations are derived from this (representations.h, RepresentationCache).
     IndexedMesh face_set() const;
+    // The face set without the gaps an edit left (face_set() lists a removed face with no
+    // corners and keeps a removed vertex's position): live vertices and faces numbered in
+    // order, as compact() would number them. What a file gets (OFF/OBJ have no room for gaps).
+    IndexedMesh live_face_set() const;
 
     MeshCounts counts() const;
     // Bytes of the vertex, edge and face tables (capacity actually held).
