@@ -64,6 +64,31 @@ val bench_ring_walk(int32_t handle) {
     });
 }
 
+// BENCH.md mesh_edit_flip / mesh_edit_split inside the module: each repetition edits a fresh
+// copy of the built mesh (the copy is not timed), as the native benchmark does.
+val bench_edit_in_core(int32_t handle, const std::string& task, int32_t repetitions) {
+    return guarded([&] {
+        const WingedEdgeMesh& built = winged_of_handle(handle);
+        if (task != "mesh_edit_flip" && task != "mesh_edit_split")
+            throw Error("unknown-task", "benchEditInCore times mesh_edit_flip or mesh_edit_split");
+        int32_t (*edit)(WingedEdgeMesh&) = task == "mesh_edit_flip" ? &flip_every_third_edge : &split_every_edge;
+        std::vector<double> seconds;
+        double checksum = 0;
+        for (int32_t i = 0; i < repetitions; ++i) {
+            WingedEdgeMesh m = built;
+            const double t0 = emscripten_get_now();
+            checksum = edit(m);
+            seconds.push_back((emscripten_get_now() - t0) / 1000.0);
+            checksum += m.edge_count() + m.edge(m.edge_count() - 1).start;
+        }
+        val r = val::object();
+        r.set("seconds", to_typed_array(seconds));
+        r.set("checksum", checksum);
+        r.set("n", task == "mesh_edit_flip" ? (built.edge_count() + 2) / 3 : built.edge_count());
+        return r;
+    });
+}
+
 } // namespace
 } // namespace wingspline::bindings
 
@@ -72,4 +97,5 @@ EMSCRIPTEN_BINDINGS(wingspline_bench) {
     emscripten::function("benchBuildInCore", &bench_build_in_core);
     emscripten::function("benchNormalsInCore", &bench_normals_in_core);
     emscripten::function("benchRingWalk", &bench_ring_walk);
+    emscripten::function("benchEditInCore", &bench_edit_in_core);
 }

@@ -13,6 +13,7 @@
 #include "wingspline/mesh/planes.h"
 #include "wingspline/mesh/queries.h"
 #include "wingspline/mesh/representations.h"
+#include "wingspline/mesh/tables.h"
 #include "wingspline/mesh/view_geometry.h"
 #include "wingspline/mesh/winged_edge.h"
 
@@ -180,17 +181,22 @@ val validate_indexed_mesh(val positions, val face_offsets, val face_vertices) {
 
 // ------------------------------------------------------------------ the winged edge
 
+// A gap left by an edit (join-faces, collapse-edge) is refused like a missing element.
+const char* const kGap = " was removed by an edit (its number stays a gap until the mesh is compacted)";
 void require_vertex(const WingedEdgeMesh& w, int32_t v) {
     require(v >= 0 && v < w.vertex_count(), "invalid-element",
             "vertex index " + std::to_string(v) + " is out of range: the mesh has vertices 0 to " + std::to_string(w.vertex_count() - 1));
+    require(!w.is_deleted(Vertex(v)), "deleted-element", vertex_label(v) + kGap);
 }
 void require_face(const WingedEdgeMesh& w, int32_t f) {
     require(f >= 0 && f < w.face_count(), "invalid-element",
             "face index " + std::to_string(f) + " is out of range: the mesh has faces 0 to " + std::to_string(w.face_count() - 1));
+    require(!w.is_deleted(Face(f)), "deleted-element", face_label(f) + kGap);
 }
 void require_edge(const WingedEdgeMesh& w, int32_t e) {
     require(e >= 0 && e < w.edge_count(), "invalid-element",
             "edge index " + std::to_string(e) + " is out of range: the mesh has edges 0 to " + std::to_string(w.edge_count() - 1));
+    require(!w.is_deleted(Edge(e)), "deleted-element", edge_label(e) + kGap);
 }
 
 // kind: edges-around-vertex, faces-around-vertex, vertices-around-vertex (v);
@@ -410,8 +416,21 @@ val change_value(const ChangeRecord& c) {
         row.set("fields", fields);
         rows.set(i, row);
     }
+    // Euler operations: every assignment in order, five int32 per step [table, row, field,
+    // before, after] (indices into meshOperationDescriptors().tables / .fields), and the
+    // positions set, eight numbers each [vertex, before xyz, after xyz, step].
+    std::vector<int32_t> steps;
+    steps.reserve(5 * c.steps.size());
+    for (const AssignmentStep& s : c.steps)
+        steps.insert(steps.end(), {static_cast<int32_t>(s.table), s.row, change_field_index(s.field), s.before, s.after});
+    std::vector<double> positions;
+    for (const PositionChange& p : c.positions)
+        positions.insert(positions.end(), {static_cast<double>(p.vertex), p.before.x, p.before.y, p.before.z, p.after.x, p.after.y,
+                                           p.after.z, static_cast<double>(p.step)});
     val r = val::object();
     r.set("op", c.op);
+    r.set("steps", to_typed_array(steps));
+    r.set("positions", to_typed_array(positions));
     r.set("added", element_list(c.added_vertices, c.added_edges, c.added_faces));
     r.set("removed", element_list(c.removed_vertices, c.removed_edges, c.removed_faces));
     r.set("rows", rows);
@@ -443,6 +462,117 @@ val mesh_operation(int32_t handle, const std::string& op, int32_t element, int32
         if (!verdict.ok) throw Error(verdict.code, verdict.message);
         return change_value(op == "set-vertex-edge" ? w.set_vertex_edge(Vertex(element), Edge(edge))
                                                     : w.set_face_edge(Face(element), Edge(edge)));
+    });
+}
+
+// One Euler operation by name (operation_descriptors(), tables.h): args in the descriptor's
+// order (element indices, then the optional number). check = true only asks check_<op>
+// ({allowed, code, message}); otherwise runs <op> and returns its change record, or the
+// refusal as {ok: false, code, message} with the mesh unchanged.
+val mesh_edit(int32_t handle, const std::string& op, const val& args, bool check) {
+    return guarded([&] {
+        WingedEdgeMesh& w = entry(handle).winged;
+        const std::vector<double> a = to_doubles(args);
+        const OperationDescriptor* d = nullptr;
+        for (const OperationDescriptor& x : operation_descriptors())
+            if (op == x.name) d = &x;
+        if (d == nullptr) throw Error("unknown-operation", "unknown mesh operation '" + op.substr(0, 40) + "'");
+        require(a.size() == d->arguments.size(), "invalid-argument",
+                op + " takes " + std::to_string(d->arguments.size()) + " arguments, not " + std::to_string(a.size()));
+        const auto i = [&](std::size_t k) { return static_cast<int32_t>(a[k]); };
+        CheckResult verdict;
+        if (op == "split-edge") verdict = w.check_split_edge(Edge(i(0)), a[1]);
+        else if (op == "split-face") verdict = w.check_split_face(Face(i(0)), Vertex(i(1)), Vertex(i(2)));
+        else if (op == "join-faces") verdict = w.check_join_faces(Edge(i(0)));
+        else if (op == "flip-edge") verdict = w.check_flip_edge(Edge(i(0)));
+        else if (op == "collapse-edge") verdict = w.check_collapse_edge(Edge(i(0)), a[1]);
+        else verdict = w.check_poke_face(Face(i(0)));
+        if (check) {
+            val r = val::object();
+            r.set("allowed", verdict.ok);
+            r.set("code", verdict.code);
+            r.set("message", verdict.message);
+            return r;
+        }
+        if (!verdict.ok) throw Error(verdict.code, verdict.message);
+        if (op == "split-edge") return change_value(w.split_edge(Edge(i(0)), a[1]));
+        if (op == "split-face") return change_value(w.split_face(Face(i(0)), Vertex(i(1)), Vertex(i(2))));
+        if (op == "join-faces") return change_value(w.join_faces(Edge(i(0))));
+        if (op == "flip-edge") return change_value(w.flip_edge(Edge(i(0))));
+        if (op == "collapse-edge") return change_value(w.collapse_edge(Edge(i(0)), a[1]));
+        return change_value(w.poke_face(Face(i(0))));
+    });
+}
+
+// {renumbering: {vertices, edges, faces} (old -> new, -1 = removed), version}
+val mesh_compact(int32_t handle) {
+    return guarded([&] {
+        WingedEdgeMesh& w = entry(handle).winged;
+        const Renumbering map = w.compact();
+        val renumbering = val::object();
+        renumbering.set("vertices", int_array(map.vertices));
+        renumbering.set("edges", int_array(map.edges));
+        renumbering.set("faces", int_array(map.faces));
+        val r = val::object();
+        r.set("renumbering", renumbering);
+        r.set("version", version_value(w.version()));
+        return r;
+    });
+}
+
+// The gaps: {vertices, edges, faces}, each the removed indices in increasing order.
+val mesh_gaps(int32_t handle) {
+    return guarded([&] {
+        const WingedEdgeMesh& w = entry(handle).winged;
+        const auto marked = [](const std::vector<char>& marks) {
+            std::vector<int32_t> out;
+            for (std::size_t i = 0; i < marks.size(); ++i)
+                if (marks[i]) out.push_back(static_cast<int32_t>(i));
+            return int_array(out);
+        };
+        val r = val::object();
+        r.set("vertices", marked(w.deleted_vertices()));
+        r.set("edges", marked(w.deleted_edges()));
+        r.set("faces", marked(w.deleted_faces()));
+        return r;
+    });
+}
+
+// Read once by mesh-api.js: {operations: [{name, method, arguments: [{name, kind (null for
+// a number), optional, default}]}], tables, fields, stepStride, positionStride}.
+val mesh_operation_descriptors() {
+    return guarded([] {
+        val ops = val::array();
+        const auto& all = operation_descriptors();
+        for (std::size_t k = 0; k < all.size(); ++k) {
+            val args = val::array();
+            for (std::size_t j = 0; j < all[k].arguments.size(); ++j) {
+                const OperationArgument& a = all[k].arguments[j];
+                val one = val::object();
+                one.set("name", std::string(a.name));
+                one.set("kind", a.kind == ElementKind::None ? val::null() : val(std::string(element_kind_name(a.kind))));
+                one.set("optional", a.optional);
+                one.set("default", a.default_value);
+                args.set(j, one);
+            }
+            val op = val::object();
+            op.set("name", std::string(all[k].name));
+            op.set("method", std::string(all[k].method));
+            op.set("arguments", args);
+            ops.set(k, op);
+        }
+        const auto names = [](const std::vector<const char*>& v) {
+            val out = val::array();
+            for (std::size_t k = 0; k < v.size(); ++k) out.set(k, std::string(v[k]));
+            return out;
+        };
+        val r = val::object();
+        r.set("operations", ops);
+        r.set("tables", names(change_tables()));
+        r.set("fields", names(change_fields()));
+        r.set("stepStride", 5);
+        r.set("positionStride", 8);
+        return r;
     });
 }
 
@@ -571,6 +701,18 @@ val mesh_format(val positions, val face_offsets, val face_vertices, const std::s
     });
 }
 
+// The edited mesh as a file: the live face set (gaps dropped, numbered as compact() would).
+val mesh_export(int32_t handle, const std::string& format) {
+    return guarded([&] {
+        if (format != "off" && format != "obj")
+            throw Error("unknown-format", "unknown mesh format '" + format + "'; use 'off' or 'obj'");
+        const IndexedMesh m = entry(handle).winged.live_face_set();
+        val r = val::object();
+        r.set("text", format == "off" ? format_off(m) : format_obj(m));
+        return r;
+    });
+}
+
 // ------------------------------------------------------------------ named meshes
 
 val named_mesh(const std::string& name, int32_t a, int32_t b) {
@@ -616,6 +758,11 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshBytes", &mesh_bytes);
     emscripten::function("meshVersion", &mesh_version);
     emscripten::function("meshOperation", &mesh_operation);
+    emscripten::function("meshEdit", &mesh_edit);
+    emscripten::function("meshCompact", &mesh_compact);
+    emscripten::function("meshExport", &mesh_export);
+    emscripten::function("meshGaps", &mesh_gaps);
+    emscripten::function("meshOperationDescriptors", &mesh_operation_descriptors);
     emscripten::function("meshStorage", &mesh_storage);
     emscripten::function("meshTables", &mesh_tables);
     emscripten::function("meshQuery", &mesh_query);

@@ -10,7 +10,7 @@ import { benchHooks } from 'wingspline/bench-hooks';
 
 const api = await loadWingspline();
 const HOOK_NAMES = ['benchBuildInCore', 'benchNormalsInCore', 'benchRingWalk', 'meshRingWalk', 'ringWalk',
-  'timeBuildInCore', 'timeNormalsInCore', 'benchHooks', 'benchAccess'];
+  'timeBuildInCore', 'timeNormalsInCore', 'benchHooks', 'benchAccess', 'benchEditInCore', 'timeEditInCore'];
 
 // Every property name reachable from `root` through own properties and prototypes
 // (functions are not called; a mesh is inspected as an object).

@@ -137,6 +137,15 @@ const cases = [
   ['mesh.boundingBox / vertexNormal', REDUCED, () => { lecture.boundingBox(); lecture.vertexNormal(1); }, () => lecture.vertexNormal(V_MISSING)],
   ['mesh.query', REDUCED, () => lecture.query('faces-around-vertex', 1), () => lecture.query('faces-around-vertex', V_MISSING)],
   ['hooks.timeNormalsInCore', REDUCED, () => hooks.timeNormalsInCore(lecture, 1), () => hooks.timeNormalsInCore(lecture, 0)],
+  ['mesh editing (issue 15)', REDUCED, () => {
+    const lecture = api.buildMesh(api.lectureExample()); // a fresh one per call: the edits grow it
+    try {
+      lecture.check('flip-edge', 4); lecture.flipEdge(4); lecture.splitEdge(2); lecture.splitFace(0, 5, 0); lecture.joinFaces(7);
+      lecture.pokeFace(2); lecture.collapseEdge(8, 0); lecture.gaps(); lecture.format(); lecture.compact();
+    } finally {
+      lecture.dispose();
+    }
+  }, () => lecture.flipEdge(0)],
   ['memoryUsage / liveMeshCount', REDUCED, () => { api.memoryUsage(); api.liveMeshCount(); },
     () => api.facesAroundVertex?.(0) ?? lecture.facesAroundVertex(V_MISSING)],
 ];

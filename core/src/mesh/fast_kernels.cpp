@@ -89,6 +89,10 @@ void newell_normals(const WingedEdgeMesh& mesh, double* normals) {
     const double* p = mesh.positions().data();
     const EdgeRecord* edges = mesh.edges().data();
     for (int32_t f = 0; f < F; ++f) {
+        if (mesh.is_deleted(Face(f))) { // a gap left by an edit: no face, no normal
+            normals[3 * f] = normals[3 * f + 1] = normals[3 * f + 2] = 0.0;
+            continue;
+        }
         double sx = 0, sy = 0, sz = 0;
         detail::walk_face_sides_fast(edges, mesh.face_edge(f), f, [&](int32_t a, int32_t b) {
             const double* pa = p + 3 * a;

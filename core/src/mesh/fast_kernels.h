@@ -38,7 +38,7 @@ inline void walk_every_ring_fast(const WingedEdgeMesh& mesh, Visit&& visit) {
     const EdgeRecord* edges = mesh.edges().data();
     for (int32_t v = 0; v < mesh.vertex_count(); ++v) {
         const int32_t first = mesh.vertex_edge(v);
-        if (first == kNone) continue;
+        if (first == kNone || mesh.is_deleted(Vertex(v))) continue;
         int32_t e = first;
         do {
             const EdgeRecord& r = edges[e];

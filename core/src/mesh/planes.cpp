@@ -28,6 +28,7 @@ std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh, const std::vector
     for (int32_t f = 0; f < mesh.face_count(); ++f) {
         const int32_t* c = face_vertices.data() + face_offsets[f];
         const int32_t n = face_offsets[f + 1] - face_offsets[f];
+        if (n == 0 && mesh.is_deleted(Face(f))) continue; // a gap left by an edit: a zero plane
         require(n >= 3, "mismatched-face-set", "face " + face_label(f) + " of the face set has fewer than three corners");
         const glm::dvec3 p1 = mesh.position(c[0]), p2 = mesh.position(c[1]), p3 = mesh.position(c[2]);
         const glm::dvec3 cross = glm::cross(p2 - p1, p3 - p1);
@@ -58,6 +59,7 @@ void newell_normals(const WingedEdgeMesh& mesh, std::vector<double>& normals) {
 void newell_normals_reference(const WingedEdgeMesh& mesh, std::vector<double>& normals) {
     normals.assign(3 * static_cast<std::size_t>(mesh.face_count()), 0.0);
     for (int32_t f = 0; f < mesh.face_count(); ++f) {
+        if (mesh.is_deleted(Face(f))) continue;
         const std::vector<int32_t> corners = mesh.vertices_of_face(f);
         const glm::dvec3 n = newell_vector(mesh.positions().data(), corners.data(), static_cast<int32_t>(corners.size()));
         const double len = glm::length(n);

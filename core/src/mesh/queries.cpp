@@ -429,6 +429,9 @@ std::array<QueryAnswer, kRepresentationCount> answer_query(QueryKind kind, int32
     require(element >= 0 && element < count, "invalid-element",
             what + " index " + std::to_string(element) + " is out of range: the mesh has " + whats + " 0 to " +
                 std::to_string(count - 1));
+    const bool gap = of_vertex ? w.is_deleted(Vertex(element)) : of_edge ? w.is_deleted(Edge(element)) : w.is_deleted(Face(element));
+    require(!gap, "deleted-element", (of_vertex ? vertex_label(element) : of_edge ? edge_label(element) : face_label(element)) +
+                                         " was removed by an edit (its number stays a gap until the mesh is compacted)");
     return {independent_faces_query(kind, element, reps.independent_faces, reps.corner_edge_names, w),
             vertex_face_tables_query(kind, element, reps.vertex_face_tables, reps.corner_edge_names, w),
             adjacency_lists_query(kind, element, reps.adjacency_lists),

@@ -30,6 +30,10 @@ std::vector<int32_t> name_corner_edges(const IndexedMesh& faces, const WingedEdg
     if (faces.face_count() != w.face_count() || faces.vertex_count() != w.vertex_count()) mismatch(0);
     std::vector<int32_t> names(faces.face_vertices.size(), kNone);
     for (int32_t f = 0; f < faces.face_count(); ++f) {
+        if (w.is_deleted(Face(f))) { // a gap left by an edit: listed with no corners
+            if (faces.face_size(f) != 0) mismatch(f);
+            continue;
+        }
         const std::vector<int32_t> loop = w.edges_of_face(f);
         const std::vector<int32_t> ring = w.vertices_of_face(f); // ring[i] starts loop[i]
         const int32_t n = faces.face_size(f);
@@ -128,8 +132,11 @@ Representations build_representations(const IndexedMesh& faces, const WingedEdge
     reps.vertex_face_tables = {positions, fo, fv};
 
     // Edges from the face set: S, E of the numbering; L = the face that runs S->E.
-    std::vector<int32_t> edge_vertices(2 * static_cast<std::size_t>(E)), edge_faces(2 * static_cast<std::size_t>(E), kNone);
+    std::vector<int32_t> edge_vertices(2 * static_cast<std::size_t>(E), kNone), edge_faces(2 * static_cast<std::size_t>(E), kNone);
+    // A gap left by an edit (a removed edge) keeps its row with kNone everywhere and is in
+    // no vertex's list (docs/api-mesh.md, "Gaps").
     for (int32_t e = 0; e < E; ++e) {
+        if (w.is_deleted(Edge(e))) continue;
         edge_vertices[2 * e] = w.edge(e).start;
         edge_vertices[2 * e + 1] = w.edge(e).end;
     }
@@ -141,13 +148,15 @@ Representations build_representations(const IndexedMesh& faces, const WingedEdge
 
     // VE / VV: each edge listed at both its ends, ascending edge number.
     std::vector<int32_t> degree(V, 0);
-    for (int32_t e = 0; e < 2 * E; ++e) ++degree[edge_vertices[e]];
+    for (int32_t e = 0; e < 2 * E; ++e)
+        if (edge_vertices[e] != kNone) ++degree[edge_vertices[e]];
     std::vector<int32_t> vertex_offsets = offsets_from_counts(degree);
-    std::vector<int32_t> vertex_edges(2 * static_cast<std::size_t>(E)), vertex_vertices(2 * static_cast<std::size_t>(E));
+    const std::size_t listed = static_cast<std::size_t>(vertex_offsets.back());
+    std::vector<int32_t> vertex_edges(listed), vertex_vertices(listed);
     {
         std::vector<int32_t> fill(vertex_offsets.begin(), vertex_offsets.end() - 1);
         for (int32_t e = 0; e < E; ++e)
-            for (int end = 0; end < 2; ++end) {
+            for (int end = 0; end < 2 && edge_vertices[2 * e] != kNone; ++end) {
                 const int32_t v = edge_vertices[2 * e + end];
                 vertex_edges[fill[v]] = e;
                 vertex_vertices[fill[v]++] = edge_vertices[2 * e + 1 - end];
@@ -172,7 +181,7 @@ Representations build_representations(const IndexedMesh& faces, const WingedEdge
     adj.edge_faces = edge_faces;
     adj.edge_edge_offsets.assign(1, 0);
     for (int32_t e = 0; e < E; ++e) {
-        for (int end = 0; end < 2; ++end) {
+        for (int end = 0; end < 2 && edge_vertices[2 * e] != kNone; ++end) {
             const int32_t v = edge_vertices[2 * e + end];
             for (int32_t i = vertex_offsets[v]; i < vertex_offsets[v + 1]; ++i)
                 if (vertex_edges[i] != e) adj.edge_edges.push_back(vertex_edges[i]);
@@ -213,6 +222,7 @@ Representations build_representations(const IndexedMesh& faces, const WingedEdge
     list.polygon_offsets = fo;
     list.polygon_edges.resize(C);
     for (int32_t f = 0; f < F; ++f) {
+        if (fo[f] == fo[f + 1]) continue; // a removed face
         const auto first = names.begin() + fo[f], last = names.begin() + fo[f + 1];
         std::rotate_copy(first, std::min_element(first, last), last, list.polygon_edges.begin() + fo[f]);
     }

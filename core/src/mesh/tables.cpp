@@ -120,6 +120,37 @@ const char* element_kind_name(ElementKind k) {
     return "";
 }
 
+const std::vector<OperationDescriptor>& operation_descriptors() {
+    using K = ElementKind;
+    static const std::vector<OperationDescriptor> all = {
+        {"split-edge", "splitEdge", {{"e", K::Edge}, {"t", K::None, 0.5, true}}},
+        {"split-face", "splitFace", {{"f", K::Face}, {"a", K::Vertex}, {"b", K::Vertex}}},
+        {"join-faces", "joinFaces", {{"e", K::Edge}}},
+        {"flip-edge", "flipEdge", {{"e", K::Edge}}},
+        {"collapse-edge", "collapseEdge", {{"e", K::Edge}, {"t", K::None, 0.5, true}}},
+        {"poke-face", "pokeFace", {{"f", K::Face}}},
+    };
+    return all;
+}
+
+const std::vector<const char*>& change_tables() {
+    static const std::vector<const char*> all = {"vertex", "edge", "face"};
+    return all;
+}
+
+const std::vector<const char*>& change_fields() {
+    static const std::vector<const char*> all = {"edge", "start", "end", "left", "right", "startLeft", "startRight",
+                                                 "endLeft", "endRight", "firstCorner"};
+    return all;
+}
+
+int change_field_index(const std::string& field) {
+    const auto& all = change_fields();
+    for (std::size_t i = 0; i < all.size(); ++i)
+        if (field == all[i]) return static_cast<int>(i);
+    return -1;
+}
+
 const ArrayDescriptor& TableDescriptor::array(const std::string& wanted) const {
     for (const ArrayDescriptor& a : arrays)
         if (wanted == a.name) return a;

@@ -527,6 +527,53 @@ ChangeRecord WingedEdgeMesh::set_face_edge(Face f, Edge e) {
     return change;
 }
 
+Renumbering WingedEdgeMesh::compact() {
+    Renumbering map;
+    const auto number = [](const std::vector<char>& marks, int32_t n, std::vector<int32_t>& to) {
+        to.assign(n, kNone);
+        int32_t next = 0;
+        for (int32_t i = 0; i < n; ++i)
+            if (marks.empty() || !marks[i]) to[i] = next++;
+        return next;
+    };
+    const int32_t V = number(vertex_deleted_, vertex_count(), map.vertices);
+    const int32_t E = number(edge_deleted_, edge_count(), map.edges);
+    const int32_t F = number(face_deleted_, face_count(), map.faces);
+    if (!has_garbage()) return map;
+    const auto at = [](const std::vector<int32_t>& to, int32_t i) { return i == kNone ? kNone : to[i]; };
+    for (int32_t v = 0; v < vertex_count(); ++v) {
+        const int32_t to = map.vertices[v];
+        if (to == kNone) continue;
+        for (int k = 0; k < 3; ++k) positions_[3 * to + k] = positions_[3 * v + k];
+        vertex_edge_[to] = at(map.edges, vertex_edge_[v]);
+    }
+    for (int32_t e = 0; e < edge_count(); ++e) {
+        const int32_t to = map.edges[e];
+        if (to == kNone) continue;
+        EdgeRecord r = edges_[e];
+        r.start = map.vertices[r.start], r.end = map.vertices[r.end];
+        r.left = at(map.faces, r.left), r.right = at(map.faces, r.right);
+        r.start_left = map.edges[r.start_left], r.start_right = map.edges[r.start_right];
+        r.end_left = map.edges[r.end_left], r.end_right = map.edges[r.end_right];
+        edges_[to] = r;
+    }
+    for (int32_t f = 0; f < face_count(); ++f) {
+        const int32_t to = map.faces[f];
+        if (to == kNone) continue;
+        face_edge_[to] = map.edges[face_edge_[f]];
+        if (!face_first_corner_.empty()) face_first_corner_[to] = map.vertices[face_first_corner_[f]];
+    }
+    positions_.resize(3 * static_cast<std::size_t>(V));
+    vertex_edge_.resize(V);
+    edges_.resize(E);
+    face_edge_.resize(F);
+    if (!face_first_corner_.empty()) face_first_corner_.resize(F);
+    if (!vertex_deleted_.empty()) ++version_.geometry; // the positions moved up
+    vertex_deleted_.clear(), edge_deleted_.clear(), face_deleted_.clear();
+    ++version_.topology;
+    return map;
+}
+
 std::vector<int32_t> WingedEdgeMesh::edges_around_vertex(int32_t v) const {
     std::vector<int32_t> out;
     const int32_t first = vertex_edge_[v];
@@ -615,6 +662,10 @@ IndexedMesh WingedEdgeMesh::face_set() const {
     out.face_offsets.reserve(face_edge_.size() + 1);
     out.face_vertices.reserve(2 * edges_.size()); // sides of all faces <= 2E
     for (int32_t f = 0; f < face_count(); ++f) {
+        if (is_deleted(Face(f))) { // a gap left by an edit: a face with no corners, so numbers stay
+            out.face_offsets.push_back(static_cast<int32_t>(out.face_vertices.size()));
+            continue;
+        }
         const std::vector<int32_t> corners = vertices_of_face(f);
         const auto first = face_first_corner_.empty()
                                ? corners.begin()
@@ -626,14 +677,34 @@ IndexedMesh WingedEdgeMesh::face_set() const {
     return out;
 }
 
+IndexedMesh WingedEdgeMesh::live_face_set() const {
+    IndexedMesh all = face_set();
+    if (!has_garbage()) return all;
+    std::vector<int32_t> to(vertex_count(), kNone);
+    IndexedMesh out;
+    for (int32_t v = 0; v < vertex_count(); ++v)
+        if (!is_deleted(Vertex(v))) to[v] = out.add_vertex(positions_[3 * v], positions_[3 * v + 1], positions_[3 * v + 2]);
+    for (int32_t f = 0; f < all.face_count(); ++f) {
+        if (all.face_size(f) == 0) continue;
+        for (int32_t i = 0; i < all.face_size(f); ++i) out.face_vertices.push_back(to[all.corner(f, i)]);
+        out.face_offsets.push_back(static_cast<int32_t>(out.face_vertices.size()));
+    }
+    return out;
+}
+
 MeshCounts WingedEdgeMesh::counts() const {
+    // Gaps left by edits (is_deleted) are not counted.
     MeshCounts c;
-    c.vertices = vertex_count();
-    c.edges = edge_count();
-    c.faces = face_count();
-    for (int32_t v : vertex_edge_) c.isolated_vertices += v == kNone;
+    const auto live = [](const std::vector<char>& marks, int32_t n) {
+        return n - static_cast<int32_t>(std::count(marks.begin(), marks.end(), 1));
+    };
+    c.vertices = live(vertex_deleted_, vertex_count());
+    c.edges = live(edge_deleted_, edge_count());
+    c.faces = live(face_deleted_, face_count());
+    for (int32_t v = 0; v < vertex_count(); ++v) c.isolated_vertices += vertex_edge_[v] == kNone && !is_deleted(Vertex(v));
     std::vector<char> seen(edges_.size(), 0);
     for (int32_t e = 0; e < edge_count(); ++e) {
+        if (is_deleted(Edge(e))) continue;
         const EdgeRecord& r = edges_[e];
         if (r.left != kNone && r.right != kNone) continue;
         ++c.boundary_edges;
@@ -666,14 +737,17 @@ ValidationReport WingedEdgeMesh::validate() const {
         p.faces = std::move(fs);
         report.problems.push_back(std::move(p));
     };
+    // Gaps left by edits (is_deleted) are skipped, and a live row referring to one is an error.
     const int32_t V = vertex_count(), E = edge_count(), F = face_count();
-    auto edge_ok = [&](int32_t e) { return e >= 0 && e < E; };
-    auto face_ok = [&](int32_t f) { return f == kNone || (f >= 0 && f < F); };
+    auto edge_ok = [&](int32_t e) { return e >= 0 && e < E && !is_deleted(Edge(e)); };
+    auto face_ok = [&](int32_t f) { return f == kNone || (f >= 0 && f < F && !is_deleted(Face(f))); };
+    auto vertex_ok = [&](int32_t v) { return v >= 0 && v < V && !is_deleted(Vertex(v)); };
     auto touches = [&](int32_t e, int32_t v) { return edges_[e].start == v || edges_[e].end == v; };
     bool references_ok = true;
     for (int32_t e = 0; e < E; ++e) {
+        if (is_deleted(Edge(e))) continue;
         const EdgeRecord& r = edges_[e];
-        const bool ok = r.start >= 0 && r.start < V && r.end >= 0 && r.end < V && r.start != r.end &&
+        const bool ok = vertex_ok(r.start) && vertex_ok(r.end) && r.start != r.end &&
                         face_ok(r.left) && face_ok(r.right) && edge_ok(r.start_left) && edge_ok(r.start_right) &&
                         edge_ok(r.end_left) && edge_ok(r.end_right);
         if (!ok) {
@@ -698,12 +772,13 @@ ValidationReport WingedEdgeMesh::validate() const {
         }
     }
     for (int32_t f = 0; f < F; ++f)
-        if (!edge_ok(face_edge_[f]) || (edges_[face_edge_[f]].left != f && edges_[face_edge_[f]].right != f)) {
+        if (!is_deleted(Face(f)) && (!edge_ok(face_edge_[f]) || (edges_[face_edge_[f]].left != f && edges_[face_edge_[f]].right != f))) {
             references_ok = false;
             add("face-edge-not-incident", face_label(f) + "'s edge is not one of its sides", {}, {}, {f});
         }
     for (int32_t v = 0; v < V; ++v) {
         const int32_t e = vertex_edge_[v];
+        if (is_deleted(Vertex(v))) continue;
         if (e == kNone) {
             Problem p;
             p.code = "isolated-vertex";
@@ -720,14 +795,16 @@ ValidationReport WingedEdgeMesh::validate() const {
 
     std::vector<int32_t> degree(V, 0);
     std::size_t sides = 0;
-    for (const EdgeRecord& r : edges_) {
+    for (int32_t e = 0; e < E; ++e) {
+        if (is_deleted(Edge(e))) continue;
+        const EdgeRecord& r = edges_[e];
         ++degree[r.start];
         ++degree[r.end];
         sides += (r.left != kNone) + (r.right != kNone);
     }
     for (int32_t v = 0; v < V; ++v) {
         const int32_t first = vertex_edge_[v];
-        if (first == kNone) continue;
+        if (first == kNone || is_deleted(Vertex(v))) continue;
         int32_t e = first, steps = 0;
         bool ok = true;
         do {
@@ -741,6 +818,7 @@ ValidationReport WingedEdgeMesh::validate() const {
     }
     std::size_t walked = 0;
     for (int32_t f = 0; f < F; ++f) {
+        if (is_deleted(Face(f))) continue;
         const int32_t first = face_edge_[f];
         int32_t e = first, steps = 0;
         bool ok = true;
@@ -760,6 +838,7 @@ ValidationReport WingedEdgeMesh::validate() const {
                 " does not come back around the face", {}, {first}, {f});
     }
     for (int32_t f = 0; f < static_cast<int32_t>(face_first_corner_.size()) && f < F; ++f) {
+        if (is_deleted(Face(f))) continue;
         const std::vector<int32_t> corners = vertices_of_face(f);
         if (std::find(corners.begin(), corners.end(), face_first_corner_[f]) == corners.end())
             add("face-first-corner-not-on-face", face_label(f) + " is listed from " + vertex_label(face_first_corner_[f]) +

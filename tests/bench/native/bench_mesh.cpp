@@ -1,5 +1,6 @@
 // BENCH.md mesh tasks, native: mesh_build, mesh_ring, mesh_normals, mesh_memory on
-// sphere_F and grid_F for F = 10k, 100k, 1M.
+// sphere_F and grid_F for F = 10k, 100k, 1M; mesh_edit_flip and mesh_edit_split on the
+// 10k and 100k inputs (issue 15).
 #include "bench.h"
 
 #include "wingspline/mesh/generators.h"
@@ -75,5 +76,29 @@ WINGSPLINE_BENCH(mesh) {
             });
             report("mesh_normals", in.name, F, seconds, checksum);
         }
+    }
+}
+
+// The editing tasks change the mesh, so every run starts from a fresh copy (not timed).
+WINGSPLINE_BENCH(mesh_edit) {
+    if (!ctx.wants("mesh_edit_flip") && !ctx.wants("mesh_edit_split")) return;
+    for (const Input& in : inputs()) {
+        if (in.mesh.face_count() > 100000) continue;
+        const WingedEdgeMesh built = WingedEdgeMesh::build(in.mesh);
+        const int kRepetitions = in.mesh.face_count() <= 10000 ? 31 : 7;
+        const auto run = [&](const char* task, int32_t (*edit)(WingedEdgeMesh&), double n) {
+            std::vector<double> seconds;
+            double checksum = 0;
+            for (int r = 0; r < kRepetitions; ++r) {
+                WingedEdgeMesh m = built;
+                const double t0 = now_seconds();
+                checksum = edit(m);
+                seconds.push_back(now_seconds() - t0);
+                checksum += m.edge_count() + m.edge(m.edge_count() - 1).start;
+            }
+            report(task, in.name, n, seconds, checksum);
+        };
+        if (ctx.wants("mesh_edit_flip")) run("mesh_edit_flip", &flip_every_third_edge, (built.edge_count() + 2) / 3);
+        if (ctx.wants("mesh_edit_split")) run("mesh_edit_split", &split_every_edge, built.edge_count());
     }
 }

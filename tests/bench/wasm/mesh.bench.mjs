@@ -62,3 +62,17 @@ if (['mesh_memory', 'mesh_build', 'mesh_ring', 'mesh_normals'].some(wants)) {
     }
   }
 }
+
+// Issue 15: the editing tasks, inside the module (each repetition on a fresh copy of the
+// built mesh, the copy untimed, as natively); the 10k and 100k inputs.
+for (const task of ['mesh_edit_flip', 'mesh_edit_split'].filter(wants)) {
+  for (const [name, kind, options] of inputs.filter(([n]) => !n.endsWith('_1000000'))) {
+    const mesh = api.buildMesh(api.generateMesh(kind, { ...options, layout: 'csr' }));
+    try {
+      const r = hooks.timeEditInCore(mesh, task, repetitionsFor(mesh.counts().faces));
+      report({ task, input: name, n: r.n, seconds: Array.from(r.seconds), checksum: r.checksum });
+    } finally {
+      mesh.dispose();
+    }
+  }
+}

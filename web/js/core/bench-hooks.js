@@ -32,5 +32,12 @@ export function benchHooks(api) {
       const { visited, checksum } = unwrap(raw.benchRingWalk(benchAccess.handleOf(mesh)));
       return { visited, checksum };
     },
+    // BENCH.md mesh_edit_flip / mesh_edit_split timed inside the module on fresh copies of a
+    // built mesh (the mesh itself is not changed): {seconds, checksum, n} (n = edges tried).
+    timeEditInCore(mesh, task, repetitions) {
+      integerIn(repetitions, 'repetitions', 1, 1000);
+      const { seconds, checksum, n } = unwrap(raw.benchEditInCore(benchAccess.handleOf(mesh), String(task), repetitions));
+      return { seconds, checksum, n };
+    },
   });
 }

@@ -116,6 +116,34 @@ function storageValue(s) {
   };
 }
 
+// A change record as the core sends it, read by the descriptor (meshOperationDescriptors):
+// steps are `stepStride` int32 each [table, row, field, before, after] naming
+// descriptor.tables / descriptor.fields; positions `positionStride` numbers each [vertex,
+// before xyz, after xyz, step].
+function readChange(r, descriptor) {
+  const { tables, fields, stepStride, positionStride } = descriptor;
+  const steps = [];
+  for (let k = 0; k + stepStride <= r.steps.length; k += stepStride) {
+    const [t, row, f, before, after] = r.steps.subarray(k, k + stepStride);
+    steps.push({ table: tables[t], row, field: fields[f], before, after });
+  }
+  const positions = [];
+  for (let k = 0; k + positionStride <= r.positions.length; k += positionStride) {
+    const p = r.positions;
+    positions.push({ vertex: p[k], before: [p[k + 1], p[k + 2], p[k + 3]], after: [p[k + 4], p[k + 5], p[k + 6]], step: p[k + 7] });
+  }
+  return {
+    op: r.op,
+    added: r.added,
+    removed: r.removed,
+    steps,
+    rows: r.rows,
+    positions,
+    before: { ...r.before },
+    after: { ...r.after },
+  };
+}
+
 // For bench-hooks.js only (benchAccess below): a live mesh's handle, read through the class's
 // private field, and the raw module of an api object (keyed on its buildMesh function,
 // which the api object shares with the object createMeshApi returns).
@@ -144,12 +172,14 @@ export class Mesh {
   #faces = { topology: -1, count: 0 }; // F, for the topology it was read at
 
   #descriptors; // every table's descriptor (the core's, read once per API)
+  #edits; // the Euler operations' descriptor (the core's, read once per API): see #edit
 
-  constructor(raw, handle, descriptors = []) {
+  constructor(raw, handle, descriptors = [], edits = null) {
     this.#raw = raw;
     this.#handle = handle;
     this.#id = handle;
     this.#descriptors = descriptors;
+    this.#edits = edits;
     safetyNet?.register(this, { raw, handle }, this);
   }
 
@@ -347,13 +377,81 @@ export class Mesh {
   checkSetFaceEdge(f, e) { return this.#operation('set-face-edge', f, e, true); }
   setFaceEdge(f, e) { return this.#operation('set-face-edge', f, e, false); }
 
-  // One operation as the lesson state holds it: {op: 'set-vertex-edge', v, e} or
-  // {op: 'set-face-edge', f, e}. Returns its change record.
+  // One operation as the lesson state holds it: {op: 'set-vertex-edge', v, e},
+  // {op: 'set-face-edge', f, e}, or an Euler operation with its arguments by name
+  // ({op: 'split-edge', e, t}, {op: 'split-face', f, a, b}, ...: meshOperations()).
+  // Returns its change record.
   apply(operation) {
+    const edit = operation !== null && typeof operation === 'object' ? this.#editNamed(operation.op, false) : null;
+    if (edit) return this.#edit(edit, edit.arguments.map((a) => operation[a.name]), false);
     if (operation === null || typeof operation !== 'object' || !Object.hasOwn(OPERATIONS, operation.op)) {
-      fail('unknown-operation', `unknown mesh operation ${JSON.stringify(String(operation?.op)).slice(0, 60)}; use ${Object.keys(OPERATIONS).join(' or ')}`);
+      const names = [...Object.keys(OPERATIONS), ...this.#edits.operations.map((o) => o.name)];
+      fail('unknown-operation', `unknown mesh operation ${JSON.stringify(String(operation?.op)).slice(0, 60)}; use ${names.join(', ')}`);
     }
     return operation.op === 'set-vertex-edge' ? this.setVertexEdge(operation.v, operation.e) : this.setFaceEdge(operation.f, operation.e);
+  }
+
+  // ---------------------------------------------------------------- Euler operations
+  // Issue 15 (docs/api-mesh.md, "Editing the mesh"). Each returns its change record
+  // {op, added, removed: {vertices, edges, faces}, steps: [{table, row, field, before,
+  // after}] (every assignment in the algorithm's order), rows: [{table, row, fields:
+  // [{field, before, after}]}] (per changed row), positions: [{vertex, before, after,
+  // step}], before, after: {topology, geometry}}, or throws the refusal (code, message),
+  // the mesh unchanged. New elements take the next numbers; removed ones stay as gaps
+  // (gaps()) until compact().
+  splitEdge(e, t = 0.5) { return this.#editByName('split-edge', [e, t]); }
+  splitFace(f, a, b) { return this.#editByName('split-face', [f, a, b]); }
+  joinFaces(e) { return this.#editByName('join-faces', [e]); }
+  flipEdge(e) { return this.#editByName('flip-edge', [e]); }
+  collapseEdge(e, t = 0.5) { return this.#editByName('collapse-edge', [e, t]); }
+  pokeFace(f) { return this.#editByName('poke-face', [f]); }
+
+  // Whether an operation may run, changing nothing: {ok: true} or {ok: false, code,
+  // message}. check('flip-edge', 4), check('split-face', f, a, b), check('set-vertex-edge', v, e).
+  check(op, ...args) {
+    if (Object.hasOwn(OPERATIONS, op)) return this.#operation(op, args[0], args[1], true);
+    return this.#edit(this.#editNamed(op, true), args, true);
+  }
+
+  // Removes the gaps left by join-faces and collapse-edge: every table renumbered keeping
+  // the order of what remains. Returns {vertices, edges, faces}: old index -> new (-1 = removed).
+  compact() {
+    const r = unwrap(this.#raw.meshCompact(this.#live()));
+    this.#setVersion(r.version);
+    return { vertices: r.renumbering.vertices, edges: r.renumbering.edges, faces: r.renumbering.faces };
+  }
+
+  // The mesh as it is now as OFF or OBJ text: a file has no room for gaps, so its vertices
+  // and faces are the live ones numbered in order (as compact() would number them).
+  format({ format = 'off' } = {}) { return unwrap(this.#raw.meshExport(this.#live(), String(format))).text; }
+
+  // The gaps: {vertices, edges, faces}, the removed indices (Int32Array, increasing).
+  gaps() { return unwrap(this.#raw.meshGaps(this.#live())); }
+
+  #editNamed(name, required) {
+    const edit = this.#edits?.operations.find((o) => o.name === name) ?? null;
+    if (!edit && required) {
+      const names = [...Object.keys(OPERATIONS), ...(this.#edits?.operations ?? []).map((o) => o.name)];
+      fail('unknown-operation', `unknown mesh operation ${JSON.stringify(String(name)).slice(0, 60)}; use ${names.join(', ')}`);
+    }
+    return edit;
+  }
+
+  #editByName(name, args) { return this.#edit(this.#editNamed(name, true), args, false); }
+
+  // Any Euler operation, read from its descriptor: the arguments in order (an element
+  // index, or a number with its default), then the core's check or operation.
+  #edit(edit, args, check) {
+    const values = edit.arguments.map((a, k) => {
+      const v = args[k] === undefined && a.optional ? a.default : args[k];
+      if (a.kind) return integerIn(v, a.kind === 'vertex' ? 'vertex' : a.kind, -INT32_MAX, INT32_MAX);
+      if (typeof v !== 'number' || !Number.isFinite(v)) fail('invalid-argument', `${a.name} must be a finite number, not ${String(v).slice(0, 40)}`);
+      return v;
+    });
+    const r = unwrap(this.#raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), check));
+    if (check) return r.allowed ? { ok: true } : { ok: false, code: r.code, message: r.message };
+    this.#setVersion(r.after);
+    return readChange(r, this.#edits);
   }
 
   // Storage of each representation, from its real arrays: {[representation]: {entries,
@@ -417,6 +515,11 @@ export function createMeshApi(raw) {
   const meshLimits = Object.freeze({ maxCoordinate, maxFaceCorners, maxVertices, maxFaces });
   // Every table's descriptor (core/src/mesh/tables.cpp), read once: see tables.js.
   const tableDescriptors = deepFreeze(unwrap(raw.meshTableDescriptors()).tables);
+  // The Euler operations and the change record's wire form (core/src/mesh/tables.cpp), read once.
+  const ops = unwrap(raw.meshOperationDescriptors());
+  const meshOperations = deepFreeze({
+    operations: ops.operations, tables: ops.tables, fields: ops.fields, stepStride: ops.stepStride, positionStride: ops.positionStride,
+  });
   function named(name, a = 0, b = 0) {
     return unwrap(raw.meshNamed(name, a, b));
   }
@@ -442,7 +545,7 @@ export function createMeshApi(raw) {
       // The core keeps each face's first corner as given (chosen face edges may start its
       // walk elsewhere), so the other representations are derived from the core alone.
       const r = unwrap(raw.meshBuild(positions, faceOffsets, faceVertices, edges, vertexEdges, faceEdges));
-      return new Mesh(raw, r.handle, tableDescriptors);
+      return new Mesh(raw, r.handle, tableDescriptors, meshOperations);
     },
     // Every problem of an indexed face set, without building: {ok, problems}.
     validateMesh(input) {
@@ -456,6 +559,10 @@ export function createMeshApi(raw) {
     // The descriptors of every representation's tables (frozen): {representation, name,
     // title, rows: 'vertex'|'edge'|'face', arrays, columns}; read a table with tables.js.
     tableDescriptors,
+    // The Euler operations (frozen): {operations: [{name, method, arguments: [{name, kind:
+    // 'vertex'|'edge'|'face'|null (a number), optional, default}]}], tables, fields,
+    // stepStride, positionStride}: what mesh.apply({op, ...arguments}) accepts.
+    meshOperations,
     // Text -> {positions, faces}. Errors: 'parse-error', 'truncated-file',
     // 'index-out-of-range', 'coordinate-out-of-range', 'face-too-large', 'too-large' (more
     // vertices or faces than meshLimits; checkCounts: false lifts that) with error.line

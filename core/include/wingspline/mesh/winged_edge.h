@@ -133,6 +133,24 @@ struct RowChange {
     int32_t row = kNone;
     std::vector<FieldChange> fields;
 };
+// One pointer assignment as the algorithm makes it (the Euler operations record every one,
+// in order, for step-by-step playback): table[row].field goes from before to after. The
+// face table's "firstCorner" field is the corner face_set() lists the face from (kept only
+// once a face edge was chosen; see WingedEdgeMesh::face_set()).
+struct AssignmentStep {
+    MeshTable table = MeshTable::Vertex;
+    int32_t row = kNone;
+    std::string field;
+    int32_t before = kNone;
+    int32_t after = kNone;
+};
+// A vertex position set by an operation: a new vertex (before = its coordinates too, as it
+// had none) or a moved one (collapse). `step` = how many assignment steps came before it.
+struct PositionChange {
+    int32_t vertex = kNone;
+    glm::dvec3 before{0.0}, after{0.0};
+    std::size_t step = 0;
+};
 
 // What one operation did: the elements it added and removed (removed ones stay as marked
 // gaps, see is_deleted()), and every table row it changed with its fields before and after
@@ -142,9 +160,16 @@ struct ChangeRecord {
     std::vector<Vertex> added_vertices, removed_vertices;
     std::vector<Edge> added_edges, removed_edges;
     std::vector<Face> added_faces, removed_faces;
-    std::vector<RowChange> rows;
+    std::vector<RowChange> rows;      // per changed row, each changed field's first before and last after
+    std::vector<AssignmentStep> steps; // every assignment in the algorithm's order (Euler operations)
+    std::vector<PositionChange> positions;
     MeshVersion before, after;
     bool changed() const { return before != after; }
+};
+
+// How compact() moved the elements: old index -> new index (kNone for a removed one).
+struct Renumbering {
+    std::vector<int32_t> vertices, edges, faces;
 };
 
 // Removes repeats from v, keeping each element where it first appears (n log n).
@@ -208,11 +233,63 @@ public:
     CheckResult check_set_face_edge(Face f, Edge e) const;
     ChangeRecord set_face_edge(Face f, Edge e);
 
-    // Removed elements (a future collapse or delete) are not compacted away: their rows
-    // stay, marked deleted, so every index a student is looking at keeps its meaning, and
-    // a later garbage collection (an explicit step, as pmp's garbage_collection()) will
-    // compact the tables and say how the indices moved. No operation removes anything
-    // yet, so the marks are held only once one does (empty vectors = nothing deleted).
+    // ------------------------------------------------------- Euler operations (issue 15)
+    // euler_ops.cpp. Each check_<op> changes nothing; each <op> calls it and throws
+    // Error(code, message) with the structure bit-identical when it refuses, else returns
+    // the ChangeRecord with every assignment in order (steps), per-row before/after (rows),
+    // the elements added (next free numbers) and removed (left as marked gaps), and moves
+    // version().topology on by one (geometry too when a position was set). The
+    // <op>_unrecorded twins run the same code without recording (no strings, no
+    // allocations beyond the tables' own growth) and return false where <op> would refuse:
+    // the benchmarks use them. docs/api-mesh.md, "Changing a mesh", lists the refusals.
+    //
+    // split-edge: a new vertex on e at (1-t) S + t E (0 < t < 1); e keeps S -> new vertex,
+    // a new edge runs new vertex -> E; both faces gain a corner. V+1, E+1.
+    CheckResult check_split_edge(Edge e, double t = 0.5) const;
+    ChangeRecord split_edge(Edge e, double t = 0.5);
+    bool split_edge_unrecorded(Edge e, double t = 0.5);
+    // split-face: a new edge a -> b across f (a, b non-adjacent corners of f). f keeps the
+    // corners from b round to a, the new face (next number) those from a round to b. E+1, F+1.
+    CheckResult check_split_face(Face f, Vertex a, Vertex b) const;
+    ChangeRecord split_face(Face f, Vertex a, Vertex b);
+    bool split_face_unrecorded(Face f, Vertex a, Vertex b);
+    // join-faces: removes e and merges its two faces into the lower-numbered one. E-1, F-1.
+    CheckResult check_join_faces(Edge e) const;
+    ChangeRecord join_faces(Edge e);
+    bool join_faces_unrecorded(Edge e);
+    // flip-edge: e, shared by two triangles (S, E, c) and (E, S, d), becomes d -> c.
+    CheckResult check_flip_edge(Edge e) const;
+    ChangeRecord flip_edge(Edge e);
+    bool flip_edge_unrecorded(Edge e);
+    // collapse-edge: E is merged into S, which moves to (1-t) S + t E (0 <= t <= 1). A
+    // triangle on either side disappears with its edge at E. Removes e, E, and per triangle
+    // side one face and one edge. Refused unless the link condition holds.
+    CheckResult check_collapse_edge(Edge e, double t = 0.5) const;
+    ChangeRecord collapse_edge(Edge e, double t = 0.5);
+    bool collapse_edge_unrecorded(Edge e, double t = 0.5);
+    // poke-face: a new vertex at the centroid of f's corners, joined to each corner. f keeps
+    // the triangle on its stored edge; V+1, E+n, F+n-1 for an n-gon.
+    CheckResult check_poke_face(Face f) const;
+    ChangeRecord poke_face(Face f);
+    bool poke_face_unrecorded(Face f);
+
+    // Room for this many elements in all, so that a run of operations does not reallocate.
+    void reserve(int32_t vertices, int32_t edges, int32_t faces);
+
+    // Removes the gaps the operations left: every table is renumbered keeping the order of
+    // the elements that remain. Returns old -> new per kind. Moves the topology version on
+    // when there was something to remove.
+    Renumbering compact();
+    // The mark vectors (empty = nothing deleted): 1 where the row is a gap.
+    const std::vector<char>& deleted_vertices() const { return vertex_deleted_; }
+    const std::vector<char>& deleted_edges() const { return edge_deleted_; }
+    const std::vector<char>& deleted_faces() const { return face_deleted_; }
+
+    // Removed elements (join-faces, collapse-edge) are not compacted away: their rows stay,
+    // unchanged but marked deleted, so every index a student is looking at keeps its
+    // meaning, until compact() (an explicit step, as pmp's garbage_collection()) renumbers
+    // and says how the indices moved. The marks are held only once something is removed
+    // (empty vectors = nothing deleted).
     bool is_deleted(Vertex v) const { return !vertex_deleted_.empty() && vertex_deleted_[v.idx]; }
     bool is_deleted(Edge e) const { return !edge_deleted_.empty() && edge_deleted_[e.idx]; }
     bool is_deleted(Face f) const { return !face_deleted_.empty() && face_deleted_[f.idx]; }
@@ -253,6 +330,10 @@ public:
     // build time or by set_face_edge changes where the walk starts, not the face set). The
     // other representations are derived from this (representations.h, RepresentationCache).
     IndexedMesh face_set() const;
+    // The face set without the gaps an edit left (face_set() lists a removed face with no
+    // corners and keeps a removed vertex's position): live vertices and faces numbered in
+    // order, as compact() would number them. What a file gets (OFF/OBJ have no room for gaps).
+    IndexedMesh live_face_set() const;
 
     MeshCounts counts() const;
     // Bytes of the vertex, edge and face tables (capacity actually held).
@@ -276,6 +357,15 @@ private:
     MeshVersion version_;
     std::vector<char> vertex_deleted_, edge_deleted_, face_deleted_; // see is_deleted()
 
+    template <class Recorder> void split_edge_impl(Edge e, double t, Recorder& rec);
+    template <class Recorder> void split_face_impl(Face f, Vertex a, Vertex b, Recorder& rec);
+    template <class Recorder> void join_faces_impl(Edge e, Recorder& rec);
+    template <class Recorder> void flip_edge_impl(Edge e, Recorder& rec);
+    template <class Recorder> void collapse_edge_impl(Edge e, double t, Recorder& rec);
+    template <class Recorder> void poke_face_impl(Face f, Recorder& rec);
+    friend struct EulerAccess;
+    friend struct EulerRows;
+
     CheckResult check_element(Vertex v) const;
     CheckResult check_element(Edge e) const;
     CheckResult check_element(Face f) const;
@@ -284,5 +374,13 @@ private:
         return r.left == f ? r.start : r.end;
     }
 };
+
+// BENCH.md mesh_edit_flip: for every edge e with e % 3 == 0, in increasing order, flip it if
+// the check allows. Returns the number of flips made. Unrecorded (the benchmark path).
+int32_t flip_every_third_edge(WingedEdgeMesh& mesh);
+// BENCH.md mesh_edit_split: split every edge of the mesh as built (0 .. E-1, in order) at its
+// midpoint and split each triangle beside it from the new vertex to the opposite corner (as
+// OpenMesh's TriMesh split). Returns the number of edges split. Unrecorded.
+int32_t split_every_edge(WingedEdgeMesh& mesh);
 
 } // namespace wingspline::mesh

@@ -1,0 +1,548 @@
+// Issue 15: the Euler operations on the winged edge (split edge, split face, join faces,
+// flip, collapse, poke). The lecture example's tables after each operation are worked out
+// by hand below from lecture 000's conventions (L traverses S -> E; wing X-Y = the other
+// edge at X of the face on side Y, the boundary walked as a face), not read from the code.
+// Then thousands of random seeded operation sequences: validate(), Euler's formula, an
+// independent rebuild from the face set, refusals bit-identical, the change record enough
+// to replay (steps) and to undo (rows), recorded and unrecorded paths identical, compact().
+#include <catch2/catch.hpp>
+
+#include "wingspline/mesh/generators.h"
+#include "wingspline/mesh/representations.h"
+#include "wingspline/mesh/winged_edge.h"
+
+#include <algorithm>
+#include <cstring>
+#include <random>
+#include <sstream>
+#include <string>
+
+using namespace wingspline::mesh;
+
+namespace {
+
+int32_t label(const std::string& s) { return s == "-" ? kNone : std::stoi(s.substr(1)) - 1; }
+
+// One edge-table row as the slide writes it: "e3: v2 v3 F1 F2 e2 e5 e1 e4" (S E L R SL SR EL ER).
+std::string row_text(const WingedEdgeMesh& w, int32_t e) {
+    const EdgeRecord& r = w.edge(e);
+    const auto V = [](int32_t i) { return i == kNone ? std::string("-") : "v" + std::to_string(i + 1); };
+    const auto F = [](int32_t i) { return i == kNone ? std::string("-") : "F" + std::to_string(i + 1); };
+    const auto E = [](int32_t i) { return i == kNone ? std::string("-") : "e" + std::to_string(i + 1); };
+    return "e" + std::to_string(e + 1) + ": " + V(r.start) + " " + V(r.end) + " " + F(r.left) + " " + F(r.right) + " " +
+           E(r.start_left) + " " + E(r.start_right) + " " + E(r.end_left) + " " + E(r.end_right);
+}
+
+struct HandTables {
+    std::vector<std::string> edges;        // every live edge row, in order; deleted rows as "eN: deleted"
+    std::vector<std::string> vertex_edges; // "e1" ... or "deleted"
+    std::vector<std::string> face_edges;
+    std::vector<std::vector<int32_t>> faces; // 1-based corners as face_set() lists them; {} for a gap
+};
+
+void require_tables(const WingedEdgeMesh& w, const HandTables& t) {
+    const ValidationReport rep = w.validate();
+    INFO((rep.first_error() ? rep.first_error()->message : std::string()));
+    REQUIRE(rep.ok());
+    REQUIRE(w.edge_count() == static_cast<int32_t>(t.edges.size()));
+    for (int32_t e = 0; e < w.edge_count(); ++e)
+        CHECK((w.is_deleted(Edge(e)) ? "e" + std::to_string(e + 1) + ": deleted" : row_text(w, e)) == t.edges[e]);
+    REQUIRE(w.vertex_count() == static_cast<int32_t>(t.vertex_edges.size()));
+    for (int32_t v = 0; v < w.vertex_count(); ++v) {
+        INFO("v" << v + 1);
+        if (t.vertex_edges[v] == "deleted")
+            CHECK(w.is_deleted(Vertex(v)));
+        else
+            CHECK(w.vertex_edge(v) == label(t.vertex_edges[v]));
+    }
+    REQUIRE(w.face_count() == static_cast<int32_t>(t.face_edges.size()));
+    for (int32_t f = 0; f < w.face_count(); ++f) {
+        INFO("F" << f + 1);
+        if (t.face_edges[f] == "deleted")
+            CHECK(w.is_deleted(Face(f)));
+        else
+            CHECK(w.face_edge(f) == label(t.face_edges[f]));
+    }
+    const IndexedMesh fs = w.face_set();
+    REQUIRE(fs.face_count() == static_cast<int32_t>(t.faces.size()));
+    for (int32_t f = 0; f < fs.face_count(); ++f) {
+        std::vector<int32_t> got;
+        for (int32_t i = 0; i < fs.face_size(f); ++i) got.push_back(fs.corner(f, i) + 1);
+        INFO("F" << f + 1);
+        CHECK(got == t.faces[f]);
+    }
+}
+
+WingedEdgeMesh lecture() {
+    const NamedMesh ex = lecture_example();
+    return WingedEdgeMesh::build(ex.mesh, ex.options);
+}
+
+// The slide's rows (test_mesh.cpp checks the build against them).
+const std::vector<std::string> kSlide = {"e1: v1 v3 - F1 e2 e2 e4 e3", "e2: v1 v2 F1 - e1 e1 e3 e6", "e3: v2 v3 F1 F2 e2 e5 e1 e4",
+                                         "e4: v3 v4 - F2 e1 e3 e7 e5", "e5: v2 v4 F2 F3 e3 e6 e4 e7", "e6: v2 v5 F3 - e5 e2 e7 e7",
+                                         "e7: v4 v5 - F3 e4 e5 e6 e6"};
+
+// ---------------------------------------------------------------- snapshots
+struct Snapshot {
+    std::vector<double> positions;
+    std::vector<int32_t> vertex_edge, edges, face_edge, face_set_offsets, face_set_vertices;
+    std::vector<char> dv, de, df;
+    MeshVersion version;
+    bool operator==(const Snapshot& o) const {
+        return positions == o.positions && vertex_edge == o.vertex_edge && edges == o.edges && face_edge == o.face_edge &&
+               face_set_offsets == o.face_set_offsets && face_set_vertices == o.face_set_vertices && dv == o.dv && de == o.de &&
+               df == o.df && version == o.version;
+    }
+};
+
+Snapshot snapshot(const WingedEdgeMesh& w) {
+    Snapshot s;
+    s.positions = w.positions();
+    s.vertex_edge = w.vertex_edges();
+    for (const EdgeRecord& r : w.edges())
+        s.edges.insert(s.edges.end(), {r.start, r.end, r.left, r.right, r.start_left, r.start_right, r.end_left, r.end_right});
+    s.face_edge = w.face_edges();
+    const IndexedMesh fs = w.face_set();
+    s.face_set_offsets = fs.face_offsets;
+    s.face_set_vertices = fs.face_vertices;
+    s.dv = w.deleted_vertices(), s.de = w.deleted_edges(), s.df = w.deleted_faces();
+    s.version = w.version();
+    return s;
+}
+
+// The three tables as flat arrays (the slide's tables: what the record must restore).
+struct Tables {
+    std::vector<double> positions;
+    std::vector<int32_t> vertex_edge, edges, face_edge;
+    bool operator==(const Tables& o) const {
+        return positions == o.positions && vertex_edge == o.vertex_edge && edges == o.edges && face_edge == o.face_edge;
+    }
+};
+Tables tables(const WingedEdgeMesh& w) {
+    const Snapshot s = snapshot(w);
+    return {s.positions, s.vertex_edge, s.edges, s.face_edge};
+}
+
+int field_index(const std::string& f) {
+    static const char* names[8] = {"start", "end", "left", "right", "startLeft", "startRight", "endLeft", "endRight"};
+    for (int i = 0; i < 8; ++i)
+        if (f == names[i]) return i;
+    return -1;
+}
+int32_t* cell(Tables& t, MeshTable table, int32_t row, const std::string& field) {
+    if (table == MeshTable::Vertex) return field == "edge" ? &t.vertex_edge[row] : nullptr;
+    if (table == MeshTable::Face) return field == "edge" ? &t.face_edge[row] : nullptr; // firstCorner is not a table cell
+    const int k = field_index(field);
+    return k < 0 ? nullptr : &t.edges[8 * static_cast<std::size_t>(row) + k];
+}
+
+// Replays the steps on the tables before the operation: new rows first (kNone), then every
+// assignment in order, then the positions.
+Tables replay(Tables t, const ChangeRecord& c) {
+    for (const Vertex& v : c.added_vertices) {
+        (void)v;
+        t.vertex_edge.push_back(kNone);
+        t.positions.insert(t.positions.end(), 3, 0.0);
+    }
+    for (std::size_t i = 0; i < c.added_edges.size(); ++i) t.edges.insert(t.edges.end(), 8, kNone);
+    for (std::size_t i = 0; i < c.added_faces.size(); ++i) t.face_edge.push_back(kNone);
+    for (const AssignmentStep& s : c.steps) {
+        int32_t* p = cell(t, s.table, s.row, s.field);
+        if (!p) continue;
+        REQUIRE(*p == s.before); // each step starts from the value the previous ones left
+        *p = s.after;
+    }
+    for (const PositionChange& p : c.positions)
+        for (int k = 0; k < 3; ++k) t.positions[3 * p.vertex + k] = p.after[k];
+    return t;
+}
+
+// Undoes an operation on the tables after it from its rows alone (each field's before),
+// in reverse, then drops the rows it added (always the last ones).
+Tables undo(Tables t, const ChangeRecord& c) {
+    for (auto row = c.rows.rbegin(); row != c.rows.rend(); ++row)
+        for (const FieldChange& f : row->fields)
+            if (int32_t* p = cell(t, row->table, row->row, f.field)) *p = f.before;
+    for (const PositionChange& p : c.positions)
+        for (int k = 0; k < 3; ++k) t.positions[3 * p.vertex + k] = p.before[k];
+    t.vertex_edge.resize(t.vertex_edge.size() - c.added_vertices.size());
+    t.positions.resize(3 * t.vertex_edge.size());
+    t.edges.resize(t.edges.size() - 8 * c.added_edges.size());
+    t.face_edge.resize(t.face_edge.size() - c.added_faces.size());
+    return t;
+}
+
+// ---------------------------------------------------------------- random operations
+enum Op { SplitEdge, SplitFace, JoinFaces, FlipEdge, CollapseEdge, PokeFace, kOps };
+const char* kOpNames[kOps] = {"split-edge", "split-face", "join-faces", "flip-edge", "collapse-edge", "poke-face"};
+
+struct Call {
+    Op op;
+    int32_t a, b, c;
+    double t;
+};
+
+Call random_call(const WingedEdgeMesh& w, std::mt19937& rng) {
+    const auto pick = [&](int32_t n) { return static_cast<int32_t>(rng() % static_cast<uint32_t>(std::max(n, 1))); };
+    Call c{static_cast<Op>(rng() % kOps), 0, 0, 0, 0.5};
+    const double ts[] = {0.5, 0.25, 0.0, 1.0, 0.9, -0.5, 1.5};
+    c.t = ts[rng() % 7];
+    switch (c.op) {
+    case SplitFace: {
+        c.a = pick(w.face_count());
+        // mostly corners of the face (some adjacent, some not), sometimes any vertex
+        if (!w.is_deleted(Face(c.a)) && rng() % 5 != 0) {
+            const std::vector<int32_t> corners = w.vertices_of_face(c.a);
+            c.b = corners[pick(static_cast<int32_t>(corners.size()))];
+            c.c = corners[pick(static_cast<int32_t>(corners.size()))];
+        } else {
+            c.b = pick(w.vertex_count());
+            c.c = pick(w.vertex_count());
+        }
+        break;
+    }
+    case PokeFace: c.a = pick(w.face_count()); break;
+    default: c.a = pick(w.edge_count()) - (rng() % 50 == 0 ? w.edge_count() + 1 : 0); break;
+    }
+    return c;
+}
+
+CheckResult check(const WingedEdgeMesh& w, const Call& c) {
+    switch (c.op) {
+    case SplitEdge: return w.check_split_edge(Edge(c.a), c.t);
+    case SplitFace: return w.check_split_face(Face(c.a), Vertex(c.b), Vertex(c.c));
+    case JoinFaces: return w.check_join_faces(Edge(c.a));
+    case FlipEdge: return w.check_flip_edge(Edge(c.a));
+    case CollapseEdge: return w.check_collapse_edge(Edge(c.a), c.t);
+    default: return w.check_poke_face(Face(c.a));
+    }
+}
+ChangeRecord run(WingedEdgeMesh& w, const Call& c) {
+    switch (c.op) {
+    case SplitEdge: return w.split_edge(Edge(c.a), c.t);
+    case SplitFace: return w.split_face(Face(c.a), Vertex(c.b), Vertex(c.c));
+    case JoinFaces: return w.join_faces(Edge(c.a));
+    case FlipEdge: return w.flip_edge(Edge(c.a));
+    case CollapseEdge: return w.collapse_edge(Edge(c.a), c.t);
+    default: return w.poke_face(Face(c.a));
+    }
+}
+bool run_unrecorded(WingedEdgeMesh& w, const Call& c) {
+    switch (c.op) {
+    case SplitEdge: return w.split_edge_unrecorded(Edge(c.a), c.t);
+    case SplitFace: return w.split_face_unrecorded(Face(c.a), Vertex(c.b), Vertex(c.c));
+    case JoinFaces: return w.join_faces_unrecorded(Edge(c.a));
+    case FlipEdge: return w.flip_edge_unrecorded(Edge(c.a));
+    case CollapseEdge: return w.collapse_edge_unrecorded(Edge(c.a), c.t);
+    default: return w.poke_face_unrecorded(Face(c.a));
+    }
+}
+
+// The live part of the face set, gaps dropped and vertices renumbered, built again from
+// scratch by WingedEdgeMesh::build: it must be accepted (a manifold, oriented mesh) and have
+// the same counts; every live edge of w must be an edge of it with the same two faces.
+void require_rebuild_agrees(const WingedEdgeMesh& w) {
+    const IndexedMesh fs = w.face_set();
+    std::vector<int32_t> vmap(w.vertex_count(), kNone), fmap(w.face_count(), kNone);
+    IndexedMesh live;
+    for (int32_t v = 0; v < w.vertex_count(); ++v)
+        if (!w.is_deleted(Vertex(v))) {
+            vmap[v] = live.vertex_count();
+            live.add_vertex(fs.positions[3 * v], fs.positions[3 * v + 1], fs.positions[3 * v + 2]);
+        }
+    for (int32_t f = 0; f < fs.face_count(); ++f) {
+        if (w.is_deleted(Face(f))) {
+            REQUIRE(fs.face_size(f) == 0);
+            continue;
+        }
+        std::vector<int32_t> c;
+        for (int32_t i = 0; i < fs.face_size(f); ++i) c.push_back(vmap[fs.corner(f, i)]);
+        fmap[f] = live.face_count();
+        live.add_face(c.data(), static_cast<int32_t>(c.size()));
+    }
+    const WingedEdgeMesh r = WingedEdgeMesh::build(live);
+    const MeshCounts a = w.counts(), b = r.counts();
+    CHECK(a.vertices == b.vertices);
+    CHECK(a.edges == b.edges);
+    CHECK(a.faces == b.faces);
+    CHECK(a.boundary_edges == b.boundary_edges);
+    CHECK(a.boundary_loops == b.boundary_loops);
+    for (int32_t e = 0; e < w.edge_count(); ++e) {
+        if (w.is_deleted(Edge(e))) continue;
+        const EdgeRecord& x = w.edge(e);
+        bool found = false;
+        for (int32_t g = 0; g < r.edge_count() && !found; ++g) {
+            const EdgeRecord& y = r.edge(g);
+            const auto fm = [&](int32_t f) { return f == kNone ? kNone : fmap[f]; };
+            if (y.start == vmap[x.start] && y.end == vmap[x.end]) found = y.left == fm(x.left) && y.right == fm(x.right);
+            if (y.start == vmap[x.end] && y.end == vmap[x.start]) found = y.left == fm(x.right) && y.right == fm(x.left);
+        }
+        INFO(row_text(w, e));
+        CHECK(found);
+    }
+}
+
+struct Fixture {
+    std::string name;
+    WingedEdgeMesh mesh;
+};
+std::vector<Fixture> fixtures() {
+    IndexedMesh hexagons; // a polygon mesh: two hexagons and a quad
+    for (int i = 0; i < 10; ++i) hexagons.add_vertex(i % 5, i / 5, 0);
+    hexagons.add_face({0, 1, 2, 7, 6, 5});
+    hexagons.add_face({2, 3, 4, 9, 8, 7});
+    const NamedMesh foley = foley_example();
+    return {{"tetrahedron", WingedEdgeMesh::build(tetrahedron())}, {"cube", WingedEdgeMesh::build(cube())},
+            {"lecture", lecture()}, {"foley", WingedEdgeMesh::build(foley.mesh, foley.options)},
+            {"sphere", WingedEdgeMesh::build(uv_sphere(8, 6))}, {"grid", WingedEdgeMesh::build(grid(4, 3))},
+            {"fan", WingedEdgeMesh::build(open_fan(5))}, {"hexagons", WingedEdgeMesh::build(hexagons)}};
+}
+
+} // namespace
+
+// ====================================================================== the lecture example
+
+TEST_CASE("split-edge e3 of the lecture mesh: hand-worked tables and the steps in order", "[mesh][euler]") {
+    WingedEdgeMesh w = lecture();
+    const ChangeRecord c = w.split_edge(Edge(label("e3")), 0.5);
+    // New v6 at the midpoint of v2 (1,0) and v3 (1,2); new e8 = v6 -> v3 with e3's faces.
+    require_tables(w, {{"e1: v1 v3 - F1 e2 e2 e4 e8", kSlide[1], "e3: v2 v6 F1 F2 e2 e5 e8 e8", "e4: v3 v4 - F2 e1 e8 e7 e5", kSlide[4],
+                        kSlide[5], kSlide[6], "e8: v6 v3 F1 F2 e3 e3 e1 e4"},
+                       {"e1", "e6", "e8", "e5", "e6", "e8"},
+                       {"e1", "e3", "e5"},
+                       {{1, 2, 6, 3}, {2, 4, 3, 6}, {2, 5, 4}}});
+    CHECK(w.position(5) == glm::dvec3(1, 1, 0));
+    CHECK(c.added_vertices == std::vector<Vertex>{Vertex(5)});
+    CHECK(c.added_edges == std::vector<Edge>{Edge(7)});
+    // The algorithm's order: the new vertex's edge, the new edge's row, e3's end and wings,
+    // the two neighbours at v3, v3's edge.
+    std::vector<std::string> steps;
+    for (const AssignmentStep& s : c.steps)
+        steps.push_back(std::string(table_name(s.table)) + " " + std::to_string(s.row + 1) + " " + s.field + " " +
+                        std::to_string(s.before + 1) + "->" + std::to_string(s.after + 1));
+    CHECK(steps == std::vector<std::string>{"vertex 6 edge 0->8", "edge 8 start 0->6", "edge 8 end 0->3", "edge 8 left 0->1",
+                                            "edge 8 right 0->2", "edge 8 startLeft 0->3", "edge 8 startRight 0->3",
+                                            "edge 8 endLeft 0->1", "edge 8 endRight 0->4", "edge 3 end 3->6", "edge 3 endLeft 1->8",
+                                            "edge 3 endRight 4->8", "edge 1 endRight 3->8", "edge 4 startRight 3->8",
+                                            "vertex 3 edge 3->8"});
+    CHECK(c.before == MeshVersion{0, 0});
+    CHECK(c.after == MeshVersion{1, 1});
+    CHECK(w.counts().euler() == 1);
+}
+
+TEST_CASE("flip-edge e3 of the lecture mesh: e3 becomes v4 -> v1", "[mesh][euler]") {
+    WingedEdgeMesh w = lecture();
+    w.flip_edge(Edge(label("e3")));
+    // F1 = (v1 v2 v4), F2 = (v4 v3 v1). v3 loses e3 and stores the edge after it along F1's
+    // old walk (e1); F1's stored e1 left F1, so F1 stores e3.
+    require_tables(w, {{"e1: v1 v3 - F2 e2 e3 e4 e4", "e2: v1 v2 F1 - e3 e1 e5 e6", "e3: v4 v1 F1 F2 e5 e4 e2 e1",
+                        "e4: v3 v4 - F2 e1 e1 e7 e3", "e5: v2 v4 F1 F3 e2 e6 e3 e7", kSlide[5], kSlide[6]},
+                       {"e1", "e6", "e1", "e5", "e6"},
+                       {"e3", "e3", "e5"},
+                       {{1, 2, 4}, {1, 4, 3}, {2, 5, 4}}});
+    // and back: e3 = v4 -> v1 flips to v3 -> v2; its left face F1 becomes (c S d) = (v2 v4 v3)
+    // (listed from its walk start v3, as F1 lost v1) and F2 = (v3 v1 v2) (listed from v1):
+    // the lecture's two triangles again, with their numbers exchanged.
+    w.flip_edge(Edge(label("e3")));
+    const IndexedMesh fs = w.face_set();
+    CHECK(fs.face_vertices == std::vector<int32_t>{2, 1, 3, 0, 1, 2, 1, 4, 3});
+    CHECK(row_text(w, 2) == "e3: v3 v2 F1 F2 e4 e1 e5 e2");
+}
+
+TEST_CASE("join-faces e3 of the lecture mesh, then split-face F1 v2-v3 puts the edge back as e8", "[mesh][euler]") {
+    WingedEdgeMesh w = lecture();
+    const ChangeRecord j = w.join_faces(Edge(label("e3")));
+    // F1 = (v1 v2 v4 v3); F2 and e3 are gaps; v3 stored e3 and now stores e1 (after e3 in F1).
+    require_tables(w, {{"e1: v1 v3 - F1 e2 e2 e4 e4", "e2: v1 v2 F1 - e1 e1 e5 e6", "e3: deleted", "e4: v3 v4 - F1 e1 e1 e7 e5",
+                        "e5: v2 v4 F1 F3 e2 e6 e4 e7", kSlide[5], kSlide[6]},
+                       {"e1", "e6", "e1", "e5", "e6"},
+                       {"e1", "deleted", "e5"},
+                       {{1, 2, 4, 3}, {}, {2, 5, 4}}});
+    CHECK(j.removed_edges == std::vector<Edge>{Edge(2)});
+    CHECK(j.removed_faces == std::vector<Face>{Face(1)});
+    const MeshCounts k = w.counts();
+    CHECK((k.vertices == 5 && k.edges == 6 && k.faces == 2 && k.euler() == 1));
+
+    w.split_face(Face(0), Vertex(1), Vertex(2));
+    // e8 = v2 -> v3 with F1 (v3 v1 v2) on its left, the new F4 (v2 v4 v3) on its right:
+    // e3's old row with F4 for F2.
+    require_tables(w, {{"e1: v1 v3 - F1 e2 e2 e4 e8", "e2: v1 v2 F1 - e1 e1 e8 e6", "e3: deleted", "e4: v3 v4 - F4 e1 e8 e7 e5",
+                        "e5: v2 v4 F4 F3 e8 e6 e4 e7", kSlide[5], kSlide[6], "e8: v2 v3 F1 F4 e2 e5 e1 e4"},
+                       {"e1", "e6", "e1", "e5", "e6"},
+                       {"e1", "deleted", "e5", "e8"},
+                       {{1, 2, 3}, {}, {2, 5, 4}, {3, 2, 4}}});
+}
+
+TEST_CASE("collapse-edge e4 of the lecture mesh: v4 merges into v3, F2 goes", "[mesh][euler]") {
+    WingedEdgeMesh w = lecture();
+    const ChangeRecord c = w.collapse_edge(Edge(label("e4")), 0.5);
+    // v3 moves to the midpoint of (1,2) and (2,1). F2 = (v2 v4 v3) is the triangle on e4's
+    // right: it goes with e5 (its edge at v4); e3 (v2-v3) takes e5's place in F3 = (v2 v5 v3).
+    require_tables(w, {{"e1: v1 v3 - F1 e2 e2 e7 e3", kSlide[1], "e3: v2 v3 F1 F3 e2 e6 e1 e7", "e4: deleted", "e5: deleted",
+                        "e6: v2 v5 F3 - e3 e2 e7 e7", "e7: v3 v5 - F3 e1 e3 e6 e6"},
+                       {"e1", "e6", "e3", "deleted", "e6"},
+                       {"e1", "deleted", "e3"},
+                       {{1, 2, 3}, {}, {2, 5, 3}}});
+    CHECK(w.position(2) == glm::dvec3(1.5, 1.5, 0));
+    CHECK(c.removed_vertices == std::vector<Vertex>{Vertex(3)});
+    CHECK(c.removed_edges == std::vector<Edge>{Edge(3), Edge(4)});
+    CHECK(c.removed_faces == std::vector<Face>{Face(1)});
+    CHECK(w.counts().euler() == 1);
+}
+
+TEST_CASE("poke-face F1 of the lecture mesh: three triangles around the centroid", "[mesh][euler]") {
+    WingedEdgeMesh w = lecture();
+    w.poke_face(Face(0));
+    // F1's stored edge e1 runs v3 -> v1 along F1, so the corners are v3, v1, v2; spokes
+    // e8 = v6->v3, e9 = v6->v1, e10 = v6->v2; F1 = (v3 v1 v6), F4 = (v1 v2 v6), F5 = (v2 v3 v6).
+    require_tables(w, {{"e1: v1 v3 - F1 e2 e9 e4 e8", "e2: v1 v2 F4 - e9 e1 e10 e6", "e3: v2 v3 F5 F2 e10 e5 e8 e4", kSlide[3],
+                        kSlide[4], kSlide[5], kSlide[6], "e8: v6 v3 F1 F5 e9 e10 e1 e3", "e9: v6 v1 F4 F1 e10 e8 e2 e1",
+                        "e10: v6 v2 F5 F4 e8 e9 e3 e2"},
+                       {"e1", "e6", "e3", "e5", "e6", "e8"},
+                       {"e1", "e3", "e5", "e2", "e3"},
+                       {{1, 6, 3}, {2, 4, 3}, {2, 5, 4}, {1, 2, 6}, {2, 3, 6}}});
+    CHECK(w.position(5).x == Approx(2.0 / 3.0).epsilon(1e-15));
+    CHECK(w.position(5).y == Approx(1.0).epsilon(1e-15));
+}
+
+TEST_CASE("refusals on the lecture mesh and the tetrahedron say why and change nothing", "[mesh][euler]") {
+    struct Case {
+        std::string mesh;
+        Call call;
+        std::string code, text;
+    };
+    const std::vector<Case> cases = {
+        {"lecture", {FlipEdge, 0, 0, 0, 0.5}, "boundary-edge", "e1 is on the boundary"},
+        {"lecture", {JoinFaces, 1, 0, 0, 0.5}, "boundary-edge", "e2 is on the boundary"},
+        {"lecture", {CollapseEdge, 2, 0, 0, 0.5}, "would-pinch", "v2 and v3 are both on the boundary but e3 is not"},
+        {"lecture", {SplitFace, 0, 0, 1, 0.5}, "adjacent-corners", "v1 and v2 are already joined by e2, a side of F1"},
+        {"lecture", {SplitFace, 0, 0, 3, 0.5}, "not-a-corner", "v4 is not a corner of F1"},
+        {"lecture", {SplitFace, 0, 2, 2, 0.5}, "same-vertex", "both are v3"},
+        {"lecture", {SplitEdge, 2, 0, 0, 1.0}, "invalid-parameter", "t = 1 is not strictly between 0 and 1"},
+        {"lecture", {SplitEdge, 7, 0, 0, 0.5}, "invalid-element", "edge index 7 is out of range"},
+        {"lecture", {PokeFace, -1, 0, 0, 0.5}, "invalid-element", "face index -1 is out of range"},
+        {"tetrahedron", {FlipEdge, 0, 0, 0, 0.5}, "edge-exists", "that already exists"},
+        {"tetrahedron", {CollapseEdge, 0, 0, 0, 0.5}, "degenerate-vertex", "would leave"},
+    };
+    for (const Case& k : cases) {
+        WingedEdgeMesh w = k.mesh == "lecture" ? lecture() : WingedEdgeMesh::build(tetrahedron());
+        const Snapshot before = snapshot(w);
+        const CheckResult r = check(w, k.call);
+        INFO(k.code << ": " << r.message);
+        CHECK(!r.ok);
+        CHECK(r.code == k.code);
+        CHECK(r.message.find(k.text) != std::string::npos);
+        CHECK(snapshot(w) == before);
+        try {
+            run(w, k.call);
+            FAIL("accepted");
+        } catch (const wingspline::Error& e) {
+            CHECK(std::string(e.code()) == k.code);
+            CHECK(std::string(e.what()) == r.message);
+        }
+        CHECK(snapshot(w) == before);
+        CHECK(!run_unrecorded(w, k.call));
+        CHECK(snapshot(w) == before);
+    }
+    // The tetrahedron's flip names the edge it would create: e1 = v1 -> v2 between
+    // (v1 v2 v3) and (v2 v1 v4) would become v4 - v3, which is an edge already.
+    WingedEdgeMesh t = WingedEdgeMesh::build(tetrahedron());
+    const EdgeRecord& r0 = t.edge(0);
+    const std::string msg = t.check_flip_edge(Edge(0)).message;
+    CHECK(msg.rfind("flipping e1 would create an edge ", 0) == 0);
+    const int32_t c = t.vertices_of_face(r0.left)[0] + t.vertices_of_face(r0.left)[1] + t.vertices_of_face(r0.left)[2] - r0.start - r0.end;
+    CHECK(msg.find(vertex_label(c)) != std::string::npos);
+}
+
+// ====================================================================== random sequences
+
+TEST_CASE("random seeded operation sequences: valid, Euler, rebuild, refusals, record, unrecorded twin", "[mesh][euler]") {
+    int accepted[kOps] = {}, refused[kOps] = {};
+    for (uint32_t seed = 1; seed <= 1200; ++seed) { // 1200 sequences of 40 operations
+        std::vector<Fixture> all = fixtures();
+        Fixture& fx = all[seed % all.size()];
+        WingedEdgeMesh w = std::move(fx.mesh);
+        WingedEdgeMesh twin = w; // the unrecorded path
+        std::mt19937 rng(seed);
+        const int32_t euler = w.counts().euler();
+        for (int step = 0; step < 40; ++step) {
+            const Call call = random_call(w, rng);
+            INFO(fx.name << " seed " << seed << " step " << step << " " << kOpNames[call.op] << " " << call.a << " " << call.b << " "
+                         << call.c << " t=" << call.t);
+            const Snapshot before = snapshot(w);
+            const Tables tables_before = tables(w);
+            const CheckResult verdict = check(w, call);
+            CHECK(snapshot(w) == before); // a check changes nothing
+            if (!verdict.ok) {
+                ++refused[call.op];
+                CHECK(!verdict.code.empty());
+                CHECK(!verdict.message.empty());
+                CHECK_THROWS_AS(run(w, call), wingspline::Error);
+                REQUIRE(snapshot(w) == before);
+                REQUIRE(!run_unrecorded(twin, call));
+                continue;
+            }
+            ++accepted[call.op];
+            const ChangeRecord c = run(w, call);
+            REQUIRE(run_unrecorded(twin, call));
+            REQUIRE(snapshot(twin) == snapshot(w));
+            const ValidationReport rep = w.validate();
+            INFO((rep.first_error() ? rep.first_error()->message : std::string()));
+            REQUIRE(rep.ok());
+            CHECK(w.counts().euler() == euler);
+            CHECK(w.version().topology == before.version.topology + 1);
+            CHECK(c.before == before.version);
+            CHECK(c.after == w.version());
+            require_rebuild_agrees(w);
+            // the steps replay the operation; the rows undo it
+            CHECK(replay(tables_before, c) == tables(w));
+            CHECK(undo(tables(w), c) == tables_before);
+        }
+        // compact: same counts, valid, each live face's cycle the same under the renumbering
+        const MeshCounts k = w.counts();
+        const IndexedMesh fs = w.face_set();
+        const Renumbering map = w.compact();
+        REQUIRE(w.validate().ok());
+        CHECK(!w.has_garbage());
+        const MeshCounts k2 = w.counts();
+        CHECK((k2.vertices == k.vertices && k2.edges == k.edges && k2.faces == k.faces && k2.boundary_loops == k.boundary_loops));
+        CHECK(w.vertex_count() == k.vertices);
+        const IndexedMesh fs2 = w.face_set();
+        for (int32_t f = 0; f < fs.face_count(); ++f) {
+            if (map.faces[f] == kNone) {
+                CHECK(fs.face_size(f) == 0);
+                continue;
+            }
+            const int32_t g = map.faces[f];
+            REQUIRE(fs2.face_size(g) == fs.face_size(f));
+            for (int32_t i = 0; i < fs.face_size(f); ++i) CHECK(fs2.corner(g, i) == map.vertices[fs.corner(f, i)]);
+        }
+        require_rebuild_agrees(w);
+    }
+    for (int op = 0; op < kOps; ++op) {
+        INFO(kOpNames[op] << " accepted " << accepted[op] << " refused " << refused[op]);
+        CHECK(accepted[op] >= 20);
+        CHECK(refused[op] >= 5);
+    }
+}
+
+TEST_CASE("the other representations follow an edited mesh with gaps, numbered as the winged edge", "[mesh][euler]") {
+    WingedEdgeMesh w = lecture();
+    w.collapse_edge(Edge(label("e4")), 0.5); // gaps: v4, e4, e5, F2
+    RepresentationCache cache;
+    const Representations& r = cache.of(w);
+    // F2 is a gap: no corners in the vertex and face tables; F3 keeps its number.
+    CHECK(r.vertex_face_tables.face_offsets == std::vector<int32_t>{0, 3, 3, 6});
+    CHECK(r.vertex_face_tables.face_vertices == std::vector<int32_t>{0, 1, 2, 1, 4, 2});
+    // the edge list: removed e4, e5 have no vertices and no faces
+    for (int32_t e : {3, 4})
+        for (int k = 0; k < 4; ++k) CHECK(r.edge_list.edges[4 * e + k] == kNone);
+    // v4 (a gap) has no edges in the adjacency lists; v3 has e1, e3, e7
+    const AdjacencyLists& a = r.adjacency_lists;
+    CHECK(a.vertex_offsets[4] - a.vertex_offsets[3] == 0);
+    std::vector<int32_t> at_v3(a.vertex_edges.begin() + a.vertex_offsets[2], a.vertex_edges.begin() + a.vertex_offsets[3]);
+    CHECK(at_v3 == std::vector<int32_t>{0, 2, 6});
+    const MeshCounts k = w.counts();
+    CHECK((k.vertices == 4 && k.edges == 5 && k.faces == 2 && k.boundary_loops == 1 && k.isolated_vertices == 0));
+}
