@@ -58,6 +58,10 @@ test('a student splits e3 with the pointer, steps through the assignments, undoe
   assert.equal(await page.isEnabled('button[data-op="split-edge"]'), true);
   assert.equal(await page.isVisible('button[data-op="poke-face"]'), false);
   await page.click('button[data-op="split-edge"]');
+  // The message line says what was done, and nothing else (it once printed "null" after it).
+  await page.waitForFunction(() => window.wingspline.message().startsWith('Done: split e3'));
+  const line = await page.$eval('#message', (el) => [...el.childNodes].filter((n) => !(n instanceof HTMLButtonElement)).map((n) => n.textContent).join(''));
+  assert.equal(line, await page.evaluate(() => window.wingspline.message()));
   await page.waitForFunction(() => document.querySelectorAll('#we-edge-table tbody tr[data-row]').length === 8);
   const rows = await tableCells(page, 'we-edge-table');
   for (const [label, expected] of Object.entries(SPLIT_E3)) assert.deepEqual(rowOf(rows, label), expected, `row ${label}`);
@@ -82,7 +86,12 @@ test('a student splits e3 with the pointer, steps through the assignments, undoe
   await page.click('#edit-next');
   await page.waitForFunction(() => document.querySelector('#edit-step')?.textContent.startsWith('1 of'));
   assert.equal(await page.$$eval('#edit-steps li.is-current', (li) => li.length), 1);
-  assert.equal(await page.$$eval('#we-vertex-table td.is-read, #we-edge-table td.is-read, #we-face-table td.is-read', (c) => c.length), 1, 'one cell is being written');
+  // The first assignment of the split: the new vertex v6 stores its edge e8 (the edge
+  // column of the vertex table, row v6): that one cell is marked, and the step list says so.
+  const marked = await page.$$eval('#we-vertex-table td.is-read, #we-edge-table td.is-read, #we-face-table td.is-read',
+    (cells) => cells.map((c) => [c.closest('table').id, c.parentElement.children[0].textContent.trim(), [...c.parentElement.children].indexOf(c)]));
+  assert.deepEqual(marked, [['we-vertex-table', 'v6', 4]], 'one cell is being written');
+  assert.match(await page.textContent('#edit-steps li.is-current'), /vertex table, v6 · edge: — → e8/);
   await page.click('#edit-end');
   await page.waitForFunction((n) => document.querySelector('#edit-step')?.textContent === `${n} of ${n}`, total);
   assert.deepEqual(rowOf(await tableCells(page, 'we-edge-table'), 'e3'), SPLIT_E3.e3);

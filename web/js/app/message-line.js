@@ -2,7 +2,7 @@
 // What the page says to the person: the message line under the toolbar (info, warnings,
 // errors, one offered action) and the live region that announces handle positions and
 // status changes to screen readers.
-import { h } from './dom.js';
+import { h, setChildren } from './dom.js';
 
 // One line of at most this many characters: a long or multi-line message (a file name, a
 // lesson's error text) never pushes the page down.
@@ -31,7 +31,7 @@ export function createMessageLine(el) {
     el.setAttribute('role', kind === 'error' ? 'alert' : 'status');
     const close = h('button', { type: 'button', class: 'message-close', 'aria-label': 'Dismiss message', onclick: clear }, '×');
     const offer = action && h('button', { type: 'button', class: 'message-action tool', 'data-message-action': action.id ?? 'action', onclick: () => { clear(); action.run(); } }, action.label);
-    el.replaceChildren(h('span', { class: 'message-text' }, oneLine(text)), offer, close);
+    setChildren(el, h('span', { class: 'message-text' }, oneLine(text)), offer, close); // offer may be null: no "null" text
     el.hidden = false;
     if (!sticky) timer = setTimeout(clear, 4000);
   }

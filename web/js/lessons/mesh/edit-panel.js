@@ -86,11 +86,11 @@ export function createEditPanel(ctx, selection, { pick }) {
     euler,
     lastTitle,
     h('div', { class: 'walk-controls', role: 'group', 'aria-label': 'Edit player' },
-      tool('⏮', () => player.restart(), 'Before the edit', 'edit-restart'),
+      tool('|◀ Before', () => player.restart(), 'Before the edit: no assignment made yet', 'edit-restart'),
       tool('◀ Back', () => player.prev(), 'Previous assignment', 'edit-back'),
       playButton,
       tool('Step ▶', () => player.next(), 'Next assignment', 'edit-next'),
-      tool('⏭', () => player.end(), 'After the edit', 'edit-end'),
+      tool('After ▶|', () => player.end(), 'After the edit: every assignment made', 'edit-end'),
       stepLabel),
     stepList,
     costs);

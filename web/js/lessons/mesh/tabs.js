@@ -229,7 +229,9 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       const compared = [];
       if (selection.hover?.kind === kind) rows['is-hovered'].push(selection.hover.index);
       if (selection.pick?.kind === kind) rows['is-picked'].push(selection.pick.index);
-      if (frame && tab === 'winged') {
+      // While the edit player is inside an edit, its cell is the one marked, not the walk's.
+      const inEdit = model.lastOperation && model.editStep < visibleSteps(model.lastOperation).length;
+      if (frame && tab === 'winged' && !inEdit) {
         const walkTable = frame.table === 'edge' ? 'wingedEdge' : frame.table === 'vertex' ? 'wingedVertex' : 'wingedFace';
         if (walkTable === name) {
           rows['is-highlighted'].push(frame.row);
