@@ -72,8 +72,10 @@ export function wingedLatex(model) {
   return ['% Winged-edge tables (lecture 000 layout), written by Wingspline', ...wingedTables(model).flatMap(latexTable)].join('\n');
 }
 
+// The mesh as it is now: the core writes it (an edited mesh's gaps are left out and the
+// live elements numbered in order, as compact() would number them).
 function meshText(model, ctx, format) {
-  return ctx.api.formatMesh({ positions: model.positions, faces: model.faces }, { format });
+  return model.mesh.format({ format });
 }
 
 export const meshExports = [

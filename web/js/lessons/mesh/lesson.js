@@ -155,7 +155,11 @@ function compute(view, state, ctx) {
   const E = we.edges.length / 8;
   const walkKind = state.walk;
   const walkElement = walkKind === 'vertex' ? Math.min(state.vertex, V - 1) : Math.min(state.face, F - 1);
-  const frames = walkElement >= 0 ? stepsOf(derived, entry, walkKind, walkElement) : [];
+  // 1 where a removed element left its number (drawing and picking skip it); null: no gaps.
+  const vertexGap = gaps ? marks(V, derived.gaps.vertices) : null;
+  const edgeGap = gaps ? marks(E, derived.gaps.edges) : null;
+  const removed = walkKind === 'vertex' ? vertexGap?.[walkElement] : faces[walkElement]?.length === 0;
+  const frames = walkElement >= 0 && !removed ? stepsOf(derived, entry, walkKind, walkElement) : [];
   const frame = frames[Math.min(state.step, frames.length - 1)] ?? null;
   const R = viewRotation(state);
   const viewKey = `${keys.version}:${state.mode3d}:${R.join(',')}`;
@@ -171,7 +175,7 @@ function compute(view, state, ctx) {
   const sideKey = `${viewKey}:${walkKind}:${walkElement}`;
   if (derived.sideKey !== sideKey) {
     derived.sideKey = sideKey;
-    derived.fromBehind = state.mode3d && walkElement >= 0
+    derived.fromBehind = state.mode3d && walkElement >= 0 && !removed
       && facesAway(R, walkKind === 'vertex' ? entry.mesh.vertexNormal(walkElement) : faceNormal(derived, entry.mesh, walkElement));
   }
   return {
@@ -192,9 +196,8 @@ function compute(view, state, ctx) {
     editCount: state.ops.filter((o) => o.op !== 'move-vertex').length,
     gaps,
     gapLists: derived.gaps,
-    // 1 where a removed element left its number (drawing and picking skip it); null: no gaps.
-    vertexGap: gaps ? marks(V, derived.gaps.vertices) : null,
-    edgeGap: gaps ? marks(E, derived.gaps.edges) : null,
+    vertexGap,
+    edgeGap,
     V, E, F,
     counts: derived.counts,
     is3dMesh: derived.zExtent > 0,

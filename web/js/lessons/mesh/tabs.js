@@ -240,6 +240,9 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
         }
       }
       if (tab === 'winged') markEdit(name, kind, rows, read);
+      // A number a removed element left (until compact): its row stays, struck through.
+      const gapList = model.gapLists?.[`${kind === 'vertex' ? 'vertices' : kind === 'edge' ? 'edges' : 'faces'}`];
+      if (gapList?.length) rows['is-gap'] = Array.from(gapList);
       tables[name].mark({ rows, read, compared });
       if (reveal && selection.pick?.kind === kind) tables[name].reveal(selection.pick.index);
       else if (frame && tab === 'winged' && rows['is-highlighted'].length) tables[name].reveal(frame.row);
