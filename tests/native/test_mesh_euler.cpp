@@ -9,6 +9,7 @@
 
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/representations.h"
+#include "wingspline/mesh/view_geometry.h"
 #include "wingspline/mesh/winged_edge.h"
 
 #include <algorithm>
@@ -545,4 +546,13 @@ TEST_CASE("the other representations follow an edited mesh with gaps, numbered a
     CHECK(at_v3 == std::vector<int32_t>{0, 2, 6});
     const MeshCounts k = w.counts();
     CHECK((k.vertices == 4 && k.edges == 5 && k.faces == 2 && k.boundary_loops == 1 && k.isolated_vertices == 0));
+}
+
+TEST_CASE("the bounding box leaves out a removed vertex", "[mesh][euler]") {
+    WingedEdgeMesh w = lecture();
+    w.collapse_edge(Edge(label("e7")), 0.0); // v5 = (2, -1), the only vertex below y = 0, merges into v4
+    REQUIRE(w.is_deleted(Vertex(4)));
+    const BoundingBox box = bounding_box(w);
+    CHECK(box.min == glm::dvec3(0, 0, 0));
+    CHECK(box.max == glm::dvec3(2, 2, 0));
 }
