@@ -9,10 +9,13 @@
 
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/representations.h"
+#include "wingspline/mesh/view_geometry.h"
 #include "wingspline/mesh/winged_edge.h"
 
 #include <algorithm>
 #include <cstring>
+#include <map>
+#include <set>
 #include <random>
 #include <sstream>
 #include <string>
@@ -459,6 +462,7 @@ TEST_CASE("refusals on the lecture mesh and the tetrahedron say why and change n
 
 TEST_CASE("random seeded operation sequences: valid, Euler, rebuild, refusals, record, unrecorded twin", "[mesh][euler]") {
     int accepted[kOps] = {}, refused[kOps] = {};
+    std::map<std::string, std::set<int>> accepted_on; // fixture -> operations accepted there
     for (uint32_t seed = 1; seed <= 1200; ++seed) { // 1200 sequences of 40 operations
         std::vector<Fixture> all = fixtures();
         Fixture& fx = all[seed % all.size()];
@@ -484,6 +488,7 @@ TEST_CASE("random seeded operation sequences: valid, Euler, rebuild, refusals, r
                 continue;
             }
             ++accepted[call.op];
+            accepted_on[fx.name].insert(call.op);
             const ChangeRecord c = run(w, call);
             REQUIRE(run_unrecorded(twin, call));
             REQUIRE(snapshot(twin) == snapshot(w));
@@ -520,6 +525,14 @@ TEST_CASE("random seeded operation sequences: valid, Euler, rebuild, refusals, r
         }
         require_rebuild_agrees(w);
     }
+    // every operation ran on closed and open meshes of triangles, and (but the flip, which
+    // needs two triangles) on closed and open polygon meshes
+    for (const char* name : {"sphere", "tetrahedron", "grid", "lecture", "fan", "cube", "hexagons"})
+        for (int op = 0; op < kOps; ++op) {
+            if (op == FlipEdge && (std::string(name) == "cube" || std::string(name) == "hexagons")) continue;
+            INFO(name << " " << kOpNames[op]);
+            CHECK(accepted_on[name].count(op) == 1);
+        }
     for (int op = 0; op < kOps; ++op) {
         INFO(kOpNames[op] << " accepted " << accepted[op] << " refused " << refused[op]);
         CHECK(accepted[op] >= 20);
@@ -545,4 +558,13 @@ TEST_CASE("the other representations follow an edited mesh with gaps, numbered a
     CHECK(at_v3 == std::vector<int32_t>{0, 2, 6});
     const MeshCounts k = w.counts();
     CHECK((k.vertices == 4 && k.edges == 5 && k.faces == 2 && k.boundary_loops == 1 && k.isolated_vertices == 0));
+}
+
+TEST_CASE("the bounding box leaves out a removed vertex", "[mesh][euler]") {
+    WingedEdgeMesh w = lecture();
+    w.collapse_edge(Edge(label("e7")), 0.0); // v5 = (2, -1), the only vertex below y = 0, merges into v4
+    REQUIRE(w.is_deleted(Vertex(4)));
+    const BoundingBox box = bounding_box(w);
+    CHECK(box.min == glm::dvec3(0, 0, 0));
+    CHECK(box.max == glm::dvec3(2, 2, 0));
 }

@@ -23,12 +23,19 @@
 
 namespace wingspline::mesh {
 
-namespace {
-
 struct Half {
     int32_t e = kNone;
     bool left = true;
 };
+
+// The sides of a face at its corners a and b (the split-face check finds them walking the
+// face once, and the operation uses them: one walk, not two).
+struct FaceSides {
+    int32_t a = kNone, b = kNone;
+    Half into_a, out_of_a, into_b, out_of_b;
+};
+
+namespace {
 
 // Records nothing: every call is empty and inlined away (the benchmark path).
 struct NoRecorder {
@@ -109,13 +116,18 @@ struct EulerAccess {
     static int32_t tail(const WingedEdgeMesh& m, Half h) { return h.left ? m.edges_[h.e].start : m.edges_[h.e].end; }
     static int32_t head(const WingedEdgeMesh& m, Half h) { return h.left ? m.edges_[h.e].end : m.edges_[h.e].start; }
     static Half side_of(const WingedEdgeMesh& m, int32_t e, int32_t f) { return {e, m.edges_[e].left == f}; }
+    // (A kept branch rather than a select, as next_ccw: the next load need not wait.)
     static Half next(const WingedEdgeMesh& m, Half h) {
         const EdgeRecord& r = m.edges_[h.e];
-        return side_of(m, h.left ? r.end_left : r.start_right, face(m, h));
+        if (h.left) return side_of(m, r.end_left, r.left);
+        WINGSPLINE_KEEP_BRANCH();
+        return side_of(m, r.start_right, r.right);
     }
     static Half prev(const WingedEdgeMesh& m, Half h) {
         const EdgeRecord& r = m.edges_[h.e];
-        return side_of(m, h.left ? r.start_left : r.end_right, face(m, h));
+        if (h.left) return side_of(m, r.start_left, r.left);
+        WINGSPLINE_KEEP_BRANCH();
+        return side_of(m, r.end_right, r.right);
     }
     static Half twin(Half h) { return {h.e, !h.left}; }
     static int32_t face_size(const WingedEdgeMesh& m, int32_t f) {
@@ -163,8 +175,15 @@ struct EulerAccess {
         if (first == kNone) return kNone;
         int32_t e = first, n = 0;
         do {
-            if (m.other_vertex(e, a) == b) return e;
-            e = m.next_ccw(e, a);
+            const EdgeRecord& r = m.edges_[e];
+            if (r.start == a) {
+                if (r.end == b) return e;
+                e = r.start_left;
+            } else {
+                WINGSPLINE_KEEP_BRANCH();
+                if (r.start == b) return e;
+                e = r.end_right;
+            }
         } while (e != first && ++n <= m.edge_count());
         return kNone;
     }
@@ -189,17 +208,35 @@ struct EulerAccess {
         if (!(t > 0.0 && t < 1.0)) return refuse("invalid-parameter", e.idx);
         return {};
     }
-    static Verdict split_face(const WingedEdgeMesh& m, Face f, Vertex a, Vertex b) {
+    static Verdict split_face(const WingedEdgeMesh& m, Face f, Vertex a, Vertex b, FaceSides* sides = nullptr) {
         if (const char* c = element(m, f, m.face_count())) return refuse(c, f.idx, kFaceKind);
         if (const char* c = element(m, a, m.vertex_count())) return refuse(c, a.idx, kVertexKind);
         if (const char* c = element(m, b, m.vertex_count())) return refuse(c, b.idx, kVertexKind);
         if (a == b) return refuse("same-vertex", a.idx);
-        if (!face_has_corner(m, f.idx, a.idx)) return refuse("not-a-corner", a.idx, f.idx);
-        if (!face_has_corner(m, f.idx, b.idx)) return refuse("not-a-corner", b.idx, f.idx);
+        // One walk along f (the lecture's rule, next_in_face) finds the sides at a and b.
+        FaceSides found;
+        const int32_t first = m.face_edge_[f.idx];
+        int32_t x = first, n = 0;
+        do {
+            const EdgeRecord& r = m.edges_[x];
+            const bool left = r.left == f.idx;
+            const int32_t tail = left ? r.start : r.end, head = left ? r.end : r.start;
+            if (head == a.idx) found.into_a = {x, left};
+            if (tail == a.idx) found.out_of_a = {x, left};
+            if (head == b.idx) found.into_b = {x, left};
+            if (tail == b.idx) found.out_of_b = {x, left};
+            x = m.next_in_face(x, f.idx);
+        } while (x != first && ++n <= m.edge_count());
+        if (found.out_of_a.e == kNone) return refuse("not-a-corner", a.idx, f.idx);
+        if (found.out_of_b.e == kNone) return refuse("not-a-corner", b.idx, f.idx);
         const int32_t existing = edge_between(m, a.idx, b.idx);
         if (existing != kNone) {
             const EdgeRecord& r = m.edges_[existing];
             return refuse(r.left == f.idx || r.right == f.idx ? "adjacent-corners" : "edge-exists", a.idx, b.idx, existing, f.idx);
+        }
+        if (sides) {
+            *sides = found;
+            sides->a = a.idx, sides->b = b.idx;
         }
         return {};
     }
@@ -402,7 +439,9 @@ template <class Recorder> struct Editor {
 struct EulerRows {
     template <class R> static int32_t new_vertex(WingedEdgeMesh& m, const glm::dvec3& p, R& rec) {
         const int32_t v = m.vertex_count();
-        m.positions_.insert(m.positions_.end(), {p.x, p.y, p.z});
+        m.positions_.push_back(p.x);
+        m.positions_.push_back(p.y);
+        m.positions_.push_back(p.z);
         m.vertex_edge_.push_back(kNone);
         if (!m.vertex_deleted_.empty()) m.vertex_deleted_.push_back(0);
         rec.added(Vertex(v));
@@ -502,19 +541,11 @@ template <class R> void WingedEdgeMesh::split_edge_impl(Edge e_, double t, R& re
 // ------------------------------------------------------------------ split face
 // A new edge n = a -> b inside f. Its left side closes f's corners b ... a, its right side
 // the new face g's corners a ... b.
-template <class R> void WingedEdgeMesh::split_face_impl(Face f_, Vertex a_, Vertex b_, R& rec) {
+template <class R> void WingedEdgeMesh::split_face_impl(Face f_, const FaceSides& sides, R& rec) {
     auto w = editor_of(*this, edges_, vertex_edge_, face_edge_, rec);
-    const int32_t f = f_.idx, a = a_.idx, b = b_.idx;
-    Half into_a, out_of_a, into_b, out_of_b;
-    const Half first = A::side_of(*this, face_edge_[f], f);
-    Half h = first;
-    do {
-        if (A::head(*this, h) == a) into_a = h;
-        if (A::tail(*this, h) == a) out_of_a = h;
-        if (A::head(*this, h) == b) into_b = h;
-        if (A::tail(*this, h) == b) out_of_b = h;
-        h = A::next(*this, h);
-    } while (h.e != first.e || h.left != first.left);
+    const int32_t f = f_.idx, a = sides.a, b = sides.b;
+    // the sides of f at a and b, as the check found them
+    const Half into_a = sides.into_a, out_of_a = sides.out_of_a, into_b = sides.into_b, out_of_b = sides.out_of_b;
     const int32_t n = Rows::new_edge(*this, rec);
     const int32_t g = Rows::new_face(*this, rec);
     w.start(n, a);
@@ -532,13 +563,13 @@ template <class R> void WingedEdgeMesh::split_face_impl(Face f_, Vertex a_, Vert
     w.set_next(into_b, n);
     // the sides from a round to b now belong to g
     bool face_edge_moved = false;
-    for (Half x = out_of_a;;) {
-        const bool last = x.e == into_b.e && x.left == into_b.left;
-        const Half following = last ? x : A::next(*this, x);
-        w.set_face(x, g);
-        face_edge_moved |= face_edge_[f] == x.e;
+    for (Half h = out_of_a;;) {
+        const bool last = h.e == into_b.e && h.left == into_b.left;
+        const Half following = last ? h : A::next(*this, h);
+        w.set_face(h, g);
+        face_edge_moved |= face_edge_[f] == h.e;
         if (last) break;
-        x = following;
+        h = following;
     }
     w.set_face_edge(g, n);
     if (face_edge_moved) w.set_face_edge(f, n);
@@ -787,11 +818,13 @@ CheckResult WingedEdgeMesh::check_split_face(Face f, Vertex a, Vertex b) const {
     return A::words(*this, "split-face", A::split_face(*this, f, a, b));
 }
 ChangeRecord WingedEdgeMesh::split_face(Face f, Vertex a, Vertex b) {
-    require_ok(check_split_face(f, a, b));
-    return run_recorded("split-face", version_, [&](Recording& r) { split_face_impl(f, a, b, r); });
+    FaceSides sides;
+    require_ok(A::words(*this, "split-face", A::split_face(*this, f, a, b, &sides)));
+    return run_recorded("split-face", version_, [&](Recording& r) { split_face_impl(f, sides, r); });
 }
 bool WingedEdgeMesh::split_face_unrecorded(Face f, Vertex a, Vertex b) {
-    return run_unrecorded(A::split_face(*this, f, a, b), version_, [&](NoRecorder& r) { split_face_impl(f, a, b, r); });
+    FaceSides sides;
+    return run_unrecorded(A::split_face(*this, f, a, b, &sides), version_, [&](NoRecorder& r) { split_face_impl(f, sides, r); });
 }
 
 CheckResult WingedEdgeMesh::check_join_faces(Edge e) const { return A::words(*this, "join", A::join_faces(*this, e)); }

@@ -358,7 +358,7 @@ private:
     std::vector<char> vertex_deleted_, edge_deleted_, face_deleted_; // see is_deleted()
 
     template <class Recorder> void split_edge_impl(Edge e, double t, Recorder& rec);
-    template <class Recorder> void split_face_impl(Face f, Vertex a, Vertex b, Recorder& rec);
+    template <class Recorder> void split_face_impl(Face f, const struct FaceSides& sides, Recorder& rec);
     template <class Recorder> void join_faces_impl(Edge e, Recorder& rec);
     template <class Recorder> void flip_edge_impl(Edge e, Recorder& rec);
     template <class Recorder> void collapse_edge_impl(Edge e, double t, Recorder& rec);
