@@ -3,8 +3,7 @@
 // read; nothing here draws. One core call per curve and purpose (batch API): the samples,
 // the blending values at the same parameters, the derivatives at u, the segment matrices.
 import { curveSpec, familyDegree, isSpline, usesKnots } from './families.js';
-import { convexHull } from './hull.js';
-import { linspace, pairs } from '../../app/arrays.js';
+import { linspace, pairs, flat } from '../../app/arrays.js';
 
 export const SAMPLES_PER_CURVE = 1000;
 const COMB_SAMPLES = 120;
@@ -15,6 +14,10 @@ const PLOT_PARAMS = 250;
 // The parameters are uniform in the parameter (linspace), as the lecture samples a curve
 // (the sample-points overlay shows how uneven that is along the curve).
 const uniformParams = linspace;
+
+// The convex hull of control points (the hull overlay, lectures 001 and 003: a Bezier or
+// B-spline curve lies inside it): the core's hull, counter-clockwise, as [x, y] pairs.
+const convexHull = (api, points) => Array.from(api.convexHull(flat(points)).indices, (i) => points[i]);
 
 // The lesson's model cache (kept in its view, one per page): the parts that depend only on
 // the curve (not on u, the overlays or the construction step), so playing u or stepping a
@@ -84,8 +87,8 @@ export function computeCurveModel(api, state, cache) {
     d2: [pd[4], pd[5]],
     segment,
     segmentIndex,
-    hull: convexHull(state.points),
-    segmentHull: convexHull(segmentPointIndices(segment, state).map((i) => state.points[i])),
+    hull: convexHull(api, state.points),
+    segmentHull: convexHull(api, segmentPointIndices(segment, state).map((i) => state.points[i])),
     knots: null,
     comb: null,
     construction: null,
