@@ -5,6 +5,7 @@
 #include "boundary.h"
 #include "curve_spec.h"
 
+#include "wingspline/curves/basis_matrix.h"
 #include "wingspline/curves/comparison.h"
 
 #include <string>
@@ -94,6 +95,37 @@ val knot_refinement_check_value(const val& spec, int samples) {
     });
 }
 
+val patch_corner_check_value(const std::string& kind, const val& net) {
+    return guarded([&] {
+        const PatchCornerCheck c = patch_corner_check(parse_basis_kind(kind), to_doubles(net));
+        val r = val::object();
+        val corners = val::array();
+        for (int k = 0; k < 4; ++k) {
+            val one = val::object();
+            one.set("entry", c.entry[k]);
+            one.set("distance", c.distance[k]);
+            one.set("interpolated", c.interpolated[k]);
+            corners.set(k, one);
+        }
+        r.set("corners", corners);
+        r.set("tolerance", c.tolerance);
+        return r;
+    });
+}
+
+val patch_join_check_value(const std::string& kind, const val& a, const val& b, int samples) {
+    return guarded([&] {
+        const PatchJoinCheck j = patch_join_check(parse_basis_kind(kind), to_doubles(a), to_doubles(b), samples);
+        val r = val::object();
+        r.set("positionGap", j.position_gap);
+        r.set("duGap", j.du_gap);
+        r.set("c0", j.c0);
+        r.set("c1", j.c1);
+        r.set("tolerance", j.tolerance);
+        return r;
+    });
+}
+
 } // namespace
 } // namespace wingspline::bindings
 
@@ -106,4 +138,6 @@ EMSCRIPTEN_BINDINGS(wingspline_comparison) {
     emscripten::function("pointCurveDistances", &point_curve_distances_value);
     emscripten::function("splitCheck", &split_check_value);
     emscripten::function("knotRefinementCheck", &knot_refinement_check_value);
+    emscripten::function("patchCornerCheck", &patch_corner_check_value);
+    emscripten::function("patchJoinCheck", &patch_join_check_value);
 }

@@ -358,3 +358,73 @@ TEST_CASE("split check: every family's halves trace the original, at any scale; 
     expect_error([&] { split_check({bezier({0, 0, 1, 1}), h}); }, "invalid-argument", "segment 1");
     expect_error([] { split_check({}); }, "invalid-argument", "at least one segment");
 }
+
+namespace {
+// a random 4x4 net of 3D entries, scaled by s and moved by t
+std::vector<double> random_net(std::mt19937_64& rng, double s, double t) {
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<double> net(48);
+    for (double& x : net) x = s * u(rng) + t;
+    return net;
+}
+// B's row r := A's row q (4 entries of 3 numbers)
+void copy_row(const std::vector<double>& a, int q, std::vector<double>& b, int r) {
+    std::copy(a.begin() + 12 * q, a.begin() + 12 * (q + 1), b.begin() + 12 * r);
+}
+} // namespace
+
+TEST_CASE("patch corners: every corner is its net entry (lecture 002), at any scale and far from the origin",
+          "[curves][comparison][patch]") {
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const double s = std::pow(10.0, -6 + 12 * u(rng));
+        const double t = s * std::pow(10.0, 9 * u(rng)); // up to 1e9 patch sizes away
+        for (BasisKind kind : {BasisKind::Bezier, BasisKind::Hermite}) {
+            const PatchCornerCheck c = patch_corner_check(kind, random_net(rng, s, t));
+            INFO("trial " << trial << " scale " << s << " offset " << t);
+            for (int k = 0; k < 4; ++k) CHECK(c.interpolated[k]);
+        }
+    }
+    const std::vector<double> net(48, 1.0);
+    CHECK(patch_corner_check(BasisKind::Bezier, net).entry == std::array<int32_t, 4>{0, 3, 12, 15});
+    CHECK(patch_corner_check(BasisKind::Hermite, net).entry == std::array<int32_t, 4>{0, 1, 4, 5});
+    expect_error([] { patch_corner_check(BasisKind::Bezier, std::vector<double>(45, 0.0)); }, "wrong-point-count", "");
+}
+
+TEST_CASE("patch join: shared boundary rows give C0, matched legs C1; a shift d of B's boundary row is a gap |d| and 3|d|",
+          "[curves][comparison][patch]") {
+    std::mt19937_64 rng(37);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int trial = 0; trial < 1000; ++trial) {
+        const double s = std::pow(10.0, 6 * u(rng));
+        const double t = s * std::pow(10.0, 6 * (0.5 + 0.5 * u(rng))); // up to 1e6 patch sizes away
+        const std::vector<double> a = random_net(rng, s, t);
+        // Bezier: C0 shares row 3 of A as row 0 of B; C1 also sets q1j = 2 p3j - p2j.
+        std::vector<double> b = random_net(rng, s, t);
+        copy_row(a, 3, b, 0);
+        PatchJoinCheck j = patch_join_check(BasisKind::Bezier, a, b, 9);
+        INFO("trial " << trial << " scale " << s << " offset " << t);
+        CHECK(j.c0);
+        CHECK_FALSE(j.c1);
+        for (int k = 0; k < 12; ++k) b[12 + k] = 2 * a[36 + k] - a[24 + k];
+        j = patch_join_check(BasisKind::Bezier, a, b, 9);
+        CHECK(j.c1);
+        // shift B's row 0 by d: the edge moves by d (partition of unity), p_u = 3 (q1 - q0) by -3d
+        const double d[3] = {s * 1e-6 * (1.5 + 0.5 * u(rng)), s * 1e-6 * u(rng), s * 1e-6 * u(rng)}; // a gap of 1e-6 sizes
+        for (int e = 0; e < 4; ++e) for (int k = 0; k < 3; ++k) b[3 * e + k] += d[k];
+        j = patch_join_check(BasisKind::Bezier, a, b, 9);
+        const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        CHECK_FALSE(j.c0);
+        // rounding of coordinates up to 1e6 s: about 1e-10 s, here 1e-4 of the gap
+        CHECK(j.position_gap == Approx(len).epsilon(1e-3));
+        CHECK(j.du_gap == Approx(3 * len).epsilon(1e-3));
+        // Hermite: rows [p(0,.), p(1,.), p_u(0,.), p_u(1,.)]; C0 shares p(1,.) as p(0,.), C1 also p_u
+        std::vector<double> hb = random_net(rng, s, t);
+        copy_row(a, 1, hb, 0);
+        CHECK(patch_join_check(BasisKind::Hermite, a, hb, 9).c0);
+        CHECK_FALSE(patch_join_check(BasisKind::Hermite, a, hb, 9).c1);
+        copy_row(a, 3, hb, 2);
+        CHECK(patch_join_check(BasisKind::Hermite, a, hb, 9).c1);
+    }
+}

@@ -182,3 +182,33 @@ test('splitCheck and knotRefinementCheck: split halves and refined curves trace 
   assert.equal(code(() => api.splitCheck([{ kind: 'nurbs', dim: 2, points: [0, 0, 1, 1], weights: [1, 2] }])), 'invalid-argument');
   assert.equal(code(() => api.splitCheck([])), 'invalid-argument');
 });
+
+test('patchCornerCheck and patchJoinCheck: corners are their net entries, shared rows join C0, matched legs C1, a shift d is a gap |d|', () => {
+  const rnd = random(33);
+  for (let trial = 0; trial < 300; trial += 1) {
+    const s = 10 ** (6 * (2 * rnd() - 1));
+    const t = s * 10 ** (6 * rnd());
+    const net = () => Array.from({ length: 48 }, () => s * (2 * rnd() - 1) + t);
+    const a = net();
+    for (const kind of ['bezier', 'hermite']) {
+      const c = api.patchCornerCheck({ kind, points: a });
+      assert.deepEqual(c.corners.map((x) => x.entry), kind === 'bezier' ? [0, 3, 12, 15] : [0, 1, 4, 5]);
+      assert.ok(c.corners.every((x) => x.interpolated), `trial ${trial}: ${kind} corners at scale ${s}, offset ${t}`);
+    }
+    const b = net();
+    for (let k = 0; k < 12; k += 1) b[k] = a[36 + k]; // q0j = p3j
+    let j = api.patchJoinCheck({ kind: 'bezier', a, b });
+    assert.deepEqual([j.c0, j.c1], [true, false], `trial ${trial}`);
+    for (let k = 0; k < 12; k += 1) b[12 + k] = 2 * a[36 + k] - a[24 + k]; // q1j = 2 p3j - p2j
+    j = api.patchJoinCheck({ kind: 'bezier', a, b });
+    assert.deepEqual([j.c0, j.c1], [true, true], `trial ${trial}`);
+    const d = [s * 1e-6 * (1.5 + 0.5 * rnd()), 0, -s * 1e-6];
+    for (let e = 0; e < 4; e += 1) for (let k = 0; k < 3; k += 1) b[3 * e + k] += d[k];
+    j = api.patchJoinCheck({ kind: 'bezier', a, b });
+    const len = Math.hypot(...d);
+    assert.equal(j.c0, false);
+    assert.ok(Math.abs(j.positionGap - len) <= 1e-3 * len && Math.abs(j.duGap - 3 * len) <= 3e-3 * len, `trial ${trial}`);
+  }
+  assert.equal(code(() => api.patchCornerCheck({ kind: 'bspline', points: new Array(48).fill(0) })), 'unknown-basis');
+  assert.equal(code(() => api.patchJoinCheck({ kind: 'bezier', a: new Array(48).fill(0), b: new Array(45).fill(0) })), 'wrong-point-count');
+});

@@ -3,6 +3,7 @@
 #include "wingspline/curves/basis_matrix.h"
 #include "wingspline/curves/bezier.h"
 #include "wingspline/curves/bspline_ops.h"
+#include "wingspline/curves/patch.h"
 #include "wingspline/curves/segment.h"
 #include "wingspline/error.h"
 
@@ -303,6 +304,48 @@ KnotRefinementCheck knot_refinement_check(const Curve& curve, int samples) {
     }
     r.points_after = control_point_count(refined);
     r.error = max_distance(evaluate_curve(refined, params), evaluate_curve(curve, params), curve.dim).distance;
+    return r;
+}
+
+// ---------------------------------------------------------------- bicubic patches
+namespace {
+// relative * extent + the evaluation's rounding (kPatchRounding times the largest |coordinate|)
+double surface_tolerance(const std::vector<double>& positions, double relative) {
+    std::vector<double> lo(3, std::numeric_limits<double>::infinity()), hi(3, -std::numeric_limits<double>::infinity());
+    grow_box(positions, 3, lo, hi);
+    double magnitude = 0;
+    for (double x : positions) magnitude = std::max(magnitude, std::abs(x));
+    return relative * box_extent(lo, hi) + kPatchRounding * magnitude;
+}
+std::vector<double> row_of(const std::vector<double>& values, int nv, int i) {
+    return std::vector<double>(values.begin() + 3 * nv * i, values.begin() + 3 * nv * (i + 1));
+}
+} // namespace
+
+PatchCornerCheck patch_corner_check(BasisKind kind, const std::vector<double>& net) {
+    const PatchSamples s = sample_patch(kind, net, 2, 2); // checks kind, size and values
+    PatchCornerCheck r;
+    r.entry = kind == BasisKind::Bezier ? std::array<int32_t, 4>{0, 3, 12, 15} : std::array<int32_t, 4>{0, 1, 4, 5};
+    r.tolerance = surface_tolerance(s.positions, kCornerTolerance);
+    for (int c = 0; c < 4; ++c) {
+        r.distance[c] = distance(&s.positions[3 * c], &net[3 * r.entry[c]], 3);
+        r.interpolated[c] = r.distance[c] <= r.tolerance;
+    }
+    return r;
+}
+
+PatchJoinCheck patch_join_check(BasisKind kind, const std::vector<double>& a, const std::vector<double>& b, int samples) {
+    require_samples(samples);
+    const PatchSamples A = sample_patch(kind, a, samples, samples);
+    const PatchSamples B = sample_patch(kind, b, samples, samples);
+    PatchJoinCheck r;
+    std::vector<double> both = A.positions;
+    both.insert(both.end(), B.positions.begin(), B.positions.end());
+    r.tolerance = surface_tolerance(both, kJoinTolerance);
+    r.position_gap = max_distance(row_of(A.positions, samples, samples - 1), row_of(B.positions, samples, 0), 3).distance;
+    r.du_gap = max_distance(row_of(A.du, samples, samples - 1), row_of(B.du, samples, 0), 3).distance;
+    r.c0 = r.position_gap <= r.tolerance;
+    r.c1 = r.c0 && r.du_gap <= r.tolerance;
     return r;
 }
 

@@ -110,6 +110,11 @@ function sampleCount(n) {
   return wholeNumber(n, 'the number of samples', 2, 1_000_000);
 }
 
+function patchKind(kind) {
+  if (kind !== 'hermite' && kind !== 'bezier') fail('unknown-basis', `patch kind must be 'hermite' or 'bezier', not ${JSON.stringify(kind)?.slice(0, 40)}`);
+  return kind;
+}
+
 const PLANE_MAP_KINDS = ['affine', 'perspective'];
 // { kind, angle (degrees), scale, shear, tx, ty, px, py } with the identity's defaults.
 function planeMap(t) {
@@ -433,7 +438,7 @@ export function createCurvesApi(raw) {
     },
 
     samplePatch({ kind, points, nu = 16, nv = 16 } = {}) {
-      if (kind !== 'hermite' && kind !== 'bezier') fail('unknown-basis', `patch kind must be 'hermite' or 'bezier', not ${JSON.stringify(kind)?.slice(0, 40)}`);
+      patchKind(kind);
       wholeNumber(nu, 'nu', 2, 4096);
       wholeNumber(nv, 'nv', 2, 4096);
       const r = unwrap(raw.patchSample(kind, numbers(points, 'points'), nu, nv));
@@ -483,6 +488,19 @@ export function createCurvesApi(raw) {
     // One knot inserted in the middle of every span (Boehm): { error, inserted, pointsBefore, pointsAfter }.
     knotRefinementCheck(curve, samples = 101) {
       return pick(unwrap(raw.knotRefinementCheck(normalizeCurve(curve), sampleCount(samples))), ['error', 'inserted', 'pointsBefore', 'pointsAfter']);
+    },
+
+    // Bicubic patches (samplePatch's nets): the corners p(0,0), p(0,1), p(1,0), p(1,1) against
+    // the net entries holding them: { corners: [{ entry, distance, interpolated }], tolerance }.
+    patchCornerCheck({ kind, points } = {}) {
+      const r = unwrap(raw.patchCornerCheck(patchKind(kind), numbers(points, 'points')));
+      return { corners: Array.from(r.corners, (c) => ({ entry: c.entry, distance: c.distance, interpolated: c.interpolated })), tolerance: r.tolerance };
+    },
+    // Patch a's u = 1 edge against patch b's u = 0 edge at `samples` values of v:
+    // { positionGap, duGap, c0, c1, tolerance }.
+    patchJoinCheck({ kind, a, b, samples = 17 } = {}) {
+      return pick(unwrap(raw.patchJoinCheck(patchKind(kind), numbers(a, 'a'), numbers(b, 'b'), sampleCount(samples))),
+        ['positionGap', 'duGap', 'c0', 'c1', 'tolerance']);
     },
 
     // Affine map of flat points: matrix is (dim+1)x(dim+1) row-major homogeneous (last row

@@ -10,7 +10,10 @@
 //   kInterpolationTolerance  "the curve passes through P_i", relative to the extent
 //   kWeightTolerance         blending weights (unitless already)
 // where extent = the larger side of the axis-aligned bounding box of the points compared.
+#include "wingspline/curves/basis_matrix.h"
 #include "wingspline/curves/curve.h"
+
+#include <array>
 
 #include <cstdint>
 #include <string>
@@ -114,5 +117,35 @@ struct KnotRefinementCheck {
     int points_after = 0;
 };
 KnotRefinementCheck knot_refinement_check(const Curve& curve, int samples);
+
+// ---- bicubic patches (lecture 002, the surfaces lesson): corners and joins.
+// tolerance = k * extent + kPatchRounding * (largest |coordinate|) of the sampled surface
+// points: relative to the surface's size, plus the evaluation's rounding, which grows with
+// the coordinates (16 terms of 1 ulp each, with margin), so a corner or a shared boundary
+// 1e9 patch sizes from the origin is still recognised and a gap of 1e-6 sizes still seen.
+constexpr double kCornerTolerance = 1e-12;            // unitless, times the extent
+constexpr double kJoinTolerance = 1e-9;               // unitless, times the extent (positions and p_u, both lengths)
+constexpr double kPatchRounding = 64 * 2.220446049250313e-16; // 64 ulp, times the largest |coordinate|
+
+// The corners p(0,0), p(0,1), p(1,0), p(1,1) against the net entries holding them (Bezier:
+// p00 p03 p30 p33, entries 0 3 12 15; Hermite: the top-left block, entries 0 1 4 5).
+struct PatchCornerCheck {
+    std::array<int32_t, 4> entry{};
+    std::array<double, 4> distance{};
+    std::array<bool, 4> interpolated{};
+    double tolerance = 0; // world units
+};
+PatchCornerCheck patch_corner_check(BasisKind kind, const std::vector<double>& net);
+
+// Patch A's u = 1 edge against patch B's u = 0 edge, sampled at `samples` values of v:
+// the largest position gap and p_u gap; C0 / C1 when they are within tolerance.
+struct PatchJoinCheck {
+    double position_gap = 0;
+    double du_gap = 0;
+    bool c0 = false;
+    bool c1 = false;
+    double tolerance = 0; // world units
+};
+PatchJoinCheck patch_join_check(BasisKind kind, const std::vector<double>& a, const std::vector<double>& b, int samples);
 
 } // namespace wingspline::curves
