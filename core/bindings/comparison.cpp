@@ -126,6 +126,14 @@ val patch_join_check_value(const std::string& kind, const val& a, const val& b, 
     });
 }
 
+val catmull_rom_tangents_value(const val& points, int dim) {
+    return guarded([&] {
+        val r = val::object();
+        r.set("tangents", to_typed_array(catmull_rom_tangents(to_doubles(points), dim)));
+        return r;
+    });
+}
+
 } // namespace
 } // namespace wingspline::bindings
 
@@ -138,6 +146,7 @@ EMSCRIPTEN_BINDINGS(wingspline_comparison) {
     emscripten::function("pointCurveDistances", &point_curve_distances_value);
     emscripten::function("splitCheck", &split_check_value);
     emscripten::function("knotRefinementCheck", &knot_refinement_check_value);
+    emscripten::function("catmullRomTangents", &catmull_rom_tangents_value);
     emscripten::function("patchCornerCheck", &patch_corner_check_value);
     emscripten::function("patchJoinCheck", &patch_join_check_value);
 }

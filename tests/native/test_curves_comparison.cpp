@@ -428,3 +428,24 @@ TEST_CASE("patch join: shared boundary rows give C0, matched legs C1; a shift d 
         CHECK(patch_join_check(BasisKind::Hermite, a, hb, 9).c1);
     }
 }
+
+TEST_CASE("tangents from the points: central differences are exact for points on a parabola; chords at the ends",
+          "[curves][comparison][tangents]") {
+    std::mt19937_64 rng(41);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int trial = 0; trial < 1000; ++trial) {
+        // P_i = a + b i + c i^2: (P_i+1 - P_i-1)/2 = b + 2 c i = P'(i); P_1 - P_0 = b + c
+        const int n = 2 + trial % 9;
+        const double a[2] = {u(rng), u(rng)}, b[2] = {u(rng), u(rng)}, c[2] = {u(rng), u(rng)};
+        std::vector<double> p;
+        for (int i = 0; i < n; ++i) for (int k = 0; k < 2; ++k) p.push_back(a[k] + b[k] * i + c[k] * i * i);
+        const std::vector<double> t = catmull_rom_tangents(p, 2);
+        for (int k = 0; k < 2; ++k) {
+            CHECK(t[k] == Approx(b[k] + c[k]).margin(1e-13));
+            CHECK(t[2 * (n - 1) + k] == Approx(b[k] + c[k] * (2 * n - 3)).margin(1e-12));
+            for (int i = 1; i + 1 < n; ++i) CHECK(t[2 * i + k] == Approx(b[k] + 2 * c[k] * i).margin(1e-12));
+        }
+    }
+    expect_error([] { catmull_rom_tangents({1, 2}, 2); }, "too-few-points", "at least 2");
+    expect_error([] { catmull_rom_tangents({1, 2, NAN, 0}, 2); }, "non-finite-input", "point 1");
+}

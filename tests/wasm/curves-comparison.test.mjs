@@ -212,3 +212,11 @@ test('patchCornerCheck and patchJoinCheck: corners are their net entries, shared
   assert.equal(code(() => api.patchCornerCheck({ kind: 'bspline', points: new Array(48).fill(0) })), 'unknown-basis');
   assert.equal(code(() => api.patchJoinCheck({ kind: 'bezier', a: new Array(48).fill(0), b: new Array(45).fill(0) })), 'wrong-point-count');
 });
+
+test('catmullRomTangents: (P_i+1 - P_i-1)/2 is the exact derivative of points on a parabola, the chord at the ends', () => {
+  // P_i = (i^2, 3 - 2i): P'(i) = (2i, -2); P_1 - P_0 = (1, -2), P_4 - P_3 = (7, -2)
+  const p = [0, 3, 1, 1, 4, -1, 9, -3, 16, -5];
+  assert.deepEqual(Array.from(api.catmullRomTangents(p, 2)), [1, -2, 2, -2, 4, -2, 6, -2, 7, -2]);
+  assert.equal(code(() => api.catmullRomTangents([1, 2], 2)), 'too-few-points');
+  assert.equal(code(() => api.catmullRomTangents([1, 2, 3], 2)), 'invalid-points');
+});

@@ -307,6 +307,22 @@ KnotRefinementCheck knot_refinement_check(const Curve& curve, int samples) {
     return r;
 }
 
+std::vector<double> catmull_rom_tangents(const std::vector<double>& points, int dim) {
+    require(dim == 2 || dim == 3, "invalid-dimension", "dim must be 2 or 3, not " + std::to_string(dim));
+    require(points.size() % dim == 0, "invalid-points",
+            "points has " + std::to_string(points.size()) + " numbers, which is not a multiple of dim = " + std::to_string(dim));
+    require_finite(points, dim, "points");
+    const std::size_t n = points.size() / dim;
+    require(n >= 2, "too-few-points", "tangents from the points need at least 2 points, not " + std::to_string(n));
+    std::vector<double> t(points.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t before = i == 0 ? 0 : i - 1, after = i + 1 == n ? n - 1 : i + 1;
+        const double half = (i == 0 || i + 1 == n) ? 1.0 : 0.5;
+        for (int k = 0; k < dim; ++k) t[dim * i + k] = half * (points[dim * after + k] - points[dim * before + k]);
+    }
+    return t;
+}
+
 // ---------------------------------------------------------------- bicubic patches
 namespace {
 // relative * extent + the evaluation's rounding (kPatchRounding times the largest |coordinate|)

@@ -490,6 +490,11 @@ export function createCurvesApi(raw) {
       return pick(unwrap(raw.knotRefinementCheck(normalizeCurve(curve), sampleCount(samples))), ['error', 'inserted', 'pointsBefore', 'pointsAfter']);
     },
 
+    // Tangents from the points (lecture 002's Catmull-Rom conditions): t_i = (P_i+1 - P_i-1)/2
+    // inside, the one-sided chords at the ends; Float64Array, same layout as the points.
+    catmullRomTangents(points, dim) {
+      return unwrap(raw.catmullRomTangents(numbers(points, 'points'), dimension(dim))).tangents;
+    },
     // Bicubic patches (samplePatch's nets): the corners p(0,0), p(0,1), p(1,0), p(1,1) against
     // the net entries holding them: { corners: [{ entry, distance, interpolated }], tolerance }.
     patchCornerCheck({ kind, points } = {}) {

@@ -118,6 +118,12 @@ struct KnotRefinementCheck {
 };
 KnotRefinementCheck knot_refinement_check(const Curve& curve, int samples);
 
+// ---- the Hermite family of the comparison table, "with tangents from the points": the
+// Catmull-Rom conditions of lecture 002, t_i = (P_i+1 - P_i-1) / 2 inside, and the one-sided
+// chords P_1 - P_0, P_K-1 - P_K-2 at the ends. points[dim*i + k]; at least 2 points
+// ('too-few-points'), finite ('non-finite-input' naming the point).
+std::vector<double> catmull_rom_tangents(const std::vector<double>& points, int dim);
+
 // ---- bicubic patches (lecture 002, the surfaces lesson): corners and joins.
 // tolerance = k * extent + kPatchRounding * (largest |coordinate|) of the sampled surface
 // points: relative to the surface's size, plus the evaluation's rounding, which grows with

@@ -8,7 +8,7 @@
 // subdivision" is the lecture's judgement: quoted, never checked.
 import { linspace, flat } from '../../app/arrays.js';
 import { formatSize as fmt } from '../../ui/format.js';
-import { FAMILY_IDS, familySegments, inherentSegments, easySegments, nubsCurve, nonUniformKnots, constructionOf } from './families.js';
+import { FAMILY_IDS, familySegments, inherentSegments, easySegments, nubsCurve, nonUniformKnots, constructionOf, pointTangents } from './families.js';
 
 // The measurements are the core's (api.blendingWeightCheck, api.pointCurveDistances,
 // api.splitCheck, api.knotRefinementCheck), with their tolerances relative to the size of the
@@ -144,7 +144,7 @@ export function computeTable(api, points) {
   const curves = {};
   const K = points.length;
   for (const family of FAMILY_IDS) {
-    const segs = familySegments(family, points);
+    const segs = familySegments(api, family, points);
     const sampled = sampleSegments(api, segs);
     curves[family] = sampled;
     const seen = polygonInterpolation(api, points, sampled);
@@ -156,7 +156,7 @@ export function computeTable(api, points) {
     // The drawn Hermite curve shares tangents (the easy construction); the others are drawn bare.
     const interp = guaranteedInterpolation(family === 'hermite' ? easyG : inherentG, K);
     const subdivision = subdivisionCell(api, family, sampled);
-    const inherentSeen = continuityCell(api, family === 'nubs' ? spanCurves(api, nubsCurve(points)) : inherentSegments(family, points));
+    const inherentSeen = continuityCell(api, family === 'nubs' ? spanCurves(api, nubsCurve(points)) : inherentSegments(api, family, points));
     columns[family] = {
       convexHull: convexHullCell(api, sampled),
       interpolatesSome: interp.some,
@@ -172,8 +172,8 @@ export function computeTable(api, points) {
       interpolatesAll: seen.all,
       subdivision: { answer: fmt(subdivision.error), evidence: 'largest distance between the split halves and the curve' },
       inherent: inherentSeen,
-      easy: hasRule ? continuityCell(api, easySegments(family, points)) : inherentSeen,
+      easy: hasRule ? continuityCell(api, easySegments(api, family, points)) : inherentSeen,
     };
   }
-  return { columns, polygon, curves, knots: nonUniformKnots(K) };
+  return { columns, polygon, curves, knots: nonUniformKnots(K), tangents: pointTangents(api, points) };
 }

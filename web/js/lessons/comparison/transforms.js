@@ -49,8 +49,8 @@ export function computeInvariance(api, points, transform) {
   const rows = {};
   const drawing = {};
   for (const family of FAMILY_IDS) {
-    const before = familySegments(family, points);
-    const after = familySegments(family, mapped);
+    const before = familySegments(api, family, points);
+    const after = familySegments(api, family, mapped);
     let distance = 0;
     const pieces = [];
     before.forEach((curve, i) => {
