@@ -134,6 +134,14 @@ val catmull_rom_tangents_value(const val& points, int dim) {
     });
 }
 
+val convert_patch_basis_value(const std::string& from, const std::string& to, const val& net) {
+    return guarded([&] {
+        val r = val::object();
+        r.set("points", to_typed_array(convert_patch_basis(to_doubles(net), parse_basis_kind(from), parse_basis_kind(to))));
+        return r;
+    });
+}
+
 } // namespace
 } // namespace wingspline::bindings
 
@@ -147,6 +155,7 @@ EMSCRIPTEN_BINDINGS(wingspline_comparison) {
     emscripten::function("splitCheck", &split_check_value);
     emscripten::function("knotRefinementCheck", &knot_refinement_check_value);
     emscripten::function("catmullRomTangents", &catmull_rom_tangents_value);
+    emscripten::function("convertPatchBasis", &convert_patch_basis_value);
     emscripten::function("patchCornerCheck", &patch_corner_check_value);
     emscripten::function("patchJoinCheck", &patch_join_check_value);
 }

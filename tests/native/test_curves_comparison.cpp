@@ -6,6 +6,7 @@
 #include "curves_fixtures.h"
 
 #include "wingspline/curves/comparison.h"
+#include "wingspline/curves/patch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -448,4 +449,61 @@ TEST_CASE("tangents from the points: central differences are exact for points on
     }
     expect_error([] { catmull_rom_tangents({1, 2}, 2); }, "too-few-points", "at least 2");
     expect_error([] { catmull_rom_tangents({1, 2, NAN, 0}, 2); }, "non-finite-input", "point 1");
+}
+
+TEST_CASE("patch basis conversion: lecture 002's Hermite entries of a Bezier net, the same surface, and back again",
+          "[curves][comparison][patch]") {
+    std::mt19937_64 rng(43);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const auto e = [](int i, int j) { return 3 * (4 * i + j); };
+    for (int trial = 0; trial < 1000; ++trial) {
+        const double s = std::pow(10.0, 6 * u(rng));
+        const double t = s * std::pow(10.0, 3 * (1 + u(rng)));
+        const std::vector<double> p = random_net(rng, s, t);
+        const std::vector<double> h = convert_patch_basis(p, BasisKind::Bezier, BasisKind::Hermite);
+        double size = 0;
+        for (double x : p) size = std::max(size, std::abs(x));
+        INFO("trial " << trial << " scale " << s << " offset " << t);
+        for (int k = 0; k < 3; ++k) {
+            // corners in the top-left block
+            CHECK(h[e(0, 0) + k] == Approx(p[e(0, 0) + k]).margin(1e-14 * size));
+            CHECK(h[e(0, 1) + k] == Approx(p[e(0, 3) + k]).margin(1e-14 * size));
+            CHECK(h[e(1, 0) + k] == Approx(p[e(3, 0) + k]).margin(1e-14 * size));
+            CHECK(h[e(1, 1) + k] == Approx(p[e(3, 3) + k]).margin(1e-14 * size));
+            // p_u(0,0) = 3 (p10 - p00), p_v(0,0) = 3 (p01 - p00), p_uv(0,0) = 9 (p00 - p01 - p10 + p11)
+            CHECK(h[e(2, 0) + k] == Approx(3 * (p[e(1, 0) + k] - p[e(0, 0) + k])).margin(1e-13 * size));
+            CHECK(h[e(0, 2) + k] == Approx(3 * (p[e(0, 1) + k] - p[e(0, 0) + k])).margin(1e-13 * size));
+            CHECK(h[e(2, 2) + k] == Approx(9 * (p[e(0, 0) + k] - p[e(0, 1) + k] - p[e(1, 0) + k] + p[e(1, 1) + k])).margin(1e-12 * size));
+        }
+        const PatchSamples a = sample_patch(BasisKind::Bezier, p, 5, 5);
+        const PatchSamples b = sample_patch(BasisKind::Hermite, h, 5, 5);
+        CHECK(max_distance(a.positions, b.positions, 3).distance <= 1e-13 * size);
+        const std::vector<double> back = convert_patch_basis(h, BasisKind::Hermite, BasisKind::Bezier);
+        CHECK(max_distance(back, p, 3).distance <= 1e-13 * size);
+    }
+    expect_error([] { convert_patch_basis(std::vector<double>(48, 0.0), BasisKind::BSpline, BasisKind::Bezier); }, "unknown-basis", "hermite and bezier");
+    expect_error([] { convert_patch_basis(std::vector<double>(47, 0.0), BasisKind::Hermite, BasisKind::Bezier); }, "wrong-point-count", "48");
+}
+
+TEST_CASE("patch basis conversion: an entry that is zero exactly is stored as 0 at every scale", "[curves][comparison][patch]") {
+    // A bilinear Bezier net p_ij = o + (i/3) a + (j/3) b is a flat parallelogram: its Hermite
+    // twists p_uv are 0 exactly, and so is every component along a x b. The conversion's
+    // rounding leaves ulp-sized values there; they are stored as 0.
+    std::mt19937_64 rng(47);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int rounded = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const double s = std::pow(10.0, 6 * u(rng));
+        const double o[3] = {s * u(rng), s * u(rng), 0}, a[3] = {s * u(rng), s * u(rng), 0}, b[3] = {s * u(rng), s * u(rng), 0};
+        std::vector<double> p;
+        for (int i = 0; i < 4; ++i) for (int j = 0; j < 4; ++j) for (int k = 0; k < 3; ++k) p.push_back(o[k] + a[k] * i / 3 + b[k] * j / 3);
+        const std::vector<double> h = convert_patch_basis(p, BasisKind::Bezier, BasisKind::Hermite);
+        INFO("trial " << trial << " scale " << s);
+        for (int c : {10, 11, 14, 15}) for (int k = 0; k < 3; ++k) CHECK(h[3 * c + k] == 0); // the twist block
+        for (int e = 0; e < 16; ++e) CHECK(h[3 * e + 2] == 0);
+        // the unsnapped value, recomputed: 9 (p00 - p01 - p10 + p11) in floating point
+        for (int k = 0; k < 2; ++k) rounded += (p[k] - p[3 + k] - p[12 + k] + p[15 + k]) != 0;
+    }
+    INFO("nets whose twist rounds to a nonzero value before snapping: " << rounded);
+    CHECK(rounded > 0); // the case the snap is for does occur
 }

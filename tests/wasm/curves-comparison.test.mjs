@@ -220,3 +220,24 @@ test('catmullRomTangents: (P_i+1 - P_i-1)/2 is the exact derivative of points on
   assert.equal(code(() => api.catmullRomTangents([1, 2], 2)), 'too-few-points');
   assert.equal(code(() => api.catmullRomTangents([1, 2, 3], 2)), 'invalid-points');
 });
+
+test('convertPatchBasis: a Bezier net\'s Hermite entries are lecture 002\'s, the surface is the same, and back again', () => {
+  const rnd = random(43);
+  for (let trial = 0; trial < 200; trial += 1) {
+    const s = 10 ** (6 * (2 * rnd() - 1));
+    const p = Array.from({ length: 48 }, () => s * (2 * rnd() - 1));
+    const size = Math.max(...p.map(Math.abs));
+    const h = api.convertPatchBasis(p, 'bezier', 'hermite');
+    const e = (i, j) => 3 * (4 * i + j);
+    for (let k = 0; k < 3; k += 1) {
+      assert.ok(Math.abs(h[e(0, 1) + k] - p[e(0, 3) + k]) <= 1e-14 * size, 'p(0,1) = p03');
+      assert.ok(Math.abs(h[e(2, 0) + k] - 3 * (p[e(1, 0) + k] - p[e(0, 0) + k])) <= 1e-13 * size, 'p_u(0,0) = 3 (p10 - p00)');
+    }
+    const a = api.samplePatch({ kind: 'bezier', points: p, nu: 4, nv: 4 }).positions;
+    const b = api.samplePatch({ kind: 'hermite', points: h, nu: 4, nv: 4 }).positions;
+    assert.ok(api.maxDistance(a, b, 3).distance <= 1e-13 * size, `trial ${trial}`);
+    assert.ok(api.maxDistance(api.convertPatchBasis(h, 'hermite', 'bezier'), p, 3).distance <= 1e-13 * size, `trial ${trial}`);
+  }
+  assert.equal(code(() => api.convertPatchBasis(new Array(48).fill(0), 'bspline', 'bezier')), 'unknown-basis');
+  assert.equal(code(() => api.convertPatchBasis(new Array(45).fill(0), 'bezier', 'hermite')), 'wrong-point-count');
+});

@@ -135,6 +135,7 @@ const cases = [
   ['comparison checks', REDUCED, () => { api.blendingWeightCheck([bezier], 5); api.pointCurveDistances(geometry, 2, [bezier], 5); api.splitCheck([bezier]); api.knotRefinementCheck(bspline, 5); },
     () => api.splitCheck([nurbs])],
   ['catmullRomTangents', REDUCED, () => api.catmullRomTangents(geometry, 2), () => api.catmullRomTangents([0, 0], 2)],
+  ['convertPatchBasis', REDUCED, () => api.convertPatchBasis(patch, 'bezier', 'hermite'), () => api.convertPatchBasis(patch.slice(3), 'bezier', 'hermite')],
   ['patchCornerCheck / patchJoinCheck', REDUCED, () => { api.patchCornerCheck({ kind: 'bezier', points: patch }); api.patchJoinCheck({ kind: 'bezier', a: patch, b: patch, samples: 4 }); },
     () => api.patchJoinCheck({ kind: 'bezier', a: patch, b: patch.slice(3) })],
   ['mesh.storage / representations', REDUCED, () => { lecture.storage(); lecture.representations({ limit: 3 }); },

@@ -365,4 +365,28 @@ PatchJoinCheck patch_join_check(BasisKind kind, const std::vector<double>& a, co
     return r;
 }
 
+std::vector<double> convert_patch_basis(const std::vector<double>& net, BasisKind from, BasisKind to) {
+    require((from == BasisKind::Bezier || from == BasisKind::Hermite) && (to == BasisKind::Bezier || to == BasisKind::Hermite),
+            "unknown-basis", "patches are converted between the hermite and bezier bases");
+    require(net.size() == 48, "wrong-point-count",
+            "a bicubic patch needs a 4 x 4 geometry matrix of 3D vectors (48 numbers), not " + std::to_string(net.size()));
+    require_finite(net, 3, "the net");
+    const auto at = [](int i, int j) { return 3 * (4 * i + j); };
+    std::vector<double> cols(48), out(48);
+    for (int j = 0; j < 4; ++j) { // down column j (along u)
+        std::vector<double> g;
+        for (int i = 0; i < 4; ++i) g.insert(g.end(), net.begin() + at(i, j), net.begin() + at(i, j) + 3);
+        const std::vector<double> q = convert_basis(g, 3, from, to);
+        for (int i = 0; i < 4; ++i) std::copy(q.begin() + 3 * i, q.begin() + 3 * i + 3, cols.begin() + at(i, j));
+    }
+    for (int i = 0; i < 4; ++i) { // along row i (along v)
+        const std::vector<double> q = convert_basis(std::vector<double>(cols.begin() + at(i, 0), cols.begin() + at(i, 0) + 12), 3, from, to);
+        std::copy(q.begin(), q.end(), out.begin() + at(i, 0));
+    }
+    double size = 0;
+    for (double x : net) size = std::max(size, std::abs(x));
+    for (double& x : out) if (std::abs(x) < kNetSnap * size) x = 0;
+    return out;
+}
+
 } // namespace wingspline::curves

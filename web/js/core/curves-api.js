@@ -495,6 +495,11 @@ export function createCurvesApi(raw) {
     catmullRomTangents(points, dim) {
       return unwrap(raw.catmullRomTangents(numbers(points, 'points'), dimension(dim))).tangents;
     },
+    // The same bicubic patch in the other basis (hermite <-> bezier): Q = C P C^T with
+    // C = M_to^-1 M_from; same layout as samplePatch's points (Float64Array of 48).
+    convertPatchBasis(points, fromKind, toKind) {
+      return unwrap(raw.convertPatchBasis(patchKind(fromKind), patchKind(toKind), numbers(points, 'points'))).points;
+    },
     // Bicubic patches (samplePatch's nets): the corners p(0,0), p(0,1), p(1,0), p(1,1) against
     // the net entries holding them: { corners: [{ entry, distance, interpolated }], tolerance }.
     patchCornerCheck({ kind, points } = {}) {

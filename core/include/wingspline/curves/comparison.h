@@ -154,4 +154,11 @@ struct PatchJoinCheck {
 };
 PatchJoinCheck patch_join_check(BasisKind kind, const std::vector<double>& a, const std::vector<double>& b, int samples);
 
+// The same bicubic patch in another basis (hermite <-> bezier; lecture 002's q = M^-1 M_B P
+// applied down every column, then along every row: Q = C P C^T, C = M_to^-1 M_from). Entries
+// within kNetSnap times the largest |entry| of the input of zero are stored as 0 (rounding of
+// an entry that is 0 exactly; the net shows and shares "0", not "1e-17").
+constexpr double kNetSnap = 1e-14; // unitless, times the largest |entry|
+std::vector<double> convert_patch_basis(const std::vector<double>& net, BasisKind from, BasisKind to);
+
 } // namespace wingspline::curves

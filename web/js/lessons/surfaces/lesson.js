@@ -40,18 +40,12 @@ function defaultState() {
   };
 }
 
-// Converts a whole net between the Hermite and Bezier bases with the core's curve
-// conversion, first down every column (along u), then along every row (along v):
-// Q = (M_to^-1 M_from) P (M_to^-1 M_from)^T (lecture 002's q = M^-1 M_B P, twice).
+// Converts a whole net between the Hermite and Bezier bases in the core
+// (Q = C P C^T, C = M_to^-1 M_from: lecture 002's q = M^-1 M_B P down the columns, then
+// along the rows), back to the state's 16 [x, y, z] entries.
 function convertNet(api, net, from, to) {
-  const cols = [];
-  for (let j = 0; j < 4; j += 1) cols.push(api.convertBasis([0, 1, 2, 3].flatMap((i) => net[4 * i + j]), 3, from, to));
-  const out = new Array(16);
-  for (let i = 0; i < 4; i += 1) {
-    const row = api.convertBasis([0, 1, 2, 3].flatMap((j) => at3(cols[j], i)), 3, from, to);
-    for (let j = 0; j < 4; j += 1) out[4 * i + j] = at3(row, j).map((v) => (Math.abs(v) < 1e-14 ? 0 : v));
-  }
-  return out;
+  const q = api.convertPatchBasis(flat(net), from, to);
+  return Array.from({ length: 16 }, (_, e) => at3(q, e));
 }
 
 function netHandles(state) {
