@@ -1,5 +1,6 @@
-// Bindings of the comparison measurements and the convex hull (issue 14 item 5;
-// core/include/wingspline/curves/comparison.h). Same conventions as curves.cpp: plain values
+// Bindings of the lessons' measurements (issue 14 item 5): the comparison measurements and
+// the convex hull (core/include/wingspline/curves/comparison.h), the curve explorer's
+// overlays (overlays.h). Same conventions as curves.cpp: plain values
 // in (checked and normalised by web/js/core/curves-api.js), {ok, ...} or {ok:false, code,
 // message} out through guarded().
 #include "boundary.h"
@@ -7,6 +8,7 @@
 
 #include "wingspline/curves/basis_matrix.h"
 #include "wingspline/curves/comparison.h"
+#include "wingspline/curves/overlays.h"
 
 #include <string>
 
@@ -142,6 +144,25 @@ val convert_patch_basis_value(const std::string& from, const std::string& to, co
     });
 }
 
+val curvature_comb_value(const val& spec, const val& params) {
+    return guarded([&] {
+        const CurvatureComb c = curvature_comb(curve_from(spec), to_doubles(params));
+        val r = val::object();
+        r.set("teeth", to_typed_array(c.teeth));
+        r.set("maxCurvature", c.max_curvature);
+        r.set("singular", c.singular);
+        return r;
+    });
+}
+
+val homogeneous_lift_value(const val& points, int dim, const val& weights) {
+    return guarded([&] {
+        val r = val::object();
+        r.set("points", to_typed_array(homogeneous_lift(to_doubles(points), dim, to_doubles(weights))));
+        return r;
+    });
+}
+
 } // namespace
 } // namespace wingspline::bindings
 
@@ -156,6 +177,8 @@ EMSCRIPTEN_BINDINGS(wingspline_comparison) {
     emscripten::function("knotRefinementCheck", &knot_refinement_check_value);
     emscripten::function("catmullRomTangents", &catmull_rom_tangents_value);
     emscripten::function("convertPatchBasis", &convert_patch_basis_value);
+    emscripten::function("curvatureComb", &curvature_comb_value);
+    emscripten::function("homogeneousLift", &homogeneous_lift_value);
     emscripten::function("patchCornerCheck", &patch_corner_check_value);
     emscripten::function("patchJoinCheck", &patch_join_check_value);
 }

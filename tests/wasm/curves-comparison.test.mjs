@@ -241,3 +241,19 @@ test('convertPatchBasis: a Bezier net\'s Hermite entries are lecture 002\'s, the
   assert.equal(code(() => api.convertPatchBasis(new Array(48).fill(0), 'bspline', 'bezier')), 'unknown-basis');
   assert.equal(code(() => api.convertPatchBasis(new Array(45).fill(0), 'bezier', 'hermite')), 'wrong-point-count');
 });
+
+test('curvatureComb and homogeneousLift: a circle\'s teeth point at the centre with length 1/r; (w x, w y, w)', () => {
+  const circle = api.nurbsCircle({ center: [3, -1], radius: 2.5 });
+  const d = api.curveDomain(circle);
+  const params = Array.from({ length: 21 }, (_, j) => d.start + ((d.end - d.start) * j) / 20);
+  const c = api.curvatureComb(circle, params);
+  assert.equal(c.singular, 0);
+  assert.ok(Math.abs(c.maxCurvature - 1 / 2.5) < 1e-12);
+  for (let j = 0; j < 21; j += 1) {
+    const [x, y, kx, ky] = c.teeth.slice(4 * j, 4 * j + 4);
+    assert.ok(Math.abs(kx - (3 - x) / 6.25) < 1e-12 && Math.abs(ky - (-1 - y) / 6.25) < 1e-12, `tooth ${j}`);
+  }
+  assert.deepEqual(Array.from(api.homogeneousLift([1, 2, 3, 4], 2, [0.5, 3])), [0.5, 1, 0.5, 9, 12, 3]);
+  assert.equal(code(() => api.homogeneousLift([1, 2, 3, 4], 2, [1, -1])), 'invalid-weight');
+  assert.equal(code(() => api.curvatureComb({ kind: 'bezier', dim: 3, points: [0, 0, 0, 1, 1, 1] }, [0.5])), 'invalid-dimension');
+});

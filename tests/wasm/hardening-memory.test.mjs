@@ -136,6 +136,7 @@ const cases = [
     () => api.splitCheck([nurbs])],
   ['catmullRomTangents', REDUCED, () => api.catmullRomTangents(geometry, 2), () => api.catmullRomTangents([0, 0], 2)],
   ['convertPatchBasis', REDUCED, () => api.convertPatchBasis(patch, 'bezier', 'hermite'), () => api.convertPatchBasis(patch.slice(3), 'bezier', 'hermite')],
+  ['curvatureComb / homogeneousLift', REDUCED, () => { api.curvatureComb(nurbs, params); api.homogeneousLift(geometry, 2, [1, 2, 1, 1]); }, () => api.curvatureComb(zeroWeight, params)],
   ['patchCornerCheck / patchJoinCheck', REDUCED, () => { api.patchCornerCheck({ kind: 'bezier', points: patch }); api.patchJoinCheck({ kind: 'bezier', a: patch, b: patch, samples: 4 }); },
     () => api.patchJoinCheck({ kind: 'bezier', a: patch, b: patch.slice(3) })],
   ['mesh.storage / representations', REDUCED, () => { lecture.storage(); lecture.representations({ limit: 3 }); },

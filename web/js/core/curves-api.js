@@ -500,6 +500,16 @@ export function createCurvesApi(raw) {
     convertPatchBasis(points, fromKind, toKind) {
       return unwrap(raw.convertPatchBasis(patchKind(fromKind), patchKind(toKind), numbers(points, 'points'))).points;
     },
+    // The curvature comb (lecture 004), dim 2: { teeth (Float64Array, [x, y, kx, ky] per
+    // param: the point and the curvature vector kappa N, N the left normal), maxCurvature,
+    // singular (how many params have P' = 0; their tooth is 0) }.
+    curvatureComb(curve, params) {
+      return pick(unwrap(raw.curvatureComb(normalizeCurve(curve), numbers(params, 'params'))), ['teeth', 'maxCurvature', 'singular']);
+    },
+    // Control points in homogeneous coordinates (w x, w y, [w z,] w), stride dim + 1.
+    homogeneousLift(points, dim, weights) {
+      return unwrap(raw.homogeneousLift(numbers(points, 'points'), dimension(dim), numbers(weights, 'weights'))).points;
+    },
     // Bicubic patches (samplePatch's nets): the corners p(0,0), p(0,1), p(1,0), p(1,1) against
     // the net entries holding them: { corners: [{ entry, distance, interpolated }], tolerance }.
     patchCornerCheck({ kind, points } = {}) {

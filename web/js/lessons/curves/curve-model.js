@@ -120,27 +120,12 @@ function segmentPointIndices(segment, state) {
   return ids.filter((i) => i >= 0 && i < K);
 }
 
-// The comb (lecture 004): at each sample a tooth along the left normal (-t_y, t_x) of the
-// core's unit tangent, of length proportional to the core's signed curvature, so the teeth
-// stand on the concave side (the side the curve turns to). At a cusp the core reports
-// singular[j] = 1 with curvature 0: that tooth has length 0, never NaN.
+// The comb (lecture 004), from the core: at each sample a tooth along the left normal
+// (-t_y, t_x) of the unit tangent, of length the signed curvature, so the teeth stand on the
+// concave side (the side the curve turns to). At a cusp the tooth has length 0, never NaN.
 function curvatureComb(api, spec, domain) {
-  const params = uniformParams(domain.start, domain.end, COMB_SAMPLES);
-  const p = api.evaluateCurve(spec, params);
-  const k = api.curvature(spec, params);
-  const kappa = k.signedCurvature;
-  let maxK = 0;
-  for (let j = 0; j < COMB_SAMPLES; j += 1) maxK = Math.max(maxK, Math.abs(kappa[j]));
-  const teeth = new Float64Array(COMB_SAMPLES * 4);
-  for (let j = 0; j < COMB_SAMPLES; j += 1) {
-    const tx = k.tangent[2 * j];
-    const ty = k.tangent[2 * j + 1];
-    teeth[4 * j] = p[2 * j];
-    teeth[4 * j + 1] = p[2 * j + 1];
-    teeth[4 * j + 2] = kappa[j] * -ty;
-    teeth[4 * j + 3] = kappa[j] * tx;
-  }
-  return { teeth, maxCurvature: maxK, count: COMB_SAMPLES, singular: k.singular.reduce((a, b) => a + b, 0) };
+  const c = api.curvatureComb(spec, uniformParams(domain.start, domain.end, COMB_SAMPLES));
+  return { teeth: c.teeth, maxCurvature: c.maxCurvature, count: COMB_SAMPLES, singular: c.singular };
 }
 
 // Lecture 004's comparison: the same points through one cubic spline. Catmull-Rom with the
@@ -157,8 +142,9 @@ function interpolatingSpline(api, state) {
 // The NURBS as the shadow of a polynomial B-spline in 3D: control points (w x, w y, w), the
 // same knots; its points divided by w give the rational curve (lectures 001, 002).
 function homogeneousView(api, state, spec, part, u) {
-  const lifted = state.points.map(([x, y], i) => [x * state.weights[i], y * state.weights[i], state.weights[i]]);
-  const spec3 = { kind: 'bspline', dim: 3, degree: state.degree, knots: spec.knots, points: Float64Array.from(lifted.flat()) };
+  const h = api.homogeneousLift(spec.points, 2, state.weights);
+  const lifted = Array.from({ length: h.length / 3 }, (_, i) => [h[3 * i], h[3 * i + 1], h[3 * i + 2]]);
+  const spec3 = { kind: 'bspline', dim: 3, degree: state.degree, knots: spec.knots, points: h };
   const params = uniformParams(part.domain.start, part.domain.end, 200);
   const curve3 = api.evaluateCurve(spec3, params);
   const at = api.evaluateCurve(spec3, Float64Array.of(u));
