@@ -62,20 +62,20 @@ void require_samples(int samples) {
 
 // The four geometry rows of one cubic segment in the Bezier basis (lecture 002: q = M_B^-1 M G).
 std::vector<double> bezier_rows(const Curve& c, std::size_t index) {
-    const std::string which = "segment " + std::to_string(index);
+    const auto which = [&] { return "segment " + std::to_string(index); };
     if (c.kind == CurveKind::Bezier && c.weights.empty()) return c.points;
     const std::size_t four = 4 * static_cast<std::size_t>(c.dim);
     if (c.kind == CurveKind::Hermite) {
-        require(c.points.size() == 2 * static_cast<std::size_t>(c.dim) && c.tangents.size() == c.points.size(),
-                "invalid-argument", which + ": a Hermite segment has 2 points and 2 tangents");
+        if (c.points.size() != 2 * static_cast<std::size_t>(c.dim) || c.tangents.size() != c.points.size())
+            throw Error("invalid-argument", which() + ": a Hermite segment has 2 points and 2 tangents");
         std::vector<double> g(c.points);
         g.insert(g.end(), c.tangents.begin(), c.tangents.end());
         return convert_basis(g, c.dim, BasisKind::Hermite, BasisKind::Bezier);
     }
     const bool window = (c.kind == CurveKind::BSpline && c.knots.empty() && (c.degree == 0 || c.degree == 3)) ||
                         c.kind == CurveKind::CatmullRom;
-    require(window && c.points.size() == four, "invalid-argument",
-            which + ": the split check takes Bezier curves and single cubic Hermite, uniform B-spline or Catmull-Rom segments");
+    if (!window || c.points.size() != four)
+        throw Error("invalid-argument", which() + ": the split check takes Bezier curves and single cubic Hermite, uniform B-spline or Catmull-Rom segments");
     return convert_basis(c.points, c.dim, c.kind == CurveKind::CatmullRom ? BasisKind::CatmullRom : BasisKind::BSpline,
                          BasisKind::Bezier);
 }
@@ -161,16 +161,18 @@ MappedPoints map_points(const std::vector<double>& points, int dim, const PlaneM
     for (std::size_t i = 0; i < n; ++i) {
         const double x = points[2 * i], y = points[2 * i + 1];
         const double w = m.px * x + m.py * y + 1;
-        const std::string where = what + std::to_string(i) + " (" + fixed2(x) + ", " + fixed2(y) + ")";
+        // Built only for a message: a string per point would cost more than the map itself.
+        const auto where = [&] { return what + std::to_string(i) + " (" + fixed2(x) + ", " + fixed2(y) + ")"; };
         if (!(w > 0)) {
-            throw Error("perspective-behind-eye", "the perspective map sends " + where + " behind the eye (w = " + fixed2(w) +
+            throw Error("perspective-behind-eye", "the perspective map sends " + where() + " behind the eye (w = " + fixed2(w) +
                                                       " ≤ 0); use smaller perspective coefficients");
         }
         const double X = (m.a * x + m.b * y + m.tx) / w;
         const double Y = (m.c * x + m.d * y + m.ty) / w;
-        require(std::isfinite(X) && std::isfinite(Y), "non-finite-result",
-                "the map sends " + where + " beyond the largest number (w = " + std::to_string(w) +
-                    " is almost 0: the point is almost level with the eye); use smaller perspective coefficients");
+        if (!std::isfinite(X) || !std::isfinite(Y)) {
+            throw Error("non-finite-result", "the map sends " + where() + " beyond the largest number (w = " + std::to_string(w) +
+                                                 " is almost 0: the point is almost level with the eye); use smaller perspective coefficients");
+        }
         out.points[2 * i] = X;
         out.points[2 * i + 1] = Y;
         out.w[i] = w;
