@@ -55,6 +55,7 @@ val blending_weight_check_value(const val& specs, int samples) {
         r.set("tangentWeight", b.tangent_weight);
         r.set("weightsPoints", b.weights_points);
         r.set("minWeight", b.min_weight);
+        r.set("minWeightAt", b.min_weight_at);
         r.set("sumError", b.sum_error);
         r.set("convexHull", b.convex_hull);
         r.set("tolerance", b.tolerance);

@@ -258,6 +258,9 @@ TEST_CASE("blending weights: lecture 003's convex hull row from the weights, min
     const BlendingWeightCheck cr = blending_weight_check({window(CurveKind::CatmullRom, p)}, 4);
     CHECK_FALSE(cr.convex_hull);
     CHECK(cr.min_weight == Approx(-2.0 / 27).epsilon(1e-13));
+    CHECK(cr.min_weight_at == Approx(1.0 / 3).epsilon(1e-15));
+    // Bezier: B_1 = 3u(1-u)^2 is 0 at u = 0, the first sample
+    CHECK(blending_weight_check({window(CurveKind::Bezier, p)}, 4).min_weight_at == 0);
     // Hermite: H2 = u^3 - 2u^2 + u weights a tangent vector, largest at u = 1/3: 4/27.
     Curve h;
     h.kind = CurveKind::Hermite;

@@ -134,6 +134,7 @@ test('blendingWeightCheck: lecture 003\'s convex hull row, with the analytic ext
   const cr = api.blendingWeightCheck([{ kind: 'catmull-rom', dim: 2, points: p }], 4);
   assert.equal(cr.convexHull, false);
   assert.ok(Math.abs(cr.minWeight + 2 / 27) < 1e-14, 'min of (-u^3 + 2u^2 - u)/2 is -2/27');
+  assert.ok(Math.abs(cr.minWeightAt - 1 / 3) < 1e-15, 'at u = 1/3');
   const h = api.blendingWeightCheck([{ kind: 'hermite', dim: 2, points: [0, 0, 1, 0], tangents: [1, 1, 1, -1] }], 4);
   assert.equal(h.weightsPoints, false);
   assert.ok(Math.abs(h.tangentWeight - 4 / 27) < 1e-14, 'max of u^3 - 2u^2 + u is 4/27');

@@ -215,7 +215,8 @@ BlendingWeightCheck blending_weight_check(const std::vector<Curve>& segments, in
     BlendingWeightCheck r;
     r.min_weight = std::numeric_limits<double>::infinity();
     for (const Curve& c : segments) {
-        const BlendingValues b = blending_functions(c, domain_params(c, samples), 0);
+        const std::vector<double> params = domain_params(c, samples);
+        const BlendingValues b = blending_functions(c, params, 0);
         // Hermite: items 0..K-1 are points, K..2K-1 tangent vectors (curve.h).
         const int points = c.kind == CurveKind::Hermite ? b.count / 2 : b.count;
         for (int j = 0; j < samples; ++j) {
@@ -227,7 +228,10 @@ BlendingWeightCheck blending_weight_check(const std::vector<Curve>& segments, in
                     continue;
                 }
                 sum += w;
-                r.min_weight = std::min(r.min_weight, w);
+                if (w < r.min_weight) {
+                    r.min_weight = w;
+                    r.min_weight_at = params[j];
+                }
             }
             r.sum_error = std::max(r.sum_error, std::abs(sum - 1));
         }

@@ -469,10 +469,10 @@ export function createCurvesApi(raw) {
     },
     // Lecture 003's convex hull row from the blending weights of every segment (sampled at
     // `samples` parameters over its domain): { tangentWeight, weightsPoints, minWeight,
-    // sumError, convexHull, tolerance }.
+    // minWeightAt (the parameter where it first occurs), sumError, convexHull, tolerance }.
     blendingWeightCheck(segments, samples = 101) {
       return pick(unwrap(raw.blendingWeightCheck(curveList(segments), sampleCount(samples))),
-        ['tangentWeight', 'weightsPoints', 'minWeight', 'sumError', 'convexHull', 'tolerance']);
+        ['tangentWeight', 'weightsPoints', 'minWeight', 'minWeightAt', 'sumError', 'convexHull', 'tolerance']);
     },
     // Distance from every control point to the sampled segments: { distances, interpolated
     // (Int32Array, the points within tolerance), farthest, nearestMissed (-1: none), tolerance }.

@@ -80,6 +80,7 @@ struct BlendingWeightCheck {
     double tangent_weight = 0;  // largest |weight| of a tangent vector (Hermite), else 0
     bool weights_points = true; // false: tangent weights exceed kWeightTolerance -> "N/A"
     double min_weight = 0;      // smallest weight of a point at any sample
+    double min_weight_at = 0;   // the parameter of its first occurrence (the segment's own parameter)
     double sum_error = 0;       // largest |sum of the points' weights - 1|
     bool convex_hull = false;   // weights_points, min_weight >= -tol and sum_error <= tol
     double tolerance = kWeightTolerance;

@@ -294,13 +294,10 @@ function blendingOfFirstSegment(api, family, points) {
     : family === 'bspline' ? { kind: 'bspline', dim: 2, points: points.slice(0, 4).flat() }
       : { kind: 'catmull-rom', dim: 2, points: [points[0], ...points.slice(0, 3)].flat() };
   const b = api.blendingFunctions(curve, params);
-  let minWeight = Infinity;
-  let uMin = 0;
-  for (let j = 0; j < params.length; j += 1) {
-    for (let i = 0; i < b.count; i += 1) if (b.values[b.count * j + i] < minWeight) { minWeight = b.values[b.count * j + i]; uMin = params[j]; }
-  }
+  // The smallest weight and where it first occurs, from the core (the same 101 parameters).
+  const w = api.blendingWeightCheck([curve], params.length);
   const labels = family === 'catmull-rom' ? ['P0', 'P0', 'P1', 'P2'] : ['P0', 'P1', 'P2', 'P3'];
-  return { family, params, count: b.count, values: b.values, minWeight, uMin, labels };
+  return { family, params, count: b.count, values: b.values, minWeight: w.minWeight, uMin: w.minWeightAt, labels };
 }
 
 function updateTable(body, tbl) {
