@@ -3,6 +3,7 @@
 // arrives with all fields, arrays as Float64Array) and returns {ok:true, ...} or
 // {ok:false, code, message} through guarded(); bulk results leave as copied typed arrays.
 #include "boundary.h"
+#include "curve_spec.h"
 
 #include "wingspline/curves/analysis.h"
 #include "wingspline/curves/bezier.h"
@@ -23,20 +24,6 @@ namespace wingspline::bindings {
 namespace {
 
 using namespace wingspline::curves;
-
-Curve curve_from(const val& spec) {
-    Curve c;
-    c.kind = parse_curve_kind(spec["kind"].as<std::string>());
-    c.dim = spec["dim"].as<int>();
-    c.points = to_doubles(spec["points"]);
-    c.degree = spec["degree"].as<int>();
-    c.knots = to_doubles(spec["knots"]);
-    c.weights = to_doubles(spec["weights"]);
-    c.tangents = to_doubles(spec["tangents"]);
-    c.nodes = to_doubles(spec["nodes"]);
-    c.tension = spec["tension"].as<double>();
-    return c;
-}
 
 val doubles_array(const std::vector<std::vector<double>>& rows) {
     val a = val::array();

@@ -94,6 +94,38 @@ function transpose(m, n) {
   return t;
 }
 
+// The fields of a core result a caller sees (the core's ok flag stays behind).
+function pick(r, keys) {
+  const out = {};
+  for (const k of keys) out[k] = r[k];
+  return out;
+}
+
+function curveList(segments, what = 'segments') {
+  if (!Array.isArray(segments) || segments.length === 0) fail('invalid-argument', `${what} must be a non-empty list of curves`);
+  return segments.map((c, i) => normalizeCurve(c, `${what}[${i}]`));
+}
+
+function sampleCount(n) {
+  return wholeNumber(n, 'the number of samples', 2, 1_000_000);
+}
+
+function patchKind(kind) {
+  if (kind !== 'hermite' && kind !== 'bezier') fail('unknown-basis', `patch kind must be 'hermite' or 'bezier', not ${JSON.stringify(kind)?.slice(0, 40)}`);
+  return kind;
+}
+
+const PLANE_MAP_KINDS = ['affine', 'perspective'];
+// { kind, angle (degrees), scale, shear, tx, ty, px, py } with the identity's defaults.
+function planeMap(t) {
+  if (t === null || typeof t !== 'object') fail('invalid-argument', "transform must be an object like { kind: 'affine', angle: 30 }");
+  if (!PLANE_MAP_KINDS.includes(t.kind)) fail('invalid-argument', `transform.kind is ${JSON.stringify(t.kind)?.slice(0, 40)}; expected affine or perspective`);
+  const defaults = { angle: 0, scale: 1, shear: 0, tx: 0, ty: 0, px: 0, py: 0 };
+  const out = { kind: t.kind };
+  for (const [k, d] of Object.entries(defaults)) out[k] = t[k] === undefined ? d : finiteNumber(t[k], `transform.${k}`);
+  return out;
+}
+
 export function createCurvesApi(raw) {
   function evaluate(curve, params, order, all, out) {
     const spec = normalizeCurve(curve);
@@ -406,11 +438,89 @@ export function createCurvesApi(raw) {
     },
 
     samplePatch({ kind, points, nu = 16, nv = 16 } = {}) {
-      if (kind !== 'hermite' && kind !== 'bezier') fail('unknown-basis', `patch kind must be 'hermite' or 'bezier', not ${JSON.stringify(kind)?.slice(0, 40)}`);
+      patchKind(kind);
       wholeNumber(nu, 'nu', 2, 4096);
       wholeNumber(nv, 'nv', 2, 4096);
       const r = unwrap(raw.patchSample(kind, numbers(points, 'points'), nu, nv));
       return { nu: r.nu, nv: r.nv, positions: r.positions, normals: r.normals, du: r.du, dv: r.dv, twists: r.twists };
+    },
+
+    // ---- comparison measurements (issue 14 item 5; docs/api-curves.md "Comparison
+    // measurements"): the numbers behind the comparison lesson's cells, with tolerances
+    // relative to the size of what is compared.
+    // The convex hull of plane points (flat, dim 2): { indices (Int32Array into the points,
+    // counter-clockwise from the lowest x, then lowest y; collinear points dropped), tolerance }.
+    convexHull(points) {
+      return pick(unwrap(raw.convexHull(numbers(points, 'points'))), ['indices', 'tolerance']);
+    },
+    // The map x' = (a x + b y + tx)/w, y' = (c x + d y + ty)/w, w = px x + py y + 1 with
+    // [a b; c d] = scale R(angle in degrees) [1 shear; 0 1]; kind 'affine' ignores px, py.
+    // -> { points, w }: w(P_i) are the weights of the rational curve that follows the map.
+    // A point with w <= 0 is refused ('perspective-behind-eye'), named as `what` + index.
+    mapPoints(points, dim, transform, { what = 'point ' } = {}) {
+      const t = planeMap(transform);
+      return pick(unwrap(raw.mapPoints(numbers(points, 'points'), dimension(dim), t.kind === 'perspective', t.angle, t.scale,
+        t.shear, t.tx, t.ty, t.px, t.py, String(what))), ['points', 'w']);
+    },
+    // The largest distance between corresponding points of a and b (dim 1..3; e.g. two curves
+    // sampled at the same parameters): { distance, index }.
+    maxDistance(a, b, dim) {
+      return pick(unwrap(raw.maxDistance(numbers(a, 'a'), numbers(b, 'b'), wholeNumber(dim, 'dim', 1, 3, 'invalid-dimension'))), ['distance', 'index']);
+    },
+    // Lecture 003's convex hull row from the blending weights of every segment (sampled at
+    // `samples` parameters over its domain): { tangentWeight, weightsPoints, minWeight,
+    // minWeightAt (the parameter where it first occurs), sumError, convexHull, tolerance }.
+    blendingWeightCheck(segments, samples = 101) {
+      return pick(unwrap(raw.blendingWeightCheck(curveList(segments), sampleCount(samples))),
+        ['tangentWeight', 'weightsPoints', 'minWeight', 'minWeightAt', 'sumError', 'convexHull', 'tolerance']);
+    },
+    // Distance from every control point to the sampled segments: { distances, interpolated
+    // (Int32Array, the points within tolerance), farthest, nearestMissed (-1: none), tolerance }.
+    pointCurveDistances(points, dim, segments, samples = 101) {
+      return pick(unwrap(raw.pointCurveDistances(numbers(points, 'points'), dimension(dim), curveList(segments), sampleCount(samples))),
+        ['distances', 'interpolated', 'farthest', 'nearestMissed', 'tolerance']);
+    },
+    // Every cubic segment split at u = 1/2 (converted to Bezier first): { error (largest
+    // distance of the halves from the original), segments }.
+    splitCheck(segments) {
+      return pick(unwrap(raw.splitCheck(curveList(segments))), ['error', 'segments']);
+    },
+    // One knot inserted in the middle of every span (Boehm): { error, inserted, pointsBefore, pointsAfter }.
+    knotRefinementCheck(curve, samples = 101) {
+      return pick(unwrap(raw.knotRefinementCheck(normalizeCurve(curve), sampleCount(samples))), ['error', 'inserted', 'pointsBefore', 'pointsAfter']);
+    },
+
+    // Tangents from the points (lecture 002's Catmull-Rom conditions): t_i = (P_i+1 - P_i-1)/2
+    // inside, the one-sided chords at the ends; Float64Array, same layout as the points.
+    catmullRomTangents(points, dim) {
+      return unwrap(raw.catmullRomTangents(numbers(points, 'points'), dimension(dim))).tangents;
+    },
+    // The same bicubic patch in the other basis (hermite <-> bezier): Q = C P C^T with
+    // C = M_to^-1 M_from; same layout as samplePatch's points (Float64Array of 48).
+    convertPatchBasis(points, fromKind, toKind) {
+      return unwrap(raw.convertPatchBasis(patchKind(fromKind), patchKind(toKind), numbers(points, 'points'))).points;
+    },
+    // The curvature comb (lecture 004), dim 2: { teeth (Float64Array, [x, y, kx, ky] per
+    // param: the point and the curvature vector kappa N, N the left normal), maxCurvature,
+    // singular (how many params have P' = 0; their tooth is 0) }.
+    curvatureComb(curve, params) {
+      return pick(unwrap(raw.curvatureComb(normalizeCurve(curve), numbers(params, 'params'))), ['teeth', 'maxCurvature', 'singular']);
+    },
+    // Control points in homogeneous coordinates (w x, w y, [w z,] w), stride dim + 1.
+    homogeneousLift(points, dim, weights) {
+      return unwrap(raw.homogeneousLift(numbers(points, 'points'), dimension(dim), numbers(weights, 'weights'))).points;
+    },
+    // Bicubic patches (samplePatch's nets): the corners p(0,0), p(0,1), p(1,0), p(1,1) against
+    // the net entries holding them: { corners: [{ entry, distance, interpolated }], tolerance }.
+    patchCornerCheck({ kind, points } = {}) {
+      const r = unwrap(raw.patchCornerCheck(patchKind(kind), numbers(points, 'points')));
+      return { corners: Array.from(r.corners, (c) => ({ entry: c.entry, distance: c.distance, interpolated: c.interpolated })), tolerance: r.tolerance };
+    },
+    // Patch a's u = 1 edge against patch b's u = 0 edge at `samples` values of v:
+    // { positionGap, duGap, c0, c1, tolerance }.
+    patchJoinCheck({ kind, a, b, samples = 17 } = {}) {
+      return pick(unwrap(raw.patchJoinCheck(patchKind(kind), numbers(a, 'a'), numbers(b, 'b'), sampleCount(samples))),
+        ['positionGap', 'duGap', 'c0', 'c1', 'tolerance']);
     },
 
     // Affine map of flat points: matrix is (dim+1)x(dim+1) row-major homogeneous (last row

@@ -6,16 +6,15 @@
 // happens to do: distances from the control points to the sampled curve, the joint
 // classifier on the drawn curves, subdivision checked against the original. "Ease of
 // subdivision" is the lecture's judgement: quoted, never checked.
-import { linspace } from '../../app/arrays.js';
+import { linspace, flat } from '../../app/arrays.js';
 import { formatSize as fmt } from '../../ui/format.js';
-import { FAMILY_IDS, familySegments, inherentSegments, easySegments, nubsCurve, nonUniformKnots, constructionOf } from './families.js';
+import { FAMILY_IDS, familySegments, inherentSegments, easySegments, nubsCurve, nonUniformKnots, constructionOf, pointTangents } from './families.js';
 
+// The measurements are the core's (api.blendingWeightCheck, api.pointCurveDistances,
+// api.splitCheck, api.knotRefinementCheck), with their tolerances relative to the size of the
+// polygon (docs/api-curves.md "Comparison measurements"); this module words them.
 export const SAMPLES_PER_SEGMENT = 101;
-// A control point counts as interpolated when the curve passes within this distance
-// (world units; the drawing spans about 8 units, so this is far below a pixel).
-export const INTERPOLATION_TOLERANCE = 1e-9;
-// Blending weights count as non-negative / summing to one within this tolerance (unitless).
-export const WEIGHT_TOLERANCE = 1e-12;
+// Relative tolerance of the core's joint classifier (api.jointContinuity).
 export const JOINT_TOLERANCE = 1e-6;
 
 // Lecture 003's table (Hermite, Bezier, B-spline, Catmull-Rom): the reference each live
@@ -48,50 +47,29 @@ export function sampleSegments(api, segs) {
   });
 }
 
-function convexHullCell(api, family, sampled) {
-  if (family === 'hermite') {
-    // H2 and H3 multiply tangent vectors, not points: measured, a hull of points does not apply.
-    const b = api.blendingFunctions(sampled[0].curve, sampled[0].params);
-    let tangentWeight = 0;
-    for (let j = 0; j < sampled[0].params.length; j += 1) {
-      for (const i of [2, 3]) tangentWeight = Math.max(tangentWeight, Math.abs(b.values[b.count * j + i]));
-    }
-    if (tangentWeight > WEIGHT_TOLERANCE) return { answer: 'N/A', evidence: `H2, H3 weight tangent vectors (up to ${fmt(tangentWeight)}), not points` };
-  }
-  let minWeight = Infinity;
-  let sumError = 0;
-  for (const s of sampled) {
-    const b = api.blendingFunctions(s.curve, s.params);
-    for (let j = 0; j < s.params.length; j += 1) {
-      let sum = 0;
-      for (let i = 0; i < b.count; i += 1) { const w = b.values[b.count * j + i]; sum += w; minWeight = Math.min(minWeight, w); }
-      sumError = Math.max(sumError, Math.abs(sum - 1));
-    }
-  }
-  const yes = minWeight >= -WEIGHT_TOLERANCE && sumError <= WEIGHT_TOLERANCE;
-  return yes
-    ? { answer: 'Yes', evidence: `weights ≥ 0 (min ${fmt(Math.max(0, minWeight))}), sum 1 (off by ${fmt(sumError)})` }
-    : { answer: 'No', evidence: `a weight reaches ${fmt(minWeight)} < 0` };
+function convexHullCell(api, sampled) {
+  const w = api.blendingWeightCheck(sampled.map((s) => s.curve), SAMPLES_PER_SEGMENT);
+  // Hermite: H2 and H3 multiply tangent vectors, not points: a hull of points does not apply.
+  if (!w.weightsPoints) return { answer: 'N/A', evidence: `H2, H3 weight tangent vectors (up to ${fmt(w.tangentWeight)}), not points` };
+  return w.convexHull
+    ? { answer: 'Yes', evidence: `weights ≥ 0 (min ${fmt(Math.max(0, w.minWeight))}), sum 1 (off by ${fmt(w.sumError)})` }
+    : { answer: 'No', evidence: `a weight reaches ${fmt(w.minWeight)} < 0` };
 }
 
-// Distance from each control point to the nearest sample (segment ends included exactly).
-export function controlPointDistances(points, sampled) {
-  return points.map(([x, y]) => {
-    let best = Infinity;
-    for (const s of sampled) for (let j = 0; j < s.points.length; j += 2) best = Math.min(best, Math.hypot(s.points[j] - x, s.points[j + 1] - y));
-    return best;
-  });
+// Distance from each control point to the nearest sample of the curve (segment ends
+// included exactly), and the points within the core's interpolation tolerance.
+export function controlPointDistances(api, points, sampled) {
+  return api.pointCurveDistances(flat(points), 2, sampled.map((s) => s.curve), SAMPLES_PER_SEGMENT);
 }
 
-// What this polygon does: the control points its curve passes through (within
-// INTERPOLATION_TOLERANCE), whether or not the representation guarantees it.
-function polygonInterpolation(points, sampled) {
-  const d = controlPointDistances(points, sampled);
-  const hit = d.map((x, i) => (x <= INTERPOLATION_TOLERANCE ? i : -1)).filter((i) => i >= 0);
-  const farIndex = d.reduce((best, x, i) => (x > d[best] ? i : best), 0);
-  const nearMiss = d.reduce((best, x, i) => (x > INTERPOLATION_TOLERANCE && (best < 0 || x < d[best]) ? i : best), -1);
-  const some = hit.length ? { answer: 'Yes', evidence: `through P${hit.join(', P')}` } : { answer: 'No', evidence: `nearest P${nearMiss} is ${fmt(d[nearMiss])} away` };
-  const all = hit.length === points.length ? { answer: 'Yes', evidence: 'through every point' } : { answer: 'No', evidence: `P${farIndex} is ${fmt(d[farIndex])} away` };
+// What this polygon does: the control points its curve passes through (within the core's
+// tolerance, relative to the polygon's size), whether or not the representation guarantees it.
+function polygonInterpolation(api, points, sampled) {
+  const m = controlPointDistances(api, points, sampled);
+  const d = Array.from(m.distances);
+  const hit = Array.from(m.interpolated);
+  const some = hit.length ? { answer: 'Yes', evidence: `through P${hit.join(', P')}` } : { answer: 'No', evidence: `nearest P${m.nearestMissed} is ${fmt(d[m.nearestMissed])} away` };
+  const all = hit.length === points.length ? { answer: 'Yes', evidence: 'through every point' } : { answer: 'No', evidence: `P${m.farthest} is ${fmt(d[m.farthest])} away` };
   return { some: { ...some, interpolated: hit }, all: { ...all, interpolated: hit }, distances: d };
 }
 
@@ -112,14 +90,8 @@ function guaranteedInterpolation(g, count) {
 // inserted so the curve can easily be reshaped"): one knot in the middle of every span,
 // and the refined curve must be the same curve.
 function knotInsertionCell(api, sampled) {
-  const s = sampled[0];
-  let curve = s.curve;
-  const spans = api.bsplineToBezier(curve);
-  for (const span of spans) curve = api.insertKnot(curve, (span.start + span.end) / 2).curve;
-  const refined = api.evaluateCurve(curve, s.params);
-  let error = 0;
-  for (let j = 0; j < refined.length; j += 2) error = Math.max(error, Math.hypot(refined[j] - s.points[j], refined[j + 1] - s.points[j + 1]));
-  return { answer: LECTURE_TABLE.subdivision.nubs, quoted: true, evidence: `${spans.length} knots inserted (Boehm), ${s.curve.points.length / 2} → ${curve.points.length / 2} points; curve moved ${fmt(error)}`, error };
+  const k = api.knotRefinementCheck(sampled[0].curve, SAMPLES_PER_SEGMENT);
+  return { answer: LECTURE_TABLE.subdivision.nubs, quoted: true, evidence: `${k.inserted} knots inserted (Boehm), ${k.pointsBefore} → ${k.pointsAfter} points; curve moved ${fmt(k.error)}`, error: k.error };
 }
 
 // The spans of the non-uniform B-spline as separate curves over their own knot intervals
@@ -133,24 +105,7 @@ function spanCurves(api, curve) {
 // Splits every segment at u = 1/2 and measures how far the halves are from the original.
 function subdivisionCell(api, family, sampled) {
   if (family === 'nubs') return knotInsertionCell(api, sampled);
-  let error = 0;
-  const quarter = [0, 0.25, 0.5, 0.75, 1];
-  for (const s of sampled) {
-    let bezier;
-    if (family === 'bezier') bezier = s.curve.points;
-    else if (family === 'hermite') bezier = api.convertBasis([...s.curve.points, ...s.curve.tangents], 2, 'hermite', 'bezier');
-    else bezier = api.convertBasis(s.curve.points, 2, family, 'bezier');
-    const halves = api.subdivideBezier(bezier, 2, 0.5);
-    const left = api.evaluateCurve({ kind: 'bezier', dim: 2, points: halves.left }, quarter);
-    const right = api.evaluateCurve({ kind: 'bezier', dim: 2, points: halves.right }, quarter);
-    const d = api.curveDomain(s.curve);
-    const at = (f) => d.start + f * (d.end - d.start);
-    const original = api.evaluateCurve(s.curve, [...quarter.map((q) => at(q / 2)), ...quarter.map((q) => at(0.5 + q / 2))]);
-    for (let j = 0; j < 5; j += 1) {
-      error = Math.max(error, Math.hypot(left[2 * j] - original[2 * j], left[2 * j + 1] - original[2 * j + 1]),
-        Math.hypot(right[2 * j] - original[10 + 2 * j], right[2 * j + 1] - original[10 + 2 * j + 1]));
-    }
-  }
+  const { error } = api.splitCheck(sampled.map((s) => s.curve));
   const how = family === 'bezier' ? 'G_B^L P and G_B^R P directly'
     : family === 'hermite' ? 'to Bezier (q = M_B⁻¹ M_H g), then split' : 'to Bezier (q = M_B⁻¹ M P) first, then split';
   return { answer: LECTURE_TABLE.subdivision[family], quoted: true, evidence: `${how}; halves match to ${fmt(error)}`, error };
@@ -189,10 +144,10 @@ export function computeTable(api, points) {
   const curves = {};
   const K = points.length;
   for (const family of FAMILY_IDS) {
-    const segs = familySegments(family, points);
+    const segs = familySegments(api, family, points);
     const sampled = sampleSegments(api, segs);
     curves[family] = sampled;
-    const seen = polygonInterpolation(points, sampled);
+    const seen = polygonInterpolation(api, points, sampled);
     const how = family === 'nubs' ? 'from the knots' : 'from the basis matrix';
     const inherentG = guaranteesOf(api, family, K);
     // Hermite and Bezier have a rule for more; B-splines and Catmull-Rom need none.
@@ -201,9 +156,9 @@ export function computeTable(api, points) {
     // The drawn Hermite curve shares tangents (the easy construction); the others are drawn bare.
     const interp = guaranteedInterpolation(family === 'hermite' ? easyG : inherentG, K);
     const subdivision = subdivisionCell(api, family, sampled);
-    const inherentSeen = continuityCell(api, family === 'nubs' ? spanCurves(api, nubsCurve(points)) : inherentSegments(family, points));
+    const inherentSeen = continuityCell(api, family === 'nubs' ? spanCurves(api, nubsCurve(points)) : inherentSegments(api, family, points));
     columns[family] = {
-      convexHull: convexHullCell(api, family, sampled),
+      convexHull: convexHullCell(api, sampled),
       interpolatesSome: interp.some,
       interpolatesAll: interp.all,
       subdivision,
@@ -217,8 +172,8 @@ export function computeTable(api, points) {
       interpolatesAll: seen.all,
       subdivision: { answer: fmt(subdivision.error), evidence: 'largest distance between the split halves and the curve' },
       inherent: inherentSeen,
-      easy: hasRule ? continuityCell(api, easySegments(family, points)) : inherentSeen,
+      easy: hasRule ? continuityCell(api, easySegments(api, family, points)) : inherentSeen,
     };
   }
-  return { columns, polygon, curves, knots: nonUniformKnots(K) };
+  return { columns, polygon, curves, knots: nonUniformKnots(K), tangents: pointTangents(api, points) };
 }

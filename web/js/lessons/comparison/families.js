@@ -1,7 +1,7 @@
 // The four families of lecture 003's table built on one control polygon P0..P(K-1), as
 // curve objects of the core API. Only control data is arranged here; every point on every
 // curve comes from the core.
-import { flat } from '../../app/arrays.js';
+import { flat, pairs } from '../../app/arrays.js';
 
 // Lecture 003's four columns and lecture 001's non-uniform B-spline.
 export const FAMILY_IDS = ['hermite', 'bezier', 'bspline', 'catmull-rom', 'nubs'];
@@ -20,20 +20,14 @@ export function nonUniformKnots(count) {
 }
 export const nubsCurve = (points) => ({ kind: 'bspline', dim: 2, degree: 3, points: flat(points), knots: nonUniformKnots(points.length) });
 
-const sub = (a, b) => [a[0] - b[0], a[1] - b[1]];
-const half = (a) => [a[0] / 2, a[1] / 2];
-
 // Hermite "with tangents from the points": t_i = (P_i+1 - P_i-1) / 2 inside, the one-sided
-// chord at the ends (the Catmull-Rom conditions of lecture 002, p'(0) = (p2 - p0)/2).
-export function pointTangents(points) {
-  const n = points.length;
-  return points.map((_, i) => (i === 0 ? sub(points[1], points[0])
-    : i === n - 1 ? sub(points[n - 1], points[n - 2]) : half(sub(points[i + 1], points[i - 1]))));
-}
+// chord at the ends (the Catmull-Rom conditions of lecture 002, p'(0) = (p2 - p0)/2), from
+// the core: [[x, y], ...].
+export const pointTangents = (api, points) => pairs(api.catmullRomTangents(flat(points), 2));
 
 // Each family as a list of segment curves (joints between consecutive entries) and the
 // control point indices each segment is built from.
-export function familySegments(family, points) {
+export function familySegments(api, family, points) {
   const segs = [];
   // The non-uniform B-spline is evaluated as one curve; its joints are the core's spans.
   if (family === 'nubs') return [nubsCurve(points)];
@@ -41,7 +35,7 @@ export function familySegments(family, points) {
     // Piecewise cubic Bezier: segment i is P3i..P3i+3, neighbours share the end point.
     for (let i = 0; i + 3 < points.length; i += 3) segs.push({ kind: 'bezier', dim: 2, points: flat(points.slice(i, i + 4)) });
   } else if (family === 'hermite') {
-    const t = pointTangents(points);
+    const t = pointTangents(api, points);
     for (let i = 0; i + 1 < points.length; i += 1) {
       segs.push({ kind: 'hermite', dim: 2, points: flat([points[i], points[i + 1]]), tangents: flat([t[i], t[i + 1]]) });
     }
@@ -58,28 +52,34 @@ export function familySegments(family, points) {
 // Hermite segments with their own tangents (each segment's chord at both ends) and Bezier
 // segments that only share end points are C0; B-spline and Catmull-Rom windows overlap,
 // so their joints are what they are.
-export function inherentSegments(family, points) {
+export function inherentSegments(api, family, points) {
   if (family === 'hermite') {
     const segs = [];
     for (let i = 0; i + 1 < points.length; i += 1) {
-      const chord = sub(points[i + 1], points[i]);
-      segs.push({ kind: 'hermite', dim: 2, points: flat([points[i], points[i + 1]]), tangents: flat([chord, chord]) });
+      // The chord P_i+1 - P_i at both ends: the end rule of the tangents from two points.
+      const own = flat([points[i], points[i + 1]]);
+      segs.push({ kind: 'hermite', dim: 2, points: own, tangents: api.catmullRomTangents(own, 2) });
     }
     return segs;
   }
-  return familySegments(family, points);
+  return familySegments(api, family, points);
 }
 
 // The "easily achieved" version (lecture 001 "Achieving Continuity"): Hermite shares the
 // tangent at the joint; Bezier makes P3i-1, P3i, P3i+1 collinear with equal legs
 // (P3i+1 = 2 P3i - P3i-1). B-spline and Catmull-Rom need nothing.
-export function easySegments(family, points) {
+export function easySegments(api, family, points) {
   if (family === 'bezier') {
-    const q = points.map((p) => p.slice());
-    for (let j = 3; j + 1 < q.length; j += 3) q[j + 1] = [2 * q[j][0] - q[j - 1][0], 2 * q[j][1] - q[j - 1][1]];
-    return familySegments('bezier', q);
+    // The core's C1 constraint at every joint, left to right (docs/api-curves.md): the
+    // segments as 4 entries each, the right leg moved to R1 = 2 J - L2.
+    const entries = [];
+    for (let i = 0; i + 3 < points.length; i += 3) entries.push(...points.slice(i, i + 4));
+    const q = api.enforceConstraint(flat(entries), 2, 'bezier', 'C1');
+    const segs = [];
+    for (let s = 0; 8 * s < q.length; s += 1) segs.push({ kind: 'bezier', dim: 2, points: q.slice(8 * s, 8 * s + 8) });
+    return segs;
   }
-  return familySegments(family, points);
+  return familySegments(api, family, points);
 }
 
 // Each family's construction as the core's guarantee check reads it (issue 13 item 8):

@@ -6,7 +6,7 @@ import { object, list, number, oneOf, integer, boolean, viewSchema } from '../..
 import { h, panel, table, setChildren } from '../../app/dom.js';
 import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
 import { formatSize as fmtDistance } from '../../ui/format.js';
-import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH, pointTangents } from './families.js';
+import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH } from './families.js';
 import { computeTable, LECTURE_TABLE, ROW_NAMES } from './checks.js';
 import { computeConversion, computeInvariance } from './transforms.js';
 import { drawCurve, drawPolygon, drawLegend } from '../../ui/curve-overlays.js';
@@ -223,7 +223,7 @@ export const lesson = {
         legend.push([strokeOf(f), `${FAMILY_NAMES[f]}${f === 'catmull-rom' ? ' (end points repeated)' : f === 'nubs' ? ` (knots ${model.table.knots.join(', ')})` : f === 'hermite' ? ', t_i = (P_i+1 − P_i−1)/2: Catmull-Rom inside' : ''}`, FAMILY_DASH[f]]);
       }
       if (state.show.hermite) {
-        const t = pointTangents(state.points);
+        const t = model.table.tangents;
         state.points.forEach((p, i) => painter.arrow(p[0], p[1], p[0] + t[i][0] / 3, p[1] + t[i][1] / 3, { stroke: strokeOf('hermite'), width: 1.2, alpha: 0.8 }));
       }
     } else if (state.scene === 'conversion') {
@@ -294,13 +294,10 @@ function blendingOfFirstSegment(api, family, points) {
     : family === 'bspline' ? { kind: 'bspline', dim: 2, points: points.slice(0, 4).flat() }
       : { kind: 'catmull-rom', dim: 2, points: [points[0], ...points.slice(0, 3)].flat() };
   const b = api.blendingFunctions(curve, params);
-  let minWeight = Infinity;
-  let uMin = 0;
-  for (let j = 0; j < params.length; j += 1) {
-    for (let i = 0; i < b.count; i += 1) if (b.values[b.count * j + i] < minWeight) { minWeight = b.values[b.count * j + i]; uMin = params[j]; }
-  }
+  // The smallest weight and where it first occurs, from the core (the same 101 parameters).
+  const w = api.blendingWeightCheck([curve], params.length);
   const labels = family === 'catmull-rom' ? ['P0', 'P0', 'P1', 'P2'] : ['P0', 'P1', 'P2', 'P3'];
-  return { family, params, count: b.count, values: b.values, minWeight, uMin, labels };
+  return { family, params, count: b.count, values: b.values, minWeight: w.minWeight, uMin: w.minWeightAt, labels };
 }
 
 function updateTable(body, tbl) {

@@ -3,8 +3,7 @@
 // read; nothing here draws. One core call per curve and purpose (batch API): the samples,
 // the blending values at the same parameters, the derivatives at u, the segment matrices.
 import { curveSpec, familyDegree, isSpline, usesKnots } from './families.js';
-import { convexHull } from './hull.js';
-import { linspace, pairs } from '../../app/arrays.js';
+import { linspace, pairs, flat } from '../../app/arrays.js';
 
 export const SAMPLES_PER_CURVE = 1000;
 const COMB_SAMPLES = 120;
@@ -15,6 +14,10 @@ const PLOT_PARAMS = 250;
 // The parameters are uniform in the parameter (linspace), as the lecture samples a curve
 // (the sample-points overlay shows how uneven that is along the curve).
 const uniformParams = linspace;
+
+// The convex hull of control points (the hull overlay, lectures 001 and 003: a Bezier or
+// B-spline curve lies inside it): the core's hull, counter-clockwise, as [x, y] pairs.
+const convexHull = (api, points) => Array.from(api.convexHull(flat(points)).indices, (i) => points[i]);
 
 // The lesson's model cache (kept in its view, one per page): the parts that depend only on
 // the curve (not on u, the overlays or the construction step), so playing u or stepping a
@@ -84,8 +87,8 @@ export function computeCurveModel(api, state, cache) {
     d2: [pd[4], pd[5]],
     segment,
     segmentIndex,
-    hull: convexHull(state.points),
-    segmentHull: convexHull(segmentPointIndices(segment, state).map((i) => state.points[i])),
+    hull: convexHull(api, state.points),
+    segmentHull: convexHull(api, segmentPointIndices(segment, state).map((i) => state.points[i])),
     knots: null,
     comb: null,
     construction: null,
@@ -117,27 +120,12 @@ function segmentPointIndices(segment, state) {
   return ids.filter((i) => i >= 0 && i < K);
 }
 
-// The comb (lecture 004): at each sample a tooth along the left normal (-t_y, t_x) of the
-// core's unit tangent, of length proportional to the core's signed curvature, so the teeth
-// stand on the concave side (the side the curve turns to). At a cusp the core reports
-// singular[j] = 1 with curvature 0: that tooth has length 0, never NaN.
+// The comb (lecture 004), from the core: at each sample a tooth along the left normal
+// (-t_y, t_x) of the unit tangent, of length the signed curvature, so the teeth stand on the
+// concave side (the side the curve turns to). At a cusp the tooth has length 0, never NaN.
 function curvatureComb(api, spec, domain) {
-  const params = uniformParams(domain.start, domain.end, COMB_SAMPLES);
-  const p = api.evaluateCurve(spec, params);
-  const k = api.curvature(spec, params);
-  const kappa = k.signedCurvature;
-  let maxK = 0;
-  for (let j = 0; j < COMB_SAMPLES; j += 1) maxK = Math.max(maxK, Math.abs(kappa[j]));
-  const teeth = new Float64Array(COMB_SAMPLES * 4);
-  for (let j = 0; j < COMB_SAMPLES; j += 1) {
-    const tx = k.tangent[2 * j];
-    const ty = k.tangent[2 * j + 1];
-    teeth[4 * j] = p[2 * j];
-    teeth[4 * j + 1] = p[2 * j + 1];
-    teeth[4 * j + 2] = kappa[j] * -ty;
-    teeth[4 * j + 3] = kappa[j] * tx;
-  }
-  return { teeth, maxCurvature: maxK, count: COMB_SAMPLES, singular: k.singular.reduce((a, b) => a + b, 0) };
+  const c = api.curvatureComb(spec, uniformParams(domain.start, domain.end, COMB_SAMPLES));
+  return { teeth: c.teeth, maxCurvature: c.maxCurvature, count: COMB_SAMPLES, singular: c.singular };
 }
 
 // Lecture 004's comparison: the same points through one cubic spline. Catmull-Rom with the
@@ -154,8 +142,9 @@ function interpolatingSpline(api, state) {
 // The NURBS as the shadow of a polynomial B-spline in 3D: control points (w x, w y, w), the
 // same knots; its points divided by w give the rational curve (lectures 001, 002).
 function homogeneousView(api, state, spec, part, u) {
-  const lifted = state.points.map(([x, y], i) => [x * state.weights[i], y * state.weights[i], state.weights[i]]);
-  const spec3 = { kind: 'bspline', dim: 3, degree: state.degree, knots: spec.knots, points: Float64Array.from(lifted.flat()) };
+  const h = api.homogeneousLift(spec.points, 2, state.weights);
+  const lifted = Array.from({ length: h.length / 3 }, (_, i) => [h[3 * i], h[3 * i + 1], h[3 * i + 2]]);
+  const spec3 = { kind: 'bspline', dim: 3, degree: state.degree, knots: spec.knots, points: h };
   const params = uniformParams(part.domain.start, part.domain.end, 200);
   const curve3 = api.evaluateCurve(spec3, params);
   const at = api.evaluateCurve(spec3, Float64Array.of(u));

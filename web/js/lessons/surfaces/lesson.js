@@ -14,7 +14,6 @@ import { defaultBezierNet, handleOf, hermiteEntryFromHandle, entryName, joinPatc
 const GRID = 17; // samples per direction: u = i / 16
 const ISO_EVERY = 2; // an iso-curve every 2 grid steps: u, v = 0, 1/8, ..., 1
 const TWIST_SCALE = 1 / 9; // p_uv drawn at 1/9: the Bezier relation p_uv(0,0) = 9 (p00 - p01 - p10 + p11)
-const CORNER_TOLERANCE = 1e-12; // world units: a corner "is" its control point
 const triple = list(number({ min: -100, max: 100 }), { min: 3, max: 3 });
 const net16 = list(triple, { min: 16, max: 16 });
 const PATCHES = ['a', 'b'];
@@ -41,35 +40,12 @@ function defaultState() {
   };
 }
 
-// Converts a whole net between the Hermite and Bezier bases with the core's curve
-// conversion, first down every column (along u), then along every row (along v):
-// Q = (M_to^-1 M_from) P (M_to^-1 M_from)^T (lecture 002's q = M^-1 M_B P, twice).
+// Converts a whole net between the Hermite and Bezier bases in the core
+// (Q = C P C^T, C = M_to^-1 M_from: lecture 002's q = M^-1 M_B P down the columns, then
+// along the rows), back to the state's 16 [x, y, z] entries.
 function convertNet(api, net, from, to) {
-  const cols = [];
-  for (let j = 0; j < 4; j += 1) cols.push(api.convertBasis([0, 1, 2, 3].flatMap((i) => net[4 * i + j]), 3, from, to));
-  const out = new Array(16);
-  for (let i = 0; i < 4; i += 1) {
-    const row = api.convertBasis([0, 1, 2, 3].flatMap((j) => at3(cols[j], i)), 3, from, to);
-    for (let j = 0; j < 4; j += 1) out[4 * i + j] = at3(row, j).map((v) => (Math.abs(v) < 1e-14 ? 0 : v));
-  }
-  return out;
-}
-
-function cornerEntries(kind) {
-  // (u, v) corner -> entry index of the geometry matrix holding that corner's point.
-  return kind === 'bezier'
-    ? [[0, 0, 0], [0, 1, 3], [1, 0, 12], [1, 1, 15]]
-    : [[0, 0, 0], [0, 1, 1], [1, 0, 4], [1, 1, 5]];
-}
-
-function maxGap(a, b) {
-  let d = 0;
-  for (let k = 0; k < a.length; k += 3) d = Math.max(d, Math.hypot(a[k] - b[k], a[k + 1] - b[k + 1], a[k + 2] - b[k + 2]));
-  return d;
-}
-
-function boundaryRow(values, i) {
-  return values.slice(3 * GRID * i, 3 * GRID * (i + 1));
+  const q = api.convertPatchBasis(flat(net), from, to);
+  return Array.from({ length: 16 }, (_, e) => at3(q, e));
 }
 
 function netHandles(state) {
@@ -135,21 +111,18 @@ export const lesson = {
     for (const patch of PATCHES) {
       if (patch === 'b' && !state.joined) continue;
       const s = api.samplePatch({ kind: state.kind, points: flat(state[patch]), nu: GRID, nv: GRID });
-      const corners = cornerEntries(state.kind).map(([u, v, entry]) => {
-        const value = at3(s.positions, gridIndex(u * (GRID - 1), v * (GRID - 1)));
-        const control = state[patch][entry];
-        return { u, v, entry, value, control, distance: Math.hypot(value[0] - control[0], value[1] - control[1], value[2] - control[2]) };
+      // The core compares each corner with the net entry holding it (tolerance relative to the patch's size).
+      const check = api.patchCornerCheck({ kind: state.kind, points: flat(state[patch]) });
+      const corners = check.corners.map(({ entry, distance, interpolated }, c) => {
+        const [u, v] = [c >> 1, c & 1];
+        return { u, v, entry, value: at3(s.positions, gridIndex(u * (GRID - 1), v * (GRID - 1))), control: state[patch][entry], distance, interpolated };
       });
       patches[patch] = { samples: s, corners };
     }
     let boundary = null;
     if (state.joined) {
-      const A = patches.a.samples;
-      const B = patches.b.samples;
-      boundary = {
-        positionGap: maxGap(boundaryRow(A.positions, GRID - 1), boundaryRow(B.positions, 0)),
-        duGap: maxGap(boundaryRow(A.du, GRID - 1), boundaryRow(B.du, 0)),
-      };
+      // A's u = 1 edge against B's u = 0 edge, C0 / C1 within the core's tolerance.
+      boundary = api.patchJoinCheck({ kind: state.kind, a: flat(state.a), b: flat(state.b), samples: GRID });
     }
     return { state, patches, boundary, M: api.basisMatrix(state.kind) };
   },
@@ -288,7 +261,7 @@ export const lesson = {
       p.corners.forEach((c, idx) => {
         const tw = at3(p.samples.twists, idx);
         cornerRows.push([`${PATCH_NAMES[patch]}: p(${c.u},${c.v})`, fmt3(c.value), `${entryName(state.kind, Math.floor(c.entry / 4), c.entry % 4)} ${fmt3(c.control)}`,
-          c.distance <= CORNER_TOLERANCE ? `0 ✓ (${c.distance.toExponential(0)})` : fmt(c.distance), fmt3(tw)]);
+          c.interpolated ? `0 ✓ (${c.distance.toExponential(0)})` : fmt(c.distance), fmt3(tw)]);
       });
     }
     view.cornersBody.replaceChildren(table({
@@ -298,8 +271,7 @@ export const lesson = {
 
     if (model.boundary) {
       const b = model.boundary;
-      const c0 = b.positionGap <= 1e-9;
-      const c1 = c0 && b.duGap <= 1e-9;
+      const { c0, c1 } = b;
       view.boundaryBody.replaceChildren(
         h('p', { id: 'boundary-verdict', 'data-c0': String(c0), 'data-c1': String(c1) },
           `Across A's u = 1 edge and B's u = 0 edge: position gap ${b.positionGap.toExponential(1)} (${c0 ? 'C0 ✓' : 'not C0'}), p_u gap ${b.duGap.toExponential(1)} (${c1 ? 'C1 ✓' : 'not C1'}).`),
