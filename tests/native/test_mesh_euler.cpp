@@ -568,3 +568,23 @@ TEST_CASE("the bounding box leaves out a removed vertex", "[mesh][euler]") {
     CHECK(box.min == glm::dvec3(0, 0, 0));
     CHECK(box.max == glm::dvec3(2, 2, 0));
 }
+
+TEST_CASE("join-faces refuses to leave a dangling edge at a vertex of valence 2", "[mesh][euler]") {
+    // F1 = (v1 v2 v3 v4) and F2 = (v1 v4 v3 v5) share e = v3-v4 and v4-v1: v4 has only those
+    // two edges. Removing v3-v4 would leave v4-v1 with the joined face on both sides.
+    IndexedMesh m;
+    m.add_vertex(0, 0, 0), m.add_vertex(2, 0, 0), m.add_vertex(2, 2, 0), m.add_vertex(1, 1, 0), m.add_vertex(0, 2, 0);
+    m.add_face({0, 1, 2, 3});
+    m.add_face({0, 3, 2, 4});
+    WingedEdgeMesh w = WingedEdgeMesh::build(m);
+    int32_t e = kNone;
+    for (int32_t i = 0; i < w.edge_count(); ++i)
+        if (std::minmax(w.edge(i).start, w.edge(i).end) == std::minmax(2, 3)) e = i;
+    REQUIRE(e != kNone);
+    const Snapshot before = snapshot(w);
+    const CheckResult r = w.check_join_faces(Edge(e));
+    CHECK(r.code == "faces-touch-elsewhere");
+    CHECK(r.message == "F1 and F2 also meet at v1: joining them across " + edge_label(e) + " would make a face that passes v1 twice");
+    CHECK_THROWS(w.join_faces(Edge(e)));
+    CHECK(snapshot(w) == before);
+}

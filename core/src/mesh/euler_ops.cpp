@@ -214,21 +214,24 @@ struct EulerAccess {
         if (const char* c = element(m, b, m.vertex_count())) return refuse(c, b.idx, kVertexKind);
         if (a == b) return refuse("same-vertex", a.idx);
         // One walk along f (the lecture's rule, next_in_face) finds the sides at a and b.
+        // The side leaving a corner follows the one arriving there.
         FaceSides found;
+        Half before;
         const int32_t first = m.face_edge_[f.idx];
         int32_t x = first, n = 0;
         do {
             const EdgeRecord& r = m.edges_[x];
             const bool left = r.left == f.idx;
-            const int32_t tail = left ? r.start : r.end, head = left ? r.end : r.start;
-            if (head == a.idx) found.into_a = {x, left};
-            if (tail == a.idx) found.out_of_a = {x, left};
-            if (head == b.idx) found.into_b = {x, left};
-            if (tail == b.idx) found.out_of_b = {x, left};
+            const int32_t tail = left ? r.start : r.end;
+            if (tail == a.idx) found.out_of_a = {x, left}, found.into_a = before;
+            if (tail == b.idx) found.out_of_b = {x, left}, found.into_b = before;
+            before = {x, left};
             x = m.next_in_face(x, f.idx);
         } while (x != first && ++n <= m.edge_count());
         if (found.out_of_a.e == kNone) return refuse("not-a-corner", a.idx, f.idx);
         if (found.out_of_b.e == kNone) return refuse("not-a-corner", b.idx, f.idx);
+        if (found.into_a.e == kNone) found.into_a = before; // a starts the walk: the last side arrives there
+        if (found.into_b.e == kNone) found.into_b = before;
         const int32_t existing = edge_between(m, a.idx, b.idx);
         if (existing != kNone) {
             const EdgeRecord& r = m.edges_[existing];
