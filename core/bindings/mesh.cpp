@@ -416,13 +416,16 @@ val change_value(const ChangeRecord& c) {
         row.set("fields", fields);
         rows.set(i, row);
     }
-    // Euler operations: every assignment in order, five int32 per step [table, row, field,
-    // before, after] (indices into meshOperationDescriptors().tables / .fields), and the
-    // positions set, eight numbers each [vertex, before xyz, after xyz, step].
+    // Euler operations: every assignment in order, six int32 per step [table, row, field,
+    // before, after, phase] (indices into meshOperationDescriptors().tables / .fields, and
+    // into this record's phases), and the positions set, eight numbers each [vertex, before
+    // xyz, after xyz, step].
     std::vector<int32_t> steps;
-    steps.reserve(5 * c.steps.size());
+    steps.reserve(6 * c.steps.size());
     for (const AssignmentStep& s : c.steps)
-        steps.insert(steps.end(), {static_cast<int32_t>(s.table), s.row, change_field_index(s.field), s.before, s.after});
+        steps.insert(steps.end(), {static_cast<int32_t>(s.table), s.row, change_field_index(s.field), s.before, s.after, s.phase});
+    val phases = val::array();
+    for (std::size_t k = 0; k < c.phases.size(); ++k) phases.set(k, c.phases[k]);
     std::vector<double> positions;
     for (const PositionChange& p : c.positions)
         positions.insert(positions.end(), {static_cast<double>(p.vertex), p.before.x, p.before.y, p.before.z, p.after.x, p.after.y,
@@ -430,6 +433,7 @@ val change_value(const ChangeRecord& c) {
     val r = val::object();
     r.set("op", c.op);
     r.set("steps", to_typed_array(steps));
+    r.set("phases", phases);
     r.set("positions", to_typed_array(positions));
     r.set("added", element_list(c.added_vertices, c.added_edges, c.added_faces));
     r.set("removed", element_list(c.removed_vertices, c.removed_edges, c.removed_faces));
@@ -570,7 +574,7 @@ val mesh_operation_descriptors() {
         r.set("operations", ops);
         r.set("tables", names(change_tables()));
         r.set("fields", names(change_fields()));
-        r.set("stepStride", 5);
+        r.set("stepStride", 6);
         r.set("positionStride", 8);
         return r;
     });

@@ -92,6 +92,8 @@ test('a student splits e3 with the pointer, steps through the assignments, undoe
     (cells) => cells.map((c) => [c.closest('table').id, c.parentElement.children[0].textContent.trim(), [...c.parentElement.children].indexOf(c)]));
   assert.deepEqual(marked, [['we-vertex-table', 'v6', 4]], 'one cell is being written');
   assert.match(await page.textContent('#edit-steps li.is-current'), /vertex table, v6 · edge: — → e8/);
+  // ... and the algorithm's first line is the one marked (the core sends its lines).
+  assert.equal(await page.$eval('#edit-phases li.is-current', (li) => Number(li.dataset.line)), 0);
   await page.click('#edit-end');
   await page.waitForFunction((n) => document.querySelector('#edit-step')?.textContent === `${n} of ${n}`, total);
   assert.deepEqual(rowOf(await tableCells(page, 'we-edge-table'), 'e3'), SPLIT_E3.e3);

@@ -332,6 +332,12 @@ TEST_CASE("split-edge e3 of the lecture mesh: hand-worked tables and the steps i
     CHECK(c.before == MeshVersion{0, 0});
     CHECK(c.after == MeshVersion{1, 1});
     CHECK(w.counts().euler() == 1);
+    // The lines the player highlights: the new vertex's edge is line 0, the new edge's eight
+    // fields line 1, e3's three line 2, the neighbours at v3 and v3's edge line 3.
+    REQUIRE(c.phases.size() == 4);
+    std::vector<int32_t> phase_of_step;
+    for (const AssignmentStep& s : c.steps) phase_of_step.push_back(s.phase);
+    CHECK(phase_of_step == std::vector<int32_t>{0, 1, 1, 1, 1, 1, 1, 1, 1, 2, 2, 2, 3, 3, 3});
 }
 
 TEST_CASE("flip-edge e3 of the lecture mesh: e3 becomes v4 -> v1", "[mesh][euler]") {
@@ -490,6 +496,13 @@ TEST_CASE("random seeded operation sequences: valid, Euler, rebuild, refusals, r
             ++accepted[call.op];
             accepted_on[fx.name].insert(call.op);
             const ChangeRecord c = run(w, call);
+            // Every assignment belongs to one of the algorithm's lines, in the order they run.
+            int32_t last_phase = 0;
+            for (const AssignmentStep& s : c.steps) {
+                REQUIRE(s.phase >= last_phase);
+                REQUIRE(s.phase < static_cast<int32_t>(c.phases.size()));
+                last_phase = s.phase;
+            }
             REQUIRE(run_unrecorded(twin, call));
             REQUIRE(snapshot(twin) == snapshot(w));
             const ValidationReport rep = w.validate();

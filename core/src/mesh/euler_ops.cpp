@@ -41,6 +41,7 @@ namespace {
 struct NoRecorder {
     bool moved = false; // a position was set (the geometry version moves on)
     void step(MeshTable, int32_t, const char*, int32_t, int32_t) {}
+    void phase(const char*) {}
     void position(int32_t, const glm::dvec3&, const glm::dvec3&) { moved = true; }
     void added(Vertex) {}
     void added(Edge) {}
@@ -54,7 +55,11 @@ struct NoRecorder {
 struct Recording {
     ChangeRecord& c;
     void step(MeshTable t, int32_t row, const char* field, int32_t before, int32_t after) {
-        c.steps.push_back({t, row, field, before, after});
+        c.steps.push_back({t, row, field, before, after, static_cast<int32_t>(c.phases.size()) - 1});
+    }
+    // The algorithm's next line (its comment in the source): the steps after it are its.
+    void phase(const char* line) {
+        if (c.phases.empty() || c.phases.back() != line) c.phases.emplace_back(line);
     }
     void position(int32_t v, const glm::dvec3& before, const glm::dvec3& after) {
         c.positions.push_back({v, before, after, c.steps.size()});
@@ -519,10 +524,11 @@ template <class R> void WingedEdgeMesh::split_edge_impl(Edge e_, double t, R& re
     const Half after_in_L = A::next(*this, a);  // leaves E along L
     const Half before_in_R = A::prev(*this, b); // arrives at E along R
     const int32_t S = edges_[e].start, E = edges_[e].end, L = edges_[e].left, Rf = edges_[e].right;
+    rec.phase("a new vertex m at (1 - t) S + t E and a new edge n; m stores n");
     const int32_t m = Rows::new_vertex(*this, (1.0 - t) * position(S) + t * position(E), rec);
     const int32_t n = Rows::new_edge(*this, rec);
     w.set_vertex_edge(m, n);
-    // the new edge's row: S, E, L, R and its four wings
+    rec.phase("the new edge's row: m -> E, the faces L and R of e, its four wings");
     w.start(n, m);
     w.end(n, E);
     w.left(n, L);
@@ -531,11 +537,11 @@ template <class R> void WingedEdgeMesh::split_edge_impl(Edge e_, double t, R& re
     w.start_right(n, e);
     w.end_left(n, after_in_L.e);
     w.end_right(n, before_in_R.e);
-    // e now ends at m, and its wings at its end are n on both sides
+    rec.phase("e now ends at m, and its wings at its end are n on both sides");
     w.end(e, m);
     w.end_left(e, n);
     w.end_right(e, n);
-    // the neighbours at E that pointed at e now point at n
+    rec.phase("the neighbours at E that pointed at e now point at n (and E's stored edge)");
     w.set_prev(after_in_L, n);
     w.set_next(before_in_R, n);
     if (vertex_edge_[E] == e) w.set_vertex_edge(E, n);
@@ -549,6 +555,7 @@ template <class R> void WingedEdgeMesh::split_face_impl(Face f_, const FaceSides
     const int32_t f = f_.idx, a = sides.a, b = sides.b;
     // the sides of f at a and b, as the check found them
     const Half into_a = sides.into_a, out_of_a = sides.out_of_a, into_b = sides.into_b, out_of_b = sides.out_of_b;
+    rec.phase("a new edge n = a -> b with f on its left and a new face g on its right; its wings");
     const int32_t n = Rows::new_edge(*this, rec);
     const int32_t g = Rows::new_face(*this, rec);
     w.start(n, a);
@@ -559,12 +566,12 @@ template <class R> void WingedEdgeMesh::split_face_impl(Face f_, const FaceSides
     w.end_left(n, out_of_b.e);
     w.start_right(n, out_of_a.e);
     w.end_right(n, into_b.e);
-    // the wings that now meet n
+    rec.phase("the sides of f at a and b now meet n in their wings");
     w.set_next(into_a, n);
     w.set_prev(out_of_b, n);
     w.set_prev(out_of_a, n);
     w.set_next(into_b, n);
-    // the sides from a round to b now belong to g
+    rec.phase("the sides from a round to b now belong to g; g (and f, if its edge moved) store n");
     bool face_edge_moved = false;
     for (Half h = out_of_a;;) {
         const bool last = h.e == into_b.e && h.left == into_b.left;
@@ -590,18 +597,19 @@ template <class R> void WingedEdgeMesh::join_faces_impl(Edge e_, R& rec) {
     const Half pa = A::prev(*this, a), na = A::next(*this, a), pb = A::prev(*this, b), nb = A::next(*this, b);
     const int32_t S = edges_[e].start, E = edges_[e].end, L = edges_[e].left, Rf = edges_[e].right;
     const int32_t keep = std::min(L, Rf), gone = std::max(L, Rf);
-    // every side of the face that goes now belongs to the one kept
+    rec.phase("every side of the face that goes now belongs to the one kept");
     const Half along_gone = gone == L ? a : b;
     for (Half x = A::next(*this, along_gone); x.e != e;) {
         const Half following = A::next(*this, x);
         w.set_face(x, keep);
         x = following;
     }
-    // close the gap e leaves: on each side the edge before e meets the edge after it
+    rec.phase("close the gap e leaves: on each side the edge before e meets the edge after it");
     w.set_next(pa, nb.e);
     w.set_prev(nb, pa.e);
     w.set_next(pb, na.e);
     w.set_prev(na, pb.e);
+    rec.phase("S, E and the face kept stop storing e; e and the face that went are removed");
     if (vertex_edge_[S] == e) w.set_vertex_edge(S, nb.e);
     if (vertex_edge_[E] == e) w.set_vertex_edge(E, na.e);
     if (face_edge_[keep] == e) w.set_face_edge(keep, na.e);
@@ -621,25 +629,26 @@ template <class R> void WingedEdgeMesh::flip_edge_impl(Edge e_, R& rec) {
     const Half b1 = A::next(*this, b), b2 = A::next(*this, b1); // S -> d, d -> E
     const int32_t S = edges_[e].start, E = edges_[e].end, L = edges_[e].left, Rf = edges_[e].right;
     const int32_t c = A::head(*this, a1), d = A::head(*this, b1);
-    // e's row: d -> c, wings b1 and a2 in L, b2 and a1 in R
+    rec.phase("e's row: d -> c; its wings are the two sides at d and the two at c");
     w.start(e, d);
     w.end(e, c);
     w.start_left(e, b1.e);
     w.end_left(e, a2.e);
     w.start_right(e, b2.e);
     w.end_right(e, a1.e);
-    // L = (c, S, d): a2 -> b1 -> e
+    rec.phase("L becomes (c, S, d): the side S -> d moves into L");
     w.set_prev(a2, e);
     w.set_next(a2, b1.e);
     w.set_face(b1, L);
     w.set_prev(b1, a2.e);
     w.set_next(b1, e);
-    // R = (d, E, c): b2 -> a1 -> e
+    rec.phase("R becomes (d, E, c): the side E -> c moves into R");
     w.set_prev(b2, e);
     w.set_next(b2, a1.e);
     w.set_face(a1, Rf);
     w.set_prev(a1, b2.e);
     w.set_next(a1, e);
+    rec.phase("S and E stop storing e; L and R store an edge of their own");
     if (vertex_edge_[S] == e) w.set_vertex_edge(S, b1.e);
     if (vertex_edge_[E] == e) w.set_vertex_edge(E, a1.e);
     if (face_edge_[L] == a1.e) w.set_face_edge(L, e);
@@ -661,8 +670,9 @@ template <class R> void WingedEdgeMesh::collapse_edge_impl(Edge e_, double t, R&
     const int32_t S = edges_[e].start, E = edges_[e].end, L = edges_[e].left, Rf = edges_[e].right;
     const bool tri_L = L != kNone && A::loop_size(*this, a, 4) == 3;
     const bool tri_R = Rf != kNone && A::loop_size(*this, b, 4) == 3;
+    rec.phase("S moves to (1 - t) S + t E");
     Rows::set_position(*this, S, (1.0 - t) * position(S) + t * position(E), rec);
-    // every edge at E (but e and the edges E-c that go) now ends at S
+    rec.phase("every edge at E (but e and the edges E-c that go) now ends at S");
     for (int32_t x = next_ccw(e, E); x != e;) {
         const int32_t following = next_ccw(x, E);
         if (!(tri_L && x == na.e) && !(tri_R && x == pb.e)) {
@@ -677,6 +687,7 @@ template <class R> void WingedEdgeMesh::collapse_edge_impl(Edge e_, double t, R&
     // splices goes first: at a boundary corner of valence 2 the neighbour of one side's
     // edge is the other side's (an ear of the boundary).
     const auto side_L = [&] {
+        rec.phase(tri_L ? "the triangle L goes: its edge c-S takes over the other side of E-c" : "in L the edge before e meets the edge after it");
         if (tri_L) {
             const Half gone = A::twin(na), kept = pa; // gone: c -> E outside L; kept: c -> S in L
             const Half before = A::prev(*this, gone), after = A::next(*this, gone);
@@ -695,6 +706,7 @@ template <class R> void WingedEdgeMesh::collapse_edge_impl(Edge e_, double t, R&
         }
     };
     const auto side_R = [&] {
+        rec.phase(tri_R ? "the triangle R goes: its edge S-d takes over the other side of E-d" : "in R the edge before e meets the edge after it");
         if (tri_R) {
             const Half gone = A::twin(pb), kept = nb; // gone: E -> d outside R; kept: S -> d in R
             const Half before = A::prev(*this, gone), after = A::next(*this, gone);
@@ -719,6 +731,7 @@ template <class R> void WingedEdgeMesh::collapse_edge_impl(Edge e_, double t, R&
         side_L();
         side_R();
     }
+    rec.phase("S stops storing e; e, E and the triangles' edges and faces are removed");
     if (vertex_edge_[S] == e) w.set_vertex_edge(S, pa.e);
     Rows::remove(*this, Edge(e), rec);
     Rows::remove(*this, Vertex(E), rec);
@@ -752,12 +765,14 @@ template <class R> void WingedEdgeMesh::poke_face_impl(Face f_, R& rec) {
     }
     const int32_t n = static_cast<int32_t>(sides.size());
     centroid /= static_cast<double>(n);
+    rec.phase("a new vertex v at the centroid, n new edges v -> corner, n - 1 new faces");
     const int32_t v = Rows::new_vertex(*this, centroid, rec);
     std::vector<int32_t> spoke(n), tri(n);
     for (int32_t i = 0; i < n; ++i) spoke[i] = Rows::new_edge(*this, rec);
     tri[0] = f;
     for (int32_t i = 1; i < n; ++i) tri[i] = Rows::new_face(*this, rec);
     w.set_vertex_edge(v, spoke[0]);
+    rec.phase("each spoke's row: v -> its corner, the triangles on its two sides, its wings");
     for (int32_t i = 0; i < n; ++i) {
         const int32_t s = spoke[i], next_i = (i + 1) % n, prev_i = (i + n - 1) % n;
         w.start(s, v);
@@ -769,6 +784,7 @@ template <class R> void WingedEdgeMesh::poke_face_impl(Face f_, R& rec) {
         w.end_left(s, sides[i].e);
         w.end_right(s, sides[prev_i].e);
     }
+    rec.phase("each side of f now borders its own triangle and meets the two spokes at its ends");
     for (int32_t i = 0; i < n; ++i) {
         w.set_face(sides[i], tri[i]);
         w.set_prev(sides[i], spoke[i]);

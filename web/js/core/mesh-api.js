@@ -117,15 +117,15 @@ function storageValue(s) {
 }
 
 // A change record as the core sends it, read by the descriptor (meshOperationDescriptors):
-// steps are `stepStride` int32 each [table, row, field, before, after] naming
+// steps are `stepStride` int32 each [table, row, field, before, after, phase] naming
 // descriptor.tables / descriptor.fields; positions `positionStride` numbers each [vertex,
 // before xyz, after xyz, step].
 function readChange(r, descriptor) {
   const { tables, fields, stepStride, positionStride } = descriptor;
   const steps = [];
   for (let k = 0; k + stepStride <= r.steps.length; k += stepStride) {
-    const [t, row, f, before, after] = r.steps.subarray(k, k + stepStride);
-    steps.push({ table: tables[t], row, field: fields[f], before, after });
+    const [t, row, f, before, after, phase] = r.steps.subarray(k, k + stepStride);
+    steps.push({ table: tables[t], row, field: fields[f], before, after, phase });
   }
   const positions = [];
   for (let k = 0; k + positionStride <= r.positions.length; k += positionStride) {
@@ -137,6 +137,8 @@ function readChange(r, descriptor) {
     added: r.added,
     removed: r.removed,
     steps,
+    // The algorithm's lines in order (its source comments); steps[i].phase indexes them.
+    phases: Array.from(r.phases ?? []),
     rows: r.rows,
     positions,
     before: { ...r.before },

@@ -143,6 +143,7 @@ struct AssignmentStep {
     std::string field;
     int32_t before = kNone;
     int32_t after = kNone;
+    int32_t phase = kNone; // which of ChangeRecord::phases (the algorithm's line) made it
 };
 // A vertex position set by an operation: a new vertex (before = its coordinates too, as it
 // had none) or a moved one (collapse). `step` = how many assignment steps came before it.
@@ -163,6 +164,9 @@ struct ChangeRecord {
     std::vector<RowChange> rows;      // per changed row, each changed field's first before and last after
     std::vector<AssignmentStep> steps; // every assignment in the algorithm's order (Euler operations)
     std::vector<PositionChange> positions;
+    // The algorithm's lines in the order it runs them, as its source comments read ("the new
+    // edge's row: S, E, L, R and its four wings"); each step names the line that made it.
+    std::vector<std::string> phases;
     MeshVersion before, after;
     bool changed() const { return before != after; }
 };

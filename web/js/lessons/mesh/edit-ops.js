@@ -1,6 +1,7 @@
 // The mesh edits of issue 15 as the lesson offers them: which element each one starts
-// from, how it changes the counts, its pseudocode (lecture 000's S, E, L, R and the four
-// wings), and how an operation of the state is made from the selection. Whether an edit may
+// from, how it changes the counts, and how an operation of the state is made from the
+// selection. The algorithm's lines come with each change record (record.phases, the core's
+// own comments), so the pseudocode shown is the code that ran. Whether an edit may
 // run, and what it does, is the core's (mesh.check / mesh.apply); nothing here decides it.
 import { vLabel, eLabel, fLabel } from './labels.js';
 
@@ -12,73 +13,31 @@ export const EDIT_OPS = [
     op: 'split-edge', label: 'Split edge', needs: 'edge', key: 's', counts: 'V+1, E+1',
     what: (op) => `split ${eLabel(op.e)} at t = ${op.t}`,
     make: (index, options) => ({ op: 'split-edge', e: index, t: options.t }),
-    pseudocode: [
-      'new vertex w at (1 - t)·S(e) + t·E(e)',
-      'new edge e′ from w to E(e); e now ends at w',
-      'e′ takes E(e)\'s wings; e\'s End wings become e′',
-      'E(e)\'s vertex edge and the faces L, R walk through w',
-      'counts: V + 1, E + 1 (V - E + F unchanged)',
-    ],
   },
   {
     op: 'flip-edge', label: 'Flip edge', needs: 'edge', key: 'f', counts: 'V, E, F unchanged',
     what: (op) => `flip ${eLabel(op.e)}`,
     make: (index) => ({ op: 'flip-edge', e: index }),
-    pseudocode: [
-      'check: L(e) and R(e) are triangles, the new diagonal is not an edge yet',
-      'e turns: S, E become the two opposite corners',
-      'the four outer edges change wings and faces',
-      'L, R and the old ends\' vertex edges are repaired',
-      'counts: unchanged',
-    ],
   },
   {
     op: 'collapse-edge', label: 'Collapse edge', needs: 'edge', key: 'c', counts: 'V−1, E−1 (−1 more per triangle side)',
     what: (op) => `collapse ${eLabel(op.e)} at t = ${op.t}`,
     make: (index, options) => ({ op: 'collapse-edge', e: index, t: options.t }),
-    pseudocode: [
-      'check the link condition: S and E share only the corners of L(e) and R(e)',
-      'E(e) is removed; its edges now start or end at S(e), moved to (1 - t)·S + t·E',
-      'a triangle on either side shrinks to two edges: one of them is removed',
-      'wings around the removed edges are joined',
-      'counts: V − 1, E − 1 − (triangles), F − (triangles)',
-    ],
   },
   {
     op: 'join-faces', label: 'Join faces', needs: 'edge', key: 'j', counts: 'E−1, F−1',
     what: (op) => `join the faces of ${eLabel(op.e)}`,
     make: (index) => ({ op: 'join-faces', e: index }),
-    pseudocode: [
-      'check: L(e) ≠ R(e), both are faces',
-      'R(e) is removed; its edges now have L(e) on that side',
-      'the wings at S and at E skip e',
-      'e is removed; vertex and face edges that named it are repaired',
-      'counts: E − 1, F − 1',
-    ],
   },
   {
     op: 'split-face', label: 'Split face', needs: 'face', key: 'd', counts: 'E+1, F+1',
     what: (op) => `split ${fLabel(op.f)} by ${vLabel(op.a)}–${vLabel(op.b)}`,
     make: (index, options) => ({ op: 'split-face', f: index, a: options.a, b: options.b }),
-    pseudocode: [
-      'check: a and b are corners of f, not neighbours along it',
-      'new edge e′ from a to b, new face f′ on its right',
-      'the sides of f from b round to a move to f′',
-      'wings at a and b take in e′',
-      'counts: E + 1, F + 1',
-    ],
   },
   {
     op: 'poke-face', label: 'Poke face', needs: 'face', key: 'p', counts: 'V+1, E+n, F+n−1',
     what: (op) => `poke ${fLabel(op.f)}`,
     make: (index) => ({ op: 'poke-face', f: index }),
-    pseudocode: [
-      'new vertex w at the centroid of f',
-      'one new edge from each corner of f to w',
-      'f keeps its first side; n − 1 new triangles take the others',
-      'wings around w close the fan',
-      'counts: V + 1, E + n, F + n − 1',
-    ],
   },
 ];
 

@@ -58,6 +58,7 @@ export function createEditPanel(ctx, selection, { pick }) {
 
   const euler = h('p', { class: 'edit-euler', id: 'edit-euler', 'aria-live': 'polite' });
   const costs = h('table', { class: 'data-table edit-costs', id: 'edit-costs' });
+  const phaseList = h('ol', { class: 'pseudocode edit-phases', id: 'edit-phases', 'aria-label': 'The algorithm of the last edit' });
   const stepList = h('ol', { class: 'pseudocode edit-steps', id: 'edit-steps', 'aria-label': 'Pointer assignments of the last edit' });
   const stepLabel = h('span', { class: 'walk-step', id: 'edit-step' });
   const lastTitle = h('h3', { id: 'edit-last' }, 'Last edit');
@@ -92,6 +93,7 @@ export function createEditPanel(ctx, selection, { pick }) {
       tool('Step ▶', () => player.next(), 'Next assignment', 'edit-next'),
       tool('After ▶|', () => player.end(), 'After the edit: every assignment made', 'edit-end'),
       stepLabel),
+    phaseList,
     stepList,
     costs);
 
@@ -177,6 +179,9 @@ export function createEditPanel(ctx, selection, { pick }) {
     lastTitle.textContent = record ? `Last edit: ${EDIT_OP[record.op]?.what(model.lastEdit) ?? record.op} — ${steps.length} assignments` : 'Last edit: none yet';
     stepLabel.textContent = record ? `${shown} of ${steps.length}` : '';
     for (const b of root.querySelectorAll('.walk-controls button')) b.disabled = !record;
+    // The algorithm's lines (the core's), the one that made the current assignment marked.
+    const phase = shown > 0 ? steps[shown - 1].phase : -1;
+    phaseList.replaceChildren(...(record?.phases ?? []).map((line, i) => h('li', { 'data-line': i, class: i === phase ? 'is-current' : '', 'aria-current': i === phase ? 'step' : null }, line)));
     stepList.replaceChildren(...steps.map((s, i) => h('li', { 'data-step': i, class: i < shown ? (i === shown - 1 ? 'is-current' : 'is-done') : '' }, stepText(s))));
     stepList.querySelector('.is-current')?.scrollIntoView?.({ block: 'nearest' });
     const cost = model.editCost;
