@@ -61,8 +61,10 @@ test('splitEdge(e3): hand-worked tables, every assignment in order, v6 at the mi
   assert.deepEqual(Array.from(c.added.vertices), [5]);
   assert.deepEqual(Array.from(c.added.edges), [7]);
   assert.equal(c.steps.length, 15);
-  assert.deepEqual(c.steps[0], { table: 'vertex', row: 5, field: 'edge', before: -1, after: 7 });
-  assert.deepEqual(c.steps.at(-1), { table: 'vertex', row: 2, field: 'edge', before: 2, after: 7 });
+  // Each step names the algorithm's line that made it (c.phases, four lines for a split).
+  assert.deepEqual(c.steps[0], { table: 'vertex', row: 5, field: 'edge', before: -1, after: 7, phase: 0 });
+  assert.deepEqual(c.steps.at(-1), { table: 'vertex', row: 2, field: 'edge', before: 2, after: 7, phase: 3 });
+  assert.equal(c.phases.length, 4);
   assert.deepEqual(c.steps.slice(9, 12).map((s) => `${s.row} ${s.field} ${s.before}->${s.after}`),
     ['2 end 2->5', '2 endLeft 0->7', '2 endRight 3->7']);
   assert.deepEqual(c.positions, [{ vertex: 5, before: [1, 1, 0], after: [1, 1, 0], step: 0 }]);
