@@ -473,9 +473,13 @@ val mesh_operation(int32_t handle, const std::string& op, int32_t element, int32
 // order (element indices, then the optional number). check = true only asks check_<op>
 // ({allowed, code, message}); otherwise runs <op> and returns its change record, or the
 // refusal as {ok: false, code, message} with the mesh unchanged.
-val mesh_edit(int32_t handle, const std::string& op, const val& args, bool check) {
+// cost: also say how many stored entries each representation rewrote (rewritten_entries:
+// both states of all six are derived and compared, O(mesh); the lesson asks it only for
+// the edit a person just made, never while replaying a list).
+val mesh_edit(int32_t handle, const std::string& op, const val& args, bool check, bool cost) {
     return guarded([&] {
-        WingedEdgeMesh& w = entry(handle).winged;
+        MeshEntry& me = entry(handle);
+        WingedEdgeMesh& w = me.winged;
         const std::vector<double> a = to_doubles(args);
         const OperationDescriptor* d = nullptr;
         for (const OperationDescriptor& x : operation_descriptors())
@@ -499,12 +503,26 @@ val mesh_edit(int32_t handle, const std::string& op, const val& args, bool check
             return r;
         }
         if (!verdict.ok) throw Error(verdict.code, verdict.message);
-        if (op == "split-edge") return change_value(w.split_edge(Edge(i(0)), a[1]));
-        if (op == "split-face") return change_value(w.split_face(Face(i(0)), Vertex(i(1)), Vertex(i(2))));
-        if (op == "join-faces") return change_value(w.join_faces(Edge(i(0))));
-        if (op == "flip-edge") return change_value(w.flip_edge(Edge(i(0))));
-        if (op == "collapse-edge") return change_value(w.collapse_edge(Edge(i(0)), a[1]));
-        return change_value(w.poke_face(Face(i(0))));
+        std::unique_ptr<WingedEdgeMesh> before;
+        std::unique_ptr<Representations> before_reps;
+        if (cost) {
+            before = std::make_unique<WingedEdgeMesh>(w);
+            before_reps = std::make_unique<Representations>(me.representations.of(w));
+        }
+        const ChangeRecord c = op == "split-edge"      ? w.split_edge(Edge(i(0)), a[1])
+                               : op == "split-face"    ? w.split_face(Face(i(0)), Vertex(i(1)), Vertex(i(2)))
+                               : op == "join-faces"    ? w.join_faces(Edge(i(0)))
+                               : op == "flip-edge"     ? w.flip_edge(Edge(i(0)))
+                               : op == "collapse-edge" ? w.collapse_edge(Edge(i(0)), a[1])
+                                                       : w.poke_face(Face(i(0)));
+        val r = change_value(c);
+        if (cost) {
+            const auto n = rewritten_entries(*before, *before_reps, w, me.representations.of(w));
+            val rewritten = val::object();
+            for (int k = 0; k < kRepresentationCount; ++k) rewritten.set(representation_key(static_cast<Representation>(k)), static_cast<double>(n[k]));
+            r.set("rewritten", rewritten);
+        }
+        return r;
     });
 }
 

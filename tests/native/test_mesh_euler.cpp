@@ -10,6 +10,7 @@
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/representations.h"
 #include "wingspline/mesh/view_geometry.h"
+#include "wingspline/mesh/tables.h"
 #include "wingspline/mesh/winged_edge.h"
 
 #include <algorithm>
@@ -600,4 +601,24 @@ TEST_CASE("join-faces refuses to leave a dangling edge at a vertex of valence 2"
     CHECK(r.message == "F1 and F2 also meet at v1: joining them across " + edge_label(e) + " would make a face that passes v1 twice");
     CHECK_THROWS(w.join_faces(Edge(e)));
     CHECK(snapshot(w) == before);
+}
+
+TEST_CASE("what a split of e3 makes each representation rewrite, counted by hand", "[mesh][euler]") {
+    const WingedEdgeMesh before = lecture();
+    const Representations reps_before = build_representations(before.face_set(), before);
+    // Nothing changed: nothing rewritten.
+    CHECK(rewritten_entries(before, reps_before, before, reps_before) == std::array<int64_t, kRepresentationCount>{});
+    WingedEdgeMesh after = before;
+    after.split_edge(Edge(label("e3")), 0.5);
+    const Representations reps_after = build_representations(after.face_set(), after);
+    const auto n = rewritten_entries(before, reps_before, after, reps_after);
+    // Winged edge: v6's row (x, y, z, edge) and v3's edge: 5; e8's row (8), e3's E, E:L, E:R,
+    // e1's E:R and e4's S:R: 13; the face table is unchanged. 18 = the 15 assignments + v6's xyz.
+    CHECK(n[static_cast<int>(Representation::WingedEdge)] == 18);
+    // Independent faces: F1 (v1 v2 v3) -> (v1 v2 v6 v3) rewrites its last two corners (6
+    // numbers), F2 (v2 v4 v3) -> (v2 v4 v3 v6) gains one corner (3); F3 is unchanged.
+    CHECK(n[static_cast<int>(Representation::IndependentFaces)] == 9);
+    // Vertex and face tables: v6's xyz (3); F1's list from its third reference on (2), F2's new
+    // fourth reference (1).
+    CHECK(n[static_cast<int>(Representation::VertexFaceTables)] == 6);
 }

@@ -227,3 +227,21 @@ test('the benchmark hook flips what the public API flips (BENCH.md mesh_edit_fli
     assert.equal(r.checksum, flips + E + mesh.wingedEdge().edges[E - 1].start);
   });
 });
+
+test('apply(op, {rewritten: true}): the entries each representation rewrote for a split of e3 (counted by hand)', () => withLecture((mesh) => {
+  const plain = api.buildMesh(api.lectureExample());
+  try {
+    const c = mesh.apply({ op: 'split-edge', e: 2, t: 0.5 }, { rewritten: true });
+    // Winged edge: the 15 assignments and v6's three coordinates. Independent faces: F1's
+    // last two corners (6 numbers) and F2's new corner (3). Vertex and face tables: v6's
+    // xyz (3), F1's list from its third entry (2) and F2's new entry (1).
+    assert.equal(c.rewritten['winged-edge'], 18);
+    assert.equal(c.rewritten['independent-faces'], 9);
+    assert.equal(c.rewritten['vertex-face-tables'], 6);
+    assert.deepEqual(Object.keys(c.rewritten).sort(), ['adjacency-lists', 'edge-list', 'independent-faces', 'partial-adjacency-lists', 'vertex-face-tables', 'winged-edge']);
+    // Without the option the record has no count (it would cost O(mesh) per replayed edit).
+    assert.equal(plain.apply({ op: 'split-edge', e: 2, t: 0.5 }).rewritten, undefined);
+  } finally {
+    plain.dispose();
+  }
+}));

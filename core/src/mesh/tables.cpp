@@ -2,6 +2,7 @@
 // C++ vector holding it.
 #include "wingspline/mesh/tables.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace wingspline::mesh {
@@ -264,6 +265,75 @@ std::vector<std::string> table_layout_problems(const TableData& t, int32_t verti
         }
     }
     return problems;
+}
+
+} // namespace wingspline::mesh
+
+// ------------------------------------------------------------------ what an edit rewrote
+namespace wingspline::mesh {
+namespace {
+
+// The numbers of one array as doubles (coordinates stay exact; int32 indices are exact too).
+double number_at(const ArrayData& a, std::size_t i) { return a.f64 != nullptr ? a.f64[i] : static_cast<double>(a.i32[i]); }
+
+// Entries of one column rewritten between two states of a table, row by row by element
+// number: a fixed cell that differs in any of its `width` numbers counts `width` (a
+// position is written as three numbers); in a list everything from the first item that
+// differs to its end counts (a list stored packed shifts its tail when an item is
+// inserted or removed); a row only one state has counts whole.
+int64_t column_differences(const TableDescriptor& d, const ColumnDescriptor& c, const TableData& a, const TableData& b) {
+    std::size_t array = 0;
+    while (std::string(d.arrays[array].name) != c.array) ++array;
+    const ArrayDescriptor& ad = d.arrays[array];
+    const ArrayData& xa = a.arrays[array];
+    const ArrayData& xb = b.arrays[array];
+    int64_t count = 0;
+    const int32_t rows = std::max(a.rows, b.rows);
+    const auto same_item = [&](std::size_t at_a, std::size_t at_b) {
+        for (int k = 0; k < c.width; ++k)
+            if (number_at(xa, at_a + k) != number_at(xb, at_b + k)) return false;
+        return true;
+    };
+    if (ad.role == ArrayRole::Rows) {
+        for (int32_t i = 0; i < rows; ++i) {
+            const std::size_t at = static_cast<std::size_t>(i) * ad.stride + c.first;
+            if (i >= a.rows || i >= b.rows || !same_item(at, at)) count += c.width;
+        }
+        return count;
+    }
+    std::size_t offsets = 0;
+    while (std::string(d.arrays[offsets].name) != ad.offsets) ++offsets;
+    const ArrayData& oa = a.arrays[offsets];
+    const ArrayData& ob = b.arrays[offsets];
+    const auto list = [&](const ArrayData& o, const TableData& t, int32_t i) -> std::pair<std::size_t, std::size_t> {
+        if (i >= t.rows) return {0, 0};
+        const std::size_t base = static_cast<std::size_t>(o.at(0));
+        return {static_cast<std::size_t>(o.at(i)) - base, static_cast<std::size_t>(o.at(i + 1)) - base};
+    };
+    for (int32_t i = 0; i < rows; ++i) {
+        const auto [a0, a1] = list(oa, a, i);
+        const auto [b0, b1] = list(ob, b, i);
+        const std::size_t na = a1 - a0, nb = b1 - b0, common = std::min(na, nb);
+        std::size_t k = 0;
+        while (k < common && same_item((a0 + k) * c.width, (b0 + k) * c.width)) ++k;
+        count += static_cast<int64_t>((std::max(na, nb) - k) * c.width);
+    }
+    return count;
+}
+
+} // namespace
+
+std::array<int64_t, kRepresentationCount> rewritten_entries(const WingedEdgeMesh& before, const Representations& before_reps,
+                                                            const WingedEdgeMesh& after, const Representations& after_reps) {
+    std::array<int64_t, kRepresentationCount> out{};
+    for (int r = 0; r < kRepresentationCount; ++r) {
+        const auto rep = static_cast<Representation>(r);
+        const std::vector<TableData> a = representation_tables(rep, &before_reps, before);
+        const std::vector<TableData> b = representation_tables(rep, &after_reps, after);
+        for (std::size_t t = 0; t < a.size(); ++t)
+            for (const ColumnDescriptor& c : a[t].descriptor->columns) out[r] += column_differences(*a[t].descriptor, c, a[t], b[t]);
+    }
+    return out;
 }
 
 } // namespace wingspline::mesh

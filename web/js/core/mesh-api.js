@@ -141,6 +141,7 @@ function readChange(r, descriptor) {
     phases: Array.from(r.phases ?? []),
     rows: r.rows,
     positions,
+    ...(r.rewritten ? { rewritten: { ...r.rewritten } } : {}),
     before: { ...r.before },
     after: { ...r.after },
   };
@@ -383,9 +384,12 @@ export class Mesh {
   // {op: 'set-face-edge', f, e}, or an Euler operation with its arguments by name
   // ({op: 'split-edge', e, t}, {op: 'split-face', f, a, b}, ...: meshOperations()).
   // Returns its change record.
-  apply(operation) {
+  // With {rewritten: true} an Euler operation's record also says how many stored entries
+  // each representation rewrote ({[representation]: entries}; O(mesh): both states of
+  // every representation are compared, so ask it for one edit, not for a replayed list).
+  apply(operation, { rewritten = false } = {}) {
     const edit = operation !== null && typeof operation === 'object' ? this.#editNamed(operation.op, false) : null;
-    if (edit) return this.#edit(edit, edit.arguments.map((a) => operation[a.name]), false);
+    if (edit) return this.#edit(edit, edit.arguments.map((a) => operation[a.name]), false, rewritten);
     if (operation === null || typeof operation !== 'object' || !Object.hasOwn(OPERATIONS, operation.op)) {
       const names = [...Object.keys(OPERATIONS), ...this.#edits.operations.map((o) => o.name)];
       fail('unknown-operation', `unknown mesh operation ${JSON.stringify(String(operation?.op)).slice(0, 60)}; use ${names.join(', ')}`);
@@ -443,14 +447,14 @@ export class Mesh {
 
   // Any Euler operation, read from its descriptor: the arguments in order (an element
   // index, or a number with its default), then the core's check or operation.
-  #edit(edit, args, check) {
+  #edit(edit, args, check, rewritten = false) {
     const values = edit.arguments.map((a, k) => {
       const v = args[k] === undefined && a.optional ? a.default : args[k];
       if (a.kind) return integerIn(v, a.kind === 'vertex' ? 'vertex' : a.kind, -INT32_MAX, INT32_MAX);
       if (typeof v !== 'number' || !Number.isFinite(v)) fail('invalid-argument', `${a.name} must be a finite number, not ${String(v).slice(0, 40)}`);
       return v;
     });
-    const r = unwrap(this.#raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), check));
+    const r = unwrap(this.#raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), check, Boolean(rewritten)));
     if (check) return r.allowed ? { ok: true } : { ok: false, code: r.code, message: r.message };
     this.#setVersion(r.after);
     return readChange(r, this.#edits);

@@ -17,6 +17,7 @@
 #include "wingspline/mesh/representations.h"
 #include "wingspline/mesh/winged_edge.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -108,5 +109,14 @@ std::vector<TableData> representation_tables(Representation r, const Representat
 // holding stride * rows numbers, offsets of rows + 1 entries from 0 never decreasing, a list
 // of width * (last offset) numbers, columns inside their array's stride, references in range.
 std::vector<std::string> table_layout_problems(const TableData& table, int32_t vertices, int32_t edges, int32_t faces);
+
+// What an edit made each representation rewrite (issue 15; lecture 000's cost argument): the
+// stored entries (one number: a coordinate or an index) that differ between two states of a
+// mesh, in Representation order. Every table is compared row by row by element number and
+// column by column as its descriptor lays it out; a list that grew or shrank counts the
+// entries only one state has, and a row only one state has counts whole. A removed
+// element's row keeps its old contents (a gap), so removing it rewrites nothing there.
+std::array<int64_t, kRepresentationCount> rewritten_entries(const WingedEdgeMesh& before, const Representations& before_reps,
+                                                            const WingedEdgeMesh& after, const Representations& after_reps);
 
 } // namespace wingspline::mesh

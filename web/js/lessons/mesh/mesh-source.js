@@ -109,7 +109,7 @@ const sameOp = (a, b) => {
 
 // One operation of the state on the live mesh; returns the change record the edit player
 // shows (a move keeps the previous one; compact has none: it renumbers everything).
-function applyOne(mesh, operation, previous) {
+function applyOne(mesh, operation, previous, newest) {
   if (operation.op === 'move-vertex') {
     mesh.setVertexPosition(operation.v, operation.p);
     return previous;
@@ -118,7 +118,7 @@ function applyOne(mesh, operation, previous) {
     mesh.compact();
     return null;
   }
-  return mesh.apply(operation);
+  return mesh.apply(operation, { rewritten: newest });
 }
 
 export function createMeshSource() {
@@ -179,7 +179,8 @@ export function createMeshSource() {
     applyMoves({ moved: [] });
     for (let i = live.ops.length; i < ops.length; i += 1) {
       try {
-        live.lastOperation = applyOne(live.mesh, ops[i], live.lastOperation);
+        // The newest edit also counts what each representation rewrote (the panel shows it).
+        live.lastOperation = applyOne(live.mesh, ops[i], live.lastOperation, i === ops.length - 1);
       } catch (err) {
         err.message = `Operation ${i + 1} (${ops[i].op}) was refused: ${err.message}`;
         live.base = Float64Array.from(live.mesh.wingedEdgeArrays().positions);
