@@ -77,7 +77,7 @@ test('a student splits e3 with the pointer, steps through the assignments, undoe
   const costs = await page.$$eval('#edit-costs tbody tr', (rows) => Object.fromEntries(rows.map((r) => [r.dataset.representation, Number(r.children[1].textContent)])));
   assert.deepEqual([costs['winged-edge'], costs['independent-faces'], costs['vertex-face-tables']], [18, 9, 6]);
   // Euler's formula after the edit: 6 - 8 + 3 = 1.
-  assert.match(await page.textContent('#edit-euler'), /V − E \+ F = 6 − 8 \+ 3 = 1/);
+  assert.match(await page.textContent('#edit-euler'), /before the last edit 5 − 7 \+ 3 = 1; after it 6 − 8 \+ 3 = 1/);
 
   // Step back to the start of the edit with the player: before any assignment the edge
   // table shows e3 as it was, and each step forward writes one cell.
@@ -153,5 +153,53 @@ test('flipping e3 and flipping it back gives the lecture mesh\'s faces again; a 
   assert.deepEqual(await tableCells(page, 'we-edge-table'), tablesBefore);
   assert.match(await page.evaluate(() => window.wingspline.message()), /Flip edge: .*e1/);
   assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('on a touch screen: tap F2 and poke it, collapse e7 (its rows stay as struck-through gaps), compact, export the edited mesh', async () => {
+  const page = await openPage(env.browser, `${env.site.url}mesh.html`, { hasTouch: true, isMobile: false });
+  await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
+  // The centroid of F2 = (v2 v4 v3), asked of the page, tapped with a finger.
+  const point = await page.evaluate(() => {
+    const m = window.wingspline.model;
+    const [x, y] = m.faces[1].reduce((acc, v) => [acc[0] + m.projected[3 * v] / 3, acc[1] + m.projected[3 * v + 1] / 3], [0, 0]);
+    return window.wingspline.toClient(x, y);
+  });
+  await page.touchscreen.tap(point.x, point.y);
+  await page.waitForFunction(() => document.querySelector('#edit-picked')?.textContent === 'Picked: F2');
+  await page.tap('button[data-op="poke-face"]');
+  // Poking a triangle: V + 1, E + 3, F + 2: 6 - 10 + 5 = 1.
+  await page.waitForFunction(() => /after it 6 − 10 \+ 5 = 1/.test(document.querySelector('#edit-euler')?.textContent ?? ''));
+
+  // e7 = v4 -> v5 on the boundary, F3 = (v2 v5 v4) on its right: collapsing it merges v5
+  // into v4, and the triangle F3 goes with its edge v5 - v2 (e6). Picked by number.
+  await page.selectOption('#edit-kind', 'edge');
+  await page.fill('#edit-element', '7');
+  await page.press('#edit-element', 'Enter');
+  await page.waitForFunction(() => document.querySelector('#edit-picked')?.textContent === 'Picked: e7');
+  await page.tap('button[data-op="collapse-edge"]');
+  await page.waitForFunction(() => /after it 5 − 8 \+ 4 = 1/.test(document.querySelector('#edit-euler')?.textContent ?? ''));
+  const gapRows = (id) => page.$$eval(`#${id} tbody tr.is-gap`, (rows) => rows.map((r) => r.children[0].textContent.replace(' (removed)', '').trim()));
+  assert.deepEqual(await gapRows('we-vertex-table'), ['v5']);
+  assert.deepEqual(await gapRows('we-edge-table'), ['e6', 'e7']);
+  assert.deepEqual(await gapRows('we-face-table'), ['F3']);
+
+  // Compact: the gaps go, the numbers after them move up.
+  await page.tap('#edit-compact');
+  await page.waitForFunction(() => document.querySelectorAll('#we-edge-table tbody tr[data-row]').length === 8);
+  assert.equal(await page.$$eval('#we-vertex-table tbody tr[data-row]', (r) => r.length), 5);
+  assert.equal(await page.$$eval('#we-face-table tbody tr[data-row]', (r) => r.length), 4);
+  assert.deepEqual(await gapRows('we-edge-table'), []);
+
+  // The OFF export is the edited mesh: 5 vertices, 4 faces.
+  await page.click('.menu > summary');
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('[data-export="mesh.off"]')]);
+  const chunks = [];
+  for await (const chunk of await download.createReadStream()) chunks.push(chunk);
+  const lines = Buffer.concat(chunks).toString('utf8').split('\n').filter((l) => l.trim() && !l.startsWith('#'));
+  assert.equal(lines[0].trim(), 'OFF');
+  assert.deepEqual(lines[1].trim().split(/\s+/).slice(0, 2).map(Number), [5, 4]);
+  assert.deepEqual(page.problems, []);
+  await screenshot(page, 'mesh-edit-touch');
   await page.context().close();
 });

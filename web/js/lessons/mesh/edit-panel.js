@@ -165,9 +165,15 @@ export function createEditPanel(ctx, selection, { pick }) {
     reasons.replaceChildren(...items);
   }
 
+  // V − E + F after the last edit, and before it (the record's added and removed elements
+  // taken back): an Euler operation keeps the sum.
   function refreshEuler(model) {
     const c = model.counts;
-    euler.textContent = `V − E + F = ${c.vertices} − ${c.edges} + ${c.faces} = ${c.euler}` +
+    const r = model.lastOperation;
+    const back = (kind) => (r ? (r.removed?.[kind]?.length ?? 0) - (r.added?.[kind]?.length ?? 0) : 0);
+    const [v0, e0, f0] = [c.vertices + back('vertices'), c.edges + back('edges'), c.faces + back('faces')];
+    const before = r && r.steps?.length ? `before the last edit ${v0} − ${e0} + ${f0} = ${v0 - e0 + f0}; after it ` : '';
+    euler.textContent = `V − E + F: ${before}${c.vertices} − ${c.edges} + ${c.faces} = ${c.euler}` +
       ` · boundary loops ${c.boundaryLoops}${model.gaps ? ` · ${model.gaps} numbers are gaps left by removed elements` : ''}` +
       ` · edits ${model.editCount}`;
   }
@@ -176,13 +182,16 @@ export function createEditPanel(ctx, selection, { pick }) {
     const record = model.lastOperation;
     const steps = visibleSteps(record);
     const shown = shownSteps();
-    lastTitle.textContent = record ? `Last edit: ${EDIT_OP[record.op]?.what(model.lastEdit) ?? record.op} — ${steps.length} assignments` : 'Last edit: none yet';
+    lastTitle.textContent = record ? `Last edit: ${EDIT_OP[record.op]?.what(model.lastEdit) ?? record.op} — ${steps.length} assignments`
+      : model.lastEdit?.op === 'compact' ? 'Last edit: compact (every table renumbered without its gaps)' : 'Last edit: none yet';
     stepLabel.textContent = record ? `${shown} of ${steps.length}` : '';
     for (const b of root.querySelectorAll('.walk-controls button')) b.disabled = !record;
     // The algorithm's lines (the core's), the one that made the current assignment marked.
     const phase = shown > 0 ? steps[shown - 1].phase : -1;
     phaseList.replaceChildren(...(record?.phases ?? []).map((line, i) => h('li', { 'data-line': i, class: i === phase ? 'is-current' : '', 'aria-current': i === phase ? 'step' : null }, line)));
     stepList.replaceChildren(...steps.map((s, i) => h('li', { 'data-step': i, class: i < shown ? (i === shown - 1 ? 'is-current' : 'is-done') : '' }, stepText(s))));
+    phaseList.hidden = !phaseList.children.length;
+    stepList.hidden = !steps.length;
     stepList.querySelector('.is-current')?.scrollIntoView?.({ block: 'nearest' });
     const cost = model.editCost;
     if (!cost) { costs.replaceChildren(); return; }
@@ -204,6 +213,8 @@ export function createEditPanel(ctx, selection, { pick }) {
       refreshCorners(model);
       refreshButtons();
       refreshEuler(model);
+      compactButton.disabled = !model.gaps;
+      compactButton.title = model.gaps ? `Renumber the tables without the ${model.gaps} gaps removed elements left` : 'Nothing to compact: no element has been removed';
       refreshPlayback(model);
     },
   };
