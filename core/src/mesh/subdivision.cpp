@@ -55,6 +55,12 @@ Scheme scheme_from_name(const std::string& name) {
                                       "': use 'loop' (triangle meshes) or 'catmull-clark' (any polygons)");
 }
 
+const char* point_rule_name(int32_t rule) {
+    static const char* const names[kPointRuleCount] = {"face-point",      "edge-interior",   "edge-boundary",
+                                                       "vertex-interior", "vertex-boundary", "vertex-isolated"};
+    return rule >= 0 && rule < kPointRuleCount ? names[rule] : "";
+}
+
 double loop_beta(int32_t n) {
     const double c = 3.0 / 8.0 + std::cos(2.0 * kPi / n) / 4.0;
     return (5.0 / 8.0 - c * c) / n;

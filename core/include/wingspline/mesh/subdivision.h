@@ -71,6 +71,10 @@ enum class PointRule : int32_t {
     VertexBoundary = 4, // 1/8, 6/8, 1/8 along the boundary (cubic B-spline vertex rule)
     VertexIsolated = 5, // a vertex on no edge stays
 };
+inline constexpr int32_t kPointRuleCount = 6;
+// "face-point", "edge-interior", "edge-boundary", "vertex-interior", "vertex-boundary",
+// "vertex-isolated" (the names the JS API gives the rules).
+const char* point_rule_name(int32_t rule);
 
 // One step as the lecture reads it, by the reference path (ring and face walks of
 // winged_edge.h): the phases in order (face points, edge points, vertex points,
