@@ -71,31 +71,46 @@ double loop_beta(int32_t n) {
 struct SubdivisionAccess {
     // The sides of face f in the order face_set() lists its corners: side k is edge
     // edges[k], run from corner k to corner k+1, forward (S -> E, f on the left) or not.
-    static void face_sides(const WingedEdgeMesh& m, int32_t f, std::vector<int32_t>& edges, std::vector<char>& forward) {
-        edges.clear();
-        forward.clear();
+    // Writes at most `room` sides into the arrays; returns the side count (more than `room`:
+    // the caller asks again with more room).
+    static int32_t face_sides(const WingedEdgeMesh& m, int32_t f, int32_t* edges, char* forward, int32_t room) {
         const EdgeRecord* E = m.edges_.data();
         const int32_t e0 = m.face_edge_[f];
         const bool left0 = E[e0].left == f;
-        int32_t e = e0;
+        int32_t e = e0, n = 0;
         bool left = left0;
+        const int32_t most = static_cast<int32_t>(m.edges_.size());
         do {
-            edges.push_back(e);
-            forward.push_back(left);
+            if (n < room) edges[n] = e, forward[n] = left;
+            ++n;
             const EdgeRecord& r = E[e];
-            e = left ? r.end_left : r.start_right;
+            if (left) {
+                e = r.end_left;
+            } else {
+                WINGSPLINE_KEEP_BRANCH();
+                e = r.start_right;
+            }
             left = E[e].left == f;
-        } while ((e != e0 || left != left0) && edges.size() <= m.edges_.size());
-        if (m.face_first_corner_.empty()) return;
+        } while ((e != e0 || left != left0) && n <= most);
+        if (n > room || m.face_first_corner_.empty()) return n;
         const int32_t first = m.face_first_corner_[f];
-        for (std::size_t k = 0; k < edges.size(); ++k) {
+        for (int32_t k = 0; k < n; ++k) {
             const EdgeRecord& r = E[edges[k]];
             if ((forward[k] ? r.start : r.end) == first) {
-                std::rotate(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(k), edges.end());
-                std::rotate(forward.begin(), forward.begin() + static_cast<std::ptrdiff_t>(k), forward.end());
-                return;
+                std::rotate(edges, edges + k, edges + n);
+                std::rotate(forward, forward + k, forward + n);
+                break;
             }
         }
+        return n;
+    }
+    static void face_sides(const WingedEdgeMesh& m, int32_t f, std::vector<int32_t>& edges, std::vector<char>& forward) {
+        int32_t n = face_sides(m, f, edges.data(), forward.data(), static_cast<int32_t>(edges.size()));
+        if (n > static_cast<int32_t>(edges.size())) {
+            edges.resize(static_cast<std::size_t>(n)), forward.resize(static_cast<std::size_t>(n));
+            n = face_sides(m, f, edges.data(), forward.data(), n);
+        }
+        edges.resize(static_cast<std::size_t>(n)), forward.resize(static_cast<std::size_t>(n));
     }
 
     static const std::vector<int32_t>& first_corners(const WingedEdgeMesh& m) { return m.face_first_corner_; }
@@ -136,12 +151,21 @@ struct SubdivisionAccess {
 
         // Phase 1 (faces): the face points (Catmull-Clark) and, for every face, the new
         // faces and inner edges with every wing, by the numbering of subdivision.h.
-        std::vector<int32_t> a;
-        std::vector<char> fw;
+        // The sides of one face: on the stack, or (a face of more than kRoom sides) in big.
+        constexpr int32_t kRoom = 64;
+        int32_t a_room[kRoom];
+        char fw_room[kRoom];
+        std::vector<int32_t> a_big;
+        std::vector<char> fw_big;
         int32_t o = 0; // Catmull-Clark: corners of the faces before f
         for (int32_t f = 0; f < F; ++f) {
-            face_sides(m, f, a, fw);
-            const int32_t n = static_cast<int32_t>(a.size());
+            int32_t* a = a_room;
+            char* fw = fw_room;
+            int32_t n = face_sides(m, f, a, fw, kRoom);
+            if (n > kRoom) {
+                face_sides(m, f, a_big, fw_big);
+                a = a_big.data(), fw = fw_big.data();
+            }
             if (loop) {
                 const int32_t T = 2 * E + 3 * f;
                 for (int32_t k = 0; k < 3; ++k) {
