@@ -179,6 +179,12 @@ struct SubdivisionAccess {
                     r.left = face, r.start_left = hA, r.end_left = hC;
                     r.right = 4 * f + 3, r.end_right = T + km, r.start_right = T + kp;
                     FE[face] = hA;
+                    // Loop's edge point of side k gets 1/8 of the corner opposite it (k+2);
+                    // the edge pass adds 3/8 (S + E) (the positions start at zero).
+                    const EdgeRecord& opp = in[a[km]];
+                    const double* pc = P + 3 * (fw[km] ? opp.start : opp.end);
+                    double* q = Q + 3 * (V + a[k]);
+                    q[0] += 0.125 * pc[0], q[1] += 0.125 * pc[1], q[2] += 0.125 * pc[2];
                 }
                 FE[4 * f + 3] = T + 1;
             } else {
@@ -231,9 +237,7 @@ struct SubdivisionAccess {
             }
             VE[mid] = h0;
             if (loop) {
-                const int32_t c = in[r.end_left].start == r.end ? in[r.end_left].end : in[r.end_left].start;
-                const int32_t d = in[r.start_right].start == r.start ? in[r.start_right].end : in[r.start_right].start;
-                for (int k = 0; k < 3; ++k) q[k] = 0.375 * (s[k] + t[k]) + 0.125 * (P[3 * c + k] + P[3 * d + k]);
+                for (int k = 0; k < 3; ++k) q[k] += 0.375 * (s[k] + t[k]); // + 1/8 of each opposite corner (phase 1)
             } else {
                 const double* fl = Q + 3 * (V + E + r.left);
                 const double* fr = Q + 3 * (V + E + r.right);
