@@ -306,6 +306,13 @@ TEST_CASE("The input is untouched and several steps chain; a mesh with chosen fa
     CHECK(two.positions() == again.positions());
     CHECK(two.validate().ok());
     check_one_step(in, Scheme::CatmullClark);
+    // An isolated vertex (a build warning, not an error) stays where it is, in both schemes.
+    IndexedMesh lonely = tetrahedron();
+    lonely.add_vertex(5, 6, 7);
+    const WingedEdgeMesh with_isolated = built(lonely);
+    check_one_step(with_isolated, Scheme::Loop);
+    check_one_step(with_isolated, Scheme::CatmullClark);
+    CHECK(subdivide(with_isolated, Scheme::Loop, 2).position(4) == dvec3(5, 6, 7));
     const NamedMesh foley = foley_example(); // P2's walk starts at E2, not at its first corner
     check_one_step(WingedEdgeMesh::build(foley.mesh, foley.options), Scheme::CatmullClark);
 }
