@@ -73,35 +73,38 @@ struct SubdivisionAccess {
     // edges[k], run from corner k to corner k+1, forward (S -> E, f on the left) or not.
     // Writes at most `room` sides into the arrays; returns the side count (more than `room`:
     // the caller asks again with more room).
-    static int32_t face_sides(const WingedEdgeMesh& m, int32_t f, int32_t* edges, char* forward, int32_t room) {
+    // (Kept small so that it inlines into the step's face loop; the rotation is separate.)
+    static int32_t walk_face(const WingedEdgeMesh& m, int32_t f, int32_t* edges, char* forward, int32_t room) {
         const EdgeRecord* E = m.edges_.data();
         const int32_t e0 = m.face_edge_[f];
         const bool left0 = E[e0].left == f;
+        const int32_t most = static_cast<int32_t>(m.edges_.size());
         int32_t e = e0, n = 0;
         bool left = left0;
-        const int32_t most = static_cast<int32_t>(m.edges_.size());
         do {
             if (n < room) edges[n] = e, forward[n] = left;
             ++n;
-            const EdgeRecord& r = E[e];
-            if (left) {
-                e = r.end_left;
-            } else {
-                WINGSPLINE_KEEP_BRANCH();
-                e = r.start_right;
-            }
+            e = left ? E[e].end_left : E[e].start_right;
             left = E[e].left == f;
         } while ((e != e0 || left != left0) && n <= most);
-        if (n > room || m.face_first_corner_.empty()) return n;
+        return n;
+    }
+    // Once face edges were chosen, face_set() lists f from its first corner, not from where
+    // its walk starts: turn the n sides so that side 0 starts there.
+    static void rotate_to_first_corner(const WingedEdgeMesh& m, int32_t f, int32_t* edges, char* forward, int32_t n) {
         const int32_t first = m.face_first_corner_[f];
         for (int32_t k = 0; k < n; ++k) {
-            const EdgeRecord& r = E[edges[k]];
+            const EdgeRecord& r = m.edges_[edges[k]];
             if ((forward[k] ? r.start : r.end) == first) {
                 std::rotate(edges, edges + k, edges + n);
                 std::rotate(forward, forward + k, forward + n);
-                break;
+                return;
             }
         }
+    }
+    static int32_t face_sides(const WingedEdgeMesh& m, int32_t f, int32_t* edges, char* forward, int32_t room) {
+        const int32_t n = walk_face(m, f, edges, forward, room);
+        if (n <= room && !m.face_first_corner_.empty()) rotate_to_first_corner(m, f, edges, forward, n);
         return n;
     }
     static void face_sides(const WingedEdgeMesh& m, int32_t f, std::vector<int32_t>& edges, std::vector<char>& forward) {
@@ -161,7 +164,18 @@ struct SubdivisionAccess {
         for (int32_t f = 0; f < F; ++f) {
             int32_t* a = a_room;
             char* fw = fw_room;
-            int32_t n = face_sides(m, f, a, fw, kRoom);
+            int32_t n;
+            if (loop && m.face_first_corner_.empty()) { // a triangle listed from its walk's start: three reads
+                const int32_t e0 = m.face_edge_[f];
+                const bool l0 = in[e0].left == f;
+                const int32_t e1 = l0 ? in[e0].end_left : in[e0].start_right;
+                const bool l1 = in[e1].left == f;
+                const int32_t e2 = l1 ? in[e1].end_left : in[e1].start_right;
+                a[0] = e0, a[1] = e1, a[2] = e2, fw[0] = l0, fw[1] = l1, fw[2] = in[e2].left == f;
+                n = 3;
+            } else {
+                n = face_sides(m, f, a, fw, kRoom);
+            }
             if (n > kRoom) {
                 face_sides(m, f, a_big, fw_big);
                 a = a_big.data(), fw = fw_big.data();
