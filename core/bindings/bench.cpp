@@ -8,9 +8,11 @@
 
 #include "wingspline/mesh/indexed_mesh.h"
 #include "wingspline/mesh/planes.h"
+#include "wingspline/mesh/subdivision.h"
 #include "wingspline/mesh/winged_edge.h"
 
 #include <emscripten/emscripten.h>
+#include <malloc.h>
 
 namespace wingspline::bindings {
 namespace {
@@ -89,6 +91,37 @@ val bench_edit_in_core(int32_t handle, const std::string& task, int32_t repetiti
     });
 }
 
+// BENCH.md mesh_subdivide_loop / mesh_subdivide_cc inside the module (issue 16): one step
+// from the built mesh to the new winged edge with positions, R times; the bench limits
+// (kUnlimitedCounts), not the page's. Also the result's own bytes and the heap growth while
+// one result is held (malloc's count, as api.memoryUsage().heapInUse).
+val bench_subdivide_in_core(int32_t handle, const std::string& task, int32_t repetitions) {
+    return guarded([&] {
+        const WingedEdgeMesh& built = winged_of_handle(handle);
+        if (task != "mesh_subdivide_loop" && task != "mesh_subdivide_cc")
+            throw Error("unknown-task", "benchSubdivideInCore times mesh_subdivide_loop or mesh_subdivide_cc");
+        const Scheme scheme = task == "mesh_subdivide_loop" ? Scheme::Loop : Scheme::CatmullClark;
+        std::vector<double> seconds;
+        double checksum = 0;
+        for (int32_t i = 0; i < repetitions; ++i) {
+            const double t0 = emscripten_get_now();
+            const WingedEdgeMesh out = subdivide(built, scheme, 1);
+            seconds.push_back((emscripten_get_now() - t0) / 1000.0);
+            checksum += out.vertex_count() + out.edge_count() + out.face_count() + out.edge(out.edge_count() - 1).end_right +
+                        out.positions()[out.positions().size() - 1];
+        }
+        const double before = static_cast<double>(mallinfo().uordblks);
+        const WingedEdgeMesh held = subdivide(built, scheme, 1);
+        val r = val::object();
+        r.set("heapGrowth", static_cast<double>(mallinfo().uordblks) - before);
+        r.set("resultBytes", static_cast<double>(held.bytes()));
+        r.set("seconds", to_typed_array(seconds));
+        r.set("checksum", checksum);
+        r.set("n", built.face_count());
+        return r;
+    });
+}
+
 } // namespace
 } // namespace wingspline::bindings
 
@@ -98,4 +131,5 @@ EMSCRIPTEN_BINDINGS(wingspline_bench) {
     emscripten::function("benchNormalsInCore", &bench_normals_in_core);
     emscripten::function("benchRingWalk", &bench_ring_walk);
     emscripten::function("benchEditInCore", &bench_edit_in_core);
+    emscripten::function("benchSubdivideInCore", &bench_subdivide_in_core);
 }

@@ -757,6 +757,13 @@ const WingedEdgeMesh& winged_of_handle(int32_t handle) { return entry(handle).wi
 IndexedMesh indexed_from_arrays(const val& positions, const val& face_offsets, const val& face_vertices) {
     return indexed_from(positions, face_offsets, face_vertices);
 }
+int32_t register_mesh(WingedEdgeMesh&& winged) {
+    auto e = std::make_unique<MeshEntry>();
+    e->winged = std::move(winged);
+    const int32_t handle = registry().next_handle++;
+    registry().meshes.emplace(handle, std::move(e));
+    return handle;
+}
 
 } // namespace wingspline::bindings
 

@@ -12,5 +12,7 @@ namespace wingspline::bindings {
 
 const mesh::WingedEdgeMesh& winged_of_handle(int32_t handle);
 mesh::IndexedMesh indexed_from_arrays(const val& positions, const val& face_offsets, const val& face_vertices);
+// A new live mesh (subdivision.cpp's results): its handle, as buildMesh returns one.
+int32_t register_mesh(mesh::WingedEdgeMesh&& winged);
 
 } // namespace wingspline::bindings

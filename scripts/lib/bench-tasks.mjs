@@ -4,7 +4,8 @@
 // is missing in its report instead of silently printing a shorter table.
 
 export const expectedTasks = [
-  ...['mesh_build', 'mesh_ring', 'mesh_normals', 'mesh_memory', 'mesh_edit_flip', 'mesh_edit_split'].flatMap((task) =>
+  ...['mesh_build', 'mesh_ring', 'mesh_normals', 'mesh_memory', 'mesh_edit_flip', 'mesh_edit_split',
+    'mesh_subdivide_loop', 'mesh_subdivide_cc'].flatMap((task) =>
     ['native', 'wasm'].map((build) => ({ task, build }))),
   ...['curve_bezier3_eval', 'curve_bspline_eval', 'curve_bspline_eval_d1', 'curve_nurbs_eval', 'curve_nurbs_eval_d1']
     .flatMap((task) => ['native', 'wasm'].map((build) => ({ task, build }))),
@@ -21,6 +22,8 @@ export const references = {
   mesh_memory: { input: /_100000$/, native: [61, 'OpenMesh 9, B/face'] },
   mesh_edit_flip: { input: /_100000$/, native: [183, 'OpenMesh 9 TriMesh is_flip_ok + flip'] },
   mesh_edit_split: { input: /_100000$/, native: [405, 'OpenMesh 9 TriMesh split'] },
+  mesh_subdivide_loop: { input: /^sphere_100000$/, native: [829, 'OpenMesh 9 LoopT, one step'] },
+  mesh_subdivide_cc: { input: /^sphere_100000$/, native: [1046, 'OpenMesh 9 CatmullClarkT (PolyMesh), one step'] },
   curve_bezier3_eval: { wasm: [31, 'bezier-js 6.1'], native: [57, 'SISL 4.6'] },
   curve_bspline_eval: { wasm: [174, 'verb-nurbs 3.0'], native: [54, 'SISL 4.6'] },
   curve_bspline_eval_d1: { native: [98, 'SISL 4.6'] },

@@ -155,6 +155,13 @@ const cases = [
       lecture.dispose();
     }
   }, () => lecture.flipEdge(0)],
+  ['subdivide + dispose / subdivisionSteps / limitPositions (issue 16)', REDUCED, () => {
+    api.subdivide(lecture, { scheme: 'catmull-clark', steps: 2 }).dispose();
+    api.subdivisionSteps(lecture, { scheme: 'catmull-clark' });
+    api.limitPositions(lecture, { scheme: 'catmull-clark' });
+  }, () => api.subdivide(lecture, { scheme: 'catmull-clark', steps: 16 })],
+  ['subdivideCurve', REDUCED, () => api.subdivideCurve(geometry, 2, { scheme: 'cubic-bspline', closed: true, steps: 3 }),
+    () => api.subdivideCurve(geometry.slice(0, 4), 2, { scheme: 'chaikin' })],
   ['memoryUsage / liveMeshCount', REDUCED, () => { api.memoryUsage(); api.liveMeshCount(); },
     () => api.facesAroundVertex?.(0) ?? lecture.facesAroundVertex(V_MISSING)],
 ];

@@ -5,6 +5,7 @@
 
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/planes.h"
+#include "wingspline/mesh/subdivision.h"
 #include "wingspline/mesh/winged_edge.h"
 
 #include <fstream>
@@ -100,5 +101,36 @@ WINGSPLINE_BENCH(mesh_edit) {
         };
         if (ctx.wants("mesh_edit_flip")) run("mesh_edit_flip", &flip_every_third_edge, (built.edge_count() + 2) / 3);
         if (ctx.wants("mesh_edit_split")) run("mesh_edit_split", &split_every_edge, built.edge_count());
+    }
+}
+
+// Issue 16: one subdivision step from the built mesh (not timed) to the complete new winged
+// edge with positions, on the 10k and 100k inputs. Memory: the result's own bytes and the
+// resident growth across one step (the step holds the result and nothing else at the end;
+// the peak inside it is the result plus the face walk's few corners).
+WINGSPLINE_BENCH(mesh_subdivide) {
+    if (!ctx.wants("mesh_subdivide_loop") && !ctx.wants("mesh_subdivide_cc")) return;
+    for (const Input& in : inputs()) {
+        if (in.mesh.face_count() > 100000) continue;
+        const WingedEdgeMesh built = WingedEdgeMesh::build(in.mesh);
+        const double F = built.face_count();
+        const int kRepetitions = F <= 10000 ? 31 : 7;
+        for (const auto& [task, scheme] : {std::pair<const char*, Scheme>{"mesh_subdivide_loop", Scheme::Loop},
+                                           std::pair<const char*, Scheme>{"mesh_subdivide_cc", Scheme::CatmullClark}}) {
+            if (!ctx.wants(task)) continue;
+            double checksum = 0;
+            const auto seconds = time_runs(kRepetitions, [&] {
+                const WingedEdgeMesh out = subdivide(built, scheme, 1);
+                checksum += out.vertex_count() + out.edge_count() + out.face_count() + out.edge(out.edge_count() - 1).end_right +
+                            out.positions()[out.positions().size() - 1];
+            });
+            malloc_trim(0);
+            const double before = resident_bytes();
+            const WingedEdgeMesh out = subdivide(built, scheme, 1);
+            const double growth = resident_bytes() - before;
+            report(task, in.name, F, seconds, checksum,
+                   ",\"result_bytes_per_input_face\":" + std::to_string(out.bytes() / F) +
+                       ",\"resident_growth_per_input_face\":" + std::to_string(growth / F));
+        }
     }
 }

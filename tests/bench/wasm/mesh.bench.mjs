@@ -76,3 +76,20 @@ for (const task of ['mesh_edit_flip', 'mesh_edit_split'].filter(wants)) {
     }
   }
 }
+
+// Issue 16: one subdivision step inside the module on the 10k and 100k inputs; memory: the
+// result's own bytes and the heap growth while one result is held, per input face.
+for (const task of ['mesh_subdivide_loop', 'mesh_subdivide_cc'].filter(wants)) {
+  for (const [name, kind, options] of inputs.filter(([n]) => !n.endsWith('_1000000'))) {
+    const mesh = api.buildMesh(api.generateMesh(kind, { ...options, layout: 'csr' }));
+    try {
+      const R = repetitionsFor(mesh.counts().faces);
+      hooks.timeSubdivideInCore(mesh, task, 3); // warm-up (V8's tiers), untimed
+      const r = hooks.timeSubdivideInCore(mesh, task, R);
+      report({ task, input: name, n: r.n, seconds: Array.from(r.seconds), checksum: r.checksum,
+        result_bytes_per_input_face: r.resultBytes / r.n, heap_growth_per_input_face: r.heapGrowth / r.n });
+    } finally {
+      mesh.dispose();
+    }
+  }
+}

@@ -39,5 +39,13 @@ export function benchHooks(api) {
       const { seconds, checksum, n } = unwrap(raw.benchEditInCore(benchAccess.handleOf(mesh), String(task), repetitions));
       return { seconds, checksum, n };
     },
+    // BENCH.md mesh_subdivide_loop / mesh_subdivide_cc timed inside the module (the mesh is
+    // not changed): {seconds, checksum, n (input faces), resultBytes, heapGrowth (bytes while
+    // one result is held)}.
+    timeSubdivideInCore(mesh, task, repetitions) {
+      integerIn(repetitions, 'repetitions', 1, 1000);
+      const r = unwrap(raw.benchSubdivideInCore(benchAccess.handleOf(mesh), String(task), repetitions));
+      return { seconds: r.seconds, checksum: r.checksum, n: r.n, resultBytes: r.resultBytes, heapGrowth: r.heapGrowth };
+    },
   });
 }

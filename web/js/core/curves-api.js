@@ -544,5 +544,14 @@ export function createCurvesApi(raw) {
       return out;
     },
   };
+  // Subdivision of a control polygon (issue 16, docs/api-curves.md "Subdivision"): 'chaikin'
+  // (corner cutting -> the uniform quadratic B-spline) or 'cubic-bspline' (Lane-Riesenfeld
+  // -> the uniform cubic B-spline), open or closed, `steps` times: Float64Array, dim per point.
+  api.subdivideCurve = (points, dim, { scheme, closed = false, steps = 1 } = {}) => {
+    if (typeof scheme !== 'string') fail('unknown-scheme', "subdivideCurve needs a scheme: 'chaikin' or 'cubic-bspline'");
+    if (typeof closed !== 'boolean') fail('invalid-argument', 'closed must be true or false');
+    const p = numbers(points, 'points');
+    return unwrap(raw.curveSubdivide(p, dimension(dim), scheme, closed, wholeNumber(steps, 'steps', 0, 20))).points;
+  };
   return api;
 }

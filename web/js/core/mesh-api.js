@@ -516,6 +516,18 @@ export const benchAccess = Object.freeze({
   indexedInput,
 });
 
+// Subdivision (issue 16, docs/api-mesh.md "Subdivision"): the scheme and step count as the
+// core takes them; the mesh's handle through the class's private field.
+const SUBDIVISION_SCHEMES = Object.freeze(['loop', 'catmull-clark']);
+function subdivisionArgs(mesh, options, what) {
+  if (!(mesh instanceof Mesh)) fail('invalid-argument', `${what} needs a mesh built by buildMesh()`);
+  const o = options ?? {};
+  if (!SUBDIVISION_SCHEMES.includes(o.scheme)) {
+    fail('unknown-scheme', `${what}: scheme must be 'loop' (triangle meshes) or 'catmull-clark' (any polygons), not ${JSON.stringify(o.scheme)?.slice(0, 40)}`);
+  }
+  return { handle: handleOfMesh(mesh), scheme: o.scheme };
+}
+
 export function createMeshApi(raw) {
   const { maxCoordinate, maxFaceCorners, maxVertices, maxFaces } = unwrap(raw.meshLimits());
   const meshLimits = Object.freeze({ maxCoordinate, maxFaceCorners, maxVertices, maxFaces });
@@ -611,6 +623,39 @@ export function createMeshApi(raw) {
       else r = named(kind);
       return indexedOutput(r, o.layout);
     },
+  };
+  // A new mesh `steps` subdivision steps finer (the input is untouched). Numbering of one
+  // step: old vertices keep 0..V-1, edge points V + e, Catmull-Clark face points V + E + f.
+  // Errors: 'unknown-scheme', 'not-a-triangle-mesh' (Loop; names the face), 'mesh-has-gaps'
+  // (compact first), 'too-large' (above meshLimits; says how many faces), 'invalid-argument'.
+  meshApi.subdivide = (mesh, options = {}) => {
+    const { handle, scheme } = subdivisionArgs(mesh, options, 'subdivide');
+    const steps = options?.steps === undefined ? 1 : integerIn(options.steps, 'steps', 0, 16);
+    return new Mesh(raw, unwrap(raw.meshSubdivide(handle, scheme, steps)).handle, tableDescriptors, meshOperations);
+  };
+  // One step as phases with every new point's mask (old vertices and weights, CSR):
+  // {scheme, phases: [{name, first, count}], masks: {offsets, vertices, weights}, rules,
+  // ruleNames, valences, positions, faceOffsets, faceVertices, counts}.
+  meshApi.subdivisionSteps = (mesh, options = {}) => {
+    const { handle, scheme } = subdivisionArgs(mesh, options, 'subdivisionSteps');
+    const r = unwrap(raw.meshSubdivisionSteps(handle, scheme));
+    return {
+      scheme,
+      phases: Array.from(r.phases, ({ name, first, count }) => ({ name, first, count })),
+      masks: { offsets: r.maskOffsets, vertices: r.maskVertices, weights: r.maskWeights },
+      rules: r.rules,
+      ruleNames: Array.from(r.ruleNames),
+      valences: r.valences,
+      positions: r.positions,
+      faceOffsets: r.faceOffsets,
+      faceVertices: r.faceVertices,
+      counts: { vertices: r.positions.length / 3, edges: r.edges, faces: r.faceOffsets.length - 1 },
+    };
+  };
+  // Where each vertex goes in the limit: Float64Array, x, y, z per vertex.
+  meshApi.limitPositions = (mesh, options = {}) => {
+    const { handle, scheme } = subdivisionArgs(mesh, options, 'limitPositions');
+    return unwrap(raw.meshLimitPositions(handle, scheme)).positions;
   };
   rawOfBuildMesh.set(meshApi.buildMesh, raw);
   return meshApi;

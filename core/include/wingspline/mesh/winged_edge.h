@@ -369,6 +369,7 @@ private:
     template <class Recorder> void poke_face_impl(Face f, Recorder& rec);
     friend struct EulerAccess;
     friend struct EulerRows;
+    friend struct SubdivisionAccess; // subdivision.cpp builds a result's tables directly
 
     CheckResult check_element(Vertex v) const;
     CheckResult check_element(Edge e) const;
