@@ -5,9 +5,14 @@ import { repoRoot, capture } from './run.mjs';
 import { buildNative } from '../build.mjs';
 import { fuzzLayer } from './fuzz.mjs';
 
-function testFiles(dir) {
+// Every *.test.mjs under dir, in its subject folders at any depth (tests/browser/mesh/...),
+// relative to the repository, sorted.
+export function testFiles(dir) {
   const full = path.join(repoRoot, dir);
-  return fs.readdirSync(full).filter((f) => f.endsWith('.test.mjs')).sort().map((f) => path.join(dir, f));
+  return fs.readdirSync(full, { recursive: true })
+    .filter((f) => f.endsWith('.test.mjs'))
+    .map((f) => path.join(dir, f))
+    .sort();
 }
 
 async function nodeTests(dir, extraEnv = {}) {
