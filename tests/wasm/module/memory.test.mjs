@@ -1,6 +1,10 @@
 // Memory over time (issue 9): every API function is called many times succeeding and many
 // times failing (the failures reach the core and come back as {ok:false}), meshes are
-// built and disposed, and the wasm heap must not grow.
+// built and disposed, and the wasm heap must not grow. Each failing call calls the
+// function its case names and must be refused with that function's documented code
+// (docs/api-curves.md, docs/api-mesh.md); a call refused for another reason fails the test.
+// Mesh methods without input fail on a disposed mesh ('disposed'); the six API functions
+// without input (NO_FAILING_INPUT) have no failing call at all.
 //
 // The measure: api.memoryUsage() -> { heapInUse: malloc's bytes in use, linearBytes: the
 // wasm memory }. After a warm-up round (first-use allocations, registry capacity) the bytes
@@ -60,121 +64,164 @@ const patch = Array.from({ length: 16 }, (_, c) => [Math.floor(c / 4), c % 4, ((
 const lecture = api.buildMesh(api.lectureExample());
 const V_MISSING = 1000; // the lecture mesh has 5 vertices, 7 edges and 3 faces
 
-// [name, calls of each kind, succeed(), fail()] -- fail() must throw a WingsplineError.
+// A mesh already disposed: the methods that take no input (counts, storage, planes...) have
+// one failing call, on a mesh that is gone ('disposed').
+const gone = api.buildMesh(tetra);
+gone.dispose();
+
+// API functions that take no input at all, so no call of them can fail: they get only the
+// succeeding calls (the table test below checks they really declare no parameter).
+const NO_FAILING_INPUT = ['memoryUsage', 'liveMeshCount', 'lectureExample', 'foleyExample', 'hermiteFromConstraints', 'curveLimits'];
+
+// [name, calls of each kind, succeed(), failing calls]. Each failing call is [code, fn]: fn
+// calls the function the case names with bad input and must be refused with exactly that
+// code, thrown as a WingsplineError or, for the functions that answer with a report
+// (validateMesh, check_ operations), returned as { ok: false } carrying the code.
 const cases = [
-  ['buildMesh + dispose', FULL, () => api.buildMesh(tetra).dispose(), () => api.buildMesh(nonManifold)],
-  ['parseMesh (OFF)', FULL, () => api.parseMesh(offText, { format: 'off' }), () => api.parseMesh(badOff, { format: 'off' })],
-  ['validateMesh', REDUCED, () => api.validateMesh(tetra), () => api.validateMesh({ positions: [0, 0, 0], faces: [[0, 1, 2]] }).ok || api.buildMesh({ positions: [0, 0, 0], faces: [[0, 1, 2]] })],
-  ['evaluateCurve', REDUCED, () => api.evaluateCurve(nurbs, params), () => api.evaluateCurve(decreasing, params)],
-  ['evaluateDerivative', REDUCED, () => api.evaluateDerivative(bezier, params, 1), () => api.evaluateDerivative(zeroWeight, params, 1)],
-  ['mesh.edgesAroundVertex', FULL, () => lecture.edgesAroundVertex(1), () => lecture.edgesAroundVertex(V_MISSING)],
-  ['parseMesh (OBJ)', REDUCED, () => api.parseMesh(objText, { format: 'obj' }), () => api.parseMesh('v 0 0 0\nf 1 2 3\n', { format: 'obj' })],
-  ['formatMesh', REDUCED, () => api.formatMesh(tetra, { format: 'obj' }), () => api.formatMesh(tetra, { format: 'ply' })],
-  ['generateMesh', REDUCED, () => api.generateMesh('sphere', { slices: 8, stacks: 4 }), () => api.generateMesh('torus')],
-  ['lectureExample / foleyExample', REDUCED, () => { api.lectureExample(); api.foleyExample(); }, () => api.generateMesh('lecture')],
-  ['basisMatrix', REDUCED, () => api.basisMatrix('catmull-rom'), () => api.basisMatrix('bezir')],
-  ['hermiteFromConstraints', REDUCED, () => api.hermiteFromConstraints(), () => api.basisMatrix('hermit')],
-  ['evaluateWithDerivatives', REDUCED, () => api.evaluateWithDerivatives(nurbs, params, 2), () => api.evaluateWithDerivatives(bezier, outside, 2)],
-  ['curveDomain', REDUCED, () => api.curveDomain(nurbs), () => api.curveDomain(decreasing)],
-  ['sampleCurve', REDUCED, () => api.sampleCurve(nurbs, 50), () => api.sampleCurve(zeroWeight, 50)],
-  ['blendingFunctions', REDUCED, () => api.blendingFunctions(nurbs, params), () => api.blendingFunctions(decreasing, params)],
-  ['segmentMatrices', REDUCED, () => api.segmentMatrices(bezier, 0), () => api.segmentMatrices(bezier, 5)],
-  ['deCasteljau', REDUCED, () => api.deCasteljau(geometry, 2, 0.3), () => api.deCasteljau(geometry, 2, 0.3, [1, 1, 0, 1])],
-  ['subdivideBezier', REDUCED, () => api.subdivideBezier(geometry, 2, 0.5), () => api.subdivideBezier(geometry, 2, 0.5, [1, -1, 1, 1])],
-  ['bezierSubdivisionMatrices', REDUCED, () => api.bezierSubdivisionMatrices(3, 0.5), () => api.bezierSubdivisionMatrices(3, 1.5)],
-  ['elevateDegree', REDUCED, () => api.elevateDegree(geometry, 2), () => api.elevateDegree(geometry, 2, [1, 0, 1, 1])],
-  ['convertBasis', REDUCED, () => api.convertBasis(geometry, 2, 'bezier', 'hermite'), () => api.convertBasis(geometry, 2, 'bezier', 'nurbs')],
-  ['mesh.wingedEdge / wingedEdgeArrays', REDUCED, () => { lecture.wingedEdge(); lecture.wingedEdgeArrays(); }, () => lecture.facesOfEdge(V_MISSING)],
+  ['buildMesh + dispose', FULL, () => api.buildMesh(tetra).dispose(), [['non-manifold-edge', () => api.buildMesh(nonManifold)]]],
+  ['parseMesh (OFF)', FULL, () => api.parseMesh(offText, { format: 'off' }), [['parse-error', () => api.parseMesh(badOff, { format: 'off' })]]],
+  ['validateMesh', REDUCED, () => api.validateMesh(tetra), [['index-out-of-range', () => api.validateMesh({ positions: [0, 0, 0], faces: [[0, 1, 2]] })]]],
+  ['evaluateCurve', REDUCED, () => api.evaluateCurve(nurbs, params), [['decreasing-knots', () => api.evaluateCurve(decreasing, params)]]],
+  ['evaluateDerivative', REDUCED, () => api.evaluateDerivative(bezier, params, 1), [['invalid-weight', () => api.evaluateDerivative(zeroWeight, params, 1)]]],
+  ['mesh.edgesAroundVertex', FULL, () => lecture.edgesAroundVertex(1), [['invalid-element', () => lecture.edgesAroundVertex(V_MISSING)]]],
+  ['parseMesh (OBJ)', REDUCED, () => api.parseMesh(objText, { format: 'obj' }), [['index-out-of-range', () => api.parseMesh('v 0 0 0\nf 1 2 3\n', { format: 'obj' })]]],
+  ['formatMesh', REDUCED, () => api.formatMesh(tetra, { format: 'obj' }), [['unknown-format', () => api.formatMesh(tetra, { format: 'ply' })]]],
+  ['generateMesh', REDUCED, () => api.generateMesh('sphere', { slices: 8, stacks: 4 }), [['unknown-mesh', () => api.generateMesh('torus')]]],
+  ['lectureExample / foleyExample', REDUCED, () => { api.lectureExample(); api.foleyExample(); }, []],
+  ['basisMatrix', REDUCED, () => api.basisMatrix('catmull-rom'), [['unknown-basis', () => api.basisMatrix('bezir')]]],
+  ['hermiteFromConstraints', REDUCED, () => api.hermiteFromConstraints(), []],
+  ['evaluateWithDerivatives', REDUCED, () => api.evaluateWithDerivatives(nurbs, params, 2), [['parameter-out-of-range', () => api.evaluateWithDerivatives(bezier, outside, 2)]]],
+  ['curveDomain', REDUCED, () => api.curveDomain(nurbs), [['decreasing-knots', () => api.curveDomain(decreasing)]]],
+  ['sampleCurve', REDUCED, () => api.sampleCurve(nurbs, 50), [['invalid-weight', () => api.sampleCurve(zeroWeight, 50)]]],
+  ['blendingFunctions', REDUCED, () => api.blendingFunctions(nurbs, params), [['decreasing-knots', () => api.blendingFunctions(decreasing, params)]]],
+  ['segmentMatrices', REDUCED, () => api.segmentMatrices(bezier, 0), [['segment-out-of-range', () => api.segmentMatrices(bezier, 5)]]],
+  ['deCasteljau', REDUCED, () => api.deCasteljau(geometry, 2, 0.3), [['invalid-weight', () => api.deCasteljau(geometry, 2, 0.3, [1, 1, 0, 1])]]],
+  ['subdivideBezier', REDUCED, () => api.subdivideBezier(geometry, 2, 0.5), [['invalid-weight', () => api.subdivideBezier(geometry, 2, 0.5, [1, -1, 1, 1])]]],
+  ['bezierSubdivisionMatrices', REDUCED, () => api.bezierSubdivisionMatrices(3, 0.5), [['parameter-out-of-range', () => api.bezierSubdivisionMatrices(3, 1.5)]]],
+  ['elevateDegree', REDUCED, () => api.elevateDegree(geometry, 2), [['invalid-weight', () => api.elevateDegree(geometry, 2, [1, 0, 1, 1])]]],
+  ['convertBasis', REDUCED, () => api.convertBasis(geometry, 2, 'bezier', 'hermite'), [['unknown-basis', () => api.convertBasis(geometry, 2, 'bezier', 'nurbs')]]],
+  ['mesh.wingedEdge / wingedEdgeArrays', REDUCED, () => { lecture.wingedEdge(); lecture.wingedEdgeArrays(); },
+    [['disposed', () => gone.wingedEdge()], ['disposed', () => gone.wingedEdgeArrays()]]],
   ['mesh vertex queries', REDUCED, () => { lecture.facesAroundVertex(1); lecture.verticesAroundVertex(1); lecture.traversalSteps(1); },
-    () => lecture.traversalSteps(V_MISSING)],
+    [['invalid-element', () => lecture.facesAroundVertex(V_MISSING)], ['invalid-element', () => lecture.verticesAroundVertex(V_MISSING)],
+      ['invalid-element', () => lecture.traversalSteps(V_MISSING)]]],
   ['mesh face queries', REDUCED, () => { lecture.edgesOfFace(1); lecture.verticesOfFace(1); lecture.faceNeighbours(1); lecture.faceEdgeSteps(1); },
-    () => lecture.faceEdgeSteps(V_MISSING)],
-  ['mesh.facesOfEdge', REDUCED, () => lecture.facesOfEdge(2), () => lecture.edgesOfFace(V_MISSING)],
+    [['invalid-element', () => lecture.edgesOfFace(V_MISSING)], ['invalid-element', () => lecture.verticesOfFace(V_MISSING)],
+      ['invalid-element', () => lecture.faceNeighbours(V_MISSING)], ['invalid-element', () => lecture.faceEdgeSteps(V_MISSING)]]],
+  ['mesh.facesOfEdge', REDUCED, () => lecture.facesOfEdge(2), [['invalid-element', () => lecture.facesOfEdge(V_MISSING)]]],
   ['mesh counts / bytes / validate / ringWalk', REDUCED, () => { lecture.counts(); lecture.bytes(); lecture.validate(); hooks.ringWalk(lecture); },
-    () => lecture.verticesOfFace(V_MISSING)],
-  ['mesh planes / normals', REDUCED, () => { lecture.planes(); lecture.normals(); }, () => lecture.faceNeighbours(V_MISSING)],
-  ['mesh.setVertexPosition', REDUCED, () => lecture.setVertexPosition(4, [2, -1, 0]), () => lecture.setVertexPosition(V_MISSING, [0, 0, 0])],
-  ['hooks.timeBuildInCore', REDUCED, () => hooks.timeBuildInCore(tetra, 1), () => hooks.timeBuildInCore(nonManifold, 1)],
+    [['disposed', () => gone.counts()], ['disposed', () => gone.bytes()], ['disposed', () => gone.validate()], ['disposed', () => hooks.ringWalk(gone)]]],
+  ['mesh planes / normals', REDUCED, () => { lecture.planes(); lecture.normals(); },
+    [['disposed', () => gone.planes()], ['invalid-argument', () => lecture.normals({ into: new Float64Array(1) })]]],
+  ['mesh.setVertexPosition', REDUCED, () => lecture.setVertexPosition(4, [2, -1, 0]),
+    [['invalid-element', () => lecture.setVertexPosition(V_MISSING, [0, 0, 0])], ['invalid-argument', () => lecture.setVertexPosition(1, [NaN, 0, 0])]]],
+  ['hooks.timeBuildInCore', REDUCED, () => hooks.timeBuildInCore(tetra, 1), [['non-manifold-edge', () => hooks.timeBuildInCore(nonManifold, 1)]]],
   // Issue 14: each succeeding round chooses another stored edge and back (the version moves
-  // on, so the representations are derived again: the old ones must be freed).
+  // on, so the representations are derived again: the old ones must be freed). e7 (index 6)
+  // touches neither v1 nor F1.
   ['mesh operations', REDUCED, () => {
     lecture.coreVersion(); lecture.checkSetVertexEdge(0, 1); lecture.setVertexEdge(0, 1); lecture.setVertexEdge(0, 0);
     lecture.checkSetFaceEdge(0, 1); lecture.setFaceEdge(0, 1); lecture.apply({ op: 'set-face-edge', f: 0, e: 0 }); lecture.representations({ limit: 2 });
-  }, () => lecture.setVertexEdge(0, 6)],
-  ['deBoor', REDUCED, () => api.deBoor(bspline, 0.5), () => api.deBoor(decreasing, 0.5)],
-  ['insertKnot', REDUCED, () => api.insertKnot(bspline, 1.5), () => api.insertKnot(decreasing, 0.5)],
-  ['bsplineToBezier', REDUCED, () => api.bsplineToBezier(bspline), () => api.bsplineToBezier(decreasing)],
-  ['knotMultiplicities', REDUCED, () => api.knotMultiplicities(bspline), () => api.knotMultiplicities(decreasing)],
-  ['segmentAt', REDUCED, () => api.segmentAt(bspline, 1.5), () => api.segmentAt(decreasing, 0.5)],
-  ['clampedKnots', REDUCED, () => api.clampedKnots(7, 3), () => api.clampedKnots(3, 3)],
-  ['uniformKnots', REDUCED, () => api.uniformKnots(7, 3), () => api.uniformKnots(3, 3)],
-  ['unclampedKnots', REDUCED, () => api.unclampedKnots(bspline.knots, 3), () => api.unclampedKnots(decreasing.knots, 3)],
-  ['isClampedKnots', REDUCED, () => api.isClampedKnots(bspline.knots, 3), () => api.isClampedKnots([0, 1], 3)],
-  ['dragWithConstraint', REDUCED, () => api.dragWithConstraint(chain, 2, 'bezier', 'C2', 2, [2.5, 1.5]), () => api.dragWithConstraint(chain, 2, 'bezier', 'C2', 99, [0, 0])],
-  ['enforceConstraint', REDUCED, () => api.enforceConstraint(chain, 2, 'hermite', 'C2'), () => api.enforceConstraint(chain.slice(2), 2, 'hermite', 'C2')],
-  ['appendSegment', REDUCED, () => api.appendSegment(chain, 2, 'bezier', 'G1'), () => api.appendSegment(chain, 2, 'bezier', 'G2')],
+  }, [['disposed', () => gone.coreVersion()], ['edge-not-incident', () => lecture.checkSetVertexEdge(0, 6)],
+    ['edge-not-incident', () => lecture.setVertexEdge(0, 6)], ['edge-not-on-face', () => lecture.checkSetFaceEdge(0, 6)],
+    ['edge-not-on-face', () => lecture.setFaceEdge(0, 6)], ['edge-not-on-face', () => lecture.apply({ op: 'set-face-edge', f: 0, e: 6 })],
+    ['unknown-operation', () => lecture.apply({ op: 'flip-everything' })], ['invalid-argument', () => lecture.representations({ limit: -1 })]]],
+  ['deBoor', REDUCED, () => api.deBoor(bspline, 0.5), [['decreasing-knots', () => api.deBoor(decreasing, 0.5)]]],
+  ['insertKnot', REDUCED, () => api.insertKnot(bspline, 1.5), [['decreasing-knots', () => api.insertKnot(decreasing, 0.5)]]],
+  ['bsplineToBezier', REDUCED, () => api.bsplineToBezier(bspline), [['decreasing-knots', () => api.bsplineToBezier(decreasing)]]],
+  ['knotMultiplicities', REDUCED, () => api.knotMultiplicities(bspline), [['decreasing-knots', () => api.knotMultiplicities(decreasing)]]],
+  ['segmentAt', REDUCED, () => api.segmentAt(bspline, 1.5), [['decreasing-knots', () => api.segmentAt(decreasing, 0.5)]]],
+  ['clampedKnots', REDUCED, () => api.clampedKnots(7, 3), [['too-few-points', () => api.clampedKnots(3, 3)]]],
+  ['uniformKnots', REDUCED, () => api.uniformKnots(7, 3), [['invalid-argument', () => api.uniformKnots(3, 3)]]],
+  ['unclampedKnots', REDUCED, () => api.unclampedKnots(bspline.knots, 3), [['decreasing-knots', () => api.unclampedKnots(decreasing.knots, 3)]]],
+  ['isClampedKnots', REDUCED, () => api.isClampedKnots(bspline.knots, 3), [['wrong-knot-count', () => api.isClampedKnots([0, 1], 3)]]],
+  ['dragWithConstraint', REDUCED, () => api.dragWithConstraint(chain, 2, 'bezier', 'C2', 2, [2.5, 1.5]),
+    [['invalid-argument', () => api.dragWithConstraint(chain, 2, 'bezier', 'C2', 99, [0, 0])]]],
+  ['enforceConstraint', REDUCED, () => api.enforceConstraint(chain, 2, 'hermite', 'C2'), [['wrong-point-count', () => api.enforceConstraint(chain.slice(2), 2, 'hermite', 'C2')]]],
+  ['appendSegment', REDUCED, () => api.appendSegment(chain, 2, 'bezier', 'G1'), [['invalid-argument', () => api.appendSegment(chain, 2, 'bezier', 'G2')]]],
   ['nurbsCircle / nurbsEllipse', REDUCED, () => { api.nurbsCircle({ center: [0, 0], radius: 1 }); api.nurbsEllipse({ center: [0, 0], rx: 2, ry: 1 }); },
-    () => api.nurbsCircle({ center: [0, 0], radius: -1 })],
+    [['invalid-argument', () => api.nurbsCircle({ center: [0, 0], radius: -1 })], ['invalid-argument', () => api.nurbsEllipse({ center: [0, 0], rx: 0, ry: 1 })]]],
   ['nurbsArc', REDUCED, () => api.nurbsArc({ center: [0, 0], radius: 1, startAngle: 0, endAngle: 2 }),
-    () => api.nurbsArc({ center: [0, 0], radius: 1, startAngle: 0, endAngle: 10 })],
+    [['invalid-argument', () => api.nurbsArc({ center: [0, 0], radius: 1, startAngle: 0, endAngle: 10 })]]],
   ['nurbsConic', REDUCED, () => api.nurbsConic({ p0: [0, 0], p1: [1, 1], p2: [2, 0], weight: 0.5 }),
-    () => api.nurbsEllipse({ center: [0, 0], rx: 0, ry: 1 })],
-  ['curvature', REDUCED, () => api.curvature(nurbs, params), () => api.curvature(zeroWeight, params)],
-  ['arcLength', REDUCED, () => api.arcLength(nurbs), () => api.arcLength(decreasing)],
-  ['arcLengthParams', REDUCED, () => api.arcLengthParams(nurbs, 10), () => api.arcLengthParams(decreasing, 10)],
-  ['jointContinuity', REDUCED, () => api.jointContinuity(bezier, following, { tolerance: 1e-9 }), () => api.jointContinuity(bezier, decreasing)],
-  ['interpolatePolynomial', REDUCED, () => api.interpolatePolynomial(geometry, 2), () => api.interpolatePolynomial(geometry, 2, [0, 1, 1, 2])],
-  ['curveLimits', REDUCED, () => api.curveLimits(), () => api.interpolatePolynomial(geometry, 2, [0, 1e-12, 1, 2])],
+    [['invalid-weight', () => api.nurbsConic({ p0: [0, 0], p1: [1, 1], p2: [2, 0], weight: -1 })]]],
+  ['curvature', REDUCED, () => api.curvature(nurbs, params), [['invalid-weight', () => api.curvature(zeroWeight, params)]]],
+  ['arcLength', REDUCED, () => api.arcLength(nurbs), [['decreasing-knots', () => api.arcLength(decreasing)]]],
+  ['arcLengthParams', REDUCED, () => api.arcLengthParams(nurbs, 10), [['decreasing-knots', () => api.arcLengthParams(decreasing, 10)]]],
+  ['jointContinuity', REDUCED, () => api.jointContinuity(bezier, following, { tolerance: 1e-9 }), [['decreasing-knots', () => api.jointContinuity(bezier, decreasing)]]],
+  ['interpolatePolynomial', REDUCED, () => api.interpolatePolynomial(geometry, 2),
+    [['nodes-not-increasing', () => api.interpolatePolynomial(geometry, 2, [0, 1, 1, 2])], ['nodes-too-close', () => api.interpolatePolynomial(geometry, 2, [0, 1e-12, 1, 2])]]],
+  ['curveLimits', REDUCED, () => api.curveLimits(), []],
   ['chainGuarantees / bsplineGuarantees', REDUCED, () => { api.chainGuarantees({ basis: 'bezier', slots: 4, isPoint: [true, true, true, true], maps: [[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]] }); api.bsplineGuarantees({ knots: [0, 1, 2, 3, 4, 5, 6, 7], degree: 3, count: 4 }); },
-    () => api.bsplineGuarantees({ knots: [0, 1, 0.5, 2, 3, 4, 5, 6], degree: 3, count: 4 })],
+    [['invalid-argument', () => api.chainGuarantees({ basis: 'bezier', slots: 4, isPoint: [true, true, true, true], maps: [] })],
+      ['decreasing-knots', () => api.bsplineGuarantees({ knots: [0, 1, 0.5, 2, 3, 4, 5, 6], degree: 3, count: 4 })]]],
   ['samplePatch', REDUCED, () => api.samplePatch({ kind: 'bezier', points: patch, nu: 4, nv: 4 }),
-    () => api.samplePatch({ kind: 'bezier', points: patch.slice(3), nu: 4, nv: 4 })],
-  ['transformPoints', REDUCED, () => api.transformPoints(geometry, 2, [0, -1, 1, 1, 0, 2, 0, 0, 1]), () => api.transformPoints(geometry, 2, [1, 0, 0, 1])],
+    [['wrong-point-count', () => api.samplePatch({ kind: 'bezier', points: patch.slice(3), nu: 4, nv: 4 })]]],
+  ['transformPoints', REDUCED, () => api.transformPoints(geometry, 2, [0, -1, 1, 1, 0, 2, 0, 0, 1]), [['invalid-argument', () => api.transformPoints(geometry, 2, [1, 0, 0, 1])]]],
   ['mesh.storage / representations', REDUCED, () => { lecture.storage(); lecture.representations({ limit: 3 }); },
-    () => lecture.query('edges-of-face', V_MISSING)],
+    [['disposed', () => gone.storage()], ['invalid-argument', () => lecture.representations({ limit: -1 })]]],
   ['mesh.tables', REDUCED, () => { lecture.tables('edge-list', { offset: 1, limit: 2 }); lecture.tables('winged-edge'); },
-    () => lecture.tables('edge-list', { offset: -1 })],
-  ['mesh.boundingBox / vertexNormal', REDUCED, () => { lecture.boundingBox(); lecture.vertexNormal(1); }, () => lecture.vertexNormal(V_MISSING)],
-  ['mesh.query', REDUCED, () => lecture.query('faces-around-vertex', 1), () => lecture.query('faces-around-vertex', V_MISSING)],
-  ['hooks.timeNormalsInCore', REDUCED, () => hooks.timeNormalsInCore(lecture, 1), () => hooks.timeNormalsInCore(lecture, 0)],
-  ['memoryUsage / liveMeshCount', REDUCED, () => { api.memoryUsage(); api.liveMeshCount(); },
-    () => api.facesAroundVertex?.(0) ?? lecture.facesAroundVertex(V_MISSING)],
+    [['invalid-argument', () => lecture.tables('edge-list', { offset: -1 })], ['unknown-representation', () => lecture.tables('wingededge')]]],
+  ['mesh.boundingBox / vertexNormal', REDUCED, () => { lecture.boundingBox(); lecture.vertexNormal(1); },
+    [['disposed', () => gone.boundingBox()], ['invalid-element', () => lecture.vertexNormal(V_MISSING)]]],
+  ['mesh.query', REDUCED, () => lecture.query('faces-around-vertex', 1),
+    [['invalid-element', () => lecture.query('faces-around-vertex', V_MISSING)], ['unknown-query', () => lecture.query('faces-of-vertex', 1)]]],
+  ['hooks.timeNormalsInCore', REDUCED, () => hooks.timeNormalsInCore(lecture, 1), [['invalid-argument', () => hooks.timeNormalsInCore(lecture, 0)]]],
+  ['memoryUsage / liveMeshCount', REDUCED, () => { api.memoryUsage(); api.liveMeshCount(); }, []],
 ];
 
-function run(fn, count, label, mustThrow) {
-  for (let i = 0; i < count; i += 1) {
-    if (!mustThrow) {
-      fn();
-      continue;
+// The code a failing call was refused with, or null when it was not refused.
+function refusal(fn, label) {
+  let r;
+  try {
+    r = fn();
+  } catch (err) {
+    if (!(err instanceof Error) || typeof err.code !== 'string') throw new Error(`${label}: threw ${String(err)}`);
+    return err.code;
+  }
+  if (r && r.ok === false) return r.code ?? r.problems?.[0]?.code ?? null;
+  return null;
+}
+
+function run(fn, count) {
+  for (let i = 0; i < count; i += 1) fn();
+}
+
+function runFailing(failing, count, label) {
+  for (const [code, fn] of failing) {
+    for (let i = 0; i < count; i += 1) {
+      const got = refusal(fn, label);
+      if (got !== code) throw new Error(`${label}: ${fn} was refused with ${got}, expected ${code}`);
     }
-    try {
-      fn();
-    } catch (err) {
-      if (typeof err.code !== 'string' || !(err instanceof Error)) throw new Error(`${label}: threw ${String(err)}`);
-      continue;
-    }
-    throw new Error(`${label}: the failing call did not fail`);
   }
 }
 
-test('the table covers every function of the API and of a mesh', () => {
-  const text = cases.map(([name, , ok, bad]) => `${name} ${ok} ${bad}`).join('\n');
-  const missing = Object.keys(api).filter((k) => typeof api[k] === 'function' && !text.includes(`api.${k}(`));
-  assert.deepEqual(missing, [], 'API functions without a memory case');
+test('the table covers every function of the API and of a mesh, each with a failing call that calls it', () => {
+  const succeedText = cases.map(([, , ok]) => String(ok)).join('\n');
+  const failText = cases.flatMap(([, , , bad]) => bad.map(([, fn]) => String(fn))).join('\n');
+  const functions = Object.keys(api).filter((k) => typeof api[k] === 'function');
+  assert.deepEqual(functions.filter((k) => !succeedText.includes(`api.${k}(`)), [], 'API functions without a succeeding call');
+  assert.deepEqual(functions.filter((k) => !NO_FAILING_INPUT.includes(k) && !failText.includes(`api.${k}(`)), [],
+    'API functions without a failing call of their own');
+  assert.deepEqual(NO_FAILING_INPUT.filter((k) => api[k].length !== 0), [], 'functions said to take no input declare parameters');
   const methods = Object.getOwnPropertyNames(Object.getPrototypeOf(lecture))
     .filter((k) => k !== 'constructor' && k !== 'dispose')
     // Getters (disposed, id, version) are read, not called.
     .filter((k) => !Object.getOwnPropertyDescriptor(Object.getPrototypeOf(lecture), k).get);
-  assert.deepEqual(methods.filter((k) => !text.includes(`lecture.${k}(`)), [], 'Mesh methods without a memory case');
+  assert.deepEqual(methods.filter((k) => !succeedText.includes(`lecture.${k}(`)), [], 'Mesh methods without a succeeding call');
+  assert.deepEqual(methods.filter((k) => !failText.includes(`lecture.${k}(`) && !failText.includes(`gone.${k}(`)), [],
+    'Mesh methods without a failing call of their own');
 });
 
 for (const [name, count, succeed, failing] of cases) {
-  test(`${name}: ${count} succeeding and ${count} failing calls do not grow the heap`, () => {
-    run(succeed, WARM_UP, name, false);
-    run(failing, WARM_UP, name, true);
+  const what = failing.length > 0 ? `${count} succeeding and ${count} failing calls (each refused with its own code)`
+    : `${count} succeeding calls (no input, so no failing call)`;
+  test(`${name}: ${what} do not grow the heap`, () => {
+    run(succeed, WARM_UP);
+    runFailing(failing, WARM_UP, name);
     const before = api.memoryUsage();
-    run(succeed, count, name, false);
-    run(failing, count, name, true);
+    run(succeed, count);
+    runFailing(failing, count, name);
     const after = api.memoryUsage();
     assert.ok(Math.abs(after.heapInUse - before.heapInUse) <= HEAP_SLACK_BYTES,
       `bytes in use went from ${before.heapInUse} to ${after.heapInUse}`);
