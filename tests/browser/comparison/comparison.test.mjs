@@ -2,7 +2,7 @@
 // facts, basis conversion against lecture 002's Bezier tangents, and invariance.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { openPage, screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
 
 // Lecture 003's comparison table, typed from the notes (Hermite, Bezier, B-spline, Catmull-Rom).
 const LECTURE_003 = {
@@ -21,7 +21,7 @@ const EXACT = 1e-12; // world units: "the same curve"
 const env = useSiteAndBrowser();
 
 async function openLab() {
-  const page = await openPage(env.browser, `${env.site.url}comparison.html`);
+  const page = await env.openPage(`${env.site.url}comparison.html`);
   await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
   return page;
 }
@@ -51,7 +51,6 @@ test('the live table matches lecture 003 for the default polygon', async () => {
   assert.equal(await page.$$eval('.live-cell [class="lecture differs"]', (x) => x.length), 0);
   await screenshot(page, 'comparison-families');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('adding and removing segments keeps the lecture\'s table true at every joint', async () => {
@@ -81,7 +80,6 @@ test('adding and removing segments keeps the lecture\'s table true at every join
   await page.click('[data-action="undo"]');
   assert.equal(await points(), 28);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('dragging a control point keeps the lecture\'s facts true', async () => {
@@ -95,7 +93,6 @@ test('dragging a control point keeps the lecture\'s facts true', async () => {
   assert.notDeepEqual(s.points[1], [-2.4, 1.3]);
   assertMatchesLecture(await liveTable(page));
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('basis conversion: the Hermite geometry of a Bezier segment is P0, P3, 3(P1 - P0), 3(P3 - P2)', async () => {
@@ -119,7 +116,6 @@ test('basis conversion: the Hermite geometry of a Bezier segment is P0, P3, 3(P1
   const swapped = await page.evaluate(() => window.wingspline.model.conversion.distance);
   assert.ok(swapped > 0.05, 'a different curve');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('invariance: affine maps commute with every family; perspective only with the rational form', async () => {
@@ -134,7 +130,6 @@ test('invariance: affine maps commute with every family; perspective only with t
   assert.ok(inv.rational.distance < 1e-12, 'the rational Bezier with weights w(P_i) is');
   await screenshot(page, 'comparison-perspective');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 // Issue 13 item 9: every choice of the conversion panel reads as words and numbers.
@@ -155,7 +150,6 @@ test('basis conversion: the panel never prints null, undefined or NaN', async ()
     }
   }
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 // Issue 13 item 8: a cell of the lecture's table is a guarantee for every polygon; what this
@@ -196,5 +190,4 @@ test('a polygon that happens to be smoother, or to touch its curve, keeps the le
     assert.doesNotMatch(q.text, /✓/);
   }
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });

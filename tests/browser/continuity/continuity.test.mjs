@@ -3,7 +3,7 @@
 // plot's jump, the travelling point, and a share link.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openPage, screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
 
 // Tolerances: positions in world units; the page classifies joints at 1e-6 relative.
 const POSITION_TOL = 1e-9;
@@ -13,7 +13,7 @@ const DRAG_PX = 45;
 const env = useSiteAndBrowser();
 
 async function openLab(hash = '') {
-  const page = await openPage(env.browser, `${env.site.url}continuity.html${hash}`);
+  const page = await env.openPage(`${env.site.url}continuity.html${hash}`);
   await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
   return page;
 }
@@ -72,7 +72,6 @@ test('the C1 preset reads C1 and G1, with the lecture\'s derivatives as evidence
   assert.equal(await page.textContent('.joint-card .verdict'), 'C1 · G1');
   await screenshot(page, 'continuity-c1');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('dragging P2 off the line in free mode drops G1 (and C1)', async () => {
@@ -93,7 +92,6 @@ test('dragging P2 off the line in free mode drops G1 (and C1)', async () => {
   assert.equal(await page.textContent('.joint-card .verdict'), 'C0 · G0');
   await screenshot(page, 'continuity-free-drag');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('with the G1 constraint a drag builds a G1-not-C1 joint and the speed jumps by the leg ratio', async () => {
@@ -133,7 +131,6 @@ test('with the G1 constraint a drag builds a G1-not-C1 joint and the speed jumps
   assert.ok(plotDrawn > 200, 'the speed plot is drawn');
   await screenshot(page, 'continuity-g1-not-c1');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('the C1 constraint keeps J - P2 = Q1 - J while dragging (lecture 001)', async () => {
@@ -145,7 +142,6 @@ test('the C1 constraint keeps J - P2 = Q1 - J while dragging (lecture 001)', asy
   assert.ok(norm(sub(sub(J, P2), sub(Q1, J))) < POSITION_TOL);
   const [j] = await joints(page);
   assert.ok(j.parametric >= 1 && j.geometric >= 1);
-  await page.context().close();
 });
 
 test('presets: zero tangents give C1 without G1; Hermite sharing the tangent is C1; B-spline C2; Catmull-Rom C1', async () => {
@@ -171,7 +167,6 @@ test('presets: zero tangents give C1 without G1; Hermite sharing the tangent is 
   await choosePreset(page, 'catmull-rom');
   for (const k of await joints(page)) { assert.equal(k.parametric, 1, 'Catmull-Rom is C1, not C2'); assert.ok(k.geometric >= 1); }
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('the travelling point steps at parametric speed and the state survives a share link', async () => {
@@ -194,15 +189,13 @@ test('the travelling point steps at parametric speed and the state survives a sh
   assert.ok(norm(sub(t.point, api)) < POSITION_TOL, 'the point is the curve at u');
   s = await state(page);
   const url = await page.evaluate(() => window.wingspline.shareUrl());
-  const other = await openPage(env.browser, url);
+  const other = await env.openPage(url);
   await other.waitForSelector('body[data-ready=true]');
   const restored = await other.evaluate(() => window.wingspline.state);
   assert.deepEqual(restored.points, s.points);
   assert.equal(restored.u, 0.5);
   assert.deepEqual(page.problems, []);
   assert.deepEqual(other.problems, []);
-  await other.context().close();
-  await page.context().close();
 });
 
 test('keyboard: select a handle with ] and move it with the arrows', async () => {
@@ -217,7 +210,6 @@ test('keyboard: select a handle with ] and move it with the arrows', async () =>
   const after = await state(page);
   assert.ok(after.points[1][1] > before.points[1][1]);
   assert.match(await page.textContent('#stage-description'), /joint 1: C/);
-  await page.context().close();
 });
 
 test('a third segment added under the C2 constraint joins with C2 at both joints', async () => {
@@ -241,7 +233,6 @@ test('a third segment added under the C2 constraint joins with C2 at both joints
   await page.waitForFunction(() => document.querySelector('#remove-segment').disabled, null, { timeout: 5000 })
     .catch(() => assert.fail('two segments is the least with a joint: Remove segment should be disabled'));
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('Hermite joints: C1 shares the tangent, C2 also matches P\'\' from the Hermite blending functions', async () => {
@@ -263,7 +254,6 @@ test('Hermite joints: C1 shares the tangent, C2 also matches P\'\' from the Herm
   assert.equal(j.parametric, 2);
   assert.equal(j.geometric, 2);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 // Issue 13, item 21: typing 1e300 into the inspector (as a person would: click the point,
@@ -292,7 +282,6 @@ test('typing x = 1e300 for P1 in the inspector: the joint table shows no Infinit
     assert.match(await page.evaluate(() => window.wingspline.message()), /x|coordinate|limit|large/i);
   }
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 // Items 3 and 4: the zero-tangent preset's curvature is "undefined" in the table and in the
@@ -314,7 +303,6 @@ test('zero tangents: curvature "undefined" in the table and the plot agree; the 
   assert.ok(rows.some((r) => r[1] === 'lectures 001, 004' && /proportional/.test(r[0])));
   assert.ok(rows.some((r) => r[1] === 'lecture 003' && /direction of the n th derivative/.test(r[0])));
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 // A state whose preset has no note (a name from a JSON file or a link, which the schema
@@ -328,5 +316,4 @@ test('a preset without a note prints no "null" in the rule panel', async () => {
   assert.match(text, /C1 \(equal first derivatives\) implies G1/);
   for (const word of ['null', 'undefined', 'NaN']) assert.ok(!text.includes(word), `the rule panel prints "${word}": ${text}`);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });

@@ -6,7 +6,7 @@
 // page's drawing code.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openPage, screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
 
 const SAME_POINT_TOL = 1e-12;   // world units: two evaluations of the same curve by the core
 const CURVE_UNCHANGED_TOL = 1e-12; // world units: the curve before/after a knot insertion
@@ -17,7 +17,7 @@ const SAMPLE_COUNT = 257;       // parameters where the curve is compared before
 const env = useSiteAndBrowser();
 
 async function openLesson() {
-  const page = await openPage(env.browser, `${env.site.url}curves.html`, { colorScheme: 'light' });
+  const page = await env.openPage(`${env.site.url}curves.html`, { colorScheme: 'light' });
   await page.evaluate(() => localStorage.clear());
   await page.goto(`${env.site.url}curves.html`);
   await page.waitForSelector('body[data-ready=true]');
@@ -120,7 +120,6 @@ test('de Boor steps level by level (presenter keys and buttons) to the core\'s P
   await frame(page);
   assert.equal((await state(page)).construction.step, 0);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('inserting a knot highlights the new control points and leaves the curve where it was', async () => {
@@ -162,7 +161,6 @@ test('inserting a knot highlights the new control points and leaves the curve wh
   const gap = maxGap(before0.xy, after1.xy);
   assert.ok(gap < CURVE_UNCHANGED_TOL, `the curve did not move (largest gap ${gap})`);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('raising a knot\'s multiplicity keeps the curve and lowers the continuity label', async () => {
@@ -191,7 +189,6 @@ test('raising a knot\'s multiplicity keeps the curve and lowers the continuity l
   assert.equal(await label(), 'C1');
   assert.equal((await state(page)).points.length, s0.points.length + 1);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('the curvature comb of the exact circle: curvature 1/r, teeth towards the centre, drawn', async () => {
@@ -227,7 +224,6 @@ test('the curvature comb of the exact circle: curvature 1/r, teeth towards the c
   assert.ok(colourGap(colour, background) > COLOUR_TOL, `ink at the first tooth's tip: ${colour}`);
   await screenshot(page, 'curves-comb');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('de Boor on a uniform B-spline labels its points from the core\'s firstIndex', async () => {
@@ -245,5 +241,4 @@ test('de Boor on a uniform B-spline labels its points from the core\'s firstInde
   const s = await state(page);
   assert.deepEqual(con.levels[0], s.points.slice(2, 2 + s.degree + 1));
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });

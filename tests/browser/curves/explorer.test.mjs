@@ -5,7 +5,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { openPage, screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
 
 const COORD_TOL = 1e-9;          // world units: a stored coordinate vs its expected value
 const CIRCLE_TOL = 1e-12;        // world units: NURBS circle points vs the radius (issue 5)
@@ -13,7 +13,7 @@ const DARK_SUM = 200;            // r+g+b below this is curve ink (light theme),
 const env = useSiteAndBrowser();
 
 async function openLesson() {
-  const page = await openPage(env.browser, `${env.site.url}curves.html`, { colorScheme: 'light' });
+  const page = await env.openPage(`${env.site.url}curves.html`, { colorScheme: 'light' });
   await page.evaluate(() => localStorage.clear());
   await page.goto(`${env.site.url}curves.html`);
   await page.waitForSelector('body[data-ready=true]');
@@ -105,7 +105,6 @@ test('dragging a Bezier control point moves the state, the matrix panel and the 
   assert.deepEqual((await page.evaluate(() => window.wingspline.state)).points, before.points);
   await screenshot(page, 'curves-bezier');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('the u slider moves the point on the curve and the cursor of the blending plot', async () => {
@@ -147,7 +146,6 @@ test('the u slider moves the point on the curve and the cursor of the blending p
   assert.deepEqual(color.slice(0, 3), [0xc2, 0x41, 0x0c], 'the u marker (highlight colour) sits at the core\'s P(0.8)');
   assert.match(await page.textContent('.matrix-panel'), /P\(0\.8\)/);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('keyboard only: select a control point with ] and move it with the arrows', async () => {
@@ -167,7 +165,6 @@ test('keyboard only: select a control point with ] and move it with the arrows',
   // the inspector shows the selected point's exact values
   assert.equal(Number(await page.inputValue('#inspect-x')), after.points[1][0]);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('a decreasing knot typed in the inspector is refused with a message; the old knots stay', async () => {
@@ -187,7 +184,6 @@ test('a decreasing knot typed in the inspector is refused with a message; the ol
   assert.equal(await page.getAttribute('#message', 'data-kind'), 'error');
   assert.equal(await page.inputValue('#inspect-knots'), before.knots.join(', '));
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('a knot of multiplicity p drops the continuity label at that knot to C0', async () => {
@@ -216,7 +212,6 @@ test('a knot of multiplicity p drops the continuity label at that knot to C0', a
   assert.ok(Math.hypot(p[0] - p3[0], p[1] - p3[1]) < COORD_TOL, 'P(0.5) = P3 at a knot of multiplicity p');
   await screenshot(page, 'curves-bspline-knots');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('de Casteljau steps level by level to the point on the curve', async () => {
@@ -239,7 +234,6 @@ test('de Casteljau steps level by level to the point on the curve', async () => 
   await frame(page);
   assert.equal((await page.evaluate(() => window.wingspline.state)).construction.step, 2);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('the NURBS circle preset gives points on the circle and the homogeneous view', async () => {
@@ -259,7 +253,6 @@ test('the NURBS circle preset gives points on the circle and the homogeneous vie
   assert.ok(r.visible, 'the NURBS panel with the homogeneous view is shown');
   await screenshot(page, 'curves-nurbs-circle');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('every family draws, Hermite tangents drag, interpolation shows the spline beside it', async () => {
@@ -288,7 +281,6 @@ test('every family draws, Hermite tangents drag, interpolation shows the spline 
   }
   assert.ok(await page.isVisible('#compare-spline'));
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('CSV exports of the samples and the blending functions', async () => {
@@ -311,7 +303,6 @@ test('CSV exports of the samples and the blending functions', async () => {
     assert.ok(Math.abs(v.reduce((a, b) => a + b, 0) - 1) < 1e-12);
   }
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 // Issue 13 item 10. The canvas's box on the page and the handles' page positions, as the app reports them.
@@ -344,7 +335,6 @@ test('Shift+click on empty drawing adds a control point where the mouse is', asy
   const nearest = Math.min(...after.map((hd) => Math.hypot(hd.x - spot.x, hd.y - spot.y)));
   assert.ok(nearest < CLICK_TOL_PX, `a control point where the mouse clicked (nearest ${nearest.toFixed(2)} px away)`);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('"Add point" places every new point inside the visible canvas', async () => {
@@ -368,5 +358,4 @@ test('"Add point" places every new point inside the visible canvas', async () =>
     }
   }
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });

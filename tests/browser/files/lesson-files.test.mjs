@@ -37,8 +37,7 @@ async function importByDrop(page, name, text) {
 for (const lesson of lessonsUnderTest) {
   describe(`${lesson.title}: export and import`, () => {
     test('the JSON export is the versioned envelope and imports back bit for bit', async () => {
-      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
-      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
+      const page = await env.openLesson(new URL(lesson.page, env.site.url).href);
       await setView(page, awkwardView);
       const exported = await stateBits(page);
       const file = await exportFile(page, `${lesson.id}-state.json`);
@@ -66,12 +65,10 @@ for (const lesson of lessonsUnderTest) {
       await page.click('[data-action=undo]');
       assert.deepEqual((await stateBits(page)).view, bitsOf(tinyView));
       assert.deepEqual(page.problems, []);
-      await context.close();
     });
 
     test('SVG and PNG figures and the lesson exports download', async () => {
-      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
-      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
+      const page = await env.openLesson(new URL(lesson.page, env.site.url).href);
       const svg = await exportFile(page, `${lesson.id}.svg`);
       assert.match(svg.bytes.toString('utf8'), /^(<\?xml[^>]*\?>\s*)?<svg[^>]*xmlns="http:\/\/www\.w3\.org\/2000\/svg"/);
       const png = await exportFile(page, `${lesson.id}.png`);
@@ -82,12 +79,10 @@ for (const lesson of lessonsUnderTest) {
         assert.ok(file.bytes.length > 0, `${key} is not empty`);
       }
       assert.deepEqual(page.problems, []);
-      await context.close();
     });
 
     test('a hostile file name and contents are shown as text and nothing runs', async () => {
-      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
-      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
+      const page = await env.openLesson(new URL(lesson.page, env.site.url).href);
       const before0 = await stateBits(page);
       const name = '<img src=x onerror=alert(1)>.json';
       await importByPicker(page, name, '{"format":"wingspline"');
@@ -104,15 +99,13 @@ for (const lesson of lessonsUnderTest) {
       assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
       assert.deepEqual(page.dialogs, [], 'no alert ran');
       assert.deepEqual(page.problems, []);
-      await context.close();
     });
   });
 }
 
 describe('Classroom fixture: lesson exports', () => {
   test('the CSV export holds the points in full precision and its importer reads it back', async () => {
-    const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
-    const page = await openLesson(context, new URL('fixture.html', env.site.url).href);
+    const page = await env.openLesson(new URL('fixture.html', env.site.url).href);
     const points = [{ x: 0.1 + 0.2, y: 1e-300 }, { x: -1.5, y: 2 }, { x: 3, y: 1 / 3 }];
     await page.evaluate((p) => window.wingspline.ctx.commit({ ...window.wingspline.ctx.state, points: p }), points);
     const csv = await exportFile(page, 'fixture-points.csv');
@@ -121,7 +114,6 @@ describe('Classroom fixture: lesson exports', () => {
     await page.setInputFiles('#import-file', { name: 'points.csv', mimeType: 'text/csv', buffer: csv.bytes });
     await page.waitForFunction(() => window.wingspline.state.points.length === 3);
     assert.deepEqual((await stateBits(page)).points, bitsOf(points));
-    await context.close();
   });
 });
 
@@ -160,8 +152,7 @@ describe('Mesh: imported meshes are kept (issue 13, item 12)', () => {
   const meshUrl = () => new URL('mesh.html', env.site.url).href;
 
   test('a 25,600-vertex OFF imported with the file chooser is still there after a reload', async () => {
-    const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
-    const page = await openLesson(context, meshUrl());
+    const page = await env.openLesson(meshUrl());
     await importOff(page, BIG.name, gridOff(BIG.nx, BIG.ny));
     const expected = { kind: 'file', name: BIG.name, V: BIG.nx * BIG.ny, F: 2 * (BIG.nx - 1) * (BIG.ny - 1) };
     assert.deepEqual(await meshSummary(page), expected);
@@ -174,11 +165,10 @@ describe('Mesh: imported meshes are kept (issue 13, item 12)', () => {
     await waitReady(page);
     assert.deepEqual(await meshSummary(page), expected, 'reopened without a link (saved work)');
     assert.deepEqual(page.problems, []);
-    await context.close();
   });
 
   test('a link to a big imported mesh: the share button offers the file, another browser is told and keeps its work', async () => {
-    const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 }, acceptDownloads: true });
+    const context = await env.newContext({ viewport: { width: 1280, height: 800 }, acceptDownloads: true });
     const page = await openLesson(context, meshUrl());
     await importOff(page, BIG.name, gridOff(BIG.nx, BIG.ny));
     await page.click('[data-action=share]');
@@ -192,7 +182,7 @@ describe('Mesh: imported meshes are kept (issue 13, item 12)', () => {
     await context.close();
 
     // Another browser, with work of its own.
-    const other = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+    const other = await env.newContext({ viewport: { width: 1280, height: 800 } });
     let mine = await openLesson(other, meshUrl());
     await mine.selectOption('#mesh-kind', 'cube');
     await mine.waitForFunction(() => window.wingspline.state.meshKind === 'cube');
@@ -208,11 +198,10 @@ describe('Mesh: imported meshes are kept (issue 13, item 12)', () => {
     await mine.goto(meshUrl());
     await waitReady(mine);
     assert.deepEqual(await stateBits(mine), saved, 'and the saved work was not overwritten');
-    await other.close();
   });
 
   test('a small imported mesh still travels inside the link to another browser', async () => {
-    const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+    const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
     const page = await openLesson(context, meshUrl());
     await importOff(page, 'small-grid.off', gridOff(6, 5));
     const link = page.url();
@@ -220,10 +209,8 @@ describe('Mesh: imported meshes are kept (issue 13, item 12)', () => {
     await page.click('[data-action=share]');
     await page.waitForFunction(() => /Link copied|address bar/.test(window.wingspline.message()));
     await context.close();
-    const other = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
-    const fresh = await openLesson(other, link);
+    const fresh = await env.openLesson(link);
     assert.deepEqual(await meshSummary(fresh), expected);
     assert.equal(await fresh.evaluate(() => window.wingspline.message()), '');
-    await other.close();
   });
 });

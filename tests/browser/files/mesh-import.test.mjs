@@ -30,70 +30,58 @@ async function injected(page) {
 }
 
 async function openMesh() {
-  const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
   const page = await openLesson(context, new URL('mesh.html', env.site.url).href);
   return { context, page };
 }
 
 test('an OFF file with a script-bearing name imports, and the name is shown as text', async () => {
   const { context, page } = await openMesh();
-  try {
-    const name = `${payloads.img}.off`;
-    await importMesh(page, name, tetrahedronOff);
-    await page.waitForFunction(() => /Imported/.test(window.wingspline.message()));
-    assert.ok((await page.evaluate(() => window.wingspline.message())).includes(name), 'the message shows the name literally');
-    assert.equal(await page.evaluate(() => window.wingspline.state.imported?.name), name);
-    const shown = await page.evaluate((n) => document.body.textContent.includes(n.replace(/\.off$/, '')), name);
-    assert.ok(shown, 'the name appears in the page as text');
-    assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
-    assert.deepEqual(await injected(page), { handlers: 0, images: 0, inlineScripts: 0 });
-    assert.deepEqual(page.dialogs, []);
-    assert.deepEqual(page.problems, []);
-  } finally {
-    await context.close();
-  }
+  const name = `${payloads.img}.off`;
+  await importMesh(page, name, tetrahedronOff);
+  await page.waitForFunction(() => /Imported/.test(window.wingspline.message()));
+  assert.ok((await page.evaluate(() => window.wingspline.message())).includes(name), 'the message shows the name literally');
+  assert.equal(await page.evaluate(() => window.wingspline.state.imported?.name), name);
+  const shown = await page.evaluate((n) => document.body.textContent.includes(n.replace(/\.off$/, '')), name);
+  assert.ok(shown, 'the name appears in the page as text');
+  assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
+  assert.deepEqual(await injected(page), { handlers: 0, images: 0, inlineScripts: 0 });
+  assert.deepEqual(page.dialogs, []);
+  assert.deepEqual(page.problems, []);
 });
 
 test('a refused mesh with a script-bearing name: the validation report and message are text', async () => {
   const { context, page } = await openMesh();
-  try {
-    const before0 = await page.evaluate(() => JSON.stringify(window.wingspline.state));
-    const name = `${payloads.svg}.off`;
-    await importMesh(page, name, nonManifoldOff);
-    await page.waitForFunction(() => window.wingspline.message().includes('was not imported'));
-    const message = await page.evaluate(() => window.wingspline.message());
-    assert.ok(message.startsWith(`${name} was not imported`), message);
-    // The core's report names the edge (1-based labels, docs/api-mesh.md).
-    assert.match(await page.evaluate(() => document.body.textContent), /v1-v2 is shared by 3 faces/);
-    assert.equal(await page.evaluate(() => JSON.stringify(window.wingspline.state)), before0, 'a refused file changes nothing');
-    assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
-    assert.deepEqual(await injected(page), { handlers: 0, images: 0, inlineScripts: 0 });
-    assert.deepEqual(page.dialogs, []);
-    assert.deepEqual(page.problems, []);
-  } finally {
-    await context.close();
-  }
+  const before0 = await page.evaluate(() => JSON.stringify(window.wingspline.state));
+  const name = `${payloads.svg}.off`;
+  await importMesh(page, name, nonManifoldOff);
+  await page.waitForFunction(() => window.wingspline.message().includes('was not imported'));
+  const message = await page.evaluate(() => window.wingspline.message());
+  assert.ok(message.startsWith(`${name} was not imported`), message);
+  // The core's report names the edge (1-based labels, docs/api-mesh.md).
+  assert.match(await page.evaluate(() => document.body.textContent), /v1-v2 is shared by 3 faces/);
+  assert.equal(await page.evaluate(() => JSON.stringify(window.wingspline.state)), before0, 'a refused file changes nothing');
+  assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
+  assert.deepEqual(await injected(page), { handlers: 0, images: 0, inlineScripts: 0 });
+  assert.deepEqual(page.dialogs, []);
+  assert.deepEqual(page.problems, []);
 });
 
 test('markup inside an OFF or OBJ file reaches the message only as quoted text', async () => {
   const { context, page } = await openMesh();
-  try {
-    // The reader quotes the offending token (the first 30 characters of it) in its message.
-    await importMesh(page, 'coordinates.off', `OFF\n3 1 0\n0 0 0\n${payloads.script} 0 0\n0 1 0\n3 0 1 2\n`);
-    await page.waitForFunction(() => /line 4/.test(window.wingspline.message()));
-    assert.ok((await page.evaluate(() => window.wingspline.message())).includes('<script>'), 'the token is shown, not parsed');
-    // OBJ object and group names are read past; a statement the reader does not know is quoted.
-    await importMesh(page, 'names.obj', `o ${payloads.img}\ng ${payloads.svg}\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n`);
-    await page.waitForFunction(() => /Imported names\.obj/.test(window.wingspline.message()));
-    await importMesh(page, 'statement.obj', `v 0 0 0\n${payloads.img} 1 2\n`);
-    await page.waitForFunction(() => /line 2/.test(window.wingspline.message()));
-    assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
-    assert.deepEqual(await injected(page), { handlers: 0, images: 0, inlineScripts: 0 });
-    assert.deepEqual(page.dialogs, []);
-    assert.deepEqual(page.problems, []);
-  } finally {
-    await context.close();
-  }
+  // The reader quotes the offending token (the first 30 characters of it) in its message.
+  await importMesh(page, 'coordinates.off', `OFF\n3 1 0\n0 0 0\n${payloads.script} 0 0\n0 1 0\n3 0 1 2\n`);
+  await page.waitForFunction(() => /line 4/.test(window.wingspline.message()));
+  assert.ok((await page.evaluate(() => window.wingspline.message())).includes('<script>'), 'the token is shown, not parsed');
+  // OBJ object and group names are read past; a statement the reader does not know is quoted.
+  await importMesh(page, 'names.obj', `o ${payloads.img}\ng ${payloads.svg}\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n`);
+  await page.waitForFunction(() => /Imported names\.obj/.test(window.wingspline.message()));
+  await importMesh(page, 'statement.obj', `v 0 0 0\n${payloads.img} 1 2\n`);
+  await page.waitForFunction(() => /line 2/.test(window.wingspline.message()));
+  assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
+  assert.deepEqual(await injected(page), { handlers: 0, images: 0, inlineScripts: 0 });
+  assert.deepEqual(page.dialogs, []);
+  assert.deepEqual(page.problems, []);
 });
 
 // Issue 13, item 23: a valid 40,000-triangle fan (1.7 MB OFF) whose hub is vertex 1 (the
@@ -111,24 +99,20 @@ test('a 40,000-triangle fan imports and its walk steps to the end without crashi
   const text = lines.join('\n') + '\n';
   assert.ok(text.length > 1.2e6);
   const { context, page } = await openMesh();
-  try {
-    await importMesh(page, 'fan-40000.off', text);
-    await page.waitForFunction(() => /Imported/.test(window.wingspline.message()), null, { timeout: 60000 });
-    assert.equal(await page.evaluate(() => window.wingspline.model.V), n + 2);
-    await page.click('#walk-title');
-    await page.keyboard.press('End');
-    await page.waitForFunction((count) => window.wingspline.model.frame?.foundCount === count, n + 1, { timeout: 60000 });
-    await page.keyboard.press('ArrowLeft');
-    await page.waitForFunction((count) => window.wingspline.model.frame?.foundCount === count, n + 1, { timeout: 60000 });
-    await page.keyboard.press('Home');
-    await page.waitForFunction(() => window.wingspline.model.stepIndex === 0, null, { timeout: 60000 });
-    for (let k = 0; k < 3; k += 1) await page.keyboard.press('ArrowRight');
-    await page.waitForFunction(() => window.wingspline.model.frame?.foundCount === 3, null, { timeout: 60000 });
-    // The panel follows the model on the next frame.
-    await page.waitForFunction(() => /1\. e\s*\d+.*2\. e\s*\d+.*3\. e\s*\d+/s.test(document.querySelector('#walk-found').textContent), null, { timeout: 10000 })
-      .catch(async () => assert.fail(`the found list shows three edges: ${await page.textContent('#walk-found')}`));
-    assert.deepEqual(page.problems, []);
-  } finally {
-    await context.close();
-  }
+  await importMesh(page, 'fan-40000.off', text);
+  await page.waitForFunction(() => /Imported/.test(window.wingspline.message()), null, { timeout: 60000 });
+  assert.equal(await page.evaluate(() => window.wingspline.model.V), n + 2);
+  await page.click('#walk-title');
+  await page.keyboard.press('End');
+  await page.waitForFunction((count) => window.wingspline.model.frame?.foundCount === count, n + 1, { timeout: 60000 });
+  await page.keyboard.press('ArrowLeft');
+  await page.waitForFunction((count) => window.wingspline.model.frame?.foundCount === count, n + 1, { timeout: 60000 });
+  await page.keyboard.press('Home');
+  await page.waitForFunction(() => window.wingspline.model.stepIndex === 0, null, { timeout: 60000 });
+  for (let k = 0; k < 3; k += 1) await page.keyboard.press('ArrowRight');
+  await page.waitForFunction(() => window.wingspline.model.frame?.foundCount === 3, null, { timeout: 60000 });
+  // The panel follows the model on the next frame.
+  await page.waitForFunction(() => /1\. e\s*\d+.*2\. e\s*\d+.*3\. e\s*\d+/s.test(document.querySelector('#walk-found').textContent), null, { timeout: 10000 })
+    .catch(async () => assert.fail(`the found list shows three edges: ${await page.textContent('#walk-found')}`));
+  assert.deepEqual(page.problems, []);
 });

@@ -3,7 +3,7 @@
 // large mesh. Expected values are the slide's (lecture 000), never the page's own output.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openPage, screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
 
 // Lecture 000, "Winged Edge": the slide's tables, entry for entry ('' = no face: boundary).
 const SLIDE_EDGE_TABLE = [
@@ -30,7 +30,7 @@ const DRAG_PX = 60; // how far the test drags v2, in CSS pixels
 const env = useSiteAndBrowser();
 
 async function openLesson(contextOptions) {
-  const page = await openPage(env.browser, `${env.site.url}mesh.html`, contextOptions);
+  const page = await env.openPage(`${env.site.url}mesh.html`, contextOptions);
   await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
   return page;
 }
@@ -60,7 +60,6 @@ test('the lecture example shows the slide\'s winged-edge tables entry for entry'
   assert.deepEqual(labels, ['v1', 'v2', 'v3', 'v4', 'v5']);
   await screenshot(page, 'mesh-lecture');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('dragging v2 moves it in every table; independent faces rewrite one copy per face', async () => {
@@ -99,7 +98,6 @@ test('dragging v2 moves it in every table; independent faces rewrite one copy pe
   assert.equal(await page.evaluate(() => window.wingspline.state.tab), 'winged');
   assert.deepEqual((await tableCells(page, 'we-vertex-table'))[1], before);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('the CCW walk around v2 steps e6, e5, e3, e2 from the keyboard, row and column following', async () => {
@@ -141,7 +139,6 @@ test('the CCW walk around v2 steps e6, e5, e3, e2 from the keyboard, row and col
   assert.ok(colour.every((c, i) => Math.abs(c - vermillion[i]) < 40), `found edge drawn in the found colour, got ${colour}`);
   await screenshot(page, 'mesh-walk-v2');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('walking the edges of F1 reads the face table, then E:L or S:R', async () => {
@@ -159,7 +156,6 @@ test('walking the edges of F1 reads the face table, then E:L or S:R', async () =
     assert.deepEqual((await readColumns(page, 'we-edge-table')).map((c) => EDGE_COLUMN_NAMES[c]), [column]);
   }
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('a malformed OFF file names its line, and the page keeps its mesh', async () => {
@@ -184,7 +180,6 @@ test('a malformed OFF file names its line, and the page keeps its mesh', async (
   await screenshot(page, 'mesh-bad-off');
   // The bad file was reported through the message line, not the console.
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('a reload keeps the mesh, the moved vertex, the walk step, the tab and the 3D view', async () => {
@@ -205,7 +200,6 @@ test('a reload keeps the mesh, the moved vertex, the walk step, the tab and the 
   assert.equal(await page.getAttribute('#tab-storage', 'aria-selected'), 'true');
   assert.match(await page.textContent('#storage-body'), /V = 5, E = 7, F = 3/);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('the cube in 3D shows planes by cross product and Newell, and rotates with the mouse', async () => {
@@ -233,7 +227,6 @@ test('the cube in 3D shows planes by cross product and Newell, and rotates with 
   assert.ok(yaw1 > yaw0, 'dragging empty canvas in 3D turns the mesh');
   await screenshot(page, 'mesh-cube-3d');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('a 15 x 15 grid: 450 faces drawn in batches, its 256 vertices still labelled', async () => {
@@ -251,7 +244,6 @@ test('a 15 x 15 grid: 450 faces drawn in batches, its 256 vertices still labelle
   assert.ok(svg.includes('>v1<') && svg.includes('>v256<') && !svg.includes('>v257<'));
   assert.ok(!svg.includes('>F1<') && !svg.includes('>e1<'));
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('a 10,000-face sphere keeps its tables virtual and walks around the pole', async () => {
@@ -286,7 +278,6 @@ test('a 10,000-face sphere keeps its tables virtual and walks around the pole', 
   const faceNote = await page.$eval('#vf-face-table', (t) => t.closest('.table-block').querySelector('.table-note').textContent);
   assert.doesNotMatch(faceNote, /first/, 'no rows are cut off');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('on a phone held sideways the page does not scroll sideways', async () => {
@@ -295,7 +286,6 @@ test('on a phone held sideways the page does not scroll sideways', async () => {
   assert.ok(overflow <= 0, `no horizontal scrolling (overflow ${overflow}px)`);
   await screenshot(page, 'mesh-phone-landscape');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('queries compared: every representation answers alike and says how many entries it read', async () => {
@@ -317,7 +307,6 @@ test('queries compared: every representation answers alike and says how many ent
   await settle(page);
   for (const r of await answers()) assert.equal(r.answer, 'F1 F2', `${r.name}: e3 separates F1 and F2`);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('storage per representation counts the slide\'s entries, with the lectures\' pros and cons', async () => {
@@ -336,7 +325,6 @@ test('storage per representation counts the slide\'s entries, with the lectures\
   assert.match(await page.$eval('.pros-cons[data-representation=winged-edge]', (d) => d.textContent), /Mesh needs to be oriented/i);
   await screenshot(page, 'mesh-storage');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('a file the winged edge cannot hold shows the whole validation report and keeps the mesh', async () => {
@@ -353,7 +341,6 @@ test('a file the winged edge cannot hold shows the whole validation report and k
   assert.equal((await tableCells(page, 'we-edge-table')).length, 7, 'the lecture example is still shown');
   await screenshot(page, 'mesh-report');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('hovering a table row marks the element on the canvas, and the canvas marks the rows', async () => {
@@ -372,7 +359,6 @@ test('hovering a table row marks the element on the canvas, and the canvas marks
   const hovered = await page.$$eval('#we-face-table tr.is-hovered', (rows) => rows.map((r) => r.children[0].textContent));
   assert.deepEqual(hovered, ['F3']);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('exports: the edge table as CSV with the slide\'s rows, LaTeX with the two-level header, the mesh as OFF', async () => {
@@ -394,7 +380,6 @@ test('exports: the edge table as CSV with the slide\'s rows, LaTeX with the two-
   const parsed = await page.evaluate((text) => { const m = window.wingspline.api.parseMesh(text, { format: 'off' }); return { v: m.positions.length / 3, faces: m.faces }; }, off);
   assert.deepEqual(parsed, { v: 5, faces: [[0, 1, 2], [1, 3, 2], [1, 4, 3]] }, 'the slide\'s faces F1 = (v1 v2 v3), F2 = (v2 v4 v3), F3 = (v2 v5 v4)');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('Play runs the walk to its end by itself and stops there', async () => {
@@ -406,7 +391,6 @@ test('Play runs the walk to its end by itself and stops there', async () => {
   assert.equal(await page.getAttribute('#walk-play', 'aria-pressed'), 'false', 'the player paused at the last step');
   assert.equal(await currentLine(page), 4);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('presentation mode, dark theme and a 1280 x 720 projector keep the page whole', async () => {
@@ -419,7 +403,6 @@ test('presentation mode, dark theme and a 1280 x 720 projector keep the page who
   assert.ok(canvas >= 300, `the drawing keeps its room (${canvas}px)`);
   await screenshot(page, 'mesh-present-dark-720p');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 // Issue 13 item 11: the 3D view turns about the mesh's centre, and says when the walk is seen
@@ -475,7 +458,6 @@ test('3D view: a half turn by dragging keeps the mesh in the canvas and says it 
   assert.equal(await sideNote(page), '', 'turned back to the front: no note');
   assert.ok(inside(await projectedCentre(page)));
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 // Issue 14: the vertex table stores one of v2's edges (the slide: e6); a person chooses e3
@@ -514,11 +496,10 @@ test('choosing another stored edge for v2 changes its table row and the walk; un
   assert.equal(await v2Edge(), 'e5', 'a reload keeps the choice');
   const link = await page.evaluate(() => window.wingspline.shareUrl());
   await page.context().close();
-  const other = await openPage(env.browser, link);
+  const other = await env.openPage(link);
   await other.waitForSelector('body[data-ready=true]', { timeout: 15000 });
   assert.equal((await tableCells(other, 'we-vertex-table'))[1][4], 'e5', 'a share link carries it');
   assert.deepEqual(other.problems, []);
-  await other.context().close();
 });
 
 test('choosing the stored edge of a face: F2 stores e5, its walk starts there', async () => {
@@ -540,5 +521,4 @@ test('choosing the stored edge of a face: F2 stores e5, its walk starts there', 
   await click(page, '#tab-vertex-face');
   assert.deepEqual((await tableCells(page, 'vf-face-table'))[1], ['F2', 'v2', 'v4', 'v3']);
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });

@@ -11,12 +11,13 @@ import fs from 'node:fs';
 import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
-import { launchBrowser, startSite, repoRoot } from '../../helpers/browser.mjs';
+import { launchBrowser, startSite, repoRoot, closingContexts } from '../../helpers/browser.mjs';
 import { createStaticServer, listen } from '../../../scripts/lib/static-server.mjs';
 import { distPages, readyLessons, waitReady, trap } from '../../helpers/classroom.mjs';
 import { writeServiceWorkerManifest } from '../../../scripts/lib/site-manifest.mjs';
 
 let browser;
+const contexts = closingContexts(() => browser);
 before(async () => { browser = await launchBrowser(); });
 after(async () => { await browser?.close(); });
 
@@ -47,7 +48,7 @@ function settledCaches(page, expected) {
 
 // A new browser context whose page at `siteUrl` works and is controlled by the worker.
 async function openControlled(siteUrl) {
-  const context = await browser.newContext();
+  const context = await contexts.newContext();
   const page = trap(await context.newPage());
   await page.goto(siteUrl);
   await pageWorks(page, 'index.html');
@@ -69,7 +70,7 @@ async function pageWorks(page, file) {
 }
 
 async function offlineRoundTrip(siteUrl, prefixPath) {
-  const context = await browser.newContext();
+  const context = await contexts.newContext();
   const page = trap(await context.newPage());
   await page.goto(siteUrl);
   await pageWorks(page, 'index.html');
@@ -86,7 +87,6 @@ async function offlineRoundTrip(siteUrl, prefixPath) {
   await page.reload();
   await pageWorks(page, distPages.at(-1));
   assert.deepEqual(page.problems, []);
-  await context.close();
 }
 
 test('the site works offline after the first visit', async () => {
@@ -103,7 +103,7 @@ test('the site works from a sub-path of a static host, online and offline', asyn
   const site = await startSite({ prefix });
   try {
     assert.ok(site.url.endsWith(prefix));
-    const context = await browser.newContext();
+    const context = await contexts.newContext();
     const page = trap(await context.newPage());
     assert.equal((await fetch(site.origin)).status, 404, 'nothing is served outside the sub-path');
     for (const file of distPages) {
@@ -152,7 +152,6 @@ test('a new build replaces the offline cache', async () => {
     const css = await page.evaluate(async () => (await fetch('css/site.css')).text());
     assert.match(css, /deployed-marker/);
     assert.deepEqual(page.problems, []);
-    await context.close();
   });
 });
 
@@ -213,7 +212,7 @@ test('two deployments on one origin keep each other\'s offline copies', async ()
   writeServiceWorkerManifest(course2);
   const site = await startDeployments({ '/course/': course, '/course2/': course2 });
   try {
-    const context = await browser.newContext();
+    const context = await contexts.newContext();
     const page = trap(await context.newPage());
     for (const prefix of ['/course/', '/course2/']) {
       await page.goto(new URL(prefix, site.origin).href);
@@ -232,7 +231,6 @@ test('two deployments on one origin keep each other\'s offline copies', async ()
     const keys = (await page.evaluate(() => caches.keys())).sort();
     assert.deepEqual(keys.map((k) => k.replace(/[0-9a-f]{16}$/, 'V')), ['wingspline:/course/:V', 'wingspline:/course2/:V']);
     assert.deepEqual(page.problems, []);
-    await context.close();
   } finally {
     await site.close();
     fs.rmSync(course, { recursive: true, force: true });
@@ -268,7 +266,6 @@ test('a tampered cached page or script is not served: online the network answers
       assert.equal(await page.locator('meta[http-equiv="Content-Security-Policy" i]').count(), 1, 'the page keeps its CSP');
     }
     assert.deepEqual(page.problems, []);
-    await context.close();
   });
 });
 
@@ -296,7 +293,6 @@ test('a tampered cached page or script is not served: offline it is refused with
     assert.equal(script.status, 503);
     assert.doesNotMatch(script.body, /__pwned/);
     assert.equal(await page.evaluate(() => window.__pwned ?? null), null);
-    await context.close();
   });
 });
 
@@ -315,7 +311,6 @@ test('pages come from the network first, the cached copy only offline', async ()
     await pageWorks(page, 'index.html');
     assert.equal(await page.locator('#hot-fix').count(), 0, 'offline, the cached (verified) copy');
     assert.deepEqual(page.problems, []);
-    await context.close();
   });
 });
 
@@ -323,7 +318,7 @@ test('install refuses a file whose bytes differ from the manifest, and caches no
   await onDeployment(async (site, root) => {
     // Changed after the manifest was written: the deployment is inconsistent (or tampered).
     fs.appendFileSync(path.join(root, 'css', 'site.css'), '\n.not-in-the-manifest { color: red; }\n');
-    const context = await browser.newContext();
+    const context = await contexts.newContext();
     const page = trap(await context.newPage());
     await page.addInitScript(() => {
       const register = navigator.serviceWorker.register.bind(navigator.serviceWorker);
@@ -346,6 +341,5 @@ test('install refuses a file whose bytes differ from the manifest, and caches no
     await page.reload();
     await pageWorks(page, 'index.html');
     assert.deepEqual(page.problems, []);
-    await context.close();
   });
 });

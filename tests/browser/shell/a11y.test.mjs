@@ -30,7 +30,7 @@ const pages = [{ title: 'Landing page', page: 'index.html', landing: true }, ...
 for (const scheme of ['light', 'dark']) {
   for (const entry of pages) {
     test(`axe: ${entry.title} (${scheme}) has no serious or critical violations`, async () => {
-      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 }, colorScheme: scheme });
+      const context = await env.newContext({ viewport: { width: 1280, height: 800 }, colorScheme: scheme });
       const page = trap(await context.newPage());
       await page.goto(new URL(entry.page, env.site.url).href);
       if (entry.landing) await page.waitForSelector('[data-core-status][data-state=ready]');
@@ -46,7 +46,6 @@ for (const scheme of ['light', 'dark']) {
         await screenshot(page, `${entry.page.replace('.html', '')}-present-${scheme}`);
       }
       assert.deepEqual(page.problems, []);
-      await context.close();
     });
   }
 }
@@ -54,8 +53,7 @@ for (const scheme of ['light', 'dark']) {
 for (const lesson of lessonsUnderTest) {
   describe(`${lesson.title}: keyboard and presentation`, () => {
     test('the keyboard alone reaches a control point, moves it and types its coordinates', async () => {
-      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
-      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
+      const page = await env.openLesson(new URL(lesson.page, env.site.url).href);
       // Tab from the top of the page until the drawing has the focus, with a visible ring.
       let reached = false;
       for (let i = 0; i < 60 && !reached; i += 1) {
@@ -100,12 +98,10 @@ for (const lesson of lessonsUnderTest) {
         assert.deepEqual([moved.world.x, moved.world.y], [1.5, 2], 'typed coordinates are taken exactly');
         assert.equal(await page.textContent('#stage-announce'), `${moved.label} at (1.5, 2)`);
       }
-      await context.close();
     });
 
     test('? shows the key map; presentation mode keeps the essentials', async () => {
-      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
-      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
+      const page = await env.openLesson(new URL(lesson.page, env.site.url).href);
       await page.focus('#stage');
       await page.keyboard.press('?');
       await page.waitForSelector('dialog.keymap-dialog[open]');
@@ -123,25 +119,21 @@ for (const lesson of lessonsUnderTest) {
       assert.ok(size >= 22, `large type (${size}px)`);
       await page.keyboard.press('Escape');
       await page.waitForFunction(() => !document.documentElement.hasAttribute('data-present'));
-      await context.close();
     });
 
     test('print shows the figure and tables without the controls', async () => {
-      const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 }, colorScheme: 'dark' });
-      const page = await openLesson(context, new URL(lesson.page, env.site.url).href);
+      const page = await env.openLesson(new URL(lesson.page, env.site.url).href, { colorScheme: 'dark' });
       await page.emulateMedia({ media: 'print' });
       for (const selector of ['#lesson-toolbar', '#stage-controls']) assert.equal(await page.isVisible(selector), false, `${selector} hidden`);
       assert.ok(await page.isVisible('#stage'));
       assert.ok(await page.isVisible('h1'));
-      await context.close();
     });
   });
 }
 
 describe('Classroom fixture: presenter remote and reduced motion', () => {
   test('PageDown, PageUp, Home, o and Space drive the steps and overlays', async () => {
-    const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
-    const page = await openLesson(context, new URL('fixture.html', env.site.url).href);
+    const page = await env.openLesson(new URL('fixture.html', env.site.url).href);
     const state = () => page.evaluate(() => window.wingspline.state);
     await page.keyboard.press('PageDown');
     await page.keyboard.press('PageDown');
@@ -156,11 +148,10 @@ describe('Classroom fixture: presenter remote and reduced motion', () => {
     assert.equal((await state()).showPolygon, true);
     const keys = await page.evaluate(() => window.wingspline.ctx.keymap.list().filter((b) => b.group === 'Presenter').map((b) => b.label));
     assert.deepEqual(keys, ['next step', 'previous step', 'play / pause', 'back to the first step', 'overlays on / off']);
-    await context.close();
   });
 
   test('reduced motion caps the player rate', async () => {
-    const context = await env.browser.newContext({ reducedMotion: 'reduce' });
+    const context = await env.newContext({ reducedMotion: 'reduce' });
     const page = await openLesson(context, new URL('fixture.html', env.site.url).href);
     const rates = await page.evaluate(async () => {
       const { createPlayer, REDUCED_MOTION_STEPS_PER_SECOND } = await import('./js/app/player.js');
@@ -168,6 +159,5 @@ describe('Classroom fixture: presenter remote and reduced motion', () => {
       return { speed: player.speed, effective: player.effectiveSpeed, cap: REDUCED_MOTION_STEPS_PER_SECOND };
     });
     assert.deepEqual(rates, { speed: 4, effective: rates.cap, cap: 0.5 });
-    await context.close();
   });
 });

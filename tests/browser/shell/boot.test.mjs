@@ -13,7 +13,7 @@ const WASM = '**/wasm/wingspline-core.wasm';
 const lessonPage = readyLessons[0].page;
 
 async function openWithWasm(file, answer) {
-  const context = await env.browser.newContext({ serviceWorkers: 'block' });
+  const context = await env.newContext({ serviceWorkers: 'block' });
   const page = trap(await context.newPage());
   await page.route(WASM, answer);
   await page.goto(new URL(file, env.site.url).href);
@@ -50,19 +50,15 @@ for (const file of ['index.html', lessonPage]) {
   for (const fault of faults) {
     test(`${file} with ${fault.name} says what is wrong and what to check`, async () => {
       const page = await openWithWasm(file, fault.answer);
-      try {
-        const text = await failureText(page, file);
-        assert.match(text, /The geometry core \(wasm\/wingspline-core\.wasm\) could not be loaded/);
-        assert.match(text, fault.reason);
-        assert.match(text, /Check that the file is served, with type application\/wasm, and reload/);
-        const everything = await page.evaluate(() => document.body.innerText);
-        assert.doesNotMatch(everything, /Aborted\(/);
-        // Nothing still claims to be loading.
-        assert.equal(await page.getByText('Loading the geometry core').count(), 0);
-        assert.deepEqual(page.problems.filter((p) => /Aborted\(/.test(p)), [], 'no Emscripten abort in the console');
-      } finally {
-        await page.context().close();
-      }
+      const text = await failureText(page, file);
+      assert.match(text, /The geometry core \(wasm\/wingspline-core\.wasm\) could not be loaded/);
+      assert.match(text, fault.reason);
+      assert.match(text, /Check that the file is served, with type application\/wasm, and reload/);
+      const everything = await page.evaluate(() => document.body.innerText);
+      assert.doesNotMatch(everything, /Aborted\(/);
+      // Nothing still claims to be loading.
+      assert.equal(await page.getByText('Loading the geometry core').count(), 0);
+      assert.deepEqual(page.problems.filter((p) => /Aborted\(/.test(p)), [], 'no Emscripten abort in the console');
     });
   }
 }
@@ -91,7 +87,6 @@ for (const file of [lessonPage, 'index.html']) {
       assert.deepEqual(page.problems, []);
     } finally {
       release();
-      await page.context().close();
     }
   });
 }

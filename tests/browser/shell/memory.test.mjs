@@ -78,62 +78,52 @@ function drag(page, id, moves, radius = 40) {
 }
 
 test(`${MOVES} control-point moves on the curve explorer do not grow memory`, async () => {
-  const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
-  try {
-    const page = await openLesson(context, new URL('curves.html', env.site.url).href);
-    await drag(page, 'p1', WARM_UP);
-    const before0 = await measure(page);
-    const { handle, farthest } = await drag(page, 'p1', MOVES);
-    const after0 = await measure(page);
-    // The drag really moved the point through the core, and the lesson is still whole.
-    const moved = await page.evaluate(() => window.wingspline.state.points[1]);
-    assert.ok(Number.isFinite(moved[0]) && Number.isFinite(moved[1]));
-    assert.ok(handle && Number.isFinite(handle.x), 'the handle is still there');
-    assert.ok(farthest > 0.1, `P1 followed the pointer (farthest ${farthest} from its start)`);
-    assertNoGrowth(before0, after0, 'curve drag');
-    assert.deepEqual(page.problems, []);
-  } finally {
-    await context.close();
-  }
+  const page = await env.openLesson(new URL('curves.html', env.site.url).href);
+  await drag(page, 'p1', WARM_UP);
+  const before0 = await measure(page);
+  const { handle, farthest } = await drag(page, 'p1', MOVES);
+  const after0 = await measure(page);
+  // The drag really moved the point through the core, and the lesson is still whole.
+  const moved = await page.evaluate(() => window.wingspline.state.points[1]);
+  assert.ok(Number.isFinite(moved[0]) && Number.isFinite(moved[1]));
+  assert.ok(handle && Number.isFinite(handle.x), 'the handle is still there');
+  assert.ok(farthest > 0.1, `P1 followed the pointer (farthest ${farthest} from its start)`);
+  assertNoGrowth(before0, after0, 'curve drag');
+  assert.deepEqual(page.problems, []);
 });
 
 test(`${STEPS} traversal steps on a 10,000-face sphere do not grow memory`, async () => {
-  const context = await env.browser.newContext({ viewport: { width: 1280, height: 800 } });
-  try {
-    const page = await openLesson(context, new URL('mesh.html', env.site.url).href);
-    // BENCH.md sphere_10000: 100 slices x 51 stacks.
-    await page.evaluate(() => {
-      const { ctx } = window.wingspline;
-      ctx.commit({ ...ctx.state, meshKind: 'sphere', sphere: { slices: 100, stacks: 51 }, walk: 'vertex', vertex: 0, step: 0 });
-    });
-    await page.waitForFunction(() => window.wingspline.model?.frames?.length > 1);
-    assert.equal(await page.evaluate(() => window.wingspline.model.counts.faces), 10000);
-    const walk = (steps) => page.evaluate(async ({ n, frameEvery }) => {
-      const { ctx } = window.wingspline;
-      const frame = () => new Promise((resolve) => requestAnimationFrame(() => resolve()));
-      for (let k = 1; k <= n; k += 1) {
-        const s = ctx.state;
-        const frames = window.wingspline.model.frames.length;
-        // Step forward; at the end of a walk move on to the next vertex, as a student would.
-        const next = s.step + 1 < frames ? { ...s, step: s.step + 1 } : { ...s, vertex: (s.vertex + 37) % 5002, step: 0 };
-        ctx.commit(next, { history: false });
-        if (k % frameEvery === 0) await frame();
-      }
-      const reached = window.wingspline.model.stepIndex;
-      // The reference state for measuring: v2's walk at its first step.
-      ctx.commit({ ...ctx.state, vertex: 1, step: 0 }, { history: false });
-      await frame();
-      await frame();
-      return reached;
-    }, { n: steps, frameEvery: STEP_FRAME_EVERY });
-    await walk(WARM_UP / 3);
-    const before0 = await measure(page);
-    const last = await walk(STEPS);
-    const after0 = await measure(page);
-    assert.ok(Number.isInteger(last));
-    assertNoGrowth(before0, after0, 'traversal');
-    assert.deepEqual(page.problems, []);
-  } finally {
-    await context.close();
-  }
+  const page = await env.openLesson(new URL('mesh.html', env.site.url).href);
+  // BENCH.md sphere_10000: 100 slices x 51 stacks.
+  await page.evaluate(() => {
+    const { ctx } = window.wingspline;
+    ctx.commit({ ...ctx.state, meshKind: 'sphere', sphere: { slices: 100, stacks: 51 }, walk: 'vertex', vertex: 0, step: 0 });
+  });
+  await page.waitForFunction(() => window.wingspline.model?.frames?.length > 1);
+  assert.equal(await page.evaluate(() => window.wingspline.model.counts.faces), 10000);
+  const walk = (steps) => page.evaluate(async ({ n, frameEvery }) => {
+    const { ctx } = window.wingspline;
+    const frame = () => new Promise((resolve) => requestAnimationFrame(() => resolve()));
+    for (let k = 1; k <= n; k += 1) {
+      const s = ctx.state;
+      const frames = window.wingspline.model.frames.length;
+      // Step forward; at the end of a walk move on to the next vertex, as a student would.
+      const next = s.step + 1 < frames ? { ...s, step: s.step + 1 } : { ...s, vertex: (s.vertex + 37) % 5002, step: 0 };
+      ctx.commit(next, { history: false });
+      if (k % frameEvery === 0) await frame();
+    }
+    const reached = window.wingspline.model.stepIndex;
+    // The reference state for measuring: v2's walk at its first step.
+    ctx.commit({ ...ctx.state, vertex: 1, step: 0 }, { history: false });
+    await frame();
+    await frame();
+    return reached;
+  }, { n: steps, frameEvery: STEP_FRAME_EVERY });
+  await walk(WARM_UP / 3);
+  const before0 = await measure(page);
+  const last = await walk(STEPS);
+  const after0 = await measure(page);
+  assert.ok(Number.isInteger(last));
+  assertNoGrowth(before0, after0, 'traversal');
+  assert.deepEqual(page.problems, []);
 });

@@ -2,13 +2,13 @@
 // horizontal scrolling of the page, and log nothing.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { openPage, screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
 
 const env = useSiteAndBrowser();
 
 for (const id of ['continuity', 'comparison', 'surfaces']) {
   test(`${id} is usable on a phone`, async () => {
-    const page = await openPage(env.browser, `${env.site.url}${id}.html`, { viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true });
+    const page = await env.openPage(`${env.site.url}${id}.html`, { viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true });
     await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
     // A too-wide element makes a mobile browser widen its layout viewport, so compare with the device width.
     const overflow = await page.evaluate(() => document.documentElement.scrollWidth - 390);
@@ -21,6 +21,5 @@ for (const id of ['continuity', 'comparison', 'surfaces']) {
     assert.ok(inside.length >= handles.length * 0.8, `${inside.length} of ${handles.length} handles are in view`);
     await screenshot(page, `${id}-phone`);
     assert.deepEqual(page.problems, []);
-    await page.context().close();
   });
 }

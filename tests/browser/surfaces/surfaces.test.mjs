@@ -3,7 +3,7 @@
 // dragging a net point with the mouse, the inspector, and two joined patches.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openPage, screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
 
 const EXACT = 1e-12; // world units
 const DRAG_PX = 40;
@@ -11,7 +11,7 @@ const DRAG_PX = 40;
 const env = useSiteAndBrowser();
 
 async function openLesson() {
-  const page = await openPage(env.browser, `${env.site.url}surfaces.html`);
+  const page = await env.openPage(`${env.site.url}surfaces.html`);
   await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
   return page;
 }
@@ -52,7 +52,6 @@ test('a Bezier patch interpolates its corner control points and has the lecture\
   for (const r of rows) assert.match(r, /0 ✓/);
   await screenshot(page, 'surfaces-bezier');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('rotate the view, then drag a net point: it moves in the view plane and the corner follows', async () => {
@@ -86,7 +85,6 @@ test('rotate the view, then drag a net point: it moves in the view plane and the
   assert.deepEqual(s1.a[15], s0.a[15]);
   await screenshot(page, 'surfaces-rotated-drag');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('dragging empty canvas turns the view by half a degree per pixel; Shift-drag pans', async () => {
@@ -121,7 +119,6 @@ test('dragging empty canvas turns the view by half a degree per pixel; Shift-dra
   assert.deepEqual(s2.camera, s1.camera);
   assert.ok(s2.view.cx < s1.view.cx, 'the view panned (content follows the pointer to the right)');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('the inspector sets z of the selected entry exactly', async () => {
@@ -134,7 +131,6 @@ test('the inspector sets z of the selected entry exactly', async () => {
   await page.waitForFunction(() => window.wingspline.state.a[5][2] === 2.5);
   assert.equal(await page.inputValue('#entry-z'), '2.5');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('the Hermite basis gives the same surface, corners from its corner entries', async () => {
@@ -154,7 +150,6 @@ test('the Hermite basis gives the same surface, corners from its corner entries'
   assert.ok(dist(s.a[2], [0, 1, 2].map((k) => 3 * (p.a[1][k] - p.a[0][k]))) < EXACT);
   await screenshot(page, 'surfaces-hermite');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
 
 test('two patches: C1 across the boundary, then C0 only after a drag', async () => {
@@ -174,5 +169,4 @@ test('two patches: C1 across the boundary, then C0 only after a drag', async () 
   assert.equal(await page.getAttribute('#boundary-verdict', 'data-c0'), 'true');
   assert.equal(await page.getAttribute('#boundary-verdict', 'data-c1'), 'false');
   assert.deepEqual(page.problems, []);
-  await page.context().close();
 });
