@@ -4,6 +4,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { handle, drag } from '../../helpers/pointer.mjs';
 
 // Tolerances: positions in world units; the page classifies joints at 1e-6 relative.
 const POSITION_TOL = 1e-9;
@@ -20,19 +21,6 @@ async function openLab(hash = '') {
 const state = (page) => page.evaluate(() => window.wingspline.state);
 const joints = (page) => page.evaluate(() => window.wingspline.model.joints.map((j) => ({
   parametric: j.parametric, geometric: j.geometric, ratio: j.ratio, left: j.left, right: j.right })));
-async function handle(page, id) {
-  const list = await page.evaluate(() => window.wingspline.handles());
-  const found = list.find((x) => x.id === id);
-  assert.ok(found, `handle ${id} is on the page`);
-  return found;
-}
-async function drag(page, id, dx, dy) {
-  const hd = await handle(page, id);
-  await page.mouse.move(hd.x, hd.y);
-  await page.mouse.down();
-  for (let k = 1; k <= 5; k += 1) await page.mouse.move(hd.x + (dx * k) / 5, hd.y + (dy * k) / 5);
-  await page.mouse.up();
-}
 async function choosePreset(page, name) {
   await page.selectOption('#preset', name);
   await page.waitForFunction((n) => window.wingspline.state.preset === n, name);

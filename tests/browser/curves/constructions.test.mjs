@@ -7,6 +7,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { openCurves, frame, chooseFamily, circlePreset } from '../../helpers/curves-page.mjs';
 
 const SAME_POINT_TOL = 1e-12;   // world units: two evaluations of the same curve by the core
 const CURVE_UNCHANGED_TOL = 1e-12; // world units: the curve before/after a knot insertion
@@ -15,23 +16,9 @@ const COLOUR_TOL = 40;          // sum of |r|+|g|+|b| differences: "this pixel h
 const SAMPLE_COUNT = 257;       // parameters where the curve is compared before and after
 
 const env = useSiteAndBrowser();
+const openLesson = () => openCurves(env);
 
-async function openLesson() {
-  const page = await env.openPage(`${env.site.url}curves.html`, { colorScheme: 'light' });
-  await page.evaluate(() => localStorage.clear());
-  await page.goto(`${env.site.url}curves.html`);
-  await page.waitForSelector('body[data-ready=true]');
-  await frame(page);
-  return page;
-}
-const frame = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 const state = (page) => page.evaluate(() => window.wingspline.state);
-
-async function chooseFamily(page, family) {
-  await page.selectOption('#curve-family', family);
-  await frame(page);
-  assert.equal((await state(page)).family, family);
-}
 
 // Seven control points (the lesson's B-spline scene) with clamped cubic knots: interior
 // knots 1/4, 1/2, 3/4 (lecture 002's open vector), weights all 1.
@@ -193,9 +180,7 @@ test('raising a knot\'s multiplicity keeps the curve and lowers the continuity l
 
 test('the curvature comb of the exact circle: curvature 1/r, teeth towards the centre, drawn', async () => {
   const page = await openLesson();
-  await chooseFamily(page, 'nurbs');
-  await page.click('[data-action=circle-preset]');
-  await frame(page);
+  await circlePreset(page);
   const radius = 2;
   const off = await page.evaluate(() => window.wingspline.model.comb);
   assert.equal(off, null, 'no comb before the overlay is on');

@@ -6,22 +6,14 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { openCurves, frame, chooseFamily, circlePreset } from '../../helpers/curves-page.mjs';
 
 const COORD_TOL = 1e-9;          // world units: a stored coordinate vs its expected value
 const CIRCLE_TOL = 1e-12;        // world units: NURBS circle points vs the radius (issue 5)
 const DARK_SUM = 200;            // r+g+b below this is curve ink (light theme), not grid
 const env = useSiteAndBrowser();
+const openLesson = () => openCurves(env);
 
-async function openLesson() {
-  const page = await env.openPage(`${env.site.url}curves.html`, { colorScheme: 'light' });
-  await page.evaluate(() => localStorage.clear());
-  await page.goto(`${env.site.url}curves.html`);
-  await page.waitForSelector('body[data-ready=true]');
-  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-  return page;
-}
-
-const frame = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 const handle = async (page, id) => (await page.evaluate(() => window.wingspline.handles())).find((x) => x.id === id);
 
 // Darkest pixel (r+g+b) of the stage canvas within `radius` CSS px of the world point (x, y).
@@ -48,12 +40,6 @@ const corePoint = (page, u) => page.evaluate((t) => {
 }, u);
 
 const gEntries = (page) => page.$$eval('.matrix-panel math [data-matrix=G]', (nodes) => [...nodes[0].querySelectorAll('mtd')].map((m) => m.textContent.trim()));
-
-async function chooseFamily(page, family) {
-  await page.selectOption('#curve-family', family);
-  await frame(page);
-  assert.equal((await page.evaluate(() => window.wingspline.state)).family, family);
-}
 
 test('dragging a Bezier control point moves the state, the matrix panel and the curve', async () => {
   const page = await openLesson();
@@ -238,9 +224,7 @@ test('de Casteljau steps level by level to the point on the curve', async () => 
 
 test('the NURBS circle preset gives points on the circle and the homogeneous view', async () => {
   const page = await openLesson();
-  await chooseFamily(page, 'nurbs');
-  await page.click('[data-action=circle-preset]');
-  await frame(page);
+  await circlePreset(page);
   const r = await page.evaluate(() => {
     const { api, model } = window.wingspline;
     const params = Array.from({ length: 361 }, (_, j) => j / 360);

@@ -7,7 +7,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { useSiteAndBrowser } from '../../helpers/browser.mjs';
-import { startClassroomSite, openLesson, nothingExecuted, payloads } from '../../helpers/classroom.mjs';
+import { startClassroomSite, nothingExecuted, payloads } from '../../helpers/classroom.mjs';
 
 const env = useSiteAndBrowser(startClassroomSite);
 
@@ -29,14 +29,20 @@ async function injected(page) {
   }));
 }
 
-async function openMesh() {
-  const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
-  const page = await openLesson(context, new URL('mesh.html', env.site.url).href);
-  return { context, page };
+function openMesh() {
+  return env.openLesson(new URL('mesh.html', env.site.url).href);
+}
+
+// Nothing ran, nothing was injected, no dialog opened, no error on the page.
+async function assertNothingRan(page) {
+  assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
+  assert.deepEqual(await injected(page), { handlers: 0, images: 0, inlineScripts: 0 });
+  assert.deepEqual(page.dialogs, []);
+  assert.deepEqual(page.problems, []);
 }
 
 test('an OFF file with a script-bearing name imports, and the name is shown as text', async () => {
-  const { context, page } = await openMesh();
+  const page = await openMesh();
   const name = `${payloads.img}.off`;
   await importMesh(page, name, tetrahedronOff);
   await page.waitForFunction(() => /Imported/.test(window.wingspline.message()));
@@ -44,14 +50,11 @@ test('an OFF file with a script-bearing name imports, and the name is shown as t
   assert.equal(await page.evaluate(() => window.wingspline.state.imported?.name), name);
   const shown = await page.evaluate((n) => document.body.textContent.includes(n.replace(/\.off$/, '')), name);
   assert.ok(shown, 'the name appears in the page as text');
-  assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
-  assert.deepEqual(await injected(page), { handlers: 0, images: 0, inlineScripts: 0 });
-  assert.deepEqual(page.dialogs, []);
-  assert.deepEqual(page.problems, []);
+  await assertNothingRan(page);
 });
 
 test('a refused mesh with a script-bearing name: the validation report and message are text', async () => {
-  const { context, page } = await openMesh();
+  const page = await openMesh();
   const before0 = await page.evaluate(() => JSON.stringify(window.wingspline.state));
   const name = `${payloads.svg}.off`;
   await importMesh(page, name, nonManifoldOff);
@@ -61,14 +64,11 @@ test('a refused mesh with a script-bearing name: the validation report and messa
   // The core's report names the edge (1-based labels, docs/api-mesh.md).
   assert.match(await page.evaluate(() => document.body.textContent), /v1-v2 is shared by 3 faces/);
   assert.equal(await page.evaluate(() => JSON.stringify(window.wingspline.state)), before0, 'a refused file changes nothing');
-  assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
-  assert.deepEqual(await injected(page), { handlers: 0, images: 0, inlineScripts: 0 });
-  assert.deepEqual(page.dialogs, []);
-  assert.deepEqual(page.problems, []);
+  await assertNothingRan(page);
 });
 
 test('markup inside an OFF or OBJ file reaches the message only as quoted text', async () => {
-  const { context, page } = await openMesh();
+  const page = await openMesh();
   // The reader quotes the offending token (the first 30 characters of it) in its message.
   await importMesh(page, 'coordinates.off', `OFF\n3 1 0\n0 0 0\n${payloads.script} 0 0\n0 1 0\n3 0 1 2\n`);
   await page.waitForFunction(() => /line 4/.test(window.wingspline.message()));
@@ -78,10 +78,7 @@ test('markup inside an OFF or OBJ file reaches the message only as quoted text',
   await page.waitForFunction(() => /Imported names\.obj/.test(window.wingspline.message()));
   await importMesh(page, 'statement.obj', `v 0 0 0\n${payloads.img} 1 2\n`);
   await page.waitForFunction(() => /line 2/.test(window.wingspline.message()));
-  assert.deepEqual(await nothingExecuted(page), { pwned: null, injectedElements: 0 });
-  assert.deepEqual(await injected(page), { handlers: 0, images: 0, inlineScripts: 0 });
-  assert.deepEqual(page.dialogs, []);
-  assert.deepEqual(page.problems, []);
+  await assertNothingRan(page);
 });
 
 // Issue 13, item 23: a valid 40,000-triangle fan (1.7 MB OFF) whose hub is vertex 1 (the
@@ -98,7 +95,7 @@ test('a 40,000-triangle fan imports and its walk steps to the end without crashi
   for (let i = 1; i <= n; i += 1) lines.push(`3 0 ${i} ${i + 1}`);
   const text = lines.join('\n') + '\n';
   assert.ok(text.length > 1.2e6);
-  const { context, page } = await openMesh();
+  const page = await openMesh();
   await importMesh(page, 'fan-40000.off', text);
   await page.waitForFunction(() => /Imported/.test(window.wingspline.message()), null, { timeout: 60000 });
   assert.equal(await page.evaluate(() => window.wingspline.model.V), n + 2);

@@ -7,16 +7,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { repoRoot } from '../../helpers/browser.mjs';
-
-function filesUnder(dir, ext) {
-  const out = [];
-  for (const entry of fs.readdirSync(dir, { withFileTypes: true })) {
-    const full = path.join(dir, entry.name);
-    if (entry.isDirectory()) out.push(...filesUnder(full, ext));
-    else if (ext.some((e) => entry.name.endsWith(e))) out.push(full);
-  }
-  return out;
-}
+import { filesUnder } from '../../helpers/files.mjs';
 
 const webDir = path.join(repoRoot, 'web');
 const fixtureDir = path.join(repoRoot, 'tests', 'fixtures', 'site');

@@ -17,6 +17,24 @@ async function newContext() {
 }
 
 
+// A share link made in a browser of its own from the lesson's starting point, moved to
+// tinyView: the link and the state it holds.
+async function linkFromAnotherBrowser(lesson) {
+  const maker = await env.openLesson(new URL(lesson.page, env.site.url).href);
+  await setView(maker, tinyView);
+  const link = await maker.evaluate(() => window.wingspline.shareUrl());
+  const linked = await stateBits(maker);
+  await maker.close();
+  return { link, linked };
+}
+
+// The person's own work on `page`: a keyboard edit and the awkward view; its state bits.
+async function makeOwnWork(page) {
+  await editByKeyboard(page);
+  await setView(page, awkwardView);
+  return stateBits(page);
+}
+
 for (const lesson of lessonsUnderTest) {
   describe(`${lesson.title}: share and keep`, () => {
     test('a reload restores the state exactly, numbers bit for bit', async () => {
@@ -80,19 +98,11 @@ for (const lesson of lessonsUnderTest) {
 
     // Issue 13, item 18: opening a link must not throw the saved work away.
     test('opening a share link keeps the previous work: undo and "Restore" bring it back', async () => {
-      const context = await newContext();
-      // A link made from the lesson's starting point, moved.
-      const maker = await openLesson(context, new URL(lesson.page, env.site.url).href);
-      await setView(maker, tinyView);
-      const link = await maker.evaluate(() => window.wingspline.shareUrl());
-      const linked = await stateBits(maker);
-      await maker.close();
+      const { link, linked } = await linkFromAnotherBrowser(lesson);
       const other = await newContext();
       // The person's own saved work in the other browser.
       let page = await openLesson(other, new URL(lesson.page, env.site.url).href);
-      await editByKeyboard(page);
-      await setView(page, awkwardView);
-      const mine = await stateBits(page);
+      const mine = await makeOwnWork(page);
       assert.notDeepEqual(mine, linked);
       await page.close();
       // The link opened in a new tab of that browser.
@@ -117,9 +127,7 @@ for (const lesson of lessonsUnderTest) {
     test('a damaged link never overwrites the saved work', async () => {
       const context = await newContext();
       let page = await openLesson(context, new URL(lesson.page, env.site.url).href);
-      await editByKeyboard(page);
-      await setView(page, awkwardView);
-      const mine = await stateBits(page);
+      const mine = await makeOwnWork(page);
       await page.close();
       const damaged = `${new URL(lesson.page, env.site.url).href}#s=QUJDREVGR0hJSktMTU5PUA`;
       page = await openLesson(context, damaged); // in a new tab
@@ -137,15 +145,9 @@ for (const lesson of lessonsUnderTest) {
 
     // Issue 13, item 24: a link pasted into the address bar of a tab showing the lesson.
     test('a link pasted into an open tab is followed, and undo returns to the work before it', async () => {
-      const maker = await env.openLesson(new URL(lesson.page, env.site.url).href);
-      await setView(maker, tinyView);
-      const link = await maker.evaluate(() => window.wingspline.shareUrl());
-      const linked = await stateBits(maker);
-      await maker.close();
+      const { link, linked } = await linkFromAnotherBrowser(lesson);
       const page = await env.openLesson(new URL(lesson.page, env.site.url).href);
-      await editByKeyboard(page);
-      await setView(page, awkwardView);
-      const mine = await stateBits(page);
+      const mine = await makeOwnWork(page);
       assert.notDeepEqual(mine, linked);
       const loads = await page.evaluate(() => performance.getEntriesByType('navigation').length + ':' + performance.timeOrigin);
       await page.goto(link); // same document, only the fragment changes: no reload

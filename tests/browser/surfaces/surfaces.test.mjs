@@ -4,6 +4,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { handle, drag } from '../../helpers/pointer.mjs';
 
 const EXACT = 1e-12; // world units
 const DRAG_PX = 40;
@@ -17,18 +18,6 @@ async function openLesson() {
 }
 const state = (page) => page.evaluate(() => window.wingspline.state);
 const dist = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-async function handle(page, id) {
-  const found = (await page.evaluate(() => window.wingspline.handles())).find((x) => x.id === id);
-  assert.ok(found, `handle ${id} is on the page`);
-  return found;
-}
-async function drag(page, id, dx, dy) {
-  const hd = await handle(page, id);
-  await page.mouse.move(hd.x, hd.y);
-  await page.mouse.down();
-  await page.mouse.move(hd.x + dx, hd.y + dy, { steps: 5 });
-  await page.mouse.up();
-}
 // positions[3*(17*i + j) + k] at u = i/16, v = j/16
 const sampleAt = (s, i, j) => [0, 1, 2].map((k) => s.positions[3 * (17 * i + j) + k]);
 

@@ -3,6 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
+import { withValidMesh } from '../../helpers/wasm-mesh.mjs';
 
 const api = await loadWingspline();
 
@@ -24,16 +25,7 @@ const slideEdges = SLIDE_EDGES.trim().split('\n').map((line) => {
 const SLIDE_VERTEX_EDGES = ['e1', 'e6', 'e3', 'e5', 'e6'].map(label);
 const SLIDE_FACE_EDGES = ['e1', 'e3', 'e5'].map(label);
 
-function withMesh(input, body) {
-  const mesh = api.buildMesh(input);
-  try {
-    const report = mesh.validate();
-    assert.equal(report.ok, true, JSON.stringify(report.problems));
-    return body(mesh);
-  } finally {
-    mesh.dispose();
-  }
-}
+const withMesh = (input, body) => withValidMesh(api, input, body);
 
 test('the lecture example reproduces the slide tables entry for entry', () => {
   withMesh(api.lectureExample(), (mesh) => {

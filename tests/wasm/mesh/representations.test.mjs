@@ -3,21 +3,13 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
+import { withValidMesh } from '../../helpers/wasm-mesh.mjs';
 
 const api = await loadWingspline();
 const KEYS = ['independent-faces', 'vertex-face-tables', 'adjacency-lists', 'partial-adjacency-lists', 'edge-list', 'winged-edge'];
 const KINDS = ['faces-around-vertex', 'edges-around-vertex', 'edges-of-face', 'faces-of-edge', 'neighbours-of-face'];
 
-function withMesh(input, body) {
-  const mesh = api.buildMesh(input);
-  try {
-    const report = mesh.validate();
-    assert.equal(report.ok, true, JSON.stringify(report.problems));
-    return body(mesh);
-  } finally {
-    mesh.dispose();
-  }
-}
+const withMesh = (input, body) => withValidMesh(api, input, body);
 
 const sortedList = (a) => Array.from(a).sort((x, y) => x - y);
 // Rows are objects keyed by the descriptors' column names (issue 14): one column of them.

@@ -14,19 +14,10 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { cspProblems } from '../../helpers/csp.mjs';
+import { filesUnder } from '../../helpers/files.mjs';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..', '..');
 const webRoot = path.join(repoRoot, 'web');
-
-function filesUnder(dir, ext) {
-  const out = [];
-  for (const entry of fs.readdirSync(dir, { withFileTypes: true })) {
-    const full = path.join(dir, entry.name);
-    if (entry.isDirectory()) out.push(...filesUnder(full, ext));
-    else if (ext.some((e) => entry.name.endsWith(e))) out.push(full);
-  }
-  return out.sort();
-}
 
 // Comments may name the sinks (to say they are not used); code may not.
 function stripJsComments(source) {
