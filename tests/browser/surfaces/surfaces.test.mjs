@@ -115,6 +115,9 @@ test('the inspector sets z of the selected entry exactly', async () => {
   await page.focus('#stage');
   for (let k = 0; k < 6; k += 1) await page.keyboard.press(']');
   assert.equal(await page.evaluate(() => window.wingspline.selected), 'a11');
+  // The entry fields follow the selection on the next frame: let two frames pass before
+  // typing, or that frame writes the old value over the typed one.
+  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
   await page.fill('#entry-z', '2.5');
   await page.dispatchEvent('#entry-z', 'change');
   await page.waitForFunction(() => window.wingspline.state.a[5][2] === 2.5);
