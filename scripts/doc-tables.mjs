@@ -1,6 +1,6 @@
 // The table list of docs/api-mesh.md, generated from the core's table descriptors
 // (core/src/mesh/tables.cpp), so the docs cannot drift from the tables: a wasm test
-// (tests/wasm/mesh-tables.test.mjs) checks the block in the docs is this output.
+// (tests/wasm/mesh/tables.test.mjs) checks the block in the docs is this output.
 //   node scripts/doc-tables.mjs           print the block
 //   node scripts/doc-tables.mjs --write   replace it in docs/api-mesh.md (after a build)
 import { readFileSync, writeFileSync } from 'node:fs';

@@ -2,7 +2,7 @@
 //   node scripts/fuzz.mjs                   every target, the default budget
 //   node scripts/fuzz.mjs obj_reader 600    one target for ten minutes
 // Anything found lands in test-results/fuzz/<target>/; turn it into a regression test in
-// tests/native/test_hardening_*.cpp and add it to tests/fuzz/corpus/<target>/ as a seed.
+// tests/native/files/test_*_corpus.cpp and add it to tests/fuzz/corpus/<target>/ as a seed.
 import { buildFuzz, fuzzTargets, runFuzzTarget, defaultSecondsPerTarget } from './lib/fuzz.mjs';
 import { log } from './lib/run.mjs';
 

@@ -2,7 +2,7 @@
 // the native benchmark times the core's work on data already in memory; these time the same
 // work inside the module (emscripten_get_now, ms) so the wasm and native figures compare
 // like for like. Reached only through web/js/core/bench-hooks.js, never from the student
-// API (tests/wasm/bench-hooks.test.mjs).
+// API (tests/wasm/module/bench-hooks.test.mjs).
 #include "boundary.h"
 #include "mesh_access.h"
 

@@ -6,7 +6,7 @@
 // tests/fuzz/corpus/<name>/ (read only: new inputs go to a scratch folder under
 // build/fuzz/work/, so a test run never changes the repository). A crash, a sanitizer report,
 // a leak or a timeout fails the layer and leaves the reproducer under test-results/fuzz/;
-// it then becomes a regression test (tests/native/test_hardening_*.cpp) and a seed.
+// it then becomes a regression test (tests/native/files/test_*_corpus.cpp) and a seed.
 //
 //   node scripts/fuzz.mjs                 every target, the default budget
 //   node scripts/fuzz.mjs off_reader 300  one target for five minutes (a longer local session)

@@ -3,7 +3,7 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { before, after } from 'node:test';
+import { before, after, afterEach } from 'node:test';
 import { chromium } from 'playwright-core';
 import { createStaticServer, listen } from '../../scripts/lib/static-server.mjs';
 
@@ -29,13 +29,42 @@ export async function launchBrowser() {
 }
 
 // A new page whose console errors and page errors are collected into `page.problems`.
+// A page in a new context that the caller closes (the benchmarks, which close their
+// browser); tests use the closing env.openPage below.
 export async function openPage(browser, url, contextOptions = {}) {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, ...contextOptions });
-  const page = await context.newPage();
+  return collectProblemsAndGo(await context.newPage(), url);
+}
+
+async function collectProblemsAndGo(page, url) {
   page.problems = [];
   page.on('console', (msg) => { if (msg.type() === 'error') page.problems.push(`console: ${msg.text()}`); });
   page.on('pageerror', (err) => page.problems.push(`pageerror: ${err.message}`));
   await page.goto(url);
+  return page;
+}
+
+export async function waitReady(page) {
+  await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
+}
+
+// A lesson page in `context`, ready, its dialogs and errors trapped.
+export async function openLesson(context, url) {
+  const page = await context.newPage();
+  trap(page);
+  await page.goto(url);
+  await waitReady(page);
+  return page;
+}
+
+// Dialogs (alert/confirm/prompt) are recorded and dismissed; page errors and console errors
+// collected into page.problems.
+export function trap(page) {
+  page.dialogs = [];
+  page.problems = page.problems ?? [];
+  page.on('dialog', (dialog) => { page.dialogs.push(dialog.message()); dialog.dismiss().catch(() => {}); });
+  page.on('pageerror', (err) => page.problems.push(`pageerror: ${err.message}`));
+  page.on('console', (msg) => { if (msg.type() === 'error') page.problems.push(`console: ${msg.text()}`); });
   return page;
 }
 
@@ -46,9 +75,47 @@ export async function screenshot(page, name) {
   return file;
 }
 
+// Pages that always close. Every browser context opened through `tracker.newContext` is
+// closed after the test that opened it, whether the test passed or failed (node:test's
+// afterEach runs for every test of the file, nested ones too), so a failing assertion never
+// leaks a context into the next test. No test closes its own context; a test closes a page
+// or a context itself only when closing is part of what it checks (a tab closed, then the
+// link opened in another).
+export function closingContexts(getBrowser) {
+  const open = new Set();
+  afterEach(async () => {
+    const contexts = [...open];
+    open.clear();
+    await Promise.all(contexts.map((context) => context.close()));
+  });
+  const tracker = {
+    // A fresh context (playwright's options; no defaults added).
+    async newContext(options = {}) {
+      const context = await getBrowser().newContext(options);
+      open.add(context);
+      context.on('close', () => open.delete(context));
+      return context;
+    },
+    // A page in a fresh 1280 x 800 context, console and page errors collected into
+    // `page.problems`, opened at url.
+    async openPage(url, contextOptions = {}) {
+      const context = await tracker.newContext({ viewport: { width: 1280, height: 800 }, ...contextOptions });
+      return collectProblemsAndGo(await context.newPage(), url);
+    },
+    // A lesson page in a fresh 1280 x 800 context, ready (body[data-ready]), dialogs and
+    // errors trapped (as openLesson).
+    async openLesson(url, contextOptions = {}) {
+      const context = await tracker.newContext({ viewport: { width: 1280, height: 800 }, ...contextOptions });
+      return openLesson(context, url);
+    },
+  };
+  return tracker;
+}
+
 // One site and one browser for a whole test file, opened before its first test and closed
-// after its last: `const env = useSiteAndBrowser();` then `env.site.url`, `env.browser`.
-// `start` serves the site (default: dist/ as startSite does).
+// after its last: `const env = useSiteAndBrowser();` then `env.site.url`, `env.browser`, and
+// the closing pages of closingContexts: `env.openPage(url)`, `env.openLesson(url)`,
+// `env.newContext(options)`. `start` serves the site (default: dist/ as startSite does).
 export function useSiteAndBrowser(start = startSite) {
   const env = { site: null, browser: null };
   before(async () => {
@@ -59,5 +126,5 @@ export function useSiteAndBrowser(start = startSite) {
     await env.browser?.close();
     await env.site?.close();
   });
-  return env;
+  return Object.assign(env, closingContexts(() => env.browser));
 }

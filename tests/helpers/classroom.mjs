@@ -6,6 +6,8 @@ import fs from 'node:fs';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import { repoRoot, startSite } from './browser.mjs';
+
+export { waitReady, openLesson, trap } from './browser.mjs';
 import { lessons } from '../../web/js/lessons/registry.js';
 import { lessonPage } from '../../scripts/lib/lesson-page.mjs';
 
@@ -32,33 +34,12 @@ export function startClassroomSite(options = {}) {
 // dist/ pages: the landing page and every ready lesson (the fixture is not part of dist/).
 export const distPages = ['index.html', ...readyLessons.map((l) => l.page)];
 
-export async function waitReady(page) {
-  await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
-}
-
-export async function openLesson(context, url) {
-  const page = await context.newPage();
-  trap(page);
-  await page.goto(url);
-  await waitReady(page);
-  return page;
-}
-
-// Dialogs (alert/confirm/prompt) are recorded and dismissed; page errors collected; the
-// payloads used in tampered links set window.__pwned when they run.
+// The payloads used in tampered links set window.__pwned when they run.
 export const payloads = {
   img: '<img src=x onerror="window.__pwned=\'img\'">',
   script: '<script>window.__pwned="script"</script>',
   svg: '<svg onload="window.__pwned=\'svg\'"></svg>',
 };
-export function trap(page) {
-  page.dialogs = [];
-  page.problems = page.problems ?? [];
-  page.on('dialog', (dialog) => { page.dialogs.push(dialog.message()); dialog.dismiss().catch(() => {}); });
-  page.on('pageerror', (err) => page.problems.push(`pageerror: ${err.message}`));
-  page.on('console', (msg) => { if (msg.type() === 'error') page.problems.push(`console: ${msg.text()}`); });
-  return page;
-}
 export async function nothingExecuted(page) {
   return page.evaluate(() => ({
     pwned: window.__pwned ?? null,
@@ -109,5 +90,14 @@ export const awkwardView = { cx: 0.1 + 0.2, cy: -0, zoom: 64.1 };
 export const tinyView = { cx: 1e-300, cy: -1e-300, zoom: 33.3 };
 export async function setView(page, view) {
   await page.evaluate((v) => window.wingspline.ctx.setView(v), view);
+  await page.evaluate(() => window.wingspline.flush());
+}
+
+// Moves the first draggable handle by keyboard, so the edit goes the way a person's does.
+export async function editByKeyboard(page) {
+  await page.focus('#stage');
+  await page.keyboard.press(']');
+  await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('ArrowUp');
   await page.evaluate(() => window.wingspline.flush());
 }

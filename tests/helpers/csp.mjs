@@ -1,6 +1,6 @@
 // The Content Security Policy every page must carry (issue 9), as a checker shared by the
-// source test (tests/wasm/hardening-source.test.mjs) and the browser test
-// (tests/browser/hardening-csp.test.mjs): scripts only from the site ('self'), WebAssembly
+// source test (tests/wasm/security/source.test.mjs) and the browser test
+// (tests/browser/security/csp.test.mjs): scripts only from the site ('self'), WebAssembly
 // compilation allowed ('wasm-unsafe-eval', which permits nothing else), no
 // 'unsafe-inline', no 'unsafe-eval', no remote origin anywhere, no plugins, no <base>.
 

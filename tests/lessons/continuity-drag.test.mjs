@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
-import { random } from '../wasm/seeded-random.mjs';
+import { random } from '../helpers/seeded-random.mjs';
 import { lesson } from '../../web/js/lessons/continuity/lesson.js';
 import { PRESETS } from '../../web/js/lessons/continuity/presets.js';
 import { enforceAll } from '../../web/js/lessons/continuity/constraints.js';

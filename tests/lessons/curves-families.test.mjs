@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
-import { random } from '../wasm/seeded-random.mjs';
+import { random } from '../helpers/seeded-random.mjs';
 import {
   FAMILY_IDS, DEFAULT_KNOTS, curveSpec, switchFamily, addPoint, removePoint, withDegree, usesKnots, maxDegreeFor, familyInfo, familyMaxPoints,
 } from '../../web/js/lessons/curves/families.js';

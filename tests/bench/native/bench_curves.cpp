@@ -1,6 +1,7 @@
 // Curve tasks of ../shared/BENCH.md on the native build: one batch call per repetition over
 // N = 10^6 parameters; checksum = sum of x + y + z of every evaluated point.
 #include "bench.h"
+#include "bench_curve.h"
 
 #include "wingspline/curves/curve.h"
 
@@ -20,24 +21,6 @@ Curve bench_bezier() {
     c.kind = CurveKind::Bezier;
     c.dim = 3;
     c.points = {0, 0, 0, 1, 2, 0.5, 3, 2, 1, 4, 0, 1.5};
-    return c;
-}
-
-// K = 64, p = 3, breakpoints u_i = i + 0.25 sin(i), clamped; NURBS weights 1 + 0.5 sin^2(0.7 i).
-Curve bench_bspline(bool nurbs) {
-    Curve c;
-    c.kind = nurbs ? CurveKind::Nurbs : CurveKind::BSpline;
-    c.dim = 3;
-    c.degree = 3;
-    for (int i = 0; i < 64; ++i) {
-        const double r = 1 + i / 64.0;
-        c.points.insert(c.points.end(), {r * std::cos(0.3 * i), r * std::sin(0.3 * i), 0.05 * i});
-        if (nurbs) c.weights.push_back(1 + 0.5 * std::sin(0.7 * i) * std::sin(0.7 * i));
-    }
-    const auto u = [](int i) { return i + 0.25 * std::sin(i); };
-    c.knots = {u(0), u(0), u(0)};
-    for (int i = 0; i <= 61; ++i) c.knots.push_back(u(i));
-    c.knots.insert(c.knots.end(), {u(61), u(61), u(61)});
     return c;
 }
 

@@ -6,7 +6,7 @@
 //
 // The mesh limits are the core's (core/include/wingspline/mesh/limits.h, exposed as
 // api.meshLimits). Schemas are built when a lesson module loads, before the core does, so
-// the numbers are repeated here once; tests/wasm/mesh-trust.test.mjs fails if they ever
+// the numbers are repeated here once; tests/wasm/mesh/sets-planes-limits.test.mjs fails if they ever
 // differ from the core's.
 
 // |x| of any coordinate or free number of a state, in world units.

@@ -1,7 +1,7 @@
 // Benchmark and leak-test hooks (docs/architecture.md, "Teaching path and fast kernels"):
 // timing loops inside the module and the every-ring walk of BENCH.md's mesh_ring. They are
 // not part of the student API: wingspline.js does not export this file and nothing on the
-// `api` object reaches it (tests/wasm/bench-hooks.test.mjs checks both). Imported only by
+// `api` object reaches it (tests/wasm/module/bench-hooks.test.mjs checks both). Imported only by
 // tests/bench and the tests that need it:
 //   import { benchHooks } from '.../js/core/bench-hooks.js';
 //   const hooks = benchHooks(await loadWingspline());

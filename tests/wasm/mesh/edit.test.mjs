@@ -1,0 +1,247 @@
+// Issue 15 through the JS API: the Euler operations (splitEdge, splitFace, joinFaces,
+// flipEdge, collapseEdge, pokeFace), mesh.check, change records read by their descriptor,
+// gaps and compact(), the exported file. Expected tables of the lecture example are worked
+// out by hand from lecture 000's conventions (the same as tests/native/test_mesh_euler.cpp).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { loadWingspline } from 'wingspline';
+import { random } from '../../helpers/seeded-random.mjs';
+
+const api = await loadWingspline();
+
+function withMesh(input, body) {
+  const mesh = api.buildMesh(input);
+  try {
+    return body(mesh);
+  } finally {
+    mesh.dispose();
+  }
+}
+const withLecture = (body) => withMesh(api.lectureExample(), body);
+
+const errors = (mesh) => mesh.validate().problems.filter((p) => p.severity === 'error');
+
+// The slide's edge row "e3: v2 v3 F1 F2 e2 e5 e1 e4" (S E L R SL SR EL ER), 1-based labels.
+function rowText(r, e) {
+  const lab = (p, i) => (i === -1 ? '-' : `${p}${i + 1}`);
+  return `e${e + 1}: ${lab('v', r.start)} ${lab('v', r.end)} ${lab('F', r.left)} ${lab('F', r.right)} ` +
+    `${lab('e', r.startLeft)} ${lab('e', r.startRight)} ${lab('e', r.endLeft)} ${lab('e', r.endRight)}`;
+}
+const edgeRows = (mesh) => mesh.wingedEdge().edges.map(rowText);
+
+function snapshot(mesh) {
+  const a = mesh.wingedEdgeArrays();
+  const gaps = mesh.gaps();
+  return JSON.stringify({
+    positions: Array.from(a.positions), vertexEdge: Array.from(a.vertexEdge), edges: Array.from(a.edges), faceEdge: Array.from(a.faceEdge),
+    gaps: [Array.from(gaps.vertices), Array.from(gaps.edges), Array.from(gaps.faces)], version: mesh.coreVersion(),
+  });
+}
+
+test('the operations and the change record are described once by the core', () => {
+  const names = api.meshOperations.operations.map((o) => o.name);
+  assert.deepEqual(names, ['split-edge', 'split-face', 'join-faces', 'flip-edge', 'collapse-edge', 'poke-face']);
+  const split = api.meshOperations.operations[0];
+  assert.deepEqual(split.arguments.map((a) => [a.name, a.kind, a.optional]), [['e', 'edge', false], ['t', null, true]]);
+  assert.equal(split.arguments[1].default, 0.5);
+  assert.deepEqual(api.meshOperations.tables, ['vertex', 'edge', 'face']);
+  assert.ok(Object.isFrozen(api.meshOperations));
+});
+
+test('splitEdge(e3): hand-worked tables, every assignment in order, v6 at the midpoint', () => withLecture((mesh) => {
+  assert.deepEqual(mesh.check('split-edge', 2), { ok: true });
+  const c = mesh.splitEdge(2);
+  assert.deepEqual(edgeRows(mesh), ['e1: v1 v3 - F1 e2 e2 e4 e8', 'e2: v1 v2 F1 - e1 e1 e3 e6', 'e3: v2 v6 F1 F2 e2 e5 e8 e8',
+    'e4: v3 v4 - F2 e1 e8 e7 e5', 'e5: v2 v4 F2 F3 e3 e6 e4 e7', 'e6: v2 v5 F3 - e5 e2 e7 e7', 'e7: v4 v5 - F3 e4 e5 e6 e6',
+    'e8: v6 v3 F1 F2 e3 e3 e1 e4']);
+  const w = mesh.wingedEdge();
+  assert.deepEqual(w.vertices.map((v) => v.edge), [0, 5, 7, 4, 5, 7]);
+  assert.deepEqual([w.vertices[5].x, w.vertices[5].y, w.vertices[5].z], [1, 1, 0]);
+  assert.equal(c.op, 'split-edge');
+  assert.deepEqual(Array.from(c.added.vertices), [5]);
+  assert.deepEqual(Array.from(c.added.edges), [7]);
+  assert.equal(c.steps.length, 15);
+  // Each step names the algorithm's line that made it (c.phases, four lines for a split).
+  assert.deepEqual(c.steps[0], { table: 'vertex', row: 5, field: 'edge', before: -1, after: 7, phase: 0 });
+  assert.deepEqual(c.steps.at(-1), { table: 'vertex', row: 2, field: 'edge', before: 2, after: 7, phase: 3 });
+  assert.equal(c.phases.length, 4);
+  assert.deepEqual(c.steps.slice(9, 12).map((s) => `${s.row} ${s.field} ${s.before}->${s.after}`),
+    ['2 end 2->5', '2 endLeft 0->7', '2 endRight 3->7']);
+  assert.deepEqual(c.positions, [{ vertex: 5, before: [1, 1, 0], after: [1, 1, 0], step: 0 }]);
+  assert.deepEqual(c.after, { topology: 1, geometry: 1 });
+  assert.deepEqual(mesh.version, mesh.coreVersion());
+  assert.deepEqual(mesh.counts().euler, 1);
+  assert.deepEqual(errors(mesh), []);
+}));
+
+test('flipEdge(e3) and collapseEdge(e4) and pokeFace(F1): hand-worked rows', () => {
+  withLecture((mesh) => {
+    mesh.flipEdge(2);
+    assert.deepEqual(edgeRows(mesh).slice(0, 5), ['e1: v1 v3 - F2 e2 e3 e4 e4', 'e2: v1 v2 F1 - e3 e1 e5 e6',
+      'e3: v4 v1 F1 F2 e5 e4 e2 e1', 'e4: v3 v4 - F2 e1 e1 e7 e3', 'e5: v2 v4 F1 F3 e2 e6 e3 e7']);
+  });
+  withLecture((mesh) => {
+    const c = mesh.collapseEdge(3);
+    const rows = edgeRows(mesh);
+    assert.deepEqual([rows[0], rows[2], rows[5], rows[6]], ['e1: v1 v3 - F1 e2 e2 e7 e3', 'e3: v2 v3 F1 F3 e2 e6 e1 e7',
+      'e6: v2 v5 F3 - e3 e2 e7 e7', 'e7: v3 v5 - F3 e1 e3 e6 e6']);
+    assert.deepEqual(Array.from(c.removed.vertices), [3]);
+    assert.deepEqual(Array.from(c.removed.edges), [3, 4]);
+    assert.deepEqual(Array.from(c.removed.faces), [1]);
+    const gaps = mesh.gaps();
+    assert.deepEqual([Array.from(gaps.vertices), Array.from(gaps.edges), Array.from(gaps.faces)], [[3], [3, 4], [1]]);
+    const k = mesh.counts();
+    assert.deepEqual([k.vertices, k.edges, k.faces, k.euler], [4, 5, 2, 1]);
+    // the other representations keep the winged edge's numbers: F2 is a face with no corners
+    const reps = mesh.representations();
+    assert.deepEqual(reps['vertex-face-tables'].faces.map((f) => f.vertices), [[0, 1, 2], [], [1, 4, 2]]);
+    // queries and adjacency refuse a gap by name
+    assert.throws(() => mesh.facesOfEdge(3), (e) => e.code === 'deleted-element' && /e4 was removed/.test(e.message));
+    assert.throws(() => mesh.query('edges-around-vertex', 3), (e) => e.code === 'deleted-element');
+    assert.equal(mesh.planes().length, 3);
+    assert.deepEqual(Array.from(mesh.normals().subarray(3, 6)), [0, 0, 0]); // the gap has no normal
+    // a file has no room for gaps: four vertices, two faces, numbered as compact() would
+    const off = api.parseMesh(mesh.format());
+    assert.deepEqual(off.faces, [[0, 1, 2], [1, 3, 2]]);
+    const map = mesh.compact();
+    assert.deepEqual(Array.from(map.vertices), [0, 1, 2, -1, 3]);
+    assert.deepEqual(Array.from(map.faces), [0, -1, 1]);
+    assert.deepEqual(mesh.representations()['vertex-face-tables'].faces.map((f) => f.vertices), off.faces);
+    assert.deepEqual(errors(mesh), []);
+  });
+  withLecture((mesh) => {
+    const c = mesh.pokeFace(0);
+    assert.deepEqual(edgeRows(mesh).slice(7), ['e8: v6 v3 F1 F5 e9 e10 e1 e3', 'e9: v6 v1 F4 F1 e10 e8 e2 e1',
+      'e10: v6 v2 F5 F4 e8 e9 e3 e2']);
+    assert.deepEqual(Array.from(c.added.faces), [3, 4]);
+    assert.equal(mesh.counts().euler, 1);
+  });
+});
+
+test('refusals: a reason naming the elements, the same from check and from the operation, nothing changed', () => {
+  withMesh(api.generateMesh('tetrahedron'), (mesh) => {
+    const before = snapshot(mesh);
+    const verdict = mesh.check('flip-edge', 0);
+    assert.equal(verdict.ok, false);
+    assert.equal(verdict.code, 'edge-exists');
+    assert.match(verdict.message, /^flipping e1 would create an edge v\d-v\d that already exists \(e\d\)$/);
+    assert.throws(() => mesh.flipEdge(0), (e) => e.code === 'edge-exists' && e.message === verdict.message);
+    assert.throws(() => mesh.apply({ op: 'collapse-edge', e: 0, t: 0.5 }), (e) => e.code === 'degenerate-vertex');
+    assert.equal(snapshot(mesh), before);
+  });
+  withLecture((mesh) => {
+    const before = snapshot(mesh);
+    assert.deepEqual(mesh.check('join-faces', 0).code, 'boundary-edge');
+    assert.match(mesh.check('split-face', 0, 0, 1).message, /v1 and v2 are already joined by e2, a side of F1/);
+    assert.deepEqual(mesh.check('split-edge', 2, 1.5).code, 'invalid-parameter');
+    assert.throws(() => mesh.splitEdge(2, Number.NaN), (e) => e.code === 'invalid-argument');
+    assert.throws(() => mesh.splitEdge(1.5), (e) => e.code === 'invalid-argument');
+    assert.throws(() => mesh.check('explode', 1), (e) => e.code === 'unknown-operation');
+    assert.throws(() => mesh.apply({ op: 'explode' }), (e) => e.code === 'unknown-operation' && /split-edge/.test(e.message));
+    assert.equal(snapshot(mesh), before);
+  });
+});
+
+// Undo from the record's rows alone, on the flat tables (what the lesson may rely on).
+function undo(arrays, change) {
+  const edges = Array.from(arrays.edges);
+  const vertexEdge = Array.from(arrays.vertexEdge);
+  const faceEdge = Array.from(arrays.faceEdge);
+  const positions = Array.from(arrays.positions);
+  for (const row of [...change.rows].reverse()) {
+    for (const f of row.fields) {
+      if (row.table === 'vertex' && f.field === 'edge') vertexEdge[row.row] = f.before;
+      else if (row.table === 'face' && f.field === 'edge') faceEdge[row.row] = f.before;
+      else if (row.table === 'edge') edges[8 * row.row + arrays.edgeFields.indexOf(f.field)] = f.before;
+    }
+  }
+  for (const p of change.positions) positions.splice(3 * p.vertex, 3, ...p.before);
+  vertexEdge.length -= change.added.vertices.length;
+  positions.length = 3 * vertexEdge.length;
+  edges.length -= 8 * change.added.edges.length;
+  faceEdge.length -= change.added.faces.length;
+  return JSON.stringify([positions, vertexEdge, edges, faceEdge]);
+}
+const flat = (a) => JSON.stringify([Array.from(a.positions), Array.from(a.vertexEdge), Array.from(a.edges), Array.from(a.faceEdge)]);
+
+test('random seeded operation sequences: valid, Euler, rebuilt from the file, refusals unchanged, rows undo', () => {
+  const inputs = [api.lectureExample(), api.generateMesh('tetrahedron'), api.generateMesh('cube'), api.generateMesh('sphere', { slices: 6, stacks: 5 }),
+    api.generateMesh('grid', { nx: 3, ny: 3 }), api.foleyExample()];
+  const ops = api.meshOperations.operations;
+  let accepted = 0;
+  let refused = 0;
+  for (let seed = 1; seed <= 240; seed += 1) {
+    const rnd = random(seed);
+    withMesh(inputs[seed % inputs.length], (mesh) => {
+      const euler = mesh.counts().euler;
+      for (let step = 0; step < 25; step += 1) {
+        const op = ops[Math.floor(rnd() * ops.length)];
+        const k = mesh.counts();
+        const total = { vertex: k.vertices + 2, edge: k.edges + 2, face: k.faces + 2 };
+        const args = op.arguments.map((a) => (a.kind ? Math.floor(rnd() * total[a.kind]) : [0.5, 0.3, 1.2][Math.floor(rnd() * 3)]));
+        const record = { op: op.name, ...Object.fromEntries(op.arguments.map((a, i) => [a.name, args[i]])) };
+        const where = `seed ${seed} step ${step} ${JSON.stringify(record)}`;
+        const before = snapshot(mesh);
+        const arrays = mesh.wingedEdgeArrays();
+        const verdict = mesh.check(op.name, ...args);
+        assert.equal(snapshot(mesh), before, where);
+        if (!verdict.ok) {
+          refused += 1;
+          assert.throws(() => mesh.apply(record), (e) => e.code === verdict.code && e.message === verdict.message, where);
+          assert.equal(snapshot(mesh), before, where);
+          continue;
+        }
+        accepted += 1;
+        const change = mesh.apply(record);
+        assert.deepEqual(errors(mesh), [], where);
+        assert.equal(mesh.counts().euler, euler, where);
+        assert.deepEqual(mesh.version, mesh.coreVersion(), where);
+        assert.equal(undo(mesh.wingedEdgeArrays(), change), flat(arrays), where);
+        // independent: the exported file, parsed and built again, has the same counts
+        const rebuilt = api.buildMesh(api.parseMesh(mesh.format()));
+        const [a, b] = [mesh.counts(), rebuilt.counts()];
+        rebuilt.dispose();
+        assert.deepEqual([a.vertices, a.edges, a.faces, a.boundaryLoops], [b.vertices, b.edges, b.faces, b.boundaryLoops], where);
+      }
+    });
+  }
+  assert.ok(accepted > 1000 && refused > 300, `accepted ${accepted}, refused ${refused}`);
+});
+
+test('the benchmark hook flips what the public API flips (BENCH.md mesh_edit_flip) and leaves the mesh alone', async () => {
+  const { benchHooks } = await import('wingspline/bench-hooks');
+  const hooks = benchHooks(api);
+  withMesh(api.generateMesh('sphere', { slices: 12, stacks: 7 }), (mesh) => {
+    const before = snapshot(mesh);
+    const r = hooks.timeEditInCore(mesh, 'mesh_edit_flip', 2);
+    assert.equal(snapshot(mesh), before);
+    const E = mesh.counts().edges;
+    assert.equal(r.n, Math.ceil(E / 3));
+    let flips = 0;
+    for (let e = 0; e < E; e += 3) {
+      if (mesh.check('flip-edge', e).ok) {
+        mesh.flipEdge(e);
+        flips += 1;
+      }
+    }
+    assert.equal(r.checksum, flips + E + mesh.wingedEdge().edges[E - 1].start);
+  });
+});
+
+test('apply(op, {rewritten: true}): the entries each representation rewrote for a split of e3 (counted by hand)', () => withLecture((mesh) => {
+  const plain = api.buildMesh(api.lectureExample());
+  try {
+    const c = mesh.apply({ op: 'split-edge', e: 2, t: 0.5 }, { rewritten: true });
+    // Winged edge: the 15 assignments and v6's three coordinates. Independent faces: F1's
+    // last two corners (6 numbers) and F2's new corner (3). Vertex and face tables: v6's
+    // xyz (3), F1's list from its third entry (2) and F2's new entry (1).
+    assert.equal(c.rewritten['winged-edge'], 18);
+    assert.equal(c.rewritten['independent-faces'], 9);
+    assert.equal(c.rewritten['vertex-face-tables'], 6);
+    assert.deepEqual(Object.keys(c.rewritten).sort(), ['adjacency-lists', 'edge-list', 'independent-faces', 'partial-adjacency-lists', 'vertex-face-tables', 'winged-edge']);
+    // Without the option the record has no count (it would cost O(mesh) per replayed edit).
+    assert.equal(plain.apply({ op: 'split-edge', e: 2, t: 0.5 }).rewritten, undefined);
+  } finally {
+    plain.dispose();
+  }
+}));

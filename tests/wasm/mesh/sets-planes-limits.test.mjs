@@ -1,0 +1,117 @@
+// Issue 13 (trust), mesh items through the JS API: neighbours are a set in every
+// representation (6), planes() uses the face's own first three corners and says which (7),
+// BOM and CRLF files read (17), and one set of limits (api.meshLimits) enforced where a
+// value enters (22). Over-limit files are refused without growing the wasm memory: in
+// files/over-limit-memory.test.mjs (its own process, so the memory figures are its own).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { loadWingspline } from 'wingspline';
+
+const api = await loadWingspline();
+const REPS = ['independent-faces', 'vertex-face-tables', 'adjacency-lists', 'partial-adjacency-lists', 'edge-list', 'winged-edge'];
+
+test('neighbours-of-face: two quads sharing two edges are each other\'s only neighbour, once, in every representation', () => {
+  const mesh = api.buildMesh({
+    positions: [0, 0, 0, 2, 0, 0, 1, 1, 0, 0, 2, 0, 3, 3, 0],
+    faces: [[0, 1, 2, 3], [3, 2, 1, 4]],
+  });
+  try {
+    for (const f of [0, 1]) {
+      const answers = mesh.query('neighbours-of-face', f);
+      for (const key of REPS) assert.deepEqual(Array.from(answers[key].answer), [1 - f], `${key} F${f + 1}`);
+      assert.deepEqual(Array.from(mesh.faceNeighbours(f)), [1 - f]);
+    }
+  } finally {
+    mesh.dispose();
+  }
+});
+
+test('planes(): cross product from the face\'s own first three corners, reported, whatever the stored face edge', () => {
+  // Non-planar quad P1 (0,0,0) P2 (1,0,0) P3 (1,1,1) P4 (0,1,0): P1P2 x P1P3 = (0, -1, 1), D = 0.
+  const input = { positions: [0, 0, 0, 1, 0, 0, 1, 1, 1, 0, 1, 0], faces: [[0, 1, 2, 3]] };
+  const probe = api.buildMesh(input);
+  const edges = probe.wingedEdge().edges;
+  probe.dispose();
+  for (let side = 0; side < 4; side += 1) {
+    const [a, b] = [side, (side + 1) % 4];
+    const e = edges.findIndex((r) => (r.start === a && r.end === b) || (r.start === b && r.end === a));
+    const mesh = api.buildMesh({ ...input, faceEdges: [e] });
+    try {
+      const [plane] = mesh.planes();
+      assert.deepEqual(plane.cross.map((x) => x + 0), [0, -1, 1, 0], `stored side ${side}`);
+      assert.deepEqual(plane.crossCorners, [0, 1, 2]);
+    } finally {
+      mesh.dispose();
+    }
+  }
+});
+
+test('a UTF-8 byte-order mark and CRLF line ends are read (OFF and OBJ)', () => {
+  const off = api.parseMesh('\uFEFFOFF\r\n3 1 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n', { format: 'off' });
+  assert.deepEqual(Array.from(off.positions), [0, 0, 0, 1, 0, 0, 0, 1, 0]);
+  assert.deepEqual(off.faces, [[0, 1, 2]]);
+  const obj = api.parseMesh('\uFEFFv 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n', { format: 'obj' });
+  assert.deepEqual(obj.faces, [[0, 1, 2]]);
+});
+
+test('api.meshLimits: the core\'s one set of mesh limits', () => {
+  assert.deepEqual({ ...api.meshLimits }, { maxCoordinate: 1e9, maxFaceCorners: 1000, maxVertices: 200000, maxFaces: 200000 });
+  assert.ok(Object.isFrozen(api.meshLimits));
+});
+
+test('the page\'s limits (web/js/app/limits.js, read by every schema before the core loads) are the core\'s', async () => {
+  const limits = await import('../../../web/js/app/limits.js');
+  assert.deepEqual({
+    maxCoordinate: limits.COORDINATE_BOUND, maxFaceCorners: limits.MAX_FACE_CORNERS,
+    maxVertices: limits.MAX_MESH_VERTICES, maxFaces: limits.MAX_MESH_FACES,
+  }, { ...api.meshLimits });
+});
+
+test('setVertexPosition beyond the coordinate limit is refused, changes nothing, and normals stay finite', () => {
+  const mesh = api.buildMesh(api.generateMesh('tetrahedron'));
+  try {
+    const before = mesh.wingedEdgeArrays().positions;
+    for (const x of [1e300, -5e9, api.meshLimits.maxCoordinate * (1 + 2 ** -52) * 2]) {
+      assert.throws(() => mesh.setVertexPosition(1, [x, 0, 0]),
+        (err) => err.code === 'coordinate-out-of-range' && err.message.includes('v2'), `x = ${x}`);
+      assert.deepEqual(mesh.wingedEdgeArrays().positions, before);
+      const reps = mesh.representations();
+      const v2 = reps['vertex-face-tables'].vertices[1];
+      assert.deepEqual([v2.x, v2.y, v2.z], Array.from(before.subarray(3, 6)));
+    }
+    mesh.setVertexPosition(1, [api.meshLimits.maxCoordinate, 0, 0]);
+    assert.ok(Array.from(mesh.normals()).every(Number.isFinite));
+  } finally {
+    mesh.dispose();
+  }
+});
+
+test('import: a 1001-corner face or a coordinate beyond 1e9 is refused, naming the line', () => {
+  const polygon = (n, x0) => {
+    const lines = ['OFF', `${n} 1 0`];
+    for (let i = 0; i < n; i += 1) lines.push(`${i === 0 ? x0 : Math.cos((2 * Math.PI * i) / n)} ${Math.sin((2 * Math.PI * i) / n)} 0`);
+    lines.push(`${n} ${Array.from({ length: n }, (_, i) => i).join(' ')}`);
+    return lines.join('\n') + '\n';
+  };
+  assert.equal(api.parseMesh(polygon(1000, 1)).faces[0].length, 1000);
+  assert.throws(() => api.parseMesh(polygon(1001, 1)),
+    (err) => err.code === 'face-too-large' && err.line === 1004 && /1001/.test(err.message) && /1000/.test(err.message));
+  assert.throws(() => api.parseMesh(polygon(3, 5e9)),
+    (err) => err.code === 'coordinate-out-of-range' && err.line === 3 && err.message.startsWith('line 3:'));
+});
+
+test('the mesh lesson\'s state format keeps exactly what the core imports (api.meshLimits)', async () => {
+  const { meshLesson } = await import('../../../web/js/lessons/mesh/lesson.js');
+  const check = meshLesson.schema.imported;
+  const L = api.meshLimits;
+  const ok = (positions, faces) => { check({ name: 'm', positions, faces }, 'imported'); return true; };
+  const corners = (n) => Array.from({ length: n }, (_, i) => i);
+  const zeros = (n) => new Array(n).fill(0);
+  assert.ok(ok(zeros(3 * L.maxFaceCorners), [corners(L.maxFaceCorners)]));
+  assert.throws(() => ok(zeros(3 * (L.maxFaceCorners + 1)), [corners(L.maxFaceCorners + 1)]));
+  assert.ok(ok([L.maxCoordinate, 0, 0, 1, 0, 0, 0, 1, 0], [[0, 1, 2]]));
+  assert.throws(() => ok([L.maxCoordinate * 1.5, 0, 0, 1, 0, 0, 0, 1, 0], [[0, 1, 2]]));
+  assert.ok(ok(zeros(3 * L.maxVertices), [[0, 1, 2]]));
+  assert.throws(() => ok(zeros(3 * (L.maxVertices + 1)), [[0, 1, 2]]));
+  assert.throws(() => ok(zeros(9), new Array(L.maxFaces + 1).fill([0, 1, 2])));
+});
