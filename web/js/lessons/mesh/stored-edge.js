@@ -8,12 +8,15 @@ import { h } from '../../app/dom.js';
 import { vLabel, fLabel, eLabel } from './labels.js';
 
 // The operations of the state after choosing edge e for the element: an earlier choice
-// for the same row is superseded (the two commute with every other set-*-edge operation),
-// so choosing back and forth does not grow the list.
+// for the same row is superseded, so choosing back and forth does not grow the list. Only
+// a choice after the last edit of the mesh (issue 15) is: set-*-edge operations commute
+// with each other, not with an edit, whose result can depend on the edge a row stores.
 export function withStoredEdge(ops, kind, element, e) {
   const op = kind === 'vertex' ? { op: 'set-vertex-edge', v: element, e } : { op: 'set-face-edge', f: element, e };
   const sameRow = (o) => o.op === op.op && (kind === 'vertex' ? o.v === element : o.f === element);
-  return [...ops.filter((o) => !sameRow(o)), op];
+  let tail = ops.length;
+  while (tail > 0 && (ops[tail - 1].op === 'set-vertex-edge' || ops[tail - 1].op === 'set-face-edge')) tail -= 1;
+  return [...ops.slice(0, tail), ...ops.slice(tail).filter((o) => !sameRow(o)), op];
 }
 
 // A change record as one sentence: "vertex table, row v2: edge e6 → e3".
