@@ -203,3 +203,27 @@ test('on a touch screen: tap F2 and poke it, collapse e7 (its rows stay as struc
   await screenshot(page, 'mesh-edit-touch');
   await page.context().close();
 });
+
+test('a link whose edit the core refuses says so, naming the operation, and the saved work stays', async () => {
+  const page = await openLesson();
+  // Saved work: e3 split.
+  await pickEdgeWithPointer(page, 2);
+  await page.click('button[data-op="split-edge"]');
+  await page.waitForFunction(() => document.querySelectorAll('#we-edge-table tbody tr[data-row]').length === 8);
+  await page.evaluate(() => window.wingspline.flush());
+  // A link that flips e1, a boundary edge (written the way the page writes links).
+  const link = await page.evaluate(async () => {
+    const { encodeState } = await import('./js/app/share-link.js');
+    const { meshLesson } = await import('./js/lessons/mesh/lesson.js');
+    const state = { ...window.wingspline.state, ops: [{ op: 'flip-edge', e: 0 }] };
+    return `${location.origin}${location.pathname}#s=${await encodeState(meshLesson, state)}`;
+  });
+  const other = await page.context().newPage();
+  other.problems = [];
+  await other.goto(link);
+  await other.waitForSelector('body[data-ready=true]', { timeout: 15000 });
+  await other.waitForFunction(() => /flip-edge/.test(window.wingspline.message()));
+  assert.match(await other.evaluate(() => window.wingspline.message()), /e1 is on the boundary/);
+  // The page shows the saved work (the split mesh), not a half-applied link.
+  assert.equal(await other.$$eval('#we-edge-table tbody tr[data-row]', (r) => r.length), 8);
+});
