@@ -84,6 +84,8 @@ test('a student splits e3 with the pointer, steps through the assignments, undoe
   await page.click('#edit-restart');
   await page.waitForFunction(() => document.querySelector('#edit-step')?.textContent.startsWith('0 of'));
   const before = rowOf(await tableCells(page, 'we-edge-table'), 'e3');
+  // The canvas too: before the first assignment the new edge e8 is not drawn yet.
+  assert.equal(await page.evaluate(() => window.wingspline.model.edgeGap?.[7]), 1);
   assert.deepEqual(before, ['e3', 'v2', 'v3', 'F1', 'F2', 'e2', 'e5', 'e1', 'e4']);
   const total = Number((await page.textContent('#edit-step')).split(' of ')[1]);
   assert.ok(total >= 10, `a split writes at least the new edge's 8 fields and e3's end: ${total}`);
@@ -101,6 +103,7 @@ test('a student splits e3 with the pointer, steps through the assignments, undoe
   await page.click('#edit-end');
   await page.waitForFunction((n) => document.querySelector('#edit-step')?.textContent === `${n} of ${n}`, total);
   assert.deepEqual(rowOf(await tableCells(page, 'we-edge-table'), 'e3'), SPLIT_E3.e3);
+  assert.equal(await page.evaluate(() => window.wingspline.model.edgeGap?.[7] ?? 0), 0, 'e8 drawn once the edit is done');
 
   // Undo (Ctrl+Z) takes the edit back; redo brings it again.
   await page.focus('body');

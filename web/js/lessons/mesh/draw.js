@@ -70,7 +70,7 @@ function centroid(face, P) {
 // The part of an edge that is drawn: shortened at both ends so the arrow head stays
 // visible next to the vertex disc.
 function edgeEnds(model, P, e, zoom, insetPx = 11) {
-  const s = model.we.edges[8 * e]; const t = model.we.edges[8 * e + 1];
+  const s = model.weShown.edges[8 * e]; const t = model.weShown.edges[8 * e + 1];
   const ax = P[3 * s]; const ay = P[3 * s + 1]; const bx = P[3 * t]; const by = P[3 * t + 1];
   const len = Math.hypot(bx - ax, by - ay);
   const k = len > 0 ? Math.min(0.3, insetPx / zoom / len) : 0;
@@ -89,7 +89,7 @@ function frontFacing(model, P) {
 }
 
 function edgeSeen(model, front, e) {
-  const left = model.we.edges[8 * e + 2]; const right = model.we.edges[8 * e + 3];
+  const left = model.weShown.edges[8 * e + 2]; const right = model.weShown.edges[8 * e + 3];
   return left < 0 || right < 0 || front[left] || front[right];
 }
 
@@ -136,12 +136,12 @@ function drawBaseBatched(painter, model, colors) {
     });
     if (offsets.length > 1) painter.polygons(xy, offsets, style);
   }
-  const E = model.we.edges.length / 8;
+  const E = model.weShown.edges.length / 8;
   const edgeStyle = { stroke: colors.ink, width: 0.8, alpha: 0.7 };
   let segments = [];
   for (let e = 0; e < E; e += 1) {
     if (model.edgeGap?.[e] || (model.mode3d && !edgeSeen(model, front, e))) continue;
-    const s = model.we.edges[8 * e]; const t = model.we.edges[8 * e + 1];
+    const s = model.weShown.edges[8 * e]; const t = model.weShown.edges[8 * e + 1];
     segments.push(P[3 * s], P[3 * s + 1], P[3 * t], P[3 * t + 1]);
     if (segments.length >= 4 * BATCH) {
       painter.segments(segments, edgeStyle);
@@ -155,7 +155,7 @@ function drawBase(painter, model, state, colors) {
   const P = model.projected;
   const zoom = state.view.zoom;
   const labels = model.faces.length <= LABEL_LIMIT;
-  if (!labels && model.we.edges.length / 8 > LABEL_LIMIT) {
+  if (!labels && model.weShown.edges.length / 8 > LABEL_LIMIT) {
     drawBaseBatched(painter, model, colors);
     drawVertices(painter, model, colors); // a grid of 450 faces has only 256 vertices: labelled
     return;
@@ -165,11 +165,11 @@ function drawBase(painter, model, state, colors) {
   for (const f of faceOrder(model, P)) {
     painter.polygon(faceXY(model.faces[f], P), { fill: faceFill, alpha: front[f] ? 0.16 : 0.06, stroke: undefined });
   }
-  const E = model.we.edges.length / 8;
+  const E = model.weShown.edges.length / 8;
   const arrows = E <= LABEL_LIMIT;
   for (let e = 0; e < E; e += 1) {
     if (model.edgeGap?.[e] || (!arrows && model.mode3d && !edgeSeen(model, front, e))) continue;
-    const [ax, ay, bx, by] = arrows ? edgeEnds(model, P, e, zoom) : [P[3 * model.we.edges[8 * e]], P[3 * model.we.edges[8 * e] + 1], P[3 * model.we.edges[8 * e + 1]], P[3 * model.we.edges[8 * e + 1] + 1]];
+    const [ax, ay, bx, by] = arrows ? edgeEnds(model, P, e, zoom) : [P[3 * model.weShown.edges[8 * e]], P[3 * model.weShown.edges[8 * e] + 1], P[3 * model.weShown.edges[8 * e + 1]], P[3 * model.weShown.edges[8 * e + 1] + 1]];
     if (arrows) painter.arrow(ax, ay, bx, by, { stroke: colors.ink, width: 1.6 });
     else painter.line(ax, ay, bx, by, { stroke: colors.ink, width: 0.8, alpha: 0.7 });
   }
@@ -183,7 +183,7 @@ function drawBase(painter, model, state, colors) {
   if (arrows) {
     for (let e = 0; e < E; e += 1) {
       if (model.edgeGap?.[e]) continue;
-      const s = model.we.edges[8 * e]; const t = model.we.edges[8 * e + 1];
+      const s = model.weShown.edges[8 * e]; const t = model.weShown.edges[8 * e + 1];
       const mx = (P[3 * s] + P[3 * t]) / 2; const my = (P[3 * s + 1] + P[3 * t + 1]) / 2;
       painter.text(mx, my, eLabel(e), { fill: colors.ink, font: 13, weight: 600, halo: colors.background });
     }
@@ -212,14 +212,14 @@ const SLOW_BASE_MS = 30;     // a base picture slower than this is not redrawn w
 const SETTLE_MS = 200;       // ... but once the view has been still this long
 
 function drawBaseCached(baseCache, painter, model, state, ctx) {
-  const E = model.we.edges.length / 8;
+  const E = model.weShown.edges.length / 8;
   if (!(painter instanceof CanvasPainter) || E < CACHE_EDGES) {
     drawBase(painter, model, state, ctx.colors);
     return;
   }
   const { width, height, dpr } = ctx.stage.size;
   const v = state.view;
-  const sceneKey = [model.topology, model.version, state.mode3d, state.rotation.yaw, state.rotation.pitch,
+  const sceneKey = [model.topology, model.version, model.editStep, state.mode3d, state.rotation.yaw, state.rotation.pitch,
     width, height, dpr, ctx.colors.background, ctx.colors.ink, painter.scale].join('|');
   const key = `${sceneKey}|${v.cx}|${v.cy}|${v.zoom}`;
   if (baseCache.key !== key && baseCache.sceneKey === sceneKey && baseCache.ms > SLOW_BASE_MS) {
@@ -250,12 +250,12 @@ function drawBaseCached(baseCache, painter, model, state, ctx) {
 
 function highlightEdge(painter, model, e, style) {
   const P = model.projected;
-  const s = model.we.edges[8 * e]; const t = model.we.edges[8 * e + 1];
+  const s = model.weShown.edges[8 * e]; const t = model.weShown.edges[8 * e + 1];
   painter.line(P[3 * s], P[3 * s + 1], P[3 * t], P[3 * t + 1], style);
 }
 
 function drawElement(painter, model, element, colors, strong) {
-  if (!element) return;
+  if (!element || (element.kind === 'edge' && model.edgeGap?.[element.index])) return;
   const P = model.projected;
   const colour = colors.series[2];
   if (element.kind === 'vertex') painter.circle(P[3 * element.index], P[3 * element.index + 1], strong ? 11 : 9, { stroke: colour, width: 3 });
@@ -283,10 +283,10 @@ function drawWalk(painter, model, state, colors) {
     // Found edges keep their S -> E arrow and their label on top of the highlight.
     painter.arrow(...edgeEnds(model, P, e, zoom), { stroke: found, width: 4.5 });
     if (labelled) {
-      const s0 = model.we.edges[8 * e]; const t0 = model.we.edges[8 * e + 1];
+      const s0 = model.weShown.edges[8 * e]; const t0 = model.weShown.edges[8 * e + 1];
       painter.text((P[3 * s0] + P[3 * t0]) / 2, (P[3 * s0 + 1] + P[3 * t0 + 1]) / 2, eLabel(e), { fill: colors.ink, font: 13, weight: 700, halo: colors.background });
     }
-    const s = model.we.edges[8 * e]; const t = model.we.edges[8 * e + 1];
+    const s = model.weShown.edges[8 * e]; const t = model.weShown.edges[8 * e + 1];
     const x = P[3 * s] + (P[3 * t] - P[3 * s]) * 0.7; const y = P[3 * s + 1] + (P[3 * t + 1] - P[3 * s + 1]) * 0.7;
     painter.circle(x, y, 10, { fill: found, stroke: colors.background, width: 1.5 });
     painter.text(x, y, String(k + 1), { fill: colors.background, font: 12, weight: 700 });
@@ -300,19 +300,21 @@ export function drawMesh(baseCache, selection, painter, model, state, ctx) {
   drawWalk(painter, model, state, ctx.colors);
   drawElement(painter, model, selection.hover, ctx.colors, false);
   drawElement(painter, model, selection.pick, ctx.colors, true);
+  // The edit player: the row the current assignment writes, on the canvas too.
+  if (model.editRow) drawElement(painter, model, model.editRow, ctx.colors, true);
 }
 
 // The element under a canvas point (world coordinates of the view plane): an edge within
 // a few pixels, else the front-most face containing the point.
 export function pickElement(model, x, y, zoom) {
   const P = model.projected;
-  const E = model.we.edges.length / 8;
+  const E = model.weShown.edges.length / 8;
   const tolerance = 6 / zoom;
   let best = null;
   let bestD = tolerance;
   for (let e = 0; e < E; e += 1) {
     if (model.edgeGap?.[e]) continue;
-    const s = model.we.edges[8 * e]; const t = model.we.edges[8 * e + 1];
+    const s = model.weShown.edges[8 * e]; const t = model.weShown.edges[8 * e + 1];
     const ax = P[3 * s]; const ay = P[3 * s + 1]; const dx = P[3 * t] - ax; const dy = P[3 * t + 1] - ay;
     const len2 = dx * dx + dy * dy;
     const u = len2 > 0 ? Math.max(0, Math.min(1, ((x - ax) * dx + (y - ay) * dy) / len2)) : 0;

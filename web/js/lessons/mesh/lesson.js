@@ -157,7 +157,11 @@ function compute(view, state, ctx) {
   const walkElement = walkKind === 'vertex' ? Math.min(state.vertex, V - 1) : Math.min(state.face, F - 1);
   // 1 where a removed element left its number (drawing and picking skip it); null: no gaps.
   const vertexGap = gaps ? marks(V, derived.gaps.vertices) : null;
-  const edgeGap = gaps ? marks(E, derived.gaps.edges) : null;
+  // While the edit player is inside an edit the picture shows the tables as they stood: an
+  // edge whose S or E is not written yet is not drawn (like a gap).
+  const weShown = record && editStep < editSteps ? arraysAtStep(we, record, editStep) : we;
+  const edgeGap = gaps || weShown !== we ? unwritten(weShown, E, gaps ? marks(E, derived.gaps.edges) : new Uint8Array(E)) : null;
+  const current = weShown !== we && editStep > 0 ? visibleSteps(record)[editStep - 1] : null;
   const removed = walkKind === 'vertex' ? vertexGap?.[walkElement] : faces[walkElement]?.length === 0;
   const frames = walkElement >= 0 && !removed ? stepsOf(derived, entry, walkKind, walkElement) : [];
   const frame = frames[Math.min(state.step, frames.length - 1)] ?? null;
@@ -189,7 +193,8 @@ function compute(view, state, ctx) {
     faces,
     we,
     // The winged-edge tables as the edit player shows them (after editStep assignments).
-    weShown: record && editStep < editSteps ? arraysAtStep(we, record, editStep) : we,
+    weShown,
+    editRow: current ? { kind: current.table, index: current.row } : null,
     lastOperation: record,
     lastEdit: lastEditOf(state.ops),
     editStep,
@@ -209,6 +214,11 @@ function compute(view, state, ctx) {
     lastChange: derived.lastChange,
     derived,
   };
+}
+
+function unwritten(weShown, E, out) {
+  for (let e = 0; e < E; e += 1) if (weShown.edges[8 * e] < 0 || weShown.edges[8 * e + 1] < 0) out[e] = 1;
+  return out;
 }
 
 function marks(n, list) {
