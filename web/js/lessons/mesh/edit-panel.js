@@ -74,7 +74,8 @@ export function createEditPanel(ctx, selection, { pick }) {
     const s = state().editStep;
     return s < 0 || s > n ? n : s;
   };
-  const tool = (label, action, title, id) => h('button', { type: 'button', class: 'tool', title, 'aria-label': title, onclick: action, id }, label);
+  // The visible text is the accessible name (axe: label-content-name-mismatch); the title adds the why.
+  const tool = (label, action, title, id) => h('button', { type: 'button', class: 'tool', title, onclick: action, id }, label);
   const playButton = tool('▶ Play', () => player.toggle(), 'Play the last edit assignment by assignment', 'edit-play');
   player.onChange(() => { playButton.textContent = player.playing ? '⏸ Pause' : '▶ Play'; playButton.setAttribute('aria-pressed', String(player.playing)); });
 
