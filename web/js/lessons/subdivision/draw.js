@@ -8,6 +8,7 @@ import { PHASES, label } from './source.js';
 
 const SMALL_FACES = 4000;   // up to this many faces: one polygon each, far to near, with edges
 const SHADES = 24;          // a bigger mesh: faces turned away skipped, the rest batched by shade
+const BATCH = 256;          // ... at most this many faces per path
 const POINT_LIMIT = 20000;  // more new points than this are not drawn one by one
 const LABEL_VERTICES = 60;  // vertex labels up to this many vertices
 const PICK_PX = 12;         // a click this close to a new point picks it
@@ -67,20 +68,25 @@ function drawFaces(painter, model, colors) {
     for (const f of order) painter.polygon(faceXY(model, P, f), { fill: shadeColour(faceShade(model, f)), stroke: colors.ink, width, alpha: 1 });
     return;
   }
+  // One path per BATCH faces of a shade: the rasteriser's cost grows faster than linearly
+  // with the subpaths of one path (the mesh lesson measured it), so long paths are cut.
   const buckets = Array.from({ length: SHADES }, () => ({ xy: [], offsets: [0] }));
+  const flush = (i) => {
+    const b = buckets[i];
+    if (b.offsets.length > 1) painter.polygons(b.xy, b.offsets, { fill: shadeColour((i + 0.5) / SHADES), stroke: colors.ink, width: 0.3, alpha: 1 });
+    buckets[i] = { xy: [], offsets: [0] };
+  };
   for (let f = 0; f < F; f += 1) {
     if (!facesViewer(model, P, f)) continue;
-    const bucket = buckets[Math.min(SHADES - 1, Math.floor(faceShade(model, f) * SHADES))];
+    const i = Math.min(SHADES - 1, Math.floor(faceShade(model, f) * SHADES));
+    const bucket = buckets[i];
     for (let k = model.faceOffsets[f]; k < model.faceOffsets[f + 1]; k += 1) bucket.xy.push(P[3 * model.faceVertices[k]], P[3 * model.faceVertices[k] + 1]);
     bucket.offsets.push(bucket.xy.length / 2);
+    if (bucket.offsets.length > BATCH) flush(i);
   }
-  buckets.forEach((b, i) => {
-    if (b.offsets.length > 1) painter.polygons(b.xy, b.offsets, { fill: shadeColour((i + 0.5) / SHADES), stroke: colors.ink, width: 0.3, alpha: 1 });
-  });
+  for (let i = 0; i < SHADES; i += 1) flush(i);
 }
 
-// During the phases, every edge of the old mesh, hidden ones too, so the masks of points
-// on the far side are read against their edges.
 function drawOldEdges(painter, model, colors) {
   if (!model.newProjected) return;
   const P = model.oldProjected ?? model.projected;

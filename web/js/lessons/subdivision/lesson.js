@@ -163,10 +163,7 @@ function modelOf(view, chain, state, api) {
   const steps = stepsOf(chain, level, scheme, api);
   // Loop's refusal of a face that is not a triangle holds for every level and phase.
   if (steps.error?.code === 'not-a-triangle-mesh') throw steps.error;
-  if (state.phase > 0 && steps.error) {
-    steps.error.message = steps.error.message.startsWith('The step') ? steps.error.message : `The step to level ${level + 1} cannot be shown: ${steps.error.message}`;
-    throw steps.error;
-  }
+  if (state.phase > 0 && steps.error) throw Object.assign(new Error(`Level ${level + 1} is refused: ${steps.error.message}`), { code: steps.error.code });
   const old = derivedOf(chain, level);
   const reconnected = state.phase >= PHASES.length;
   if (reconnected) levelOf(chain, level + 1, scheme, api);

@@ -275,7 +275,7 @@ export function setupPanels(ctx, view) {
       countCells[`${name}-now`].textContent = now[name].toLocaleString('en');
       countCells[`${name}-next`].textContent = nc ? nc[name].toLocaleString('en') : '—';
     }
-    if (!model.steps) { levelNote.hidden = false; levelNote.textContent = model.stepsRefusal; }
+    if (!model.steps) { levelNote.hidden = false; levelNote.textContent = `Level ${model.level + 1} is refused: ${model.stepsRefusal}`; }
     updateMask(model);
     const ex = model.extraordinary;
     const regular = model.scheme === 'loop' ? 6 : 4;
