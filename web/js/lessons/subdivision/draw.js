@@ -11,6 +11,7 @@ const SHADES = 24;          // a bigger mesh: faces turned away skipped, the res
 const BATCH = 256;          // ... at most this many faces per path
 const POINT_LIMIT = 20000;  // more new points than this are not drawn one by one
 const LABEL_VERTICES = 60;  // vertex labels up to this many vertices
+const CONTROL_LIMIT = 400; // control vertices drawn (and dragged) up to this many
 const PICK_PX = 12;         // a click this close to a new point picks it
 // The light, in view coordinates (x right, y up, z towards the viewer), unit length.
 const LIGHT = (() => { const l = [-0.35, 0.45, 0.82]; const n = Math.hypot(...l); return l.map((x) => x / n); })();
@@ -145,6 +146,27 @@ function drawExtraordinary(painter, model, colors) {
   }
 }
 
+// The control mesh (level 0) over finer levels, and its vertices, the handles.
+function drawControl(painter, model, ctx) {
+  const colors = ctx.colors;
+  const { edges } = model.control;
+  const P = model.control.projected ?? model.projected;
+  const V = P.length / 3;
+  if (model.control.projected && edges.length / 8 <= 4 * SMALL_FACES) {
+    const xy = [];
+    for (let e = 0; 8 * e < edges.length; e += 1) xy.push(P[3 * edges[8 * e]], P[3 * edges[8 * e] + 1], P[3 * edges[8 * e + 1]], P[3 * edges[8 * e + 1] + 1]);
+    painter.segments(xy, { stroke: colors.accent, width: 1.2, alpha: 0.8 });
+  }
+  if (V > CONTROL_LIMIT) return;
+  for (let v = 0; v < V; v += 1) {
+    const id = `v${v}`;
+    const r = ctx.ui.selected === id ? 7 : ctx.ui.hover === id ? 6 : 4;
+    painter.circle(P[3 * v], P[3 * v + 1], r, { fill: colors.accent, stroke: colors.background, width: 1.5 });
+  }
+  const selected = ctx.ui.selected?.startsWith('v') ? Number(ctx.ui.selected.slice(1)) : -1;
+  if (selected >= 0 && selected < V) painter.circle(P[3 * selected], P[3 * selected + 1], 11, { stroke: colors.accent, width: 2.5 });
+}
+
 export function drawScene(painter, model, state, ctx) {
   if (!model) return;
   const colors = ctx.colors;
@@ -152,6 +174,7 @@ export function drawScene(painter, model, state, ctx) {
   drawOldEdges(painter, model, colors);
   drawExtraordinary(painter, model, colors);
   drawVertexLabels(painter, model.oldProjected ?? model.projected, colors);
+  drawControl(painter, model, ctx);
   drawNewPoints(painter, model, colors);
   drawMask(painter, model, colors);
 }

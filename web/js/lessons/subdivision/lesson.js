@@ -8,8 +8,8 @@
 // subdivideCurve, sampleCurve); this file keeps the state and arranges what the core returned.
 import { number, integer, boolean, oneOf, text, list, object, nullable, viewSchema } from '../../app/schema.js';
 import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
-import { viewRotation, projectAll } from '../../ui/mesh-view.js';
-import { SOURCES, IMPORTED_FIELD, PHASES, MAX_LEVEL, sourceKey, meshInput } from './source.js';
+import { viewRotation, projectAll, unprojectDelta } from '../../ui/mesh-view.js';
+import { SOURCES, IMPORTED_FIELD, PHASES, MAX_LEVEL, sourceKey, meshInput, hashNumbers, label } from './source.js';
 import { setupPanels } from './panels.js';
 import { drawScene, drawCurvePlot, pointAt } from './draw.js';
 
@@ -27,6 +27,8 @@ const schema = {
     positions: list(number(), { min: 9, max: 3 * MAX_MESH_VERTICES }),
     faces: list(list(integer({ min: 0, max: MAX_MESH_VERTICES - 1 }), { min: 3, max: MAX_FACE_CORNERS }), { min: 1, max: MAX_MESH_FACES }),
   })),
+  // Control vertices (level 0) the person moved: where they are now.
+  moved: list(object({ v: integer({ min: 0, max: 10000000 }), p: list(number(), { min: 3, max: 3 }) }), { max: 100000 }),
   scheme: oneOf('loop', 'catmull-clark'),
   level: integer({ min: 0, max: MAX_LEVEL }),
   phase: integer({ min: 0, max: PHASES.length }),
@@ -45,6 +47,7 @@ function defaultState() {
     sphere: { slices: 12, stacks: 6 },
     grid: { nx: 4, ny: 3 },
     imported: null,
+    moved: [],
     scheme: 'loop',
     level: 0,
     phase: 0,
@@ -139,11 +142,15 @@ function shadingOf(d, shading) {
 
 function compute(view, state, ctx) {
   const api = ctx.api;
-  const key = `${sourceKey(state, view.importedKeys)}|${state.scheme}`;
+  const base = sourceKey(state, view.importedKeys);
+  const key = `${base}|${hashNumbers(state.moved.flatMap((m) => [m.v, ...m.p]))}|${state.scheme}`;
   const fresh = view.chain?.key !== key;
   const chain = fresh ? emptyChain(key) : view.chain;
   try {
     if (fresh) chain.levels.push(api.buildMesh(meshInput(state, api)));
+    // The view turns about the centre of the mesh as first built (moving a vertex does not
+    // move the view).
+    if (view.centre?.key !== base) view.centre = { key: base, value: chain.levels[0].boundingBox().centre };
     const model = modelOf(view, chain, state, api);
     if (fresh) {
       if (view.chain) disposeChain(view.chain);
@@ -171,9 +178,8 @@ function modelOf(view, chain, state, api) {
   if (state.limit && !shown.limit) shown.limit = api.limitPositions(shown.mesh, { scheme });
   const positions = state.limit ? shown.limit : shown.we.positions;
   const R = viewRotation({ mode3d: true, rotation: state.rotation });
-  view.centre ??= new Map();
-  if (!view.centre.has(chain.key)) view.centre.set(chain.key, chain.levels[0].boundingBox().centre);
-  const centre = view.centre.get(chain.key);
+  const centre = view.centre.value;
+  const control = derivedOf(chain, 0);
   const s = steps.value ?? null;
   const phases = s ? s.phases : [];
   const shownPhases = phases.slice(0, state.phase);
@@ -195,6 +201,8 @@ function modelOf(view, chain, state, api) {
     oldProjected: reconnected ? null : (state.limit ? projectAll(old.we.positions, R, centre) : null),
     newProjected: s && !reconnected && pointPhases.length ? projectAll(s.positions, R, centre) : null,
     rotation: R,
+    // The control mesh (level 0): its vertices are the handles.
+    control: { positions: control.we.positions, edges: control.we.edges, projected: level === 0 && !reconnected && !state.limit ? null : projectAll(control.we.positions, R, centre) },
     shading: shadingOf(shown, state.shading),
     limit: state.limit,
     steps: s,
@@ -239,6 +247,30 @@ function curveOf(api, state, steps) {
   return { control: points, refined, limit: api.sampleCurve(spline, CURVE_SAMPLES).points, steps, degree };
 }
 
+// The control vertices are the handles (up to HANDLE_LIMIT of them): drag one, or select it
+// with ] and move it with the arrows, and every level follows.
+const HANDLE_LIMIT = 400;
+const controlProjected = (model) => model.control.projected ?? model.projected;
+
+function handles(view, model) {
+  if (!model || model.control.positions.length / 3 > HANDLE_LIMIT) return [];
+  const P = controlProjected(model);
+  const out = [];
+  for (let v = 0; 3 * v < P.length; v += 1) out.push({ id: `v${v}`, x: P[3 * v], y: P[3 * v + 1], label: `control vertex ${label('vertex', v)}` });
+  return out;
+}
+
+// A control vertex dragged in the view plane moves by R^T (dx, dy, 0) in the world.
+function moveHandle(view, state, id, x, y, model) {
+  const v = Number(id.slice(1));
+  const P = controlProjected(model);
+  if (!Number.isInteger(v) || 3 * v >= P.length) return null;
+  const [dx, dy, dz] = unprojectDelta(model.rotation, x - P[3 * v], y - P[3 * v + 1]);
+  const c = model.control.positions;
+  const p = [c[3 * v] + dx, c[3 * v + 1] + dy, c[3 * v + 2] + dz];
+  return { ...state, moved: state.moved.filter((m) => m.v !== v).concat([{ v, p }]) };
+}
+
 function fitView(view, model, stage) {
   if (!model) return defaultState().view;
   const P = model.projected;
@@ -268,7 +300,7 @@ function importer(format) {
     const mesh = { positions: Array.from(parsed.positions), faces: parsed.faces.map((f) => Array.from(f)) };
     const errors = ctx.api.validateMesh(mesh).problems.filter((p) => p.severity === 'error');
     if (errors.length) throw Object.assign(new Error(`${name}: ${errors[0].message}`), { code: errors[0].code });
-    return { ...state, meshKind: 'file', imported: { name: name.slice(0, 120), ...mesh }, level: 0, phase: 0, focus: -1 };
+    return { ...state, meshKind: 'file', imported: { name: name.slice(0, 120), ...mesh }, moved: [], level: 0, phase: 0, focus: -1 };
   };
 }
 
@@ -300,6 +332,8 @@ export const subdivisionLesson = {
   afterFrame: (view, model, state, ctx) => drawCurvePlot(view.panels.plot, model, ctx),
   describe,
   fitView,
+  handles,
+  moveHandle,
   click(view, x, y, ctx, event) {
     const model = ctx.model;
     const i = model ? pointAt(model, x, y, ctx.state.view.zoom) : -1;

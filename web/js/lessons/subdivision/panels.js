@@ -56,12 +56,12 @@ export function setupPanels(ctx, view) {
       button('−', () => levelTo(state().level - 1), 'Level down (< or ↓)', 'level-down'), levelLabel,
       button('+', () => levelTo(state().level + 1), 'Level up (> or ↑)', 'level-up')),
     h('span', { class: 'phase-group', role: 'group', 'aria-label': 'Phases of one step' },
-      button('◀ Back', () => prevPhase(), 'Previous phase (← or PageUp)', 'phase-prev'),
+      button('◀ Back', () => prevPhase(), 'Back: the previous phase (← or PageUp)', 'phase-prev'),
       button('Next phase ▶', () => nextPhase(), 'Next phase (→, n or PageDown)', 'phase-next'), phaseLabel),
     h('label', {}, limitBox, ' limit positions (l)'),
     labelled('Shading', shadingSelect),
     h('button', { type: 'button', class: 'tool', onclick: () => ctx.fitView() }, 'Fit'),
-    h('span', { class: 'hint advanced' }, 'Drag the drawing to turn it (arrow keys on the focused canvas); click a new point to see its mask; wheel zooms.'),
+    h('span', { class: 'hint advanced' }, 'Drag a control vertex to reshape every level; drag elsewhere to turn the mesh (arrow keys on the focused canvas); click a new point to see its mask; wheel zooms.'),
   );
 
   const commit = (patch, options) => ctx.commit({ ...state(), ...patch }, options);
@@ -69,7 +69,7 @@ export function setupPanels(ctx, view) {
   // A new mesh or scheme starts at level 0. Loop refuses a mesh with faces that are not
   // triangles (the core names the face): the message offers Catmull-Clark.
   function choose(patch) {
-    const next = { ...state(), ...patch, level: 0, phase: 0, focus: -1 };
+    const next = { ...state(), ...patch, moved: patch.scheme ? state().moved : [], level: 0, phase: 0, focus: -1 };
     if (ctx.commit(next)) {
       levelNote.hidden = true;
       queueMicrotask(() => ctx.fitView());

@@ -41,15 +41,32 @@ export function sourceKey(state, memo) {
 }
 
 function fingerprint({ positions, faces }) {
+  return hashNumbers([...positions, ...faces.flatMap((f) => [f.length, ...f])]);
+}
+
+// A short key of a list of numbers (FNV-1a over the numbers at 1e-6): the moved control
+// vertices' part of a chain's key.
+export function hashNumbers(numbers) {
   let h = 2166136261;
-  const mix = (x) => { h = Math.imul(h ^ (Math.round(x * 1e6) | 0), 16777619); };
-  positions.forEach(mix);
-  for (const f of faces) { mix(f.length); f.forEach(mix); }
+  for (const x of numbers) h = Math.imul(h ^ (Math.round(x * 1e6) | 0), 16777619);
   return (h >>> 0).toString(36);
 }
 
-// The indexed face set of a state, from the core (or the state's imported file).
+// The indexed face set of a state (the core's mesh or the imported file) with the control
+// vertices the person moved put where the state says (state.moved: [{v, p: [x, y, z]}]).
 export function meshInput(state, api) {
+  const input = baseInput(state, api);
+  if (!state.moved.length) return input;
+  const positions = Float64Array.from(input.positions);
+  const count = positions.length / 3;
+  for (const { v, p } of state.moved) {
+    if (v >= count) throw Object.assign(new Error(`moved vertex ${label('vertex', v)} does not exist in this mesh (it has ${count} vertices)`), { code: 'invalid-element' });
+    positions.set(p, 3 * v);
+  }
+  return { ...input, positions };
+}
+
+function baseInput(state, api) {
   switch (state.meshKind) {
     case 'lecture': {
       const { positions, faces } = api.lectureExample();
