@@ -10,7 +10,7 @@ const SMALL_FACES = 4000;   // up to this many faces: one polygon each, far to n
 const SHADES = 24;          // a bigger mesh: faces turned away skipped, the rest batched by shade
 const BATCH = 256;          // ... at most this many faces per path
 const POINT_LIMIT = 20000;  // more new points than this are not drawn one by one
-const LABEL_VERTICES = 60;  // vertex labels up to this many vertices
+const LABEL_VERTICES = 12;  // vertex labels up to this many vertices (the mask's own are always named)
 const CONTROL_LIMIT = 400; // control vertices drawn (and dragged) up to this many
 const PICK_PX = 12;         // a click this close to a new point picks it
 // The light, in view coordinates (x right, y up, z towards the viewer), unit length.
@@ -130,6 +130,7 @@ function drawMask(painter, model, colors) {
     const vx = old[3 * v]; const vy = old[3 * v + 1];
     painter.line(x, y, vx, vy, { stroke: colour, width: 2, dash: [5, 4] });
     painter.circle(vx, vy, 6, { stroke: colour, width: 2.5 });
+    painter.text(vx, vy, label('vertex', v), { fill: colors.ink, font: 13, weight: 700, dx: 12, dy: -12, halo: colors.background });
     painter.text(vx + (x - vx) * 0.3, vy + (y - vy) * 0.3, formatWeight(s.masks.weights[k]), { fill: colour, font: 14, weight: 700, halo: colors.background });
   }
   painter.circle(x, y, 8, { stroke: colour, width: 3 });
@@ -139,7 +140,7 @@ function drawMask(painter, model, colors) {
 function drawExtraordinary(painter, model, colors) {
   const P = model.oldProjected ?? model.projected;
   const colour = colors.series[3];
-  const labelled = model.extraordinary.length <= 50;
+  const labelled = model.extraordinary.length <= LABEL_VERTICES;
   for (const { v, n } of model.extraordinary) {
     painter.circle(P[3 * v], P[3 * v + 1], 10, { stroke: colour, width: 2.5 });
     if (labelled) painter.text(P[3 * v], P[3 * v + 1], `n=${n}`, { fill: colour, font: 12, weight: 700, dx: -16, dy: 16, halo: colors.background });

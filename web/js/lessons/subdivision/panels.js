@@ -61,7 +61,7 @@ export function setupPanels(ctx, view) {
     h('label', {}, limitBox, ' limit positions (l)'),
     labelled('Shading', shadingSelect),
     h('button', { type: 'button', class: 'tool', onclick: () => ctx.fitView() }, 'Fit'),
-    h('span', { class: 'hint advanced' }, 'Drag a control vertex to reshape every level; drag elsewhere to turn the mesh (arrow keys on the focused canvas); click a new point to see its mask; wheel zooms.'),
+    h('span', { class: 'hint advanced' }, 'Drag a control vertex to reshape; drag elsewhere to turn (arrows on the canvas); click a new point for its mask.'),
   );
 
   const commit = (patch, options) => ctx.commit({ ...state(), ...patch }, options);
