@@ -149,3 +149,30 @@ test('the share link reproduces the level and the phase', async () => {
   assert.deepEqual(await counts(again, 'next'), [34, 96, 64]);
   assert.deepEqual(again.problems, []);
 });
+
+test('dragging a control vertex with a finger reshapes the level shown; undo puts it back', async () => {
+  const page = await env.openLesson(url(), { hasTouch: true });
+  await focusPanel(page);
+  await page.keyboard.press('>');
+  await page.waitForFunction(() => window.wingspline.state.level === 1);
+  const before = await page.evaluate(() => Array.from(window.wingspline.model.we.positions));
+  const v1 = (await page.evaluate(() => window.wingspline.handles())).find((x) => x.id === 'v0');
+  // A touch drag as pointer events (pointerType touch) from the handle 40 px to the right.
+  const cdp = await page.context().newCDPSession(page);
+  const touch = (type, x, y) => cdp.send('Input.dispatchTouchEvent', { type, touchPoints: type === 'touchEnd' ? [] : [{ x, y }] });
+  await touch('touchStart', v1.x, v1.y);
+  for (let k = 1; k <= 4; k += 1) await touch('touchMove', v1.x + 10 * k, v1.y);
+  await touch('touchEnd');
+  await page.waitForFunction(() => window.wingspline.state.moved.length === 1);
+  const state = await page.evaluate(() => window.wingspline.state);
+  assert.equal(state.moved[0].v, 0);
+  assert.equal(state.level, 1, 'the level stays');
+  // The level-1 mesh follows: old vertex v1 keeps its number in the result, and moved.
+  const after = await page.evaluate(() => Array.from(window.wingspline.model.we.positions));
+  assert.equal(after.length, before.length);
+  assert.notDeepEqual(after.slice(0, 3), before.slice(0, 3));
+  await page.click('[data-action=undo]');
+  await page.waitForFunction(() => window.wingspline.state.moved.length === 0);
+  assert.deepEqual(await page.evaluate(() => Array.from(window.wingspline.model.we.positions)), before);
+  assert.deepEqual(page.problems, []);
+});

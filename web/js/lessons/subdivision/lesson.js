@@ -212,7 +212,7 @@ function modelOf(view, chain, state, api) {
     pointPhases,
     focus,
     extraordinary: s && !reconnected ? extraordinaryOf(s, scheme) : [],
-    sourceKey: chain.key,
+    sourceKey: view.centre.key, // the mesh chosen (not its moved vertices nor the scheme)
     curve: curveOf(api, state, reconnected ? level + 1 : level),
   };
 }
