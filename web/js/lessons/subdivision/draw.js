@@ -138,7 +138,7 @@ function drawMask(painter, model, colors) {
 }
 
 function drawExtraordinary(painter, model, colors) {
-  const P = model.oldProjected ?? model.projected;
+  const P = model.projected; // where the mesh is drawn (its limit positions when asked)
   const colour = colors.series[3];
   const labelled = model.extraordinary.length <= LABEL_VERTICES;
   for (const { v, n } of model.extraordinary) {
