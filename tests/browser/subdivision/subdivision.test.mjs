@@ -7,6 +7,7 @@
 //   = 3/16 per neighbour, the vertex keeps 1 - 3 beta = 7/16;
 //   counts of one step: V' = V + E = 10, E' = 2E + 3F = 24, F' = 4F = 16 from V, E, F = 4, 6, 4.
 // The numbers themselves are tested in tests/native and tests/wasm; here the page must show them.
+import fs from 'node:fs';
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { useSiteAndBrowser, screenshot } from '../../helpers/browser.mjs';
@@ -176,3 +177,25 @@ test('dragging a control vertex with a finger reshapes the level shown; undo put
   assert.deepEqual(await page.evaluate(() => Array.from(window.wingspline.model.we.positions)), before);
   assert.deepEqual(page.problems, []);
 });
+
+test('the OFF export of a level reads back as that level\'s mesh', async () => {
+  const page = await env.openLesson(url());
+  await focusPanel(page);
+  await page.keyboard.press('>');
+  await page.waitForFunction(() => window.wingspline.state.level === 1);
+  await page.click('details.menu > summary');
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('[data-export="Mesh of this level (OFF)"]')]);
+  assert.equal(download.suggestedFilename(), 'subdivision-level1.off');
+  const off = fs.readFileSync(await download.path(), 'utf8');
+  // OFF's counts line: V F E; one Loop step of the tetrahedron by hand: 10 vertices, 16 faces.
+  const header = off.split('\n').map((line) => line.trim()).filter((line) => line && !line.startsWith('#'))[1].split(/\s+/).map(Number);
+  assert.deepEqual(header.slice(0, 2), [10, 16]);
+  // Imported again, it is level 0 of a new mesh with the same counts.
+  await page.setInputFiles('#import-file', { name: 'level1.off', mimeType: 'text/plain', buffer: Buffer.from(off) });
+  await page.waitForFunction(() => window.wingspline.state.meshKind === 'file');
+  const state = await page.evaluate(() => window.wingspline.state);
+  assert.equal(state.level, 0);
+  assert.deepEqual(await counts(page, 'level'), [10, 24, 16]);
+  assert.deepEqual(page.problems, []);
+});
+
