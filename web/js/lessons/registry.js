@@ -41,4 +41,12 @@ export const lessons = [
     summary: 'Bicubic Hermite and Bezier patches with their control nets and twist vectors.',
     ready: true,
   },
+  {
+    id: 'subdivision',
+    title: 'Subdivision',
+    page: 'subdivision.html',
+    lectures: '000, 003, 004',
+    summary: 'Loop and Catmull-Clark one phase at a time on the winged edge: every new point with its mask, levels 0 to 5, limit positions; beside it Chaikin and cubic subdivision of a polygon converging to its B-spline.',
+    ready: true,
+  },
 ];

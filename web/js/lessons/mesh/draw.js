@@ -9,43 +9,7 @@ import { vLabel, eLabel, fLabel } from './labels.js';
 export const LABEL_LIMIT = 400; // more elements than this: no labels (they would overlap)
 const CACHE_EDGES = 2000;        // from this size the still mesh is drawn once into a bitmap
 
-// Orthographic view: R = Rx(pitch) Ry(yaw); screen-plane (X, Y) = first two rows of R p,
-// depth = third row (towards the viewer). In 2D the rotation is the identity.
-export function viewRotation(state) {
-  if (!state.mode3d) return [1, 0, 0, 0, 1, 0, 0, 0, 1];
-  const { yaw, pitch } = state.rotation;
-  const cy = Math.cos(yaw); const sy = Math.sin(yaw);
-  const cp = Math.cos(pitch); const sp = Math.sin(pitch);
-  return [cy, 0, sy, sp * sy, cp, -sp * cy, -cp * sy, sp, cp * cy];
-}
-
-// The view turns about `centre` (the core's bounding-box centre, issue 13 item 11):
-// R (p - c) + c, so the mesh spins in place instead of swinging round the world origin and
-// leaving the canvas; in 2D (R = I) positions are shown as they are.
-export function projectAll(positions, R, centre = [0, 0, 0]) {
-  const n = positions.length / 3;
-  const out = new Float64Array(3 * n);
-  const [cx, cy, cz] = centre;
-  for (let v = 0; v < n; v += 1) {
-    const x = positions[3 * v] - cx; const y = positions[3 * v + 1] - cy; const z = positions[3 * v + 2] - cz;
-    out[3 * v] = R[0] * x + R[1] * y + R[2] * z + cx;
-    out[3 * v + 1] = R[3] * x + R[4] * y + R[5] * z + cy;
-    out[3 * v + 2] = R[6] * x + R[7] * y + R[8] * z + cz;
-  }
-  return out;
-}
-
-// Whether a normal n points away from the viewer: its component along the view's depth
-// axis (third row of R, towards the viewer) is negative. A CCW walk about such a normal
-// appears clockwise on screen.
-export function facesAway(R, n) {
-  return R[6] * n[0] + R[7] * n[1] + R[8] * n[2] < 0;
-}
-
-// A screen-plane displacement (dx, dy) back to world coordinates: R^T (dx, dy, 0).
-export function unprojectDelta(R, dx, dy) {
-  return [R[0] * dx + R[3] * dy, R[1] * dx + R[4] * dy, R[2] * dx + R[5] * dy];
-}
+// The view's rotation and projection (shared with the subdivision lesson): ui/mesh-view.js.
 
 function faceOrder(model, P) {
   const order = [];

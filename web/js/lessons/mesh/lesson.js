@@ -8,7 +8,8 @@ import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/l
 import { createMeshSource, cacheKeys, faceList, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
 import { arraysAtStep, visibleSteps } from './edit-playback.js';
 import { normaliseSteps, walkFrames } from './walk.js';
-import { drawMesh, createBaseCache, viewRotation, projectAll, unprojectDelta, facesAway, LABEL_LIMIT } from './draw.js';
+import { drawMesh, createBaseCache, LABEL_LIMIT } from './draw.js';
+import { viewRotation, projectAll, unprojectDelta, facesAway } from '../../ui/mesh-view.js';
 import { setupPanels } from './panels.js';
 import { meshExports } from './exports.js';
 import { vLabel, fLabel, eLabel } from './labels.js';

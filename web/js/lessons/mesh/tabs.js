@@ -4,7 +4,7 @@
 // are virtual (virtual-table.js): a 100,000-face mesh only builds the rows in view, and the
 // adjacency rows ask the core only for those rows.
 import { h } from '../../app/dom.js';
-import { createVirtualTable } from './virtual-table.js';
+import { createVirtualTable } from '../../ui/virtual-table.js';
 import { num } from './labels.js';
 import { createStoredEdgeControl } from './stored-edge.js';
 import { readTable, findDescriptor } from '../../core/tables.js';

@@ -3,7 +3,7 @@
 // spacer rows above and below so the scroll bar is true to the whole table. Cells are
 // built with dom.js (text nodes only). Highlights are kept by row index, so a row scrolled
 // into view later still shows them.
-import { h } from '../../app/dom.js';
+import { h } from '../app/dom.js';
 
 const FULL_ROWS = 120;
 const WINDOW_MARGIN = 12;

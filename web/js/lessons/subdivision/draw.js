@@ -1,0 +1,235 @@
+// Drawing the subdivision lesson: the mesh shown (shaded by the core's normals, far faces
+// first), the new points of the phases shown, the chosen point's mask as lines to the old
+// vertices it averages with their weights, the extraordinary vertices ringed; and the side
+// plot of the curve. Only the view's arithmetic happens here (projection was done in
+// compute; the shade of a face is a dot product of the core's normal with the light).
+import { formatWeight } from './format-weight.js';
+import { PHASES, label } from './source.js';
+
+const SMALL_FACES = 4000;   // up to this many faces: one polygon each, far to near, with edges
+const SHADES = 24;          // a bigger mesh: faces turned away skipped, the rest batched by shade
+const BATCH = 256;          // ... at most this many faces per path
+const POINT_LIMIT = 20000;  // more new points than this are not drawn one by one
+const LABEL_VERTICES = 12;  // vertex labels up to this many vertices (the mask's own are always named)
+const CONTROL_LIMIT = 400; // control vertices drawn (and dragged) up to this many
+const PICK_PX = 12;         // a click this close to a new point picks it
+// The light, in view coordinates (x right, y up, z towards the viewer), unit length.
+const LIGHT = (() => { const l = [-0.35, 0.45, 0.82]; const n = Math.hypot(...l); return l.map((x) => x / n); })();
+
+// Brightness 0..1 of a normal n (world) under the view's rotation R; two-sided, so the
+// inside of an open mesh is lit too.
+function brightness(R, n, k) {
+  const x = R[0] * n[k] + R[1] * n[k + 1] + R[2] * n[k + 2];
+  const y = R[3] * n[k] + R[4] * n[k + 1] + R[5] * n[k + 2];
+  const z = R[6] * n[k] + R[7] * n[k + 1] + R[8] * n[k + 2];
+  return Math.abs(x * LIGHT[0] + y * LIGHT[1] + z * LIGHT[2]);
+}
+
+function faceShade(model, f) {
+  const { kind, normals } = model.shading;
+  if (kind === 'flat') return brightness(model.rotation, normals, 3 * f);
+  let sum = 0;
+  const a = model.faceOffsets[f]; const b = model.faceOffsets[f + 1];
+  for (let k = a; k < b; k += 1) sum += brightness(model.rotation, normals, 3 * model.faceVertices[k]);
+  return sum / (b - a);
+}
+
+const shadeColour = (s) => `hsl(205 50% ${Math.round(16 + 62 * s)}%)`;
+
+function faceXY(model, P, f) {
+  const a = model.faceOffsets[f]; const b = model.faceOffsets[f + 1];
+  const xy = new Float64Array(2 * (b - a));
+  for (let k = a; k < b; k += 1) { const v = model.faceVertices[k]; xy[2 * (k - a)] = P[3 * v]; xy[2 * (k - a) + 1] = P[3 * v + 1]; }
+  return xy;
+}
+
+// Whether face f's projected corners run counter-clockwise (faces are CCW seen from outside).
+function facesViewer(model, P, f) {
+  const a = model.faceOffsets[f]; const b = model.faceOffsets[f + 1];
+  let area = 0;
+  for (let k = a, j = b - 1; k < b; j = k, k += 1) {
+    const p = model.faceVertices[j]; const q = model.faceVertices[k];
+    area += P[3 * p] * P[3 * q + 1] - P[3 * q] * P[3 * p + 1];
+  }
+  return area >= 0;
+}
+
+function drawFaces(painter, model, colors) {
+  const P = model.projected;
+  const F = model.faceOffsets.length - 1;
+  if (F <= SMALL_FACES) {
+    const depth = new Float64Array(F);
+    for (let f = 0; f < F; f += 1) {
+      let z = 0;
+      for (let k = model.faceOffsets[f]; k < model.faceOffsets[f + 1]; k += 1) z += P[3 * model.faceVertices[k] + 2];
+      depth[f] = z / (model.faceOffsets[f + 1] - model.faceOffsets[f]);
+    }
+    const order = Array.from({ length: F }, (_, f) => f).sort((a, b) => depth[a] - depth[b]);
+    const width = F > 600 ? 0.5 : 1.2;
+    for (const f of order) painter.polygon(faceXY(model, P, f), { fill: shadeColour(faceShade(model, f)), stroke: colors.ink, width, alpha: 1 });
+    return;
+  }
+  // One path per BATCH faces of a shade: the rasteriser's cost grows faster than linearly
+  // with the subpaths of one path (the mesh lesson measured it), so long paths are cut.
+  const buckets = Array.from({ length: SHADES }, () => ({ xy: [], offsets: [0] }));
+  const flush = (i) => {
+    const b = buckets[i];
+    if (b.offsets.length > 1) painter.polygons(b.xy, b.offsets, { fill: shadeColour((i + 0.5) / SHADES), stroke: colors.ink, width: 0.3, alpha: 1 });
+    buckets[i] = { xy: [], offsets: [0] };
+  };
+  for (let f = 0; f < F; f += 1) {
+    if (!facesViewer(model, P, f)) continue;
+    const i = Math.min(SHADES - 1, Math.floor(faceShade(model, f) * SHADES));
+    const bucket = buckets[i];
+    for (let k = model.faceOffsets[f]; k < model.faceOffsets[f + 1]; k += 1) bucket.xy.push(P[3 * model.faceVertices[k]], P[3 * model.faceVertices[k] + 1]);
+    bucket.offsets.push(bucket.xy.length / 2);
+    if (bucket.offsets.length > BATCH) flush(i);
+  }
+  for (let i = 0; i < SHADES; i += 1) flush(i);
+}
+
+function drawOldEdges(painter, model, colors) {
+  if (!model.newProjected) return;
+  const P = model.oldProjected ?? model.projected;
+  const edges = model.we.edges;
+  const xy = [];
+  for (let e = 0; 8 * e < edges.length; e += 1) xy.push(P[3 * edges[8 * e]], P[3 * edges[8 * e] + 1], P[3 * edges[8 * e + 1]], P[3 * edges[8 * e + 1] + 1]);
+  painter.segments(xy, { stroke: colors.ink, width: 1, alpha: 0.45, dash: [3, 3] });
+}
+
+function drawVertexLabels(painter, P, colors) {
+  const V = P.length / 3;
+  if (V > LABEL_VERTICES) return;
+  for (let v = 0; v < V; v += 1) {
+    painter.circle(P[3 * v], P[3 * v + 1], 3.5, { fill: colors.ink });
+    painter.text(P[3 * v], P[3 * v + 1], label('vertex', v), { fill: colors.ink, font: 13, weight: 700, dx: 12, dy: -12, halo: colors.background });
+  }
+}
+
+function drawNewPoints(painter, model, colors) {
+  const N = model.newProjected;
+  if (!N) return;
+  for (const phase of model.pointPhases) {
+    if (phase.count > POINT_LIMIT) continue;
+    const colour = colors.series[PHASES.indexOf(phase.name) % colors.series.length];
+    for (let i = phase.first; i < phase.first + phase.count; i += 1) painter.circle(N[3 * i], N[3 * i + 1], 4, { fill: colour, stroke: colors.background, width: 1 });
+  }
+}
+
+// The chosen point's mask: a line to each old vertex it averages, the weight beside it.
+function drawMask(painter, model, colors) {
+  const i = model.focus;
+  if (i < 0 || !model.newProjected) return;
+  const s = model.steps;
+  const N = model.newProjected;
+  const old = model.oldProjected ?? model.projected;
+  const x = N[3 * i]; const y = N[3 * i + 1];
+  const colour = colors.series[2];
+  for (let k = s.masks.offsets[i]; k < s.masks.offsets[i + 1]; k += 1) {
+    const v = s.masks.vertices[k];
+    const vx = old[3 * v]; const vy = old[3 * v + 1];
+    painter.line(x, y, vx, vy, { stroke: colour, width: 2, dash: [5, 4] });
+    painter.circle(vx, vy, 6, { stroke: colour, width: 2.5 });
+    painter.text(vx, vy, label('vertex', v), { fill: colors.ink, font: 13, weight: 700, dx: 12, dy: -12, halo: colors.background });
+    painter.text(vx + (x - vx) * 0.3, vy + (y - vy) * 0.3, formatWeight(s.masks.weights[k]), { fill: colour, font: 14, weight: 700, halo: colors.background });
+  }
+  painter.circle(x, y, 8, { stroke: colour, width: 3 });
+  painter.text(x, y, `new ${label('vertex', i)}`, { fill: colour, font: 13, weight: 700, dx: 0, dy: 20, halo: colors.background });
+}
+
+function drawExtraordinary(painter, model, colors) {
+  const P = model.projected; // where the mesh is drawn (its limit positions when asked)
+  const colour = colors.series[3];
+  const labelled = model.extraordinary.length <= LABEL_VERTICES;
+  for (const { v, n } of model.extraordinary) {
+    painter.circle(P[3 * v], P[3 * v + 1], 10, { stroke: colour, width: 2.5 });
+    if (labelled) painter.text(P[3 * v], P[3 * v + 1], `n=${n}`, { fill: colour, font: 12, weight: 700, dx: -16, dy: 16, halo: colors.background });
+  }
+}
+
+// The control mesh (level 0) over finer levels, and its vertices, the handles.
+function drawControl(painter, model, ctx) {
+  const colors = ctx.colors;
+  const { edges } = model.control;
+  const P = model.control.projected ?? model.projected;
+  const V = P.length / 3;
+  if (model.control.projected && edges.length / 8 <= 4 * SMALL_FACES) {
+    const xy = [];
+    for (let e = 0; 8 * e < edges.length; e += 1) xy.push(P[3 * edges[8 * e]], P[3 * edges[8 * e] + 1], P[3 * edges[8 * e + 1]], P[3 * edges[8 * e + 1] + 1]);
+    painter.segments(xy, { stroke: colors.accent, width: 1.2, alpha: 0.8 });
+  }
+  if (V > CONTROL_LIMIT) return;
+  for (let v = 0; v < V; v += 1) {
+    const id = `v${v}`;
+    const r = ctx.ui.selected === id ? 7 : ctx.ui.hover === id ? 6 : 4;
+    painter.circle(P[3 * v], P[3 * v + 1], r, { fill: colors.accent, stroke: colors.background, width: 1.5 });
+  }
+  const selected = ctx.ui.selected?.startsWith('v') ? Number(ctx.ui.selected.slice(1)) : -1;
+  if (selected >= 0 && selected < V) painter.circle(P[3 * selected], P[3 * selected + 1], 11, { stroke: colors.accent, width: 2.5 });
+}
+
+export function drawScene(painter, model, state, ctx) {
+  if (!model) return;
+  const colors = ctx.colors;
+  drawFaces(painter, model, colors);
+  drawOldEdges(painter, model, colors);
+  drawExtraordinary(painter, model, colors);
+  drawVertexLabels(painter, model.oldProjected ?? model.projected, colors);
+  drawControl(painter, model, ctx);
+  drawNewPoints(painter, model, colors);
+  drawMask(painter, model, colors);
+}
+
+// The new point (of a phase shown) under the canvas point x, y (world), or -1.
+export function pointAt(model, x, y, zoom) {
+  const N = model.newProjected;
+  if (!N) return -1;
+  let best = -1;
+  let bestD = PICK_PX / zoom;
+  for (const phase of model.pointPhases) {
+    for (let i = phase.first; i < phase.first + phase.count; i += 1) {
+      const d = Math.hypot(N[3 * i] - x, N[3 * i + 1] - y);
+      if (d < bestD) { bestD = d; best = i; }
+    }
+  }
+  return best;
+}
+
+// The side plot: the control polygon, the polygon after the steps, the B-spline (all from
+// the core), fitted into the plot with a margin.
+export function drawCurvePlot(plot, model, ctx) {
+  if (!plot || !model) return;
+  const colors = ctx.colors;
+  const g = plot.begin(colors.background);
+  const { width, height } = plot.size;
+  const { control, refined, limit } = model.curve;
+  let minX = Infinity; let maxX = -Infinity; let minY = Infinity; let maxY = -Infinity;
+  for (let i = 0; i < control.length; i += 2) {
+    minX = Math.min(minX, control[i]); maxX = Math.max(maxX, control[i]);
+    minY = Math.min(minY, control[i + 1]); maxY = Math.max(maxY, control[i + 1]);
+  }
+  const pad = 14;
+  const k = Math.min((width - 2 * pad) / (maxX - minX || 1), (height - 2 * pad - 14) / (maxY - minY || 1));
+  const sx = (x) => pad + (x - minX) * k;
+  const sy = (y) => height - pad - (y - minY) * k;
+  const path = (xy, style) => {
+    g.beginPath();
+    for (let i = 0; i < xy.length; i += 2) (i ? g.lineTo : g.moveTo).call(g, sx(xy[i]), sy(xy[i + 1]));
+    g.strokeStyle = style.stroke; g.lineWidth = style.width; g.setLineDash(style.dash ?? []);
+    g.stroke();
+  };
+  const dots = (xy, r, fill) => {
+    g.fillStyle = fill;
+    for (let i = 0; i < xy.length; i += 2) { g.beginPath(); g.arc(sx(xy[i]), sy(xy[i + 1]), r, 0, 2 * Math.PI); g.fill(); }
+  };
+  path(control, { stroke: colors.muted, width: 1.2, dash: [5, 4] });
+  dots(control, 3.5, colors.muted);
+  path(limit, { stroke: colors.series[1], width: 3 });
+  path(refined, { stroke: colors.series[0], width: 1.5 });
+  if (refined.length <= 400) dots(refined, 2.5, colors.series[0]);
+  g.setLineDash([]);
+  g.font = '12px system-ui, sans-serif';
+  g.fillStyle = colors.muted; g.fillText('control polygon', 6, 12);
+  g.fillStyle = colors.series[0]; g.fillText(`after ${model.curve.steps} step${model.curve.steps === 1 ? '' : 's'}`, 112, 12);
+  g.fillStyle = colors.series[1]; g.fillText('B-spline (limit)', 200, 12);
+}

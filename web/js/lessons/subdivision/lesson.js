@@ -1,0 +1,349 @@
+// @ts-check
+// The subdivision lesson (issue 16; lecture 000's "how to refine the mesh"): one Loop or
+// Catmull-Clark step at a time, phase by phase (face points, edge points, vertex points,
+// reconnection), each new point with its mask drawn on the old mesh; levels 0..5, limit
+// positions, flat or smooth shading; beside it the same averaging on a control polygon
+// (Chaikin, cubic Lane-Riesenfeld) converging to its B-spline. Every position, weight,
+// valence and count is the core's (api.subdivide, subdivisionSteps, limitPositions,
+// subdivideCurve, sampleCurve); this file keeps the state and arranges what the core returned.
+import { number, integer, boolean, oneOf, text, list, object, nullable, viewSchema } from '../../app/schema.js';
+import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
+import { viewRotation, projectAll, unprojectDelta } from '../../ui/mesh-view.js';
+import { SOURCES, IMPORTED_FIELD, PHASES, MAX_LEVEL, sourceKey, meshInput, hashNumbers, label } from './source.js';
+import { setupPanels } from './panels.js';
+import { drawScene, drawCurvePlot, pointAt } from './draw.js';
+
+// The control polygon of the curve beside the mesh (x, y): a fixed zigzag, so the two
+// schemes can be compared on the same points.
+const CURVE_POLYGON = Object.freeze([0, 0, 1, 2, 2.5, 2.2, 3, 0.2, 4.2, 0.4, 5, 2.4, 6.2, 1.6]);
+const CURVE_SAMPLES = 240;
+
+const schema = {
+  meshKind: oneOf(...SOURCES.map((s) => s.id)),
+  sphere: object({ slices: integer({ min: 3, max: 100 }), stacks: integer({ min: 3, max: 50 }) }),
+  grid: object({ nx: integer({ min: 1, max: 64 }), ny: integer({ min: 1, max: 64 }) }),
+  imported: nullable(object({
+    name: text({ maxLength: 120 }),
+    positions: list(number(), { min: 9, max: 3 * MAX_MESH_VERTICES }),
+    faces: list(list(integer({ min: 0, max: MAX_MESH_VERTICES - 1 }), { min: 3, max: MAX_FACE_CORNERS }), { min: 1, max: MAX_MESH_FACES }),
+  })),
+  // Control vertices (level 0) the person moved: where they are now.
+  moved: list(object({ v: integer({ min: 0, max: 10000000 }), p: list(number(), { min: 3, max: 3 }) }), { max: 100000 }),
+  scheme: oneOf('loop', 'catmull-clark'),
+  level: integer({ min: 0, max: MAX_LEVEL }),
+  phase: integer({ min: 0, max: PHASES.length }),
+  // The new point whose mask is drawn (-1: the first point of the newest phase shown).
+  focus: integer({ min: -1, max: 10000000 }),
+  limit: boolean(),
+  shading: oneOf('flat', 'smooth'),
+  curveScheme: oneOf('chaikin', 'cubic-bspline'),
+  rotation: object({ yaw: number({ min: -100, max: 100 }), pitch: number({ min: -100, max: 100 }) }),
+  view: viewSchema(),
+};
+
+function defaultState() {
+  return {
+    meshKind: 'tetrahedron',
+    sphere: { slices: 12, stacks: 6 },
+    grid: { nx: 4, ny: 3 },
+    imported: null,
+    moved: [],
+    scheme: 'loop',
+    level: 0,
+    phase: 0,
+    focus: -1,
+    limit: false,
+    shading: 'flat',
+    curveScheme: 'cubic-bspline',
+    rotation: { yaw: 0.6, pitch: 0.45 },
+    view: { cx: 0, cy: 0, zoom: 150 },
+  };
+}
+
+function checkState(state) {
+  if (state.meshKind === 'file' && !state.imported) return 'the state names an imported mesh but does not hold it';
+  return null;
+}
+
+// ------------------------------------------------------------------ the chain of levels
+// One chain per (mesh, scheme): levels[k] is the core's mesh after k steps, steps[k] its
+// next step as phases and masks (or the core's refusal), derived[k] what the drawing and
+// the tables read of it. A chain that another mesh or scheme replaces is disposed only
+// after the new one was accepted, so a refused choice keeps the page's meshes alive.
+function emptyChain(key) {
+  return { key, levels: [], steps: [], derived: [] };
+}
+
+function disposeChain(chain) {
+  for (const mesh of chain.levels) mesh?.dispose();
+  chain.levels = [];
+}
+
+function levelOf(chain, k, scheme, api) {
+  for (let i = chain.levels.length; i <= k; i += 1) {
+    try {
+      chain.levels.push(api.subdivide(chain.levels[i - 1], { scheme, steps: 1 }));
+    } catch (err) {
+      err.message = `Level ${i} is refused: ${err.message}`;
+      throw err;
+    }
+  }
+  return chain.levels[k];
+}
+
+// The next step of level k as the core teaches it, or its refusal ({error}).
+function stepsOf(chain, k, scheme, api) {
+  if (!chain.steps[k]) {
+    try {
+      chain.steps[k] = { value: api.subdivisionSteps(chain.levels[k], { scheme }) };
+    } catch (err) {
+      if (!err.code) throw err;
+      chain.steps[k] = { error: err };
+    }
+  }
+  return chain.steps[k];
+}
+
+// What the page reads of one level's mesh, once: positions, faces, counts, winged-edge
+// arrays, face normals; smooth normals and limit positions when first asked.
+function derivedOf(chain, k) {
+  if (!chain.derived[k]) {
+    const mesh = chain.levels[k];
+    const faces = mesh.tables('vertex-face-tables').faces.arrays;
+    chain.derived[k] = {
+      mesh,
+      we: mesh.wingedEdgeArrays(),
+      faceOffsets: faces.faceOffsets,
+      faceVertices: faces.faceVertices,
+      counts: mesh.counts(),
+      normals: mesh.normals(),
+      vertexNormals: null,
+      limit: null,
+    };
+  }
+  return chain.derived[k];
+}
+
+function vertexNormalsOf(d) {
+  if (!d.vertexNormals) {
+    const V = d.we.positions.length / 3;
+    const out = new Float64Array(3 * V);
+    for (let v = 0; v < V; v += 1) out.set(d.mesh.vertexNormal(v), 3 * v);
+    d.vertexNormals = out;
+  }
+  return d.vertexNormals;
+}
+
+// Per face of the drawing: its normal (flat) or its corners' normals (smooth), as the core
+// gave them; the drawing turns them into a shade.
+function shadingOf(d, shading) {
+  return shading === 'smooth' ? { kind: 'smooth', normals: vertexNormalsOf(d) } : { kind: 'flat', normals: d.normals };
+}
+
+function compute(view, state, ctx) {
+  const api = ctx.api;
+  const base = sourceKey(state, view.importedKeys);
+  const key = `${base}|${hashNumbers(state.moved.flatMap((m) => [m.v, ...m.p]))}|${state.scheme}`;
+  const fresh = view.chain?.key !== key;
+  const chain = fresh ? emptyChain(key) : view.chain;
+  try {
+    if (fresh) chain.levels.push(api.buildMesh(meshInput(state, api)));
+    // The view turns about the centre of the mesh as first built (moving a vertex does not
+    // move the view).
+    if (view.centre?.key !== base) view.centre = { key: base, value: chain.levels[0].boundingBox().centre };
+    const model = modelOf(view, chain, state, api);
+    if (fresh) {
+      if (view.chain) disposeChain(view.chain);
+      view.chain = chain;
+    }
+    return model;
+  } catch (err) {
+    if (fresh) disposeChain(chain);
+    view.lastRefusal = { code: err.code ?? null, message: err.message, state };
+    throw err;
+  }
+}
+
+function modelOf(view, chain, state, api) {
+  const { level, scheme } = state;
+  levelOf(chain, level, scheme, api);
+  const steps = stepsOf(chain, level, scheme, api);
+  // Loop's refusal of a face that is not a triangle holds for every level and phase.
+  if (steps.error?.code === 'not-a-triangle-mesh') throw steps.error;
+  if (state.phase > 0 && steps.error) throw Object.assign(new Error(`Level ${level + 1} is refused: ${steps.error.message}`), { code: steps.error.code });
+  const old = derivedOf(chain, level);
+  const reconnected = state.phase >= PHASES.length;
+  if (reconnected) levelOf(chain, level + 1, scheme, api);
+  const shown = reconnected ? derivedOf(chain, level + 1) : old;
+  if (state.limit && !shown.limit) shown.limit = api.limitPositions(shown.mesh, { scheme });
+  const positions = state.limit ? shown.limit : shown.we.positions;
+  const R = viewRotation({ mode3d: true, rotation: state.rotation });
+  const centre = view.centre.value;
+  const control = derivedOf(chain, 0);
+  const s = steps.value ?? null;
+  const phases = s ? s.phases : [];
+  const shownPhases = phases.slice(0, state.phase);
+  const pointPhases = shownPhases.filter((p) => p.name !== 'reconnection' && p.count > 0);
+  const focus = focusOf(state.focus, pointPhases);
+  return {
+    scheme,
+    level,
+    phase: state.phase,
+    mesh: shown.mesh,          // the mesh shown (the next level once reconnected)
+    levelMesh: old.mesh,       // the level's own mesh (exports)
+    we: shown.we,
+    counts: shown.counts,
+    levelCounts: old.counts,
+    nextCounts: s ? s.counts : null,
+    faceOffsets: shown.faceOffsets,
+    faceVertices: shown.faceVertices,
+    projected: projectAll(positions, R, centre),
+    oldProjected: reconnected ? null : (state.limit ? projectAll(old.we.positions, R, centre) : null),
+    newProjected: s && !reconnected && pointPhases.length ? projectAll(s.positions, R, centre) : null,
+    rotation: R,
+    // The control mesh (level 0): its vertices are the handles.
+    control: { positions: control.we.positions, edges: control.we.edges, projected: level === 0 && !reconnected && !state.limit ? null : projectAll(control.we.positions, R, centre) },
+    shading: shadingOf(shown, state.shading),
+    limit: state.limit,
+    steps: s,
+    stepsRefusal: steps.error?.message ?? null,
+    phases,
+    shownPhases,
+    pointPhases,
+    focus,
+    extraordinary: s && !reconnected ? extraordinaryOf(s, scheme) : [],
+    sourceKey: view.centre.key, // the mesh chosen (not its moved vertices nor the scheme)
+    curve: curveOf(api, state, reconnected ? level + 1 : level),
+  };
+}
+
+// The new point whose mask is drawn: the chosen one if its phase is shown, else the first
+// point of the newest phase shown.
+function focusOf(focus, pointPhases) {
+  if (!pointPhases.length) return -1;
+  if (focus >= 0 && pointPhases.some((p) => focus >= p.first && focus < p.first + p.count)) return focus;
+  return pointPhases[pointPhases.length - 1].first;
+}
+
+// Interior old vertices whose valence (the core's count of edges at the vertex) is not the
+// scheme's regular one: 6 for Loop, 4 for Catmull-Clark.
+function extraordinaryOf(s, scheme) {
+  const regular = scheme === 'loop' ? 6 : 4;
+  const interior = s.ruleNames.indexOf('vertex-interior');
+  const out = [];
+  for (let v = 0; v < s.valences.length; v += 1) {
+    if (s.rules[v] === interior && s.valences[v] !== regular) out.push({ v, n: s.valences[v] });
+  }
+  return out;
+}
+
+// The curve beside the mesh: the polygon after as many steps as the mesh's level, and the
+// B-spline they converge to (uniform knots, degree 2 for Chaikin, 3 for the cubic rule).
+function curveOf(api, state, steps) {
+  const points = Float64Array.from(CURVE_POLYGON);
+  const degree = state.curveScheme === 'chaikin' ? 2 : 3;
+  const refined = api.subdivideCurve(points, 2, { scheme: state.curveScheme, steps });
+  const spline = { kind: 'bspline', dim: 2, degree, points, knots: api.uniformKnots(points.length / 2, degree) };
+  return { control: points, refined, limit: api.sampleCurve(spline, CURVE_SAMPLES).points, steps, degree };
+}
+
+// The control vertices are the handles (up to HANDLE_LIMIT of them): drag one, or select it
+// with ] and move it with the arrows, and every level follows.
+const HANDLE_LIMIT = 400;
+const controlProjected = (model) => model.control.projected ?? model.projected;
+
+function handles(view, model) {
+  if (!model || model.control.positions.length / 3 > HANDLE_LIMIT) return [];
+  const P = controlProjected(model);
+  const out = [];
+  for (let v = 0; 3 * v < P.length; v += 1) out.push({ id: `v${v}`, x: P[3 * v], y: P[3 * v + 1], label: `control vertex ${label('vertex', v)}` });
+  return out;
+}
+
+// A control vertex dragged in the view plane moves by R^T (dx, dy, 0) in the world.
+function moveHandle(view, state, id, x, y, model) {
+  const v = Number(id.slice(1));
+  const P = controlProjected(model);
+  if (!Number.isInteger(v) || 3 * v >= P.length) return null;
+  const [dx, dy, dz] = unprojectDelta(model.rotation, x - P[3 * v], y - P[3 * v + 1]);
+  const c = model.control.positions;
+  const p = [c[3 * v] + dx, c[3 * v + 1] + dy, c[3 * v + 2] + dz];
+  return { ...state, moved: state.moved.filter((m) => m.v !== v).concat([{ v, p }]) };
+}
+
+function fitView(view, model, stage) {
+  if (!model) return defaultState().view;
+  const P = model.projected;
+  let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
+  for (let i = 0; i < P.length; i += 3) {
+    minX = Math.min(minX, P[i]); maxX = Math.max(maxX, P[i]);
+    minY = Math.min(minY, P[i + 1]); maxY = Math.max(maxY, P[i + 1]);
+  }
+  return stage.fit(minX, minY, maxX, maxY, 0.2);
+}
+
+const SCHEME_NAMES = { loop: 'Loop', 'catmull-clark': 'Catmull-Clark' };
+
+function describe(view, model, state) {
+  if (!model) return 'No mesh.';
+  const kind = SOURCES.find((k) => k.id === state.meshKind)?.label ?? state.meshKind;
+  const c = model.counts;
+  const phase = model.shownPhases.length ? ` Step to level ${model.level + 1}: ${model.shownPhases.map((p) => p.name.replace('-', ' ')).join(', ')} shown.` : '';
+  return `${kind}, ${SCHEME_NAMES[state.scheme]} subdivision, level ${state.level}: ${c.vertices} vertices, ${c.edges} edges, ${c.faces} faces.${phase}`;
+}
+
+// OFF and OBJ files: the core parses them (its message names the line) and reports every
+// problem; the first error refuses the file and the page keeps its mesh.
+function importer(format) {
+  return (view, content, state, name, ctx) => {
+    const parsed = ctx.api.parseMesh(content, { format });
+    const mesh = { positions: Array.from(parsed.positions), faces: parsed.faces.map((f) => Array.from(f)) };
+    const errors = ctx.api.validateMesh(mesh).problems.filter((p) => p.severity === 'error');
+    if (errors.length) throw Object.assign(new Error(`${name}: ${errors[0].message}`), { code: errors[0].code });
+    return { ...state, meshKind: 'file', imported: { name: name.slice(0, 120), ...mesh }, moved: [], level: 0, phase: 0, focus: -1 };
+  };
+}
+
+const meshFile = (format) => ({
+  label: `Mesh of this level (${format.toUpperCase()})`,
+  filename: (state) => `subdivision-level${state.level}.${format}`,
+  type: 'text/plain',
+  make: (view, model) => model.levelMesh.format({ format }),
+});
+
+/** @type {import('../../app/contract.js').Lesson} */
+export const subdivisionLesson = {
+  id: 'subdivision',
+  title: 'Subdivision',
+  stateVersion: 1,
+  schema,
+  defaultState,
+  checkState,
+  contentFields: IMPORTED_FIELD,
+  inspector: false,
+  setup(ctx) {
+    const view = { chain: null, centre: null, importedKeys: new WeakMap(), lastRefusal: null, rotating: null, panels: null, plot: null };
+    view.panels = setupPanels(ctx, view);
+    return view;
+  },
+  compute,
+  update: (view, model, state) => view.panels.update(model, state),
+  draw: (view, painter, model, state, ctx) => drawScene(painter, model, state, ctx),
+  afterFrame: (view, model, state, ctx) => drawCurvePlot(view.panels.plot, model, ctx),
+  describe,
+  fitView,
+  handles,
+  moveHandle,
+  click(view, x, y, ctx, event) {
+    const model = ctx.model;
+    const i = model ? pointAt(model, x, y, ctx.state.view.zoom) : -1;
+    if (i >= 0) {
+      ctx.commit({ ...ctx.state, focus: i }, { history: false });
+      return true;
+    }
+    view.rotating = { x: event.clientX, y: event.clientY, ...ctx.state.rotation };
+    return true;
+  },
+  exports: [meshFile('off'), meshFile('obj')],
+  importers: { off: importer('off'), obj: importer('obj') },
+};
