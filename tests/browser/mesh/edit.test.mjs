@@ -230,3 +230,21 @@ test('a link whose edit the core refuses says so, naming the operation, and the 
   // The page shows the saved work (the split mesh), not a half-applied link.
   assert.equal(await other.$$eval('#we-edge-table tbody tr[data-row]', (r) => r.length), 8);
 });
+
+test('every edit has a key of its own: with F1 picked, k pokes it (p stays the presentation key)', async () => {
+  const page = await openLesson();
+  await page.selectOption('#edit-kind', 'face');
+  await page.fill('#edit-element', '1');
+  await page.press('#edit-element', 'Enter');
+  await page.waitForFunction(() => document.querySelector('#edit-picked')?.textContent === 'Picked: F1');
+  await page.evaluate(() => document.activeElement?.blur()); // keys typed into a field are the field's
+  await page.keyboard.press('k');
+  // Poking the triangle F1: V + 1, E + 3, F + 2.
+  await page.waitForFunction(() => /after it 6 − 10 \+ 5 = 1/.test(document.querySelector('#edit-euler')?.textContent ?? ''));
+  assert.equal(await page.evaluate(() => document.documentElement.hasAttribute('data-present')), false);
+  // Every edit's key is listed in the keyboard dialog under "Edit" and claimed by nothing before it.
+  const keys = await page.evaluate(() => window.wingspline.ctx.keymap.list());
+  for (const k of keys.filter((b) => b.group === 'Edit').flatMap((b) => b.keys)) {
+    assert.equal(keys.findIndex((b) => b.keys.includes(k)), keys.findIndex((b) => b.group === 'Edit' && b.keys.includes(k)), `key ${k} is the edit's`);
+  }
+});

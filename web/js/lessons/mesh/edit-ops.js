@@ -35,7 +35,7 @@ export const EDIT_OPS = [
     make: (index, options) => ({ op: 'split-face', f: index, a: options.a, b: options.b }),
   },
   {
-    op: 'poke-face', label: 'Poke face', needs: 'face', key: 'p', counts: 'V+1, E+n, F+n−1',
+    op: 'poke-face', label: 'Poke face', needs: 'face', key: 'k', counts: 'V+1, E+n, F+n−1',
     what: (op) => `poke ${fLabel(op.f)}`,
     make: (index) => ({ op: 'poke-face', f: index }),
   },
