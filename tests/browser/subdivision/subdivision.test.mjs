@@ -27,6 +27,13 @@ async function focusPanel(page) {
   await page.evaluate(() => document.activeElement.blur());
 }
 
+// From level 0 to level 1 with the keyboard (>).
+async function nextLevel(page) {
+  await focusPanel(page);
+  await page.keyboard.press('>');
+  await page.waitForFunction(() => window.wingspline.state.level === 1);
+}
+
 test('a student steps one Loop step of the tetrahedron and sees the masks, the counts and the tables grow', async () => {
   const page = await env.openLesson(url());
   assert.deepEqual(await counts(page, 'level'), [4, 6, 4]);
@@ -98,6 +105,117 @@ test('Loop refuses the cube with the core\'s message and offers Catmull-Clark', 
   assert.deepEqual(page.problems, []);
 });
 
+// The curve's polygon as it starts (it was fixed before state version 2), (x, y) pairs.
+const POLYGON = [0, 0, 1, 2, 2.5, 2.2, 3, 0.2, 4.2, 0.4, 5, 2.4, 6.2, 1.6];
+const curvePoint = (page, i) => page.evaluate((j) => window.wingspline.view.panels.curvePlot.pointClient(j), i);
+const caption = (page) => text(page, '#curve-caption');
+
+test('a student drags a control point of the curve: it follows the pointer, the others stay', async () => {
+  const page = await env.openLesson(url());
+  assert.deepEqual((await page.evaluate(() => window.wingspline.state)).curve, { points: POLYGON, closed: false });
+  await page.$eval('.curve-plot', (el) => el.scrollIntoView());
+  await settle(page);
+  const start = await curvePoint(page, 3);
+  await page.mouse.move(start.x, start.y);
+  await page.mouse.down();
+  await page.mouse.move(start.x + 10, start.y - 30, { steps: 4 });
+  await settle(page);
+  // While it is dragged the plot holds still: the point is under the pointer (within 1 px).
+  const during = await curvePoint(page, 3);
+  assert.ok(Math.hypot(during.x - start.x - 10, during.y - start.y + 30) < 1, JSON.stringify({ start, during }));
+  await page.mouse.up();
+  const points = (await page.evaluate(() => window.wingspline.state)).curve.points;
+  // Right and up on the screen is +x and +y; every other coordinate is the same number.
+  assert.ok(points[6] > POLYGON[6] && points[7] > POLYGON[7], JSON.stringify(points));
+  points.forEach((v, i) => { if (i !== 6 && i !== 7) assert.equal(v, POLYGON[i], `coordinate ${i}`); });
+  assert.deepEqual(Array.from(await page.evaluate(() => window.wingspline.model.curve.control)), points);
+  assert.deepEqual(page.problems, []);
+});
+
+test('a closed polygon wraps: 2n points a step, its limit the periodic B-spline', async () => {
+  const page = await env.openLesson(url());
+  await nextLevel(page);
+  // Open cubic: n -> 2n - 3 (no end rule, docs/api-curves.md); closed: n -> 2n. n = 7.
+  assert.match(await caption(page), /7 points became 11/);
+  await page.check('#curve-closed');
+  await page.waitForFunction(() => window.wingspline.state.curve.closed === true);
+  await page.waitForFunction(() => /periodic cubic/.test(document.querySelector('#curve-caption').textContent));
+  assert.match(await caption(page), /7 points became 14/);
+  // The periodic uniform cubic B-spline passes (P6 + 4 P0 + P1)/6 = (7.2/6, 3.6/6) = (1.2, 0.6)
+  // (by hand from the polygon); the drawn limit comes that close. Tolerance: 1e-3 of the
+  // polygon's width (6.2 units), far below a pixel.
+  const limit = await page.evaluate(() => Array.from(window.wingspline.model.curve.limit));
+  let nearest = Infinity;
+  for (let i = 0; i < limit.length; i += 2) nearest = Math.min(nearest, Math.hypot(limit[i] - 1.2, limit[i + 1] - 0.6));
+  assert.ok(nearest < 6.2e-3, `nearest limit point ${nearest} from (1.2, 0.6)`);
+  // Chaikin: closed n -> 2n, open n -> 2(n - 1).
+  await page.selectOption('#curve-scheme', 'chaikin');
+  await page.waitForFunction(() => window.wingspline.state.curveScheme === 'chaikin');
+  await page.waitForFunction(() => /periodic quadratic/.test(document.querySelector('#curve-caption').textContent));
+  assert.match(await caption(page), /7 points became 14/);
+  await page.uncheck('#curve-closed');
+  await page.waitForFunction(() => window.wingspline.state.curve.closed === false);
+  await page.waitForFunction(() => /uniform quadratic/.test(document.querySelector('#curve-caption').textContent));
+  assert.match(await caption(page), /7 points became 12/);
+  assert.deepEqual(page.problems, []);
+});
+
+test('a version-1 state (no curve in it) opens with the curve it showed then', async () => {
+  const page = await env.openLesson(url());
+  const state = await page.evaluate(() => window.wingspline.state);
+  delete state.curve;
+  const file = JSON.stringify({ format: 'wingspline', lesson: 'subdivision', version: 1, state: { ...state, level: 1 } });
+  await page.setInputFiles('#import-file', { name: 'old.json', mimeType: 'application/json', buffer: Buffer.from(file) });
+  await page.waitForFunction(() => window.wingspline.state.level === 1);
+  assert.deepEqual((await page.evaluate(() => window.wingspline.state)).curve, { points: POLYGON, closed: false });
+  assert.deepEqual(page.problems, []);
+});
+
+test('the link opens the curve explorer with this polygon as a B-spline and its knot insertion', async () => {
+  const page = await env.openLesson(url());
+  await page.selectOption('#curve-scheme', 'chaikin');
+  await page.waitForFunction(() => /#s=/.test(document.querySelector('#curve-explorer-link').getAttribute('href')) && window.wingspline.state.curveScheme === 'chaikin');
+  await settle(page);
+  await page.click('#curve-explorer-link');
+  await page.waitForFunction(() => window.wingspline?.lesson === 'curves');
+  await page.waitForSelector('body[data-ready=true]');
+  const state = await page.evaluate(() => window.wingspline.state);
+  assert.deepEqual(state.points, Array.from({ length: POLYGON.length / 2 }, (_, i) => [POLYGON[2 * i], POLYGON[2 * i + 1]]));
+  assert.equal(state.family, 'bspline');
+  assert.equal(state.degree, 2); // Chaikin's limit: the uniform quadratic B-spline
+  // Uniform knots t_j = j - p, j = 0..K + p (K = 7, p = 2), by hand.
+  assert.deepEqual(state.knots, [-2, -1, 0, 1, 2, 3, 4, 5, 6, 7]);
+  assert.deepEqual(state.construction, { kind: 'insert-knot', step: 1 });
+  // The explorer shows the polygon: its handles stand on the points.
+  const shown = (await page.evaluate(() => window.wingspline.handles())).filter((x) => /^p\d+$/.test(x.id)).map((x) => [x.world.x, x.world.y]);
+  assert.deepEqual(shown, state.points);
+  assert.deepEqual(page.problems, []);
+});
+
+test('an imported quad mesh under Loop is refused with the same offer of Catmull-Clark', async () => {
+  const page = await env.openLesson(url());
+  // The unit cube as OFF, written by hand: 8 vertices, 6 quads, outward corner order.
+  const cube = ['OFF', '8 6 12',
+    '0 0 0', '1 0 0', '1 1 0', '0 1 0', '0 0 1', '1 0 1', '1 1 1', '0 1 1',
+    '4 0 3 2 1', '4 4 5 6 7', '4 0 1 5 4', '4 1 2 6 5', '4 2 3 7 6', '4 3 0 4 7', ''].join('\n');
+  await page.setInputFiles('#import-file', { name: 'cube.off', mimeType: 'text/plain', buffer: Buffer.from(cube) });
+  await page.waitForSelector('[data-message-action=use-catmull-clark]');
+  // Refused: the page keeps its tetrahedron under Loop, and says why (the core names the face).
+  const before = await page.evaluate(() => window.wingspline.state);
+  assert.equal(before.meshKind, 'tetrahedron');
+  assert.equal(before.scheme, 'loop');
+  assert.match(await page.evaluate(() => window.wingspline.message()), /cube\.off was not imported: .*triangle/);
+  await page.click('[data-message-action=use-catmull-clark]');
+  await page.waitForFunction(() => window.wingspline.state.meshKind === 'file');
+  const after = await page.evaluate(() => window.wingspline.state);
+  assert.equal(after.scheme, 'catmull-clark');
+  assert.equal(after.imported.name, 'cube.off');
+  // The cube's counts by hand: 8, 12, 6; one Catmull-Clark step: V + E + F = 26, 2E + 24 = 48, 24 quads.
+  assert.deepEqual(await counts(page, 'level'), [8, 12, 6]);
+  assert.deepEqual(await counts(page, 'next'), [26, 48, 24]);
+  assert.deepEqual(page.problems, []);
+});
+
 test('a level the core refuses shows why and keeps the previous level', async () => {
   const page = await env.openLesson(url());
   await page.selectOption('#mesh-kind', 'grid');
@@ -131,9 +249,7 @@ test('a level the core refuses shows why and keeps the previous level', async ()
 
 test('the share link reproduces the level and the phase', async () => {
   const page = await env.openLesson(url());
-  await focusPanel(page);
-  await page.keyboard.press('>');
-  await page.waitForFunction(() => window.wingspline.state.level === 1);
+  await nextLevel(page);
   await page.keyboard.press('ArrowRight');
   await page.waitForFunction(() => window.wingspline.state.phase === 2);
   const label = await text(page, '#phase-label');
@@ -153,9 +269,7 @@ test('the share link reproduces the level and the phase', async () => {
 
 test('dragging a control vertex with a finger reshapes the level shown; undo puts it back', async () => {
   const page = await env.openLesson(url(), { hasTouch: true });
-  await focusPanel(page);
-  await page.keyboard.press('>');
-  await page.waitForFunction(() => window.wingspline.state.level === 1);
+  await nextLevel(page);
   const before = await page.evaluate(() => Array.from(window.wingspline.model.we.positions));
   const v1 = (await page.evaluate(() => window.wingspline.handles())).find((x) => x.id === 'v0');
   // A touch drag as pointer events (pointerType touch) from the handle 40 px to the right.
@@ -180,9 +294,7 @@ test('dragging a control vertex with a finger reshapes the level shown; undo put
 
 test('the OFF export of a level reads back as that level\'s mesh', async () => {
   const page = await env.openLesson(url());
-  await focusPanel(page);
-  await page.keyboard.press('>');
-  await page.waitForFunction(() => window.wingspline.state.level === 1);
+  await nextLevel(page);
   await page.click('details.menu > summary');
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('[data-export="Mesh of this level (OFF)"]')]);
   assert.equal(download.suggestedFilename(), 'subdivision-level1.off');

@@ -75,7 +75,11 @@ export function createImportExport({ lesson, contents, hookArgs, svgFigure, canv
   }
 
   async function importFile({ name, text }) {
-    const refused = (err) => message.error(`${name} was not imported: ${errorText(err)}`, err?.code ?? 'import-error');
+    // A lesson's importer may refuse with one way out (err.offer: {id, label, run}), e.g. the
+    // subdivision lesson's "Use Catmull-Clark" for a quad mesh under Loop.
+    const refused = (err) => (err?.offer
+      ? message.warn(`${name} was not imported: ${errorText(err)}`, { code: err.code, action: err.offer })
+      : message.error(`${name} was not imported: ${errorText(err)}`, err?.code ?? 'import-error'));
     let next;
     try {
       next = await readImport(name, text);

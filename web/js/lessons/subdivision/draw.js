@@ -1,7 +1,7 @@
 // Drawing the subdivision lesson: the mesh shown (shaded by the core's normals, far faces
 // first), the new points of the phases shown, the chosen point's mask as lines to the old
-// vertices it averages with their weights, the extraordinary vertices ringed; and the side
-// plot of the curve. Only the view's arithmetic happens here (projection was done in
+// vertices it averages with their weights, the extraordinary vertices ringed (the side plot
+// of the curve is curve-plot.js). Only the view's arithmetic happens here (projection was done in
 // compute; the shade of a face is a dot product of the core's normal with the light).
 import { formatWeight } from './format-weight.js';
 import { PHASES, label } from './source.js';
@@ -193,43 +193,4 @@ export function pointAt(model, x, y, zoom) {
     }
   }
   return best;
-}
-
-// The side plot: the control polygon, the polygon after the steps, the B-spline (all from
-// the core), fitted into the plot with a margin.
-export function drawCurvePlot(plot, model, ctx) {
-  if (!plot || !model) return;
-  const colors = ctx.colors;
-  const g = plot.begin(colors.background);
-  const { width, height } = plot.size;
-  const { control, refined, limit } = model.curve;
-  let minX = Infinity; let maxX = -Infinity; let minY = Infinity; let maxY = -Infinity;
-  for (let i = 0; i < control.length; i += 2) {
-    minX = Math.min(minX, control[i]); maxX = Math.max(maxX, control[i]);
-    minY = Math.min(minY, control[i + 1]); maxY = Math.max(maxY, control[i + 1]);
-  }
-  const pad = 14;
-  const k = Math.min((width - 2 * pad) / (maxX - minX || 1), (height - 2 * pad - 14) / (maxY - minY || 1));
-  const sx = (x) => pad + (x - minX) * k;
-  const sy = (y) => height - pad - (y - minY) * k;
-  const path = (xy, style) => {
-    g.beginPath();
-    for (let i = 0; i < xy.length; i += 2) (i ? g.lineTo : g.moveTo).call(g, sx(xy[i]), sy(xy[i + 1]));
-    g.strokeStyle = style.stroke; g.lineWidth = style.width; g.setLineDash(style.dash ?? []);
-    g.stroke();
-  };
-  const dots = (xy, r, fill) => {
-    g.fillStyle = fill;
-    for (let i = 0; i < xy.length; i += 2) { g.beginPath(); g.arc(sx(xy[i]), sy(xy[i + 1]), r, 0, 2 * Math.PI); g.fill(); }
-  };
-  path(control, { stroke: colors.muted, width: 1.2, dash: [5, 4] });
-  dots(control, 3.5, colors.muted);
-  path(limit, { stroke: colors.series[1], width: 3 });
-  path(refined, { stroke: colors.series[0], width: 1.5 });
-  if (refined.length <= 400) dots(refined, 2.5, colors.series[0]);
-  g.setLineDash([]);
-  g.font = '12px system-ui, sans-serif';
-  g.fillStyle = colors.muted; g.fillText('control polygon', 6, 12);
-  g.fillStyle = colors.series[0]; g.fillText(`after ${model.curve.steps} step${model.curve.steps === 1 ? '' : 's'}`, 112, 12);
-  g.fillStyle = colors.series[1]; g.fillText('B-spline (limit)', 200, 12);
 }

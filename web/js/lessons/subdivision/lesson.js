@@ -11,12 +11,21 @@ import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/l
 import { viewRotation, projectAll, unprojectDelta } from '../../ui/mesh-view.js';
 import { SOURCES, IMPORTED_FIELD, PHASES, MAX_LEVEL, sourceKey, meshInput, hashNumbers, label } from './source.js';
 import { setupPanels } from './panels.js';
-import { drawScene, drawCurvePlot, pointAt } from './draw.js';
+import { drawScene, pointAt } from './draw.js';
 
-// The control polygon of the curve beside the mesh (x, y): a fixed zigzag, so the two
-// schemes can be compared on the same points.
+// The control polygon of the curve beside the mesh (x, y) as it starts: a zigzag, so the two
+// schemes can be compared on the same points; the person drags its points (state.curve).
 const CURVE_POLYGON = Object.freeze([0, 0, 1, 2, 2.5, 2.2, 3, 0.2, 4.2, 0.4, 5, 2.4, 6.2, 1.6]);
 const CURVE_SAMPLES = 240;
+// Coordinates of the curve's points stay within +-CURVE_EXTENT; 4..32 points (4: the fewest
+// an open cubic polygon may have, docs/api-curves.md; 32: its cubic B-spline's K + p + 1
+// knots fit the curve explorer's 40, for the link there).
+const CURVE_EXTENT = 1000;
+const CURVE_MAX_POINTS = 32;
+// The core has no periodic B-spline evaluation: the closed limit is drawn as the core's
+// closed subdivision after CLOSED_LIMIT_STEPS steps (n points -> 256 n), whose distance to the
+// limit shrinks about 4x per step (docs/api-curves.md), far below a pixel.
+const CLOSED_LIMIT_STEPS = 8;
 
 const schema = {
   meshKind: oneOf(...SOURCES.map((s) => s.id)),
@@ -37,6 +46,7 @@ const schema = {
   limit: boolean(),
   shading: oneOf('flat', 'smooth'),
   curveScheme: oneOf('chaikin', 'cubic-bspline'),
+  curve: object({ points: list(number({ min: -CURVE_EXTENT, max: CURVE_EXTENT }), { min: 8, max: 2 * CURVE_MAX_POINTS }), closed: boolean() }),
   rotation: object({ yaw: number({ min: -100, max: 100 }), pitch: number({ min: -100, max: 100 }) }),
   view: viewSchema(),
 };
@@ -55,6 +65,7 @@ function defaultState() {
     limit: false,
     shading: 'flat',
     curveScheme: 'cubic-bspline',
+    curve: { points: [...CURVE_POLYGON], closed: false },
     rotation: { yaw: 0.6, pitch: 0.45 },
     view: { cx: 0, cy: 0, zoom: 150 },
   };
@@ -62,6 +73,7 @@ function defaultState() {
 
 function checkState(state) {
   if (state.meshKind === 'file' && !state.imported) return 'the state names an imported mesh but does not hold it';
+  if (state.curve.points.length % 2) return 'the curve\'s points need an x and a y each';
   return null;
 }
 
@@ -239,12 +251,17 @@ function extraordinaryOf(s, scheme) {
 
 // The curve beside the mesh: the polygon after as many steps as the mesh's level, and the
 // B-spline they converge to (uniform knots, degree 2 for Chaikin, 3 for the cubic rule).
+// A closed polygon's limit is the periodic B-spline, drawn as many closed steps (above).
 function curveOf(api, state, steps) {
-  const points = Float64Array.from(CURVE_POLYGON);
+  const { closed } = state.curve;
+  const points = Float64Array.from(state.curve.points);
   const degree = state.curveScheme === 'chaikin' ? 2 : 3;
-  const refined = api.subdivideCurve(points, 2, { scheme: state.curveScheme, steps });
-  const spline = { kind: 'bspline', dim: 2, degree, points, knots: api.uniformKnots(points.length / 2, degree) };
-  return { control: points, refined, limit: api.sampleCurve(spline, CURVE_SAMPLES).points, steps, degree };
+  const scheme = state.curveScheme;
+  const refined = api.subdivideCurve(points, 2, { scheme, closed, steps });
+  const limit = closed
+    ? api.subdivideCurve(points, 2, { scheme, closed, steps: CLOSED_LIMIT_STEPS })
+    : api.sampleCurve({ kind: 'bspline', dim: 2, degree, points, knots: api.uniformKnots(points.length / 2, degree) }, CURVE_SAMPLES).points;
+  return { control: points, refined, limit, steps, degree, closed };
 }
 
 // The control vertices are the handles (up to HANDLE_LIMIT of them): drag one, or select it
@@ -300,8 +317,27 @@ function importer(format) {
     const mesh = { positions: Array.from(parsed.positions), faces: parsed.faces.map((f) => Array.from(f)) };
     const errors = ctx.api.validateMesh(mesh).problems.filter((p) => p.severity === 'error');
     if (errors.length) throw Object.assign(new Error(`${name}: ${errors[0].message}`), { code: errors[0].code });
-    return { ...state, meshKind: 'file', imported: { name: name.slice(0, 120), ...mesh }, moved: [], level: 0, phase: 0, focus: -1 };
+    const next = { ...state, meshKind: 'file', imported: { name: name.slice(0, 120), ...mesh }, moved: [], level: 0, phase: 0, focus: -1 };
+    if (state.scheme === 'loop') refuseUnderLoop(mesh, next, ctx);
+    return next;
   };
+}
+
+// Loop refuses a mesh with a face that is not a triangle: the import is refused as the
+// built-in cube is, with the core's message (it names the face) and the offer of
+// Catmull-Clark. The core is asked only when some face has another number of corners.
+function refuseUnderLoop(mesh, next, ctx) {
+  if (mesh.faces.every((f) => f.length === 3)) return;
+  const built = ctx.api.buildMesh(mesh);
+  try {
+    ctx.api.subdivisionSteps(built, { scheme: 'loop' });
+  } catch (err) {
+    if (err.code !== 'not-a-triangle-mesh') throw err;
+    const run = () => { if (ctx.commit({ ...next, scheme: 'catmull-clark' })) queueMicrotask(() => ctx.fitView()); };
+    throw Object.assign(new Error(err.message), { code: err.code, offer: { id: 'use-catmull-clark', label: 'Use Catmull-Clark', run } });
+  } finally {
+    built.dispose();
+  }
 }
 
 const meshFile = (format) => ({
@@ -315,21 +351,23 @@ const meshFile = (format) => ({
 export const subdivisionLesson = {
   id: 'subdivision',
   title: 'Subdivision',
-  stateVersion: 1,
+  stateVersion: 2,
+  // Version 2 holds the curve's polygon (it was fixed before): a version-1 link gets it.
+  migrations: { 1: (old) => ({ ...old, curve: { points: [...CURVE_POLYGON], closed: false } }) },
   schema,
   defaultState,
   checkState,
   contentFields: IMPORTED_FIELD,
   inspector: false,
   setup(ctx) {
-    const view = { chain: null, centre: null, importedKeys: new WeakMap(), lastRefusal: null, rotating: null, panels: null, plot: null };
+    const view = { chain: null, centre: null, importedKeys: new WeakMap(), lastRefusal: null, rotating: null, panels: null };
     view.panels = setupPanels(ctx, view);
     return view;
   },
   compute,
   update: (view, model, state) => view.panels.update(model, state),
   draw: (view, painter, model, state, ctx) => drawScene(painter, model, state, ctx),
-  afterFrame: (view, model, state, ctx) => drawCurvePlot(view.panels.plot, model, ctx),
+  afterFrame: (view, model, state, ctx) => view.panels.curvePlot.draw(model, ctx.colors),
   describe,
   fitView,
   handles,

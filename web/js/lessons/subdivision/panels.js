@@ -5,7 +5,8 @@
 import { h } from '../../app/dom.js';
 import { readTable, findDescriptor, columnHeading } from '../../core/tables.js';
 import { createVirtualTable } from '../../ui/virtual-table.js';
-import { createPlotCanvas } from '../../ui/plot-canvas.js';
+import { createCurvePlot } from './curve-plot.js';
+import { createExplorerLink } from './explorer-link.js';
 import { formatNumber } from '../../ui/mathml.js';
 import { SOURCES, PHASES, MAX_LEVEL, label } from './source.js';
 import { formatWeight } from './format-weight.js';
@@ -199,12 +200,15 @@ export function setupPanels(ctx, view) {
     h('option', { value: 'chaikin' }, 'Chaikin (quadratic B-spline)'), h('option', { value: 'cubic-bspline' }, 'cubic (Lane-Riesenfeld)'));
   curveScheme.addEventListener('change', () => commit({ curveScheme: curveScheme.value }));
   const curveCaption = h('p', { class: 'hint', id: 'curve-caption' });
+  const closedBox = h('input', { type: 'checkbox', id: 'curve-closed' });
+  closedBox.addEventListener('change', () => commit({ curve: { ...state().curve, closed: closedBox.checked } }));
   const curvePanel = h('section', { class: 'curve-panel', 'aria-labelledby': 'curve-title' },
-    h('h2', { id: 'curve-title' }, 'The same rule on a curve'), labelled('Scheme', curveScheme));
-  const plot = createPlotCanvas(curvePanel, { className: 'curve-plot', label: 'Control polygon, its subdivided polygon and the B-spline it converges to', height: 190 });
-  plot.onRedraw(() => ctx.render());
-  curvePanel.append(curveCaption, h('p', {}, 'One cubic step is knot insertion at the middle of every span: ',
-    h('a', { href: 'curves.html', id: 'curve-explorer-link' }, 'insert knots in the curve explorer'), '.'));
+    h('h2', { id: 'curve-title' }, 'The same rule on a curve'), labelled('Scheme', curveScheme), h('label', {}, closedBox, ' closed'));
+  const curvePlot = createCurvePlot(curvePanel, ctx);
+  const explorerAnchor = h('a', { href: 'curves.html', id: 'curve-explorer-link' }, 'insert a knot into this polygon\'s B-spline in the curve explorer');
+  const explorerLink = createExplorerLink(explorerAnchor, ctx);
+  curvePanel.append(curveCaption, h('p', {}, 'One cubic step is knot insertion at the middle of every span: ', explorerAnchor,
+    ' (an open B-spline: a closed polygon goes there open).'));
 
   // ------------------------------------------------------------ winged-edge tables
   const descriptor = (name) => findDescriptor(ctx.api.tableDescriptors, 'winged-edge', name);
@@ -244,6 +248,7 @@ export function setupPanels(ctx, view) {
     limitBox.checked = s.limit;
     shadingSelect.value = s.shading;
     curveScheme.value = s.curveScheme;
+    closedBox.checked = s.curve.closed;
   }
 
   function updateStep(model) {
@@ -309,7 +314,7 @@ export function setupPanels(ctx, view) {
 
   let shownSource = null;
   return {
-    plot,
+    curvePlot,
     update(model, s) {
       syncControls();
       if (!model) return;
@@ -317,8 +322,9 @@ export function setupPanels(ctx, view) {
       shownSource = model.sourceKey;
       updateStep(model);
       const c = model.curve;
-      curveCaption.textContent = `${c.steps} step${c.steps === 1 ? '' : 's'} (as many as the mesh's level): ${c.control.length / 2} points became ${c.refined.length / 2}; the curve is the uniform ${c.degree === 2 ? 'quadratic' : 'cubic'} B-spline of the polygon, which the steps approach.`;
+      curveCaption.textContent = `${c.steps} step${c.steps === 1 ? '' : 's'} (as many as the mesh's level): ${c.control.length / 2} points became ${c.refined.length / 2}; the curve is the uniform ${c.closed ? 'periodic ' : ''}${c.degree === 2 ? 'quadratic' : 'cubic'} B-spline of the ${c.closed ? 'closed ' : ''}polygon, which the steps approach. Drag a control point to reshape.`;
       for (const [name, t] of Object.entries(tables)) t.refresh(model.counts[name]);
+      explorerLink.update(model, s).catch((err) => ctx.message.error(`The link to the curve explorer could not be made: ${err.message}`, 'link-error'));
     },
   };
 }
