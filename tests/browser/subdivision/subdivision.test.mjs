@@ -231,12 +231,14 @@ test('a level the core refuses shows why and keeps the previous level', async ()
   await focusPanel(page);
   for (let k = 1; k <= 2; k += 1) {
     await page.keyboard.press('>');
-    await page.waitForFunction((level) => window.wingspline.state.level === level, k);
+    // Level 2 has 131,072 faces: on the shared CI machine under load computing and drawing it
+    // has taken longer than the default 30 s wait, so this one waits up to 2 minutes.
+    await page.waitForFunction((level) => window.wingspline.state.level === level, k, { timeout: 120000 });
   }
   assert.equal(await page.evaluate(() => window.wingspline.message()), '');
   await page.keyboard.press('>');
-  await page.waitForFunction(() => window.wingspline.message() !== '');
-  await page.waitForSelector('#level-note:not([hidden])');
+  await page.waitForFunction(() => window.wingspline.message() !== '', null, { timeout: 120000 });
+  await page.waitForSelector('#level-note:not([hidden])', { timeout: 120000 });
   const note = await text(page, '#level-note');
   assert.match(note, /Level 3 is refused/);
   assert.match(note, /524,288 faces/);
