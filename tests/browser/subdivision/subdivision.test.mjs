@@ -254,10 +254,14 @@ test('the share link reproduces the level and the phase', async () => {
   await nextLevel(page);
   await page.keyboard.press('ArrowRight');
   await page.waitForFunction(() => window.wingspline.state.phase === 2);
+  // The panel shows the new phase on the next frame: read it once that frame has drawn
+  // (a clean-clone run under load read the label of the frame before).
+  await page.waitForFunction(() => /^level 1 → 2/.test(document.querySelector('#phase-label')?.textContent ?? ''));
   const label = await text(page, '#phase-label');
   const mask = await weights(page);
   const link = await page.evaluate(() => window.wingspline.shareUrl());
   const again = await env.openLesson(link);
+  await again.waitForFunction((expected) => document.querySelector('#phase-label')?.textContent === expected, label);
   const state = await again.evaluate(() => window.wingspline.state);
   assert.equal(state.level, 1);
   assert.equal(state.phase, 2);
