@@ -350,6 +350,36 @@ val mesh_bounding_box(int32_t handle) {
     });
 }
 
+// {face, near: Int32Array, distance: Float64Array}: the faces seen along `towards` through
+// `point` (issue 17, view_geometry.h pick_faces): the nearest hit face (-1: none) and the
+// faces within `radius` of the line of sight, the hit face first.
+val mesh_pick(int32_t handle, double px, double py, double pz, double tx, double ty, double tz, double radius, int32_t max_near) {
+    return guarded([&] {
+        const PickResult p = pick_faces(entry(handle).winged, {px, py, pz}, {tx, ty, tz}, radius, max_near);
+        std::vector<int32_t> faces;
+        std::vector<double> distances;
+        for (const PickNear& n : p.near) faces.push_back(n.face), distances.push_back(n.distance);
+        val r = val::object();
+        r.set("face", p.face);
+        r.set("near", to_typed_array(faces));
+        r.set("distance", to_typed_array(distances));
+        return r;
+    });
+}
+
+// {positions: Float64Array, triangles: Int32Array, cell}: the lighter picture drawn while
+// the view moves (view_geometry.h display_proxy).
+val mesh_display_proxy(int32_t handle, int32_t target) {
+    return guarded([&] {
+        const DisplayProxy p = display_proxy(entry(handle).winged, target);
+        val r = val::object();
+        r.set("positions", to_typed_array(p.positions));
+        r.set("triangles", to_typed_array(p.triangles));
+        r.set("cell", p.cell);
+        return r;
+    });
+}
+
 // {normal: Float64Array(3)}: the area-weighted unit normal at vertex v (0 0 0 if none).
 val mesh_vertex_normal(int32_t handle, int32_t v) {
     return guarded([&] {
@@ -782,6 +812,8 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshPlanes", &mesh_planes);
     emscripten::function("meshNormals", &mesh_normals);
     emscripten::function("meshBoundingBox", &mesh_bounding_box);
+    emscripten::function("meshPick", &mesh_pick);
+    emscripten::function("meshDisplayProxy", &mesh_display_proxy);
     emscripten::function("meshVertexNormal", &mesh_vertex_normal);
     emscripten::function("meshSetVertexPosition", &mesh_set_vertex_position);
     emscripten::function("meshBytes", &mesh_bytes);

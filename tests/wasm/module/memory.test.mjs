@@ -164,6 +164,9 @@ const cases = [
     [['invalid-argument', () => lecture.tables('edge-list', { offset: -1 })], ['unknown-representation', () => lecture.tables('wingededge')]]],
   ['mesh.boundingBox / vertexNormal', REDUCED, () => { lecture.boundingBox(); lecture.vertexNormal(1); },
     [['disposed', () => gone.boundingBox()], ['invalid-element', () => lecture.vertexNormal(V_MISSING)]]],
+  // Issue 17: picking and the display proxy of a big mesh.
+  ['mesh.pick / displayProxy', REDUCED, () => { lecture.pick([1, 0.5, 0], [0, 0, 1], { radius: 0.1 }); lecture.displayProxy(2); },
+    [['invalid-argument', () => lecture.pick([1, 0.5, 0], [0, 0, 0])], ['invalid-argument', () => lecture.displayProxy(0)]]],
   ['mesh.query', REDUCED, () => lecture.query('faces-around-vertex', 1),
     [['invalid-element', () => lecture.query('faces-around-vertex', V_MISSING)], ['unknown-query', () => lecture.query('faces-of-vertex', 1)]]],
   ['hooks.timeNormalsInCore', REDUCED, () => hooks.timeNormalsInCore(lecture, 1), [['invalid-argument', () => hooks.timeNormalsInCore(lecture, 0)]]],

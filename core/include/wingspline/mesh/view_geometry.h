@@ -6,6 +6,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <vector>
+
 namespace wingspline::mesh {
 
 struct BoundingBox {
@@ -19,5 +21,41 @@ BoundingBox bounding_box(const WingedEdgeMesh& mesh);
 // unit length: each face weighs by its area. (0, 0, 0) for an isolated vertex or faces
 // whose vectors cancel. Throws Error("invalid-element") for v out of range.
 glm::dvec3 vertex_normal(const WingedEdgeMesh& mesh, int32_t v);
+
+// Picking in an orthographic view (issue 17): the faces seen along the view direction.
+// `towards` points from the mesh to the viewer (any length > 0); `point` is any point on the
+// line of sight through the pointer. A face is hit where the line passes through one of
+// its fan triangles (v0, vi, vi+1); `face` is the hit face nearest the viewer (-1: none).
+// `near` lists the faces whose projection comes within `radius` (world units, measured in
+// the view plane) of the line: the hit face first, then faces turned towards the viewer by
+// distance (a face turned away is hidden behind the front of a closed mesh), at most
+// `max_near`. Removed faces are skipped. Every comparison is of lengths in the view
+// plane, so the answer does not change when the mesh, point and radius are moved,
+// turned or scaled together. Throws Error("invalid-argument") for a zero or non-finite
+// direction, a negative or non-finite radius or point.
+struct PickNear {
+    int32_t face;
+    double distance; // world units in the view plane; 0: the line passes through the face
+};
+struct PickResult {
+    int32_t face = -1;
+    std::vector<PickNear> near;
+};
+PickResult pick_faces(const WingedEdgeMesh& mesh, const glm::dvec3& point, const glm::dvec3& towards, double radius,
+                      int32_t max_near);
+
+// A lighter picture of a big mesh for drawing while the view moves (issue 17): vertex
+// clustering (Rossignac and Borrel 1993). The bounding box is cut into cubic cells of side
+// `cell`; each occupied cell becomes one vertex at the mean of its vertices; each fan
+// triangle of each face becomes a triangle of cells, dropped when two corners share a cell.
+// `cell` is chosen (from the box's size, then refined) so that about `target_triangles`
+// remain; a mesh with no more triangles than that is returned as its own fan triangles
+// with cell 0. Every proxy vertex lies within one cell diagonal of a vertex of the mesh.
+struct DisplayProxy {
+    std::vector<double> positions;  // xyz per proxy vertex
+    std::vector<int32_t> triangles; // three proxy vertices per triangle
+    double cell = 0;                // the cell side used (0: the mesh itself)
+};
+DisplayProxy display_proxy(const WingedEdgeMesh& mesh, int32_t target_triangles);
 
 } // namespace wingspline::mesh
