@@ -57,6 +57,15 @@ export class CanvasPainter {
     this.g.globalAlpha = 1;
   }
 
+  // A transparent canvas: the picture under it (the stage's WebGL2 underlay) shows through.
+  clearTransparent() {
+    const g = this.g;
+    g.save();
+    g.setTransform(1, 0, 0, 1, 0, 0);
+    g.clearRect(0, 0, g.canvas.width, g.canvas.height);
+    g.restore();
+  }
+
   clear() {
     const g = this.g;
     g.save();

@@ -4,6 +4,7 @@
 // the previous/next handle, arrows nudge it (Shift: finer), Escape deselects, + and -
 // zoom. Handles come from the lesson; the stage only finds the nearest one.
 import { Transform } from './painter.js';
+import { createGlMesh } from '../ui/gl-mesh.js';
 
 const HIT_RADIUS_PX = 14;
 
@@ -20,6 +21,51 @@ export function createStage(canvas, hooks) {
     return new Transform({ cx: v.cx, cy: v.cy, zoom: v.zoom, width: cssWidth, height: cssHeight });
   }
 
+  // The WebGL2 canvas under this one (issue 17), made on a lesson's first request:
+  // { canvas, renderer } once made, false where the browser has no WebGL2 (or lost it).
+  let underlay = null;
+  function placeUnderlay() {
+    if (!underlay) return;
+    const style = underlay.canvas.style;
+    style.left = `${canvas.offsetLeft}px`;
+    style.top = `${canvas.offsetTop}px`;
+    style.width = `${cssWidth}px`;
+    style.height = `${cssHeight}px`;
+  }
+  function noWebGl(reason) {
+    underlay = false;
+    canvas.classList.remove('over-gl');
+    if (canvas.parentElement?.querySelector('.stage-note')) return;
+    const note = document.createElement('p');
+    note.className = 'stage-note';
+    note.setAttribute('role', 'status');
+    note.textContent = `Drawn with the 2D canvas: ${reason}, so big meshes draw slowly.`;
+    canvas.after(note);
+  }
+  function makeUnderlay() {
+    const glCanvas = document.createElement('canvas');
+    glCanvas.className = 'gl-underlay';
+    glCanvas.setAttribute('aria-hidden', 'true');
+    let renderer = null;
+    try {
+      renderer = createGlMesh(glCanvas);
+    } catch (err) {
+      renderer = null;
+      console.warn(err);
+    }
+    if (!renderer) { noWebGl('this browser has no WebGL2'); return; }
+    canvas.before(glCanvas);
+    canvas.classList.add('over-gl');
+    glCanvas.addEventListener('webglcontextlost', (event) => {
+      event.preventDefault();
+      glCanvas.remove();
+      noWebGl('the graphics card stopped answering (WebGL2 context lost)');
+      hooks.onResize();
+    });
+    underlay = { canvas: glCanvas, renderer };
+    placeUnderlay();
+  }
+
   function resize() {
     const rect = canvas.getBoundingClientRect();
     dpr = window.devicePixelRatio || 1;
@@ -27,6 +73,7 @@ export function createStage(canvas, hooks) {
     cssHeight = Math.max(1, rect.height);
     canvas.width = Math.round(cssWidth * dpr);
     canvas.height = Math.round(cssHeight * dpr);
+    placeUnderlay();
     hooks.onResize();
   }
   new ResizeObserver(resize).observe(canvas);
@@ -169,6 +216,13 @@ export function createStage(canvas, hooks) {
       const rect = canvas.getBoundingClientRect();
       const [sx, sy] = transform().toScreen(x, y);
       return { x: rect.left + sx, y: rect.top + sy };
+    },
+    // The WebGL2 mesh renderer under the canvas (ui/gl-mesh.js), or null where the browser
+    // has none: the lesson then draws with the 2D painter, and a note under the canvas says so.
+    gl() {
+      if (underlay === null) makeUnderlay();
+      if (underlay) placeUnderlay();
+      return underlay ? underlay.renderer : null;
     },
     beginFrame() {
       g.setTransform(dpr, 0, 0, dpr, 0, 0);

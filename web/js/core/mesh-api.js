@@ -5,6 +5,12 @@
 import { WingsplineError, unwrap, fail, integerIn, isNumberArray } from './errors.js';
 import { readTable, findDescriptor } from './tables.js';
 
+// Three numbers [x, y, z] (whether they are finite is the core's check, with its message).
+function vector3(value, what) {
+  if (!isNumberArray(value) || value.length !== 3) fail('invalid-argument', `${what} must be three numbers [x, y, z]`);
+  return value;
+}
+
 // Mesh files cross into the module as UTF-8 bytes, copied once (see meshParse).
 const utf8 = new TextEncoder();
 
@@ -322,6 +328,28 @@ export class Mesh {
   boundingBox() {
     const r = unwrap(this.#raw.meshBoundingBox(this.#live()));
     return { min: Array.from(r.min), max: Array.from(r.max), centre: Array.from(r.centre) };
+  }
+
+  // Picking in an orthographic view (issue 17): the faces seen along `towards` (from the
+  // mesh to the viewer) on the line through `point`. {face: the nearest face the line passes
+  // through (-1: none), near: [{face, distance}]: faces within `radius` (world units in the
+  // view plane) of the line, the hit face first, then faces turned towards the viewer by
+  // distance, at most `max`}. Moving, turning or scaling everything together changes nothing.
+  pick(point, towards, { radius = 0, max = 16 } = {}) {
+    const p = vector3(point, 'point');
+    const t = vector3(towards, 'towards');
+    integerIn(max, 'max', 0, 1024);
+    if (typeof radius !== 'number') fail('invalid-argument', 'radius must be a number >= 0 (world units)');
+    const r = unwrap(this.#raw.meshPick(this.#live(), p[0], p[1], p[2], t[0], t[1], t[2], radius, max));
+    return { face: r.face, near: Array.from(r.near, (face, i) => ({ face, distance: r.distance[i] })) };
+  }
+
+  // A lighter picture of the mesh for drawing while the view moves (vertex clustering, about
+  // `targetTriangles` triangles; the mesh's own fan triangles when it has no more):
+  // {positions: Float64Array (xyz), triangles: Int32Array (3 per triangle), cell (0: itself)}.
+  displayProxy(targetTriangles) {
+    integerIn(targetTriangles, 'targetTriangles', 1, INT32_MAX);
+    return unwrap(this.#raw.meshDisplayProxy(this.#live(), targetTriangles));
   }
 
   // The unit normal at vertex v, [x, y, z]: the faces around v weighted by their area

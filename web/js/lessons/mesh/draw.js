@@ -5,8 +5,9 @@
 // rotated by the state's yaw and pitch (rotate by dragging empty canvas in 3D).
 import { CanvasPainter } from '../../app/painter.js';
 import { vLabel, eLabel, fLabel } from './labels.js';
+import { parseColour } from '../../ui/gl-mesh.js';
 
-export const LABEL_LIMIT = 400; // more elements than this: no labels (they would overlap)
+export const LABEL_LIMIT = 400; // more elements than this: labels culled by screen density
 const CACHE_EDGES = 2000;        // from this size the still mesh is drawn once into a bitmap
 
 // The view's rotation and projection (shared with the subdivision lesson): ui/mesh-view.js.
@@ -115,70 +116,201 @@ function drawBaseBatched(painter, model, colors) {
   if (segments.length) painter.segments(segments, edgeStyle);
 }
 
-function drawBase(painter, model, state, colors) {
+function drawBase(painter, model, state, colors, plan) {
   const P = model.projected;
   const zoom = state.view.zoom;
-  const labels = model.faces.length <= LABEL_LIMIT;
-  if (!labels && model.weShown.edges.length / 8 > LABEL_LIMIT) {
+  const small = model.faces.length <= LABEL_LIMIT;
+  if (!small && model.weShown.edges.length / 8 > LABEL_LIMIT) {
     drawBaseBatched(painter, model, colors);
-    drawVertices(painter, model, colors); // a grid of 450 faces has only 256 vertices: labelled
-    return;
-  }
-  const faceFill = colors.series[5];
-  const front = frontFacing(model, P);
-  for (const f of faceOrder(model, P)) {
-    painter.polygon(faceXY(model.faces[f], P), { fill: faceFill, alpha: front[f] ? 0.16 : 0.06, stroke: undefined });
-  }
-  const E = model.weShown.edges.length / 8;
-  const arrows = E <= LABEL_LIMIT;
-  for (let e = 0; e < E; e += 1) {
-    if (model.edgeGap?.[e] || (!arrows && model.mode3d && !edgeSeen(model, front, e))) continue;
-    const [ax, ay, bx, by] = arrows ? edgeEnds(model, P, e, zoom) : [P[3 * model.weShown.edges[8 * e]], P[3 * model.weShown.edges[8 * e] + 1], P[3 * model.weShown.edges[8 * e + 1]], P[3 * model.weShown.edges[8 * e + 1] + 1]];
-    if (arrows) painter.arrow(ax, ay, bx, by, { stroke: colors.ink, width: 1.6 });
-    else painter.line(ax, ay, bx, by, { stroke: colors.ink, width: 0.8, alpha: 0.7 });
-  }
-  if (labels) {
-    model.faces.forEach((face, f) => {
-      if (!face.length) return;
-      const [x, y] = centroid(face, P);
-      painter.text(x, y, fLabel(f), { fill: colors.series[2], font: 16, weight: 700, halo: colors.background });
-    });
-  }
-  if (arrows) {
+  } else {
+    const faceFill = colors.series[5];
+    const front = frontFacing(model, P);
+    for (const f of faceOrder(model, P)) {
+      painter.polygon(faceXY(model.faces[f], P), { fill: faceFill, alpha: front[f] ? 0.16 : 0.06, stroke: undefined });
+    }
+    const E = model.weShown.edges.length / 8;
+    const arrows = E <= LABEL_LIMIT;
     for (let e = 0; e < E; e += 1) {
-      if (model.edgeGap?.[e]) continue;
-      const s = model.weShown.edges[8 * e]; const t = model.weShown.edges[8 * e + 1];
-      const mx = (P[3 * s] + P[3 * t]) / 2; const my = (P[3 * s + 1] + P[3 * t + 1]) / 2;
-      painter.text(mx, my, eLabel(e), { fill: colors.ink, font: 13, weight: 600, halo: colors.background });
+      if (model.edgeGap?.[e] || (!arrows && model.mode3d && !edgeSeen(model, front, e))) continue;
+      const [ax, ay, bx, by] = arrows ? edgeEnds(model, P, e, zoom) : [P[3 * model.weShown.edges[8 * e]], P[3 * model.weShown.edges[8 * e] + 1], P[3 * model.weShown.edges[8 * e + 1]], P[3 * model.weShown.edges[8 * e + 1] + 1]];
+      if (arrows) painter.arrow(ax, ay, bx, by, { stroke: colors.ink, width: 1.6 });
+      else painter.line(ax, ay, bx, by, { stroke: colors.ink, width: 0.8, alpha: 0.7 });
     }
   }
-  drawVertices(painter, model, colors);
+  drawLabels(painter, model, state, colors, plan);
 }
 
-// Vertex discs and v labels, up to LABEL_LIMIT vertices.
-function drawVertices(painter, model, colors) {
+// The arrows of a small mesh drawn over the GPU picture (the GPU draws the faces only).
+function drawArrows(painter, model, state, colors) {
+  const E = model.weShown.edges.length / 8;
+  if (E > LABEL_LIMIT) return;
+  for (let e = 0; e < E; e += 1) {
+    if (model.edgeGap?.[e]) continue;
+    painter.arrow(...edgeEnds(model, model.projected, e, state.view.zoom), { stroke: colors.ink, width: 1.6 });
+  }
+}
+
+// ---------------------------------------------------------------- which labels (issue 17)
+// Labels only where they can be read. A small mesh (up to LABEL_LIMIT elements of a kind)
+// labels every element of that kind, as the slides do. A bigger one labels the elements the
+// walk, an edit or the pointer touches, and then as many others as fit on screen without
+// overlapping (a grid of placed label boxes, vertices first, then faces, then edges).
+// In 3D, an element only on faces turned away from the viewer gets no label, unless no face
+// at all is turned towards the viewer (an open sheet seen from behind shows its labels).
+const LABEL_BOX = { w: 34, h: 18 }; // CSS px of a typical label, for the density estimate
+const LABEL_CHAR_PX = 10;            // CSS px per character of a label (15 px bold, rounded up)
+const LABEL_MARGIN_PX = 6;           // and a margin, so neighbouring labels do not touch
+const VERTEX_LABEL_PX = 18;          // a vertex label's distance from its disc
+
+// Screen directions of the vertex labels: away from the faces around each vertex on a small
+// mesh (labelDirections), up and to the right on a big one (null: the unit diagonal).
+function vertexLabelDirections(model, P) {
+  return model.V <= LABEL_LIMIT ? labelDirections(model, P) : null;
+}
+const awayX = (away, v) => (away ? away[2 * v] : Math.SQRT1_2);
+const awayY = (away, v) => (away ? away[2 * v + 1] : Math.SQRT1_2);
+
+function frontMarks(model, P) {
+  if (!model.mode3d) return null;
+  const front = frontFacing(model, P);
+  if (!front.some((x, f) => x && model.faces[f].length)) return null;
+  const vertex = new Uint8Array(P.length / 3);
+  model.faces.forEach((face, f) => { if (front[f]) for (const v of face) vertex[v] = 1; });
+  return { face: front, vertex };
+}
+
+export function labelPlan(painter, model, state, forced = []) {
   const P = model.projected;
-  const V = P.length / 3;
-  if (V > LABEL_LIMIT) return;
-  const away = labelDirections(model, P);
-  for (let v = 0; v < V; v += 1) {
-    if (model.vertexGap?.[v]) continue;
+  const t = painter.t;
+  const scale = painter.scale ?? 1;
+  const plan = { vertices: [], faces: [], edges: [], forced: new Set(), away: null };
+  const E = model.weShown.edges.length / 8;
+  // A mesh with at most LABEL_LIMIT elements of every kind (the slides' meshes) is labelled
+  // whole; a bigger one by screen density.
+  const small = model.V <= LABEL_LIMIT && model.F <= LABEL_LIMIT && E <= LABEL_LIMIT;
+  // Density first (no per-face work on a zoomed-out big mesh): how many vertices are on
+  // screen; if their labels would cover more than half of it, only the touched elements
+  // are labelled.
+  const w = t.width; const h = t.height;
+  const boxW = LABEL_BOX.w * scale; const boxH = LABEL_BOX.h * scale;
+  let screen = null;
+  let crowded = false;
+  if (!small) {
+    let onScreen = 0;
+    screen = new Float32Array(2 * model.V);
+    for (let v = 0; v < model.V; v += 1) {
+      const [sx, sy] = t.toScreen(P[3 * v], P[3 * v + 1]);
+      screen[2 * v] = sx; screen[2 * v + 1] = sy;
+      if (sx >= 0 && sx <= w && sy >= 0 && sy <= h) onScreen += 1;
+    }
+    crowded = onScreen * boxW * boxH > 0.5 * w * h;
+  }
+  const front = crowded ? null : frontMarks(model, P);
+  const faceSeen = (f) => model.faces[f]?.length && (!front || front.face[f]);
+  const vertexSeen = (v) => !model.vertexGap?.[v] && (!front || front.vertex[v]);
+  const edgeOk = (e) => !model.edgeGap?.[e] && (!front || edgeSeen(model, front.face, e));
+  const key = (kind, i) => `${kind}${i}`;
+  for (const element of forced) {
+    if (!element || element.index < 0) continue;
+    const list = element.kind === 'vertex' ? plan.vertices : element.kind === 'face' ? plan.faces : plan.edges;
+    if (plan.forced.has(key(element.kind, element.index))) continue;
+    plan.forced.add(key(element.kind, element.index));
+    list.push(element.index);
+  }
+  if (small) {
+    for (let v = 0; v < model.V; v += 1) if (vertexSeen(v) && !plan.forced.has(key('vertex', v))) plan.vertices.push(v);
+    for (let f = 0; f < model.faces.length; f += 1) if (faceSeen(f) && !plan.forced.has(key('face', f))) plan.faces.push(f);
+    for (let e = 0; e < E; e += 1) if (edgeOk(e) && !plan.forced.has(key('edge', e))) plan.edges.push(e);
+    return plan;
+  }
+  if (crowded) return plan;
+  plan.away = vertexLabelDirections(model, P);
+  const placed = new Map();
+  // Claims the box of a label of `chars` characters centred at (sx, sy) if it is on screen
+  // and overlaps no box placed (`force`: claims it anyway, for the touched elements, which
+  // are drawn whatever). Widths: LABEL_CHAR_PX per character plus a margin.
+  const halfWidth = (chars) => ((LABEL_CHAR_PX * chars + LABEL_MARGIN_PX) * scale) / 2;
+  // Cells at least as wide as two of the widest boxes: overlaps are found in the 3 x 3 cells around.
+  const cell = Math.max(2 * halfWidth(9), 2 * boxH);
+  const fits = (sx, sy, chars, force = false) => {
+    const cx = Math.floor(sx / cell); const cy = Math.floor(sy / cell);
+    const half = halfWidth(chars);
+    if (!force) {
+      if (sx < 0 || sx > w || sy < 0 || sy > h) return false;
+      for (let i = cx - 1; i <= cx + 1; i += 1) {
+        for (let j = cy - 1; j <= cy + 1; j += 1) {
+          for (const [x, y, hw] of placed.get(i * 65536 + j) ?? []) if (Math.abs(x - sx) < hw + half && Math.abs(y - sy) < boxH) return false;
+        }
+      }
+    }
+    const k = cx * 65536 + cy;
+    if (!placed.has(k)) placed.set(k, []);
+    placed.get(k).push([sx, sy, half]);
+    return true;
+  };
+  const at = (x, y) => t.toScreen(x, y);
+  // A vertex label sits VERTEX_LABEL_PX beside its disc (drawLabels): its box is there.
+  const vx = (v) => screen[2 * v] + VERTEX_LABEL_PX * scale * awayX(plan.away, v);
+  const vy = (v) => screen[2 * v + 1] - VERTEX_LABEL_PX * scale * awayY(plan.away, v);
+  const edgeMid = (e) => {
+    const a = model.weShown.edges[8 * e]; const b = model.weShown.edges[8 * e + 1];
+    return [(screen[2 * a] + screen[2 * b]) / 2, (screen[2 * a + 1] + screen[2 * b + 1]) / 2];
+  };
+  // The touched elements' boxes first (they are drawn whatever the overlap).
+  for (const v of plan.vertices) fits(vx(v), vy(v), vLabel(v).length, true);
+  for (const f of plan.faces) if (model.faces[f]?.length) fits(...at(...centroid(model.faces[f], P)), fLabel(f).length, true);
+  for (const e of plan.edges) if (model.weShown.edges[8 * e] >= 0 && model.weShown.edges[8 * e + 1] >= 0) fits(...edgeMid(e), eLabel(e).length, true);
+  for (let v = 0; v < model.V; v += 1) if (vertexSeen(v) && !plan.forced.has(key('vertex', v)) && fits(vx(v), vy(v), vLabel(v).length)) plan.vertices.push(v);
+  for (let f = 0; f < model.faces.length; f += 1) {
+    if (!faceSeen(f) || plan.forced.has(key('face', f))) continue;
+    const [x, y] = at(...centroid(model.faces[f], P));
+    if (fits(x, y, fLabel(f).length)) plan.faces.push(f);
+  }
+  for (let e = 0; e < E; e += 1) {
+    if (!edgeOk(e) || plan.forced.has(key('edge', e)) || model.weShown.edges[8 * e] < 0 || model.weShown.edges[8 * e + 1] < 0) continue;
+    if (fits(...edgeMid(e), eLabel(e).length)) plan.edges.push(e);
+  }
+  return plan;
+}
+
+function drawLabels(painter, model, state, colors, plan) {
+  const P = model.projected;
+  // Every vertex of a mesh of up to LABEL_LIMIT vertices has its disc (a handle to drag);
+  // the labelled ones get theirs below.
+  if (model.V <= LABEL_LIMIT) {
+    const labelled = new Set(plan.vertices);
+    for (let v = 0; v < model.V; v += 1) {
+      if (!labelled.has(v) && !model.vertexGap?.[v]) painter.circle(P[3 * v], P[3 * v + 1], 5, { fill: colors.accent, stroke: colors.background, width: 1.5 });
+    }
+  }
+  for (const f of plan.faces) {
+    const [x, y] = centroid(model.faces[f], P);
+    painter.text(x, y, fLabel(f), { fill: colors.series[2], font: 16, weight: 700, halo: colors.background });
+  }
+  for (const e of plan.edges) {
+    const s = model.weShown.edges[8 * e]; const t = model.weShown.edges[8 * e + 1];
+    if (s < 0 || t < 0) continue;
+    painter.text((P[3 * s] + P[3 * t]) / 2, (P[3 * s + 1] + P[3 * t + 1]) / 2, eLabel(e), { fill: colors.ink, font: 13, weight: 600, halo: colors.background });
+  }
+  const away = plan.vertices.length ? (plan.away ?? vertexLabelDirections(model, P)) : null;
+  for (const v of plan.vertices) {
+    const dx = awayX(away, v); const dy = awayY(away, v);
     painter.circle(P[3 * v], P[3 * v + 1], 5, { fill: colors.accent, stroke: colors.background, width: 1.5 });
-    painter.text(P[3 * v], P[3 * v + 1], vLabel(v), { fill: colors.accent, font: 15, weight: 700, dx: 18 * away[2 * v], dy: -18 * away[2 * v + 1], halo: colors.background });
+    painter.text(P[3 * v], P[3 * v + 1], vLabel(v), { fill: colors.accent, font: 15, weight: 700, dx: VERTEX_LABEL_PX * dx, dy: -VERTEX_LABEL_PX * dy, halo: colors.background });
   }
 }
 
 // One per lesson view (setup): the picture of the last base drawing of a big mesh.
 export function createBaseCache() {
-  return { key: null, sceneKey: null, view: null, canvas: null, ms: 0, timer: 0 };
+  return { key: null, sceneKey: null, view: null, canvas: null, ms: 0, timer: 0, gpu: { viewKey: null, meshKey: null, timer: 0 } };
 }
 const SLOW_BASE_MS = 30;     // a base picture slower than this is not redrawn while panning
 const SETTLE_MS = 200;       // ... but once the view has been still this long
 
-function drawBaseCached(baseCache, painter, model, state, ctx) {
+function drawBaseCached(baseCache, painter, model, state, ctx, plan) {
   const E = model.weShown.edges.length / 8;
   if (!(painter instanceof CanvasPainter) || E < CACHE_EDGES) {
-    drawBase(painter, model, state, ctx.colors);
+    drawBase(painter, model, state, ctx.colors, plan);
     return;
   }
   const { width, height, dpr } = ctx.stage.size;
@@ -196,6 +328,7 @@ function drawBaseCached(baseCache, painter, model, state, ctx) {
     painter.g.drawImage(baseCache.canvas, ox, oy, width * k, height * k);
     clearTimeout(baseCache.timer);
     baseCache.timer = setTimeout(() => { baseCache.sceneKey = null; ctx.render(); }, SETTLE_MS);
+    drawLabels(painter, model, state, ctx.colors, plan);
     return;
   }
   if (baseCache.key !== key) {
@@ -206,10 +339,11 @@ function drawBaseCached(baseCache, painter, model, state, ctx) {
     const g = canvas.getContext('2d');
     g.setTransform(dpr, 0, 0, dpr, 0, 0);
     g.clearRect(0, 0, width, height);
-    drawBase(new CanvasPainter(g, painter.t, { scale: painter.scale, background: ctx.colors.background }), model, state, ctx.colors);
+    drawBase(new CanvasPainter(g, painter.t, { scale: painter.scale, background: ctx.colors.background }), model, state, ctx.colors, { vertices: [], faces: [], edges: [] });
     Object.assign(baseCache, { key, sceneKey, view: { ...v }, canvas, ms: performance.now() - t0 });
   }
   painter.g.drawImage(baseCache.canvas, 0, 0, width, height);
+  drawLabels(painter, model, state, ctx.colors, plan); // labels follow the walk: not in the bitmap
 }
 
 function highlightEdge(painter, model, e, style) {
@@ -241,12 +375,12 @@ function drawWalk(painter, model, state, colors) {
   }
   if (frame.current >= 0 && !frame.done) highlightEdge(painter, model, frame.current, { stroke: current, width: 11, alpha: 0.55 });
   const zoom = state.view.zoom;
-  const labelled = model.E <= LABEL_LIMIT;
   for (let k = 0; k < frame.foundCount; k += 1) {
     const e = frame.order[k];
-    // Found edges keep their S -> E arrow and their label on top of the highlight.
+    // Found edges keep their S -> E arrow and their label on top of the highlight (on a
+    // mesh of any size: the walk's elements are always labelled).
     painter.arrow(...edgeEnds(model, P, e, zoom), { stroke: found, width: 4.5 });
-    if (labelled) {
+    {
       const s0 = model.weShown.edges[8 * e]; const t0 = model.weShown.edges[8 * e + 1];
       painter.text((P[3 * s0] + P[3 * t0]) / 2, (P[3 * s0 + 1] + P[3 * t0 + 1]) / 2, eLabel(e), { fill: colors.ink, font: 13, weight: 700, halo: colors.background });
     }
@@ -258,9 +392,74 @@ function drawWalk(painter, model, state, colors) {
   if (!frame.done && frame.next >= 0 && frame.line >= 2) highlightEdge(painter, model, frame.next, { stroke: found, width: 3, dash: [6, 6] });
 }
 
+// The elements the walk, an edit or the pointer touches: always labelled.
+function touched(model, selection) {
+  const out = [];
+  if (model.frame) {
+    out.push({ kind: model.walkKind, index: model.walkElement });
+    if (model.frame.current >= 0) out.push({ kind: 'edge', index: model.frame.current });
+    if (model.frame.next >= 0 && !model.frame.done) out.push({ kind: 'edge', index: model.frame.next });
+  }
+  if (model.editRow) out.push(model.editRow);
+  if (model.lastEdit && model.lastOperation?.rows) {
+    for (const row of model.lastOperation.rows.slice(0, 24)) out.push({ kind: row.table, index: row.row });
+  }
+  out.push(selection.pick, selection.hover);
+  return out.filter((x) => x && ['vertex', 'edge', 'face'].includes(x.kind) && Number.isInteger(x.index));
+}
+
+// The style of the GPU picture: what drawBase draws as paths, as one draw call each.
+// A big mesh in 3D is a lit nearest surface; its edges are drawn while they are at least
+// EDGE_SPACING_PX apart on screen on average (closer, they would be a grey blur). While the
+// view moves, a mesh of more than PROXY_FROM triangles is drawn as its display proxy (the
+// core's vertex clustering, PROXY_TRIANGLES), and whole again SETTLE_MS after the last move.
+const EDGE_SPACING_PX = 4;
+const PROXY_FROM = 60000;
+const PROXY_TRIANGLES = 24000;
+function drawGpu(gl, gpu, model, state, ctx) {
+  const { width, height, dpr } = ctx.stage.size;
+  const v = state.view;
+  const centre = model.centre;
+  const key = `${model.source}|${model.topology}|${model.version}|${model.weShown === model.we ? 'all' : model.editStep}`;
+  gl.setMesh(key, {
+    positions: model.positions, faceOffsets: model.faceOffsets, faceVertices: model.faceVertices,
+    edges: model.weShown.edges, edgeStride: 8, edgeGap: model.edgeGap, centre,
+  });
+  const viewKey = `${key}|${model.rotation.join(',')}|${v.cx}|${v.cy}|${v.zoom}|${width}|${height}`;
+  const moving = gpu.viewKey !== null && gpu.viewKey !== viewKey && gpu.meshKey === key && gl.triangleCount > PROXY_FROM;
+  gpu.viewKey = viewKey;
+  gpu.meshKey = key;
+  if (moving) {
+    if (!gl.hasProxy) gl.setProxy(key, model.mesh.displayProxy(PROXY_TRIANGLES));
+    clearTimeout(gpu.timer);
+    gpu.timer = setTimeout(() => { gpu.viewKey = null; ctx.render(); }, SETTLE_MS);
+  }
+  const E = model.weShown.edges.length / 8;
+  const big = E > LABEL_LIMIT;
+  const spacing = Math.sqrt((Math.PI * (gl.radius * v.zoom) ** 2) / Math.max(1, model.F / 2));
+  const colors = ctx.colors;
+  gl.draw(
+    { R: model.rotation, offset: [centre[0] - v.cx, centre[1] - v.cy], zoom: v.zoom, width, height, dpr },
+    {
+      background: parseColour(colors.background), fill: parseColour(colors.series[5]), ink: parseColour(colors.ink),
+      faceAlpha: 0.16, backAlpha: model.mode3d ? 0.06 : 0.16, lit: big && model.mode3d,
+      edges: big && !moving && (!model.mode3d || spacing >= EDGE_SPACING_PX), edgeAlpha: 0.7, useProxy: moving,
+    },
+  );
+}
+
 export function drawMesh(baseCache, selection, painter, model, state, ctx) {
   if (!model) return;
-  drawBaseCached(baseCache, painter, model, state, ctx);
+  const plan = labelPlan(painter, model, state, touched(model, selection));
+  const gl = painter instanceof CanvasPainter ? ctx.stage.gl() : null;
+  if (gl) {
+    painter.clearTransparent();
+    drawGpu(gl, baseCache.gpu, model, state, ctx);
+    drawArrows(painter, model, state, ctx.colors);
+    drawLabels(painter, model, state, ctx.colors, plan);
+  } else {
+    drawBaseCached(baseCache, painter, model, state, ctx, plan);
+  }
   drawWalk(painter, model, state, ctx.colors);
   drawElement(painter, model, selection.hover, ctx.colors, false);
   drawElement(painter, model, selection.pick, ctx.colors, true);
@@ -270,9 +469,16 @@ export function drawMesh(baseCache, selection, painter, model, state, ctx) {
 
 // The element under a canvas point (world coordinates of the view plane): an edge within
 // a few pixels, else the front-most face containing the point.
+// On a big mesh the core answers which faces are near the point (mesh.pick: the face the
+// line of sight passes through, nearest the viewer, and the faces within VERTEX_PICK_PX of it),
+// and only their corners and sides are measured: a vertex within VERTEX_PICK_PX, else an
+// edge within 6 px, else the face under the point. A small mesh is searched whole, below.
+const VERTEX_PICK_PX = 8;
+const CORE_PICK_EDGES = 2000; // from this size the core finds the candidates
 export function pickElement(model, x, y, zoom) {
   const P = model.projected;
   const E = model.weShown.edges.length / 8;
+  if (E > CORE_PICK_EDGES) return pickInCore(model, x, y, zoom);
   const tolerance = 6 / zoom;
   let best = null;
   let bestD = tolerance;
@@ -300,4 +506,40 @@ export function pickElement(model, x, y, zoom) {
     if (depth > faceDepth) { faceDepth = depth; face = { kind: 'face', index }; }
   });
   return face;
+}
+
+function pickInCore(model, x, y, zoom) {
+  // The view-plane point (x, y) back to the world: R^T ((x, y, 0) - c) + c (in 2D, R = I).
+  const R = model.rotation;
+  const c = model.mode3d ? model.centre : [0, 0, 0];
+  const dx = x - c[0]; const dy = y - c[1]; const dz = -c[2];
+  const point = [R[0] * dx + R[3] * dy + R[6] * dz + c[0], R[1] * dx + R[4] * dy + R[7] * dz + c[1], R[2] * dx + R[5] * dy + R[8] * dz + c[2]];
+  const { face, near } = model.mesh.pick(point, [R[6], R[7], R[8]], { radius: VERTEX_PICK_PX / zoom, max: 12 });
+  if (!near.length) return null;
+  const P = model.projected;
+  let best = null;
+  let bestD = VERTEX_PICK_PX;
+  for (const { face: f } of near) {
+    for (let i = model.faceOffsets[f]; i < model.faceOffsets[f + 1]; i += 1) {
+      const v = model.faceVertices[i];
+      const d = Math.hypot(P[3 * v] - x, P[3 * v + 1] - y) * zoom;
+      if (d < bestD) { bestD = d; best = { kind: 'vertex', index: v }; }
+    }
+  }
+  if (best) return best;
+  bestD = 6;
+  for (const { face: f } of near) {
+    for (const e of model.mesh.edgesOfFace(f)) {
+      if (model.edgeGap?.[e]) continue;
+      const s = model.weShown.edges[8 * e]; const t = model.weShown.edges[8 * e + 1];
+      if (s < 0 || t < 0) continue;
+      const ax = P[3 * s]; const ay = P[3 * s + 1]; const ex = P[3 * t] - ax; const ey = P[3 * t + 1] - ay;
+      const len2 = ex * ex + ey * ey;
+      const u = len2 > 0 ? Math.max(0, Math.min(1, ((x - ax) * ex + (y - ay) * ey) / len2)) : 0;
+      const d = Math.hypot(ax + u * ex - x, ay + u * ey - y) * zoom;
+      if (d < bestD) { bestD = d; best = { kind: 'edge', index: e }; }
+    }
+  }
+  if (best) return best;
+  return face >= 0 ? { kind: 'face', index: face } : null;
 }

@@ -51,7 +51,8 @@ const schema = {
   meshKind: oneOf(...MESH_KINDS.map((k) => k.id)),
   fanSize: integer({ min: 1, max: 64 }),
   grid: object({ nx: integer({ min: 1, max: 400 }), ny: integer({ min: 1, max: 400 }) }),
-  sphere: object({ slices: integer({ min: 3, max: 400 }), stacks: integer({ min: 3, max: 300 }) }),
+  // Up to BENCH.md's sphere_1000000 (1000 x 501) and a little more: the GPU draws it (issue 17).
+  sphere: object({ slices: integer({ min: 3, max: 1000 }), stacks: integer({ min: 3, max: 600 }) }),
   imported: nullable(object({
     name: text({ maxLength: 120 }),
     positions: list(number(), { min: 9, max: 3 * MAX_IMPORT_VERTICES }),
@@ -124,6 +125,7 @@ function wingedTables(derived, entry, keys) {
     derived.centre = null;
     derived.faceNormals = null;
     derived.sideKey = null;
+    derived.csr = null;
   }
   return derived.we;
 }
@@ -147,6 +149,7 @@ function compute(view, state, ctx) {
   const edited = entry.ops.length > 0;
   const faces = edited ? (derived.faces ??= faceList(entry.mesh.tables('vertex-face-tables').faces.arrays)) : entry.faces;
   derived.gaps ??= edited ? entry.mesh.gaps() : { vertices: [], edges: [], faces: [] };
+  derived.csr ??= faceCsr(faces); // the faces as the GPU renderer reads them (once per version)
   const gaps = derived.gaps.vertices.length + derived.gaps.edges.length + derived.gaps.faces.length;
   const record = entry.lastOperation;
   const editSteps = visibleSteps(record).length;
@@ -192,6 +195,9 @@ function compute(view, state, ctx) {
     projected: derived.projected,
     rotation: R,
     faces,
+    faceOffsets: derived.csr.offsets,
+    faceVertices: derived.csr.vertices,
+    centre: derived.centre,
     we,
     // The winged-edge tables as the edit player shows them (after editStep assignments).
     weShown,
@@ -215,6 +221,15 @@ function compute(view, state, ctx) {
     lastChange: derived.lastChange,
     derived,
   };
+}
+
+// Faces as offsets and corners (CSR): face f is vertices[offsets[f] .. offsets[f + 1]).
+function faceCsr(faces) {
+  const offsets = new Int32Array(faces.length + 1);
+  for (let f = 0; f < faces.length; f += 1) offsets[f + 1] = offsets[f] + faces[f].length;
+  const vertices = new Int32Array(offsets[faces.length]);
+  for (let f = 0; f < faces.length; f += 1) vertices.set(faces[f], offsets[f]);
+  return { offsets, vertices };
 }
 
 function unwritten(weShown, E, out) {

@@ -35,8 +35,8 @@ export function setupPanels(ctx, selection) {
   const fanN = sizeInput('fan-size', 'Fan triangles', 1, 64);
   const gridX = sizeInput('grid-nx', 'Grid quads across', 1, 400);
   const gridY = sizeInput('grid-ny', 'Grid quads down', 1, 400);
-  const sphereS = sizeInput('sphere-slices', 'Sphere slices', 3, 400);
-  const sphereT = sizeInput('sphere-stacks', 'Sphere stacks', 3, 300);
+  const sphereS = sizeInput('sphere-slices', 'Sphere slices', 3, 1000);
+  const sphereT = sizeInput('sphere-stacks', 'Sphere stacks', 3, 600);
   const sizeGroups = {
     fan: h('span', { class: 'size-group' }, labelled('triangles', fanN)),
     grid: h('span', { class: 'size-group' }, labelled('nx', gridX), labelled('ny', gridY)),

@@ -1,0 +1,261 @@
+// @ts-check
+// The GPU picture of a mesh (issue 17): one small WebGL2 renderer on the plain API, drawing
+// into the canvas the stage keeps under the 2D one (app/stage.js `underlay`). It draws what
+// the 2D painter would draw as batched paths (the face fills and, on a big mesh, the plain
+// edges); labels, arrows and the walk's highlights stay on the 2D canvas above it, and the
+// SVG export still goes through the painter. No geometry of the mesh is computed here:
+// the positions, faces and edges are the core's, the rotation is the view's (ui/mesh-view.js).
+//
+// Buffers follow the mesh: `setMesh` uploads once per (mesh id, version) key; a rotation or
+// a pan only changes uniforms. Positions are uploaded as float32 relative to the view's
+// centre (the bounding-box centre), so a mesh far from the origin keeps its precision.
+//
+// A big mesh costs the GPU per triangle (about 0.2 us each in SwiftShader, the software
+// GPU of a machine without one): while the view moves, the renderer draws the mesh's display
+// proxy (the core's vertex clustering, about PROXY_TRIANGLES triangles) if it has one, and the
+// lesson draws the whole mesh again once the view is still. A frame whose view, style and mesh
+// equal the last one's is not drawn again (the canvas keeps its picture), so a hover or a walk
+// step costs the GPU nothing. Picking is the core's (mesh.pick), not the GPU's: an id-buffer
+// pass cost ~230 ms for 100k faces here.
+
+/** @typedef {{ positions: Float64Array, faceOffsets: Int32Array, faceVertices: Int32Array,
+ *   edges: Int32Array, edgeStride: number, edgeGap: Uint8Array | null, centre: number[] }} GlMeshData */
+
+const FACE_VS = `#version 300 es
+in vec3 aPos;
+uniform mat3 uR;
+uniform vec2 uOffset;
+uniform vec2 uScale;
+uniform float uDepth;
+out vec3 vView;
+void main() {
+  vec3 p = uR * aPos;
+  vView = p;
+  gl_Position = vec4((p.xy + uOffset) * uScale, -p.z * uDepth, 1.0);
+}`;
+
+// Faces: the fill colour at the face's alpha (2D and small meshes, like the painter), or, on
+// a big mesh in 3D, a nearest-surface picture lit by the screen-space normal so its shape reads.
+const FACE_FS = `#version 300 es
+precision highp float;
+in vec3 vView;
+uniform vec4 uFill;
+uniform float uBackAlpha;
+uniform float uLit;
+out vec4 outColor;
+void main() {
+  float a = gl_FrontFacing ? uFill.a : uBackAlpha;
+  if (uLit > 0.5) {
+    vec3 n = normalize(cross(dFdx(vView), dFdy(vView)));
+    if (n.z < 0.0) n = -n; // the side seen
+    a = 0.08 + 0.5 * max(0.0, dot(n, normalize(vec3(-0.35, 0.45, 0.82))));
+  }
+  outColor = vec4(uFill.rgb * a, a);
+}`;
+
+const LINE_FS = `#version 300 es
+precision highp float;
+uniform vec4 uFill;
+out vec4 outColor;
+void main() { outColor = vec4(uFill.rgb * uFill.a, uFill.a); }`;
+
+function compile(gl, vs, fs) {
+  const program = gl.createProgram();
+  for (const [type, source] of [[gl.VERTEX_SHADER, vs], [gl.FRAGMENT_SHADER, fs]]) {
+    const shader = gl.createShader(type);
+    gl.shaderSource(shader, source);
+    gl.compileShader(shader);
+    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(`WebGL2 shader: ${gl.getShaderInfoLog(shader)}`);
+    gl.attachShader(program, shader);
+  }
+  gl.linkProgram(program);
+  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(`WebGL2 program: ${gl.getProgramInfoLog(program)}`);
+  const uniforms = {};
+  const count = gl.getProgramParameter(program, gl.ACTIVE_UNIFORMS);
+  for (let i = 0; i < count; i += 1) {
+    const name = gl.getActiveUniform(program, i).name;
+    uniforms[name] = gl.getUniformLocation(program, name);
+  }
+  return { program, uniforms };
+}
+
+// '#rrggbb' or 'rgb(r, g, b)' -> [r, g, b] in 0..1 (the theme's colours are one of these).
+export function parseColour(css) {
+  const s = String(css).trim();
+  if (s.startsWith('#')) {
+    const hex = s.length === 4 ? s.slice(1).split('').map((c) => c + c).join('') : s.slice(1, 7);
+    return [0, 2, 4].map((i) => parseInt(hex.slice(i, i + 2), 16) / 255);
+  }
+  const m = s.match(/rgba?\(([^)]*)\)/);
+  if (m) return m[1].split(/[ ,/]+/).slice(0, 3).map((x) => Number(x) / 255);
+  return [0.5, 0.5, 0.5];
+}
+
+// Fan triangle indices of every face that has corners (a removed face has none).
+function fanIndices(faceOffsets, faceVertices) {
+  let count = 0;
+  const F = faceOffsets.length - 1;
+  for (let f = 0; f < F; f += 1) count += Math.max(0, faceOffsets[f + 1] - faceOffsets[f] - 2);
+  const index = new Uint32Array(3 * count);
+  let k = 0;
+  for (let f = 0; f < F; f += 1) {
+    const start = faceOffsets[f]; const end = faceOffsets[f + 1];
+    for (let i = start + 1; i + 1 < end; i += 1) {
+      index[k] = faceVertices[start]; index[k + 1] = faceVertices[i]; index[k + 2] = faceVertices[i + 1];
+      k += 3;
+    }
+  }
+  return index;
+}
+
+// Positions as float32 relative to `centre`; returns them and the largest distance from it.
+function relativeTo(positions, centre) {
+  const n = positions.length / 3;
+  const out = new Float32Array(3 * n);
+  let r2 = 0;
+  for (let v = 0; v < n; v += 1) {
+    const x = positions[3 * v] - centre[0]; const y = positions[3 * v + 1] - centre[1]; const z = positions[3 * v + 2] - centre[2];
+    out[3 * v] = x; out[3 * v + 1] = y; out[3 * v + 2] = z;
+    r2 = Math.max(r2, x * x + y * y + z * z);
+  }
+  return { relative: out, radius: Math.sqrt(r2) || 1 };
+}
+
+/**
+ * A renderer on a WebGL2 context, or null when the browser has none.
+ * @param {HTMLCanvasElement} canvas
+ */
+export function createGlMesh(canvas) {
+  /** @type {WebGL2RenderingContext | null} */
+  const gl = canvas.getContext('webgl2', { antialias: false, premultipliedAlpha: true, alpha: false, depth: true, preserveDrawingBuffer: false });
+  if (!gl) return null;
+  const faceProgram = compile(gl, FACE_VS, FACE_FS);
+  const lineProgram = compile(gl, FACE_VS, LINE_FS);
+  // One set of buffers for the mesh, one for its proxy: {vao, positions, triangles, edges, counts}.
+  const makeSet = () => ({ vao: gl.createVertexArray(), positions: gl.createBuffer(), triangles: gl.createBuffer(), edges: gl.createBuffer(), triangleCount: 0, edgeCount: 0 });
+  const full = makeSet();
+  const proxy = makeSet();
+  let meshKey = null;
+  let proxyKey = null;
+  let radius = 1;
+  let centre = [0, 0, 0];
+  let lastDrawn = null; // the signature of the picture on the canvas
+  let closed = false;   // no boundary edge: a face turned away is hidden, not drawn (lit mode)
+
+  function fill(set, relative, index, lines) {
+    gl.bindVertexArray(set.vao);
+    gl.bindBuffer(gl.ARRAY_BUFFER, set.positions);
+    gl.bufferData(gl.ARRAY_BUFFER, relative, gl.STATIC_DRAW);
+    gl.enableVertexAttribArray(0);
+    gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
+    gl.bindVertexArray(null);
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, set.triangles);
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, index, gl.STATIC_DRAW);
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, set.edges);
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, lines, gl.STATIC_DRAW);
+    set.triangleCount = index.length / 3;
+    set.edgeCount = lines.length / 2;
+  }
+
+  return {
+    gl,
+    get meshKey() { return meshKey; },
+    get radius() { return radius; },
+    get triangleCount() { return full.triangleCount; },
+    get hasProxy() { return proxyKey === meshKey && meshKey !== null; },
+
+    /** Uploads the mesh when `key` (mesh id and version) differs from the last one. */
+    setMesh(key, /** @type {GlMeshData} */ data) {
+      if (key === meshKey) return;
+      const { positions, faceOffsets, faceVertices, edges, edgeStride, edgeGap } = data;
+      centre = data.centre.slice();
+      const r = relativeTo(positions, centre);
+      radius = r.radius;
+      const E = edges.length / edgeStride;
+      const lines = new Uint32Array(2 * E);
+      let n = 0;
+      closed = true;
+      for (let e = 0; e < E; e += 1) {
+        const s = edges[edgeStride * e]; const t = edges[edgeStride * e + 1];
+        if (edgeGap?.[e] || s < 0 || t < 0) continue;
+        if (edges[edgeStride * e + 2] < 0 || edges[edgeStride * e + 3] < 0) closed = false; // L or R missing
+        lines[n] = s; lines[n + 1] = t; n += 2;
+      }
+      fill(full, r.relative, fanIndices(faceOffsets, faceVertices), lines.subarray(0, n));
+      meshKey = key;
+      proxyKey = null;
+      lastDrawn = null;
+    },
+
+    /** The proxy drawn while the view moves: {positions (xyz), triangles} from mesh.displayProxy. */
+    setProxy(key, { positions, triangles }) {
+      if (key !== meshKey) return;
+      fill(proxy, relativeTo(positions, centre).relative, Uint32Array.from(triangles), new Uint32Array(0));
+      proxyKey = key;
+    },
+
+    /**
+     * Draws the mesh (or its proxy). view: {R (row-major 3x3), offset [x, y] (centre minus
+     * view centre, world units), zoom, width, height (CSS px), dpr}; style: {background, fill,
+     * ink: [r,g,b], faceAlpha, backAlpha, lit, edges (draw the edge lines), edgeAlpha,
+     * useProxy}. Returns false when the canvas already shows this picture.
+     */
+    draw(view, style) {
+      const width = Math.round(view.width * view.dpr); const height = Math.round(view.height * view.dpr);
+      const set = style.useProxy && proxyKey === meshKey ? proxy : full;
+      const signature = JSON.stringify([meshKey, set === proxy, view, style]);
+      if (signature === lastDrawn && canvas.width === width && canvas.height === height) return false;
+      lastDrawn = signature;
+      if (canvas.width !== width || canvas.height !== height) { canvas.width = width; canvas.height = height; }
+      gl.viewport(0, 0, width, height);
+      const [br, bg, bb] = style.background;
+      gl.clearColor(br, bg, bb, 1);
+      gl.clearDepth(1);
+      gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+      if (!meshKey) return true;
+      const R = view.R;
+      // GLSL mat3 is column-major: column j holds R[0][j], R[1][j], R[2][j].
+      const rotation = new Float32Array([R[0], R[3], R[6], R[1], R[4], R[7], R[2], R[5], R[8]]);
+      const setFrame = (p) => {
+        gl.uniformMatrix3fv(p.uniforms.uR, false, rotation);
+        gl.uniform2f(p.uniforms.uOffset, view.offset[0], view.offset[1]);
+        gl.uniform2f(p.uniforms.uScale, view.zoom / (view.width / 2), view.zoom / (view.height / 2));
+        gl.uniform1f(p.uniforms.uDepth, 1 / (radius * 1.01));
+      };
+      gl.bindVertexArray(set.vao);
+      gl.enable(gl.BLEND);
+      gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA); // premultiplied, like the 2D canvas
+      if (style.lit) {
+        // The nearest surface only, pushed back a little so its own edges are drawn on top.
+        gl.enable(gl.DEPTH_TEST);
+        gl.depthFunc(gl.LEQUAL);
+        gl.enable(gl.POLYGON_OFFSET_FILL);
+        gl.polygonOffset(1, 1);
+        // A closed mesh's faces turned away are behind its front: not rasterised at all
+        // (the software GPU is bound by the pixels it fills). Faces are CCW seen from outside.
+        if (closed) { gl.enable(gl.CULL_FACE); gl.cullFace(gl.BACK); gl.frontFace(gl.CCW); }
+      } else {
+        gl.disable(gl.DEPTH_TEST);
+      }
+      gl.useProgram(faceProgram.program);
+      setFrame(faceProgram);
+      gl.uniform4f(faceProgram.uniforms.uFill, style.fill[0], style.fill[1], style.fill[2], style.faceAlpha);
+      gl.uniform1f(faceProgram.uniforms.uBackAlpha, style.backAlpha);
+      gl.uniform1f(faceProgram.uniforms.uLit, style.lit ? 1 : 0);
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, set.triangles);
+      gl.drawElements(gl.TRIANGLES, 3 * set.triangleCount, gl.UNSIGNED_INT, 0);
+      gl.disable(gl.POLYGON_OFFSET_FILL);
+      if (style.edges && set.edgeCount) {
+        gl.useProgram(lineProgram.program);
+        setFrame(lineProgram);
+        gl.uniform4f(lineProgram.uniforms.uFill, style.ink[0], style.ink[1], style.ink[2], style.edgeAlpha);
+        gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, set.edges);
+        gl.drawElements(gl.LINES, 2 * set.edgeCount, gl.UNSIGNED_INT, 0);
+      }
+      gl.bindVertexArray(null);
+      gl.disable(gl.DEPTH_TEST);
+      gl.disable(gl.CULL_FACE);
+      return true;
+    },
+  };
+}
