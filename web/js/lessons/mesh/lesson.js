@@ -266,6 +266,39 @@ function fitView(view, model, stage) {
   return stage.fit(minX, minY, maxX, maxY, 0.18); // margin: room for the labels beside the vertices
 }
 
+// The walk on a big mesh (issue 17): when the walk's element or step changes and the ring
+// it walks would be a speck (under WALK_MIN_PX across) or off the canvas, the view centres
+// on it at WALK_ZOOM_FRACTION of the canvas. Once per change: a person who then zooms out
+// keeps their view. The first frame of a page records only (a saved or linked view stays).
+const WALK_MIN_PX = 80;
+const WALK_ZOOM_FRACTION = 0.4;
+function zoomToWalk(view, model, state, ctx) {
+  if (!model?.frames.length || model.E <= LABEL_LIMIT) return;
+  const key = `${model.source}:${state.walk}:${model.walkElement}:${model.stepIndex}`;
+  const first = view.walkZoomKey === undefined;
+  if (view.walkZoomKey === key) return;
+  view.walkZoomKey = key;
+  if (first) return;
+  // The ring: the ends of every edge the whole walk meets (its last frame), in the view plane.
+  const P = model.projected;
+  let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
+  for (const e of model.frames[model.frames.length - 1].order) {
+    for (const v of [model.we.edges[8 * e], model.we.edges[8 * e + 1]]) {
+      minX = Math.min(minX, P[3 * v]); maxX = Math.max(maxX, P[3 * v]);
+      minY = Math.min(minY, P[3 * v + 1]); maxY = Math.max(maxY, P[3 * v + 1]);
+    }
+  }
+  if (!Number.isFinite(minX)) return;
+  const { width, height } = ctx.stage.size;
+  const v = state.view;
+  const extent = Math.max(maxX - minX, maxY - minY, 1e-12);
+  const [sx, sy] = ctx.stage.transform().toScreen((minX + maxX) / 2, (minY + maxY) / 2);
+  const onCanvas = sx >= 0 && sx <= width && sy >= 0 && sy <= height;
+  if (onCanvas && extent * v.zoom >= WALK_MIN_PX) return;
+  const zoom = Math.min(1e5, Math.max(1, (WALK_ZOOM_FRACTION * Math.min(width, height)) / extent));
+  ctx.setView({ cx: (minX + maxX) / 2, cy: (minY + maxY) / 2, zoom: Math.max(zoom, v.zoom) });
+}
+
 function handles(view, model) {
   if (!model || model.V > 20000) return [];
   const out = [];
@@ -328,9 +361,11 @@ export const meshLesson = {
   // picture cache of a big mesh, the hovered and picked element; nothing of the lesson lives at module level.
   setup: (ctx) => {
     const selection = { hover: null, pick: null }; // the hovered and picked element: {kind, index}
-    return { selection, panels: setupPanels(ctx, selection), source: createMeshSource(), derived: createDerived(), baseCache: createBaseCache() };
+    // walkZoomKey: the walk (element, step) the view last followed (zoomToWalk; undefined until the first frame).
+    return { selection, panels: setupPanels(ctx, selection), source: createMeshSource(), derived: createDerived(), baseCache: createBaseCache(), walkZoomKey: undefined };
   },
   update: (view, model, state) => view.panels.update(model, state),
+  afterFrame: zoomToWalk,
   draw: (view, painter, model, state, ctx) => drawMesh(view.baseCache, view.selection, painter, model, state, ctx),
   handles,
   moveHandle,

@@ -1,0 +1,160 @@
+// Big meshes in the page (issue 17): the WebGL2 picture equals the 2D canvas's on the slides'
+// mesh, picking stays exact on a 100,000-face sphere, the walk on it zooms to its vertex,
+// and a browser without WebGL2 gets the 2D canvas and a note that says so.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { useSiteAndBrowser, openLesson as openLessonIn } from '../../helpers/browser.mjs';
+import { decodePng } from '../../helpers/png.mjs';
+
+const env = useSiteAndBrowser();
+const SPHERE = { slices: 250, stacks: 201 }; // BENCH.md's sphere_100000
+
+// A lesson page; `webgl2: false` gives the page a browser without WebGL2 (getContext('webgl2')
+// answers null, as it does where the GPU or the driver is missing).
+async function openMesh({ webgl2 = true } = {}) {
+  const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
+  if (!webgl2) {
+    await context.addInitScript(() => {
+      const getContext = HTMLCanvasElement.prototype.getContext;
+      HTMLCanvasElement.prototype.getContext = function withoutWebGl2(type, ...rest) {
+        return type === 'webgl2' ? null : getContext.call(this, type, ...rest);
+      };
+    });
+  }
+  return openLessonIn(context, `${env.site.url}mesh.html`);
+}
+
+// The stage as the person sees it (both canvases composited), decoded.
+async function stagePixels(page) {
+  // Two frames: the last change is drawn.
+  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+  const box = await page.locator('#stage').boundingBox();
+  return decodePng(await page.screenshot({ clip: box }));
+}
+
+// Share of pixels whose colour differs by more than `level` in some channel (0..255), outside
+// the rectangle `skip` ({x, y, width, height} in the pictures' pixels).
+function differing(a, b, level, skip = null) {
+  assert.equal(a.width, b.width);
+  assert.equal(a.height, b.height);
+  let count = 0;
+  for (let i = 0; i < a.rgba.length; i += 4) {
+    const x = (i / 4) % a.width; const y = Math.floor(i / 4 / a.width);
+    if (skip && x >= skip.x && x < skip.x + skip.width && y >= skip.y && y < skip.y + skip.height) continue;
+    if (Math.max(Math.abs(a.rgba[i] - b.rgba[i]), Math.abs(a.rgba[i + 1] - b.rgba[i + 1]), Math.abs(a.rgba[i + 2] - b.rgba[i + 2])) > level) count += 1;
+  }
+  return count / (a.width * a.height);
+}
+
+const commit = (page, patch) => page.evaluate((p) => {
+  const ctx = window.wingspline.ctx;
+  return ctx.commit({ ...ctx.state, ...p });
+}, patch);
+
+test('the lecture mesh drawn by WebGL2 equals the 2D canvas drawing, in the 2D and the 3D view; without WebGL2 a note says so', async () => {
+  const gl = await openMesh();
+  const plain = await openMesh({ webgl2: false });
+  assert.equal(await gl.locator('canvas.gl-underlay').count(), 1, 'the WebGL2 canvas is under the 2D one');
+  assert.equal(await gl.locator('.stage-note').count(), 0);
+  assert.equal(await plain.locator('canvas.gl-underlay').count(), 0);
+  assert.match(await plain.locator('.stage-note').textContent(), /2D canvas: this browser has no WebGL2/);
+  // Tolerance: edges of filled faces are anti-aliased by the 2D canvas and not by WebGL2, so
+  // pixels along the face boundaries may differ; at most 1% of the stage's pixels may differ
+  // by more than 24 of 255 in a channel. The same measure tells the 2D and 3D views apart
+  // (over 2%), so it can fail.
+  const flatGl = await stagePixels(gl);
+  const flatPlain = await stagePixels(plain);
+  // The note over the 2D canvas's top left is not part of the drawing.
+  const stageBox = await plain.locator('#stage').boundingBox();
+  const noteBox = await plain.locator('.stage-note').boundingBox();
+  const note = { x: Math.floor(noteBox.x - stageBox.x) - 2, y: Math.floor(noteBox.y - stageBox.y) - 2, width: Math.ceil(noteBox.width) + 4, height: Math.ceil(noteBox.height) + 4 };
+  const flat = differing(flatGl, flatPlain, 24, note);
+  assert.ok(flat < 0.01, `2D view: ${(100 * flat).toFixed(2)}% of pixels differ`);
+  for (const page of [gl, plain]) assert.ok(await commit(page, { mode3d: true }));
+  const turnedGl = await stagePixels(gl);
+  const turned = differing(turnedGl, await stagePixels(plain), 24, note);
+  assert.ok(turned < 0.01, `3D view: ${(100 * turned).toFixed(2)}% of pixels differ`);
+  const views = differing(flatGl, turnedGl, 24);
+  assert.ok(views > 0.02, `the measure sees the 2D and 3D views differ (${(100 * views).toFixed(2)}%)`);
+  assert.deepEqual([...gl.problems, ...plain.problems], []);
+});
+
+// The point of the page (client px) where the world point (x, y) of the view plane is drawn.
+const clientOf = (page, x, y) => page.evaluate(([a, b]) => window.wingspline.toClient(a, b), [x, y]);
+
+test('on a 100,000-face sphere the pointer finds the face, edge and vertex under it, with and without WebGL2', async () => {
+  for (const webgl2 of [true, false]) {
+    const page = await openMesh({ webgl2 });
+    assert.ok(await commit(page, { meshKind: 'sphere', sphere: SPHERE, mode3d: true }));
+    await page.waitForFunction(() => window.wingspline.model?.F === 100000);
+    // The face nearest the viewer (largest mean depth of its corners in the view, computed
+    // here from the projected positions, not by the page's picking), and the view zoomed so
+    // its corners are far apart on screen.
+    const target = await page.evaluate(() => {
+      const m = window.wingspline.model;
+      let best = -1; let bestDepth = -Infinity;
+      for (let f = 0; f < m.F; f += 1) {
+        let d = 0;
+        for (let i = m.faceOffsets[f]; i < m.faceOffsets[f + 1]; i += 1) d += m.projected[3 * m.faceVertices[i] + 2];
+        d /= m.faceOffsets[f + 1] - m.faceOffsets[f];
+        if (d > bestDepth) { bestDepth = d; best = f; }
+      }
+      const corners = Array.from(m.faceVertices.subarray(m.faceOffsets[best], m.faceOffsets[best + 1]));
+      const xy = corners.map((v) => [m.projected[3 * v], m.projected[3 * v + 1]]);
+      const centroid = [xy.reduce((s, p) => s + p[0], 0) / xy.length, xy.reduce((s, p) => s + p[1], 0) / xy.length];
+      const size = Math.max(...xy.map((p) => Math.hypot(p[0] - centroid[0], p[1] - centroid[1])));
+      return { face: best, corners, xy, centroid, size };
+    });
+    await page.evaluate(({ c, size }) => window.wingspline.ctx.setView({ cx: c[0], cy: c[1], zoom: 120 / size }), { c: target.centroid, size: target.size });
+    const hover = () => page.evaluate(() => window.wingspline.view.selection.hover);
+    let p = await clientOf(page, ...target.centroid);
+    await page.mouse.move(p.x, p.y);
+    await page.waitForFunction(() => window.wingspline.view.selection.hover?.kind === 'face');
+    assert.deepEqual(await hover(), { kind: 'face', index: target.face }, `WebGL2 ${webgl2}: the face under the pointer`);
+    // Its first corner, 3 px off.
+    p = await clientOf(page, ...target.xy[0]);
+    await page.mouse.move(p.x + 3, p.y);
+    await page.waitForFunction(() => window.wingspline.view.selection.hover?.kind === 'vertex');
+    assert.deepEqual(await hover(), { kind: 'vertex', index: target.corners[0] });
+    // The middle of its side from corner 0 to corner 1: the edge joining them.
+    const mid = [(target.xy[0][0] + target.xy[1][0]) / 2, (target.xy[0][1] + target.xy[1][1]) / 2];
+    p = await clientOf(page, ...mid);
+    await page.mouse.move(p.x, p.y);
+    await page.waitForFunction(() => window.wingspline.view.selection.hover?.kind === 'edge');
+    const edge = (await hover()).index;
+    const ends = await page.evaluate((e) => { const w = window.wingspline.model.we.edges; return [w[8 * e], w[8 * e + 1]].sort((a, b) => a - b); }, edge);
+    assert.deepEqual(ends, [target.corners[0], target.corners[1]].sort((a, b) => a - b), 'the edge joins the two corners');
+    // A click picks what is under the pointer, by touch as well.
+    p = await clientOf(page, ...target.centroid);
+    await page.mouse.click(p.x, p.y);
+    assert.deepEqual(await page.evaluate(() => window.wingspline.view.selection.pick), { kind: 'face', index: target.face });
+    assert.deepEqual(page.problems, []);
+  }
+});
+
+test('the walk on a 100,000-face sphere zooms to its vertex when it steps', async () => {
+  const page = await openMesh();
+  assert.ok(await commit(page, { meshKind: 'sphere', sphere: SPHERE, mode3d: true, vertex: 0 }));
+  await page.waitForFunction(() => window.wingspline.model?.F === 100000);
+  await page.evaluate(() => window.wingspline.ctx.fitView());
+  const before = await page.evaluate(() => window.wingspline.state.view.zoom);
+  await page.locator('#walk-title').click();
+  await page.keyboard.press('PageDown');
+  await page.waitForFunction((z) => window.wingspline.state.view.zoom > z, before);
+  // The north pole (vertex 0) is in the middle of the canvas and its ring (250 edges to the
+  // first ring of vertices) spans a good part of it.
+  const { pole, centre, ring } = await page.evaluate(() => {
+    const m = window.wingspline.model;
+    const p = window.wingspline.toClient(m.projected[0], m.projected[1]);
+    const r = document.getElementById('stage').getBoundingClientRect();
+    const far = m.frames[m.frames.length - 1].order.map((e) => {
+      const v = m.we.edges[8 * e] === 0 ? m.we.edges[8 * e + 1] : m.we.edges[8 * e];
+      const q = window.wingspline.toClient(m.projected[3 * v], m.projected[3 * v + 1]);
+      return Math.hypot(q.x - p.x, q.y - p.y);
+    });
+    return { pole: p, centre: { x: r.left + r.width / 2, y: r.top + r.height / 2 }, ring: Math.max(...far) };
+  });
+  assert.ok(Math.hypot(pole.x - centre.x, pole.y - centre.y) < 100, `the pole is near the middle (${JSON.stringify(pole)})`);
+  assert.ok(ring > 40, `the ring is ${ring.toFixed(1)} px across`);
+  assert.deepEqual(page.problems, []);
+});
