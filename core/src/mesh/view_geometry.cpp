@@ -94,55 +94,84 @@ PickResult pick_faces(const WingedEdgeMesh& mesh, const glm::dvec3& point, const
     const glm::dvec3 a = glm::normalize(glm::cross(helper, n));
     const glm::dvec3 b = glm::cross(n, a);
     const double qx = glm::dot(point, a), qy = glm::dot(point, b);
+    // Every vertex in the view frame once, relative to the point (a vertex is a corner of
+    // about six faces).
+    const int32_t V = mesh.vertex_count();
+    std::vector<double> vx(static_cast<std::size_t>(V)), vy(static_cast<std::size_t>(V));
+    for (int32_t v = 0; v < V; ++v) {
+        const glm::dvec3 p = mesh.position(v);
+        vx[static_cast<std::size_t>(v)] = glm::dot(p, a) - qx, vy[static_cast<std::size_t>(v)] = glm::dot(p, b) - qy;
+    }
+    // One pass over the edges. The line of sight passes through a face when the half-line
+    // from the point along +a crosses the face's sides an odd number of times (the
+    // crossing-number test, half-open in y so a corner on the half-line counts once); each
+    // side crossed toggles both faces of the edge. A side within the radius makes both its
+    // faces near, at the side's distance.
+    const int32_t F = mesh.face_count();
+    std::vector<char> odd(static_cast<std::size_t>(F), 0);
+    std::vector<int32_t> toggled;
+    std::vector<std::pair<int32_t, double>> close; // (face, distance of one of its sides)
+    const std::vector<EdgeRecord>& edges = mesh.edges();
+    const int32_t E = static_cast<int32_t>(edges.size());
+    for (int32_t e = 0; e < E; ++e) {
+        if (mesh.is_deleted(Edge(e))) continue;
+        const EdgeRecord& r = edges[static_cast<std::size_t>(e)];
+        const double xs = vx[static_cast<std::size_t>(r.start)], ys = vy[static_cast<std::size_t>(r.start)];
+        const double xt = vx[static_cast<std::size_t>(r.end)], yt = vy[static_cast<std::size_t>(r.end)];
+        if ((ys > 0) != (yt > 0) && xs + (0 - ys) * (xt - xs) / (yt - ys) > 0) {
+            for (const int32_t f : {r.left, r.right}) {
+                if (f == kNone) continue;
+                if (!odd[static_cast<std::size_t>(f)]) toggled.push_back(f);
+                odd[static_cast<std::size_t>(f)] ^= 1;
+            }
+        }
+        if (std::min(xs, xt) > radius || std::max(xs, xt) < -radius || std::min(ys, yt) > radius || std::max(ys, yt) < -radius)
+            continue;
+        const double d = segment_distance(0, 0, xs, ys, xt, yt);
+        if (d > radius) continue;
+        for (const int32_t f : {r.left, r.right})
+            if (f != kNone) close.push_back({f, d});
+    }
+    // The faces passed through: the nearest to the viewer is the one seen. Its depth where
+    // the line meets it: the fan triangle (0, i, i+1) containing the point, by barycentric
+    // coordinates (for a non-planar face, the triangle nearest containing it).
     PickResult result;
     double best_depth = -std::numeric_limits<double>::infinity();
     std::vector<int32_t> c;
-    std::vector<double> x, y, z;
-    const int32_t F = mesh.face_count();
-    for (int32_t f = 0; f < F; ++f) {
-        if (mesh.is_deleted(Face(f))) continue;
+    for (const int32_t f : toggled) {
+        if (!odd[static_cast<std::size_t>(f)]) continue;
         corners_of(mesh, f, c);
-        const std::size_t k = c.size();
-        if (k < 3) continue;
-        x.resize(k), y.resize(k), z.resize(k);
-        double minx = std::numeric_limits<double>::infinity(), maxx = -minx, miny = minx, maxy = -minx;
-        for (std::size_t i = 0; i < k; ++i) {
-            const glm::dvec3 p = mesh.position(c[i]);
-            x[i] = glm::dot(p, a) - qx, y[i] = glm::dot(p, b) - qy, z[i] = glm::dot(p, n);
-            minx = std::min(minx, x[i]), maxx = std::max(maxx, x[i]);
-            miny = std::min(miny, y[i]), maxy = std::max(maxy, y[i]);
-        }
-        if (minx > radius || maxx < -radius || miny > radius || maxy < -radius) continue;
-        // Through a fan triangle (0, i, i+1)? Barycentric signs, either orientation; the
-        // depth where the line meets it.
-        bool hit = false;
         double depth = -std::numeric_limits<double>::infinity();
-        for (std::size_t i = 1; i + 1 < k && !hit; ++i) {
-            const double d = (x[i] - x[0]) * (y[i + 1] - y[0]) - (x[i + 1] - x[0]) * (y[i] - y[0]);
-            if (d == 0) continue;
-            const double w1 = ((0 - x[0]) * (y[i + 1] - y[0]) - (x[i + 1] - x[0]) * (0 - y[0])) / d;
-            const double w2 = ((x[i] - x[0]) * (0 - y[0]) - (0 - x[0]) * (y[i] - y[0])) / d;
-            if (w1 >= 0 && w2 >= 0 && w1 + w2 <= 1) {
-                hit = true;
-                depth = z[0] + w1 * (z[i] - z[0]) + w2 * (z[i + 1] - z[0]);
-            }
+        for (std::size_t i = 1; i + 1 < c.size(); ++i) {
+            const double x0 = vx[static_cast<std::size_t>(c[0])], y0 = vy[static_cast<std::size_t>(c[0])];
+            const double x1 = vx[static_cast<std::size_t>(c[i])] - x0, y1 = vy[static_cast<std::size_t>(c[i])] - y0;
+            const double x2 = vx[static_cast<std::size_t>(c[i + 1])] - x0, y2 = vy[static_cast<std::size_t>(c[i + 1])] - y0;
+            const double det = x1 * y2 - x2 * y1;
+            if (det == 0) continue;
+            const double w1 = (-x0 * y2 + x2 * y0) / det, w2 = (x1 * -y0 + x0 * y1) / det;
+            const double z0 = glm::dot(mesh.position(c[0]), n);
+            const double z = z0 + w1 * (glm::dot(mesh.position(c[i]), n) - z0) + w2 * (glm::dot(mesh.position(c[i + 1]), n) - z0);
+            const bool inside = w1 >= 0 && w2 >= 0 && w1 + w2 <= 1;
+            if (inside || depth == -std::numeric_limits<double>::infinity()) depth = inside ? z : std::max(depth, z);
+            if (inside) break;
         }
-        double area2 = 0; // twice the signed area in the view plane
-        for (std::size_t i = 0, j = k - 1; i < k; j = i++) area2 += x[j] * y[i] - x[i] * y[j];
-        if (hit && depth > best_depth) best_depth = depth, result.face = f;
-        double distance = 0;
-        if (!hit) {
-            distance = std::numeric_limits<double>::infinity();
-            for (std::size_t i = 0, j = k - 1; i < k; j = i++)
-                distance = std::min(distance, segment_distance(0, 0, x[j], y[j], x[i], y[i]));
-        }
-        if (distance <= radius && (area2 > 0 || hit)) result.near.push_back({f, distance});
+        if (depth > best_depth) best_depth = depth, result.face = f;
     }
-    // Faces hit but behind the nearest one are hidden by it: only the nearest stays at 0.
+    // Near: the seen face first, then faces turned towards the viewer by the distance of
+    // their nearest side (a face passed through but behind the seen one is hidden by it).
+    std::sort(close.begin(), close.end(), [](const auto& l, const auto& r) { return l.first < r.first || (l.first == r.first && l.second < r.second); });
     std::vector<PickNear> near;
     if (result.face >= 0) near.push_back({result.face, 0});
-    for (const PickNear& p : result.near)
-        if (p.face != result.face && (p.distance > 0 || result.face < 0)) near.push_back(p);
+    for (std::size_t i = 0; i < close.size(); ++i) {
+        if (i > 0 && close[i].first == close[i - 1].first) continue; // the nearest side of each face
+        const int32_t f = close[i].first;
+        if (f == result.face || odd[static_cast<std::size_t>(f)] || mesh.is_deleted(Face(f))) continue;
+        corners_of(mesh, f, c);
+        double area2 = 0; // twice the signed area in the view plane
+        for (std::size_t k = 0, j = c.size() - 1; k < c.size(); j = k++)
+            area2 += vx[static_cast<std::size_t>(c[j])] * vy[static_cast<std::size_t>(c[k])] - vx[static_cast<std::size_t>(c[k])] * vy[static_cast<std::size_t>(c[j])];
+        if (area2 > 0) near.push_back({f, close[i].second});
+    }
     std::stable_sort(near.begin() + (result.face >= 0 ? 1 : 0), near.end(),
                      [](const PickNear& l, const PickNear& r) { return l.distance < r.distance; });
     if (near.size() > static_cast<std::size_t>(max_near)) near.resize(static_cast<std::size_t>(max_near));
@@ -155,12 +184,16 @@ DisplayProxy display_proxy(const WingedEdgeMesh& mesh, int32_t target_triangles)
     const int32_t F = mesh.face_count();
     const int32_t V = mesh.vertex_count();
     std::vector<int32_t> c;
+    // Fan triangles = corners - 2 per face; the corners are the edge sides that have a face.
     int64_t fan = 0;
+    const int32_t E = static_cast<int32_t>(mesh.edges().size());
+    for (int32_t e = 0; e < E; ++e) {
+        if (mesh.is_deleted(Edge(e))) continue;
+        const EdgeRecord& r = mesh.edges()[static_cast<std::size_t>(e)];
+        fan += (r.left != kNone) + (r.right != kNone);
+    }
     for (int32_t f = 0; f < F; ++f)
-        if (!mesh.is_deleted(Face(f)) && mesh.face_edges()[f] != kNone) {
-            corners_of(mesh, f, c);
-            fan += std::max<int64_t>(0, static_cast<int64_t>(c.size()) - 2);
-        }
+        if (!mesh.is_deleted(Face(f)) && mesh.face_edges()[f] != kNone) fan -= 2;
     DisplayProxy out;
     // Each face's fan triangles through a vertex map (identity for the mesh itself).
     auto triangles_through = [&](const std::vector<int32_t>& map) {
