@@ -8,11 +8,16 @@ import { h } from '../app/dom.js';
 const FULL_ROWS = 120;
 const WINDOW_MARGIN = 12;
 const FALLBACK_ROW_PX = 26;
+const SCROLL_KEYS = new Set(['Home', 'End', 'PageUp', 'PageDown', 'ArrowUp', 'ArrowDown', ' ']);
 
 export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnter, onRowLeave, onRowClick }) {
-  const thead = h('thead', {}, head.map((cells) => h('tr', {}, cells.map((cell) =>
+  // Header rows are rows 1..head.length of the whole table for assistive technology; data
+  // row i is row head.length + i + 1 (aria-rowindex), the table has head.length + total rows
+  // (aria-rowcount), so a windowed row is announced where it sits in the whole table.
+  const thead = h('thead', {}, head.map((cells, k) => h('tr', { 'aria-rowindex': k + 1 }, cells.map((cell) =>
     typeof cell === 'string' ? h('th', { scope: 'col' }, cell)
       : h('th', { scope: cell.scope ?? 'col', colspan: cell.colspan, rowspan: cell.rowspan, class: cell.class }, cell.text)))));
+  const headColumns = Math.max(1, ...head.map((cells) => cells.reduce((n, c) => n + (typeof c === 'string' ? 1 : (c.colspan ?? 1)), 0)));
   const tbody = h('tbody', {});
   const table = h('table', { class: 'data-table mesh-table', id, 'aria-rowcount': 0 }, h('caption', {}, caption), thead, tbody);
   const scroller = h('div', { class: 'table-scroll', tabindex: 0, 'aria-label': caption }, table);
@@ -33,7 +38,7 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
 
   function cellsOf(i) {
     const cells = row(i);
-    const rowEl = h('tr', { 'data-row': i, 'aria-rowindex': i + 2 },
+    const rowEl = h('tr', { 'data-row': i, 'aria-rowindex': head.length + i + 1 },
       h('th', { scope: 'row' }, rowLabel(i)),
       cells.map((c) => h('td', {}, c)));
     for (const name of rowMarks.get(i) ?? []) rowEl.classList.add(name);
@@ -56,15 +61,24 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
     scrollTopSeen = top;
     viewHeight = scroller.clientHeight || viewHeight || 400;
     const height = viewHeight;
-    first = Math.max(0, Math.floor(top / rowPx) - WINDOW_MARGIN);
-    last = Math.min(count - 1, Math.ceil((top + height) / rowPx) + WINDOW_MARGIN);
-    const rows = [h('tr', { class: 'spacer', 'aria-hidden': 'true' }, h('td', { colspan: 99, class: 'spacer-cell' }))];
-    rows[0].firstChild.style.height = `${first * rowPx}px`;
+    // Scrolled to the bottom: the last rows, whatever the height of the rows above (a row
+    // whose lists wrap is taller than rowPx, and the window would otherwise stop short).
+    const atEnd = top > 0 && top + height >= scroller.scrollHeight - rowPx;
+    const shown = Math.ceil(height / rowPx);
+    first = Math.max(0, (atEnd ? count - shown : Math.floor(top / rowPx)) - WINDOW_MARGIN);
+    last = atEnd ? count - 1 : Math.min(count - 1, Math.ceil((top + height) / rowPx) + WINDOW_MARGIN);
+    const rows = [];
     for (let i = first; i <= last; i += 1) rows.push(cellsOf(i));
-    const bottom = h('tr', { class: 'spacer', 'aria-hidden': 'true' }, h('td', { colspan: 99, class: 'spacer-cell' }));
-    bottom.firstChild.style.height = `${(count - 1 - last) * rowPx}px`;
-    rows.push(bottom);
-    tbody.replaceChildren(...rows);
+    // The spacers span the table's real columns (a larger colspan makes the browser lay out
+    // that many empty columns in every row: 99 cost tens of ms per tab switch).
+    const span = rows.reduce((n, r) => Math.max(n, r.children.length), headColumns);
+    const spacer = (px) => {
+      const tr = h('tr', { class: 'spacer', 'aria-hidden': 'true' }, h('td', { colspan: span, class: 'spacer-cell' }));
+      tr.firstChild.style.height = `${px}px`;
+      return tr;
+    };
+    tbody.replaceChildren(spacer(first * rowPx), ...rows, spacer((count - 1 - last) * rowPx));
+    if (atEnd) scroller.scrollTop = scroller.scrollHeight; // stays at the bottom if the rows are taller than rowPx
     if (!measured) {
       // One layout read, the first time: every row has the same height (CSS).
       const sample = tbody.children[1];
@@ -72,6 +86,18 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
     }
   }
 
+  // The keys that scroll a focused table are the table's: the page's shortcuts (the walk's
+  // Home, End, PageUp, PageDown, Space) do not take them, and the browser scrolls.
+  // Home and End jump at once (not the browser's smooth scroll over 100,000 rows).
+  scroller.addEventListener('keydown', (event) => {
+    if (!SCROLL_KEYS.has(event.key) || event.ctrlKey || event.metaKey || event.altKey) return;
+    event.stopPropagation();
+    if (event.key === 'Home' || event.key === 'End') {
+      event.preventDefault();
+      scroller.scrollTop = event.key === 'Home' ? 0 : scroller.scrollHeight;
+      if (count > FULL_ROWS) renderWindow();
+    }
+  });
   scroller.addEventListener('scroll', () => {
     if (count > FULL_ROWS && !pending) pending = requestAnimationFrame(renderWindow);
   });

@@ -180,9 +180,10 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       head: [[{ text: '', colspan: 1 }, { text: 'cross product P₁P₂ × P₁P₃ (001)', colspan: 4 }, { text: 'Newell (003)', colspan: 4 }, { text: '', colspan: 2 }],
         ['', 'A', 'B', 'C', 'D', 'A', 'B', 'C', 'D', 'unit normal (Newell)', 'planarity residual']],
       rowLabel: F, row: (f) => {
-        const p = model.derived.planes[f];
-        const n = model.derived.normals;
-        return [...p.cross.map((x) => num(x)), ...p.newell.map((x) => num(x)), `(${num(n[3 * f], 3)}, ${num(n[3 * f + 1], 3)}, ${num(n[3 * f + 2], 3)})`, num(p.residual, 3)];
+        // Read from the core's flat arrays (planeArrays, once per mesh version): only the rows in view.
+        const { cross, newell, residual, normals: n } = model.derived.planes;
+        const four = (a) => [num(a[4 * f]), num(a[4 * f + 1]), num(a[4 * f + 2]), num(a[4 * f + 3])];
+        return [...four(cross), ...four(newell), `(${num(n[3 * f], 3)}, ${num(n[3 * f + 1], 3)}, ${num(n[3 * f + 2], 3)})`, num(residual[f], 3)];
       } }),
   };
 
@@ -216,6 +217,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   const tableKind = Object.fromEntries(Object.entries(tables).map(([name, t]) => [name, t.kind]));
   const counts = { vertex: () => model.V, edge: () => model.E, face: () => model.F };
   const drawnVersion = {};
+  const revealed = {}; // table name -> the walk position whose row it last scrolled into view
 
   // Walk marks (current row, the column read) plus the hovered and picked element.
   function markElements({ reveal = false } = {}) {
@@ -245,7 +247,15 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       if (gapList?.length) rows['is-gap'] = Array.from(gapList);
       tables[name].mark({ rows, read, compared });
       if (reveal && selection.pick?.kind === kind) tables[name].reveal(selection.pick.index);
-      else if (frame && tab === 'winged' && rows['is-highlighted'].length) tables[name].reveal(frame.row);
+      else if (frame && tab === 'winged' && rows['is-highlighted'].length) {
+        // The walk's (or the edit player's) row is scrolled into view when it moves, not on
+        // every mark (a hover, a re-render): a person who scrolled the table keeps the place.
+        const key = `${model.topology}:${model.version}:${model.walkKind}:${model.walkElement}:${model.stepIndex}:${model.editStep}:${tab}`;
+        if (revealed[name] !== key) {
+          revealed[name] = key;
+          tables[name].reveal(frame.row);
+        }
+      }
     }
   }
 
@@ -299,11 +309,15 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
 
 
   function ensurePlanes() {
+    // Whole-mesh figures once per mesh version (lesson.js resets derived.planes), not per
+    // tab switch: the planes and normals as the core's arrays, and the largest residual.
     if (!model.derived.planes) {
-      model.derived.planes = model.mesh.planes();
-      model.derived.normals = model.mesh.normals();
+      const planes = model.mesh.planeArrays();
+      let worst = 0;
+      for (const r of planes.residual) worst = Math.max(worst, r);
+      model.derived.planes = { ...planes, normals: model.mesh.normals(), worst };
     }
-    const worst = model.derived.planes.reduce((m, p) => Math.max(m, p.residual), 0);
+    const { worst } = model.derived.planes;
     planeNote.textContent = model.is3dMesh
       ? `Largest planarity residual: ${num(worst, 3)} (0 for planar faces). The cross product uses only the first three vertices; Newell averages over all of them.`
       : 'This mesh lies in the plane z = 0, so every normal is ±(0, 0, 1): choose the tetrahedron, cube or sphere, or drag in the 3D view, to see real planes.';
