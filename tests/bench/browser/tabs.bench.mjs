@@ -6,13 +6,15 @@
 // spent in the lesson's update hook (the tabs themselves, without the canvas drawing).
 // Each repetition first moves vertex 0 a little, so the mesh has a new version and every
 // per-version cache is cold: "cold" is the first show of each tab on that version, "warm"
-// the second. One row per tab and phase, and the largest over the tabs per repetition.
+// the second. One row per tab and phase, and the largest over the tabs per repetition; the
+// same on the lecture mesh for comparison.
 // Never run by npm test.
 //   WINGSPLINE_TAB_SITES=before=/tmp/dist-old,after=dist node tests/bench/browser/tabs.bench.mjs
 // measures several built sites in one run (default: this worktree's dist/).
 import path from 'node:path';
 import { wants, report } from '../wasm/harness.mjs';
 import { startSite, launchBrowser, openPage, repoRoot } from '../../helpers/browser.mjs';
+import { chooseSphere } from '../../helpers/mesh-page.mjs';
 
 const TASK = 'ui_tab_switch';
 const REPETITIONS = 5;
@@ -29,18 +31,15 @@ function sites() {
   });
 }
 
-async function measure(root) {
+// sphere: BENCH.md's sphere_100000; otherwise the lecture mesh the page opens with (the
+// issue's yardstick: a switch on any mesh costs what it costs there).
+async function measure(root, sphere) {
   const site = await startSite({ root });
   const browser = await launchBrowser();
   try {
     const page = await openPage(browser, `${site.url}mesh.html`);
     await page.waitForSelector('body[data-ready=true]', { timeout: 20000 });
-    await page.selectOption('#mesh-kind', 'sphere');
-    await page.fill('#sphere-slices', String(SLICES));
-    await page.press('#sphere-slices', 'Enter');
-    await page.fill('#sphere-stacks', String(STACKS));
-    await page.press('#sphere-stacks', 'Enter');
-    await page.waitForFunction((f) => window.wingspline.model?.F === f, FACES, { timeout: 60000 });
+    if (sphere) await chooseSphere(page, SLICES, STACKS);
     const result = await page.evaluate(async (repetitions) => {
       const w = window.wingspline;
       const hooks = w.hooks;
@@ -100,9 +99,9 @@ async function measure(root) {
 }
 
 if (wants(TASK)) {
-  for (const { label, root } of sites()) {
-    const { tabs, times, checksum } = await measure(root);
-    const input = `sphere_${FACES}`;
+  for (const [sphere, { label, root }] of [true, false].flatMap((x) => sites().map((site) => [x, site]))) {
+    const { tabs, times, checksum } = await measure(root, sphere);
+    const input = sphere ? `sphere_${FACES}` : 'lecture';
     const site = label ? { site: label } : {};
     for (const phase of ['cold', 'warm']) {
       for (const tab of tabs) {
