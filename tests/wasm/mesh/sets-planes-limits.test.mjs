@@ -46,6 +46,35 @@ test('planes(): cross product from the face\'s own first three corners, reported
   }
 });
 
+test('planeArrays(): the planes as flat arrays, per face equal to planes() (issue 17: the planes table reads rows by window)', () => {
+  // The non-planar quad above: cross (0, -1, 1, 0) from P1 P2 P3; Newell (lecture 003, with
+  // the 1/2) computed here: A = 1/2 sum (z_i + z_i+1)(y_i - y_i+1) = -1/2, B = -1/2, C = 1.
+  const quad = api.buildMesh({ positions: [0, 0, 0, 1, 0, 0, 1, 1, 1, 0, 1, 0], faces: [[0, 1, 2, 3]] });
+  try {
+    const a = quad.planeArrays();
+    assert.deepEqual(Array.from(a.cross, (x) => x + 0), [0, -1, 1, 0]);
+    assert.deepEqual(Array.from(a.crossCorners), [0, 1, 2]);
+    assert.deepEqual(Array.from(a.newell.subarray(0, 3)), [-0.5, -0.5, 1]);
+    assert.equal(a.residual.length, 1);
+  } finally {
+    quad.dispose();
+  }
+  const sphere = api.buildMesh(api.generateMesh('sphere', { slices: 12, stacks: 6 }));
+  try {
+    const a = sphere.planeArrays();
+    const planes = sphere.planes();
+    assert.equal(a.residual.length, planes.length);
+    planes.forEach((p, f) => {
+      assert.deepEqual(Array.from(a.cross.subarray(4 * f, 4 * f + 4)), p.cross, `F${f + 1} cross`);
+      assert.deepEqual(Array.from(a.newell.subarray(4 * f, 4 * f + 4)), p.newell, `F${f + 1} newell`);
+      assert.deepEqual(Array.from(a.crossCorners.subarray(3 * f, 3 * f + 3)), p.crossCorners, `F${f + 1} corners`);
+      assert.equal(a.residual[f], p.residual);
+    });
+  } finally {
+    sphere.dispose();
+  }
+});
+
 test('a UTF-8 byte-order mark and CRLF line ends are read (OFF and OBJ)', () => {
   const off = api.parseMesh('\uFEFFOFF\r\n3 1 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n', { format: 'off' });
   assert.deepEqual(Array.from(off.positions), [0, 0, 0, 1, 0, 0, 0, 1, 0]);

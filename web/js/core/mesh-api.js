@@ -314,6 +314,14 @@ export class Mesh {
     }));
   }
 
+  // The same planes as flat typed arrays, nothing converted per face: {cross, newell
+  // (Float64Array, 4 per face: A B C D), crossCorners (Int32Array, 3 per face), residual
+  // (Float64Array, 1 per face)}; a table reads only the rows it shows (issue 17).
+  planeArrays() {
+    const { cross, crossCorners, newell, residual } = unwrap(this.#raw.meshPlanes(this.#live()));
+    return { cross, crossCorners, newell, residual };
+  }
+
   // Newell unit normals, normals[3*f + k], in a new Float64Array, or copied into `into`
   // (a Float64Array of 3F numbers, returned) so repeated calls allocate nothing.
   normals({ into = null } = {}) {

@@ -8,13 +8,22 @@ import { h } from '../app/dom.js';
 const FULL_ROWS = 120;
 const WINDOW_MARGIN = 12;
 const FALLBACK_ROW_PX = 26;
+const SCROLL_KEYS = new Set(['Home', 'End', 'PageUp', 'PageDown', 'ArrowUp', 'ArrowDown', ' ']);
 
-export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnter, onRowLeave, onRowClick }) {
-  const thead = h('thead', {}, head.map((cells) => h('tr', {}, cells.map((cell) =>
+// rowAttributes(i): extra attributes of row i's <tr> (e.g. data-representation);
+// cellClasses[k]: the class of every row's k-th <td>; className: the <table>'s classes.
+export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnter, onRowLeave, onRowClick,
+  rowAttributes = null, cellClasses = [], className = 'data-table mesh-table' }) {
+  // Header rows are rows 1..head.length of the whole table for assistive technology; data
+  // row i is row head.length + i + 1 (aria-rowindex), the table has head.length + total rows
+  // (aria-rowcount), so a windowed row is announced where it sits in the whole table.
+  const thead = h('thead', {}, head.map((cells, k) => h('tr', { 'aria-rowindex': k + 1 }, cells.map((cell) =>
     typeof cell === 'string' ? h('th', { scope: 'col' }, cell)
       : h('th', { scope: cell.scope ?? 'col', colspan: cell.colspan, rowspan: cell.rowspan, class: cell.class }, cell.text)))));
+  const headColumns = Math.max(1, ...head.map((cells) => cells.reduce((n, c) => n + (typeof c === 'string' ? 1 : (c.colspan ?? 1)), 0)));
   const tbody = h('tbody', {});
-  const table = h('table', { class: 'data-table mesh-table', id, 'aria-rowcount': 0 }, h('caption', {}, caption), thead, tbody);
+  const captionEl = h('caption', {}, caption);
+  const table = h('table', { class: className, id, 'aria-rowcount': 0 }, captionEl, thead, tbody);
   const scroller = h('div', { class: 'table-scroll', tabindex: 0, 'aria-label': caption }, table);
   const note = h('p', { class: 'hint table-note', hidden: true });
   const root = h('div', { class: 'table-block' }, scroller, note);
@@ -30,12 +39,15 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
   let measured = false;
   let viewHeight = 0;
   let scrollTopSeen = 0;
+  let seen = null; // {top, height, scrollHeight} of the scroller when the rows were last drawn
+  let useSeen = false;
+  const readGeometry = () => ({ top: scroller.scrollTop, height: scroller.clientHeight, scrollHeight: scroller.scrollHeight });
 
   function cellsOf(i) {
     const cells = row(i);
-    const rowEl = h('tr', { 'data-row': i, 'aria-rowindex': i + 2 },
+    const rowEl = h('tr', { ...rowAttributes?.(i), 'data-row': i, 'aria-rowindex': head.length + i + 1 },
       h('th', { scope: 'row' }, rowLabel(i)),
-      cells.map((c) => h('td', {}, c)));
+      cells.map((c, k) => h('td', { class: cellClasses[k] || undefined }, c)));
     for (const name of rowMarks.get(i) ?? []) rowEl.classList.add(name);
     for (const col of reads.get(i) ?? []) rowEl.children[col]?.classList.add('is-read');
     for (const col of compares.get(i) ?? []) rowEl.children[col]?.classList.add('is-compared');
@@ -52,19 +64,33 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
       tbody.replaceChildren(...rows);
       return;
     }
-    const top = scroller.scrollTop;
+    // The scroll geometry: after a scroll (or a jump) read now, when the layout is fresh; for
+    // new data (refresh) the last one seen, so a tab switch forces no layout per table (the
+    // browser keeps a hidden table's scroll position; a resize is seen by the observer).
+    const g = useSeen && seen ? seen : readGeometry();
+    useSeen = false;
+    seen = g;
+    const top = g.top;
     scrollTopSeen = top;
-    viewHeight = scroller.clientHeight || viewHeight || 400;
+    viewHeight = g.height || viewHeight || 400;
     const height = viewHeight;
-    first = Math.max(0, Math.floor(top / rowPx) - WINDOW_MARGIN);
-    last = Math.min(count - 1, Math.ceil((top + height) / rowPx) + WINDOW_MARGIN);
-    const rows = [h('tr', { class: 'spacer', 'aria-hidden': 'true' }, h('td', { colspan: 99, class: 'spacer-cell' }))];
-    rows[0].firstChild.style.height = `${first * rowPx}px`;
+    // Scrolled to the bottom: the last rows, whatever the height of the rows above (a row
+    // whose lists wrap is taller than rowPx, and the window would otherwise stop short).
+    const atEnd = top > 0 && top + height >= g.scrollHeight - rowPx;
+    const shown = Math.ceil(height / rowPx);
+    first = Math.max(0, (atEnd ? count - shown : Math.floor(top / rowPx)) - WINDOW_MARGIN);
+    last = atEnd ? count - 1 : Math.min(count - 1, Math.ceil((top + height) / rowPx) + WINDOW_MARGIN);
+    const rows = [];
     for (let i = first; i <= last; i += 1) rows.push(cellsOf(i));
-    const bottom = h('tr', { class: 'spacer', 'aria-hidden': 'true' }, h('td', { colspan: 99, class: 'spacer-cell' }));
-    bottom.firstChild.style.height = `${(count - 1 - last) * rowPx}px`;
-    rows.push(bottom);
-    tbody.replaceChildren(...rows);
+    // The spacers span the table's real columns (the widest of the header and the rows drawn).
+    const span = rows.reduce((n, r) => Math.max(n, r.children.length), headColumns);
+    const spacer = (px) => {
+      const tr = h('tr', { class: 'spacer', 'aria-hidden': 'true' }, h('td', { colspan: span, class: 'spacer-cell' }));
+      tr.firstChild.style.height = `${px}px`;
+      return tr;
+    };
+    tbody.replaceChildren(spacer(first * rowPx), ...rows, spacer((count - 1 - last) * rowPx));
+    if (atEnd) scroller.scrollTop = scroller.scrollHeight; // stays at the bottom if the rows are taller than rowPx
     if (!measured) {
       // One layout read, the first time: every row has the same height (CSS).
       const sample = tbody.children[1];
@@ -72,6 +98,22 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
     }
   }
 
+  // The keys that scroll a focused table are the table's: the page's shortcuts (the walk's
+  // Home, End, PageUp, PageDown, Space) do not take them, and the browser scrolls.
+  // Home and End jump at once (not the browser's smooth scroll over 100,000 rows).
+  scroller.addEventListener('keydown', (event) => {
+    if (!SCROLL_KEYS.has(event.key) || event.ctrlKey || event.metaKey || event.altKey) return;
+    event.stopPropagation();
+    if (event.key === 'Home' || event.key === 'End') {
+      event.preventDefault();
+      scroller.scrollTop = event.key === 'Home' ? 0 : scroller.scrollHeight;
+      if (count > FULL_ROWS) renderWindow();
+    }
+  });
+  // A new view height (a resized window, a phone turned, the table shown again): redraw.
+  new ResizeObserver(() => {
+    if (count > FULL_ROWS && seen && scroller.clientHeight && scroller.clientHeight !== seen.height && !pending) pending = requestAnimationFrame(renderWindow);
+  }).observe(scroller);
   scroller.addEventListener('scroll', () => {
     if (count > FULL_ROWS && !pending) pending = requestAnimationFrame(renderWindow);
   });
@@ -98,8 +140,14 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
       note.hidden = count <= FULL_ROWS && total === count;
       const cut = total > count ? ` Showing the first ${count.toLocaleString('en')} of ${total.toLocaleString('en')} rows.` : '';
       if (!note.hidden) note.textContent = (count > FULL_ROWS ? `${count.toLocaleString('en')} rows; only the rows in view are drawn (scroll to see the rest).` : '') + cut;
+      // A table that turns virtual (or back) changes its height: the geometry seen is stale.
+      useSeen = scroller.classList.contains('is-virtual') === count > FULL_ROWS;
       scroller.classList.toggle('is-virtual', count > FULL_ROWS);
       renderWindow();
+    },
+    // A caption that says what the rows are now (a query's element, say).
+    setCaption(text) {
+      if (captionEl.textContent !== text) { captionEl.textContent = text; scroller.setAttribute('aria-label', text); }
     },
     // Rows to tint and cells to outline: {rows: {className: [i...]}, read: [[row, col]...],
     // compared: [[row, col]...]}.

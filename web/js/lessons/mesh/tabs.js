@@ -11,7 +11,9 @@ import { readTable, findDescriptor } from '../../core/tables.js';
 import { VERTEX_EDGE_COLUMN, FACE_EDGE_COLUMN } from './walk.js';
 import { visibleSteps, rowsNotYetWritten, EDGE_FIELDS } from './edit-playback.js';
 
-const sub = (letter, i) => (i >= 0 ? h('span', { class: 'lbl' }, letter, h('sub', {}, String(i + 1))) : '');
+// A label as the slides write it (F with a subscript 1): a text and one <sub> element, no
+// wrapper, so a 250-item adjacency list lays out as few boxes as it can (issue 17).
+const sub = (letter, i, before = '') => (i >= 0 ? [before + letter, h('sub', {}, String(i + 1))] : '');
 const F = (i) => sub('F', i);
 const triple = (p) => `(${num(p[0])}, ${num(p[1])}, ${num(p[2])})`;
 // Representation tables longer than this show their first rows and say so (the winged-edge
@@ -21,7 +23,7 @@ const REPRESENTATION_BLOCKS_KEPT = 8;
 const listOf = (indices, label) => {
   const items = Array.from(indices).filter((i) => i >= 0);
   const out = [];
-  items.forEach((i, k) => { if (k) out.push(' '); out.push(label(i)); });
+  items.forEach((i, k) => out.push(label(i, k ? ' ' : '')));
   return out.length ? out : '—';
 };
 
@@ -73,8 +75,8 @@ function rowCells(d, row, letters) {
       else cells.push(coordinate(value));
       continue;
     }
-    const label = (i) => sub(letters[c.refers], i);
-    if (spread) cells.push(...value.map(label));
+    const label = (i, before) => sub(letters[c.refers], i, before);
+    if (spread) cells.push(...value.map((i) => label(i)));
     else if (Array.isArray(value)) cells.push(listOf(value, label));
     else cells.push(value >= 0 ? label(value) : letters.none);
   }
@@ -180,9 +182,10 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       head: [[{ text: '', colspan: 1 }, { text: 'cross product P₁P₂ × P₁P₃ (001)', colspan: 4 }, { text: 'Newell (003)', colspan: 4 }, { text: '', colspan: 2 }],
         ['', 'A', 'B', 'C', 'D', 'A', 'B', 'C', 'D', 'unit normal (Newell)', 'planarity residual']],
       rowLabel: F, row: (f) => {
-        const p = model.derived.planes[f];
-        const n = model.derived.normals;
-        return [...p.cross.map((x) => num(x)), ...p.newell.map((x) => num(x)), `(${num(n[3 * f], 3)}, ${num(n[3 * f + 1], 3)}, ${num(n[3 * f + 2], 3)})`, num(p.residual, 3)];
+        // Read from the core's flat arrays (planeArrays, once per mesh version): only the rows in view.
+        const { cross, newell, residual, normals: n } = model.derived.planes;
+        const four = (a) => [num(a[4 * f]), num(a[4 * f + 1]), num(a[4 * f + 2]), num(a[4 * f + 3])];
+        return [...four(cross), ...four(newell), `(${num(n[3 * f], 3)}, ${num(n[3 * f + 1], 3)}, ${num(n[3 * f + 2], 3)})`, num(residual[f], 3)];
       } }),
   };
 
@@ -203,7 +206,21 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
 
   const queryPanel = createQueryPanel(ctx);
   panels.queries.append(queryPanel.root);
-  const storageBody = h('div', { id: 'storage-body' });
+  // Storage: one row per representation, through the same table as the others.
+  let storageRows = [];
+  const perFace = (bytes) => num(bytes / Math.max(1, model.counts.faces), 4);
+  const storageTable = createVirtualTable({ id: 'storage-table', className: 'data-table', caption: 'Storage of this mesh in each representation',
+    head: [['representation', 'entries', 'bytes', 'bytes per face', 'arrays']], cellClasses: ['', '', '', 'arrays'],
+    rowLabel: (i) => PROS_CONS[storageRows[i][0]]?.title ?? storageRows[i][0], rowAttributes: (i) => ({ 'data-representation': storageRows[i][0] }),
+    row: (i) => {
+      const st = storageRows[i][1];
+      return [st.entries.toLocaleString('en'), st.bytes.toLocaleString('en'), perFace(st.bytes), st.arrays.map((a) => `${a.name}: ${a.entries.toLocaleString('en')} × ${a.bytesPerEntry} B`).join('; ')];
+    } });
+  const storageCounts = h('p', {});
+  const storageBody = h('div', { id: 'storage-body' }, storageCounts, storageTable.root,
+    ...Object.entries(PROS_CONS).map(([name, r]) => h('div', { class: 'pros-cons', 'data-representation': name }, h('h3', {}, r.title),
+      h('ul', {}, r.pros.map((p) => h('li', { class: 'pro' }, h('span', { 'aria-label': 'advantage' }, '✓ '), p)),
+        r.cons.map((p) => h('li', { class: 'con' }, h('span', { 'aria-label': 'disadvantage' }, '✗ '), p))))));
   panels.storage.append(storageBody);
   const planeNote = h('p', { class: 'hint', id: 'plane-note' });
   panels.planes.append(h('p', { class: 'hint' }, 'From three vertices: (A, B, C) = P₁P₂ × P₁P₃ and D by substitution (001). Newell (003): A = ½ Σ (zᵢ + zᵢ₊₁)(yᵢ − yᵢ₊₁), B = ½ Σ (xᵢ + xᵢ₊₁)(zᵢ − zᵢ₊₁), C = ½ Σ (yᵢ + yᵢ₊₁)(xᵢ − xᵢ₊₁).'),
@@ -216,6 +233,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   const tableKind = Object.fromEntries(Object.entries(tables).map(([name, t]) => [name, t.kind]));
   const counts = { vertex: () => model.V, edge: () => model.E, face: () => model.F };
   const drawnVersion = {};
+  const revealed = {}; // table name -> the walk position whose row it last scrolled into view
 
   // Walk marks (current row, the column read) plus the hovered and picked element.
   function markElements({ reveal = false } = {}) {
@@ -245,7 +263,15 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       if (gapList?.length) rows['is-gap'] = Array.from(gapList);
       tables[name].mark({ rows, read, compared });
       if (reveal && selection.pick?.kind === kind) tables[name].reveal(selection.pick.index);
-      else if (frame && tab === 'winged' && rows['is-highlighted'].length) tables[name].reveal(frame.row);
+      else if (frame && tab === 'winged' && rows['is-highlighted'].length) {
+        // The walk's (or the edit player's) row is scrolled into view when it moves, not on
+        // every mark (a hover, a re-render): a person who scrolled the table keeps the place.
+        const key = `${model.topology}:${model.version}:${model.walkKind}:${model.walkElement}:${model.stepIndex}:${model.editStep}:${tab}`;
+        if (revealed[name] !== key) {
+          revealed[name] = key;
+          tables[name].reveal(frame.row);
+        }
+      }
     }
   }
 
@@ -280,30 +306,23 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   // next to the lectures' pros and cons.
   function updateStorage() {
     const c = model.counts;
-    if (!model.derived.storage) model.derived.storage = model.mesh.storage();
-    const storage = model.derived.storage;
-    const perFace = (bytes) => num(bytes / Math.max(1, c.faces), 4);
-    const rows = Object.entries(storage).map(([name, st]) => h('tr', { 'data-representation': name },
-      h('th', { scope: 'row' }, PROS_CONS[name]?.title ?? name), h('td', {}, st.entries.toLocaleString('en')), h('td', {}, st.bytes.toLocaleString('en')),
-      h('td', {}, perFace(st.bytes)), h('td', { class: 'arrays' }, st.arrays.map((a) => `${a.name}: ${a.entries.toLocaleString('en')} × ${a.bytesPerEntry} B`).join('; '))));
-    storageBody.replaceChildren(
-      h('p', {}, `V = ${c.vertices}, E = ${c.edges}, F = ${c.faces}; boundary edges ${c.boundaryEdges}, boundary loops ${c.boundaryLoops}; Euler characteristic V − E + F = ${c.euler}.`),
-      h('div', { class: 'table-wide' }, h('table', { class: 'data-table', id: 'storage-table' }, h('caption', {}, 'Storage of this mesh in each representation'),
-        h('thead', {}, h('tr', {}, ['representation', 'entries', 'bytes', 'bytes per face', 'arrays'].map((t) => h('th', { scope: 'col' }, t)))),
-        h('tbody', {}, rows))),
-      ...Object.entries(PROS_CONS).map(([name, r]) => h('div', { class: 'pros-cons', 'data-representation': name }, h('h3', {}, r.title),
-        h('ul', {}, r.pros.map((p) => h('li', { class: 'pro' }, h('span', { 'aria-label': 'advantage' }, '✓ '), p)),
-          r.cons.map((p) => h('li', { class: 'con' }, h('span', { 'aria-label': 'disadvantage' }, '✗ '), p))))),
-    );
+    if (!model.derived.storage) model.derived.storage = model.mesh.storage(); // once per mesh version
+    storageRows = Object.entries(model.derived.storage);
+    storageCounts.textContent = `V = ${c.vertices}, E = ${c.edges}, F = ${c.faces}; boundary edges ${c.boundaryEdges}, boundary loops ${c.boundaryLoops}; Euler characteristic V − E + F = ${c.euler}.`;
+    storageTable.refresh(storageRows.length);
   }
 
 
   function ensurePlanes() {
+    // Whole-mesh figures once per mesh version (lesson.js resets derived.planes), not per
+    // tab switch: the planes and normals as the core's arrays, and the largest residual.
     if (!model.derived.planes) {
-      model.derived.planes = model.mesh.planes();
-      model.derived.normals = model.mesh.normals();
+      const planes = model.mesh.planeArrays();
+      let worst = 0;
+      for (const r of planes.residual) worst = Math.max(worst, r);
+      model.derived.planes = { ...planes, normals: model.mesh.normals(), worst };
     }
-    const worst = model.derived.planes.reduce((m, p) => Math.max(m, p.residual), 0);
+    const { worst } = model.derived.planes;
     planeNote.textContent = model.is3dMesh
       ? `Largest planarity residual: ${num(worst, 3)} (0 for planar faces). The cross product uses only the first three vertices; Newell averages over all of them.`
       : 'This mesh lies in the plane z = 0, so every normal is ±(0, 0, 1): choose the tetrahedron, cube or sphere, or drag in the 3D view, to see real planes.';
@@ -365,6 +384,17 @@ function createQueryPanel(ctx) {
     }
     ctx.commit({ ...ctx.state, query: { ...ctx.state.query, [f]: n } }, { history: false });
   });
+  // One row per representation, through the same table as every other tab's.
+  let answerRows = [];
+  let answerLetter = 'F';
+  const label = (i) => (i >= 0 ? `${answerLetter}${i + 1}` : 'none');
+  const text = (answer) => (answer.length ? Array.from(answer, label).join(', ') : '—');
+  const table = createVirtualTable({ id: 'query-table', className: 'data-table', caption: '', head: [['representation', 'answer', 'table entries read']],
+    cellClasses: ['', 'entries-read'], rowLabel: (i) => PROS_CONS[answerRows[i][0]]?.title ?? answerRows[i][0],
+    rowAttributes: (i) => ({ 'data-representation': answerRows[i][0] }),
+    row: (i) => { const r = answerRows[i][1]; return [text(r.answer), r.entriesRead.toLocaleString('en')]; } });
+  const cheapestNote = h('p', { class: 'hint' });
+  result.append(table.root, cheapestNote);
   const root = h('div', { class: 'query-panel' },
     h('div', { class: 'query-choice' }, h('label', {}, 'Query ', kind), ' ', prefix, element), result);
 
@@ -372,7 +402,7 @@ function createQueryPanel(ctx) {
     root,
     update(model, state) {
       const q = state.query.kind;
-      const [, f, answerLetter] = QUERY_LABELS[q];
+      const [, f, letter] = QUERY_LABELS[q];
       const index = Math.min(state.query[f], limitOf(model, f) - 1);
       kind.value = q;
       prefix.textContent = LETTER[f];
@@ -384,18 +414,12 @@ function createQueryPanel(ctx) {
         model.derived.query = model.mesh.query(q, index);
       }
       const answers = model.derived.query;
-      const label = (i) => (i >= 0 ? `${answerLetter}${i + 1}` : 'none');
-      const text = (answer) => (answer.length ? Array.from(answer, label).join(', ') : '—');
-      const rows = Object.entries(answers).map(([name, r]) => h('tr', { 'data-representation': name },
-        h('th', { scope: 'row' }, PROS_CONS[name]?.title ?? name), h('td', {}, text(r.answer)), h('td', { class: 'entries-read' }, r.entriesRead.toLocaleString('en'))));
+      answerLetter = letter;
+      answerRows = Object.entries(answers);
+      table.setCaption(`${QUERY_LABELS[q][0]} ${LETTER[f]}${index + 1}: each representation answers`);
+      table.refresh(answerRows.length);
       const cheapest = Math.min(...Object.values(answers).map((r) => r.entriesRead));
-      result.replaceChildren(
-        h('div', { class: 'table-wide' }, h('table', { class: 'data-table', id: 'query-table' },
-          h('caption', {}, `${QUERY_LABELS[q][0]} ${LETTER[f]}${index + 1}: each representation answers`),
-          h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'representation'), h('th', { scope: 'col' }, 'answer'), h('th', { scope: 'col' }, 'table entries read'))),
-          h('tbody', {}, rows))),
-        h('p', { class: 'hint' }, `Fewest entries read: ${cheapest.toLocaleString('en')}. The winged edge reads only the records along the answer (cost proportional to the output); a representation without adjacency has to scan its face table (cost proportional to the mesh).`),
-      );
+      cheapestNote.textContent = `Fewest entries read: ${cheapest.toLocaleString('en')}. The winged edge reads only the records along the answer (cost proportional to the output); a representation without adjacency has to scan its face table (cost proportional to the mesh).`;
     },
   };
 }
