@@ -9,9 +9,9 @@ import { decodePng } from '../../helpers/png.mjs';
 const env = useSiteAndBrowser();
 const SPHERE = { slices: 250, stacks: 201 }; // BENCH.md's sphere_100000
 
-// A lesson page; `webgl2: false` gives the page a browser without WebGL2 (getContext('webgl2')
+// A lesson page (the mesh lesson unless `path` names another); `webgl2: false` gives the page a browser without WebGL2 (getContext('webgl2')
 // answers null, as it does where the GPU or the driver is missing).
-async function openMesh({ webgl2 = true } = {}) {
+async function openMesh({ webgl2 = true, path = 'mesh.html' } = {}) {
   const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
   if (!webgl2) {
     await context.addInitScript(() => {
@@ -21,7 +21,7 @@ async function openMesh({ webgl2 = true } = {}) {
       };
     });
   }
-  return openLessonIn(context, `${env.site.url}mesh.html`);
+  return openLessonIn(context, `${env.site.url}${path}`);
 }
 
 // The stage as the person sees it (both canvases composited), decoded.
@@ -157,4 +157,21 @@ test('the walk on a 100,000-face sphere zooms to its vertex when it steps', asyn
   assert.ok(Math.hypot(pole.x - centre.x, pole.y - centre.y) < 100, `the pole is near the middle (${JSON.stringify(pole)})`);
   assert.ok(ring > 40, `the ring is ${ring.toFixed(1)} px across`);
   assert.deepEqual(page.problems, []);
+});
+
+test('the subdivision lesson draws its shaded mesh by WebGL2 as the 2D canvas does', async () => {
+  const gl = await openMesh({ path: 'subdivision.html' });
+  const plain = await openMesh({ webgl2: false, path: 'subdivision.html' });
+  assert.equal(await gl.locator('canvas.gl-underlay').count(), 1);
+  const stageBox = await plain.locator('#stage').boundingBox();
+  const noteBox = await plain.locator('.stage-note').boundingBox();
+  const note = { x: Math.floor(noteBox.x - stageBox.x) - 2, y: Math.floor(noteBox.y - stageBox.y) - 2, width: Math.ceil(noteBox.width) + 4, height: Math.ceil(noteBox.height) + 4 };
+  // Flat shading (one shade per face, the same |n . light| ramp): the pictures differ only
+  // along anti-aliased edges, as on the mesh lesson (under 1% of pixels by more than 24/255).
+  for (const level of [0, 2]) {
+    for (const page of [gl, plain]) assert.ok(await commit(page, { level, shading: 'flat' }));
+    const share = differing(await stagePixels(gl), await stagePixels(plain), 24, note);
+    assert.ok(share < 0.01, `level ${level}: ${(100 * share).toFixed(2)}% of pixels differ`);
+  }
+  assert.deepEqual([...gl.problems, ...plain.problems], []);
 });

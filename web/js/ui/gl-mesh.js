@@ -19,10 +19,11 @@
 // pass cost ~230 ms for 100k faces here.
 
 /** @typedef {{ positions: Float64Array, faceOffsets: Int32Array, faceVertices: Int32Array,
- *   edges: Int32Array, edgeStride: number, edgeGap: Uint8Array | null, centre: number[] }} GlMeshData */
+ *   edges: Int32Array, edgeStride: number, edgeGap: Uint8Array | null, centre: number[],
+ *   normals?: Float64Array | null }} GlMeshData */
 
 const FACE_VS = `#version 300 es
-in vec3 aPos;
+layout(location = 0) in vec3 aPos;
 uniform mat3 uR;
 uniform vec2 uOffset;
 uniform vec2 uScale;
@@ -51,6 +52,40 @@ void main() {
     a = 0.08 + 0.5 * max(0.0, dot(n, normalize(vec3(-0.35, 0.45, 0.82))));
   }
   outColor = vec4(uFill.rgb * a, a);
+}`;
+
+// Opaque shaded faces (the subdivision lesson): brightness s = |n . light| of the normal seen
+// (per vertex when smooth, the face's own plane otherwise), coloured along the lesson's ramp
+// hsl(205 50% L), L = 16% + 62% s, which is linear in L on each side of 50% (uRamp: the
+// colours at L = 16%, 50%, 78%).
+const SHADED_VS = `#version 300 es
+layout(location = 0) in vec3 aPos;
+layout(location = 1) in vec3 aNormal;
+uniform mat3 uR;
+uniform vec2 uOffset;
+uniform vec2 uScale;
+uniform float uDepth;
+out vec3 vView;
+out vec3 vNormal;
+void main() {
+  vec3 p = uR * aPos;
+  vView = p;
+  vNormal = uR * aNormal;
+  gl_Position = vec4((p.xy + uOffset) * uScale, -p.z * uDepth, 1.0);
+}`;
+const SHADED_FS = `#version 300 es
+precision highp float;
+in vec3 vView;
+in vec3 vNormal;
+uniform float uSmooth;
+uniform vec3 uRamp[3];
+out vec4 outColor;
+void main() {
+  vec3 n = uSmooth > 0.5 && dot(vNormal, vNormal) > 0.0 ? normalize(vNormal) : normalize(cross(dFdx(vView), dFdy(vView)));
+  float s = abs(dot(n, normalize(vec3(-0.35, 0.45, 0.82))));
+  float l = 0.16 + 0.62 * s;
+  vec3 c = l <= 0.5 ? mix(uRamp[0], uRamp[1], (l - 0.16) / 0.34) : mix(uRamp[1], uRamp[2], (l - 0.5) / 0.28);
+  outColor = vec4(c, 1.0);
 }`;
 
 const LINE_FS = `#version 300 es
@@ -131,8 +166,9 @@ export function createGlMesh(canvas) {
   if (!gl) return null;
   const faceProgram = compile(gl, FACE_VS, FACE_FS);
   const lineProgram = compile(gl, FACE_VS, LINE_FS);
+  const shadedProgram = compile(gl, SHADED_VS, SHADED_FS);
   // One set of buffers for the mesh, one for its proxy: {vao, positions, triangles, edges, counts}.
-  const makeSet = () => ({ vao: gl.createVertexArray(), positions: gl.createBuffer(), triangles: gl.createBuffer(), edges: gl.createBuffer(), triangleCount: 0, edgeCount: 0 });
+  const makeSet = () => ({ vao: gl.createVertexArray(), positions: gl.createBuffer(), normals: gl.createBuffer(), triangles: gl.createBuffer(), edges: gl.createBuffer(), triangleCount: 0, edgeCount: 0 });
   const full = makeSet();
   const proxy = makeSet();
   let meshKey = null;
@@ -142,12 +178,21 @@ export function createGlMesh(canvas) {
   let lastDrawn = null; // the signature of the picture on the canvas
   let closed = false;   // no boundary edge: a face turned away is hidden, not drawn (lit mode)
 
-  function fill(set, relative, index, lines) {
+  function fill(set, relative, index, lines, normals = null) {
     gl.bindVertexArray(set.vao);
     gl.bindBuffer(gl.ARRAY_BUFFER, set.positions);
     gl.bufferData(gl.ARRAY_BUFFER, relative, gl.STATIC_DRAW);
     gl.enableVertexAttribArray(0);
     gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 0, 0);
+    if (normals) {
+      gl.bindBuffer(gl.ARRAY_BUFFER, set.normals);
+      gl.bufferData(gl.ARRAY_BUFFER, Float32Array.from(normals), gl.STATIC_DRAW);
+      gl.enableVertexAttribArray(1);
+      gl.vertexAttribPointer(1, 3, gl.FLOAT, false, 0, 0);
+    } else {
+      gl.disableVertexAttribArray(1);
+      gl.vertexAttrib3f(1, 0, 0, 0); // no normal: the shader uses the face's plane
+    }
     gl.bindVertexArray(null);
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, set.triangles);
     gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, index, gl.STATIC_DRAW);
@@ -181,7 +226,7 @@ export function createGlMesh(canvas) {
         if (edges[edgeStride * e + 2] < 0 || edges[edgeStride * e + 3] < 0) closed = false; // L or R missing
         lines[n] = s; lines[n + 1] = t; n += 2;
       }
-      fill(full, r.relative, fanIndices(faceOffsets, faceVertices), lines.subarray(0, n));
+      fill(full, r.relative, fanIndices(faceOffsets, faceVertices), lines.subarray(0, n), data.normals ?? null);
       meshKey = key;
       proxyKey = null;
       lastDrawn = null;
@@ -225,7 +270,7 @@ export function createGlMesh(canvas) {
       gl.bindVertexArray(set.vao);
       gl.enable(gl.BLEND);
       gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA); // premultiplied, like the 2D canvas
-      if (style.lit) {
+      if (style.lit || style.shade) {
         // The nearest surface only, pushed back a little so its own edges are drawn on top.
         gl.enable(gl.DEPTH_TEST);
         gl.depthFunc(gl.LEQUAL);
@@ -237,14 +282,23 @@ export function createGlMesh(canvas) {
       } else {
         gl.disable(gl.DEPTH_TEST);
       }
-      gl.useProgram(faceProgram.program);
-      setFrame(faceProgram);
-      gl.uniform4f(faceProgram.uniforms.uFill, style.fill[0], style.fill[1], style.fill[2], style.faceAlpha);
-      gl.uniform1f(faceProgram.uniforms.uBackAlpha, style.backAlpha);
-      gl.uniform1f(faceProgram.uniforms.uLit, style.lit ? 1 : 0);
+      if (style.shade) {
+        gl.disable(gl.BLEND);
+        gl.useProgram(shadedProgram.program);
+        setFrame(shadedProgram);
+        gl.uniform1f(shadedProgram.uniforms.uSmooth, style.shade.smooth ? 1 : 0);
+        gl.uniform3fv(shadedProgram.uniforms['uRamp[0]'], style.shade.ramp.flat());
+      } else {
+        gl.useProgram(faceProgram.program);
+        setFrame(faceProgram);
+        gl.uniform4f(faceProgram.uniforms.uFill, style.fill[0], style.fill[1], style.fill[2], style.faceAlpha);
+        gl.uniform1f(faceProgram.uniforms.uBackAlpha, style.backAlpha);
+        gl.uniform1f(faceProgram.uniforms.uLit, style.lit ? 1 : 0);
+      }
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, set.triangles);
       gl.drawElements(gl.TRIANGLES, 3 * set.triangleCount, gl.UNSIGNED_INT, 0);
       gl.disable(gl.POLYGON_OFFSET_FILL);
+      gl.enable(gl.BLEND);
       if (style.edges && set.edgeCount) {
         gl.useProgram(lineProgram.program);
         setFrame(lineProgram);

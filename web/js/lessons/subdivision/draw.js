@@ -3,6 +3,8 @@
 // vertices it averages with their weights, the extraordinary vertices ringed (the side plot
 // of the curve is curve-plot.js). Only the view's arithmetic happens here (projection was done in
 // compute; the shade of a face is a dot product of the core's normal with the light).
+import { CanvasPainter } from '../../app/painter.js';
+import { parseColour } from '../../ui/gl-mesh.js';
 import { formatWeight } from './format-weight.js';
 import { PHASES, label } from './source.js';
 
@@ -35,6 +37,38 @@ function faceShade(model, f) {
 }
 
 const shadeColour = (s) => `hsl(205 50% ${Math.round(16 + 62 * s)}%)`;
+
+// The same ramp for the GPU: hsl(205, 50%, L) as rgb 0..1 (hue 205 lies in the 180..240
+// sector: r = m, g = m + X, b = m + C, with C = (1 - |2L - 1|) S, X = C (1 - |205/60 mod 2 - 1|),
+// m = L - C / 2), at L = 16%, 50% and 78%, between which rgb is linear in L.
+function rampColour(L) {
+  const C = (1 - Math.abs(2 * L - 1)) * 0.5;
+  const X = C * (1 - Math.abs(((205 / 60) % 2) - 1));
+  const m = L - C / 2;
+  return [m, m + X, m + C];
+}
+const RAMP = [rampColour(0.16), rampColour(0.5), rampColour(0.78)];
+
+// The faces by WebGL2 (ui/gl-mesh.js): the same shading, opaque, nearest surface; the edges
+// of the mesh drawn over it as the painter does (fainter on a big mesh).
+function drawFacesGpu(gl, model, ctx) {
+  const { width, height, dpr } = ctx.stage.size;
+  const v = ctx.state.view;
+  const F = model.faceOffsets.length - 1;
+  gl.setMesh(model.glKey, {
+    positions: model.positions, faceOffsets: model.faceOffsets, faceVertices: model.faceVertices,
+    edges: model.we.edges, edgeStride: 8, edgeGap: null, centre: model.centre,
+    normals: model.shading.kind === 'smooth' ? model.shading.normals : null,
+  });
+  gl.draw(
+    { R: model.rotation, offset: [model.centre[0] - v.cx, model.centre[1] - v.cy], zoom: v.zoom, width, height, dpr },
+    {
+      background: parseColour(ctx.colors.background), fill: [0, 0, 0], ink: parseColour(ctx.colors.ink), faceAlpha: 1, backAlpha: 1, lit: false,
+      shade: { smooth: model.shading.kind === 'smooth', ramp: RAMP },
+      edges: true, edgeAlpha: F <= 600 ? 1 : F <= SMALL_FACES ? 0.6 : 0.25, useProxy: false,
+    },
+  );
+}
 
 function faceXY(model, P, f) {
   const a = model.faceOffsets[f]; const b = model.faceOffsets[f + 1];
@@ -171,7 +205,13 @@ function drawControl(painter, model, ctx) {
 export function drawScene(painter, model, state, ctx) {
   if (!model) return;
   const colors = ctx.colors;
-  drawFaces(painter, model, colors);
+  const gl = painter instanceof CanvasPainter ? ctx.stage.gl() : null;
+  if (gl) {
+    painter.clearTransparent();
+    drawFacesGpu(gl, model, ctx);
+  } else {
+    drawFaces(painter, model, colors);
+  }
   drawOldEdges(painter, model, colors);
   drawExtraordinary(painter, model, colors);
   drawVertexLabels(painter, model.oldProjected ?? model.projected, colors);

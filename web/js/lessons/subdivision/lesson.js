@@ -210,6 +210,11 @@ function modelOf(view, chain, state, api) {
     faceOffsets: shown.faceOffsets,
     faceVertices: shown.faceVertices,
     projected: projectAll(positions, R, centre),
+    // What the GPU picture uploads once per mesh shown (ui/gl-mesh.js): its positions, the
+    // centre the view turns about, and the key that changes with them.
+    positions,
+    centre,
+    glKey: `${shown.mesh.id}.${shown.mesh.version}|${state.limit}|${state.shading}|${centre.join(',')}`,
     oldProjected: reconnected ? null : (state.limit ? projectAll(old.we.positions, R, centre) : null),
     newProjected: s && !reconnected && pointPhases.length ? projectAll(s.positions, R, centre) : null,
     rotation: R,
