@@ -11,8 +11,8 @@ const SPHERE = { slices: 250, stacks: 201 }; // BENCH.md's sphere_100000
 
 // A lesson page (the mesh lesson unless `path` names another); `webgl2: false` gives the page a browser without WebGL2 (getContext('webgl2')
 // answers null, as it does where the GPU or the driver is missing).
-async function openMesh({ webgl2 = true, path = 'mesh.html' } = {}) {
-  const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
+async function openMesh({ webgl2 = true, path = 'mesh.html', hasTouch = false } = {}) {
+  const context = await env.newContext({ viewport: { width: 1280, height: 800 }, hasTouch });
   if (!webgl2) {
     await context.addInitScript(() => {
       const getContext = HTMLCanvasElement.prototype.getContext;
@@ -84,7 +84,7 @@ const clientOf = (page, x, y) => page.evaluate(([a, b]) => window.wingspline.toC
 
 test('on a 100,000-face sphere the pointer finds the face, edge and vertex under it, with and without WebGL2', async () => {
   for (const webgl2 of [true, false]) {
-    const page = await openMesh({ webgl2 });
+    const page = await openMesh({ webgl2, hasTouch: true });
     assert.ok(await commit(page, { meshKind: 'sphere', sphere: SPHERE, mode3d: true }));
     await page.waitForFunction(() => window.wingspline.model?.F === 100000);
     // The face nearest the viewer (largest mean depth of its corners in the view, computed
@@ -124,10 +124,13 @@ test('on a 100,000-face sphere the pointer finds the face, edge and vertex under
     const edge = (await hover()).index;
     const ends = await page.evaluate((e) => { const w = window.wingspline.model.we.edges; return [w[8 * e], w[8 * e + 1]].sort((a, b) => a - b); }, edge);
     assert.deepEqual(ends, [target.corners[0], target.corners[1]].sort((a, b) => a - b), 'the edge joins the two corners');
-    // A click picks what is under the pointer, by touch as well.
+    // A click picks what is under the pointer; so does a tap of a finger.
     p = await clientOf(page, ...target.centroid);
     await page.mouse.click(p.x, p.y);
     assert.deepEqual(await page.evaluate(() => window.wingspline.view.selection.pick), { kind: 'face', index: target.face });
+    p = await clientOf(page, ...mid);
+    await page.touchscreen.tap(p.x, p.y);
+    assert.deepEqual(await page.evaluate(() => window.wingspline.view.selection.pick), { kind: 'edge', index: edge }, 'a tap on the side picks the edge');
     assert.deepEqual(page.problems, []);
   }
 });
