@@ -19,13 +19,13 @@ import { errorText } from './message-line.js';
  *   contents: any,
  *   hookArgs: () => [import('./contract.js').View, import('./contract.js').Model, State, import('./contract.js').Ctx],
  *   svgFigure: () => string,
- *   canvas: HTMLCanvasElement,
+ *   pngFigure: () => Promise<Blob | null>,
  *   accept: (next: State, reason: string, report: (err: any) => void) => boolean,
  *   message: import('./contract.js').MessageLine,
  *   announceStatus: (text: string) => void,
  * }} parts
  */
-export function createImportExport({ lesson, contents, hookArgs, svgFigure, canvas, accept, message, announceStatus }) {
+export function createImportExport({ lesson, contents, hookArgs, svgFigure, pngFigure, accept, message, announceStatus }) {
   const state = () => hookArgs()[2];
   /** @type {import('./contract.js').ExportItem[]} */
   const exportItems = [
@@ -33,7 +33,7 @@ export function createImportExport({ lesson, contents, hookArgs, svgFigure, canv
       make: () => envelopeJson(lesson, state()) },
     { label: 'Figure (SVG)', filename: `${lesson.id}.svg`, type: 'image/svg+xml', make: svgFigure },
     { label: 'Figure (PNG)', filename: `${lesson.id}.png`, type: 'image/png',
-      make: () => new Promise((resolve) => canvas.toBlob(resolve, 'image/png')) },
+      make: pngFigure },
     ...(lesson.exports ?? []),
   ];
 

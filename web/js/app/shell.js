@@ -283,7 +283,7 @@ export async function runLesson(lesson) {
 
   // ---------------------------------------------------------------- files and toolbar
   const files = createImportExport({
-    lesson, contents, canvas: els.canvas, svgFigure, accept, message,
+    lesson, contents, pngFigure: () => ctx.stage.png(), svgFigure, accept, message,
     hookArgs: () => [view, model, store.state, ctx],
     announceStatus: announcer.status,
   });

@@ -224,6 +224,21 @@ export function createStage(canvas, hooks) {
       if (underlay) placeUnderlay();
       return underlay ? underlay.renderer : null;
     },
+    // The picture as the person sees it, as a PNG: the WebGL2 canvas (drawn again in this
+    // task, so its buffer is still there) with the 2D canvas over it.
+    png() {
+      let out = canvas;
+      if (underlay) {
+        underlay.renderer.redraw();
+        out = document.createElement('canvas');
+        out.width = canvas.width;
+        out.height = canvas.height;
+        const g2 = out.getContext('2d');
+        g2.drawImage(underlay.canvas, 0, 0, out.width, out.height);
+        g2.drawImage(canvas, 0, 0);
+      }
+      return new Promise((resolve) => out.toBlob(resolve, 'image/png'));
+    },
     beginFrame() {
       g.setTransform(dpr, 0, 0, dpr, 0, 0);
       return g;

@@ -176,6 +176,7 @@ export function createGlMesh(canvas) {
   let radius = 1;
   let centre = [0, 0, 0];
   let lastDrawn = null; // the signature of the picture on the canvas
+  let lastArgs = null;  // the view and style it was drawn with (redraw)
   let closed = false;   // no boundary edge: a face turned away is hidden, not drawn (lit mode)
 
   function fill(set, relative, index, lines, normals = null) {
@@ -232,6 +233,16 @@ export function createGlMesh(canvas) {
       lastDrawn = null;
     },
 
+    /**
+     * Draws the last picture again now (the whole mesh, not the proxy): a caller that reads
+     * the canvas (a PNG export) must do so in the same task, before the browser presents it.
+     */
+    redraw() {
+      if (!lastArgs) return;
+      lastDrawn = null;
+      this.draw(lastArgs[0], { ...lastArgs[1], useProxy: false });
+    },
+
     /** The proxy drawn while the view moves: {positions (xyz), triangles} from mesh.displayProxy. */
     setProxy(key, { positions, triangles }) {
       if (key !== meshKey) return;
@@ -251,6 +262,7 @@ export function createGlMesh(canvas) {
       const signature = JSON.stringify([meshKey, set === proxy, view, style]);
       if (signature === lastDrawn && canvas.width === width && canvas.height === height) return false;
       lastDrawn = signature;
+      lastArgs = [view, style];
       if (canvas.width !== width || canvas.height !== height) { canvas.width = width; canvas.height = height; }
       gl.viewport(0, 0, width, height);
       const [br, bg, bb] = style.background;
