@@ -121,6 +121,20 @@ function contentText(value) {
   return entry;
 }
 
+// A value whose JSON text was written, hashed and stored elsewhere (the import worker, issue
+// 17: a million faces are not serialised on the page): its length and hash are remembered,
+// so externalize refers to it without writing it again. Only for a text already in the
+// content store (json: null, nothing left to put).
+export function rememberContent(value, { chars, hash }) {
+  if (!CONTENT_REF.test(hash) || !Number.isSafeInteger(chars)) throw new Error('rememberContent needs the text\'s hash and length');
+  contentCache.set(value, { json: null, chars, hash });
+}
+
+// The SHA-256 reference of a value's text when known (remembered or computed), else null.
+export function contentHashOf(value) {
+  return contentCache.get(value)?.hash ?? null;
+}
+
 function contentLabel(lesson, key, value) {
   const label = lesson.contentFields[key].label?.(value);
   return typeof label === 'string' ? label.slice(0, LABEL_MAX_CHARS) : key;
@@ -143,7 +157,7 @@ export async function externalize(lesson, state, contents) {
     if (contents) {
       try {
         entry.hash = entry.hash ?? await sha256(entry.json);
-        await contents.put(entry.hash, entry.json);
+        if (entry.json !== null) await contents.put(entry.hash, entry.json);
       } catch {
         unstored.push(key);
         continue;
