@@ -59,7 +59,12 @@ async function readText(api, file, format, onProgress) {
     parts.push(decoder.decode(piece.value, { stream: true }));
     if (!headChecked && (done >= HEAD_BYTES || done === total)) {
       headChecked = true;
-      checkHead(api, parts.join(''));
+      try {
+        checkHead(api, parts.join(''));
+      } catch (err) {
+        await reader.cancel().catch(() => {});
+        throw err;
+      }
     }
     onProgress({ stage: 'reading', done, total });
   }
