@@ -10,6 +10,7 @@ export const expectedTasks = [
   ...['curve_bezier3_eval', 'curve_bspline_eval', 'curve_bspline_eval_d1', 'curve_nurbs_eval', 'curve_nurbs_eval_d1']
     .flatMap((task) => ['native', 'wasm'].map((build) => ({ task, build }))),
   ...['ui_load', 'ui_drag', 'ui_traversal_step'].map((task) => ({ task, build: 'browser' })),
+  { task: 'ui_import', build: 'browser' }, // issue 17: tests/bench/browser/import.bench.mjs
 ];
 
 // BENCH.md "Reference figures" (min ns per unit; mesh_memory in bytes per face), per build:

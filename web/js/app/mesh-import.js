@@ -51,9 +51,13 @@ export function createMeshImport({ message, contents, announceStatus }) {
     box.hidden = false;
   }
 
+  let focusBefore = null; // where the keyboard was before Cancel took it: given back after
   function hide() {
+    const hadFocus = box.contains(document.activeElement);
     box.hidden = true;
     window.removeEventListener('keydown', onKey, true);
+    if (hadFocus && focusBefore?.isConnected) focusBefore.focus({ preventScroll: true });
+    focusBefore = null;
   }
 
   function onKey(event) {
@@ -88,6 +92,7 @@ export function createMeshImport({ message, contents, announceStatus }) {
       running = job;
       window.addEventListener('keydown', onKey, true);
       show(name, 'reading', 0, file.size);
+      focusBefore = box.contains(document.activeElement) ? focusBefore : document.activeElement;
       cancelButton.focus({ preventScroll: true });
       const fail = (err) => {
         if (running === job) running = null;

@@ -54,7 +54,21 @@ export const text = ({ maxLength = 200 } = {}) => (v, path) => {
 export const list = (item, { min = 0, max = 10000 } = {}) => (v, path) => {
   if (!Array.isArray(v)) throw new SchemaError(path, `must be a list, not ${describe(v)}`);
   if (v.length < min || v.length > max) throw new SchemaError(path, `must have ${min} to ${max} entries, not ${v.length}`);
-  return v.map((x, i) => item(x, `${path}[${i}]`));
+  // A list whose entries all come back as they are is returned itself, not copied, and an
+  // entry's path is written only for its error message (the failing entry is checked again
+  // with it; validators are pure): checking a million faces allocates nothing (issue 17).
+  let out = null;
+  for (let i = 0; i < v.length; i += 1) {
+    let clean;
+    try {
+      clean = item(v[i], path);
+    } catch {
+      clean = item(v[i], `${path}[${i}]`);
+    }
+    if (out) out.push(clean);
+    else if (clean !== v[i]) { out = v.slice(0, i); out.push(clean); }
+  }
+  return out ?? v;
 };
 
 // A fixed-shape object. Unknown keys are dropped; missing keys take `defaults[key]` when given.
