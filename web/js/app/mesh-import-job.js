@@ -8,7 +8,7 @@
 // and its SHA-256 taken, so the page never serialises or hashes a million faces itself
 // (share-link.js rememberContent; docs/state-format.md, "Large fields").
 import { WingsplineError } from '../core/errors.js';
-import { stringifyExact } from './share-link.js';
+import { stringifyExact, sha256 } from './share-link.js';
 
 // The largest mesh file read: a mesh of the import limit (2,000,000 faces) written with full
 // precision is about 100 MB as OFF; OBJ files with normals and texture lines are larger.
@@ -85,9 +85,7 @@ function checkHead(api, head) {
 async function contentOf(name, { positions, faceOffsets, faceVertices }) {
   const value = importedValue(name, positions, faceOffsets, faceVertices);
   const json = stringifyExact(value);
-  const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', new TextEncoder().encode(json)));
-  const hash = `sha256-${Array.from(digest, (b) => b.toString(16).padStart(2, '0')).join('')}`;
-  return { chars: json.length, hash, json };
+  return { chars: json.length, hash: await sha256(json), json };
 }
 
 // {name, positions: number[], faces: number[][]}: the imported mesh of a lesson state.

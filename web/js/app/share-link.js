@@ -102,7 +102,8 @@ export function envelopeJson(lesson, state) {
   return stringifyExact(envelope(lesson, state), 2) + '\n';
 }
 
-async function sha256(textValue) {
+// The content store's key of a text: 'sha256-' + the hex SHA-256 of its UTF-8 bytes.
+export async function sha256(textValue) {
   const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', new TextEncoder().encode(textValue)));
   return `sha256-${Array.from(digest, (b) => b.toString(16).padStart(2, '0')).join('')}`;
 }
