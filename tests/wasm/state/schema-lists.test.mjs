@@ -4,7 +4,7 @@
 // full path.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { list, integer, object, number, SchemaError } from '../../../web/js/app/schema.js';
+import { list, integer, object, number, text, nullable, validatePartial, SchemaError } from '../../../web/js/app/schema.js';
 
 const faces = list(list(integer({ min: 0, max: 99 }), { min: 3, max: 8 }), { max: 100000 });
 
@@ -35,4 +35,26 @@ test('a bad entry deep in a big list is named by its full path', () => {
   });
   value[4321] = [0, 1];
   assert.throws(() => faces(value, 'imported.faces'), { path: 'imported.faces[4321]', message: 'imported.faces[4321] must have 3 to 8 entries, not 2' });
+});
+
+test('an object whose fields all come back as they are is returned itself; an extra key makes a copy without it', () => {
+  const imported = object({ name: text({ maxLength: 120 }), positions: list(number(), { min: 9, max: 30 }), faces });
+  const value = { name: 'tri.off', positions: [0, 0, 0, 1, 0, 0, 0, 1, 0], faces: [[0, 1, 2]] };
+  assert.equal(imported(value, 'imported'), value, 'so a mesh read back keeps its remembered hash (share-link contentCache)');
+  const extra = { ...value, colour: 'red' };
+  const clean = imported(extra, 'imported');
+  assert.notEqual(clean, extra);
+  assert.deepEqual(clean, value);
+  const withOptional = object({ a: integer(), b: integer() }, { optional: ['b'] });
+  const partial = { a: 1 };
+  assert.equal(withOptional(partial, 'x'), partial);
+  assert.deepEqual(withOptional({ a: 1, c: 2 }, 'x'), { a: 1 });
+});
+
+test('a state read back (validatePartial) keeps its imported mesh object, not a copy', () => {
+  const shape = { imported: nullable(object({ name: text(), faces })), n: integer() };
+  const raw = { imported: { name: 'a.off', faces: [[0, 1, 2]] }, n: 3 };
+  const { state, problems } = validatePartial(shape, raw, { imported: null, n: 0 });
+  assert.deepEqual(problems, []);
+  assert.equal(state.imported, raw.imported);
 });

@@ -75,6 +75,10 @@ export const list = (item, { min = 0, max = 10000 } = {}) => (v, path) => {
 export const object = (shape, { optional = [] } = {}) => (v, path) => {
   if (v === null || typeof v !== 'object' || Array.isArray(v)) throw new SchemaError(path, `must be an object, not ${describe(v)}`);
   const out = {};
+  // An object with no other keys whose fields all come back as they are is returned itself
+  // (issue 17: a mesh read back stays the object whose text and hash share-link.js knows).
+  let same = true;
+  let present = 0;
   for (const [key, check] of Object.entries(shape)) {
     const sub = path ? `${path}.${key}` : key;
     if (!Object.prototype.hasOwnProperty.call(v, key)) {
@@ -82,8 +86,10 @@ export const object = (shape, { optional = [] } = {}) => (v, path) => {
       throw new SchemaError(sub, 'is missing');
     }
     out[key] = check(v[key], sub);
+    present += 1;
+    if (out[key] !== v[key]) same = false;
   }
-  return out;
+  return same && Object.keys(v).length === present ? v : out;
 };
 
 export const nullable = (inner) => (v, path) => (v === null ? null : inner(v, path));
