@@ -14,11 +14,11 @@ namespace {
 
 using namespace wingspline::mesh;
 
-// The page's limits (limits.h, kFileLimits): a result the page could not import is refused
-// with the number of faces it would have.
+// The subdivision limits (limits.h, kSubdivisionLimits, the former import limit of 200,000
+// faces): a bigger result is refused with the number of faces it would have.
 val mesh_subdivide(int32_t handle, const std::string& scheme, int32_t steps) {
     return guarded([&] {
-        WingedEdgeMesh result = subdivide(winged_of_handle(handle), scheme_from_name(scheme), steps, kFileLimits);
+        WingedEdgeMesh result = subdivide(winged_of_handle(handle), scheme_from_name(scheme), steps, kSubdivisionLimits);
         val r = val::object();
         r.set("handle", register_mesh(std::move(result)));
         return r;
@@ -29,7 +29,7 @@ val mesh_subdivision_steps(int32_t handle, const std::string& scheme) {
     return guarded([&] {
         const WingedEdgeMesh& w = winged_of_handle(handle);
         const Scheme s = scheme_from_name(scheme);
-        const CheckResult check = check_subdivide(w, s, 1, kFileLimits);
+        const CheckResult check = check_subdivide(w, s, 1, kSubdivisionLimits);
         if (!check.ok) throw Error(check.code, check.message);
         const SubdivisionSteps st = subdivision_steps(w, s);
         val phases = val::array();

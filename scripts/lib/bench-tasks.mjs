@@ -11,6 +11,8 @@ export const expectedTasks = [
     .flatMap((task) => ['native', 'wasm'].map((build) => ({ task, build }))),
   ...['ui_load', 'ui_drag', 'ui_traversal_step'].map((task) => ({ task, build: 'browser' })),
   { task: 'ui_tab_switch', build: 'browser' }, // issue 17: tests/bench/browser/tabs.bench.mjs
+  { task: 'ui_import', build: 'browser' }, // issue 17: tests/bench/browser/import.bench.mjs
+  { task: 'ui_rotate', build: 'browser' }, // issue 17: tests/bench/browser/rotate.bench.mjs
 ];
 
 // BENCH.md "Reference figures" (min ns per unit; mesh_memory in bytes per face), per build:

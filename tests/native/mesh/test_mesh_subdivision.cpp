@@ -329,10 +329,10 @@ TEST_CASE("Refusals: gaps, polygons for Loop, steps, limits", "[subdivision]") {
     CHECK(check_subdivide(cb, Scheme::CatmullClark, -1).code == "invalid-argument");
     CHECK(check_subdivide(cb, Scheme::CatmullClark, 17).code == "invalid-argument");
     // 24 * 4^7 = 393,216 faces > 200,000: refused, saying how many.
-    const CheckResult big = check_subdivide(cb, Scheme::CatmullClark, 8, kFileLimits);
+    const CheckResult big = check_subdivide(cb, Scheme::CatmullClark, 8, kSubdivisionLimits);
     CHECK(big.code == "too-large");
     CHECK(big.message.find("393,216 faces") != std::string::npos);
-    CHECK(check_subdivide(cb, Scheme::CatmullClark, 7, kFileLimits).ok); // 98,304 faces
+    CHECK(check_subdivide(cb, Scheme::CatmullClark, 7, kSubdivisionLimits).ok); // 98,304 faces
     CHECK_THROWS_AS(scheme_from_name("butterfly"), wingspline::Error);
 }
 

@@ -10,21 +10,23 @@ import { loadWingspline } from 'wingspline';
 
 const api = await loadWingspline();
 
-// About 55 MB of OFF: a header announcing 2,000,000 vertices and 4,000,000 faces, then
+const L = api.meshLimits;
+
+// About 55 MB of OFF: a header announcing twice the limit of vertices and faces, then
 // vertex lines (the file is refused from its header; the rest is there to be big).
 function overLimitOff() {
   const line = '0.123456 0.654321 0.111111\n';
-  return `OFF\n2000000 4000000 0\n${line.repeat(Math.ceil((55 * 2 ** 20) / line.length))}`;
+  return `OFF\n${2 * L.maxVertices} ${2 * L.maxFaces} 0\n${line.repeat(Math.ceil((55 * 2 ** 20) / line.length))}`;
 }
 
-// About 55 MB of OBJ with more vertices than the limit (OBJ has no header: refused at the
-// first vertex over the limit, after reading only that far).
+// At least 55 MB of OBJ with more vertices than the limit (OBJ has no header: refused at
+// the first vertex over the limit, after reading only that far).
 function overLimitObj() {
   const line = 'v 0.123456 0.654321 0.111111\n';
-  return line.repeat(Math.ceil((55 * 2 ** 20) / line.length)) + 'f 1 2 3\n';
+  return line.repeat(Math.max(Math.ceil((55 * 2 ** 20) / line.length), L.maxVertices + 1)) + 'f 1 2 3\n';
 }
 
-for (const [format, make, code, line] of [['off', overLimitOff, 'too-large', 2], ['obj', overLimitObj, 'too-large', 200001]]) {
+for (const [format, make, code, line] of [['off', overLimitOff, 'too-large', 2], ['obj', overLimitObj, 'too-large', L.maxVertices + 1]]) {
   test(`a 55 MB ${format.toUpperCase()} over the import limits is refused with a clear code, and the wasm memory does not grow`, () => {
     const text = make();
     assert.ok(text.length > 55 * 2 ** 20);
@@ -33,8 +35,8 @@ for (const [format, make, code, line] of [['off', overLimitOff, 'too-large', 2],
     assert.throws(() => api.parseMesh(text, { format }), (err) => {
       assert.equal(err.code, code);
       assert.equal(err.line, line);
-      assert.match(err.message, /200000/, 'names the limit');
-      assert.match(err.message, format === 'off' ? /2000000 vertices/ : /200001 vertices/, 'names the count');
+      assert.match(err.message, new RegExp(String(L.maxVertices)), 'names the limit');
+      assert.match(err.message, new RegExp(`${format === 'off' ? 2 * L.maxVertices : L.maxVertices + 1} vertices`), 'names the count');
       return true;
     });
     const after = api.memoryUsage();

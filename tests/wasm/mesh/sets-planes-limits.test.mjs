@@ -84,7 +84,7 @@ test('a UTF-8 byte-order mark and CRLF line ends are read (OFF and OBJ)', () => 
 });
 
 test('api.meshLimits: the core\'s one set of mesh limits', () => {
-  assert.deepEqual({ ...api.meshLimits }, { maxCoordinate: 1e9, maxFaceCorners: 1000, maxVertices: 200000, maxFaces: 200000 });
+  assert.deepEqual({ ...api.meshLimits }, { maxCoordinate: 1e9, maxFaceCorners: 1000, maxVertices: 2000000, maxFaces: 2000000 });
   assert.ok(Object.isFrozen(api.meshLimits));
 });
 

@@ -52,6 +52,10 @@ export function createContentStore() {
   const known = new Set();
 
   return {
+    // A hash another context of the page (the import worker) has just written: no second write.
+    markStored(hash) {
+      known.add(hash);
+    },
     async get(hash) {
       const db = await open();
       const tx = db.transaction(STORE, 'readwrite');

@@ -161,6 +161,13 @@
  */
 
 /**
+ * A mesh file as the import worker hands it over (app/mesh-import.js): `value` is the
+ * imported mesh of a state ({name, positions: number[], faces: number[][]}), `problems`
+ * every problem validateMesh found (refuse the file if one is an error).
+ * @typedef {{ value: { name: string, positions: number[], faces: number[][] }, problems: any[] }} ImportedMesh
+ */
+
+/**
  * A large field stored by content hash (docs/state-format.md, "Large fields").
  * @typedef {{ what?: string, file?: string, export?: string, label(value: any): string, [extra: string]: any }} ContentField
  */
@@ -191,6 +198,7 @@
  *   inspector?: false,
  *   exports?: ExportItem[],
  *   importers?: Object<string, (view: View, text: string, state: State, name: string, ctx: Ctx) => State>,
+ *   meshImporters?: Object<string, (view: View, mesh: ImportedMesh, state: State, name: string, ctx: Ctx) => State>,
  * }} Lesson
  *
  * `setup` builds panels and controls, registers keys and returns the view. `compute` makes
@@ -202,6 +210,8 @@
  * lesson consumed it. `onSelect` follows the selected handle. `usesHoverPoint`: redraw on
  * every pointer move, not only when the hovered handle changes. `inspector: false`: no shell
  * inspector (the lesson has its own inputs). `importers[ext]` turns a file into a state.
+ * `meshImporters[ext]` turns a mesh file the import worker read, parsed and checked into a
+ * state (app/mesh-import.js: progress, Cancel; issue 17).
  */
 
 export {};

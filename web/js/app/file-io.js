@@ -17,9 +17,12 @@ export function download(filename, content, type = 'text/plain') {
 export const MAX_IMPORT_BYTES = 64 * 1024 * 1024;
 
 // Calls onFile({ name, text }) for a chosen or dropped file; onError(message) otherwise.
-export function installImport({ input, dropTarget, onFile, onError }) {
+// A file that onRawFile(file) takes (returns true: a mesh file, read by the import worker,
+// issue 17) is not read here.
+export function installImport({ input, dropTarget, onFile, onError, onRawFile = (file) => false }) {
   async function read(file) {
     if (!file) return;
+    if (onRawFile(file)) return;
     if (file.size > MAX_IMPORT_BYTES) {
       onError(`${file.name} is ${(file.size / 1048576).toFixed(1)} MB; files up to ${MAX_IMPORT_BYTES / 1048576} MB can be imported`);
       return;

@@ -10,6 +10,7 @@ import { checkChange } from './schema.js';
 import { download, installImport } from './file-io.js';
 import { h } from './dom.js';
 import { errorText } from './message-line.js';
+import { createMeshImport } from './mesh-import.js';
 
 /**
  * @typedef {import('./contract.js').Lesson} Lesson
@@ -46,7 +47,8 @@ export function createImportExport({ lesson, contents, hookArgs, svgFigure, pngF
     }
   }
 
-  const importTypes = ['.json', ...Object.keys(lesson.importers ?? {}).map((ext) => `.${ext}`)];
+  const meshTypes = Object.keys(lesson.meshImporters ?? {});
+  const importTypes = ['.json', ...[...Object.keys(lesson.importers ?? {}), ...meshTypes].map((ext) => `.${ext}`)];
   // The picker is opened by a real button (visible focus, keyboard); the input stays hidden.
   const fileInput = /** @type {HTMLInputElement} */ (h('input', { type: 'file', accept: importTypes.join(','), hidden: true, id: 'import-file', tabindex: '-1', 'aria-label': 'Import a file' }));
 
@@ -74,12 +76,21 @@ export function createImportExport({ lesson, contents, hookArgs, svgFigure, pngF
     return next;
   }
 
+  // A lesson's importer may refuse with one way out (err.offer: {id, label, run}), e.g. the
+  // subdivision lesson's "Use Catmull-Clark" for a quad mesh under Loop.
+  const refusal = (name) => (err) => (err?.offer
+    ? message.warn(`${name} was not imported: ${errorText(err)}`, { code: err.code, action: err.offer })
+    : message.error(`${name} was not imported: ${errorText(err)}`, err?.code ?? 'import-error'));
+
+  function acceptImport(name, next, refused) {
+    if (accept(next, 'import', refused)) {
+      message.info(`Imported ${name}`);
+      announceStatus(`Imported ${name}`);
+    }
+  }
+
   async function importFile({ name, text }) {
-    // A lesson's importer may refuse with one way out (err.offer: {id, label, run}), e.g. the
-    // subdivision lesson's "Use Catmull-Clark" for a quad mesh under Loop.
-    const refused = (err) => (err?.offer
-      ? message.warn(`${name} was not imported: ${errorText(err)}`, { code: err.code, action: err.offer })
-      : message.error(`${name} was not imported: ${errorText(err)}`, err?.code ?? 'import-error'));
+    const refused = refusal(name);
     let next;
     try {
       next = await readImport(name, text);
@@ -87,12 +98,36 @@ export function createImportExport({ lesson, contents, hookArgs, svgFigure, pngF
       refused(err);
       return;
     }
-    if (accept(next, 'import', refused)) {
-      message.info(`Imported ${name}`);
-      announceStatus(`Imported ${name}`);
+    acceptImport(name, next, refused);
+  }
+
+  // Mesh files (issue 17): read, parsed and checked by the import worker, with progress and
+  // Cancel; the lesson turns the result into a state, checked as any import is.
+  const meshImport = meshTypes.length ? createMeshImport({ message, contents, announceStatus }) : null;
+  async function importMeshFile(file, ext) {
+    const name = file.name;
+    const refused = refusal(name);
+    try {
+      const result = await meshImport.run(file, ext, name);
+      if (!result) return; // cancelled: nothing changed
+      const [view, , current, ctx] = hookArgs();
+      const next = lesson.meshImporters[ext](view, result, current, name, ctx);
+      const outside = checkChange(lesson.schema, next, state(), lesson.checkState);
+      if (outside) throw new WingsplineError('import-error', outside);
+      acceptImport(name, next, refused);
+    } catch (err) {
+      refused(err);
+    } finally {
+      meshImport.finish();
     }
   }
-  installImport({ input: fileInput, dropTarget: document.body, onFile: importFile, onError: (text) => message.error(text, 'import-error') });
+  const onRawFile = (file) => {
+    const ext = file.name.toLowerCase().split('.').pop();
+    if (!meshImport || !meshTypes.includes(ext)) return false;
+    importMeshFile(file, ext);
+    return true;
+  };
+  installImport({ input: fileInput, dropTarget: document.body, onFile: importFile, onRawFile, onError: (text) => message.error(text, 'import-error') });
 
   return { exportItems, runExport, fileInput };
 }

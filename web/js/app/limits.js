@@ -13,6 +13,7 @@
 export const COORDINATE_BOUND = 1e9;
 // Corners of one face of an imported mesh.
 export const MAX_FACE_CORNERS = 1000;
-// Vertices and faces of an imported mesh (the import limit).
-export const MAX_MESH_VERTICES = 200000;
-export const MAX_MESH_FACES = 200000;
+// Vertices and faces of an imported mesh (the import limit; issue 17: the largest mesh a
+// school laptop holds, docs/api-mesh.md "Import limits and memory").
+export const MAX_MESH_VERTICES = 2000000;
+export const MAX_MESH_FACES = 2000000;

@@ -54,13 +54,31 @@ export const text = ({ maxLength = 200 } = {}) => (v, path) => {
 export const list = (item, { min = 0, max = 10000 } = {}) => (v, path) => {
   if (!Array.isArray(v)) throw new SchemaError(path, `must be a list, not ${describe(v)}`);
   if (v.length < min || v.length > max) throw new SchemaError(path, `must have ${min} to ${max} entries, not ${v.length}`);
-  return v.map((x, i) => item(x, `${path}[${i}]`));
+  // A list whose entries all come back as they are is returned itself, not copied, and an
+  // entry's path is written only for its error message (the failing entry is checked again
+  // with it; validators are pure): checking a million faces allocates nothing (issue 17).
+  let out = null;
+  for (let i = 0; i < v.length; i += 1) {
+    let clean;
+    try {
+      clean = item(v[i], path);
+    } catch {
+      clean = item(v[i], `${path}[${i}]`);
+    }
+    if (out) out.push(clean);
+    else if (clean !== v[i]) { out = v.slice(0, i); out.push(clean); }
+  }
+  return out ?? v;
 };
 
 // A fixed-shape object. Unknown keys are dropped; missing keys take `defaults[key]` when given.
 export const object = (shape, { optional = [] } = {}) => (v, path) => {
   if (v === null || typeof v !== 'object' || Array.isArray(v)) throw new SchemaError(path, `must be an object, not ${describe(v)}`);
   const out = {};
+  // An object with no other keys whose fields all come back as they are is returned itself
+  // (issue 17: a mesh read back stays the object whose text and hash share-link.js knows).
+  let same = true;
+  let present = 0;
   for (const [key, check] of Object.entries(shape)) {
     const sub = path ? `${path}.${key}` : key;
     if (!Object.prototype.hasOwnProperty.call(v, key)) {
@@ -68,8 +86,10 @@ export const object = (shape, { optional = [] } = {}) => (v, path) => {
       throw new SchemaError(sub, 'is missing');
     }
     out[key] = check(v[key], sub);
+    present += 1;
+    if (out[key] !== v[key]) same = false;
   }
-  return out;
+  return same && Object.keys(v).length === present ? v : out;
 };
 
 export const nullable = (inner) => (v, path) => (v === null ? null : inner(v, path));

@@ -102,7 +102,8 @@ export function envelopeJson(lesson, state) {
   return stringifyExact(envelope(lesson, state), 2) + '\n';
 }
 
-async function sha256(textValue) {
+// The content store's key of a text: 'sha256-' + the hex SHA-256 of its UTF-8 bytes.
+export async function sha256(textValue) {
   const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', new TextEncoder().encode(textValue)));
   return `sha256-${Array.from(digest, (b) => b.toString(16).padStart(2, '0')).join('')}`;
 }
@@ -119,6 +120,20 @@ function contentText(value) {
     contentCache.set(value, entry);
   }
   return entry;
+}
+
+// A value whose JSON text was written, hashed and stored elsewhere (the import worker, issue
+// 17: a million faces are not serialised on the page): its length and hash are remembered,
+// so externalize refers to it without writing it again. Only for a text already in the
+// content store (json: null, nothing left to put).
+export function rememberContent(value, { chars, hash }) {
+  if (!CONTENT_REF.test(hash) || !Number.isSafeInteger(chars)) throw new Error('rememberContent needs the text\'s hash and length');
+  contentCache.set(value, { json: null, chars, hash });
+}
+
+// The SHA-256 reference of a value's text when known (remembered or computed), else null.
+export function contentHashOf(value) {
+  return contentCache.get(value)?.hash ?? null;
 }
 
 function contentLabel(lesson, key, value) {
@@ -143,7 +158,7 @@ export async function externalize(lesson, state, contents) {
     if (contents) {
       try {
         entry.hash = entry.hash ?? await sha256(entry.json);
-        await contents.put(entry.hash, entry.json);
+        if (entry.json !== null) await contents.put(entry.hash, entry.json);
       } catch {
         unstored.push(key);
         continue;

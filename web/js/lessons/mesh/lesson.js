@@ -324,24 +324,18 @@ function describe(view, model, state) {
   return `${kind}: ${model.V} vertices, ${model.E} edges, ${model.F} faces, ${state.mode3d ? '3D view' : '2D view'}. ${labels}${walk}`;
 }
 
-// Importers: the core parses (its message names the line) and refuses what breaks the
-// mesh limits (api.meshLimits: counts from an OFF header before reading on, corners per
-// face, coordinates); the page keeps its mesh when parsing or building fails, because
-// the shell only replaces the state after compute.
-function importer(format) {
-  return (view, textContent, state, name, ctx) => {
-    const parsed = ctx.api.parseMesh(textContent, { format });
-    const positions = Array.from(parsed.positions);
-    const faces = (parsed.faces ?? []).map((f) => Array.from(f));
-    // Every problem, not only the first: the panel lists them with the elements involved.
-    const report = ctx.api.validateMesh({ positions, faces });
-    const errors = report.problems.filter((p) => p.severity === 'error');
-    view.panels.showReport(name, report.problems);
-    if (errors.length) {
-      throw Object.assign(new Error(`${errors[0].message}${errors.length > 1 ? ` (and ${errors.length - 1} more problem${errors.length > 2 ? 's' : ''}, listed in the validation report)` : ''}`), { code: errors[0].code });
-    }
-    return { ...state, meshKind: 'file', imported: { name: name.slice(0, 120), positions, faces }, moved: [], ops: [], vertex: 0, face: 0, step: 0, query: { ...state.query, vertex: 0, face: 0, edge: 0 } };
-  };
+// Importers: the import worker (app/mesh-import.js) has the core parse the file (its message
+// names the line; the mesh limits, api.meshLimits, are checked from an OFF header before
+// reading on) and report every problem (validateMesh); the page keeps its mesh when one is
+// an error, or when building fails, because the shell only replaces the state after compute.
+function importMesh(view, { value, problems }, state, name) {
+  // Every problem, not only the first: the panel lists them with the elements involved.
+  const errors = problems.filter((p) => p.severity === 'error');
+  view.panels.showReport(name, problems);
+  if (errors.length) {
+    throw Object.assign(new Error(`${errors[0].message}${errors.length > 1 ? ` (and ${errors.length - 1} more problem${errors.length > 2 ? 's' : ''}, listed in the validation report)` : ''}`), { code: errors[0].code });
+  }
+  return { ...state, meshKind: 'file', imported: value, moved: [], ops: [], vertex: 0, face: 0, step: 0, query: { ...state.query, vertex: 0, face: 0, edge: 0 } };
 }
 
 /** @type {import('../../app/contract.js').Lesson} */
@@ -382,5 +376,5 @@ export const meshLesson = {
     return view.panels.canvasClick(x, y, event);
   },
   exports: meshExports,
-  importers: { off: importer('off'), obj: importer('obj') },
+  meshImporters: { off: importMesh, obj: importMesh },
 };

@@ -9,6 +9,9 @@
 // end (undo, a link) rebuilds the mesh and replays it. Nothing here counts versions: the
 // mesh does (mesh.id, mesh.version), and every cache is keyed on them (cacheKeys below).
 
+import { importedArrays } from '../../app/mesh-import.js';
+import { contentHashOf } from '../../app/share-link.js';
+
 export const MESH_KINDS = [
   { id: 'lecture', label: 'Lecture example (v1..v5, lecture 000)' },
   { id: 'foley', label: 'Foley example (V1..V4, lecture 001)' },
@@ -43,10 +46,11 @@ export function sourceKey(state, importedKey) {
 
 // The imported mesh rides along unchanged from state to state (spread copies share it), so
 // its key is hashed once per object, not on every walk step; one memo per mesh source.
+// A mesh the import worker hashed (SHA-256 of its text, issue 17) is keyed by that hash.
 function createImportedKeys() {
   const keys = new WeakMap();
   return (imported) => {
-    if (!keys.has(imported)) keys.set(imported, `file:${imported.name}:${imported.faces.length}:${hashPositions(imported)}`);
+    if (!keys.has(imported)) keys.set(imported, `file:${imported.name}:${imported.faces.length}:${contentHashOf(imported) ?? hashPositions(imported)}`);
     return keys.get(imported);
   };
 }
@@ -84,6 +88,9 @@ export function sourceOf(state, api) {
         err.code = 'no-file';
         throw err;
       }
+      // Freshly imported: the worker's flat arrays, built in bulk (issue 17).
+      const flat = importedArrays(state.imported);
+      if (flat) return { positions: flat.positions, faceOffsets: flat.faceOffsets, faceVertices: flat.faceVertices, faces: state.imported.faces };
       return { positions: Float64Array.from(state.imported.positions), faces: state.imported.faces };
     }
     default: throw Object.assign(new Error(`unknown mesh ${state.meshKind}`), { code: 'unknown-mesh' });
@@ -129,9 +136,11 @@ export function createMeshSource() {
     const key = sourceKey(state, importedKey);
     if (live && live.key === key && !force) return live;
     const source = sourceOf(state, api);
-    const faces = faceList(source);
+    // An imported mesh's faces are the state's own (never changed); its flat arrays, when the
+    // import worker left them, are what the core builds from.
+    const faces = state.meshKind === 'file' ? source.faces : faceList(source);
     const positions = Float64Array.from(source.positions);
-    const spec = { positions, faces };
+    const spec = source.faceOffsets ? { positions, faceOffsets: source.faceOffsets, faceVertices: source.faceVertices } : { positions, faces };
     for (const field of ['edges', 'vertexEdges', 'faceEdges']) {
       if (source[field] && source[field].length) spec[field] = source[field];
     }

@@ -314,18 +314,15 @@ function describe(view, model, state) {
   return `${kind}, ${SCHEME_NAMES[state.scheme]} subdivision, level ${state.level}: ${c.vertices} vertices, ${c.edges} edges, ${c.faces} faces.${phase}`;
 }
 
-// OFF and OBJ files: the core parses them (its message names the line) and reports every
-// problem; the first error refuses the file and the page keeps its mesh.
-function importer(format) {
-  return (view, content, state, name, ctx) => {
-    const parsed = ctx.api.parseMesh(content, { format });
-    const mesh = { positions: Array.from(parsed.positions), faces: parsed.faces.map((f) => Array.from(f)) };
-    const errors = ctx.api.validateMesh(mesh).problems.filter((p) => p.severity === 'error');
-    if (errors.length) throw Object.assign(new Error(`${name}: ${errors[0].message}`), { code: errors[0].code });
-    const next = { ...state, meshKind: 'file', imported: { name: name.slice(0, 120), ...mesh }, moved: [], level: 0, phase: 0, focus: -1 };
-    if (state.scheme === 'loop') refuseUnderLoop(mesh, next, ctx);
-    return next;
-  };
+// OFF and OBJ files: the import worker (app/mesh-import.js) has the core parse them (its
+// message names the line) and report every problem; the first error refuses the file and the
+// page keeps its mesh.
+function importMesh(view, { value, problems }, state, name, ctx) {
+  const errors = problems.filter((p) => p.severity === 'error');
+  if (errors.length) throw Object.assign(new Error(`${name}: ${errors[0].message}`), { code: errors[0].code });
+  const next = { ...state, meshKind: 'file', imported: value, moved: [], level: 0, phase: 0, focus: -1 };
+  if (state.scheme === 'loop') refuseUnderLoop(value, next, ctx);
+  return next;
 }
 
 // Loop refuses a mesh with a face that is not a triangle: the import is refused as the
@@ -388,5 +385,5 @@ export const subdivisionLesson = {
     return true;
   },
   exports: [meshFile('off'), meshFile('obj')],
-  importers: { off: importer('off'), obj: importer('obj') },
+  meshImporters: { off: importMesh, obj: importMesh },
 };

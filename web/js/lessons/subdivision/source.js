@@ -2,6 +2,9 @@
 // lecture 000's example, a generated sphere or grid) or an imported OFF/OBJ file. The core
 // builds and checks every one of them; this file only names them and keys them.
 
+import { importedArrays } from '../../app/mesh-import.js';
+import { contentHashOf } from '../../app/share-link.js';
+
 export const MAX_LEVEL = 5;
 // Phases of one step as the core lists them (api.subdivisionSteps): state.phase = how many
 // of them are shown (0: the level's mesh alone, 4: reconnected).
@@ -33,7 +36,8 @@ export function sourceKey(state, memo) {
     case 'grid': return `grid:${state.grid.nx}x${state.grid.ny}`;
     case 'file': {
       if (!state.imported) return 'file:none';
-      if (!memo.has(state.imported)) memo.set(state.imported, `file:${state.imported.name}:${fingerprint(state.imported)}`);
+      // A mesh the import worker hashed (SHA-256 of its text, issue 17) is keyed by that hash.
+      if (!memo.has(state.imported)) memo.set(state.imported, `file:${state.imported.name}:${contentHashOf(state.imported) ?? fingerprint(state.imported)}`);
       return memo.get(state.imported);
     }
     default: return state.meshKind;
@@ -76,7 +80,7 @@ function baseInput(state, api) {
     case 'grid': return api.generateMesh('grid', { nx: state.grid.nx, ny: state.grid.ny });
     case 'file':
       if (!state.imported) throw Object.assign(new Error('No file has been imported yet: use Open OFF/OBJ (or drop an .off or .obj file on the page).'), { code: 'no-file' });
-      return { positions: Float64Array.from(state.imported.positions), faces: state.imported.faces };
+      return importedArrays(state.imported) ?? { positions: Float64Array.from(state.imported.positions), faces: state.imported.faces };
     default: return api.generateMesh(state.meshKind);
   }
 }
