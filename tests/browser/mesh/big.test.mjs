@@ -198,7 +198,7 @@ test('the PNG export holds the WebGL2 picture under the labels, as the stage sho
   assert.ok(share < 0.01, `${(100 * share).toFixed(2)}% of pixels differ`);
   const f1 = await page.evaluate(() => {
     const m = window.wingspline.model;
-    const corners = m.faces[0];
+    const corners = Array.from(m.faceVertices.subarray(m.faceOffsets[0], m.faceOffsets[1]));
     const x = corners.reduce((s, v) => s + m.projected[3 * v], 0) / corners.length;
     const y = corners.reduce((s, v) => s + m.projected[3 * v + 1], 0) / corners.length;
     const t = window.wingspline.ctx.stage.transform();

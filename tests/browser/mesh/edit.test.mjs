@@ -126,7 +126,7 @@ test('a student splits e3 with the pointer, steps through the assignments, undoe
 
 test('flipping e3 and flipping it back gives the lecture mesh\'s faces again; a refused flip says why and changes nothing', async () => {
   const page = await openLesson();
-  const facesBefore = await page.evaluate(() => window.wingspline.model.faces.map((f) => [...f]));
+  const facesBefore = await page.evaluate(() => ((m) => Array.from({ length: m.faceOffsets.length - 1 }, (_, f) => [...m.faceVertices.subarray(m.faceOffsets[f], m.faceOffsets[f + 1])]))(window.wingspline.model));
   await pickEdgeWithPointer(page, 2);
   await page.keyboard.press('f');
   // e3 = v2 v3 between F1 (v1 v2 v3) and F2 (v2 v4 v3) becomes the diagonal v1 - v4.
@@ -144,7 +144,7 @@ test('flipping e3 and flipping it back gives the lecture mesh\'s faces again; a 
   });
   // The same faces as corner cycles (each may start at another corner).
   const canonical = (faces) => faces.map((f) => { const k = f.indexOf(Math.min(...f)); return [...f.slice(k), ...f.slice(0, k)].join(' '); }).sort();
-  const facesAfter = await page.evaluate(() => window.wingspline.model.faces.map((f) => [...f]));
+  const facesAfter = await page.evaluate(() => ((m) => Array.from({ length: m.faceOffsets.length - 1 }, (_, f) => [...m.faceVertices.subarray(m.faceOffsets[f], m.faceOffsets[f + 1])]))(window.wingspline.model));
   assert.deepEqual(canonical(facesAfter), canonical(facesBefore));
   // e1 is a boundary edge: flipping it is refused with the core's reason, the mesh unchanged.
   const tablesBefore = await tableCells(page, 'we-edge-table');
@@ -165,7 +165,7 @@ test('on a touch screen: tap F2 and poke it, collapse e7 (its rows stay as struc
   // The centroid of F2 = (v2 v4 v3), asked of the page, tapped with a finger.
   const point = await page.evaluate(() => {
     const m = window.wingspline.model;
-    const [x, y] = m.faces[1].reduce((acc, v) => [acc[0] + m.projected[3 * v] / 3, acc[1] + m.projected[3 * v + 1] / 3], [0, 0]);
+    const [x, y] = Array.from(m.faceVertices.subarray(m.faceOffsets[1], m.faceOffsets[2])).reduce((acc, v) => [acc[0] + m.projected[3 * v] / 3, acc[1] + m.projected[3 * v + 1] / 3], [0, 0]);
     return window.wingspline.toClient(x, y);
   });
   await page.touchscreen.tap(point.x, point.y);

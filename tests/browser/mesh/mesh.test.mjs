@@ -377,7 +377,7 @@ test('hovering a table row marks the element on the canvas, and the canvas marks
   // The centroid of F3 = (v2 v5 v4) on the canvas: the F3 row of the face table lights up.
   const point = await page.evaluate(() => {
     const m = window.wingspline.model;
-    const [x, y] = m.faces[2].reduce((acc, v) => [acc[0] + m.projected[3 * v] / 3, acc[1] + m.projected[3 * v + 1] / 3], [0, 0]);
+    const [x, y] = Array.from(m.faceVertices.subarray(m.faceOffsets[2], m.faceOffsets[3])).reduce((acc, v) => [acc[0] + m.projected[3 * v] / 3, acc[1] + m.projected[3 * v + 1] / 3], [0, 0]);
     return window.wingspline.toClient(x, y);
   });
   await page.mouse.move(point.x, point.y);

@@ -12,11 +12,23 @@ const CACHE_EDGES = 2000;        // from this size the still mesh is drawn once 
 
 // The view's rotation and projection (shared with the subdivision lesson): ui/mesh-view.js.
 
+// The faces are CSR (model.faceOffsets, model.faceVertices): face f's corners are
+// cornersOf(model, f); a removed face has none.
+const faceCount = (model) => model.faceOffsets.length - 1;
+const cornersOf = (model, f) => model.faceVertices.subarray(model.faceOffsets[f], model.faceOffsets[f + 1]);
+const hasCorners = (model, f) => model.faceOffsets[f + 1] > model.faceOffsets[f];
+
 function faceOrder(model, P) {
+  const F = faceCount(model);
   const order = [];
-  model.faces.forEach((face, f) => { if (face.length) order.push(f); }); // a removed face has no corners
+  for (let f = 0; f < F; f += 1) if (hasCorners(model, f)) order.push(f);
   if (!model.mode3d) return order;
-  const depth = model.faces.map((face) => face.reduce((s, v) => s + P[3 * v + 2], 0) / Math.max(1, face.length));
+  const depth = new Float64Array(F);
+  for (const f of order) {
+    let z = 0;
+    for (const v of cornersOf(model, f)) z += P[3 * v + 2];
+    depth[f] = z / (model.faceOffsets[f + 1] - model.faceOffsets[f]);
+  }
   return order.sort((a, b) => depth[a] - depth[b]);
 }
 
@@ -45,12 +57,16 @@ function edgeEnds(model, P, e, zoom, insetPx = 11) {
 // In 3D a face whose projected corners run clockwise faces away (faces are CCW seen from
 // outside); large meshes then skip the edges of the far side, so the picture stays legible.
 function frontFacing(model, P) {
-  return model.faces.map((face) => {
-    if (!model.mode3d) return true;
+  const F = faceCount(model);
+  const front = new Uint8Array(F).fill(1);
+  if (!model.mode3d) return front;
+  const { faceOffsets: o, faceVertices: c } = model;
+  for (let f = 0; f < F; f += 1) {
     let area = 0;
-    for (let i = 0, j = face.length - 1; i < face.length; j = i, i += 1) area += P[3 * face[j]] * P[3 * face[i] + 1] - P[3 * face[i]] * P[3 * face[j] + 1];
-    return area >= 0;
-  });
+    for (let i = o[f], j = o[f + 1] - 1; i < o[f + 1]; j = i, i += 1) area += P[3 * c[j]] * P[3 * c[i] + 1] - P[3 * c[i]] * P[3 * c[j] + 1];
+    front[f] = area >= 0 ? 1 : 0;
+  }
+  return front;
 }
 
 function edgeSeen(model, front, e) {
@@ -62,8 +78,9 @@ function edgeSeen(model, front, e) {
 // the label sits outside the mesh and off its edges.
 function labelDirections(model, P) {
   const dir = new Float64Array(2 * (P.length / 3));
-  for (const face of model.faces) {
-    if (!face.length) continue;
+  for (let f = 0; f < faceCount(model); f += 1) {
+    if (!hasCorners(model, f)) continue;
+    const face = cornersOf(model, f);
     const [cx, cy] = centroid(face, P);
     for (const v of face) { dir[2 * v] += P[3 * v] - cx; dir[2 * v + 1] += P[3 * v + 1] - cy; }
   }
@@ -89,16 +106,16 @@ function drawBaseBatched(painter, model, colors) {
     const style = { fill: colors.series[5], alpha: facing ? 0.16 : 0.06, stroke: undefined };
     let xy = [];
     let offsets = [0];
-    model.faces.forEach((face, f) => {
-      if (front[f] !== facing || !face.length) return;
-      for (const v of face) xy.push(P[3 * v], P[3 * v + 1]);
+    for (let f = 0; f < faceCount(model); f += 1) {
+      if (Boolean(front[f]) !== facing || !hasCorners(model, f)) continue;
+      for (const v of cornersOf(model, f)) xy.push(P[3 * v], P[3 * v + 1]);
       offsets.push(xy.length / 2);
       if (offsets.length > BATCH) {
         painter.polygons(xy, offsets, style);
         xy = [];
         offsets = [0];
       }
-    });
+    }
     if (offsets.length > 1) painter.polygons(xy, offsets, style);
   }
   const E = model.weShown.edges.length / 8;
@@ -119,14 +136,14 @@ function drawBaseBatched(painter, model, colors) {
 function drawBase(painter, model, state, colors, plan) {
   const P = model.projected;
   const zoom = state.view.zoom;
-  const small = model.faces.length <= LABEL_LIMIT;
+  const small = faceCount(model) <= LABEL_LIMIT;
   if (!small && model.weShown.edges.length / 8 > LABEL_LIMIT) {
     drawBaseBatched(painter, model, colors);
   } else {
     const faceFill = colors.series[5];
     const front = frontFacing(model, P);
     for (const f of faceOrder(model, P)) {
-      painter.polygon(faceXY(model.faces[f], P), { fill: faceFill, alpha: front[f] ? 0.16 : 0.06, stroke: undefined });
+      painter.polygon(faceXY(cornersOf(model, f), P), { fill: faceFill, alpha: front[f] ? 0.16 : 0.06, stroke: undefined });
     }
     const E = model.weShown.edges.length / 8;
     const arrows = E <= LABEL_LIMIT;
@@ -173,9 +190,11 @@ const awayY = (away, v) => (away ? away[2 * v + 1] : Math.SQRT1_2);
 function frontMarks(model, P) {
   if (!model.mode3d) return null;
   const front = frontFacing(model, P);
-  if (!front.some((x, f) => x && model.faces[f].length)) return null;
+  let any = false;
+  for (let f = 0; f < front.length && !any; f += 1) any = front[f] === 1 && hasCorners(model, f);
+  if (!any) return null;
   const vertex = new Uint8Array(P.length / 3);
-  model.faces.forEach((face, f) => { if (front[f]) for (const v of face) vertex[v] = 1; });
+  for (let f = 0; f < front.length; f += 1) if (front[f]) for (const v of cornersOf(model, f)) vertex[v] = 1;
   return { face: front, vertex };
 }
 
@@ -206,7 +225,7 @@ export function labelPlan(painter, model, state, forced = []) {
     crowded = onScreen * boxW * boxH > 0.5 * w * h;
   }
   const front = crowded ? null : frontMarks(model, P);
-  const faceSeen = (f) => model.faces[f]?.length && (!front || front.face[f]);
+  const faceSeen = (f) => hasCorners(model, f) && (!front || front.face[f]);
   const vertexSeen = (v) => !model.vertexGap?.[v] && (!front || front.vertex[v]);
   const edgeOk = (e) => !model.edgeGap?.[e] && (!front || edgeSeen(model, front.face, e));
   const key = (kind, i) => `${kind}${i}`;
@@ -219,7 +238,7 @@ export function labelPlan(painter, model, state, forced = []) {
   }
   if (small) {
     for (let v = 0; v < model.V; v += 1) if (vertexSeen(v) && !plan.forced.has(key('vertex', v))) plan.vertices.push(v);
-    for (let f = 0; f < model.faces.length; f += 1) if (faceSeen(f) && !plan.forced.has(key('face', f))) plan.faces.push(f);
+    for (let f = 0; f < faceCount(model); f += 1) if (faceSeen(f) && !plan.forced.has(key('face', f))) plan.faces.push(f);
     for (let e = 0; e < E; e += 1) if (edgeOk(e) && !plan.forced.has(key('edge', e))) plan.edges.push(e);
     return plan;
   }
@@ -258,12 +277,12 @@ export function labelPlan(painter, model, state, forced = []) {
   };
   // The touched elements' boxes first (they are drawn whatever the overlap).
   for (const v of plan.vertices) fits(vx(v), vy(v), vLabel(v).length, true);
-  for (const f of plan.faces) if (model.faces[f]?.length) fits(...at(...centroid(model.faces[f], P)), fLabel(f).length, true);
+  for (const f of plan.faces) if (hasCorners(model, f)) fits(...at(...centroid(cornersOf(model, f), P)), fLabel(f).length, true);
   for (const e of plan.edges) if (model.weShown.edges[8 * e] >= 0 && model.weShown.edges[8 * e + 1] >= 0) fits(...edgeMid(e), eLabel(e).length, true);
   for (let v = 0; v < model.V; v += 1) if (vertexSeen(v) && !plan.forced.has(key('vertex', v)) && fits(vx(v), vy(v), vLabel(v).length)) plan.vertices.push(v);
-  for (let f = 0; f < model.faces.length; f += 1) {
+  for (let f = 0; f < faceCount(model); f += 1) {
     if (!faceSeen(f) || plan.forced.has(key('face', f))) continue;
-    const [x, y] = at(...centroid(model.faces[f], P));
+    const [x, y] = at(...centroid(cornersOf(model, f), P));
     if (fits(x, y, fLabel(f).length)) plan.faces.push(f);
   }
   for (let e = 0; e < E; e += 1) {
@@ -284,7 +303,8 @@ function drawLabels(painter, model, state, colors, plan) {
     }
   }
   for (const f of plan.faces) {
-    const [x, y] = centroid(model.faces[f], P);
+    if (!hasCorners(model, f)) continue;
+    const [x, y] = centroid(cornersOf(model, f), P);
     painter.text(x, y, fLabel(f), { fill: colors.series[2], font: 16, weight: 700, halo: colors.background });
   }
   for (const e of plan.edges) {
@@ -358,7 +378,7 @@ function drawElement(painter, model, element, colors, strong) {
   const colour = colors.series[2];
   if (element.kind === 'vertex') painter.circle(P[3 * element.index], P[3 * element.index + 1], strong ? 11 : 9, { stroke: colour, width: 3 });
   if (element.kind === 'edge') highlightEdge(painter, model, element.index, { stroke: colour, width: strong ? 7 : 5, alpha: 0.8 });
-  if (element.kind === 'face') painter.polygon(faceXY(model.faces[element.index], P), { fill: colour, alpha: strong ? 0.35 : 0.25 });
+  if (element.kind === 'face' && element.index < faceCount(model)) painter.polygon(faceXY(cornersOf(model, element.index), P), { fill: colour, alpha: strong ? 0.35 : 0.25 });
 }
 
 function drawWalk(painter, model, state, colors) {
@@ -371,7 +391,7 @@ function drawWalk(painter, model, state, colors) {
     const v = model.walkElement;
     painter.circle(P[3 * v], P[3 * v + 1], 13, { stroke: found, width: 3 });
   } else {
-    painter.polygon(faceXY(model.faces[model.walkElement], P), { fill: found, alpha: 0.18 });
+    painter.polygon(faceXY(cornersOf(model, model.walkElement), P), { fill: found, alpha: 0.18 });
   }
   if (frame.current >= 0 && !frame.done) highlightEdge(painter, model, frame.current, { stroke: current, width: 11, alpha: 0.55 });
   const zoom = state.view.zoom;
@@ -409,8 +429,8 @@ function touched(model, selection) {
 }
 
 // The style of the GPU picture: what drawBase draws as paths, as one draw call each.
-// A big mesh in 3D is a lit nearest surface; its edges are drawn while they are at least
-// EDGE_SPACING_PX apart on screen on average (closer, they would be a grey blur). While the
+// A big mesh in 3D is a lit nearest surface; its edges (2D or 3D) are drawn while they are at
+// least EDGE_SPACING_PX apart on screen on average (closer, they would be a grey blur). While the
 // view moves, a mesh of more than PROXY_FROM triangles is drawn as its display proxy (the
 // core's vertex clustering, PROXY_TRIANGLES), and whole again SETTLE_MS after the last move.
 const EDGE_SPACING_PX = 4;
@@ -443,7 +463,7 @@ function drawGpu(gl, gpu, model, state, ctx) {
     {
       background: parseColour(colors.background), fill: parseColour(colors.series[5]), ink: parseColour(colors.ink),
       faceAlpha: 0.16, backAlpha: model.mode3d ? 0.06 : 0.16, lit: big && model.mode3d,
-      edges: big && !moving && (!model.mode3d || spacing >= EDGE_SPACING_PX), edgeAlpha: 0.7, useProxy: moving,
+      edges: big && !moving && spacing >= EDGE_SPACING_PX, edgeAlpha: 0.7, useProxy: moving,
     },
   );
 }
@@ -494,17 +514,18 @@ export function pickElement(model, x, y, zoom) {
   if (best) return best;
   let face = null;
   let faceDepth = -Infinity;
-  model.faces.forEach((f, index) => {
-    if (!f.length) return;
+  for (let index = 0; index < faceCount(model); index += 1) {
+    const f = cornersOf(model, index);
+    if (!f.length) continue;
     let inside = false;
     for (let i = 0, j = f.length - 1; i < f.length; j = i, i += 1) {
       const xi = P[3 * f[i]]; const yi = P[3 * f[i] + 1]; const xj = P[3 * f[j]]; const yj = P[3 * f[j] + 1];
       if ((yi > y) !== (yj > y) && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi) inside = !inside;
     }
-    if (!inside) return;
+    if (!inside) continue;
     const depth = f.reduce((s, v) => s + P[3 * v + 2], 0) / f.length;
     if (depth > faceDepth) { faceDepth = depth; face = { kind: 'face', index }; }
-  });
+  }
   return face;
 }
 

@@ -5,7 +5,7 @@
 // The state is plain JSON (schema below); the model is what the core returned for it.
 import { number, integer, boolean, oneOf, text, list, object, nullable, viewSchema } from '../../app/schema.js';
 import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
-import { createMeshSource, cacheKeys, faceList, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
+import { createMeshSource, cacheKeys, faceCsr, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
 import { arraysAtStep, visibleSteps } from './edit-playback.js';
 import { normaliseSteps, walkFrames } from './walk.js';
 import { drawMesh, createBaseCache, LABEL_LIMIT } from './draw.js';
@@ -125,7 +125,6 @@ function wingedTables(derived, entry, keys) {
     derived.centre = null;
     derived.faceNormals = null;
     derived.sideKey = null;
-    derived.csr = null;
   }
   return derived.we;
 }
@@ -147,9 +146,9 @@ function compute(view, state, ctx) {
   if (changes.length) derived.lastChange = changes[changes.length - 1];
   // After an edit the faces are the mesh's own (a removed face is a gap: no corners).
   const edited = entry.ops.length > 0;
-  const faces = edited ? (derived.faces ??= faceList(entry.mesh.tables('vertex-face-tables').faces.arrays)) : entry.faces;
+  // Faces as CSR (mesh-source.js faceCsr); a removed face has no corners.
+  const csr = edited ? (derived.faces ??= faceCsr(entry.mesh.tables('vertex-face-tables').faces.arrays)) : entry.csr;
   derived.gaps ??= edited ? entry.mesh.gaps() : { vertices: [], edges: [], faces: [] };
-  derived.csr ??= faceCsr(faces); // the faces as the GPU renderer reads them (once per version)
   const gaps = derived.gaps.vertices.length + derived.gaps.edges.length + derived.gaps.faces.length;
   const record = entry.lastOperation;
   const editSteps = visibleSteps(record).length;
@@ -166,7 +165,7 @@ function compute(view, state, ctx) {
   const weShown = record && editStep < editSteps ? arraysAtStep(we, record, editStep) : we;
   const edgeGap = gaps || weShown !== we ? unwritten(weShown, E, gaps ? marks(E, derived.gaps.edges) : new Uint8Array(E)) : null;
   const current = weShown !== we && editStep > 0 ? visibleSteps(record)[editStep - 1] : null;
-  const removed = walkKind === 'vertex' ? vertexGap?.[walkElement] : faces[walkElement]?.length === 0;
+  const removed = walkKind === 'vertex' ? vertexGap?.[walkElement] : csr.offsets[walkElement + 1] === csr.offsets[walkElement];
   const frames = walkElement >= 0 && !removed ? stepsOf(derived, entry, walkKind, walkElement) : [];
   const frame = frames[Math.min(state.step, frames.length - 1)] ?? null;
   const R = viewRotation(state);
@@ -194,9 +193,8 @@ function compute(view, state, ctx) {
     positions: we.positions,
     projected: derived.projected,
     rotation: R,
-    faces,
-    faceOffsets: derived.csr.offsets,
-    faceVertices: derived.csr.vertices,
+    faceOffsets: csr.offsets,
+    faceVertices: csr.vertices,
     centre: derived.centre,
     we,
     // The winged-edge tables as the edit player shows them (after editStep assignments).
@@ -221,15 +219,6 @@ function compute(view, state, ctx) {
     lastChange: derived.lastChange,
     derived,
   };
-}
-
-// Faces as offsets and corners (CSR): face f is vertices[offsets[f] .. offsets[f + 1]).
-function faceCsr(faces) {
-  const offsets = new Int32Array(faces.length + 1);
-  for (let f = 0; f < faces.length; f += 1) offsets[f + 1] = offsets[f] + faces[f].length;
-  const vertices = new Int32Array(offsets[faces.length]);
-  for (let f = 0; f < faces.length; f += 1) vertices.set(faces[f], offsets[f]);
-  return { offsets, vertices };
 }
 
 function unwritten(weShown, E, out) {

@@ -63,13 +63,17 @@ function hashPositions({ positions, faces }) {
   return (h >>> 0).toString(36);
 }
 
-// Faces as plain arrays, whatever container the core used (arrays, or CSR offsets).
-export function faceList(data) {
-  if (Array.isArray(data.faces)) return data.faces.map((f) => Array.from(f));
-  const { faceOffsets, faceVertices } = data;
-  const out = [];
-  for (let f = 0; f + 1 < faceOffsets.length; f += 1) out.push(Array.from(faceVertices.subarray(faceOffsets[f], faceOffsets[f + 1])));
-  return out;
+// Faces as offsets and corners (CSR: face f is vertices[offsets[f] .. offsets[f + 1])),
+// whatever container the core or the state used: the one form the lesson keeps (issue 17:
+// a million faces as a million small arrays cost a tenth of a second and much memory).
+export function faceCsr(data) {
+  if (data.faceOffsets) return { offsets: data.faceOffsets, vertices: data.faceVertices };
+  const faces = data.faces;
+  const offsets = new Int32Array(faces.length + 1);
+  for (let f = 0; f < faces.length; f += 1) offsets[f + 1] = offsets[f] + faces[f].length;
+  const vertices = new Int32Array(offsets[faces.length]);
+  for (let f = 0; f < faces.length; f += 1) vertices.set(faces[f], offsets[f]);
+  return { offsets, vertices };
 }
 
 // The indexed face set (and, for the slides' meshes, the slide's numbering) of a state.
@@ -79,9 +83,9 @@ export function sourceOf(state, api) {
     case 'foley': return api.foleyExample();
     case 'tetrahedron': return api.generateMesh('tetrahedron');
     case 'cube': return api.generateMesh('cube');
-    case 'fan': return api.generateMesh('fan', { n: state.fanSize });
-    case 'grid': return api.generateMesh('grid', { nx: state.grid.nx, ny: state.grid.ny });
-    case 'sphere': return api.generateMesh('sphere', { slices: state.sphere.slices, stacks: state.sphere.stacks });
+    case 'fan': return api.generateMesh('fan', { n: state.fanSize, layout: 'csr' });
+    case 'grid': return api.generateMesh('grid', { nx: state.grid.nx, ny: state.grid.ny, layout: 'csr' });
+    case 'sphere': return api.generateMesh('sphere', { slices: state.sphere.slices, stacks: state.sphere.stacks, layout: 'csr' });
     case 'file': {
       if (!state.imported) {
         const err = new Error('No file has been imported yet: use Import (or drop an .off or .obj file on the page).');
@@ -90,7 +94,7 @@ export function sourceOf(state, api) {
       }
       // Freshly imported: the worker's flat arrays, built in bulk (issue 17).
       const flat = importedArrays(state.imported);
-      if (flat) return { positions: flat.positions, faceOffsets: flat.faceOffsets, faceVertices: flat.faceVertices, faces: state.imported.faces };
+      if (flat) return { positions: flat.positions, faceOffsets: flat.faceOffsets, faceVertices: flat.faceVertices };
       return { positions: Float64Array.from(state.imported.positions), faces: state.imported.faces };
     }
     default: throw Object.assign(new Error(`unknown mesh ${state.meshKind}`), { code: 'unknown-mesh' });
@@ -129,24 +133,24 @@ function applyOne(mesh, operation, previous, newest) {
 }
 
 export function createMeshSource() {
-  let live = null; // { key, mesh, base: Float64Array, faces, applied: Map<v, [x,y,z]>, ops: [], lastOperation }
+  let live = null; // { key, mesh, base: Float64Array, csr: {offsets, vertices}, applied: Map<v, [x,y,z]>, ops: [], lastOperation }
   const importedKey = createImportedKeys();
 
   function build(state, api, force = false) {
     const key = sourceKey(state, importedKey);
     if (live && live.key === key && !force) return live;
     const source = sourceOf(state, api);
-    // An imported mesh's faces are the state's own (never changed); its flat arrays, when the
-    // import worker left them, are what the core builds from.
-    const faces = state.meshKind === 'file' ? source.faces : faceList(source);
+    // An imported mesh's flat arrays, when the import worker left them, are what the core
+    // builds from; otherwise the faces are turned into CSR once here.
+    const csr = faceCsr(source);
     const positions = Float64Array.from(source.positions);
-    const spec = source.faceOffsets ? { positions, faceOffsets: source.faceOffsets, faceVertices: source.faceVertices } : { positions, faces };
+    const spec = { positions, faceOffsets: csr.offsets, faceVertices: csr.vertices };
     for (const field of ['edges', 'vertexEdges', 'faceEdges']) {
       if (source[field] && source[field].length) spec[field] = source[field];
     }
     const mesh = api.buildMesh(spec);
     const previous = live;
-    live = { key, mesh, base: positions, faces, applied: new Map(), ops: [], lastOperation: null };
+    live = { key, mesh, base: positions, csr, applied: new Map(), ops: [], lastOperation: null };
     previous?.mesh.dispose();
     return live;
   }
