@@ -18,6 +18,7 @@
 #include "wingspline/mesh/winged_edge.h"
 
 #include <algorithm>
+#include <map>
 #include <memory>
 #include <unordered_map>
 
@@ -142,14 +143,20 @@ val named_value(const NamedMesh& n) {
 
 // ------------------------------------------------------------------ building and freeing
 
+// The optional numbering of a build: [start, end] per edge (flat), the vertex and face edges.
+BuildOptions options_from(const val& edges, const val& vertex_edges, const val& face_edges) {
+    BuildOptions options;
+    const std::vector<int32_t> flat = to_ints(edges);
+    for (std::size_t i = 0; i + 1 < flat.size(); i += 2) options.edges.push_back({flat[i], flat[i + 1]});
+    options.vertex_edges = to_ints(vertex_edges);
+    options.face_edges = to_ints(face_edges);
+    return options;
+}
+
 val mesh_build(val positions, val face_offsets, val face_vertices, val edges, val vertex_edges, val face_edges) {
     return guarded_build([&] {
         IndexedMesh m = indexed_from(positions, face_offsets, face_vertices);
-        BuildOptions options;
-        const std::vector<int32_t> flat = to_ints(edges);
-        for (std::size_t i = 0; i + 1 < flat.size(); i += 2) options.edges.push_back({flat[i], flat[i + 1]});
-        options.vertex_edges = to_ints(vertex_edges);
-        options.face_edges = to_ints(face_edges);
+        const BuildOptions options = options_from(edges, vertex_edges, face_edges);
         auto e = std::make_unique<MeshEntry>();
         e->winged = WingedEdgeMesh::build(std::move(m), options); // positions taken, not copied
         const int32_t handle = registry().next_handle++;
@@ -157,6 +164,59 @@ val mesh_build(val positions, val face_offsets, val face_vertices, val edges, va
         val r = val::object();
         r.set("handle", handle);
         return r;
+    });
+}
+
+// Building in steps (issue 17, winged_edge.h WingedEdgeBuild): meshBuildStart reads the
+// face set and options as meshBuild does and returns {job}; each meshBuildStep runs one
+// phase and returns {done, phase} and, once done, {handle} of the new live mesh. A refused
+// step ends the job (its error is meshBuild's); meshBuildCancel ends one early.
+std::map<int32_t, std::unique_ptr<WingedEdgeBuild>>& build_jobs() {
+    static std::map<int32_t, std::unique_ptr<WingedEdgeBuild>> jobs;
+    return jobs;
+}
+int32_t next_build_job = 1;
+
+val mesh_build_start(val positions, val face_offsets, val face_vertices, val edges, val vertex_edges, val face_edges) {
+    return guarded_build([&] {
+        IndexedMesh m = indexed_from(positions, face_offsets, face_vertices);
+        const int32_t job = next_build_job++;
+        auto build = std::make_unique<WingedEdgeBuild>(std::move(m), options_from(edges, vertex_edges, face_edges));
+        val r = val::object();
+        r.set("job", job);
+        r.set("phase", std::string(build->phase()));
+        build_jobs().emplace(job, std::move(build));
+        return r;
+    });
+}
+
+val mesh_build_step(int32_t job) {
+    return guarded_build([&] {
+        const auto it = build_jobs().find(job);
+        if (it == build_jobs().end())
+            throw Error("invalid-argument", "build " + std::to_string(job) + " is over (done, refused or cancelled) or was never started");
+        bool done = false;
+        try {
+            done = it->second->step();
+        } catch (...) {
+            build_jobs().erase(it);
+            throw;
+        }
+        val r = val::object();
+        r.set("done", done);
+        r.set("phase", std::string(it->second->phase()));
+        if (done) {
+            r.set("handle", register_mesh(it->second->take()));
+            build_jobs().erase(it);
+        }
+        return r;
+    });
+}
+
+val mesh_build_cancel(int32_t job) {
+    return guarded([&] {
+        build_jobs().erase(job);
+        return val::object();
     });
 }
 
@@ -800,6 +860,9 @@ int32_t register_mesh(WingedEdgeMesh&& winged) {
 EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     using namespace wingspline::bindings;
     emscripten::function("meshBuild", &mesh_build);
+    emscripten::function("meshBuildStart", &mesh_build_start);
+    emscripten::function("meshBuildStep", &mesh_build_step);
+    emscripten::function("meshBuildCancel", &mesh_build_cancel);
     emscripten::function("meshDispose", &mesh_dispose);
     emscripten::function("meshLiveCount", &mesh_live_count);
     emscripten::function("meshValidateIndexed", &validate_indexed_mesh);

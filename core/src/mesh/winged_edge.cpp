@@ -343,63 +343,150 @@ WingedEdgeMesh WingedEdgeMesh::build_reference(const IndexedMesh& mesh, const Bu
 
 WingedEdgeMesh WingedEdgeMesh::build_impl(const IndexedMesh& mesh, const BuildOptions& options,
                                           std::vector<double>* positions_to_take, bool fast_kernels) {
-    const int32_t V = mesh.vertex_count();
-    const int32_t F = mesh.face_count();
-    check_positions(mesh);
-    const int32_t H = mesh.face_offsets[F];
-
-    // Phases 1 and 2: count the sides per lower vertex, then bucket them (CSR).
-    std::vector<int32_t> bucket_end(static_cast<std::size_t>(V) + 1, 0);
-    if (!(fast_kernels ? detail::count_sides_fast(mesh, bucket_end.data() + 1) : count_sides(mesh, bucket_end.data() + 1)))
-        refuse(mesh);
-    for (int32_t v = 0; v < V; ++v) bucket_end[v + 1] += bucket_end[v];
-    std::unique_ptr<BucketSlot[]> slots(new BucketSlot[H]); // every slot is written below
-    if (fast_kernels)
-        detail::bucket_sides_fast(mesh, bucket_end.data(), slots.get());
-    else
-        bucket_sides(mesh, bucket_end.data(), slots.get());
-    // Now bucket v is [bucket_end[v-1], bucket_end[v]) (bucket_end[-1] = 0).
-
-    std::vector<int32_t> edge_of(H, kNone); // first each half-edge's twin, then its edge
-    const int32_t pairs = pair_twins(mesh, bucket_end, slots.get(), edge_of);
-
-    WingedEdgeMesh m;
-    m.edges_.resize(H - pairs);
-    m.vertex_edge_.assign(V, kNone);
-    m.face_edge_.assign(F, kNone);
-    number_edges(mesh, edge_of, m.edges_);
-    if (!options.edges.empty()) apply_edge_list(options, V, bucket_end, slots.get(), edge_of, m.edges_);
-    slots.reset();
-    bucket_end = std::vector<int32_t>();
-
-    fill_face_wings(mesh, edge_of, m.edges_, m.face_edge_);
-    edge_of = std::vector<int32_t>();
-    std::vector<int32_t> scratch(V, kNone); // the boundary edge leaving each vertex, then its degree
-    fill_boundary_wings(mesh, m.edges_, m.vertex_edge_, scratch);
-    std::vector<int32_t>& degree = scratch;
-    choose_vertex_edges(m.edges_, m.vertex_edge_, degree);
-
-    check_one_fan_per_vertex(mesh, m, degree);
-    check_no_duplicate_faces(mesh, m);
-
-    if (!options.vertex_edges.empty()) apply_vertex_edges(options, m.edges_, degree, m.vertex_edge_);
-    if (!options.face_edges.empty()) {
-        apply_face_edges(options, m.edges_, m.face_edge_);
-        // face_set() lists each face from its first corner as given, wherever its walk now starts.
-        const int32_t* fo = mesh.face_offsets.data();
-        const int32_t* fv = mesh.face_vertices.data();
-        for (int32_t f = 0; f < F; ++f)
-            if (m.walk_start_corner(f) != fv[fo[f]]) {
-                m.face_first_corner_.resize(F);
-                for (int32_t g = 0; g < F; ++g) m.face_first_corner_[g] = fv[fo[g]];
-                break;
-            }
+    WingedEdgeBuild build(&mesh, &options, positions_to_take, fast_kernels);
+    while (!build.step()) {
     }
-    // Last, so that every refusal above still sees the caller's positions.
-    if (positions_to_take)
-        m.positions_ = std::move(*positions_to_take);
-    else
-        m.positions_ = mesh.positions;
+    return build.take();
+}
+
+// ------------------------------------------------------------------ the build, phase by phase
+
+struct WingedEdgeBuild::State {
+    IndexedMesh owned;                 // the face set, when the build owns it (WingedEdgeBuild(mesh))
+    BuildOptions owned_options;
+    const IndexedMesh* mesh = nullptr; // what is built from
+    const BuildOptions* options = nullptr;
+    std::vector<double>* positions_to_take = nullptr;
+    bool fast = true;
+    int phase = 0;
+    int32_t V = 0, F = 0, H = 0, pairs = 0;
+    std::vector<int32_t> bucket_end;
+    std::unique_ptr<BucketSlot[]> slots;
+    std::vector<int32_t> edge_of;
+    std::vector<int32_t> scratch;
+    WingedEdgeMesh m;
+};
+
+namespace {
+const char* const kBuildPhases[] = {"counting sides",  "bucketing sides", "pairing twins", "numbering edges",
+                                    "face wings",      "boundary wings",  "checks",        "stored edges",
+                                    "done"};
+} // namespace
+
+WingedEdgeBuild::WingedEdgeBuild(IndexedMesh mesh, BuildOptions options) : s_(std::make_unique<State>()) {
+    s_->owned = std::move(mesh);
+    s_->owned_options = std::move(options);
+    s_->mesh = &s_->owned;
+    s_->options = &s_->owned_options;
+    s_->positions_to_take = &s_->owned.positions;
+}
+
+WingedEdgeBuild::WingedEdgeBuild(const IndexedMesh* mesh, const BuildOptions* options, std::vector<double>* positions_to_take,
+                                 bool fast)
+    : s_(std::make_unique<State>()) {
+    s_->mesh = mesh;
+    s_->options = options;
+    s_->positions_to_take = positions_to_take;
+    s_->fast = fast;
+}
+
+WingedEdgeBuild::~WingedEdgeBuild() = default;
+WingedEdgeBuild::WingedEdgeBuild(WingedEdgeBuild&&) noexcept = default;
+WingedEdgeBuild& WingedEdgeBuild::operator=(WingedEdgeBuild&&) noexcept = default;
+
+const char* WingedEdgeBuild::phase() const { return kBuildPhases[s_ ? std::min(s_->phase, 8) : 8]; }
+
+bool WingedEdgeBuild::step() {
+    if (!s_) throw Error("invalid-argument", "this build is over (its mesh was taken, or it was refused)");
+    State& st = *s_;
+    const IndexedMesh& mesh = *st.mesh;
+    const BuildOptions& options = *st.options;
+    WingedEdgeMesh& m = st.m;
+    try {
+        switch (st.phase) {
+        case 0: {
+            // Phase 1: count the sides per lower vertex (CSR offsets).
+            st.V = mesh.vertex_count();
+            st.F = mesh.face_count();
+            check_positions(mesh);
+            st.H = mesh.face_offsets[st.F];
+            st.bucket_end.assign(static_cast<std::size_t>(st.V) + 1, 0);
+            if (!(st.fast ? detail::count_sides_fast(mesh, st.bucket_end.data() + 1) : count_sides(mesh, st.bucket_end.data() + 1)))
+                refuse(mesh);
+            for (int32_t v = 0; v < st.V; ++v) st.bucket_end[v + 1] += st.bucket_end[v];
+            break;
+        }
+        case 1:
+            // Phase 2: bucket them. Now bucket v is [bucket_end[v-1], bucket_end[v]) (bucket_end[-1] = 0).
+            st.slots.reset(new BucketSlot[st.H]); // every slot is written below
+            if (st.fast)
+                detail::bucket_sides_fast(mesh, st.bucket_end.data(), st.slots.get());
+            else
+                bucket_sides(mesh, st.bucket_end.data(), st.slots.get());
+            break;
+        case 2:
+            st.edge_of.assign(st.H, kNone); // first each half-edge's twin, then its edge
+            st.pairs = pair_twins(mesh, st.bucket_end, st.slots.get(), st.edge_of);
+            break;
+        case 3:
+            m.edges_.resize(st.H - st.pairs);
+            m.vertex_edge_.assign(st.V, kNone);
+            m.face_edge_.assign(st.F, kNone);
+            number_edges(mesh, st.edge_of, m.edges_);
+            if (!options.edges.empty()) apply_edge_list(options, st.V, st.bucket_end, st.slots.get(), st.edge_of, m.edges_);
+            st.slots.reset();
+            st.bucket_end = std::vector<int32_t>();
+            break;
+        case 4:
+            fill_face_wings(mesh, st.edge_of, m.edges_, m.face_edge_);
+            st.edge_of = std::vector<int32_t>();
+            break;
+        case 5:
+            st.scratch.assign(st.V, kNone); // the boundary edge leaving each vertex, then its degree
+            fill_boundary_wings(mesh, m.edges_, m.vertex_edge_, st.scratch);
+            choose_vertex_edges(m.edges_, m.vertex_edge_, st.scratch);
+            break;
+        case 6:
+            check_one_fan_per_vertex(mesh, m, st.scratch);
+            check_no_duplicate_faces(mesh, m);
+            break;
+        case 7: {
+            if (!options.vertex_edges.empty()) apply_vertex_edges(options, m.edges_, st.scratch, m.vertex_edge_);
+            if (!options.face_edges.empty()) {
+                apply_face_edges(options, m.edges_, m.face_edge_);
+                // face_set() lists each face from its first corner as given, wherever its walk now starts.
+                const int32_t* fo = mesh.face_offsets.data();
+                const int32_t* fv = mesh.face_vertices.data();
+                for (int32_t f = 0; f < st.F; ++f)
+                    if (m.walk_start_corner(f) != fv[fo[f]]) {
+                        m.face_first_corner_.resize(st.F);
+                        for (int32_t g = 0; g < st.F; ++g) m.face_first_corner_[g] = fv[fo[g]];
+                        break;
+                    }
+            }
+            st.scratch = std::vector<int32_t>();
+            // Last, so that every refusal above still sees the caller's positions.
+            if (st.positions_to_take)
+                m.positions_ = std::move(*st.positions_to_take);
+            else
+                m.positions_ = mesh.positions;
+            break;
+        }
+        default:
+            return true;
+        }
+    } catch (...) {
+        s_.reset(); // a refused build is over
+        throw;
+    }
+    ++st.phase;
+    return st.phase == 8;
+}
+
+WingedEdgeMesh WingedEdgeBuild::take() {
+    if (!s_ || s_->phase < 8) throw Error("invalid-argument", "the mesh is not built yet: call step() until it returns true");
+    WingedEdgeMesh m = std::move(s_->m);
+    s_.reset();
     return m;
 }
 

@@ -7,7 +7,8 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createHash } from 'node:crypto';
 import { loadWingspline } from 'wingspline';
-import { importMeshFile, importedValue, MAX_MESH_FILE_BYTES } from '../../../web/js/app/mesh-import-job.js';
+import { importMeshFile, MAX_MESH_FILE_BYTES } from '../../../web/js/app/mesh-import-job.js';
+import { flatImportedValue } from '../../../web/js/app/imported-mesh.js';
 import { stringifyExact } from '../../../web/js/app/share-link.js';
 
 const api = await loadWingspline();
@@ -48,9 +49,11 @@ test('a good OFF comes back as the core\'s own parse, with its problems and the 
   assert.deepEqual(Array.from(r.positions), Array.from(g.positions), '%.17g round-trips');
   assert.deepEqual(r.problems, api.validateMesh(ref).problems);
   assert.deepEqual([...new Set(stages)], ['reading', 'parsing', 'checking']);
-  const value = importedValue('ball.off', ref.positions, ref.faceOffsets, ref.faceVertices);
-  assert.equal(value.faces.length, 2 * 40 * 20);
-  assert.deepEqual(value.faces[0], Array.from(ref.faceVertices.subarray(ref.faceOffsets[0], ref.faceOffsets[1])));
+  // The content is the flat form (imported-mesh.js): sizes and corners as plain numbers.
+  const value = flatImportedValue('ball.off', ref.positions, ref.faceOffsets, ref.faceVertices);
+  assert.equal(value.faceSizes.length, 2 * 40 * 20);
+  assert.deepEqual(value.faceVertices.slice(0, value.faceSizes[0]), Array.from(ref.faceVertices.subarray(ref.faceOffsets[0], ref.faceOffsets[1])));
+  assert.deepEqual(value.faceVertices, Array.from(ref.faceVertices));
   const json = stringifyExact(value);
   assert.equal(r.content.json, json);
   assert.equal(r.content.chars, json.length);

@@ -120,3 +120,30 @@ test('normals({into}) fills the caller\'s array with the same unit normals; a wr
     assert.throws(() => mesh.normals({ into: [0, 0, 0] }), (err) => err.code === 'invalid-argument');
   });
 });
+
+// Issue 17: buildMeshInSteps gives buildMesh's mesh, one phase of the core's build per step.
+test('buildMeshInSteps: the phases in order, then the same tables as buildMesh; a refusal ends the build', () => {
+  const live = api.liveMeshCount();
+  const input = api.generateMesh('sphere', { slices: 12, stacks: 7, layout: 'csr' });
+  const job = api.buildMeshInSteps(input);
+  const phases = [job.phase];
+  while (!job.step()) phases.push(job.phase);
+  assert.deepEqual(phases, ['counting sides', 'bucketing sides', 'pairing twins', 'numbering edges', 'face wings', 'boundary wings', 'checks', 'stored edges']);
+  assert.equal(job.phase, 'done');
+  const whole = api.buildMesh(input);
+  try {
+    const a = job.mesh.wingedEdgeArrays();
+    const b = whole.wingedEdgeArrays();
+    for (const k of ['positions', 'edges', 'vertexEdge', 'faceEdge']) assert.deepEqual(Array.from(a[k] ?? []), Array.from(b[k] ?? []), k);
+    assert.equal(job.step(), true, 'a finished build stays finished');
+  } finally {
+    job.mesh.dispose();
+    whole.dispose();
+  }
+  // Three faces on one edge: refused in a step with buildMesh's code; the build is then over.
+  const bad = { positions: [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 1, 1, 1], faces: [[0, 1, 2], [1, 0, 3], [0, 1, 4]] };
+  const refused = api.buildMeshInSteps(bad);
+  assert.throws(() => { while (!refused.step()); }, (e) => e.code === 'non-manifold-edge');
+  assert.throws(() => refused.step(), (e) => e.code === 'invalid-argument' && /over/.test(e.message));
+  assert.equal(api.liveMeshCount(), live, 'no mesh left behind');
+});

@@ -79,6 +79,10 @@ const NO_FAILING_INPUT = ['memoryUsage', 'liveMeshCount', 'lectureExample', 'fol
 // (validateMesh, check_ operations), returned as { ok: false } carrying the code.
 const cases = [
   ['buildMesh + dispose', FULL, () => api.buildMesh(tetra).dispose(), [['non-manifold-edge', () => api.buildMesh(nonManifold)]]],
+  // Issue 17: the same build in steps; a refused step ends the core's job (no job is left
+  // behind), and so does a cancel.
+  ['buildMeshInSteps + dispose', REDUCED, () => { const job = api.buildMeshInSteps(tetra); while (!job.step()); job.mesh.dispose(); api.buildMeshInSteps(tetra).cancel(); },
+    [['non-manifold-edge', () => { const job = api.buildMeshInSteps(nonManifold); while (!job.step()); }]]],
   ['parseMesh (OFF)', FULL, () => api.parseMesh(offText, { format: 'off' }), [['parse-error', () => api.parseMesh(badOff, { format: 'off' })]]],
   ['validateMesh', REDUCED, () => api.validateMesh(tetra), [['index-out-of-range', () => api.validateMesh({ positions: [0, 0, 0], faces: [[0, 1, 2]] })]]],
   ['evaluateCurve', REDUCED, () => api.evaluateCurve(nurbs, params), [['decreasing-knots', () => api.evaluateCurve(decreasing, params)]]],

@@ -9,6 +9,7 @@
 // (share-link.js rememberContent; docs/state-format.md, "Large fields").
 import { WingsplineError } from '../core/errors.js';
 import { stringifyExact, sha256 } from './share-link.js';
+import { flatImportedValue } from './imported-mesh.js';
 
 // The largest mesh file read: a mesh of the import limit (2,000,000 faces) written with full
 // precision is about 100 MB as OFF; OBJ files with normals and texture lines are larger.
@@ -83,19 +84,7 @@ function checkHead(api, head) {
 // The imported value as the lessons keep it in their state, written as share-link.js writes
 // it (stringifyExact), and its SHA-256: the text the content store keeps.
 async function contentOf(name, { positions, faceOffsets, faceVertices }) {
-  const value = importedValue(name, positions, faceOffsets, faceVertices);
+  const value = flatImportedValue(name, positions, faceOffsets, faceVertices);
   const json = stringifyExact(value);
   return { chars: json.length, hash: await sha256(json), json };
-}
-
-// {name, positions: number[], faces: number[][]}: the imported mesh of a lesson state.
-export function importedValue(name, positions, faceOffsets, faceVertices) {
-  return { name: name.slice(0, 120), positions: Array.from(positions), faces: facesOf(faceOffsets, faceVertices, 0, faceOffsets.length - 1) };
-}
-
-// Faces first..end-1 of a CSR face set as arrays of corners.
-export function facesOf(faceOffsets, faceVertices, first, end) {
-  const out = new Array(end - first);
-  for (let f = first; f < end; f += 1) out[f - first] = Array.from(faceVertices.subarray(faceOffsets[f], faceOffsets[f + 1]));
-  return out;
 }

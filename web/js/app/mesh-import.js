@@ -8,7 +8,8 @@
 import { WingsplineError } from '../core/errors.js';
 import { h } from './dom.js';
 import { rememberContent } from './share-link.js';
-import { facesOf, IMPORT_STAGES } from './mesh-import-job.js';
+import { IMPORT_STAGES } from './mesh-import-job.js';
+import { copyInto } from './imported-mesh.js';
 
 // Faces turned into arrays per task while building the imported value (about 10 ms each for
 // triangles on a school laptop).
@@ -25,10 +26,22 @@ export function importedArrays(value) {
 const nextTask = () => new Promise((resolve) => { setTimeout(resolve, 0); });
 const mb = (bytes) => (bytes / 2 ** 20).toFixed(1);
 
+// The core mesh of an imported value, built in steps while the progress showed 'building'
+// (api.buildMeshInSteps: one phase of the core's build per task, so a million faces never
+// hold the page for 110 ms at once). A lesson's mesh source takes it (takeImportedMesh)
+// instead of building the same mesh again; one not taken is disposed when the import ends.
+const prebuiltMeshes = new WeakMap();
+/** @returns {any} the Mesh built for `value`, now the caller's; null if there is none */
+export function takeImportedMesh(value) {
+  const mesh = (value && prebuiltMeshes.get(value)) ?? null;
+  if (mesh) prebuiltMeshes.delete(value);
+  return mesh;
+}
+
 /**
- * @param {{ message: import('./contract.js').MessageLine, contents: any, announceStatus: (text: string) => void }} parts
+ * @param {{ message: import('./contract.js').MessageLine, contents: any, announceStatus: (text: string) => void, api?: () => any }} parts
  */
-export function createMeshImport({ message, contents, announceStatus }) {
+export function createMeshImport({ message, contents, announceStatus, api = () => null }) {
   const label = h('label', { for: 'import-progress', id: 'import-stage' });
   const bar = /** @type {HTMLProgressElement} */ (h('progress', { id: 'import-progress', max: '1' }));
   const cancelButton = h('button', { type: 'button', class: 'tool', id: 'import-cancel', onclick: () => cancel() }, 'Cancel');
@@ -69,9 +82,10 @@ export function createMeshImport({ message, contents, announceStatus }) {
 
   function cancel() {
     if (!running) return;
-    const { worker, name, resolve } = running;
+    const { worker, name, resolve, value } = running;
     running.cancelled = true;
     running = null;
+    takeImportedMesh(value)?.dispose(); // built already: nobody will take it
     worker.terminate();
     hide();
     const text = `Import of ${name} cancelled; your mesh and work are unchanged.`;
@@ -88,7 +102,7 @@ export function createMeshImport({ message, contents, announceStatus }) {
     placeBox();
     return new Promise((resolve, reject) => {
       const worker = new Worker(new URL('./mesh-import-worker.js', import.meta.url), { type: 'module', name: 'mesh-import' });
-      const job = { worker, name, cancelled: false, resolve };
+      const job = { worker, name, cancelled: false, resolve, value: null };
       running = job;
       window.addEventListener('keydown', onKey, true);
       show(name, 'reading', 0, file.size);
@@ -119,12 +133,16 @@ export function createMeshImport({ message, contents, announceStatus }) {
         try {
           const value = await buildValue(job, name, m);
           if (!value) return; // cancelled while building
+          job.value = value;
+          // A mesh with errors is not built: the lesson's importer shows the whole report.
+          const buildable = !(m.problems ?? []).some((p) => p.severity === 'error');
+          if (buildable && !(await prebuild(job, value, m))) return; // cancelled while building
           if (m.content?.stored) {
             rememberContent(value, m.content);
             contents?.markStored?.(m.content.hash);
           }
-          // The page paints the 'building' stage before the core builds the mesh (one task).
-          await new Promise((r) => { requestAnimationFrame(() => r(undefined)); });
+          // A task of its own for what follows (the lesson's importer and the state check).
+          await nextTask();
           if (job.cancelled) return;
           resolve({ value, problems: m.problems });
         } catch (err) {
@@ -135,25 +153,51 @@ export function createMeshImport({ message, contents, announceStatus }) {
     });
   }
 
-  // The imported value from the flat arrays, FACES_PER_TASK faces per task; null if cancelled.
+  // The imported value (the flat form, imported-mesh.js) from the worker's typed arrays, in
+  // pieces of FACES_PER_TASK faces per task; null if cancelled.
   async function buildValue(job, name, { positions, faceOffsets, faceVertices }) {
     const F = faceOffsets.length - 1;
-    const faces = [];
+    const faceSizes = [];
+    const corners = [];
+    const points = [];
     for (let first = 0; first < F; first += FACES_PER_TASK) {
       const end = Math.min(F, first + FACES_PER_TASK);
-      const part = facesOf(faceOffsets, faceVertices, first, end);
-      for (let i = 0; i < part.length; i += 1) faces.push(part[i]);
+      for (let f = first; f < end; f += 1) faceSizes.push(faceOffsets[f + 1] - faceOffsets[f]);
+      copyInto(corners, faceVertices, faceOffsets[first], faceOffsets[end]);
       await nextTask();
       if (job.cancelled) return null;
     }
-    const value = { name: name.slice(0, 120), positions: Array.from(positions), faces };
+    for (let first = 0; first < positions.length; first += 3 * FACES_PER_TASK) {
+      copyInto(points, positions, first, Math.min(positions.length, first + 3 * FACES_PER_TASK));
+      await nextTask();
+      if (job.cancelled) return null;
+    }
+    const value = { name: name.slice(0, 120), positions: points, faceSizes, faceVertices: corners };
     flatArrays.set(value, { positions, faceOffsets, faceVertices });
     return value;
   }
 
-  // The import is over (accepted or refused): the progress goes, Escape is the page's again.
+  // The core mesh of the value, in steps (takeImportedMesh); false if cancelled meanwhile.
+  async function prebuild(job, value, { positions, faceOffsets, faceVertices }) {
+    const core = api();
+    if (!core?.buildMeshInSteps) return true;
+    const build = core.buildMeshInSteps({ positions, faceOffsets, faceVertices });
+    for (;;) {
+      await nextTask();
+      if (job.cancelled) { build.cancel(); return false; }
+      if (build.step()) break;
+    }
+    if (job.cancelled) { build.mesh.dispose(); return false; }
+    prebuiltMeshes.set(value, build.mesh);
+    return true;
+  }
+
+  // The import is over (accepted or refused): the progress goes, Escape is the page's again,
+  // and a core mesh built for it that no lesson took is freed.
   function finish() {
+    const value = running?.value;
     if (running && !running.cancelled) running = null;
+    takeImportedMesh(value)?.dispose();
     hide();
   }
 

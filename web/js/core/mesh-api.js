@@ -81,6 +81,14 @@ function optionalInts(value, what, pairs = false) {
   return out;
 }
 
+// What the core's build reads of a buildMesh input: positions, the CSR face set and the
+// optional numbering (edges as [start, end] pairs, vertex and face edges).
+function buildArguments(input) {
+  const { positions, faceOffsets, faceVertices } = indexedInput(input);
+  return [positions, faceOffsets, faceVertices, optionalInts(input.edges, 'edges', true),
+    optionalInts(input.vertexEdges, 'vertexEdges'), optionalInts(input.faceEdges, 'faceEdges')];
+}
+
 function indexedOutput(r, layout) {
   const out = layout === 'csr'
     ? { positions: r.positions, faceOffsets: r.faceOffsets, faceVertices: r.faceVertices }
@@ -592,14 +600,43 @@ export function createMeshApi(raw) {
     // Refuses what a winged edge cannot hold: error.code = the first problem's code,
     // error.details = every problem (as validateMesh reports them).
     buildMesh(input) {
-      const { positions, faceOffsets, faceVertices } = indexedInput(input);
-      const edges = optionalInts(input.edges, 'edges', true);
-      const vertexEdges = optionalInts(input.vertexEdges, 'vertexEdges');
-      const faceEdges = optionalInts(input.faceEdges, 'faceEdges');
       // The core keeps each face's first corner as given (chosen face edges may start its
       // walk elsewhere), so the other representations are derived from the core alone.
-      const r = unwrap(raw.meshBuild(positions, faceOffsets, faceVertices, edges, vertexEdges, faceEdges));
+      const r = unwrap(raw.meshBuild(...buildArguments(input)));
       return new Mesh(raw, r.handle, tableDescriptors, meshOperations);
+    },
+    // The same build in steps (issue 17): {phase, step(), cancel(), mesh}. step() runs one
+    // phase of the core's build (about an eighth of it) and returns true when the mesh is
+    // built; `mesh` is then the Mesh (owned by the caller, as buildMesh's). A page builds a
+    // million faces this way with a task of its own per phase. A refusal is thrown by the
+    // step that finds it, exactly as buildMesh throws it, and ends the build.
+    buildMeshInSteps(input) {
+      const started = unwrap(raw.meshBuildStart(...buildArguments(input)));
+      let phase = started.phase;
+      let mesh = null;
+      let over = false;
+      return {
+        get phase() { return phase; },
+        get mesh() { return mesh; },
+        step() {
+          if (mesh) return true;
+          if (over) fail('invalid-argument', 'this build is over (refused or cancelled)');
+          let r;
+          try {
+            r = unwrap(raw.meshBuildStep(started.job));
+          } catch (err) {
+            over = true;
+            throw err;
+          }
+          phase = r.phase;
+          if (r.done) mesh = new Mesh(raw, r.handle, tableDescriptors, meshOperations);
+          return r.done;
+        },
+        cancel() {
+          if (!mesh && !over) unwrap(raw.meshBuildCancel(started.job));
+          over = true;
+        },
+      };
     },
     // Every problem of an indexed face set, without building: {ok, problems}.
     validateMesh(input) {

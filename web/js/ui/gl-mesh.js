@@ -94,6 +94,17 @@ uniform vec4 uFill;
 out vec4 outColor;
 void main() { outColor = vec4(uFill.rgb * uFill.a, uFill.a); }`;
 
+// What one frame may ask of the GPU. Calibrated on SwiftShader, the software GPU of a machine
+// without one (headless Chromium here): about 0.2 us per triangle filled and 0.08 us per
+// edge line on a small picture; a frame of a million-face sphere's chunks measured 1.5 to 2
+// times that, so the budget is 12 ms of the model (20-25 ms measured). A picture over the
+// budget is drawn over several frames, so no frame blocks the page for long; a real GPU
+// finishes it in the first frames.
+const FRAME_BUDGET_MS = 12;
+const TRIANGLE_US = 0.2;
+const EDGE_US = 0.08;
+const costMs = (triangles, edges) => (triangles * TRIANGLE_US + edges * EDGE_US) / 1000;
+
 function compile(gl, vs, fs) {
   const program = gl.createProgram();
   for (const [type, source] of [[gl.VERTEX_SHADER, vs], [gl.FRAGMENT_SHADER, fs]]) {
@@ -178,6 +189,8 @@ export function createGlMesh(canvas) {
   let lastDrawn = null; // the signature of the picture on the canvas
   let lastArgs = null;  // the view and style it was drawn with (redraw)
   let closed = false;   // no boundary edge: a face turned away is hidden, not drawn (lit mode)
+  let outward = true;   // ... and its faces wound counter-clockwise seen from outside
+  let pendingLines = null; // the mesh data whose edge lines are not made yet
 
   function fill(set, relative, index, lines, normals = null) {
     gl.bindVertexArray(set.vao);
@@ -203,97 +216,81 @@ export function createGlMesh(canvas) {
     set.edgeCount = lines.length / 2;
   }
 
-  return {
-    gl,
-    get meshKey() { return meshKey; },
-    get radius() { return radius; },
-    get triangleCount() { return full.triangleCount; },
-    get hasProxy() { return proxyKey === meshKey && meshKey !== null; },
+  let job = null;         // a big picture being drawn over frames: {signature, triangles, edges, started}
+  const target = { fbo: null, colour: null, depth: null, width: 0, height: 0 };
 
-    /** Uploads the mesh when `key` (mesh id and version) differs from the last one. */
-    setMesh(key, /** @type {GlMeshData} */ data) {
-      if (key === meshKey) return;
-      const { positions, faceOffsets, faceVertices, edges, edgeStride, edgeGap } = data;
-      centre = data.centre.slice();
-      const r = relativeTo(positions, centre);
-      radius = r.radius;
-      const E = edges.length / edgeStride;
-      const lines = new Uint32Array(2 * E);
-      let n = 0;
-      closed = true;
-      for (let e = 0; e < E; e += 1) {
-        const s = edges[edgeStride * e]; const t = edges[edgeStride * e + 1];
-        if (edgeGap?.[e] || s < 0 || t < 0) continue;
-        if (edges[edgeStride * e + 2] < 0 || edges[edgeStride * e + 3] < 0) closed = false; // L or R missing
-        lines[n] = s; lines[n + 1] = t; n += 2;
-      }
-      fill(full, r.relative, fanIndices(faceOffsets, faceVertices), lines.subarray(0, n), data.normals ?? null);
-      meshKey = key;
-      proxyKey = null;
-      lastDrawn = null;
-    },
+  function makeLines() {
+    const { edges, edgeStride, edgeGap } = pendingLines;
+    pendingLines = null;
+    const E = edges.length / edgeStride;
+    const lines = new Uint32Array(2 * E);
+    let n = 0;
+    for (let e = 0; e < E; e += 1) {
+      const s0 = edges[edgeStride * e]; const t0 = edges[edgeStride * e + 1];
+      if (edgeGap?.[e] || s0 < 0 || t0 < 0) continue;
+      lines[n] = s0; lines[n + 1] = t0; n += 2;
+    }
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, full.edges);
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, lines.subarray(0, n), gl.STATIC_DRAW);
+    full.edgeCount = n / 2;
+  }
 
-    /**
-     * Draws the last picture again now (the whole mesh, not the proxy): a caller that reads
-     * the canvas (a PNG export) must do so in the same task, before the browser presents it.
-     */
-    redraw() {
-      if (!lastArgs) return;
-      lastDrawn = null;
-      this.draw(lastArgs[0], { ...lastArgs[1], useProxy: false });
-    },
+  // The offscreen framebuffer a big picture is drawn into, at the canvas's size.
+  function offscreen(width, height) {
+    if (target.fbo && target.width === width && target.height === height) return target;
+    if (target.fbo) { gl.deleteFramebuffer(target.fbo); gl.deleteRenderbuffer(target.colour); gl.deleteRenderbuffer(target.depth); }
+    target.fbo = gl.createFramebuffer();
+    target.colour = gl.createRenderbuffer();
+    gl.bindRenderbuffer(gl.RENDERBUFFER, target.colour);
+    gl.renderbufferStorage(gl.RENDERBUFFER, gl.RGBA8, width, height);
+    target.depth = gl.createRenderbuffer();
+    gl.bindRenderbuffer(gl.RENDERBUFFER, target.depth);
+    gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, width, height);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, target.fbo);
+    gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.RENDERBUFFER, target.colour);
+    gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, target.depth);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    Object.assign(target, { width, height });
+    return target;
+  }
 
-    /** The proxy drawn while the view moves: {positions (xyz), triangles} from mesh.displayProxy. */
-    setProxy(key, { positions, triangles }) {
-      if (key !== meshKey) return;
-      fill(proxy, relativeTo(positions, centre).relative, Uint32Array.from(triangles), new Uint32Array(0));
-      proxyKey = key;
-    },
-
-    /**
-     * Draws the mesh (or its proxy). view: {R (row-major 3x3), offset [x, y] (centre minus
-     * view centre, world units), zoom, width, height (CSS px), dpr}; style: {background, fill,
-     * ink: [r,g,b], faceAlpha, backAlpha, lit, edges (draw the edge lines), edgeAlpha,
-     * useProxy}. Returns false when the canvas already shows this picture.
-     */
-    draw(view, style) {
-      const width = Math.round(view.width * view.dpr); const height = Math.round(view.height * view.dpr);
-      const set = style.useProxy && proxyKey === meshKey ? proxy : full;
-      const signature = JSON.stringify([meshKey, set === proxy, view, style]);
-      if (signature === lastDrawn && canvas.width === width && canvas.height === height) return false;
-      lastDrawn = signature;
-      lastArgs = [view, style];
-      if (canvas.width !== width || canvas.height !== height) { canvas.width = width; canvas.height = height; }
-      gl.viewport(0, 0, width, height);
+  // Triangles [t0, t1) and edge lines [e0, e1) of `set` into `into` (null: the canvas),
+  // cleared first when `clear` (a whole picture always is).
+  function render(set, view, style, into, [t0, t1], [e0, e1], clear = true) {
+    gl.bindFramebuffer(gl.FRAMEBUFFER, into ? into.fbo : null);
+    gl.viewport(0, 0, canvas.width, canvas.height);
+    if (clear || !into) {
       const [br, bg, bb] = style.background;
       gl.clearColor(br, bg, bb, 1);
       gl.clearDepth(1);
       gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
-      if (!meshKey) return true;
-      const R = view.R;
-      // GLSL mat3 is column-major: column j holds R[0][j], R[1][j], R[2][j].
-      const rotation = new Float32Array([R[0], R[3], R[6], R[1], R[4], R[7], R[2], R[5], R[8]]);
-      const setFrame = (p) => {
-        gl.uniformMatrix3fv(p.uniforms.uR, false, rotation);
-        gl.uniform2f(p.uniforms.uOffset, view.offset[0], view.offset[1]);
-        gl.uniform2f(p.uniforms.uScale, view.zoom / (view.width / 2), view.zoom / (view.height / 2));
-        gl.uniform1f(p.uniforms.uDepth, 1 / (radius * 1.01));
-      };
-      gl.bindVertexArray(set.vao);
-      gl.enable(gl.BLEND);
-      gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA); // premultiplied, like the 2D canvas
-      if (style.lit || style.shade) {
-        // The nearest surface only, pushed back a little so its own edges are drawn on top.
-        gl.enable(gl.DEPTH_TEST);
-        gl.depthFunc(gl.LEQUAL);
-        gl.enable(gl.POLYGON_OFFSET_FILL);
-        gl.polygonOffset(1, 1);
-        // A closed mesh's faces turned away are behind its front: not rasterised at all
-        // (the software GPU is bound by the pixels it fills). Faces are CCW seen from outside.
-        if (closed) { gl.enable(gl.CULL_FACE); gl.cullFace(gl.BACK); gl.frontFace(gl.CCW); }
-      } else {
-        gl.disable(gl.DEPTH_TEST);
-      }
+    }
+    if (!meshKey) { gl.bindFramebuffer(gl.FRAMEBUFFER, null); return; }
+    const R = view.R;
+    // GLSL mat3 is column-major: column j holds R[0][j], R[1][j], R[2][j].
+    const rotation = new Float32Array([R[0], R[3], R[6], R[1], R[4], R[7], R[2], R[5], R[8]]);
+    const setFrame = (p) => {
+      gl.uniformMatrix3fv(p.uniforms.uR, false, rotation);
+      gl.uniform2f(p.uniforms.uOffset, view.offset[0], view.offset[1]);
+      gl.uniform2f(p.uniforms.uScale, view.zoom / (view.width / 2), view.zoom / (view.height / 2));
+      gl.uniform1f(p.uniforms.uDepth, 1 / (radius * 1.01));
+    };
+    gl.bindVertexArray(set.vao);
+    gl.enable(gl.BLEND);
+    gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA); // premultiplied, like the 2D canvas
+    if (style.lit || style.shade) {
+      // The nearest surface only, pushed back a little so its own edges are drawn on top.
+      gl.enable(gl.DEPTH_TEST);
+      gl.depthFunc(gl.LEQUAL);
+      gl.enable(gl.POLYGON_OFFSET_FILL);
+      gl.polygonOffset(1, 1);
+      // A closed mesh's faces turned away are behind its front: not rasterised at all
+      // (the software GPU is bound by the pixels it fills). Faces are CCW seen from outside.
+      if (closed) { gl.enable(gl.CULL_FACE); gl.cullFace(gl.BACK); gl.frontFace(gl.CCW); }
+    } else {
+      gl.disable(gl.DEPTH_TEST);
+    }
+    if (t1 > t0) {
       if (style.shade) {
         gl.disable(gl.BLEND);
         gl.useProgram(shadedProgram.program);
@@ -308,20 +305,168 @@ export function createGlMesh(canvas) {
         gl.uniform1f(faceProgram.uniforms.uLit, style.lit ? 1 : 0);
       }
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, set.triangles);
-      gl.drawElements(gl.TRIANGLES, 3 * set.triangleCount, gl.UNSIGNED_INT, 0);
-      gl.disable(gl.POLYGON_OFFSET_FILL);
-      gl.enable(gl.BLEND);
-      if (style.edges && set.edgeCount) {
-        gl.useProgram(lineProgram.program);
-        setFrame(lineProgram);
-        gl.uniform4f(lineProgram.uniforms.uFill, style.ink[0], style.ink[1], style.ink[2], style.edgeAlpha);
-        gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, set.edges);
-        gl.drawElements(gl.LINES, 2 * set.edgeCount, gl.UNSIGNED_INT, 0);
+      gl.drawElements(gl.TRIANGLES, 3 * (t1 - t0), gl.UNSIGNED_INT, 12 * t0);
+    }
+    gl.disable(gl.POLYGON_OFFSET_FILL);
+    gl.enable(gl.BLEND);
+    if (e1 > e0) {
+      gl.useProgram(lineProgram.program);
+      setFrame(lineProgram);
+      gl.uniform4f(lineProgram.uniforms.uFill, style.ink[0], style.ink[1], style.ink[2], style.edgeAlpha);
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, set.edges);
+      gl.drawElements(gl.LINES, 2 * (e1 - e0), gl.UNSIGNED_INT, 8 * e0);
+    }
+    gl.bindVertexArray(null);
+    gl.disable(gl.DEPTH_TEST);
+    gl.disable(gl.CULL_FACE);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+  }
+
+  return {
+    gl,
+    get meshKey() { return meshKey; },
+    get radius() { return radius; },
+    get triangleCount() { return full.triangleCount; },
+    get hasProxy() { return proxyKey === meshKey && meshKey !== null; },
+
+    /** Uploads the mesh when `key` (mesh id and version) differs from the last one. */
+    /**
+     * What setMesh uploads, computed without touching the GPU (a page may do this and the
+     * upload in separate tasks): {key, data, relative, radius, index, closed, outward}.
+     */
+    prepareMesh(key, /** @type {GlMeshData} */ data) {
+      const { positions, faceOffsets, faceVertices, edges, edgeStride } = data;
+      const c = data.centre.slice();
+      const r = relativeTo(positions, c);
+      const index = fanIndices(faceOffsets, faceVertices);
+      // Closed (no edge without a face on each side) and wound counter-clockwise seen from
+      // outside (positive signed volume, the sum of p0 . (p1 x p2) over the fan triangles):
+      // then the faces turned away are hidden and need not be drawn; wound the other way,
+      // the faces turned towards the viewer are the hidden ones.
+      let isClosed = true;
+      const E = edges.length / edgeStride;
+      for (let e = 0; e < E && isClosed; e += 1) {
+        if (edges[edgeStride * e] >= 0 && (edges[edgeStride * e + 2] < 0 || edges[edgeStride * e + 3] < 0)) isClosed = false;
       }
-      gl.bindVertexArray(null);
-      gl.disable(gl.DEPTH_TEST);
-      gl.disable(gl.CULL_FACE);
-      return true;
+      let volume = 0;
+      const q = r.relative;
+      for (let t = 0; isClosed && t < index.length; t += 3) {
+        const a = 3 * index[t]; const b = 3 * index[t + 1]; const d = 3 * index[t + 2];
+        volume += q[a] * (q[b + 1] * q[d + 2] - q[b + 2] * q[d + 1]) + q[a + 1] * (q[b + 2] * q[d] - q[b] * q[d + 2]) + q[a + 2] * (q[b] * q[d + 1] - q[b + 1] * q[d]);
+      }
+      return { key, data, centre: c, relative: r.relative, radius: r.radius, index, closed: isClosed, outward: volume >= 0 };
+    },
+
+    /** Uploads a prepared mesh (prepareMesh), unless it is the one shown. */
+    uploadMesh(prepared) {
+      if (prepared.key === meshKey) return;
+      ({ centre, radius, closed, outward } = prepared);
+      // The edge lines are made when first drawn (a zoomed-out big mesh never draws them).
+      pendingLines = prepared.data;
+      fill(full, prepared.relative, prepared.index, new Uint32Array(0), prepared.data.normals ?? null);
+      meshKey = prepared.key;
+      proxyKey = null;
+      lastDrawn = null;
+    },
+
+    /** Uploads the mesh when `key` (mesh id and version) differs from the last one. */
+    setMesh(key, /** @type {GlMeshData} */ data) {
+      if (key === meshKey) return;
+      this.uploadMesh(this.prepareMesh(key, data));
+    },
+
+    /**
+     * Draws the last picture again now, whole (not the proxy, not over frames): a caller that
+     * reads the canvas (a PNG export) must do so in the same task, before it is presented.
+     */
+    redraw() {
+      if (!lastArgs) return;
+      lastDrawn = null;
+      this.draw(lastArgs[0], { ...lastArgs[1], useProxy: false }, { complete: true });
+    },
+
+    /** Clears the canvas to `background` ([r, g, b]): the picture while a mesh is uploaded. */
+    clearPicture(background) {
+      job = null;
+      lastDrawn = null;
+      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+      gl.clearColor(background[0], background[1], background[2], 1);
+      gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    },
+
+    /** The proxy drawn while the view moves: {positions (xyz), triangles} from mesh.displayProxy. */
+    setProxy(key, { positions, triangles }) {
+      if (key !== meshKey) return;
+      fill(proxy, relativeTo(positions, centre).relative, Uint32Array.from(triangles), new Uint32Array(0));
+      proxyKey = key;
+    },
+
+    /**
+     * Draws the mesh (or its proxy). view: {R (row-major 3x3), offset [x, y] (centre minus
+     * view centre, world units), zoom, width, height (CSS px), dpr}; style: {background, fill,
+     * ink: [r,g,b], faceAlpha, backAlpha, lit, shade, edges (draw the edge lines), edgeAlpha,
+     * useProxy}; complete: draw a big mesh whole in this call (an export), not over frames.
+     * Returns 'same' when the canvas already shows this picture, 'drawn', or 'more' when a big
+     * mesh is being drawn over several frames (draw again next frame to go on; the proxy, if
+     * the mesh has one, stands in meanwhile).
+     */
+    draw(view, style, { complete = false } = {}) {
+      const width = Math.round(view.width * view.dpr); const height = Math.round(view.height * view.dpr);
+      const set = style.useProxy && proxyKey === meshKey ? proxy : full;
+      const signature = JSON.stringify([meshKey, set === proxy, view, style]);
+      if (signature === lastDrawn && canvas.width === width && canvas.height === height) return 'same';
+      if (canvas.width !== width || canvas.height !== height) { canvas.width = width; canvas.height = height; }
+      lastArgs = [view, style];
+      if (style.edges && set === full && pendingLines) makeLines();
+      const edges = style.edges ? set.edgeCount : 0;
+      if (!meshKey || complete || costMs(set.triangleCount, edges) <= FRAME_BUDGET_MS) {
+        job = null;
+        render(set, view, style, null, [0, set.triangleCount], [0, edges]);
+        lastDrawn = signature;
+        return 'drawn';
+      }
+      // A big picture, FRAME_BUDGET_MS of work per frame, into an offscreen framebuffer shown
+      // when whole.
+      const fresh = !job || job.signature !== signature;
+      if (fresh) {
+        if (job?.fence) gl.deleteSync(job.fence);
+        job = { signature, triangles: 0, edges: 0, started: false, proxyShown: false, fence: null };
+      }
+      // Paced by the GPU: the next piece is sent only once the GPU has finished the last one
+      // (a fence), so no work piles up that a later frame would have to wait for.
+      if (job.fence) {
+        if (gl.getSyncParameter(job.fence, gl.SYNC_STATUS) !== gl.SIGNALED) return 'more';
+        gl.deleteSync(job.fence);
+        job.fence = null;
+      }
+      const target = offscreen(width, height);
+      const triangleChunk = Math.floor(FRAME_BUDGET_MS * 1000 / TRIANGLE_US);
+      const edgeChunk = Math.floor(FRAME_BUDGET_MS * 1000 / EDGE_US);
+      /** @type {[number, number]} */
+      const t = [job.triangles, Math.min(set.triangleCount, job.triangles + triangleChunk)];
+      /** @type {[number, number]} */
+      const e = t[1] < set.triangleCount ? [job.edges, job.edges] : [job.edges, Math.min(edges, job.edges + (t[1] > job.triangles ? 0 : edgeChunk))];
+      render(set, view, style, target, t, e, !job.started);
+      job.started = true;
+      job.triangles = t[1];
+      job.edges = e[1];
+      if (job.triangles < set.triangleCount || job.edges < edges) {
+        job.fence = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+        gl.flush();
+        // The proxy stands in, drawn once per picture (the canvas keeps it between frames).
+        if (proxyKey === meshKey && set !== proxy && !job.proxyShown) {
+          render(proxy, view, { ...style, edges: false }, null, [0, proxy.triangleCount], [0, 0]);
+          job.proxyShown = true;
+        }
+        return 'more';
+      }
+      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, target.fbo);
+      gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
+      gl.blitFramebuffer(0, 0, width, height, 0, 0, width, height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
+      job = null;
+      lastDrawn = signature;
+      return 'drawn';
     },
   };
 }

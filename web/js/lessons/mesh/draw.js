@@ -215,14 +215,22 @@ export function labelPlan(painter, model, state, forced = []) {
   let screen = null;
   let crowded = false;
   if (!small) {
-    let onScreen = 0;
-    screen = new Float32Array(2 * model.V);
-    for (let v = 0; v < model.V; v += 1) {
-      const [sx, sy] = t.toScreen(P[3 * v], P[3 * v + 1]);
-      screen[2 * v] = sx; screen[2 * v + 1] = sy;
-      if (sx >= 0 && sx <= w && sy >= 0 && sy <= h) onScreen += 1;
+    // Screen x = w/2 + (x - cx) zoom, y = h/2 - (y - cy) zoom (painter.js Transform), inline:
+    // a call per vertex that returns an array cost 30 ms a frame on a million faces. The
+    // crowding is first estimated from every k-th vertex (20,000 of them), so a zoomed-out
+    // big mesh costs no per-vertex work at all.
+    const ax = w / 2 - t.cx * t.zoom; const ay = h / 2 + t.cy * t.zoom; const z = t.zoom;
+    const stride = Math.max(1, Math.ceil(model.V / 20000));
+    let sampled = 0;
+    for (let v = 0; v < model.V; v += stride) {
+      const sx = ax + P[3 * v] * z; const sy = ay - P[3 * v + 1] * z;
+      if (sx >= 0 && sx <= w && sy >= 0 && sy <= h) sampled += 1;
     }
-    crowded = onScreen * boxW * boxH > 0.5 * w * h;
+    crowded = sampled * stride * boxW * boxH > 0.5 * w * h;
+    if (!crowded) {
+      screen = new Float32Array(2 * model.V);
+      for (let v = 0; v < model.V; v += 1) { screen[2 * v] = ax + P[3 * v] * z; screen[2 * v + 1] = ay - P[3 * v + 1] * z; }
+    }
   }
   const front = crowded ? null : frontMarks(model, P);
   const faceSeen = (f) => hasCorners(model, f) && (!front || front.face[f]);
@@ -322,7 +330,7 @@ function drawLabels(painter, model, state, colors, plan) {
 
 // One per lesson view (setup): the picture of the last base drawing of a big mesh.
 export function createBaseCache() {
-  return { key: null, sceneKey: null, view: null, canvas: null, ms: 0, timer: 0, gpu: { viewKey: null, meshKey: null, timer: 0 } };
+  return { key: null, sceneKey: null, view: null, canvas: null, ms: 0, timer: 0, gpu: { viewKey: null, meshKey: null, timer: 0, proxyPending: false, uploading: null } };
 }
 const SLOW_BASE_MS = 30;     // a base picture slower than this is not redrawn while panning
 const SETTLE_MS = 200;       // ... but once the view has been still this long
@@ -441,10 +449,31 @@ function drawGpu(gl, gpu, model, state, ctx) {
   const v = state.view;
   const centre = model.centre;
   const key = `${model.source}|${model.topology}|${model.version}|${model.weShown === model.we ? 'all' : model.editStep}`;
-  gl.setMesh(key, {
+  const data = {
     positions: model.positions, faceOffsets: model.faceOffsets, faceVertices: model.faceVertices,
     edges: model.weShown.edges, edgeStride: 8, edgeGap: model.edgeGap, centre,
-  });
+  };
+  if (gl.meshKey !== key && model.faceVertices.length > 3 * PROXY_FROM) {
+    // A new big mesh is prepared and uploaded in tasks of their own (about 25 and 20 ms for a
+    // million faces here), not in the frame that updates the panels; meanwhile the
+    // background is shown.
+    if (gpu.uploading !== key) {
+      gpu.uploading = key;
+      setTimeout(() => {
+        if (gpu.uploading !== key) return;
+        const prepared = gl.prepareMesh(key, data);
+        setTimeout(() => {
+          if (gpu.uploading !== key) return;
+          gpu.uploading = null;
+          gl.uploadMesh(prepared);
+          ctx.render();
+        }, 0);
+      }, 0);
+    }
+    gl.clearPicture(parseColour(ctx.colors.background));
+    return;
+  }
+  gl.setMesh(key, data);
   const viewKey = `${key}|${model.rotation.join(',')}|${v.cx}|${v.cy}|${v.zoom}|${width}|${height}`;
   const moving = gpu.viewKey !== null && gpu.viewKey !== viewKey && gpu.meshKey === key && gl.triangleCount > PROXY_FROM;
   gpu.viewKey = viewKey;
@@ -458,7 +487,7 @@ function drawGpu(gl, gpu, model, state, ctx) {
   const big = E > LABEL_LIMIT;
   const spacing = Math.sqrt((Math.PI * (gl.radius * v.zoom) ** 2) / Math.max(1, model.F / 2));
   const colors = ctx.colors;
-  gl.draw(
+  const drawn = gl.draw(
     { R: model.rotation, offset: [centre[0] - v.cx, centre[1] - v.cy], zoom: v.zoom, width, height, dpr },
     {
       background: parseColour(colors.background), fill: parseColour(colors.series[5]), ink: parseColour(colors.ink),
@@ -466,6 +495,19 @@ function drawGpu(gl, gpu, model, state, ctx) {
       edges: big && !moving && spacing >= EDGE_SPACING_PX, edgeAlpha: 0.7, useProxy: moving,
     },
   );
+  if (drawn !== 'more') return;
+  // A big picture drawn over frames (gl-mesh.js): go on next frame. Its proxy stands in
+  // meanwhile; made in a task of its own (25 ms for a million faces here), not this frame's.
+  if (!gl.hasProxy && gl.triangleCount > PROXY_FROM && !gpu.proxyPending) {
+    gpu.proxyPending = true;
+    setTimeout(() => {
+      gpu.proxyPending = false;
+      if (gl.meshKey === key && !model.mesh.disposed) gl.setProxy(key, model.mesh.displayProxy(PROXY_TRIANGLES));
+      ctx.render();
+    }, 0);
+  } else {
+    ctx.render();
+  }
 }
 
 export function drawMesh(baseCache, selection, painter, model, state, ctx) {

@@ -5,6 +5,7 @@
 // The state is plain JSON (schema below); the model is what the core returned for it.
 import { number, integer, boolean, oneOf, text, list, object, nullable, viewSchema } from '../../app/schema.js';
 import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
+import { importedMesh } from '../../app/imported-mesh.js';
 import { createMeshSource, cacheKeys, faceCsr, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
 import { arraysAtStep, visibleSteps } from './edit-playback.js';
 import { normaliseSteps, walkFrames } from './walk.js';
@@ -53,11 +54,8 @@ const schema = {
   grid: object({ nx: integer({ min: 1, max: 400 }), ny: integer({ min: 1, max: 400 }) }),
   // Up to BENCH.md's sphere_1000000 (1000 x 501) and a little more: the GPU draws it (issue 17).
   sphere: object({ slices: integer({ min: 3, max: 1000 }), stacks: integer({ min: 3, max: 600 }) }),
-  imported: nullable(object({
-    name: text({ maxLength: 120 }),
-    positions: list(number(), { min: 9, max: 3 * MAX_IMPORT_VERTICES }),
-    faces: list(list(integer({ min: 0, max: MAX_IMPORT_VERTICES - 1 }), { min: 3, max: MAX_FACE_CORNERS }), { min: 1, max: MAX_IMPORT_FACES }),
-  })),
+  // Either form of app/imported-mesh.js (flat since issue 17; faces: older states and links).
+  imported: nullable(importedMesh({ maxVertices: MAX_IMPORT_VERTICES, maxFaces: MAX_IMPORT_FACES, maxCorners: MAX_FACE_CORNERS })),
   moved: list(object({ v: integer({ min: 0, max: 10000000 }), p: list(number(), { min: 3, max: 3 }) }), { max: 100000 }),
   ops: list(operation, { max: MAX_OPS }),
   walk: oneOf('vertex', 'face'),

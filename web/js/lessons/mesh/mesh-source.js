@@ -9,7 +9,8 @@
 // end (undo, a link) rebuilds the mesh and replays it. Nothing here counts versions: the
 // mesh does (mesh.id, mesh.version), and every cache is keyed on them (cacheKeys below).
 
-import { importedArrays } from '../../app/mesh-import.js';
+import { importedArrays, takeImportedMesh } from '../../app/mesh-import.js';
+import { importedCsr, importedFaceCount } from '../../app/imported-mesh.js';
 import { contentHashOf } from '../../app/share-link.js';
 
 export const MESH_KINDS = [
@@ -50,16 +51,21 @@ export function sourceKey(state, importedKey) {
 function createImportedKeys() {
   const keys = new WeakMap();
   return (imported) => {
-    if (!keys.has(imported)) keys.set(imported, `file:${imported.name}:${imported.faces.length}:${contentHashOf(imported) ?? hashPositions(imported)}`);
+    if (!keys.has(imported)) keys.set(imported, `file:${imported.name}:${importedFaceCount(imported)}:${contentHashOf(imported) ?? hashPositions(imported)}`);
     return keys.get(imported);
   };
 }
 
-function hashPositions({ positions, faces }) {
+// The positions, then each face's size and corners (either form of imported-mesh.js).
+function hashPositions(imported) {
   let h = 2166136261;
   const mix = (x) => { h = Math.imul(h ^ (Math.round(x * 1e6) | 0), 16777619); };
-  for (const x of positions) mix(x);
-  for (const f of faces) { mix(f.length); for (const v of f) mix(v); }
+  for (const x of imported.positions) mix(x);
+  const { faceOffsets, faceVertices } = importedCsr(imported);
+  for (let f = 0; f + 1 < faceOffsets.length; f += 1) {
+    mix(faceOffsets[f + 1] - faceOffsets[f]);
+    for (let i = faceOffsets[f]; i < faceOffsets[f + 1]; i += 1) mix(faceVertices[i]);
+  }
   return (h >>> 0).toString(36);
 }
 
@@ -95,7 +101,7 @@ export function sourceOf(state, api) {
       // Freshly imported: the worker's flat arrays, built in bulk (issue 17).
       const flat = importedArrays(state.imported);
       if (flat) return { positions: flat.positions, faceOffsets: flat.faceOffsets, faceVertices: flat.faceVertices };
-      return { positions: Float64Array.from(state.imported.positions), faces: state.imported.faces };
+      return importedCsr(state.imported);
     }
     default: throw Object.assign(new Error(`unknown mesh ${state.meshKind}`), { code: 'unknown-mesh' });
   }
@@ -148,7 +154,8 @@ export function createMeshSource() {
     for (const field of ['edges', 'vertexEdges', 'faceEdges']) {
       if (source[field] && source[field].length) spec[field] = source[field];
     }
-    const mesh = api.buildMesh(spec);
+    // A fresh import's mesh was built in steps by the import (app/mesh-import.js).
+    const mesh = (state.meshKind === 'file' && !force ? takeImportedMesh(state.imported) : null) ?? api.buildMesh(spec);
     const previous = live;
     live = { key, mesh, base: positions, csr, applied: new Map(), ops: [], lastOperation: null };
     previous?.mesh.dispose();

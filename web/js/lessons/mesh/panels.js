@@ -11,6 +11,8 @@ import { vLabel, fLabel } from './labels.js';
 import { pickElement as elementAt } from './draw.js';
 import { createEditPanel } from './edit-panel.js';
 
+const BIG_TABLES = 100000; // faces: from this size a new mesh's tables fill a task after its first frame
+
 const TAB_LABELS = {
   winged: 'Winged edge', faces: 'Independent faces', 'vertex-face': 'Vertex & face tables', adjacency: 'Adjacency lists',
   'edge-list': 'Edge list (Foley)', queries: 'Queries', storage: 'Storage', planes: 'Planes & normals',
@@ -261,13 +263,20 @@ export function setupPanels(ctx, selection) {
       syncControls();
       if (!model) return;
       // Another mesh was chosen (not another state of this one): fit the view to it.
-      if (shownSource !== null && shownSource !== model.source) {
+      const newMesh = shownSource !== model.source;
+      if (shownSource !== null && newMesh) {
         queueMicrotask(() => ctx.fitView());
       }
       shownSource = model.source;
       updateWalk(model, s);
       edit.update(model);
-      tabs.update(model, s);
+      // The tables of a newly chosen big mesh fill in a task of their own, after the frame
+      // that shows it (issue 17: no task over 50 ms when a million faces arrive).
+      if (newMesh && model.F > BIG_TABLES) {
+        setTimeout(() => { if (ctx.model === model) tabs.update(model, state()); }, 0);
+      } else {
+        tabs.update(model, s);
+      }
     },
     canvasClick,
     pickElement,

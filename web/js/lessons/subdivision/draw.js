@@ -60,7 +60,7 @@ function drawFacesGpu(gl, model, ctx) {
     edges: model.we.edges, edgeStride: 8, edgeGap: null, centre: model.centre,
     normals: model.shading.kind === 'smooth' ? model.shading.normals : null,
   });
-  gl.draw(
+  const drawn = gl.draw(
     { R: model.rotation, offset: [model.centre[0] - v.cx, model.centre[1] - v.cy], zoom: v.zoom, width, height, dpr },
     {
       background: parseColour(ctx.colors.background), fill: [0, 0, 0], ink: parseColour(ctx.colors.ink), faceAlpha: 1, backAlpha: 1, lit: false,
@@ -68,6 +68,7 @@ function drawFacesGpu(gl, model, ctx) {
       edges: true, edgeAlpha: F <= 600 ? 1 : F <= SMALL_FACES ? 0.6 : 0.25, useProxy: false,
     },
   );
+  if (drawn === 'more') ctx.render(); // a big level drawn over frames (gl-mesh.js)
 }
 
 function faceXY(model, P, f) {

@@ -8,6 +8,8 @@
 // subdivideCurve, sampleCurve); this file keeps the state and arranges what the core returned.
 import { number, integer, boolean, oneOf, text, list, object, nullable, viewSchema } from '../../app/schema.js';
 import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
+import { importedMesh, importedCsr } from '../../app/imported-mesh.js';
+import { importedArrays } from '../../app/mesh-import.js';
 import { viewRotation, projectAll, unprojectDelta } from '../../ui/mesh-view.js';
 import { SOURCES, IMPORTED_FIELD, PHASES, MAX_LEVEL, sourceKey, meshInput, hashNumbers, label } from './source.js';
 import { setupPanels } from './panels.js';
@@ -31,11 +33,8 @@ const schema = {
   meshKind: oneOf(...SOURCES.map((s) => s.id)),
   sphere: object({ slices: integer({ min: 3, max: 100 }), stacks: integer({ min: 3, max: 50 }) }),
   grid: object({ nx: integer({ min: 1, max: 64 }), ny: integer({ min: 1, max: 64 }) }),
-  imported: nullable(object({
-    name: text({ maxLength: 120 }),
-    positions: list(number(), { min: 9, max: 3 * MAX_MESH_VERTICES }),
-    faces: list(list(integer({ min: 0, max: MAX_MESH_VERTICES - 1 }), { min: 3, max: MAX_FACE_CORNERS }), { min: 1, max: MAX_MESH_FACES }),
-  })),
+  // Either form of app/imported-mesh.js (flat since issue 17; faces: older states and links).
+  imported: nullable(importedMesh({ maxVertices: MAX_MESH_VERTICES, maxFaces: MAX_MESH_FACES, maxCorners: MAX_FACE_CORNERS })),
   // Control vertices (level 0) the person moved: where they are now.
   moved: list(object({ v: integer({ min: 0, max: 10000000 }), p: list(number(), { min: 3, max: 3 }) }), { max: 100000 }),
   scheme: oneOf('loop', 'catmull-clark'),
@@ -328,8 +327,12 @@ function importMesh(view, { value, problems }, state, name, ctx) {
 // Loop refuses a mesh with a face that is not a triangle: the import is refused as the
 // built-in cube is, with the core's message (it names the face) and the offer of
 // Catmull-Clark. The core is asked only when some face has another number of corners.
-function refuseUnderLoop(mesh, next, ctx) {
-  if (mesh.faces.every((f) => f.length === 3)) return;
+function refuseUnderLoop(imported, next, ctx) {
+  const mesh = importedArrays(imported) ?? importedCsr(imported);
+  const { faceOffsets } = mesh;
+  let triangles = true;
+  for (let f = 0; f + 1 < faceOffsets.length && triangles; f += 1) triangles = faceOffsets[f + 1] - faceOffsets[f] === 3;
+  if (triangles) return;
   const built = ctx.api.buildMesh(mesh);
   try {
     ctx.api.subdivisionSteps(built, { scheme: 'loop' });

@@ -3,6 +3,7 @@
 // builds and checks every one of them; this file only names them and keys them.
 
 import { importedArrays } from '../../app/mesh-import.js';
+import { importedCsr } from '../../app/imported-mesh.js';
 import { contentHashOf } from '../../app/share-link.js';
 
 export const MAX_LEVEL = 5;
@@ -44,8 +45,12 @@ export function sourceKey(state, memo) {
   }
 }
 
-function fingerprint({ positions, faces }) {
-  return hashNumbers([...positions, ...faces.flatMap((f) => [f.length, ...f])]);
+// The positions, then each face's size and corners (either form of imported-mesh.js).
+function fingerprint(imported) {
+  const { faceOffsets, faceVertices } = importedCsr(imported);
+  const numbers = [...imported.positions];
+  for (let f = 0; f + 1 < faceOffsets.length; f += 1) numbers.push(faceOffsets[f + 1] - faceOffsets[f], ...faceVertices.subarray(faceOffsets[f], faceOffsets[f + 1]));
+  return hashNumbers(numbers);
 }
 
 // A short key of a list of numbers (FNV-1a over the numbers at 1e-6): the moved control
@@ -80,7 +85,7 @@ function baseInput(state, api) {
     case 'grid': return api.generateMesh('grid', { nx: state.grid.nx, ny: state.grid.ny });
     case 'file':
       if (!state.imported) throw Object.assign(new Error('No file has been imported yet: use Open OFF/OBJ (or drop an .off or .obj file on the page).'), { code: 'no-file' });
-      return importedArrays(state.imported) ?? { positions: Float64Array.from(state.imported.positions), faces: state.imported.faces };
+      return importedArrays(state.imported) ?? importedCsr(state.imported);
     default: return api.generateMesh(state.meshKind);
   }
 }
