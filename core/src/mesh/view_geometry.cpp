@@ -251,7 +251,7 @@ DisplayProxy display_proxy(const WingedEdgeMesh& mesh, int32_t target_triangles)
             cell *= 1.25;
         assign(cell);
         const double ratio = occupied / wanted;
-        if (ratio > 0.8 && ratio < 1.1) break;
+        if ((ratio > 0.8 && ratio < 1.1) || round == 3) break; // the cell assigned is the one kept
         cell *= std::sqrt(ratio);
     }
     out.cell = cell;
@@ -268,6 +268,15 @@ DisplayProxy display_proxy(const WingedEdgeMesh& mesh, int32_t target_triangles)
     for (int32_t m = 0; m < occupied; ++m)
         for (int i = 0; i < 3; ++i) out.positions[3 * m + i] = sum[3 * m + i] / std::max(1, count[static_cast<std::size_t>(m)]);
     triangles_through(map);
+    // A mesh thinner than a cell (a long strip) can collapse to almost nothing: then the
+    // mesh itself is the truer picture (at most target triangles were asked for, but an
+    // empty proxy would draw nothing while the view moves).
+    if (out.triangles.size() / 3 < static_cast<std::size_t>(target_triangles) / 8) {
+        out = DisplayProxy{};
+        out.positions.reserve(3 * static_cast<std::size_t>(V));
+        for (int32_t v = 0; v < V; ++v) out.positions.insert(out.positions.end(), {mesh.position(v).x, mesh.position(v).y, mesh.position(v).z});
+        triangles_through({});
+    }
     return out;
 }
 

@@ -79,6 +79,35 @@ test('the lecture mesh drawn by WebGL2 equals the 2D canvas drawing, in the 2D a
   assert.ok(turned < 0.01, `3D view: ${(100 * turned).toFixed(2)}% of pixels differ`);
   const views = differing(flatGl, turnedGl, 24);
   assert.ok(views > 0.02, `the measure sees the 2D and 3D views differ (${(100 * views).toFixed(2)}%)`);
+  // Inside each face the colour is the theme's fill at alpha 0.16 over the background,
+  // recomputed here from the two colours: b (1 - a) + c a per channel, within 2/255 in
+  // both pictures (a fill at 0.14 or 0.18 would be 3 or more away in the red channel).
+  for (const page of [gl, plain]) assert.ok(await commit(page, { mode3d: false }));
+  const glPixels = await stagePixels(gl);
+  const plainPixels = await stagePixels(plain);
+  const { inside, fill, background } = await gl.evaluate(() => {
+    const m = window.wingspline.model;
+    const t = window.wingspline.ctx.stage.transform();
+    const out = [];
+    for (let f = 0; f + 1 < m.faceOffsets.length; f += 1) {
+      const corners = Array.from(m.faceVertices.subarray(m.faceOffsets[f], m.faceOffsets[f + 1]));
+      const x = corners.reduce((s, v) => s + m.projected[3 * v], 0) / corners.length;
+      const y = corners.reduce((s, v) => s + m.projected[3 * v + 1], 0) / corners.length;
+      const [sx, sy] = t.toScreen(x, y - 0.15); // below the face's label
+      out.push([Math.round(sx), Math.round(sy)]);
+    }
+    const c = window.wingspline.ctx.colors;
+    return { inside: out, fill: c.series[5], background: c.background };
+  });
+  const rgb = (hex) => [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
+  const expected = rgb(fill).map((c, k) => rgb(background)[k] * (1 - 0.16) + c * 0.16);
+  const at = (img, [x, y]) => Array.from(img.rgba.slice(4 * (y * img.width + x), 4 * (y * img.width + x) + 3));
+  for (const point of inside) {
+    for (const [name, img] of [['WebGL2', glPixels], ['2D canvas', plainPixels]]) {
+      const got = at(img, point);
+      assert.ok(got.every((c, k) => Math.abs(c - expected[k]) <= 2), `${name} at ${point}: ${got} for ${expected.map(Math.round)}`);
+    }
+  }
   assert.deepEqual([...gl.problems, ...plain.problems], []);
 });
 

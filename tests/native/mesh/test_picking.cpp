@@ -178,3 +178,36 @@ TEST_CASE("the proxy of a 100k-face sphere: about the target, valid, and on the 
         }
     }
 }
+
+TEST_CASE("a point on a side or a corner shared by faces of the grid is inside exactly one of them", "[mesh][pick]") {
+    // Exact arithmetic (integer and half-integer coordinates, the identity view): the
+    // crossing-number test is half-open, so every point inside the grid's outline finds a
+    // face, and it is one of the faces that touch the point.
+    constexpr int32_t nx = 5, ny = 4;
+    const WingedEdgeMesh mesh = WingedEdgeMesh::build(square_grid(nx, ny));
+    const auto touching = [&](double x, double y, int32_t f) {
+        const int32_t i = f % nx, j = f / nx;
+        return x >= i && x <= i + 1 && y >= j && y <= j + 1;
+    };
+    int checked = 0;
+    for (int32_t a = 1; a < 2 * nx; ++a) {
+        for (int32_t b = 1; b < 2 * ny; ++b) {
+            const double x = a / 2.0, y = b / 2.0; // corners, side midpoints and centres
+            for (const double side : {1.0, -1.0}) {
+                const PickResult r = pick_faces(mesh, {x, y, 0}, {0, 0, side}, 0, 4);
+                REQUIRE(r.face >= 0);
+                CHECK(touching(x, y, r.face));
+                ++checked;
+            }
+        }
+    }
+    CHECK(checked == 2 * (2 * nx - 1) * (2 * ny - 1));
+}
+
+TEST_CASE("a strip thinner than a cell is its own proxy rather than an empty one", "[mesh][proxy]") {
+    // 300 x 1 unit squares: clustering for 50 triangles would use cells wider than the strip
+    // and keep almost no triangle; the mesh itself comes back (cell 0, 600 fan triangles).
+    const DisplayProxy p = display_proxy(WingedEdgeMesh::build(square_grid(300, 1)), 50);
+    CHECK(p.cell == 0);
+    CHECK(p.triangles.size() == 3 * 600);
+}

@@ -220,8 +220,7 @@ export function createStage(canvas, hooks) {
     // The WebGL2 mesh renderer under the canvas (ui/gl-mesh.js), or null where the browser
     // has none: the lesson then draws with the 2D painter, and a note under the canvas says so.
     gl() {
-      if (underlay === null) makeUnderlay();
-      if (underlay) placeUnderlay();
+      if (underlay === null) makeUnderlay(); // placed when made and on every resize
       return underlay ? underlay.renderer : null;
     },
     // The picture as the person sees it, as a PNG: the WebGL2 canvas (drawn again in this

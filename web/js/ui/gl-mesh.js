@@ -43,19 +43,25 @@ in vec3 vView;
 uniform vec4 uFill;
 uniform float uBackAlpha;
 uniform float uLit;
+uniform vec3 uBackground;
 out vec4 outColor;
 void main() {
   float a = gl_FrontFacing ? uFill.a : uBackAlpha;
   if (uLit > 0.5) {
+    // Opaque (blending off): the fill over the background at a strength set by the light,
+    // so the nearest surface hides what is behind it whatever order triangles come in.
     vec3 n = normalize(cross(dFdx(vView), dFdy(vView)));
     if (n.z < 0.0) n = -n; // the side seen
     a = 0.08 + 0.5 * max(0.0, dot(n, normalize(vec3(-0.35, 0.45, 0.82))));
+    outColor = vec4(mix(uBackground, uFill.rgb, a), 1.0);
+    return;
   }
   outColor = vec4(uFill.rgb * a, a);
 }`;
 
-// Opaque shaded faces (the subdivision lesson): brightness s = |n . light| of the normal seen
-// (per vertex when smooth, the face's own plane otherwise), coloured along the lesson's ramp
+// Opaque shaded faces (the subdivision lesson): brightness s = |n . light| of the normal given
+// per vertex (the lesson passes the core's: a vertex normal, or a face's normal on each of
+// its own corners; none: the triangle's own plane), coloured along the lesson's ramp
 // hsl(205 50% L), L = 16% + 62% s, which is linear in L on each side of 50% (uRamp: the
 // colours at L = 16%, 50%, 78%).
 const SHADED_VS = `#version 300 es
@@ -77,11 +83,10 @@ const SHADED_FS = `#version 300 es
 precision highp float;
 in vec3 vView;
 in vec3 vNormal;
-uniform float uSmooth;
 uniform vec3 uRamp[3];
 out vec4 outColor;
 void main() {
-  vec3 n = uSmooth > 0.5 && dot(vNormal, vNormal) > 0.0 ? normalize(vNormal) : normalize(cross(dFdx(vView), dFdy(vView)));
+  vec3 n = dot(vNormal, vNormal) > 0.0 ? normalize(vNormal) : normalize(cross(dFdx(vView), dFdy(vView)));
   float s = abs(dot(n, normalize(vec3(-0.35, 0.45, 0.82))));
   float l = 0.16 + 0.62 * s;
   vec3 c = l <= 0.5 ? mix(uRamp[0], uRamp[1], (l - 0.16) / 0.34) : mix(uRamp[1], uRamp[2], (l - 0.5) / 0.28);
@@ -295,7 +300,6 @@ export function createGlMesh(canvas) {
         gl.disable(gl.BLEND);
         gl.useProgram(shadedProgram.program);
         setFrame(shadedProgram);
-        gl.uniform1f(shadedProgram.uniforms.uSmooth, style.shade.smooth ? 1 : 0);
         gl.uniform3fv(shadedProgram.uniforms['uRamp[0]'], style.shade.ramp.flat());
       } else {
         gl.useProgram(faceProgram.program);
@@ -303,6 +307,8 @@ export function createGlMesh(canvas) {
         gl.uniform4f(faceProgram.uniforms.uFill, style.fill[0], style.fill[1], style.fill[2], style.faceAlpha);
         gl.uniform1f(faceProgram.uniforms.uBackAlpha, style.backAlpha);
         gl.uniform1f(faceProgram.uniforms.uLit, style.lit ? 1 : 0);
+        gl.uniform3f(faceProgram.uniforms.uBackground, style.background[0], style.background[1], style.background[2]);
+        if (style.lit) gl.disable(gl.BLEND);
       }
       gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, set.triangles);
       gl.drawElements(gl.TRIANGLES, 3 * (t1 - t0), gl.UNSIGNED_INT, 12 * t0);

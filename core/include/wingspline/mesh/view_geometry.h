@@ -24,8 +24,10 @@ glm::dvec3 vertex_normal(const WingedEdgeMesh& mesh, int32_t v);
 
 // Picking in an orthographic view (issue 17): the faces seen along the view direction.
 // `towards` points from the mesh to the viewer (any length > 0); `point` is any point on the
-// line of sight through the pointer. A face is hit where the line passes through one of
-// its fan triangles (v0, vi, vi+1); `face` is the hit face nearest the viewer (-1: none).
+// line of sight through the pointer. A face is hit where the line passes inside its outline
+// projected on the view plane (the crossing-number test, half-open so a point on a side
+// shared by two faces is inside exactly one); `face` is the hit face nearest the viewer,
+// its depth taken on the first fan triangle (v0, vi, vi+1) containing the point (-1: none).
 // `near` lists the faces whose projection comes within `radius` (world units, measured in
 // the view plane) of the line: the hit face first, then faces turned towards the viewer by
 // distance (a face turned away is hidden behind the front of a closed mesh), at most
@@ -49,8 +51,9 @@ PickResult pick_faces(const WingedEdgeMesh& mesh, const glm::dvec3& point, const
 // `cell`; each occupied cell becomes one vertex at the mean of its vertices; each fan
 // triangle of each face becomes a triangle of cells, dropped when two corners share a cell.
 // `cell` is chosen (from the box's size, then refined) so that about `target_triangles`
-// remain; a mesh with no more triangles than that is returned as its own fan triangles
-// with cell 0. Every proxy vertex lies within one cell diagonal of a vertex of the mesh.
+// remain; a mesh with no more triangles than that, or one whose clustering keeps under an
+// eighth of them (a strip thinner than a cell), is returned as its own fan triangles with
+// cell 0. Every proxy vertex lies within one cell diagonal of a vertex of the mesh.
 struct DisplayProxy {
     std::vector<double> positions;  // xyz per proxy vertex
     std::vector<int32_t> triangles; // three proxy vertices per triangle

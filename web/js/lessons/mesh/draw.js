@@ -175,6 +175,8 @@ function drawArrows(painter, model, state, colors) {
 // In 3D, an element only on faces turned away from the viewer gets no label, unless no face
 // at all is turned towards the viewer (an open sheet seen from behind shows its labels).
 const LABEL_BOX = { w: 34, h: 18 }; // CSS px of a typical label, for the density estimate
+// Characters of the label of element i (v12, e3, F7: a letter and the number i + 1).
+const labelChars = (i) => String(i + 1).length + 1;
 const LABEL_CHAR_PX = 10;            // CSS px per character of a label (15 px bold, rounded up)
 const LABEL_MARGIN_PX = 6;           // and a margin, so neighbouring labels do not touch
 const VERTEX_LABEL_PX = 18;          // a vertex label's distance from its disc
@@ -287,15 +289,28 @@ export function labelPlan(painter, model, state, forced = []) {
   for (const v of plan.vertices) fits(vx(v), vy(v), vLabel(v).length, true);
   for (const f of plan.faces) if (hasCorners(model, f)) fits(...at(...centroid(cornersOf(model, f), P)), fLabel(f).length, true);
   for (const e of plan.edges) if (model.weShown.edges[8 * e] >= 0 && model.weShown.edges[8 * e + 1] >= 0) fits(...edgeMid(e), eLabel(e).length, true);
-  for (let v = 0; v < model.V; v += 1) if (vertexSeen(v) && !plan.forced.has(key('vertex', v)) && fits(vx(v), vy(v), vLabel(v).length)) plan.vertices.push(v);
-  for (let f = 0; f < faceCount(model); f += 1) {
-    if (!faceSeen(f) || plan.forced.has(key('face', f))) continue;
-    const [x, y] = at(...centroid(cornersOf(model, f), P));
-    if (fits(x, y, fLabel(f).length)) plan.faces.push(f);
+  // Only what is on screen is considered further (no work, no string, per element off it):
+  // a zoomed-in view of a million faces costs a pass over numbers only.
+  const onScreen = (x, y) => x >= 0 && x <= w && y >= 0 && y <= h;
+  for (let v = 0; v < model.V; v += 1) {
+    const x = vx(v); const y = vy(v);
+    if (onScreen(x, y) && vertexSeen(v) && !plan.forced.has(key('vertex', v)) && fits(x, y, labelChars(v))) plan.vertices.push(v);
   }
+  const { faceOffsets: o, faceVertices: c } = model;
+  for (let f = 0; f < faceCount(model); f += 1) {
+    const n = o[f + 1] - o[f];
+    if (!n) continue;
+    let x = 0; let y = 0;
+    for (let i = o[f]; i < o[f + 1]; i += 1) { x += screen[2 * c[i]]; y += screen[2 * c[i] + 1]; }
+    x /= n; y /= n;
+    if (onScreen(x, y) && faceSeen(f) && !plan.forced.has(key('face', f)) && fits(x, y, labelChars(f))) plan.faces.push(f);
+  }
+  const ends = model.weShown.edges;
   for (let e = 0; e < E; e += 1) {
-    if (!edgeOk(e) || plan.forced.has(key('edge', e)) || model.weShown.edges[8 * e] < 0 || model.weShown.edges[8 * e + 1] < 0) continue;
-    if (fits(...edgeMid(e), eLabel(e).length)) plan.edges.push(e);
+    const a = ends[8 * e]; const b = ends[8 * e + 1];
+    if (a < 0 || b < 0) continue;
+    const x = (screen[2 * a] + screen[2 * b]) / 2; const y = (screen[2 * a + 1] + screen[2 * b + 1]) / 2;
+    if (onScreen(x, y) && edgeOk(e) && !plan.forced.has(key('edge', e)) && fits(x, y, labelChars(e))) plan.edges.push(e);
   }
   return plan;
 }

@@ -253,15 +253,16 @@ function fitView(view, model, stage) {
   return stage.fit(minX, minY, maxX, maxY, 0.18); // margin: room for the labels beside the vertices
 }
 
-// The walk on a big mesh (issue 17): when the walk's element or step changes and the ring
-// it walks would be a speck (under WALK_MIN_PX across) or off the canvas, the view centres
-// on it at WALK_ZOOM_FRACTION of the canvas. Once per change: a person who then zooms out
-// keeps their view. The first frame of a page records only (a saved or linked view stays).
+// The walk on a big mesh (issue 17): when the walk's element changes (or the walk starts
+// on a new mesh) and the ring it walks would be a speck (under WALK_MIN_PX across) or off
+// the canvas, the view centres on it at WALK_ZOOM_FRACTION of the canvas. Once per element:
+// a person who then zooms out or pans keeps their view while the walk steps. The first
+// frame of a page records only (a saved or linked view stays).
 const WALK_MIN_PX = 80;
 const WALK_ZOOM_FRACTION = 0.4;
 function zoomToWalk(view, model, state, ctx) {
   if (!model?.frames.length || model.E <= LABEL_LIMIT) return;
-  const key = `${model.source}:${state.walk}:${model.walkElement}:${model.stepIndex}`;
+  const key = `${model.source}:${state.walk}:${model.walkElement}:${model.stepIndex > 0}`;
   const first = view.walkZoomKey === undefined;
   if (view.walkZoomKey === key) return;
   view.walkZoomKey = key;

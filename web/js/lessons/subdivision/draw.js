@@ -49,17 +49,45 @@ function rampColour(L) {
 }
 const RAMP = [rampColour(0.16), rampColour(0.5), rampColour(0.78)];
 
+// What the GPU draws of the mesh shown. Smooth: the core's vertex normals, interpolated per
+// pixel. Flat: each face its own corners carrying the core's normal of the face (as the 2D
+// painter shades it: a non-planar quad is one shade, not two), the edges drawn between the
+// first copies of their ends.
+function gpuMesh(model) {
+  const base = { edges: model.we.edges, edgeStride: 8, edgeGap: null, centre: model.centre };
+  if (model.shading.kind === 'smooth') {
+    return { ...base, positions: model.positions, faceOffsets: model.faceOffsets, faceVertices: model.faceVertices, normals: model.shading.normals };
+  }
+  const { faceOffsets: o, faceVertices: c, positions: p } = model;
+  const n = model.shading.normals;
+  const corners = o[o.length - 1];
+  const positions = new Float64Array(3 * corners);
+  const normals = new Float64Array(3 * corners);
+  const first = new Int32Array(p.length / 3).fill(-1); // a vertex's first corner
+  for (let f = 0; f + 1 < o.length; f += 1) {
+    for (let i = o[f]; i < o[f + 1]; i += 1) {
+      const v = c[i];
+      if (first[v] < 0) first[v] = i;
+      for (let k = 0; k < 3; k += 1) { positions[3 * i + k] = p[3 * v + k]; normals[3 * i + k] = n[3 * f + k]; }
+    }
+  }
+  const edges = Int32Array.from(model.we.edges);
+  for (let e = 0; 8 * e < edges.length; e += 1) {
+    if (edges[8 * e] >= 0) edges[8 * e] = first[edges[8 * e]];
+    if (edges[8 * e + 1] >= 0) edges[8 * e + 1] = first[edges[8 * e + 1]];
+  }
+  const faceVertices = new Int32Array(corners);
+  for (let i = 0; i < corners; i += 1) faceVertices[i] = i;
+  return { ...base, edges, positions, faceOffsets: o, faceVertices, normals };
+}
+
 // The faces by WebGL2 (ui/gl-mesh.js): the same shading, opaque, nearest surface; the edges
 // of the mesh drawn over it as the painter does (fainter on a big mesh).
 function drawFacesGpu(gl, model, ctx) {
   const { width, height, dpr } = ctx.stage.size;
   const v = ctx.state.view;
   const F = model.faceOffsets.length - 1;
-  gl.setMesh(model.glKey, {
-    positions: model.positions, faceOffsets: model.faceOffsets, faceVertices: model.faceVertices,
-    edges: model.we.edges, edgeStride: 8, edgeGap: null, centre: model.centre,
-    normals: model.shading.kind === 'smooth' ? model.shading.normals : null,
-  });
+  if (gl.meshKey !== model.glKey) gl.setMesh(model.glKey, gpuMesh(model));
   const drawn = gl.draw(
     { R: model.rotation, offset: [model.centre[0] - v.cx, model.centre[1] - v.cy], zoom: v.zoom, width, height, dpr },
     {
