@@ -4,6 +4,7 @@
 // are virtual (virtual-table.js): a 100,000-face mesh only builds the rows in view, and the
 // adjacency rows ask the core only for those rows.
 import { h } from '../../app/dom.js';
+import { createGrowthPlot, growthSeries } from './growth.js';
 import { createVirtualTable } from '../../ui/virtual-table.js';
 import { num } from './labels.js';
 import { createStoredEdgeControl } from './stored-edge.js';
@@ -204,7 +205,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   panels['edge-list'].append(h('p', { class: 'hint' }, 'Foley & van Dam: each edge stores its two vertices and the polygons on either side; a polygon is a list of pointers to edges.'),
     tables.foleyVertex.root, tables.foleyEdge.root, tables.foleyPolygon.root);
 
-  const queryPanel = createQueryPanel(ctx);
+  const queryPanel = createQueryPanel(ctx, (kind) => growthOf(kind));
   panels.queries.append(queryPanel.root);
   // Storage: one row per representation, through the same table as the others.
   let storageRows = [];
@@ -217,7 +218,10 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       return [st.entries.toLocaleString('en'), st.bytes.toLocaleString('en'), perFace(st.bytes), st.arrays.map((a) => `${a.name}: ${a.entries.toLocaleString('en')} × ${a.bytesPerEntry} B`).join('; ')];
     } });
   const storageCounts = h('p', {});
-  const storageBody = h('div', { id: 'storage-body' }, storageCounts, storageTable.root,
+  const repName = (rep) => PROS_CONS[rep]?.title ?? rep;
+  const storageGrowth = createGrowthPlot(ctx, { id: 'storage-growth', yLabel: 'bytes',
+    caption: 'Storage against mesh size: grids of 4 × 4 to 128 × 128 quads, each split into two triangles (the core\'s figures; log-log axes).', names: repName });
+  const storageBody = h('div', { id: 'storage-body' }, storageCounts, storageTable.root, storageGrowth.root,
     ...Object.entries(PROS_CONS).map(([name, r]) => h('div', { class: 'pros-cons', 'data-representation': name }, h('h3', {}, r.title),
       h('ul', {}, r.pros.map((p) => h('li', { class: 'pro' }, h('span', { 'aria-label': 'advantage' }, '✓ '), p)),
         r.cons.map((p) => h('li', { class: 'con' }, h('span', { 'aria-label': 'disadvantage' }, '✗ '), p))))));
@@ -304,7 +308,14 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
 
   // Entries and bytes of each representation, counted by the core from its real arrays,
   // next to the lectures' pros and cons.
+  // The series against mesh size, once per page: storage, and each query kind's.
+  const growth = new Map();
+  const growthOf = (kind) => {
+    if (!growth.has(kind)) growth.set(kind, growthSeries(ctx.api, kind));
+    return growth.get(kind);
+  };
   function updateStorage() {
+    storageGrowth.update(growthOf(null));
     const c = model.counts;
     if (!model.derived.storage) model.derived.storage = model.mesh.storage(); // once per mesh version
     storageRows = Object.entries(model.derived.storage);
@@ -367,7 +378,7 @@ const QUERY_LABELS = {
 };
 const LETTER = { vertex: 'v', face: 'F', edge: 'e' };
 
-function createQueryPanel(ctx) {
+function createQueryPanel(ctx, growthOf) {
   const kind = h('select', { id: 'query-kind', 'aria-label': 'Query' }, Object.entries(QUERY_LABELS).map(([id, [label]]) => h('option', { value: id }, label)));
   const element = h('input', { type: 'number', id: 'query-element', min: 1, step: 1, 'aria-label': 'Element number (1-based)' });
   const prefix = h('span', { 'aria-hidden': 'true' }, 'v');
@@ -394,7 +405,12 @@ function createQueryPanel(ctx) {
     rowAttributes: (i) => ({ 'data-representation': answerRows[i][0] }),
     row: (i) => { const r = answerRows[i][1]; return [text(r.answer), r.entriesRead.toLocaleString('en')]; } });
   const cheapestNote = h('p', { class: 'hint' });
-  result.append(table.root, cheapestNote);
+  // Where this (small) mesh makes the winged edge look dear: said with the core's numbers.
+  const smallNote = h('p', { class: 'hint', id: 'query-small-note' });
+  const queryGrowth = createGrowthPlot(ctx, { id: 'query-growth', yLabel: 'entries read',
+    caption: 'The same query against mesh size: the middle element of grids of 4 × 4 to 128 × 128 quads (the core\'s counts; log-log axes). A line that stays flat reads in proportion to the answer; a rising one scans the mesh.',
+    names: (rep) => PROS_CONS[rep]?.title ?? rep });
+  result.append(table.root, cheapestNote, smallNote, queryGrowth.root);
   const root = h('div', { class: 'query-panel' },
     h('div', { class: 'query-choice' }, h('label', {}, 'Query ', kind), ' ', prefix, element), result);
 
@@ -420,6 +436,14 @@ function createQueryPanel(ctx) {
       table.refresh(answerRows.length);
       const cheapest = Math.min(...Object.values(answers).map((r) => r.entriesRead));
       cheapestNote.textContent = `Fewest entries read: ${cheapest.toLocaleString('en')}. The winged edge reads only the records along the answer (cost proportional to the output); a representation without adjacency has to scan its face table (cost proportional to the mesh).`;
+      const winged = answers['winged-edge']?.entriesRead;
+      const cheaper = Object.entries(answers).filter(([rep, r]) => rep !== 'winged-edge' && r.entriesRead < winged);
+      smallNote.hidden = !cheaper.length;
+      if (cheaper.length) {
+        const list = cheaper.map(([rep, r]) => `${PROS_CONS[rep]?.title ?? rep} ${r.entriesRead.toLocaleString('en')}`).join(', ');
+        smallNote.textContent = `On this mesh the winged edge reads ${winged.toLocaleString('en')} entries and ${list}: its walk reads a whole edge record (S, E, the wings) for every step, while a table this small is cheap to scan. The plot below shows the same query on growing meshes, where the scan grows with the mesh and the walk does not.`;
+      }
+      queryGrowth.update(growthOf(q));
     },
   };
 }

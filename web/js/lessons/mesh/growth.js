@@ -1,0 +1,119 @@
+// Query cost and storage against mesh size (issue 18): lecture 000's point that the winged
+// edge answers "faces around a vertex" in time proportional to the answer while a table
+// without adjacency scans the mesh, as a picture. The core answers every number: generated
+// grids of growing size (GROWTH_SIZES quads across, so F = 2 n^2 triangles), each asked the
+// query at its middle element (mesh.query: entries read per representation) and its
+// storage (mesh.storage: bytes per representation). The page only plots them, on log-log
+// axes, and lists them in a table for the keyboard and screen readers.
+import { h } from '../../app/dom.js';
+import { createVirtualTable } from '../../ui/virtual-table.js';
+
+export const GROWTH_SIZES = [4, 8, 16, 32, 64, 128];
+
+// {sizes: [{n, faces}], series: {[representation]: number[]}} for one query kind, or for
+// storage (kind null): built once per page and kind (the meshes are freed at once).
+export function growthSeries(api, kind) {
+  const sizes = [];
+  const series = {};
+  for (const n of GROWTH_SIZES) {
+    const mesh = api.buildMesh(api.generateMesh('grid', { nx: n, ny: n, layout: 'csr' }));
+    try {
+      const { vertices, edges, faces } = mesh.counts();
+      sizes.push({ n, faces });
+      // The middle element of the grid: an interior vertex of valence 6, an interior edge,
+      // an interior face, whatever the size.
+      const element = { vertex: (n / 2) * (n + 1) + n / 2, face: faces / 2 + n, edge: Math.floor(edges / 2) };
+      const kindOf = kind?.endsWith('vertex') ? 'vertex' : kind === 'faces-of-edge' ? 'edge' : 'face';
+      const answers = kind ? mesh.query(kind, Math.min(element[kindOf], { vertex: vertices, face: faces, edge: edges }[kindOf] - 1)) : mesh.storage();
+      for (const [rep, a] of Object.entries(answers)) (series[rep] ??= []).push(kind ? a.entriesRead : a.bytes);
+    } finally {
+      mesh.dispose();
+    }
+  }
+  return { sizes, series };
+}
+
+const PAD = { left: 52, right: 24, top: 14, bottom: 30 };
+const SUPERSCRIPT = '⁰¹²³⁴⁵⁶⁷⁸⁹';
+const power = (k) => `10${String(k).split('').map((d) => (d === '-' ? '⁻' : SUPERSCRIPT[Number(d)])).join('')}`;
+
+// A log-log plot of the series against faces, decade grid lines, a marker per size.
+function drawGrowth(canvas, { sizes, series }, { colors, names, yLabel }) {
+  const rect = canvas.getBoundingClientRect();
+  const dpr = window.devicePixelRatio || 1;
+  const width = Math.max(1, rect.width); const height = Math.max(1, rect.height);
+  canvas.width = Math.round(width * dpr); canvas.height = Math.round(height * dpr);
+  const g = canvas.getContext('2d');
+  g.setTransform(dpr, 0, 0, dpr, 0, 0);
+  g.fillStyle = colors.background;
+  g.fillRect(0, 0, width, height);
+  const xs = sizes.map((s) => Math.log10(s.faces));
+  const values = Object.values(series).flat().filter((v) => v > 0);
+  const x0 = Math.floor(Math.min(...xs)); const x1 = Math.ceil(Math.max(...xs));
+  const y0 = Math.floor(Math.log10(Math.min(...values))); const y1 = Math.ceil(Math.log10(Math.max(...values)));
+  const X = (x) => PAD.left + ((x - x0) / Math.max(1, x1 - x0)) * (width - PAD.left - PAD.right);
+  const Y = (y) => PAD.top + (1 - (y - y0) / Math.max(1, y1 - y0)) * (height - PAD.top - PAD.bottom);
+  g.font = '12px system-ui, "DejaVu Sans", sans-serif';
+  g.strokeStyle = colors.grid; g.fillStyle = colors.muted; g.lineWidth = 1;
+  g.textAlign = 'right'; g.textBaseline = 'middle';
+  for (let k = y0; k <= y1; k += 1) {
+    g.beginPath(); g.moveTo(PAD.left, Y(k)); g.lineTo(width - PAD.right, Y(k)); g.stroke();
+    g.fillText(power(k), PAD.left - 4, Y(k));
+  }
+  g.textAlign = 'center'; g.textBaseline = 'top';
+  for (let k = x0; k <= x1; k += 1) {
+    g.beginPath(); g.moveTo(X(k), PAD.top); g.lineTo(X(k), height - PAD.bottom); g.stroke();
+    g.fillText(power(k), X(k), height - PAD.bottom + 4);
+  }
+  g.fillStyle = colors.ink; g.textAlign = 'right'; g.textBaseline = 'bottom';
+  g.fillText('faces F', width - PAD.right, height - 2);
+  g.textAlign = 'left'; g.textBaseline = 'top';
+  g.fillText(yLabel, PAD.left + 4, 0);
+  Object.keys(series).forEach((rep, i) => {
+    const colour = colors.series[i % colors.series.length];
+    g.strokeStyle = colour; g.fillStyle = colour; g.lineWidth = 2;
+    g.setLineDash(i % 2 ? [6, 4] : []);
+    g.beginPath();
+    series[rep].forEach((v, k) => { const x = X(xs[k]); const y = Y(Math.log10(Math.max(v, 1))); if (k) g.lineTo(x, y); else g.moveTo(x, y); });
+    g.stroke();
+    g.setLineDash([]);
+    series[rep].forEach((v, k) => { g.beginPath(); g.arc(X(xs[k]), Y(Math.log10(Math.max(v, 1))), 3, 0, 2 * Math.PI); g.fill(); });
+  });
+  return Object.keys(series).map((rep, i) => ({ rep, name: names(rep), colour: colors.series[i % colors.series.length], dashed: i % 2 === 1 }));
+}
+
+// The plot, its legend and its numbers as a table (the one windowed table every tab uses).
+// update(data) draws new series.
+export function createGrowthPlot(ctx, { id, caption, yLabel, names }) {
+  const canvas = h('canvas', { id: `${id}-plot`, class: 'growth-canvas', role: 'img', 'aria-label': caption });
+  const legend = h('ul', { class: 'growth-legend', id: `${id}-legend` });
+  let data = null;
+  let rows = [];
+  const table = createVirtualTable({ id: `${id}-table`, className: 'data-table growth-table', caption: `${yLabel} against the number of faces F`,
+    head: [['representation', ...GROWTH_SIZES.map((n) => `F = ${(2 * n * n).toLocaleString('en')}`)]],
+    rowLabel: (i) => names(rows[i][0]), rowAttributes: (i) => ({ 'data-representation': rows[i][0] }),
+    row: (i) => rows[i][1].map((x) => x.toLocaleString('en')) });
+  const details = h('details', { class: 'growth-numbers' }, h('summary', {}, 'The numbers'), table.root);
+  const root = h('figure', { class: 'growth', id }, h('figcaption', {}, caption), canvas, legend, details);
+  function draw() {
+    if (!data || !root.isConnected || !canvas.getBoundingClientRect().width) return;
+    const keys = drawGrowth(canvas, data, { colors: ctx.colors, names, yLabel });
+    legend.replaceChildren(...keys.map((k) => {
+      const swatch = h('span', { class: `swatch${k.dashed ? ' dashed' : ''}` });
+      swatch.style.borderColor = k.colour;
+      return h('li', {}, swatch, k.name);
+    }));
+  }
+  new ResizeObserver(draw).observe(canvas);
+  return {
+    root,
+    get data() { return data; },
+    update(next) {
+      if (next === data) { draw(); return; }
+      data = next;
+      rows = Object.entries(data.series);
+      table.refresh(rows.length);
+      draw();
+    },
+  };
+}
