@@ -239,3 +239,38 @@ test('the PNG export holds the WebGL2 picture under the labels, as the stage sho
   assert.notDeepEqual(at(png, f1), [255, 255, 255], 'F1 is filled, not blank');
   assert.deepEqual(page.problems, []);
 });
+
+test('a big picture drawn in pieces over frames equals the same picture drawn at once; the proxy is another', async () => {
+  const page = await openMesh();
+  assert.ok(await commit(page, { meshKind: 'sphere', sphere: SPHERE, mode3d: true }));
+  await page.waitForFunction(() => window.wingspline.model?.F === 100000);
+  // Rotate by a pointer drag on empty canvas (3D): the proxy while moving, then the whole
+  // mesh in pieces (gl-mesh.js: 200,000 triangles are over one frame's budget here).
+  const box = await page.locator('#stage').boundingBox();
+  await page.mouse.move(box.x + 20, box.y + 20);
+  await page.mouse.down();
+  for (let i = 1; i <= 10; i += 1) await page.mouse.move(box.x + 20 + 8 * i, box.y + 20 + 3 * i);
+  await page.mouse.up();
+  // The proxy was shown while moving; then the whole mesh, in pieces.
+  await page.waitForFunction(() => window.wingspline.ctx.stage.gl().hasProxy, null, { timeout: 60000 });
+  await page.waitForFunction(() => { const gl = window.wingspline.ctx.stage.gl(); return gl.showing === 'whole' && !gl.busy; }, null, { timeout: 60000 });
+  const pieces = await stagePixels(page);
+  // The same view drawn whole in one go (what the PNG export does), then shown.
+  await page.evaluate(() => window.wingspline.ctx.stage.gl().redraw());
+  const whole = await stagePixels(page);
+  const same = differing(pieces, whole, 2);
+  assert.ok(same < 0.001, `pieces and whole differ in ${(100 * same).toFixed(3)}% of pixels`);
+  // The proxy at that view is a coarser picture: the measure sees it.
+  const proxy = await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => {
+    const c = window.wingspline.ctx; const m = window.wingspline.model; const v = c.state.view; const { width, height, dpr } = c.stage.size;
+    const colours = c.colors;
+    const hex = (s) => [1, 3, 5].map((i) => parseInt(s.slice(i, i + 2), 16) / 255);
+    c.stage.gl().draw({ R: m.rotation, offset: [m.centre[0] - v.cx, m.centre[1] - v.cy], zoom: v.zoom, width, height, dpr },
+      { background: hex(colours.background), fill: hex(colours.series[5]), ink: hex(colours.ink), faceAlpha: 0.16, backAlpha: 0.06, lit: true, edges: false, edgeAlpha: 0.7, useProxy: true });
+    resolve(true);
+  })));
+  assert.ok(proxy);
+  const coarse = differing(await stagePixels(page), whole, 2);
+  assert.ok(coarse > 0.001, `the proxy differs from the whole mesh (${(100 * coarse).toFixed(3)}%)`);
+  assert.deepEqual(page.problems, []);
+});

@@ -193,6 +193,7 @@ export function createGlMesh(canvas) {
   let centre = [0, 0, 0];
   let lastDrawn = null; // the signature of the picture on the canvas
   let lastArgs = null;  // the view and style it was drawn with (redraw)
+  let showing = null;   // 'whole' | 'proxy' | null: what the canvas shows
   let closed = false;   // no boundary edge: a face turned away is hidden, not drawn (lit mode)
   let outward = true;   // ... and its faces wound counter-clockwise seen from outside
   let pendingLines = null; // the mesh data whose edge lines are not made yet
@@ -334,6 +335,10 @@ export function createGlMesh(canvas) {
     get radius() { return radius; },
     get triangleCount() { return full.triangleCount; },
     get hasProxy() { return proxyKey === meshKey && meshKey !== null; },
+    // A big picture is still being drawn over frames (the proxy stands in).
+    get busy() { return job !== null; },
+    // What the canvas shows: 'whole' (the mesh), 'proxy', or null (nothing drawn yet).
+    get showing() { return showing; },
 
     /** Uploads the mesh when `key` (mesh id and version) differs from the last one. */
     /**
@@ -395,6 +400,7 @@ export function createGlMesh(canvas) {
     clearPicture(background) {
       job = null;
       lastDrawn = null;
+      showing = null;
       gl.bindFramebuffer(gl.FRAMEBUFFER, null);
       gl.clearColor(background[0], background[1], background[2], 1);
       gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
@@ -429,6 +435,7 @@ export function createGlMesh(canvas) {
         job = null;
         render(set, view, style, null, [0, set.triangleCount], [0, edges]);
         lastDrawn = signature;
+        showing = set === proxy ? 'proxy' : 'whole';
         return 'drawn';
       }
       // A big picture, FRAME_BUDGET_MS of work per frame, into an offscreen framebuffer shown
@@ -463,6 +470,7 @@ export function createGlMesh(canvas) {
         if (proxyKey === meshKey && set !== proxy && !job.proxyShown) {
           render(proxy, view, { ...style, edges: false }, null, [0, proxy.triangleCount], [0, 0]);
           job.proxyShown = true;
+          showing = 'proxy';
         }
         return 'more';
       }
@@ -472,6 +480,7 @@ export function createGlMesh(canvas) {
       gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
       job = null;
       lastDrawn = signature;
+      showing = 'whole';
       return 'drawn';
     },
   };
