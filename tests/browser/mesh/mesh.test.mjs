@@ -4,6 +4,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { drag, handle } from '../../helpers/pointer.mjs';
 
 // Lecture 000, "Winged Edge": the slide's tables, entry for entry ('' = no face: boundary).
 const SLIDE_EDGE_TABLE = [
@@ -546,5 +547,21 @@ test('choosing the stored edge of a face: F2 stores e5, its walk starts there', 
   // The face set did not change: F2 is still listed (v2 v4 v3).
   await click(page, '#tab-vertex-face');
   assert.deepEqual((await tableCells(page, 'vf-face-table'))[1], ['F2', 'v2', 'v4', 'v3']);
+  assert.deepEqual(page.problems, []);
+});
+
+// Issue 18: dragging a vertex moves it and leaves the walk where it was; a click (press and
+// release without moving) makes the vertex the walk's.
+test('dragging v3 moves it without changing the walk\'s vertex; clicking v3 makes it the walk\'s vertex', async () => {
+  const page = await openLesson();
+  const before = await page.evaluate(() => ({ vertex: window.wingspline.state.vertex, p: Array.from(window.wingspline.model.positions.slice(6, 9)) }));
+  assert.equal(before.vertex, 1, 'the walk starts at v2');
+  await drag(page, 'v2', 40, -30); // handle ids count from 0: v2 is the slide's v3
+  const after = await page.evaluate(() => ({ vertex: window.wingspline.state.vertex, p: Array.from(window.wingspline.model.positions.slice(6, 9)) }));
+  assert.notDeepEqual(after.p, before.p, 'v3 moved');
+  assert.equal(after.vertex, 1, 'the walk still goes around v2');
+  const h3 = await handle(page, 'v2');
+  await page.mouse.click(h3.x, h3.y);
+  await page.waitForFunction(() => window.wingspline.state.vertex === 2);
   assert.deepEqual(page.problems, []);
 });

@@ -298,6 +298,7 @@ function handles(view, model) {
 function moveHandle(view, state, id, x, y, model) {
   const v = Number(id.slice(1));
   if (!model || !Number.isInteger(v) || v >= model.V) return null;
+  if (view.pressed) view.pressed.dragged = true; // a drag, not a click: the walk keeps its vertex
   const [dx, dy, dz] = unprojectDelta(model.rotation, x - model.projected[3 * v], y - model.projected[3 * v + 1]);
   const p = [model.positions[3 * v] + dx, model.positions[3 * v + 1] + dy, model.positions[3 * v + 2] + dz];
   const moved = state.moved.filter((m) => m.v !== v).concat([{ v, p }]);
@@ -343,8 +344,9 @@ export const meshLesson = {
   // picture cache of a big mesh, the hovered and picked element; nothing of the lesson lives at module level.
   setup: (ctx) => {
     const selection = { hover: null, pick: null }; // the hovered and picked element: {kind, index}
-    // walkZoomKey: the walk (element, step) the view last followed (zoomToWalk; undefined until the first frame).
-    return { selection, panels: setupPanels(ctx, selection), source: createMeshSource(), derived: createDerived(), baseCache: createBaseCache(), walkZoomKey: undefined };
+    // walkZoomKey: the walk (element, step) the view last followed (zoomToWalk; undefined until
+    // the first frame); pressed: the vertex under a pressed pointer, until it is released.
+    return { selection, panels: setupPanels(ctx, selection), source: createMeshSource(), derived: createDerived(), baseCache: createBaseCache(), walkZoomKey: undefined, pressed: null };
   },
   update: (view, model, state) => view.panels.update(model, state),
   afterFrame: zoomToWalk,
@@ -353,12 +355,20 @@ export const meshLesson = {
   moveHandle,
   describe,
   fitView,
+  // A vertex pressed with the pointer becomes the walk's vertex when it is released without
+  // being dragged (issue 18: dragging a vertex must not silently change the walk's vertex);
+  // chosen with [ and ] it is only selected, for the arrow keys.
   onSelect(view, id, ctx) {
     if (id === null) return;
     const v = Number(String(id).slice(1));
     view.selection.pick = { kind: 'vertex', index: v }; // the edit panel's element too
-    const state = ctx.state;
-    if (state.walk === 'vertex' && state.vertex !== v) ctx.commit({ ...state, vertex: v, step: 0 }, { history: false });
+    view.pressed = { v, dragged: false };
+    window.addEventListener('pointerup', () => {
+      const pressed = view.pressed;
+      view.pressed = null;
+      const state = ctx.state;
+      if (pressed && !pressed.dragged && state.walk === 'vertex' && state.vertex !== pressed.v) ctx.commit({ ...state, vertex: pressed.v, step: 0 }, { history: false });
+    }, { once: true });
   },
   click(view, x, y, ctx, event) {
     return view.panels.canvasClick(x, y, event);

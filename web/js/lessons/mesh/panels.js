@@ -84,7 +84,7 @@ export function setupPanels(ctx, selection) {
 
   ctx.controls.replaceChildren(
     labelled('Mesh', meshSelect), ...Object.values(sizeGroups), importButton, toggle3d, fitButton,
-    h('span', { class: 'hint' }, 'Drag a vertex (clicking one also makes it the walk\'s vertex); drag empty space to pan (in 3D: to rotate); wheel zooms; hover an edge or face to find its table rows.'),
+    h('span', { class: 'hint' }, 'Drag a vertex to move it (a click without dragging makes it the walk\'s vertex); drag empty space to pan (in 3D: to rotate); wheel zooms; hover an edge or face to find its table rows.'),
   );
 
   // ------------------------------------------------------------ the walk
