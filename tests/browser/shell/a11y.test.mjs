@@ -82,7 +82,7 @@ for (const lesson of lessonsUnderTest) {
       assert.match(spoken, new RegExp(`^${after.label} at \\(-?[0-9.e-]+, -?[0-9.e-]+\\)$`));
       // Exact values through the inspector, reached by Tab.
       let inInspector = false;
-      for (let i = 0; i < 40 && !inInspector; i += 1) {
+      for (let i = 0; i < 80 && !inInspector; i += 1) { // scroll regions are tab stops too (dom.js)
         await page.keyboard.press('Tab');
         inInspector = await page.evaluate(() => document.activeElement?.id === 'inspect-x');
       }

@@ -21,6 +21,16 @@ for (const { id, page: file } of lessons) {
     assert.ok(handles.length > 0);
     const inside = handles.filter((hd) => hd.x >= box.x && hd.x <= box.x + box.width && hd.y >= box.y && hd.y <= box.y + box.height);
     assert.ok(inside.length >= handles.length * 0.8, `${inside.length} of ${handles.length} handles are in view`);
+    // Boxes that scroll sideways (wide tables, long formulas) show that they do: marked, with
+    // their edge shadows (site.css); boxes that fit are not marked.
+    await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+    const boxes = await page.$$eval('.table-scroll, .formula, .formula-out, .panel-body', (list) => list
+      .filter((b) => b.getClientRects().length)
+      .map((b) => ({ wide: b.scrollWidth > b.clientWidth + 1, marked: b.dataset.scrollsX !== undefined, shadow: getComputedStyle(b).backgroundImage.includes('gradient') })));
+    for (const b of boxes) {
+      assert.equal(b.marked, b.wide, 'a box is marked exactly when it scrolls sideways');
+      if (b.wide) assert.ok(b.shadow, 'a sideways-scrolling box shows its edge shadows');
+    }
     await screenshot(page, `${id}-phone`);
     assert.deepEqual(page.problems, []);
   });

@@ -60,25 +60,39 @@ export function table({ caption, head = [], rows = [], className = 'data-table' 
 // already watched are skipped.
 const SCROLL_BOXES = '.panel-body, .formula, .table-scroll, .formula-out, math[display=block]';
 const watched = new WeakSet();
-const overflowObserver = typeof ResizeObserver === 'undefined' ? null : new ResizeObserver((entries) => {
-  for (const entry of entries) {
-    const target = entry.target.matches(SCROLL_BOXES) ? entry.target : entry.target.parentElement;
-    if (!target) continue;
-    const overflows = target.scrollWidth > target.clientWidth + 1 || target.scrollHeight > target.clientHeight + 1;
-    if (overflows && !target.hasAttribute('tabindex')) {
-      target.tabIndex = 0;
-      target.dataset.scrollRegion = '';
-      if (!target.hasAttribute('role')) target.setAttribute('role', 'region');
-      if (!target.hasAttribute('aria-label') && !target.hasAttribute('aria-labelledby')) {
-        const heading = target.closest('details, section')?.querySelector('h2, h3');
-        target.setAttribute('aria-label', `${heading?.textContent ?? 'Content'} (scrolls)`);
-      }
-    } else if (!overflows && target.dataset.scrollRegion !== undefined) {
-      target.removeAttribute('tabindex');
-      delete target.dataset.scrollRegion;
+// Marks one box: a focusable, labelled region while its content overflows, and
+// data-scrolls-x while it scrolls sideways (issue 18: site.css then shows edge shadows; a
+// phone hides the scroll bar).
+function markOverflow(target) {
+  const sideways = target.scrollWidth > target.clientWidth + 1;
+  const overflows = sideways || target.scrollHeight > target.clientHeight + 1;
+  if (sideways) target.dataset.scrollsX = ''; else delete target.dataset.scrollsX;
+  if (overflows && !target.hasAttribute('tabindex')) {
+    target.tabIndex = 0;
+    target.dataset.scrollRegion = '';
+    if (!target.hasAttribute('role')) target.setAttribute('role', 'region');
+    if (!target.hasAttribute('aria-label') && !target.hasAttribute('aria-labelledby')) {
+      const heading = target.closest('details, section')?.querySelector('h2, h3');
+      target.setAttribute('aria-label', `${heading?.textContent ?? 'Content'} (scrolls)`);
     }
+  } else if (!overflows && target.dataset.scrollRegion !== undefined) {
+    target.removeAttribute('tabindex');
+    delete target.dataset.scrollRegion;
   }
+}
+
+// A box is checked when it or its first child resizes (a box's first child can be a box
+// itself: a block <math> in a .formula), and after every panel update (content can grow
+// inside a box that keeps its size: a wider matrix in a .formula of fixed width).
+const overflowObserver = typeof ResizeObserver === 'undefined' ? null : new ResizeObserver((entries) => {
+  const boxes = new Set();
+  for (const entry of entries) {
+    if (entry.target.matches(SCROLL_BOXES)) boxes.add(entry.target);
+    if (entry.target.parentElement?.matches(SCROLL_BOXES)) boxes.add(entry.target.parentElement);
+  }
+  for (const target of boxes) markOverflow(target);
 });
+let recheck = 0;
 
 /** @param {ParentNode} [root] */
 export function watchScrollRegions(root = document) {
@@ -89,5 +103,12 @@ export function watchScrollRegions(root = document) {
     overflowObserver.observe(box);
     // Content can grow without the box resizing; observe its first child too.
     if (box.firstElementChild) overflowObserver.observe(box.firstElementChild);
+  }
+  // And look at every box once the update is laid out (one read for all, next frame).
+  if (!recheck) {
+    recheck = requestAnimationFrame(() => {
+      recheck = 0;
+      for (const box of root.querySelectorAll(SCROLL_BOXES)) markOverflow(box);
+    });
   }
 }
