@@ -565,3 +565,24 @@ test('dragging v3 moves it without changing the walk\'s vertex; clicking v3 make
   await page.waitForFunction(() => window.wingspline.state.vertex === 2);
   assert.deepEqual(page.problems, []);
 });
+
+// Issue 18: a message goes when it goes stale. A refusal stays while nothing else changed
+// and is cleared by the next accepted change; a message shown for that change stays.
+test('a refusal goes once a later change is accepted, not before', async () => {
+  const page = await openLesson();
+  await page.selectOption('#mesh-kind', 'sphere');
+  await page.waitForFunction(() => window.wingspline.state.meshKind === 'sphere');
+  await page.fill('#sphere-slices', '5000');
+  await page.press('#sphere-slices', 'Enter');
+  await page.waitForFunction(() => /must be a whole number from 3 to 1000/.test(window.wingspline.message()));
+  assert.equal(await page.evaluate(() => window.wingspline.state.sphere.slices), 12, 'the refused value did not enter');
+  // A view change (zoom) is not an edit: the refusal stays.
+  await page.locator('#stage').focus();
+  await page.keyboard.press('+');
+  assert.match(await page.evaluate(() => window.wingspline.message()), /must be a whole number from 3 to 1000/);
+  // An accepted edit (a walk step) makes it stale: it goes.
+  await page.locator('#walk-title').click();
+  await page.keyboard.press('PageDown');
+  await page.waitForFunction(() => window.wingspline.message() === '');
+  assert.deepEqual(page.problems, []);
+});

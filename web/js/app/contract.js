@@ -94,12 +94,15 @@
 
 /**
  * The message line under the toolbar. `action` adds one button (an offer such as "Restore
- * your previous work").
+ * your previous work"). A message shown before an accepted change is cleared by it (the
+ * shell: clearIfBefore(the epoch taken when the change began)).
  * @typedef {{
  *   info(text: string, options?: { code?: string, action?: { id?: string, label: string, run(): void } | null, sticky?: boolean }): void,
  *   warn(text: string, options?: { code?: string, action?: { id?: string, label: string, run(): void } | null, sticky?: boolean }): void,
  *   error(text: string, code?: string): void,
  *   clear(): void,
+ *   epoch(): number,
+ *   clearIfBefore(epoch: number): void,
  *   readonly text: string,
  * }} MessageLine
  */

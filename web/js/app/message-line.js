@@ -23,9 +23,17 @@ export function errorText(err) {
 /** @returns {import('./contract.js').MessageLine} */
 export function createMessageLine(el) {
   let timer = null;
+  // Issue 18: a message goes when it goes stale. Every message shown gets the next serial
+  // number; epoch() is the serial of the next one, and clearIfBefore(e) clears a message
+  // shown before e (a refusal or a warning about a state that a later accepted change
+  // replaced), never one shown since (a warning about the change just accepted).
+  let serial = 0;
+  let shown = -1;
   // action: { label, run } adds one button (an offer: "Restore your previous work").
   function show(kind, text, { code = undefined, action = null, sticky = kind !== 'info' || !!action } = {}) {
     clearTimeout(timer);
+    shown = serial;
+    serial += 1;
     el.dataset.kind = kind;
     if (code) el.dataset.code = code; else delete el.dataset.code;
     el.setAttribute('role', kind === 'error' ? 'alert' : 'status');
@@ -46,6 +54,8 @@ export function createMessageLine(el) {
     warn: (text, options) => show('warn', text, options),
     error: (text, code) => show('error', text, { code }),
     clear,
+    epoch: () => serial,
+    clearIfBefore(epoch) { if (!el.hidden && shown < epoch) clear(); },
     get text() { return el.hidden ? '' : (el.querySelector('.message-text')?.textContent ?? ''); },
   };
 }

@@ -127,8 +127,10 @@ export async function runLesson(lesson) {
   // A whole new state from outside (an import, a link, reset): computed first, then one
   // undoable step.
   function accept(next, reason, report = reportError) {
+    const epoch = message.epoch();
     if (!recompute(next, report)) return false;
     store.replace(next, reason);
+    message.clearIfBefore(epoch); // what was said of the state this one replaces is stale
     return true;
   }
 
@@ -136,6 +138,7 @@ export async function runLesson(lesson) {
   // schema, with the limits of limits.js) is refused here with a message, and so is a state
   // the core refuses; either way the old state stays, and the panels show it again.
   function commit(next, { history = true, coalesce = null, recompute: compute = true } = {}) {
+    const epoch = message.epoch();
     const refused = checkChange(lesson.schema, next, store.state, lesson.checkState);
     if (refused) {
       message.error(`Not changed: ${refused}.`, 'out-of-limits');
@@ -147,6 +150,8 @@ export async function runLesson(lesson) {
       return false;
     }
     store.set(next, { history, coalesce, reason: compute ? 'edit' : 'view' });
+    // A refusal or warning about an earlier state is stale once an edit is accepted.
+    if (compute) message.clearIfBefore(epoch);
     return true;
   }
 
