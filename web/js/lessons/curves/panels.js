@@ -132,6 +132,9 @@ export function createPanels(ctx) {
   const matrixBody = panel(ctx.panels, { id: 'panel-matrix', title: 'Matrix form of the current segment' });
   const transposed = h('input', { type: 'checkbox', id: 'matrix-transposed', onchange: (e) => commit({ ...state(), transposed: e.target.checked }) });
   matrixBody.append(h('label', { class: 'check' }, transposed, ' Lecture 001 form Q(t) = G · M · T (transposed M)'));
+  // Issue 18: M in exact fractions as on the slides (1/6 [...], 1/2 [...]) or in decimals.
+  const fractions = h('input', { type: 'checkbox', id: 'matrix-fractions', onchange: (e) => commit({ ...state(), notation: e.target.checked ? 'fraction' : 'decimal' }) });
+  matrixBody.append(h('label', { class: 'check' }, fractions, ' Exact fractions as on the slides (1/6 [integers])'));
   const matrix = createMatrixPanel(matrixBody);
 
   const conBody = panel(ctx.panels, { id: 'panel-construction', title: 'Constructions' });
@@ -298,6 +301,7 @@ export function createPanels(ctx) {
   ctx.keymap.add({ keys: ['a'], label: 'add a control point after the selected one', group: 'Curve', action: () => addSelected() });
   ctx.keymap.add({ keys: ['Delete', 'Backspace'], label: 'remove the selected control point', group: 'Curve', action: () => removeSelected() });
   ctx.keymap.add({ keys: ['m'], label: 'matrix form: u^T M G or G M T', group: 'Curve', action: () => commit({ ...state(), transposed: !state().transposed }) });
+  ctx.keymap.add({ keys: ['f'], label: 'matrix entries: exact fractions or decimals', group: 'Curve', action: () => commit({ ...state(), notation: state().notation === 'fraction' ? 'decimal' : 'fraction' }) });
   ctx.keymap.add({ keys: ['Shift+click'], label: 'add a control point at the mouse (on the drawing)', group: 'Curve' });
   function nudgeU(sign) {
     const d = ctx.model.domain;
@@ -307,7 +311,7 @@ export function createPanels(ctx) {
   // Shift+click on the drawing adds a point there (the lesson's click hook calls this).
   const addAt = (x, y) => addSelected([Math.round(x * 1e4) / 1e4, Math.round(y * 1e4) / 1e4]);
 
-  const view = { addAt, cache: createModelCache(), family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, transposed, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
+  const view = { addAt, cache: createModelCache(), family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, transposed, fractions, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
     inspector, tangentFields, weightFields, knotField, knotTable, knotsPanel: knotsBody.parentElement, nurbsPanel: nurbsBody.parentElement, weightList, inset,
     degreeLabel: row1.querySelector('.degree-label'), tensionGroup: row1.querySelector('.tension-group'), lastKnotKey: null, lastWeightKey: null, conPlayer, uPlayer, commit, state, setKnots };
   return view;
@@ -345,7 +349,8 @@ export function updatePanels(els, model, state, ctx) {
   els.uOut.textContent = formatNumber(model.u, 4);
   // matrix panel
   els.transposed.checked = state.transposed;
-  els.matrix.update({ segment: model.segment, u: model.u, point: model.point, transposed: state.transposed,
+  els.fractions.checked = state.notation === 'fraction';
+  els.matrix.update({ segment: model.segment, u: model.u, point: model.point, transposed: state.transposed, notation: state.notation,
     title: `${familyInfo(state.family).label}, basis ${model.segment.basis ?? state.family}` });
   // constructions
   const kinds = constructionsFor(state.family, ctx.api);
