@@ -125,3 +125,21 @@ test('an old (version 1) link without the notation opens in decimals', async () 
   assert.equal(state.notation, 'decimal');
   assert.equal(state.transposed, true, 'the rest of the old link is kept');
 });
+
+test('the notes say where the lectures disagree: 002\'s Catmull-Rom first row, 001\'s row and column T', async () => {
+  const page = await openCurves(env);
+  assert.equal(await page.isHidden('#notation-note'), true, 'Bezier in the default form: nothing to say');
+  await chooseFamily(page, 'catmull-rom');
+  const note = await page.textContent('#notation-note');
+  assert.match(note, /Lecture 002 prints the first row of M_R as \(−1 3 −3 0\); lecture 003 has \(−1 3 −3 1\)/);
+  assert.match(note, /computes lecture 003's matrix/);
+  // ... and the first row shown is lecture 003's.
+  await page.click('#matrix-fractions');
+  await frame(page);
+  assert.deepEqual((await shownM(page)).entries[0], ['-1', '3', '-3', '1']);
+  await page.click('#matrix-transposed');
+  await frame(page);
+  assert.match(await page.textContent('#notation-note'), /Lecture 001 writes T = \[t³ t² t 1\] as a row in Q\(t\) = T · C and as a column in G · M · T/);
+  await chooseFamily(page, 'bezier');
+  assert.doesNotMatch(await page.textContent('#notation-note'), /M_R/);
+});
