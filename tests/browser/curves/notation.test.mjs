@@ -143,3 +143,21 @@ test('the notes say where the lectures disagree: 002\'s Catmull-Rom first row, 0
   await chooseFamily(page, 'bezier');
   assert.doesNotMatch(await page.textContent('#notation-note'), /M_R/);
 });
+
+test('a cubic Bezier shows lecture 002\'s G_B^L and G_B^R = 1/8 [integers] with the construction', async () => {
+  // Lecture 002 (002_5284cf65dc3cb6f3.txt), typed from the slide.
+  const GL = [[8, 0, 0, 0], [4, 4, 0, 0], [2, 4, 2, 0], [1, 3, 3, 1]].map((r) => r.map(String));
+  const GR = [[1, 3, 3, 1], [0, 2, 4, 2], [0, 0, 4, 4], [0, 0, 0, 8]].map((r) => r.map(String));
+  const page = await openCurves(env);
+  const read = (side) => page.$eval(`#subdivision-matrices [data-split=${side}]`, (m) => ({
+    sub: m.querySelector('msubsup').textContent,
+    fraction: [...m.querySelector('mfrac').children].map((c) => c.textContent),
+    entries: [...m.querySelector('mfrac').nextElementSibling.querySelectorAll('mtr')].map((tr) => [...tr.querySelectorAll('mtd')].map((td) => td.textContent)),
+  }));
+  assert.equal(await page.isVisible('#subdivision-matrices'), true);
+  assert.deepEqual(await read('L'), { sub: 'GBL', fraction: ['1', '8'], entries: GL });
+  assert.deepEqual(await read('R'), { sub: 'GBR', fraction: ['1', '8'], entries: GR });
+  assert.match(await page.textContent('#subdivision-matrices'), /de Casteljau construction at u = 1\/2/);
+  await chooseFamily(page, 'catmull-rom');
+  assert.equal(await page.isHidden('#subdivision-matrices'), true, 'only for the cubic Bezier');
+});

@@ -14,6 +14,7 @@ import { pairs } from '../../app/arrays.js';
 import { constructionsFor, createModelCache } from './curve-model.js';
 import { createBlendingPlot } from '../../ui/blending-plot.js';
 import { createMatrixPanel } from '../../ui/matrix-panel.js';
+import { createSubdivisionMatrices } from './subdivision-matrices.js';
 import { createKnotStrip } from './knot-strip.js';
 import { createHomogeneousInset } from './homogeneous-inset.js';
 import { OVERLAYS, DEFAULT_OVERLAYS, blendingLabels } from './names.js';
@@ -140,6 +141,7 @@ export function createPanels(ctx) {
   // which form the app computes (quoted in docs/lesson-curves.md).
   const notationNote = h('p', { class: 'hint', id: 'notation-note', 'aria-live': 'polite' });
   matrixBody.append(notationNote);
+  const splitMatrices = createSubdivisionMatrices(matrixBody, ctx.api);
 
   const conBody = panel(ctx.panels, { id: 'panel-construction', title: 'Constructions' });
   const conKind = h('select', { id: 'construction-kind', onchange: (e) => { uPlayer.pause(); commit({ ...state(), construction: { kind: e.target.value, step: 0 } }); } });
@@ -315,7 +317,7 @@ export function createPanels(ctx) {
   // Shift+click on the drawing adds a point there (the lesson's click hook calls this).
   const addAt = (x, y) => addSelected([Math.round(x * 1e4) / 1e4, Math.round(y * 1e4) / 1e4]);
 
-  const view = { addAt, cache: createModelCache(), family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, transposed, fractions, notationNote, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
+  const view = { addAt, cache: createModelCache(), family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, transposed, fractions, notationNote, splitMatrices, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
     inspector, tangentFields, weightFields, knotField, knotTable, knotsPanel: knotsBody.parentElement, nurbsPanel: nurbsBody.parentElement, weightList, inset,
     degreeLabel: row1.querySelector('.degree-label'), tensionGroup: row1.querySelector('.tension-group'), lastKnotKey: null, lastWeightKey: null, conPlayer, uPlayer, commit, state, setKnots };
   return view;
@@ -357,6 +359,7 @@ export function updatePanels(els, model, state, ctx) {
   const noteText = notationNotes(state).join(' ');
   if (els.notationNote.textContent !== noteText) els.notationNote.textContent = noteText;
   els.notationNote.hidden = noteText === '';
+  els.splitMatrices.update(state);
   els.matrix.update({ segment: model.segment, u: model.u, point: model.point, transposed: state.transposed, notation: state.notation,
     title: `${familyInfo(state.family).label}, basis ${model.segment.basis ?? state.family}` });
   // constructions
