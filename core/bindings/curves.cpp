@@ -4,6 +4,7 @@
 // {ok:false, code, message} through guarded(); bulk results leave as copied typed arrays.
 #include "boundary.h"
 #include "curve_spec.h"
+#include "rational.h"
 
 #include "wingspline/curves/analysis.h"
 #include "wingspline/curves/bezier.h"
@@ -107,6 +108,7 @@ val curve_segment(const val& spec, int index) {
         r.set("degree", s.degree);
         r.set("columns", s.columns);
         r.set("M", to_typed_array(s.M));
+        r.set("rational", rational_value(s.M)); // issue 18: M as the slide writes it, or null
         r.set("G", to_typed_array(s.G));
         r.set("C", to_typed_array(s.C));
         r.set("controlIndices", ints(s.control_indices));
@@ -152,6 +154,9 @@ val bezier_subdivision_matrix_pair(int degree, double t) {
         val r = val::object();
         r.set("left", to_typed_array(SL));
         r.set("right", to_typed_array(SR));
+        // Issue 18: as lecture 002 writes them, 1/8 [integers] at t = 1/2 (null if none).
+        r.set("leftRational", rational_value(SL));
+        r.set("rightRational", rational_value(SR));
         return r;
     });
 }

@@ -1,6 +1,7 @@
 // Module-level bindings: version and the cubic basis matrices. Mesh and curve bindings live
 // in their own translation units next to this one and follow boundary.h.
 #include "boundary.h"
+#include "rational.h"
 
 #include <malloc.h>
 
@@ -12,12 +13,14 @@ namespace {
 
 val core_version() { return val(std::string(wingspline::version())); }
 
-// basis_matrix(kind) -> {ok, matrix: Float64Array(16) row-major}
+// basis_matrix(kind) -> {ok, matrix: Float64Array(16) row-major, rational: the slide's
+// fraction and integers (issue 18)}
 val basis_matrix(const std::string& kind) {
     return guarded([&] {
         const auto m = curves::basis_matrix(curves::parse_basis_kind(kind));
         val r = val::object();
         r.set("matrix", to_typed_array(m.data(), m.size()));
+        r.set("rational", rational_value(std::vector<double>(m.begin(), m.end())));
         return r;
     });
 }

@@ -4,6 +4,7 @@
 
 #include <glm/mat4x4.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
+#include <algorithm>
 #include <cmath>
 
 namespace wingspline::curves {
@@ -52,6 +53,30 @@ Mat4 hermite_constraint_matrix() {
             1, 1, 1, 1,   // P(1)  = a + b + c + d
             0, 0, 1, 0,   // P'(0) = c
             3, 2, 1, 0};  // P'(1) = 3a + 2b + c
+}
+
+std::optional<RationalForm> rational_form(const std::vector<double>& values, int max_denominator) {
+    for (double v : values)
+        if (!std::isfinite(v) || std::abs(v) > 1e12) return std::nullopt;
+    // The first d that works is the smallest: if d works, so does every multiple of d, and
+    // the smallest common denominator leaves the integers without a common factor with d.
+    for (int d = 1; d <= max_denominator; ++d) {
+        RationalForm form;
+        form.denominator = d;
+        form.numerators.reserve(values.size());
+        bool ok = true;
+        for (double v : values) {
+            const double scaled = v * d;
+            const double whole = std::round(scaled);
+            if (std::abs(scaled - whole) > kRationalTolerance * std::max(1.0, std::abs(scaled))) {
+                ok = false;
+                break;
+            }
+            form.numerators.push_back(static_cast<long long>(whole));
+        }
+        if (ok) return form;
+    }
+    return std::nullopt;
 }
 
 Mat4 multiply(const Mat4& a, const Mat4& b) {

@@ -93,6 +93,7 @@ const cases = [
   ['generateMesh', REDUCED, () => api.generateMesh('sphere', { slices: 8, stacks: 4 }), [['unknown-mesh', () => api.generateMesh('torus')]]],
   ['lectureExample / foleyExample', REDUCED, () => { api.lectureExample(); api.foleyExample(); }, []],
   ['basisMatrix', REDUCED, () => api.basisMatrix('catmull-rom'), [['unknown-basis', () => api.basisMatrix('bezir')]]],
+  ['basisMatrixRational', REDUCED, () => api.basisMatrixRational('bspline'), [['unknown-basis', () => api.basisMatrixRational('bsplin')]]],
   ['hermiteFromConstraints', REDUCED, () => api.hermiteFromConstraints(), []],
   ['evaluateWithDerivatives', REDUCED, () => api.evaluateWithDerivatives(nurbs, params, 2), [['parameter-out-of-range', () => api.evaluateWithDerivatives(bezier, outside, 2)]]],
   ['curveDomain', REDUCED, () => api.curveDomain(nurbs), [['decreasing-knots', () => api.curveDomain(decreasing)]]],

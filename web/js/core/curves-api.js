@@ -145,6 +145,11 @@ export function createCurvesApi(raw) {
     basisMatrix(kind) {
       return unwrap(raw.basisMatrix(String(kind))).matrix;
     },
+    // Issue 18: the same matrix as on the slide, {denominator, numerators} (1/6 [...] for the
+    // uniform B-spline, 1/2 [...] for Catmull-Rom).
+    basisMatrixRational(kind) {
+      return unwrap(raw.basisMatrix(String(kind))).rational;
+    },
     // Lecture 000's Hermite derivation, computed: the constraint matrix and its inverse.
     hermiteFromConstraints() {
       const r = unwrap(raw.hermiteFromConstraints());
@@ -203,6 +208,9 @@ export function createCurvesApi(raw) {
         basis: r.basis,
         M: r.M,
         MT: transpose(r.M, n),
+        // Issue 18: M as the slides write it, (1/denominator) . numerators (row-major
+        // integers), from the core; null when M has no small common denominator.
+        rational: r.rational,
         G: r.G,
         C: r.C,
         columns: r.columns,
@@ -242,7 +250,9 @@ export function createCurvesApi(raw) {
     bezierSubdivisionMatrices(degree = 3, t = 0.5) {
       wholeNumber(degree, 'degree', 1, 20, 'degree-out-of-range');
       const r = unwrap(raw.bezierSubdivisionMatrices(degree, finiteNumber(t, 't')));
-      return { left: r.left, right: r.right, size: degree + 1 };
+      // leftRational / rightRational (issue 18): {denominator, numerators} as the slide writes
+      // them (1/8 [integers] for lecture 002), or null for a t without a small denominator.
+      return { left: r.left, right: r.right, size: degree + 1, leftRational: r.leftRational, rightRational: r.rightRational };
     },
     // Degree n -> n+1, the same curve: { points, weights? }.
     elevateDegree(points, dim, weights = undefined) {

@@ -6,7 +6,11 @@
 // homogeneous, start, end, localParameter}) and the parameter.
 //
 //   const panel = createMatrixPanel(container);
-//   panel.update({ segment, u, point, transposed, title });
+//   panel.update({ segment, u, point, transposed, title, notation });
+// notation 'fraction' (issue 18) writes M as the slides do, (1/d) . [integers], with the
+// fraction and the integers the core gives (segment.rational); 'decimal' (the default) writes
+// the entries as decimals. A matrix without a small common denominator stays in decimals
+// and the note says so.
 import { math, mi, mo, mn, el, formatNumber } from './mathml.js';
 
 export const MATRIX_DIGITS = 4;
@@ -27,7 +31,7 @@ export function createMatrixPanel(container) {
   let shape = null;
   let cells = null;
 
-  function build({ segment, transposed, title }) {
+  function build({ segment, transposed, title, fraction }) {
     const p = segment.degree;
     const n = p + 1;
     const cols = segment.columns;
@@ -35,7 +39,7 @@ export function createMatrixPanel(container) {
     const heading = document.createElement('p');
     heading.className = 'matrix-heading';
     heading.textContent = title;
-    const slots = { M: [], G: [], C: [], t: null, x: null, y: null };
+    const slots = { M: [], G: [], C: [], t: null, x: null, y: null, denominators: [] };
     // A matrix of numbers whose text nodes land in slots[key] (row-major of the shown form).
     const numbers = (key, r, c, role) => {
       const out = [];
@@ -50,7 +54,12 @@ export function createMatrixPanel(container) {
         table.append(tr);
       }
       slots[key].push(out);
-      return tag(el('mrow', mo('['), table, mo(']')), role);
+      const bracketed = tag(el('mrow', mo('['), table, mo(']')), role);
+      if (key !== 'M' || !fraction) return bracketed;
+      // The slide's common factor in front: 1/d typeset as a fraction (d filled by update).
+      const d = document.createTextNode('');
+      slots.denominators.push(d);
+      return el('mrow', tag(el('mfrac', mn('1'), el('mn', d)), 'M-fraction'), bracketed);
     };
     const powers = () => {
       const out = [];
@@ -84,33 +93,42 @@ export function createMatrixPanel(container) {
     note.append(slots.note);
     root.replaceChildren(heading, symbolic, geometry, product, coefficients, value, note);
     root.dataset.form = transposed ? 'GMT' : 'TMG';
+    root.dataset.notation = fraction ? 'fraction' : 'decimal';
     return slots;
   }
 
   // Writes a row-major r x c matrix (transposed if asked) into every copy of its slots.
-  function fill(list, flat, r, c, transposed) {
+  function fill(list, flat, r, c, transposed, digits = MATRIX_DIGITS) {
     for (const texts of list) {
       let k = 0;
       const [rr, cc] = transposed ? [c, r] : [r, c];
       for (let i = 0; i < rr; i += 1) {
         for (let j = 0; j < cc; j += 1) {
-          setText(texts[k], formatNumber(transposed ? flat[c * j + i] : flat[c * i + j], MATRIX_DIGITS));
+          setText(texts[k], formatNumber(transposed ? flat[c * j + i] : flat[c * i + j], digits));
           k += 1;
         }
       }
     }
   }
 
-  function update({ segment, u, point, transposed = false, title = '' }) {
+  function update({ segment, u, point, transposed = false, title = '', notation = 'decimal' }) {
     const p = segment.degree;
     const n = p + 1;
     const cols = segment.columns;
-    const key = JSON.stringify([p, segment.rows, cols, transposed, title, Array.from(segment.labels)]);
+    // Fractions when asked for and the core found the slide's form; a denominator of 1 is
+    // a matrix of integers, written without a factor as the slides do (Bezier, Hermite).
+    const rational = notation === 'fraction' ? segment.rational ?? null : null;
+    const fraction = rational !== null && rational.denominator !== 1;
+    const key = JSON.stringify([p, segment.rows, cols, transposed, title, Array.from(segment.labels), fraction]);
     if (key !== shape) {
       shape = key;
-      cells = build({ segment, transposed, title });
+      cells = build({ segment, transposed, title, fraction });
     }
-    fill(cells.M, segment.M, n, n, transposed);
+    if (rational) {
+      // Integers: every digit is shown, never rounded to MATRIX_DIGITS significant ones.
+      fill(cells.M, rational.numerators, n, n, transposed, 17);
+      for (const d of cells.denominators) setText(d, String(rational.denominator));
+    } else fill(cells.M, segment.M, n, n, transposed);
     fill(cells.G, segment.G, segment.rows ?? n, cols, transposed);
     fill(cells.C, segment.C, segment.rows ?? n, cols, transposed);
     const local = segment.localParameter === false ? u : (u - segment.start) / ((segment.end - segment.start) || 1);
@@ -120,9 +138,10 @@ export function createMatrixPanel(container) {
     setText(cells.x, formatNumber(point[0], MATRIX_DIGITS));
     setText(cells.y, formatNumber(point[1], MATRIX_DIGITS));
     const range = `segment ${segment.segment + 1} of ${segment.segmentCount}, curve parameter ${formatNumber(segment.start)} to ${formatNumber(segment.end)}`;
-    setText(cells.note, segment.homogeneous
+    const decimals = notation === 'fraction' && !rational ? ' The entries of M are not fractions with a small common denominator here (uneven knots or tension), so M is shown in decimals.' : '';
+    setText(cells.note, (segment.homogeneous
       ? `${range}; G holds the homogeneous points (w x, w y, w): divide by the last column to get the point.`
-      : segment.localParameter === false ? `${range}; ${name} is the curve parameter itself.` : `${range}; local ${name} = ${formatNumber(t, MATRIX_DIGITS)}.`);
+      : segment.localParameter === false ? `${range}; ${name} is the curve parameter itself.` : `${range}; local ${name} = ${formatNumber(t, MATRIX_DIGITS)}.`) + decimals);
   }
 
   return { element: root, update };

@@ -4,7 +4,9 @@
 //   Q(t) = G . M^T . T,  T = [t^3 t^2 t 1]^T  (001: the same matrix, transposed)
 // Matrices are row-major: m[4*row + col].
 #include <array>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace wingspline::curves {
 
@@ -27,6 +29,21 @@ Mat4 cardinal_matrix(double tension);
 // Lecture 000, Hermite derivation: the rows [u^3 u^2 u 1] at u = 0 and u = 1 and their
 // derivatives [3u^2 2u 1 0] at u = 0 and u = 1. M_Hermite is the inverse of this matrix.
 Mat4 hermite_constraint_matrix();
+
+// Issue 18, the lectures' notation: a matrix as the slides write it, one fraction in front
+// of integers, values[i] = numerators[i] / denominator (1/6 [...] for the uniform B-spline,
+// 1/2 [...] for Catmull-Rom). The denominator is the smallest one up to max_denominator
+// for which every entry times it is an integer within kRationalTolerance relative to
+// max(1, |entry| * denominator) (unitless: matrix entries carry no unit); nullopt when there
+// is none (an irrational or non-finite entry, a non-uniform knot vector's matrix).
+struct RationalForm {
+    long long denominator = 1;
+    std::vector<long long> numerators;
+};
+constexpr double kRationalTolerance = 1e-9;
+constexpr int kMaxNotationDenominator = 1000;
+std::optional<RationalForm> rational_form(const std::vector<double>& values,
+                                          int max_denominator = kMaxNotationDenominator);
 
 Mat4 multiply(const Mat4& a, const Mat4& b);
 Mat4 transpose(const Mat4& m);

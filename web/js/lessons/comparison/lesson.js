@@ -57,7 +57,9 @@ const handlesOf = (state) => state.points.map(([x, y], i) => ({ id: `p${i}`, x, 
 export const lesson = {
   id: 'comparison',
   title: 'Comparison lab',
-  stateVersion: 1,
+  stateVersion: 2,
+  // Version 2 (issue 18): the notation of the matrix panels; older links show decimals.
+  migrations: { 1: (old) => ({ ...old, notation: 'decimal' }) },
   schema: {
     points: list(pair, { min: MIN_POINTS, max: MAX_POINTS }),
     scene: oneOf(...Object.keys(SCENES)),
@@ -68,6 +70,7 @@ export const lesson = {
       shear: number({ min: -2, max: 2 }), tx: number({ min: -10, max: 10 }), ty: number({ min: -10, max: 10 }),
       px: number({ min: -0.5, max: 0.5 }), py: number({ min: -0.5, max: 0.5 }),
     }),
+    notation: oneOf('decimal', 'fraction'),
     view: viewSchema(),
   },
   checkState(state) {
@@ -81,6 +84,7 @@ export const lesson = {
     show: { hermite: true, bezier: true, bspline: true, 'catmull-rom': true, nubs: true },
     conversion: { from: 'bezier', to: 'hermite', start: 0, mode: 'keep-curve' },
     transform: { kind: 'affine', angle: 30, scale: 0.8, shear: 0.3, tx: 0.5, ty: -0.4, px: 0.06, py: 0.03 },
+    notation: 'decimal',
     view: { cx: 0, cy: 0, zoom: 90 },
   }),
 
@@ -151,10 +155,13 @@ export const lesson = {
       start: h('input', { type: 'number', id: 'conv-start', min: 0, step: 1, onchange: () => setConversion({ start: Number(conv.start.value) }) }),
       out: h('div', { class: 'conversion-out' }),
       matrices: h('div', { class: 'conversion-matrices' }),
+      // Issue 18: M in exact fractions as on the slides (1/6 [...], 1/2 [...]) or decimals.
+      fractions: h('input', { type: 'checkbox', id: 'conv-fractions', onchange: (e) => ctx.commit({ ...ctx.state, notation: e.target.checked ? 'fraction' : 'decimal' }) }),
     };
     convBody.append(h('div', { class: 'form-row' },
       h('label', { for: 'conv-mode' }, 'Mode ', conv.mode), h('label', { for: 'conv-from' }, 'P read as ', conv.from),
-      h('label', { for: 'conv-to' }, 'other basis ', conv.to), h('label', { for: 'conv-start' }, 'first point P', conv.start)), conv.out, conv.matrices);
+      h('label', { for: 'conv-to' }, 'other basis ', conv.to), h('label', { for: 'conv-start' }, 'first point P', conv.start),
+      h('label', { class: 'check' }, conv.fractions, ' Exact fractions as on the slides')), conv.out, conv.matrices);
     conv.fromPanel = createMatrixPanel(conv.matrices);
     conv.toPanel = createMatrixPanel(conv.matrices);
 
@@ -174,6 +181,8 @@ export const lesson = {
     const ui = { sceneSelect, familyBoxes, tableBody, conv, inv, blendPlots, addButton, removeButton, shownScene: null,
       convPanel: convBody.parentElement, invPanel: invBody.parentElement };
     ctx.keymap.add({ keys: ['n'], label: 'add a segment (three points)', group: 'Lesson', action: addSegment });
+    ctx.keymap.add({ keys: ['f'], label: 'matrix entries: exact fractions or decimals', group: 'Lesson',
+      action: () => ctx.commit({ ...ctx.state, notation: ctx.state.notation === 'fraction' ? 'decimal' : 'fraction' }) });
     ctx.keymap.add({ keys: ['x'], label: 'remove the last segment', group: 'Lesson', action: removeSegment });
 
     ctx.keymap.add({ keys: ['v'], label: 'next scene: families, conversion, invariance', group: 'Lesson', action: () => {
@@ -205,8 +214,9 @@ export const lesson = {
     }));
     const m = model.conversion;
     const name = (k) => FAMILY_NAMES[k];
-    ui.conv.fromPanel.update({ segment: m.segmentFrom, u: 0.5, point: m.midFrom, title: `${name(m.from)}: the segment as drawn (P)` });
-    ui.conv.toPanel.update({ segment: m.segmentTo, u: 0.5, point: m.midTo,
+    ui.conv.fractions.checked = state.notation === 'fraction';
+    ui.conv.fromPanel.update({ segment: m.segmentFrom, u: 0.5, point: m.midFrom, notation: state.notation, title: `${name(m.from)}: the segment as drawn (P)` });
+    ui.conv.toPanel.update({ segment: m.segmentTo, u: 0.5, point: m.midTo, notation: state.notation,
       title: m.q ? `${name(m.to)}: the same curve from q` : `${name(m.to)}: the same G with M swapped` });
   },
 

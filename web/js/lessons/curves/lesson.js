@@ -24,7 +24,9 @@ const overlaySchema = object(Object.fromEntries(Object.keys(OVERLAYS).map((k) =>
 export const lesson = {
   id: 'curves',
   title: 'Curve explorer',
-  stateVersion: 1,
+  stateVersion: 2,
+  // Version 2 (issue 18): the notation of the matrix panel; older links show decimals.
+  migrations: { 1: (old) => ({ ...old, notation: 'decimal' }) },
   schema: {
     family: oneOf(...FAMILY_IDS),
     points: list(pair, { min: 2, max: MAX_LIST }),
@@ -37,6 +39,7 @@ export const lesson = {
     construction: object({ kind: oneOf(...CONSTRUCTIONS), step: integer({ min: 0, max: 40 }) }),
     overlays: overlaySchema,
     transposed: boolean(),
+    notation: oneOf('decimal', 'fraction'),
     compare: boolean(),
     view: viewSchema(),
   },
@@ -55,6 +58,7 @@ export const lesson = {
       construction: { kind: 'none', step: 0 },
       overlays: { ...DEFAULT_OVERLAYS },
       transposed: false,
+      notation: 'decimal',
       compare: true,
       view: { cx: 2, cy: 1, zoom: 120 },
     };

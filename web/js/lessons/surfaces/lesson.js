@@ -246,14 +246,17 @@ export const lesson = {
     const powers = (t) => [[t ** 3, t ** 2, t, 1]];
     view.formulaOut.replaceChildren(
       h('div', { class: 'formula' }, math(mi('p'), fixed('('), mi('u'), mo(','), mi('v'), fixed(')'), mo('='),
-        el('msup', mi('u'), mi('T')), matrix(Mrows), mi('P'), matrix(MT), mi('v'))),
+        el('msup', mi('u'), mi('T')), named(matrix(Mrows), 'M'), mi('P'), matrix(MT), mi('v'))),
       h('div', { class: 'formula-row' }, ['x', 'y', 'z'].map((axis, k) => h('div', { class: 'formula' },
         math(el('msub', mi('P'), mi(axis)), mo('='), matrix(Pcells.map((row) => row.map((p) => p[k]))))))),
       h('div', { class: 'formula' }, math(el('msup', mi('u'), mi('T')), mo('='), matrix(powers(u)), mo(','), el('msup', mi('v'), mi('T')), mo('='), matrix(powers(v)))),
       h('p', { id: 'marker-value', 'data-u': u, 'data-v': v }, `p(${fmt(u)}, ${fmt(v)}) = ${fmt3(value)} (patch A, sampled by the core).`),
-      h('p', { class: 'hint' }, state.kind === 'bezier'
-        ? 'Bezier: P holds the 16 control points p_ij; M is M_B of lecture 002.'
-        : 'Hermite: P holds corner points, v-tangents, u-tangents and twists (lecture 002); M is M_H.'),
+      // Issue 18: u^T here is [u^3 u^2 u 1] (descending, lectures 000 and 003), so M is the
+      // matrix of those lectures; lecture 002 writes u = (1, u, u^2, u^3) and its M_B, M_H are
+      // this M with the rows in the opposite order.
+      h('p', { class: 'hint', id: 'surface-matrix-name' }, state.kind === 'bezier'
+        ? 'Bezier: P holds the 16 control points p_ij (lecture 002). M is M_Bezier of lecture 003, for uᵀ = [u³ u² u 1]; lecture 002 writes u = (1, u, u², u³), and its M_B is this M with the rows in the opposite order.'
+        : 'Hermite: P holds corner points, v-tangents, u-tangents and twists (lecture 002\'s Q = [q_ij]). M is M_Hermite of lectures 000 and 003, for uᵀ = [u³ u² u 1]; lecture 002 writes u = (1, u, u², u³), and its M_H = A_H⁻¹ is this M with the rows in the opposite order.'),
     );
 
     const cornerRows = [];
@@ -458,3 +461,9 @@ export const lesson = {
     },
   }],
 };
+
+// A typeset matrix marked for the tests and the reader (data-matrix).
+function named(node, name) {
+  node.setAttribute('data-matrix', name);
+  return node;
+}

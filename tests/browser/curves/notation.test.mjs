@@ -1,0 +1,163 @@
+// Issue 18, the lectures' notation in the curve explorer: the matrix panel switches between
+// decimals and the slides' exact form (1/6 [integers] for the uniform B-spline, 1/2 [...] for
+// Catmull-Rom) by keyboard and by pointer; the switch is state (undo, share links). The
+// expected integers are typed from lecture 003, never read from the page's own code.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { openCurves, frame, chooseFamily } from '../../helpers/curves-page.mjs';
+import { envelopeCode } from '../../helpers/classroom.mjs';
+
+const env = useSiteAndBrowser();
+
+// Lecture 003 (003_55ddbc47c7ee2ef3.txt), row by row.
+const M_BSPLINE = [[-1, 3, -3, 1], [3, -6, 3, 0], [-3, 0, 3, 0], [1, 4, 1, 0]];
+const M_CR = [[-1, 3, -3, 1], [2, -5, 4, -1], [-1, 0, 1, 0], [0, 2, 0, 0]];
+const transpose = (m) => m[0].map((_, j) => m.map((row) => row[j]));
+
+// What the panel typesets for M: the factor in front (numerator, denominator) or null, and the
+// entries of the first copy of M (the product line P(u) = [..] . M . G), row-major strings.
+const shownM = (page) => page.evaluate(() => {
+  const root = document.querySelector('.matrix-panel');
+  const frac = root.querySelector('[data-matrix=M-fraction]');
+  const m = root.querySelector('math [data-matrix=M]');
+  return {
+    notation: root.dataset.notation,
+    fraction: frac && frac.localName === 'mfrac' ? [...frac.children].map((c) => c.textContent) : null,
+    entries: [...m.querySelectorAll('mtr')].map((tr) => [...tr.querySelectorAll('mtd')].map((td) => td.textContent.trim())),
+  };
+});
+const strings = (m) => m.map((row) => row.map(String));
+// A neutral place to click so the keyboard goes to the page, as a person clicks the heading.
+const focusPage = (page) => page.click('.matrix-heading');
+
+test('uniform B-spline: f and the checkbox switch M between decimals and lecture 003\'s 1/6 [integers]', async () => {
+  const page = await openCurves(env);
+  await chooseFamily(page, 'bspline-uniform');
+  let shown = await shownM(page);
+  assert.equal(shown.notation, 'decimal');
+  assert.equal(shown.fraction, null);
+  assert.equal(shown.entries[0][0], '-0.1667', 'decimals by default (-1/6 to 4 digits)');
+
+  await focusPage(page);
+  await page.keyboard.press('f');
+  await frame(page);
+  assert.equal((await page.evaluate(() => window.wingspline.state)).notation, 'fraction');
+  shown = await shownM(page);
+  assert.equal(shown.notation, 'fraction');
+  assert.deepEqual(shown.fraction, ['1', '6']);
+  assert.deepEqual(shown.entries, strings(M_BSPLINE));
+  assert.equal(await page.isChecked('#matrix-fractions'), true);
+
+  // Lecture 001's transposed form: the same fraction, the integers transposed.
+  await page.keyboard.press('m');
+  await frame(page);
+  shown = await shownM(page);
+  assert.deepEqual(shown.fraction, ['1', '6']);
+  assert.deepEqual(shown.entries, strings(transpose(M_BSPLINE)));
+
+  // Undo takes back the transposition, then the notation (each was one step).
+  await page.click('[data-action=undo]');
+  await page.click('[data-action=undo]');
+  await frame(page);
+  shown = await shownM(page);
+  assert.equal(shown.notation, 'decimal');
+  assert.equal(shown.fraction, null);
+
+  // The pointer: the checkbox does the same as f.
+  await page.click('#matrix-fractions');
+  await frame(page);
+  shown = await shownM(page);
+  assert.deepEqual(shown.fraction, ['1', '6']);
+  assert.deepEqual(shown.entries, strings(M_BSPLINE));
+});
+
+test('Catmull-Rom in fractions is 1/2 [integers]; the notation travels in a share link', async () => {
+  const page = await openCurves(env);
+  await chooseFamily(page, 'catmull-rom');
+  await page.click('#matrix-fractions');
+  await frame(page);
+  const shown = await shownM(page);
+  assert.deepEqual(shown.fraction, ['1', '2']);
+  assert.deepEqual(shown.entries, strings(M_CR));
+
+  const url = await page.evaluate(() => window.wingspline.shareUrl());
+  const other = await env.openPage(url, { colorScheme: 'light' });
+  await other.waitForSelector('body[data-ready=true]');
+  await frame(other);
+  assert.equal((await other.evaluate(() => window.wingspline.state)).notation, 'fraction');
+  const again = await shownM(other);
+  assert.deepEqual(again.fraction, ['1', '2']);
+  assert.deepEqual(again.entries, strings(M_CR));
+});
+
+test('Bezier has integer entries (no factor); uneven knots stay in decimals and the note says why', async () => {
+  const page = await openCurves(env);
+  await page.click('#matrix-fractions');
+  await frame(page);
+  let shown = await shownM(page);
+  assert.equal(shown.fraction, null, 'lecture 003 writes M_Bezier without a factor');
+  assert.deepEqual(shown.entries, strings([[-1, 3, -3, 1], [3, -6, 3, 0], [-3, 3, 0, 0], [1, 0, 0, 0]]));
+
+  // A non-uniform B-spline with an irrational interior knot: no small common denominator.
+  await chooseFamily(page, 'bspline');
+  const state = await page.evaluate(() => window.wingspline.state);
+  assert.equal(state.points.length, 4, 'the four Bezier points are kept');
+  // Degree 2 on 4 points: 7 knots, one interior knot at 0.3/sqrt 2, an irrational ratio of
+  // the two spans, so M on the first span has no small common denominator.
+  const knots = [0, 0, 0, 0.3 * Math.SQRT1_2, 1, 1, 1];
+  const link = envelopeCode('curves', 2, { ...state, degree: 2, knots, u: 0.1 });
+  const other = await env.openPage(`${env.site.url}curves.html#s=${link}`, { colorScheme: 'light' });
+  await other.waitForSelector('body[data-ready=true]');
+  await frame(other);
+  shown = await shownM(other);
+  assert.equal(shown.notation, 'decimal');
+  assert.match(await other.textContent('.matrix-panel .hint'), /not fractions with a small common denominator/);
+});
+
+test('an old (version 1) link without the notation opens in decimals', async () => {
+  const page = await openCurves(env);
+  const { notation, ...old } = await page.evaluate(() => window.wingspline.state);
+  assert.equal(notation, 'decimal');
+  const other = await env.openPage(`${env.site.url}curves.html#s=${envelopeCode('curves', 1, { ...old, transposed: true })}`, { colorScheme: 'light' });
+  await other.waitForSelector('body[data-ready=true]');
+  const state = await other.evaluate(() => window.wingspline.state);
+  assert.equal(state.notation, 'decimal');
+  assert.equal(state.transposed, true, 'the rest of the old link is kept');
+});
+
+test('the notes say where the lectures disagree: 002\'s Catmull-Rom first row, 001\'s row and column T', async () => {
+  const page = await openCurves(env);
+  assert.equal(await page.isHidden('#notation-note'), true, 'Bezier in the default form: nothing to say');
+  await chooseFamily(page, 'catmull-rom');
+  const note = await page.textContent('#notation-note');
+  assert.match(note, /Lecture 002 prints the first row of M_R as \(−1 3 −3 0\); lecture 003 has \(−1 3 −3 1\)/);
+  assert.match(note, /computes lecture 003's matrix/);
+  // ... and the first row shown is lecture 003's.
+  await page.click('#matrix-fractions');
+  await frame(page);
+  assert.deepEqual((await shownM(page)).entries[0], ['-1', '3', '-3', '1']);
+  await page.click('#matrix-transposed');
+  await frame(page);
+  assert.match(await page.textContent('#notation-note'), /Lecture 001 writes T = \[t³ t² t 1\] as a row in Q\(t\) = T · C and as a column in G · M · T/);
+  await chooseFamily(page, 'bezier');
+  assert.doesNotMatch(await page.textContent('#notation-note'), /M_R/);
+});
+
+test('a cubic Bezier shows lecture 002\'s G_B^L and G_B^R = 1/8 [integers] with the construction', async () => {
+  // Lecture 002 (002_5284cf65dc3cb6f3.txt), typed from the slide.
+  const GL = [[8, 0, 0, 0], [4, 4, 0, 0], [2, 4, 2, 0], [1, 3, 3, 1]].map((r) => r.map(String));
+  const GR = [[1, 3, 3, 1], [0, 2, 4, 2], [0, 0, 4, 4], [0, 0, 0, 8]].map((r) => r.map(String));
+  const page = await openCurves(env);
+  const read = (side) => page.$eval(`#subdivision-matrices [data-split=${side}]`, (m) => ({
+    sub: m.querySelector('msubsup').textContent,
+    fraction: [...m.querySelector('mfrac').children].map((c) => c.textContent),
+    entries: [...m.querySelector('mfrac').nextElementSibling.querySelectorAll('mtr')].map((tr) => [...tr.querySelectorAll('mtd')].map((td) => td.textContent)),
+  }));
+  assert.equal(await page.isVisible('#subdivision-matrices'), true);
+  assert.deepEqual(await read('L'), { sub: 'GBL', fraction: ['1', '8'], entries: GL });
+  assert.deepEqual(await read('R'), { sub: 'GBR', fraction: ['1', '8'], entries: GR });
+  assert.match(await page.textContent('#subdivision-matrices'), /de Casteljau construction at u = 1\/2/);
+  await chooseFamily(page, 'catmull-rom');
+  assert.equal(await page.isHidden('#subdivision-matrices'), true, 'only for the cubic Bezier');
+});
