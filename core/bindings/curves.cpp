@@ -367,6 +367,8 @@ val curve_joint_continuity(const val& a, const val& b, double tolerance) {
         ev.set("a", to_typed_array(e.a_derivatives));
         ev.set("b", to_typed_array(e.b_derivatives));
         ev.set("positionGap", e.position_gap);
+        ev.set("size", e.size);
+        ev.set("relativeGap", e.relative_gap);
         ev.set("d1Gap", e.d1_gap);
         ev.set("d2Gap", e.d2_gap);
         ev.set("ratio", e.ratio);

@@ -379,7 +379,7 @@ export function createCurvesApi(raw) {
         parametric: r.parametric,
         geometric: r.geometric,
         evidence: {
-          tolerance: e.tolerance, a: e.a, b: e.b, positionGap: e.positionGap, d1Gap: e.d1Gap, d2Gap: e.d2Gap,
+          tolerance: e.tolerance, a: e.a, b: e.b, positionGap: e.positionGap, size: e.size, relativeGap: e.relativeGap, d1Gap: e.d1Gap, d2Gap: e.d2Gap,
           ratio: e.ratio, tangentAngle: e.tangentAngle, curvatureA: e.curvatureA, curvatureB: e.curvatureB,
           curvatureVectorGap: e.curvatureVectorGap, zeroTangent: e.zeroTangent, zeroTangentA: e.zeroTangentA,
           zeroTangentB: e.zeroTangentB, notes: Array.from(e.notes),
