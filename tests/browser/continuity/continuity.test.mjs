@@ -317,6 +317,9 @@ function expectedGap(points) {
   return { gap, relative: gap / size };
 }
 async function gapCard(page) {
+  // the panel is written on the frame after a change: wait until it shows the model's verdict
+  await page.waitForFunction(() => document.querySelector('.joint-card')?.dataset.parametric === String(window.wingspline.model.joints[0].parametric)
+    && document.querySelector('.joint-card .ratio').textContent.includes(String(Number((100 * window.wingspline.model.joints[0].relativeGap).toPrecision(3)))));
   const [j] = await joints(page);
   const text = await page.textContent('.joint-card .ratio');
   const verdict = await page.textContent('.joint-card .verdict');
