@@ -84,6 +84,7 @@ Derivation derive_cubic(BasisKind kind) {
         d.constraint = ints({0, 0, 0, 1, 1, 1, 1, 1, 0, 0, 1, 0, 3, 2, 1, 0});
         d.inverse = inverse(d.constraint, 4);
         d.basis = d.inverse;
+        d.conditions = {"P(0) = P1", "P(1) = P4", "P'(0) = R1", "P'(1) = R4"};
         if (kind == BasisKind::Bezier) {
             // P1 = P1, P4 = P4, R1 = 3 (P2 - P1), R4 = 3 (P4 - P3)
             d.substitution = ints({1, 0, 0, 0, 0, 0, 0, 1, -3, 3, 0, 0, 0, 0, -3, 3});
@@ -103,10 +104,18 @@ Derivation derive_cubic(BasisKind kind) {
         for (int r = 0; r < 4; ++r) d.constraint[16 * row + 4 * c + r] = d.constraint[16 * row + 4 * c + r] + Rational(sign * t[r]);
     };
     for (int deriv = 0; deriv < 3; ++deriv) {
+        const std::string q(deriv, '\'');
+        auto b = [&](int c, int u) { return "b" + std::to_string(c) + q + "(" + std::to_string(u) + ")"; };
         add(0, deriv, 1, 1), ++row;                                     // b_0^(d)(1) = 0
-        for (int c = 0; c < 3; ++c) add(c + 1, deriv, 1, 1), add(c, deriv, 0, -1), ++row; // b_(c+1)(1) = b_c(0)
+        d.conditions.push_back(b(0, 1) + " = 0");
+        for (int c = 0; c < 3; ++c) {
+            add(c + 1, deriv, 1, 1), add(c, deriv, 0, -1), ++row;       // b_(c+1)(1) = b_c(0)
+            d.conditions.push_back(b(c + 1, 1) + " = " + b(c, 0));
+        }
         add(3, deriv, 0, 1), ++row;                                     // b_3^(d)(0) = 0
+        d.conditions.push_back(b(3, 0) + " = 0");
     }
+    d.conditions.push_back("b0(0) + b1(0) + b2(0) + b3(0) = 1");
     for (int c = 0; c < 4; ++c) add(c, 0, 0, 1);                        // sum_c b_c(0) = 1
     d.rhs[row] = Rational(1);
     d.inverse = inverse(d.constraint, 16);

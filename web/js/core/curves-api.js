@@ -388,6 +388,15 @@ export function createCurvesApi(raw) {
       };
     },
 
+    // ---- issue 18: the derivation of a cubic family's matrix, exact: { family, size,
+    // constraint, inverse, basis, rhs (B-spline) | null, substitution (Bezier) | null,
+    // conditions (one line per constraint row) }; each matrix { rows, cols, num, den }.
+    cubicDerivation(family) {
+      const r = unwrap(raw.cubicDerivation(cubicBasis(family, 'family')));
+      return { family: r.family, size: r.size, constraint: r.constraint, inverse: r.inverse, basis: r.basis,
+        rhs: r.rhs, substitution: r.substitution, conditions: Array.from(r.conditions) };
+    },
+
     // ---- polynomial interpolation (lecture 000): the curve through the points, and its
     // Vandermonde system: { curve, nodes, vandermonde (V, rows u_i^n .. 1), inverse (V^-1),
     // coefficients (C = V^-1 P: row r holds a_(n-r), dim numbers) }.

@@ -44,6 +44,7 @@ struct Derivation {
     std::vector<Rational> rhs;          // B-spline: the right-hand side (0 ... 0 1); else empty
     std::vector<Rational> substitution; // Bezier: S, G_H = S G_B (4 x 4); else empty
     std::vector<Rational> basis;        // the resulting 4 x 4 basis matrix, row-major
+    std::vector<std::string> conditions; // one line per constraint row, in the lectures' labels
 };
 
 // Throws Error("unsupported-curve-kind") for Catmull-Rom (its derivation is not one of the three).
