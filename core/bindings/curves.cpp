@@ -12,6 +12,7 @@
 #include "wingspline/curves/conics.h"
 #include "wingspline/curves/constraints.h"
 #include "wingspline/curves/curve.h"
+#include "wingspline/curves/derivation.h"
 #include "wingspline/curves/guarantees.h"
 #include "wingspline/curves/knot_vectors.h"
 #include "wingspline/curves/linear_algebra.h"
@@ -363,6 +364,37 @@ val curve_arc_length_params(const val& spec, int n) {
     });
 }
 
+// Issue 18: a rational matrix as { rows, cols, num, den } (numerators and denominators as
+// Float64Arrays; every entry of these derivations is far below 2^53, so exact in a double).
+val fraction_matrix(const std::vector<Rational>& m, int rows, int cols) {
+    std::vector<double> num, den;
+    for (const Rational& x : m) num.push_back(static_cast<double>(x.num())), den.push_back(static_cast<double>(x.den()));
+    val r = val::object();
+    r.set("rows", rows);
+    r.set("cols", cols);
+    r.set("num", to_typed_array(num));
+    r.set("den", to_typed_array(den));
+    return r;
+}
+
+val cubic_derivation(const std::string& family) {
+    return guarded([&] {
+        const Derivation d = derive_cubic(parse_basis_kind(family));
+        val r = val::object();
+        r.set("family", d.family);
+        r.set("size", d.size);
+        r.set("constraint", fraction_matrix(d.constraint, d.size, d.size));
+        r.set("inverse", fraction_matrix(d.inverse, d.size, d.size));
+        r.set("basis", fraction_matrix(d.basis, 4, 4));
+        r.set("rhs", d.rhs.empty() ? val::null() : fraction_matrix(d.rhs, d.size, 1));
+        r.set("substitution", d.substitution.empty() ? val::null() : fraction_matrix(d.substitution, 4, 4));
+        val c = val::array();
+        for (std::size_t i = 0; i < d.conditions.size(); ++i) c.set(i, d.conditions[i]);
+        r.set("conditions", c);
+        return r;
+    });
+}
+
 val curve_joint_continuity(const val& a, const val& b, double tolerance) {
     return guarded([&] {
         const JointContinuity j = joint_continuity(curve_from(a), curve_from(b), tolerance);
@@ -372,6 +404,8 @@ val curve_joint_continuity(const val& a, const val& b, double tolerance) {
         ev.set("a", to_typed_array(e.a_derivatives));
         ev.set("b", to_typed_array(e.b_derivatives));
         ev.set("positionGap", e.position_gap);
+        ev.set("size", e.size);
+        ev.set("relativeGap", e.relative_gap);
         ev.set("d1Gap", e.d1_gap);
         ev.set("d2Gap", e.d2_gap);
         ev.set("ratio", e.ratio);
@@ -503,6 +537,7 @@ EMSCRIPTEN_BINDINGS(wingspline_curves) {
     emscripten::function("curveArcLength", &curve_arc_length);
     emscripten::function("curveArcLengthParams", &curve_arc_length_params);
     emscripten::function("curveJointContinuity", &curve_joint_continuity);
+    emscripten::function("cubicDerivation", &cubic_derivation);
     emscripten::function("patchSample", &patch_sample);
     emscripten::function("chainGuarantees", &chain_guarantees_value);
     emscripten::function("bsplineGuarantees", &bspline_guarantees_value);

@@ -44,13 +44,21 @@ struct Normalised {
     int exponent = 0;   // the scale is 2^exponent
 };
 
-void bounding_box(const Curve& c, std::vector<double>& lo, std::vector<double>& hi) {
-    const int d = c.dim;
-    for (std::size_t i = 0; i < c.points.size(); ++i) {
-        const int k = static_cast<int>(i % d);
-        lo[k] = std::min(lo[k], c.points[i]);
-        hi[k] = std::max(hi[k], c.points[i]);
-    }
+// 2 max |Q - c| over the control points Q of both curves (same dim), c their centroid.
+double spread(const Curve& a, const Curve& b) {
+    const int d = a.dim;
+    const std::size_t n = (a.points.size() + b.points.size()) / d;
+    std::vector<double> c(d, 0.0);
+    for (const Curve* x : {&a, &b})
+        for (std::size_t i = 0; i < x->points.size(); ++i) c[i % d] += x->points[i] / static_cast<double>(n);
+    double r2 = 0;
+    for (const Curve* x : {&a, &b})
+        for (std::size_t i = 0; i + d <= x->points.size(); i += d) {
+            double s = 0;
+            for (int k = 0; k < d; ++k) s += (x->points[i + k] - c[k]) * (x->points[i + k] - c[k]);
+            r2 = std::max(r2, s);
+        }
+    return 2 * std::sqrt(r2);
 }
 
 Normalised normalised(const Curve& c, int exponent) {
@@ -381,13 +389,9 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
     eb.evaluate_all(&ub, 1, 2, jet_b.data());
     const double* A = jet_a.data();
     const double* B = jet_b.data();
-    // The size of the configuration: the diagonal of the bounding box of both polygons.
-    std::vector<double> lo(d, std::numeric_limits<double>::infinity()), hi(d, -std::numeric_limits<double>::infinity());
-    bounding_box(na.curve, lo, hi);
-    bounding_box(nb.curve, lo, hi);
-    double size = 0;
-    for (int k = 0; k < d; ++k) size += (hi[k] - lo[k]) * (hi[k] - lo[k]);
-    size = std::sqrt(size);
+    // The size of the configuration: twice the largest distance of a control point of either
+    // curve from the centroid of all of them (no rotation or shift changes it; issue 18).
+    const double size = spread(na.curve, nb.curve);
     // Rounding floors per side (a zero tangent is judged on its own side) and for a difference.
     double floor_a[3], floor_b[3], floor_k[3];
     for (int k = 0; k < 3; ++k) {
@@ -407,6 +411,7 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
     }
     const double gap0 = distance(A, B, d), gap1 = distance(A + d, B + d, d), gap2 = distance(A + 2 * d, B + 2 * d, d);
     e.position_gap = std::ldexp(gap0, ex);
+    e.size = std::ldexp(size, ex);
     e.d1_gap = std::ldexp(gap1, ex);
     e.d2_gap = std::ldexp(gap2, ex);
     const double na1 = norm(A + d, d), nb1 = norm(B + d, d);
@@ -418,6 +423,7 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
     const bool c1 = c0 && same(gap1, std::max(na1, nb1), 1);
     const bool c2 = c1 && same(gap2, std::max(na2, nb2), 2);
     r.parametric = c2 ? 2 : c1 ? 1 : c0 ? 0 : -1;
+    e.relative_gap = c0 || size == 0 ? 0 : gap0 / size;
     e.zero_tangent_a = na1 <= floor_a[1];
     e.zero_tangent_b = nb1 <= floor_b[1];
     e.zero_tangent = e.zero_tangent_a || e.zero_tangent_b;
@@ -457,7 +463,9 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
         e.ratio = nb1 / na1;
     }
     r.geometric = g2 ? 2 : g1 ? 1 : c0 ? 0 : -1;
-    if (!c0) e.notes.push_back("the curves do not meet: the gap is " + detail::num(e.position_gap));
+    if (!c0)
+        e.notes.push_back("C-1: the joint is discontinuous, V1(1) != V2(0) (lecture 004); the gap is " + detail::num(e.position_gap) +
+                          ", " + detail::num(e.relative_gap) + " of the size of the two curves");
     if (c0 && e.zero_tangent)
         e.notes.push_back(c1 ? "both tangent vectors are zero: C1 holds but G1 does not (the exception to C1 => G1)"
                              : "a tangent vector is zero, so the tangent direction (G1) is undefined");

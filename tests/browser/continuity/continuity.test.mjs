@@ -305,3 +305,70 @@ test('a preset without a note prints no "null" in the rule panel', async () => {
   for (const word of ['null', 'undefined', 'NaN']) assert.ok(!text.includes(word), `the rule panel prints "${word}": ${text}`);
   assert.deepEqual(page.problems, []);
 });
+
+// Issue 18: C^-1 as lecture 004 says it ("the joint is discontinuous, V1(1) != V2(0)"), the gap
+// relative to the size of the two segments: 2 max |Q - c| over their 8 control points, c the
+// centroid (docs/api-curves.md), recomputed here from the page's state.
+function expectedGap(points) {
+  const all = points.slice(0, 8);
+  const c = [0, 1].map((k) => all.reduce((s, p) => s + p[k], 0) / all.length);
+  const size = 2 * Math.max(...all.map((p) => norm(sub(p, c))));
+  const gap = norm(sub(points[4], points[3]));
+  return { gap, relative: gap / size };
+}
+async function gapCard(page) {
+  // the panel is written on the frame after a change: wait until it shows the model's verdict
+  await page.waitForFunction(() => document.querySelector('.joint-card')?.dataset.parametric === String(window.wingspline.model.joints[0].parametric)
+    && document.querySelector('.joint-card .ratio').textContent.includes(String(Number((100 * window.wingspline.model.joints[0].relativeGap).toPrecision(3)))));
+  const [j] = await joints(page);
+  const text = await page.textContent('.joint-card .ratio');
+  const verdict = await page.textContent('.joint-card .verdict');
+  return { j, text, verdict };
+}
+function checkGap(s, { j, text, verdict }) {
+  const want = expectedGap(s.points);
+  assert.ok(want.gap > 1e-3, 'the ends came apart');
+  assert.equal(j.parametric, -1);
+  assert.equal(j.geometric, -1);
+  assert.equal(verdict, 'C-1 · G-1');
+  assert.match(text, /the joint is discontinuous, V1\(1\) ≠ V2\(0\)/);
+  // the page shows the relative gap in per cent with 3 significant digits
+  const shown = Number(/gap is ([\d.]+)% of the size/.exec(text)?.[1]);
+  assert.ok(Math.abs(shown / (100 * want.relative) - 1) < 5e-3, `shown ${shown}%, expected ${100 * want.relative}%`);
+}
+
+test('issue 18: in free mode a dragged end leaves a gap, and the lab says C-1 in the lecture\'s words', async () => {
+  const page = await openLab();
+  await page.selectOption('#constraint', 'free');
+  await page.waitForFunction(() => window.wingspline.state.constraint === 'free');
+  await drag(page, 'p4', DRAG_PX, -DRAG_PX);
+  const s = await state(page);
+  checkGap(s, await gapCard(page));
+  await screenshot(page, 'continuity-gap-pointer');
+  assert.deepEqual(page.problems, []);
+});
+
+test('issue 18: the keyboard makes a gap too: ] to the start of Q2, arrows to move it', async () => {
+  const page = await openLab();
+  await page.selectOption('#constraint', 'free');
+  await page.waitForFunction(() => window.wingspline.state.constraint === 'free');
+  await page.focus('#stage');
+  for (let i = 0; i < 5; i += 1) await page.keyboard.press(']');
+  assert.equal(await page.evaluate(() => window.wingspline.selected), 'p4');
+  const before = await state(page);
+  for (let i = 0; i < 3; i += 1) await page.keyboard.press('ArrowRight');
+  const s = await state(page);
+  assert.deepEqual(s.points[3], before.points[3], 'the end of Q1 stays');
+  // the panel and the spoken description follow on the next frame
+  await page.waitForFunction(() => /joint 1: C-1/.test(document.getElementById('stage-description').textContent));
+  checkGap(s, await gapCard(page));
+});
+
+test('issue 18: the gap preset starts at C-1', async () => {
+  const page = await openLab();
+  await choosePreset(page, 'gap');
+  const s = await state(page);
+  checkGap(s, await gapCard(page));
+  await screenshot(page, 'continuity-gap-preset');
+  assert.deepEqual(page.problems, []);
+});

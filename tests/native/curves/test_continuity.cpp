@@ -403,3 +403,51 @@ TEST_CASE("arc length terminates and is right near 1e308, 1e-308, for subnormals
         CHECK_THROWS_AS(arc_length_params(c, 10), wingspline::Error);
     }
 }
+
+// Issue 18: C^-1 (lecture 004: "the joint is discontinuous, V1(1) != V2(0)") with the gap
+// measured relative to the size of the curves: twice the largest distance of a control point
+// of either curve from the centroid of all of them, which no rotation or shift changes and a
+// scaling multiplies.
+// The test recomputes size and gap from the points, independently of the core.
+TEST_CASE("joint continuity: C-1 reports the gap relative to the size of the curves, the same at every similarity",
+          "[curves][continuity][gap]") {
+    std::mt19937_64 rng(180418);
+    auto spread = [](const std::vector<Pt>& a, const std::vector<Pt>& b) {
+        std::vector<Pt> all = a;
+        all.insert(all.end(), b.begin(), b.end());
+        Pt c{0, 0};
+        for (const Pt& p : all) c = c + (1.0 / all.size()) * p;
+        double r = 0;
+        for (const Pt& p : all) r = std::max(r, len(p - c));
+        return 2 * r;
+    };
+    for (int i = 0; i < 3000; ++i) {
+        const Joint j = make_joint(Kind::Gap, rng);
+        const Similarity s = i == 0 ? Similarity{} : random_similarity(rng);
+        const auto a = moved(j.a, s), b = moved(j.b, s);
+        const double size = spread(a, b);
+        const double gap = len(b[0] - a[3]);
+        const JointContinuity v = verdict(a, b);
+        INFO("case " << i << " " << describe(a, b));
+        REQUIRE(v.parametric == -1);
+        REQUIRE(v.geometric == -1);
+        CHECK(v.evidence.size == Approx(size).epsilon(1e-12));
+        CHECK(v.evidence.relative_gap == Approx(gap / size).epsilon(1e-12));
+        // the same joint before the similarity: the same relative gap
+        CHECK(v.evidence.relative_gap == Approx(verdict(j.a, j.b).evidence.relative_gap).epsilon(1e-12));
+    }
+    // an analytic case: centroid (3, 0.2575) (the eight points sum to (24, 2.06)); the farthest
+    // point is (6, 1): |(6, 1) - c| = sqrt(9 + 0.7425^2), gap 0.06
+    const std::vector<Pt> a = {{0, 0}, {1, 1}, {2, 1}, {3, 0}};
+    const std::vector<Pt> b = {{3, 0.06}, {4, -1}, {5, 0}, {6, 1}};
+    for (double scale : {1e-8, 1e-3, 1.0, 1e5, 1e8}) {
+        const Similarity m{scale, 0.7, {3 * scale, -5 * scale}};
+        const JointContinuity v = verdict(moved(a, m), moved(b, m));
+        INFO("scale " << scale);
+        CHECK(v.parametric == -1);
+        CHECK(v.evidence.position_gap == Approx(0.06 * scale).epsilon(1e-12));
+        CHECK(v.evidence.relative_gap == Approx(0.06 / (2 * std::sqrt(9 + 0.7425 * 0.7425))).epsilon(1e-12));
+    }
+    // a joint that meets has no gap
+    CHECK(verdict(a, {{3, 0}, {4, -1}, {5, 0}, {6, 1}}).evidence.relative_gap == 0);
+}

@@ -78,3 +78,31 @@ test('item 15: arcLength returns (and is right) for coordinates near 1e308', () 
   assert.throws(() => api.arcLength(bez([-big, -big, -big / 3, -big / 3, big / 3, big / 3, big, big])), { code: 'length-overflow' });
   assert.ok(Date.now() - start < 2000);
 });
+
+// Issue 18: C^-1 with the gap relative to the size of the pair (docs/api-curves.md): size =
+// 2 max |Q - c| over all control points, c their centroid, recomputed here from the points.
+test('issue 18: a gap is C-1 with its relative size, the same after scaling, turning and shifting', () => {
+  const a = [0, 0, 1, 1, 2, 1, 3, 0];
+  const b = [3, 0.06, 4, -1, 5, 0, 6, 1];
+  // centroid (3, 0.2575); the farthest point (6, 1); gap 0.06
+  const expected = 0.06 / (2 * Math.hypot(3, 0.7425));
+  const REL = 1e-12;
+  for (const [s, angle] of [[1e-6, 0], [1, 0.7], [1e6, -2.1]]) {
+    const move = (p) => {
+      const out = [];
+      for (let i = 0; i < p.length; i += 2) {
+        const [x, y] = [p[i], p[i + 1]];
+        out.push(s * (Math.cos(angle) * x - Math.sin(angle) * y) + 5 * s, s * (Math.sin(angle) * x + Math.cos(angle) * y) - 2 * s);
+      }
+      return out;
+    };
+    const j = api.jointContinuity(bez(move(a)), bez(move(b)));
+    assert.deepEqual([j.parametric, j.geometric], [-1, -1]);
+    assert.ok(Math.abs(j.evidence.relativeGap / expected - 1) < 1e-9, `scale ${s}: ${j.evidence.relativeGap}`);
+    assert.ok(Math.abs(j.evidence.positionGap / (0.06 * s) - 1) < 1e-9);
+    assert.ok(Math.abs(j.evidence.size / (2 * s * Math.hypot(3, 0.7425)) - 1) < REL * 1e3);
+    assert.match(j.evidence.notes[0], /discontinuous/);
+  }
+  const met = api.jointContinuity(bez(a), bez([3, 0, 4, -1, 5, 0, 6, 1]));
+  assert.equal(met.evidence.relativeGap, 0);
+});

@@ -154,6 +154,7 @@ const cases = [
   ['arcLength', REDUCED, () => api.arcLength(nurbs), [['decreasing-knots', () => api.arcLength(decreasing)]]],
   ['arcLengthParams', REDUCED, () => api.arcLengthParams(nurbs, 10), [['decreasing-knots', () => api.arcLengthParams(decreasing, 10)]]],
   ['jointContinuity', REDUCED, () => api.jointContinuity(bezier, following, { tolerance: 1e-9 }), [['decreasing-knots', () => api.jointContinuity(bezier, decreasing)]]],
+  ['cubicDerivation', REDUCED, () => api.cubicDerivation('bspline'), [['unsupported-curve-kind', () => api.cubicDerivation('catmull-rom')]]],
   ['interpolatePolynomial', REDUCED, () => api.interpolatePolynomial(geometry, 2),
     [['nodes-not-increasing', () => api.interpolatePolynomial(geometry, 2, [0, 1, 1, 2])], ['nodes-too-close', () => api.interpolatePolynomial(geometry, 2, [0, 1e-12, 1, 2])]]],
   ['curveLimits', REDUCED, () => api.curveLimits(), []],

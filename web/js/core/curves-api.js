@@ -389,13 +389,22 @@ export function createCurvesApi(raw) {
         parametric: r.parametric,
         geometric: r.geometric,
         evidence: {
-          tolerance: e.tolerance, a: e.a, b: e.b, positionGap: e.positionGap, d1Gap: e.d1Gap, d2Gap: e.d2Gap,
+          tolerance: e.tolerance, a: e.a, b: e.b, positionGap: e.positionGap, size: e.size, relativeGap: e.relativeGap, d1Gap: e.d1Gap, d2Gap: e.d2Gap,
           ratio: e.ratio, tangentAngle: e.tangentAngle, curvatureA: e.curvatureA, curvatureB: e.curvatureB,
           curvatureVectorGap: e.curvatureVectorGap, zeroTangent: e.zeroTangent, zeroTangentA: e.zeroTangentA,
           zeroTangentB: e.zeroTangentB, notes: Array.from(e.notes),
         },
         wordings: Array.from(r.wordings, (w) => ({ id: w.id, source: w.source, wording: w.wording, geometric: w.geometric, reason: w.reason })),
       };
+    },
+
+    // ---- issue 18: the derivation of a cubic family's matrix, exact: { family, size,
+    // constraint, inverse, basis, rhs (B-spline) | null, substitution (Bezier) | null,
+    // conditions (one line per constraint row) }; each matrix { rows, cols, num, den }.
+    cubicDerivation(family) {
+      const r = unwrap(raw.cubicDerivation(cubicBasis(family, 'family')));
+      return { family: r.family, size: r.size, constraint: r.constraint, inverse: r.inverse, basis: r.basis,
+        rhs: r.rhs, substitution: r.substitution, conditions: Array.from(r.conditions) };
     },
 
     // ---- polynomial interpolation (lecture 000): the curve through the points, and its

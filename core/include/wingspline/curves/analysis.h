@@ -35,6 +35,9 @@ struct JointEvidence {
     std::vector<double> a_derivatives; // orders 0..2 of a at its end: [P, P', P''] (dim each)
     std::vector<double> b_derivatives; // orders 0..2 of b at its start
     double position_gap = 0;           // |a(end) - b(start)|
+    double size = 0;                   // the size of the pair: 2 max |Q - c| over the control points Q of
+                                       // both curves, c their centroid (caller's units; rotation-invariant)
+    double relative_gap = 0;           // position_gap / size (0 where they meet): C^-1 when above the tolerance
     double d1_gap = 0, d2_gap = 0;     // |a' - b'|, |a'' - b''|
     double ratio = 0;                  // |b'| / |a'| (the alpha of G^1: b' = alpha a')
     double tangent_angle = 0;          // angle between a' and b' (radians)

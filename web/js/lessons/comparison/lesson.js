@@ -12,6 +12,7 @@ import { computeConversion, computeInvariance } from './transforms.js';
 import { drawCurve, drawPolygon, drawLegend } from '../../ui/curve-overlays.js';
 import { createBlendingPlot } from '../../ui/blending-plot.js';
 import { createMatrixPanel } from '../../ui/matrix-panel.js';
+import { computeDerivations, createDerivationPanel } from './derivation-panel.js';
 
 // The blending functions of one segment per point-based family: the convex hull row's
 // evidence (lecture 003: weights in [0, 1] summing to 1), drawn with the curve explorer's plot.
@@ -96,6 +97,7 @@ export const lesson = {
       conversion: computeConversion(api, state.points, state.conversion),
       invariance: computeInvariance(api, state.points, state.transform),
       blending: BLEND_FAMILIES.map((family) => blendingOfFirstSegment(api, family, state.points)),
+      derivations: computeDerivations(api, state.points),
     };
   },
 
@@ -178,7 +180,8 @@ export const lesson = {
       out: h('div', { class: 'invariance-out' }),
     };
     invBody.append(h('label', { for: 'tf-kind' }, 'Map ', inv.kind), h('div', { class: 'slider-grid' }, inv.sliders.map((s) => s.label)), inv.out);
-    const ui = { sceneSelect, familyBoxes, tableBody, conv, inv, blendPlots, addButton, removeButton, shownScene: null,
+    const derivation = createDerivationPanel(ctx.panels);
+    const ui = { sceneSelect, familyBoxes, tableBody, conv, inv, blendPlots, addButton, removeButton, shownScene: null, derivation,
       convPanel: convBody.parentElement, invPanel: invBody.parentElement };
     ctx.keymap.add({ keys: ['n'], label: 'add a segment (three points)', group: 'Lesson', action: addSegment });
     ctx.keymap.add({ keys: ['f'], label: 'matrix entries: exact fractions or decimals', group: 'Lesson',
@@ -196,6 +199,7 @@ export const lesson = {
   },
 
   update(ui, model, state, ctx) {
+    ui.derivation.update(model.derivations);
     if (ui.shownScene !== state.scene) {
       ui.shownScene = state.scene;
       ui.convPanel.open = state.scene === 'conversion';

@@ -114,7 +114,7 @@ export const lesson = {
     const familySelect = h('select', { id: 'family', onchange: () => switchFamily(familySelect.value) },
       FAMILIES.map((f) => h('option', { value: f }, FAMILY_NAMES[f])));
     const constraintSelect = h('select', { id: 'constraint', onchange: () => switchConstraint(constraintSelect.value) },
-      CONSTRAINTS.map((c) => h('option', { value: c }, c === 'free' ? 'free' : `keep ${c}`)));
+      CONSTRAINTS.map((c) => h('option', { value: c }, c === 'free' ? 'free (ends may part: C-1)' : `keep ${c}`)));
     const presetSelect = h('select', { id: 'preset', onchange: () => loadPreset(presetSelect.value) },
       Object.entries(PRESETS).map(([key, p]) => h('option', { value: key }, p.label)));
     const uSlider = h('input', { type: 'range', id: 'u', min: 0, max: 2, step: 1 / PLAY_STEPS_PER_SEGMENT,
@@ -245,10 +245,13 @@ export const lesson = {
             ['curvature κ', curvatureCell(l, joint.u, '⁻'), curvatureCell(r, joint.u, '⁺')],
           ],
         }),
-        h('p', { class: 'ratio' }, joint.zeroTangent
+        h('p', { class: 'ratio' }, joint.parametric < 0
+          ? explainJoint(joint)
+          : joint.zeroTangent
           ? `A first derivative is the zero vector: ${explainJoint(joint)}`
           : `|P'⁺| / |P'⁻| = ${formatNumber(joint.ratio, 4)}, angle ${formatNumber((joint.tangentAngle * 180) / Math.PI, 3)}°: ${explainJoint(joint)}`),
-        joint.notes.length ? h('ul', { class: 'notes' }, joint.notes.map((n) => h('li', {}, n))) : null,
+        // At a gap the core's note says what the line above says.
+        joint.notes.length && joint.parametric >= 0 ? h('ul', { class: 'notes' }, joint.notes.map((n) => h('li', {}, n))) : null,
         wordingsTable(joint),
       );
     }));
@@ -287,14 +290,20 @@ export const lesson = {
     const apart = (a, b, scale) => Math.hypot(a[0] - b[0], a[1] - b[1]) * scale * painter.t.zoom > 40;
     for (const joint of model.joints) {
       const at = joint.right.point;
+      // Each side's arrows start at its own end (they differ at a C-1 gap, drawn dashed).
+      const atL = joint.left.point;
       const halo = c.background;
+      if (joint.parametric < 0) {
+        painter.line(atL[0], atL[1], at[0], at[1], { stroke: c.ink, width: 2, dash: [4, 4] });
+        painter.circle(atL[0], atL[1], 5, { fill: c.background, stroke: c.ink, width: 2 });
+      }
       if (state.show.second) {
-        drawVector(painter, at, joint.left.d2, SECOND_SCALE, { stroke: c.series[3], width: 3, alpha: 0.8, halo }, 'P\'\'⁻/6');
+        drawVector(painter, atL, joint.left.d2, SECOND_SCALE, { stroke: c.series[3], width: 3, alpha: 0.8, halo }, 'P\'\'⁻/6');
         drawVector(painter, at, joint.right.d2, SECOND_SCALE, { stroke: c.series[6], width: 1.5, dash: [5, 3], halo },
           apart(joint.left.d2, joint.right.d2, SECOND_SCALE) ? 'P\'\'⁺/6' : null);
       }
       if (state.show.first) {
-        drawVector(painter, at, joint.left.d1, FIRST_SCALE, { stroke: c.series[1], width: 4, alpha: 0.85, halo }, 'P\'⁻/3');
+        drawVector(painter, atL, joint.left.d1, FIRST_SCALE, { stroke: c.series[1], width: 4, alpha: 0.85, halo }, 'P\'⁻/3');
         drawVector(painter, at, joint.right.d1, FIRST_SCALE, { stroke: c.series[5], width: 1.8, dash: [6, 3], halo },
           apart(joint.left.d1, joint.right.d1, FIRST_SCALE) ? 'P\'⁺/3' : null);
       }
@@ -378,7 +387,11 @@ function wordingsTable(joint) {
 }
 
 function explainJoint(joint) {
-  if (joint.parametric < 0) return 'the segments do not meet (C-1).';
+  // Lecture 004, "Parametric Continuity": C^-1, the joint is discontinuous. The gap is the
+  // core's, relative to the size of the two segments (docs/api-curves.md).
+  if (joint.parametric < 0) {
+    return `C-1: the joint is discontinuous, V1(1) ≠ V2(0) (lecture 004). The gap |V2(0) − V1(1)| = ${formatNumber(joint.positionGap, 4)}: the gap is ${formatNumber(100 * joint.relativeGap, 3)}% of the size of the two segments.`;
+  }
   if (joint.parametric >= 1 && joint.geometric < 1) return 'equal (zero) derivatives but no common direction: C1 without G1.';
   if (joint.parametric >= 1) return 'equal first derivatives (C1).';
   if (joint.geometric >= 1) return 'same direction, different length: G1 but not C1; the speed jumps.';

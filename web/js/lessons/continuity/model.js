@@ -72,6 +72,8 @@ export function computeModel(api, state) {
       parametric: verdict.parametric,
       geometric: verdict.geometric,
       ratio: e.ratio,
+      positionGap: e.positionGap,
+      relativeGap: e.relativeGap,
       zeroTangent: e.zeroTangent,
       tangentAngle: e.tangentAngle,
       notes: e.notes,

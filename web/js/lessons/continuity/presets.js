@@ -34,6 +34,13 @@ export const PRESETS = {
     note: 'P2 = J = Q1: both first derivatives are the zero vector, so they are equal (C1), yet the curve has a corner: no tangent direction, not G1. C1 implies G1 only when the tangent is not zero (lecture 004).',
     points: [[-3, -1], [-1.4, 1.7], J, J, J, J, [1.5, 1.6], [3, 0.2]],
   },
+  'gap': {
+    label: 'C-1: a gap (the joint is discontinuous)',
+    family: 'bezier',
+    constraint: 'free',
+    note: 'Lecture 004: C-1, the joint is discontinuous, V1(1) ≠ V2(0); a piecewise constant interpolant is C-1. In free mode drag an end (or select it with ] and move it with the arrows) to open a gap; “keep C0” closes it.',
+    points: [...LEFT, [0.45, 0.8], [1.2, -0.2], [2.2, -1.5], [3, 0.5]],
+  },
   'c2-bezier': {
     label: 'C2 Bezier joint (R2 = L1 - 4 L2 + 4 L3)',
     family: 'bezier',
