@@ -563,6 +563,12 @@ test('dragging v3 moves it without changing the walk\'s vertex; clicking v3 make
   const h3 = await handle(page, 'v2');
   await page.mouse.click(h3.x, h3.y);
   await page.waitForFunction(() => window.wingspline.state.vertex === 2);
+  // Chosen with ] on the canvas, a vertex is only selected: a later click elsewhere (on a
+  // button) does not make it the walk's vertex.
+  await page.locator('#stage').focus();
+  await page.keyboard.press(']');
+  await page.click('#walk-title');
+  assert.equal(await page.evaluate(() => window.wingspline.state.vertex), 2, 'the walk stays at v3');
   assert.deepEqual(page.problems, []);
 });
 

@@ -346,7 +346,12 @@ export const meshLesson = {
     const selection = { hover: null, pick: null }; // the hovered and picked element: {kind, index}
     // walkZoomKey: the walk (element, step) the view last followed (zoomToWalk; undefined until
     // the first frame); pressed: the vertex under a pressed pointer, until it is released.
-    return { selection, panels: setupPanels(ctx, selection), source: createMeshSource(), derived: createDerived(), baseCache: createBaseCache(), walkZoomKey: undefined, pressed: null };
+    // pointer.down: a pointer is pressed (seen first, in the capture phase), so onSelect
+    // tells a press from a selection by [ and ].
+    const pointer = { down: false };
+    window.addEventListener('pointerdown', () => { pointer.down = true; }, true);
+    for (const type of ['pointerup', 'pointercancel']) window.addEventListener(type, () => { pointer.down = false; }, true);
+    return { selection, panels: setupPanels(ctx, selection), source: createMeshSource(), derived: createDerived(), baseCache: createBaseCache(), walkZoomKey: undefined, pressed: null, pointer };
   },
   update: (view, model, state) => view.panels.update(model, state),
   afterFrame: zoomToWalk,
@@ -362,6 +367,7 @@ export const meshLesson = {
     if (id === null) return;
     const v = Number(String(id).slice(1));
     view.selection.pick = { kind: 'vertex', index: v }; // the edit panel's element too
+    if (!view.pointer.down) return; // [ or ]: selected for the arrow keys only
     view.pressed = { v, dragged: false };
     window.addEventListener('pointerup', () => {
       const pressed = view.pressed;
