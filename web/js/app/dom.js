@@ -112,3 +112,26 @@ export function watchScrollRegions(root = document) {
     });
   }
 }
+
+// Scrolls the boxes between `el` and the page (a table's scroller, the side column), never
+// the page itself, so that `el` is in view: a walk's row stays on screen at every step
+// (issue 18, projector) and a phone's page is not pulled away from the drawing. `context`
+// (a table's caption and head) is brought into view with it when both fit in the box.
+// `inset`: pixels at the top of a box covered by a sticky table head.
+/** @param {Element | null | undefined} el @param {{ context?: Element | null, margin?: number, inset?: number }} [options] */
+export function revealInBoxes(el, { context = null, margin = 8, inset = 0 } = {}) {
+  if (!el) return;
+  for (let box = el.parentElement; box && box !== document.body && box !== document.documentElement; box = box.parentElement) {
+    if (box.scrollHeight <= box.clientHeight + 1) continue;
+    const overflow = getComputedStyle(box).overflowY;
+    if (overflow !== 'auto' && overflow !== 'scroll') continue;
+    const r = el.getBoundingClientRect();
+    const b = box.getBoundingClientRect();
+    let top = r.top;
+    const c = context && box.contains(context) ? context.getBoundingClientRect() : null;
+    let above = margin + inset;
+    if (c && c.top < top && r.bottom - c.top <= b.height - 2 * margin) { top = c.top; above = margin; }
+    if (top < b.top + above) box.scrollTop -= b.top + above - top;
+    else if (r.bottom > b.bottom - margin) box.scrollTop += Math.min(r.bottom - (b.bottom - margin), top - (b.top + above));
+  }
+}

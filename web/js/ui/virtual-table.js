@@ -27,6 +27,12 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
   const scroller = h('div', { class: 'table-scroll', tabindex: 0, 'aria-label': caption }, table);
   const note = h('p', { class: 'hint table-note', hidden: true });
   const root = h('div', { class: 'table-block' }, scroller, note);
+  // A head of two rows can stick to the top of a scrolling column (web/css/mesh.css): the
+  // second row sticks under the first, at its measured height.
+  if (head.length > 1 && typeof ResizeObserver !== 'undefined') {
+    new ResizeObserver(([entry]) => table.style.setProperty('--head-row-1', `${entry.borderBoxSize?.[0]?.blockSize ?? entry.contentRect.height}px`))
+      .observe(thead.rows[0]);
+  }
 
   let count = 0;
   let rowPx = FALLBACK_ROW_PX;
@@ -165,22 +171,23 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
       for (const [i, cols] of reads) for (const c of cols) rowElement(i)?.children[c]?.classList.add('is-read');
       for (const [i, cols] of compares) for (const c of cols) rowElement(i)?.children[c]?.classList.add('is-compared');
     },
-    // Scrolls the table (only) so that row i is visible.
+    // Scrolls the table (only) so that row i is visible; returns the row's element.
     reveal(i) {
-      if (i === null || i === undefined || i < 0 || i >= count) return;
+      if (i === null || i === undefined || i < 0 || i >= count) return null;
       if (count > FULL_ROWS) {
         // Rows inside the drawn window (margin included) need no layout read at all.
         const topRow = Math.ceil(scrollTopSeen / rowPx);
         const bottomRow = Math.floor((scrollTopSeen + viewHeight) / rowPx) - 1;
-        if (i >= topRow && i <= bottomRow && i >= first && i <= last) return;
+        if (i >= topRow && i <= bottomRow && i >= first && i <= last) return rowElement(i);
         scroller.scrollTop = Math.max(0, i * rowPx - viewHeight / 3);
         renderWindow();
-        return;
+        return rowElement(i);
       }
       const el = rowElement(i);
-      if (!el) return;
+      if (!el) return null;
       const offset = el.offsetTop - scroller.scrollTop;
       if (offset < 0 || offset + el.offsetHeight > scroller.clientHeight) scroller.scrollTop = Math.max(0, el.offsetTop - scroller.clientHeight / 3);
+      return el;
     },
   };
 }

@@ -132,7 +132,7 @@ export function setupPanels(ctx, selection) {
       button('◀ Back', () => player.prev(), 'Step back (← or PageUp)'),
       playButton,
       button('Step ▶', () => player.next(), 'Step forward (→ or PageDown)'),
-      labelled('speed', speed), stepLabel),
+      h('span', { class: 'advanced' }, labelled('speed', speed)), stepLabel),
     narration, side, found);
 
   const notOnCanvas = (event) => event.target !== stage;
@@ -167,7 +167,11 @@ export function setupPanels(ctx, selection) {
   // ------------------------------------------------------------ tabs
   const tabs = createRepresentationTabs(ctx, TAB_LABELS, { pickElement: (element) => pickElement(element), selection });
   const edit = createEditPanel(ctx, selection, { pick: (element) => pickElement(element, { fromCanvas: true }) });
-  ctx.panels.replaceChildren(report, walkPanel, edit.root, tabs.root);
+  // The walk stays at the top of the side column; what it reads scrolls below it (wide
+  // screens; web/css/mesh.css), so the pseudocode and the highlighted row are on screen together.
+  const rest = h('div', { class: 'panels-rest' }, edit.root, tabs.root);
+  ctx.panels.replaceChildren(report, walkPanel, rest);
+  if (typeof ResizeObserver !== 'undefined') new ResizeObserver(() => tabs.revealAgain()).observe(rest);
 
   // ------------------------------------------------------------ canvas hover, click, rotate
   const sameElement = (a, b) => (a === b) || (a && b && a.kind === b.kind && a.index === b.index);

@@ -3,7 +3,7 @@
 // queries compared, storage with the lectures' pros and cons, and plane equations. Tables
 // are virtual (virtual-table.js): a 100,000-face mesh only builds the rows in view, and the
 // adjacency rows ask the core only for those rows.
-import { h } from '../../app/dom.js';
+import { h, revealInBoxes } from '../../app/dom.js';
 import { createGrowthPlot, growthSeries } from './growth.js';
 import { createVirtualTable } from '../../ui/virtual-table.js';
 import { num } from './labels.js';
@@ -273,7 +273,12 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
         const key = `${model.topology}:${model.version}:${model.walkKind}:${model.walkElement}:${model.stepIndex}:${model.editStep}:${tab}`;
         if (revealed[name] !== key) {
           revealed[name] = key;
-          tables[name].reveal(frame.row);
+          const row = tables[name].reveal(frame.row);
+          // The walk's row is also brought into the side column's view (never the page's),
+          // so it is on screen at every step (issue 18, projector). Not the edit player's:
+          // its buttons sit below the tables and would move away from the pointer.
+          const table = row?.closest('table') ?? null;
+          if (!inEdit) revealInBoxes(row, { context: table, inset: table?.tHead?.offsetHeight ?? 0 });
         }
       }
     }
@@ -342,6 +347,12 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   return {
     root,
     markElements,
+    // The column's size changed (the page laid out, presentation mode, a window resize,
+    // a longer narration): the walk's row is brought into view again.
+    revealAgain() {
+      for (const name of Object.keys(revealed)) delete revealed[name];
+      markElements();
+    },
     update(next, state) {
       model = next;
       for (const id of tabIds) {
