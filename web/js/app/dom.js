@@ -60,10 +60,26 @@ export function table({ caption, head = [], rows = [], className = 'data-table' 
 // already watched are skipped.
 const SCROLL_BOXES = '.panel-body, .formula, .table-scroll, .formula-out, math[display=block]';
 const watched = new WeakSet();
+// Presentation mode (issue 18, projector): a formula a little wider than its column is set
+// smaller until it fits, never below FORMULA_FLOOR_PX (nor 80% of its size); wider ones
+// still scroll, with the edge shadows. Outside presentation mode formulas keep their size.
+const FORMULA_FLOOR_PX = 16;
+function fitFormula(target) {
+  if (!target.matches('.formula')) return;
+  if (target.style.fontSize) target.style.fontSize = '';
+  if (!document.documentElement.hasAttribute('data-present')) return;
+  const ratio = target.clientWidth / target.scrollWidth;
+  if (!(ratio < 1)) return;
+  const size = parseFloat(getComputedStyle(target).fontSize);
+  const fitted = Math.max(0.98 * ratio * size, Math.min(size, Math.max(FORMULA_FLOOR_PX, 0.8 * size)));
+  if (fitted < size) target.style.fontSize = `${fitted}px`;
+}
+
 // Marks one box: a focusable, labelled region while its content overflows, and
 // data-scrolls-x while it scrolls sideways (issue 18: site.css then shows edge shadows; a
 // phone hides the scroll bar).
 function markOverflow(target) {
+  fitFormula(target);
   const sideways = target.scrollWidth > target.clientWidth + 1;
   const overflows = sideways || target.scrollHeight > target.clientHeight + 1;
   if (sideways) target.dataset.scrollsX = ''; else delete target.dataset.scrollsX;

@@ -326,16 +326,17 @@ function updateTable(body, tbl) {
       ? h('span', { class: 'lecture quoted' }, 'quoted from the lecture, not checked')
       : measured ? h('span', { class: agrees ? 'lecture agrees' : 'lecture differs' }, `lecture: ${expected} ${agrees ? '✓' : '≠'}`)
         : h('span', { class: 'lecture' }, `lecture: ${expected} (at a joint)`);
-    return [
+    // One column per family (the guarantee, then what this polygon does under it): five
+    // families fit a projector's side column without a sideways scroll (issue 18).
+    return [h('div', { class: 'family-cell' },
       h('div', { class: 'live-cell', 'data-row': row, 'data-family': f, 'data-answer': cell.answer, 'data-agrees': cell.quoted ? null : String(agrees), 'data-quoted': cell.quoted ? 'true' : null },
         h('strong', {}, cell.answer), h('span', { class: 'evidence' }, cell.evidence), verdict),
       h('div', { class: 'polygon-cell', 'data-row': row, 'data-family': f, 'data-answer': seen.answer },
-        h('strong', {}, seen.answer), h('span', { class: 'evidence' }, seen.evidence)),
-    ];
+        h('span', { class: 'polygon-label' }, 'this polygon: '), h('strong', {}, seen.answer), h('span', { class: 'evidence' }, seen.evidence)))];
   })]);
   body.replaceChildren(
-    table({ caption: 'Lecture 003 (Hermite to Catmull-Rom) and lecture 001 (non-uniform B-spline): each guarantee checked for every polygon, beside what this polygon does',
-      head: [['', ...FAMILY_IDS.map((f) => ({ text: FAMILY_NAMES[f], colspan: 2 }))], ['', ...FAMILY_IDS.flatMap(() => ['guaranteed', 'this polygon'])]],
+    table({ caption: 'Lecture 003 (Hermite to Catmull-Rom) and lecture 001 (non-uniform B-spline): each guarantee checked for every polygon, and under it what this polygon does',
+      head: [['', ...FAMILY_IDS.map((f) => FAMILY_NAMES[f])]],
       rows, className: 'data-table comparison-table' }),
     h('p', { class: 'hint' }, 'Guaranteed: what holds for every control polygon. Continuity and interpolation come from the core\'s structural argument: the derivatives at a joint are linear in the control data, so C^k holds for every polygon exactly when their coefficients (basis matrix, or the basis functions at a knot) agree, and a point is always interpolated when its basis function is 1 at a joint. Convex hull: the blending weights of the points are ≥ 0 and sum to 1 (lecture 003). This polygon: distances from the control points to the curve and the core\'s classifier at its joints, which may be smoother than guaranteed. Ease of subdivision is the lecture\'s judgement, quoted; beside it, how well this polygon\'s split halves match.'),
   );
@@ -373,12 +374,14 @@ function updateConversion(ui, m, state) {
   ui.start.value = String(state.conversion.start);
   const sub = (base, s) => el('msub', mi(base), mi(s));
   const short = { hermite: 'H', bezier: 'B', bspline: 'S', 'catmull-rom': 'R' };
+  // Two pieces that wrap: "= q" goes under the product when the column is narrow (a
+  // projector's side column), instead of being cut off.
   const formula = m.q
-    ? math(mi('q'), mo('='), el('msup', sub('M', short[m.to]), el('mn', '-1')), sub('M', short[m.from]), mi('P'), mo('='),
-      el('msup', matrix(rows4(m.Mto)), el('mn', '-1')), matrix(rows4(m.Mfrom)), matrix(geometryRows(m.g)), mo('='), matrix(geometryRows(m.q)))
-    : math(mi('P'), fixed('('), mi('u'), fixed(')'), mo('='), el('msup', mi('u'), mi('T')), matrix(rows4(m.Mto)), matrix(geometryRows(m.g)));
+    ? [math(mi('q'), mo('='), el('msup', sub('M', short[m.to]), el('mn', '-1')), sub('M', short[m.from]), mi('P'), mo('='),
+      el('msup', matrix(rows4(m.Mto)), el('mn', '-1')), matrix(rows4(m.Mfrom)), matrix(geometryRows(m.g))), math(mo('='), matrix(geometryRows(m.q)))]
+    : [math(mi('P'), fixed('('), mi('u'), fixed(')'), mo('='), el('msup', mi('u'), mi('T')), matrix(rows4(m.Mto)), matrix(geometryRows(m.g)))];
   setChildren(ui.out,
-    h('div', { class: 'formula' }, formula),
+    h('div', { class: 'formula formula-pieces' }, ...formula),
     h('p', { 'data-conversion-distance': String(m.distance) }, m.q
       ? `The ${FAMILY_NAMES[m.to]} curve of q is the ${FAMILY_NAMES[m.from]} curve of P: max distance ${fmtDistance(m.distance)} over 121 samples.`
       : `The same four rows read as ${FAMILY_NAMES[m.to]} geometry give another curve: max distance ${fmt(m.distance)} from the ${FAMILY_NAMES[m.from]} curve.`),
