@@ -76,11 +76,11 @@ for (const screen of SCREENS) {
       for (let step = 0; step < steps; step += 1) {
         await page.waitForFunction((s) => window.wingspline.state.step === s, step);
         await settle(page);
-        const seen = await onScreen(page, ['#stage', '#walk-code li.is-current', '.mesh-table tr.is-highlighted']);
+        const seen = await onScreen(page, ['#stage', '#walk-code li.is-current', '#tabpanel-winged tr.is-highlighted']);
         for (const s of seen) assert.ok(s.inside, `${kind} walk, step ${step}: ${s.selector} on screen (${JSON.stringify(s)})`);
         // The row the walk reads is not hidden under the table's sticky head.
         const under = await page.evaluate(() => {
-          const row = document.querySelector('.mesh-table tr.is-highlighted');
+          const row = document.querySelector('#tabpanel-winged tr.is-highlighted');
           const r = row.getBoundingClientRect();
           const hit = document.elementFromPoint(r.left + r.width / 2, (r.top + r.bottom) / 2);
           return row.contains(hit);

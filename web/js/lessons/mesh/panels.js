@@ -169,6 +169,7 @@ export function setupPanels(ctx, selection) {
   const edit = createEditPanel(ctx, selection, { pick: (element) => pickElement(element, { fromCanvas: true }) });
   // The walk stays at the top of the side column; what it reads scrolls below it (wide
   // screens; web/css/mesh.css), so the pseudocode and the highlighted row are on screen together.
+  narration.after(tabs.walkRow); // the row the walk reads, under its narration (phones)
   const rest = h('div', { class: 'panels-rest' }, edit.root, tabs.root);
   ctx.panels.replaceChildren(report, walkPanel, rest);
   if (typeof ResizeObserver !== 'undefined') new ResizeObserver(() => tabs.revealAgain()).observe(rest);

@@ -239,11 +239,38 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   const drawnVersion = {};
   const revealed = {}; // table name -> the walk position whose row it last scrolled into view
 
+  // The row the walk reads at this step, with its table's head, right under the walk's
+  // narration (panels.js): on a phone the tables are far below the walk's buttons, so the
+  // row is shown where the student is looking (issue 18; web/css/mesh.css shows it on
+  // narrow screens only). Built from the same descriptor as the table (headOf, rowCells).
+  const walkRow = h('div', { class: 'walk-row', id: 'walk-row', 'aria-live': 'off' });
+  let walkRowKey = '';
+  function showWalkRow(frame, inEdit) {
+    const key = frame && !inEdit ? `${model.topology}:${model.version}:${frame.table}:${frame.row}:${frame.read}:${frame.compared}` : '';
+    if (key === walkRowKey) return;
+    walkRowKey = key;
+    if (!key) { walkRow.replaceChildren(); return; }
+    const name = { vertex: 'vertices', edge: 'edges', face: 'faces' }[frame.table];
+    const d = findDescriptor(ctx.api.tableDescriptors, 'winged-edge', name);
+    const letters = NOTATION.default;
+    const cells = rowCells(d, tableAt('winged-edge', name, frame.row).row(frame.row), letters);
+    const head = headOf(d).map((cells, k) => h('tr', {}, cells.map((c) => (typeof c === 'string'
+      ? h('th', { scope: 'col' }, c) : h('th', { scope: 'col', colspan: c.colspan }, c.text)))));
+    // Column k of the big table is cell k - 1 here (its first cell is the row's label).
+    const mark = (k) => (k === frame.read ? 'is-read' : k === frame.compared ? 'is-compared' : null);
+    walkRow.replaceChildren(h('table', { class: 'data-table walk-row-table' },
+      h('caption', {}, `${d.title}: the row the walk reads`),
+      h('thead', {}, head),
+      h('tbody', {}, h('tr', { class: 'is-highlighted' }, h('th', { scope: 'row' }, sub(letters[d.rows], frame.row)),
+        cells.map((c, k) => h('td', { class: mark(k + 1) }, c))))));
+  }
+
   // Walk marks (current row, the column read) plus the hovered and picked element.
   function markElements({ reveal = false } = {}) {
     if (!model) return;
     const frame = model.frame;
     const tab = ctx.state.tab;
+    showWalkRow(frame, model.lastOperation && model.editStep < visibleSteps(model.lastOperation).length);
     for (const name of tabTables[tab] ?? []) {
       const kind = tableKind[name];
       const rows = { 'is-hovered': [], 'is-picked': [], 'is-highlighted': [] };
@@ -346,6 +373,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
 
   return {
     root,
+    walkRow,
     markElements,
     // The column's size changed (the page laid out, presentation mode, a window resize,
     // a longer narration): the walk's row is brought into view again.
