@@ -1,6 +1,7 @@
 // The lesson canvas: size (device pixels), the world-to-screen transform from the state's
-// view {cx, cy, zoom}, and the interaction a person expects: drag a handle (mouse, touch,
-// pen), drag empty space to pan, wheel or pinch to zoom, and the keyboard: [ and ] select
+// view {cx, cy, zoom}, its Fit button, and the interaction a person expects: drag a handle
+// (mouse, touch, pen), drag empty space to pan (mouse, pen; one finger scrolls the page),
+// wheel or two fingers to pan and zoom, and the keyboard: [ and ] select
 // the previous/next handle, arrows nudge it (Shift: finer), Escape deselects, + and -
 // zoom. Handles come from the lesson; the stage only finds the nearest one.
 import { Transform } from './painter.js';
@@ -66,6 +67,27 @@ export function createStage(canvas, hooks) {
     placeUnderlay();
   }
 
+  // The Fit button (issue 18): one per page, on the canvas's bottom-right corner (the legends
+  // are at the top left, the WebGL note at the top); after the canvas in the tab order; its
+  // key is the page's 0 (toolbar.js). site.css sizes it (44 x 44 CSS px on a phone).
+  let fitButton = null;
+  if (hooks.fitView) {
+    fitButton = document.createElement('button');
+    fitButton.type = 'button';
+    fitButton.className = 'stage-fit';
+    fitButton.textContent = 'Fit';
+    fitButton.title = 'Fit the drawing to the canvas (0)';
+    fitButton.setAttribute('aria-label', 'Fit the drawing to the canvas');
+    fitButton.setAttribute('aria-keyshortcuts', '0');
+    fitButton.addEventListener('click', () => hooks.fitView());
+    canvas.after(fitButton);
+  }
+  function placeFit() {
+    if (!fitButton) return;
+    fitButton.style.left = `${canvas.offsetLeft + cssWidth}px`;
+    fitButton.style.top = `${canvas.offsetTop + cssHeight}px`;
+  }
+
   function resize() {
     const rect = canvas.getBoundingClientRect();
     dpr = window.devicePixelRatio || 1;
@@ -74,6 +96,7 @@ export function createStage(canvas, hooks) {
     canvas.width = Math.round(cssWidth * dpr);
     canvas.height = Math.round(cssHeight * dpr);
     placeUnderlay();
+    placeFit();
     hooks.onResize();
   }
   new ResizeObserver(resize).observe(canvas);
