@@ -95,6 +95,27 @@ for (const { id, page: file } of lessons.filter((l) => l.ready)) {
     assert.deepEqual(page.problems, []);
   });
 
+  test(`${id}: a one-finger tap on a handle selects it and moves nothing`, async () => {
+    const { page, touch } = await openPhone(id, file);
+    const { handles, box } = await layout(page);
+    const target = handles.find((hd) => hd.x >= box.left + 10 && hd.x <= box.right - 10 && hd.y >= box.top + 10 && hd.y <= box.bottom - 10
+      && handles.every((o) => o === hd || Math.hypot(o.x - hd.x, o.y - hd.y) > 30));
+    assert.ok(target, 'a handle on screen, clear of the others');
+    const before = withoutView(await lessonState(page));
+    await touch('touchStart', [[target.x, target.y]]);
+    await touch('touchEnd');
+    await frames(page);
+    assert.equal(await page.evaluate(() => window.wingspline.selected), target.id, `${target.label} is selected`);
+    const after = await page.evaluate((hid) => window.wingspline.handles().find((hd) => hd.id === hid), target.id);
+    assert.deepEqual(after.world, target.world, 'the handle stayed where it was');
+    // The mesh lesson makes a tapped vertex the walk's vertex (lesson.js onSelect): that is
+    // the one change a tap may make there.
+    const changed = withoutView(await lessonState(page));
+    if (id === 'mesh') { delete changed.vertex; delete changed.step; delete before.vertex; delete before.step; }
+    assert.deepEqual(changed, before, 'nothing else changed');
+    assert.deepEqual(page.problems, []);
+  });
+
   test(`${id}: two fingers zoom the drawing about their midpoint and pan it, and the page does not scroll`, async () => {
     const { page, touch } = await openPhone(id, file);
     const { free, box, scrollY } = await layout(page);
