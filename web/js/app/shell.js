@@ -276,6 +276,7 @@ export async function runLesson(lesson) {
       announcer.handle(selectedHandle());
     },
     click: (x, y, event) => (lesson.click ? lesson.click(view, x, y, ctx, event) : false),
+    fitView: lesson.fitView ? () => fitView() : null, // the Fit button on the canvas (none without lesson.fitView)
     // Resizing clears the canvas: redraw at once, so no frame (or screenshot) shows it blank.
     onResize: () => {
       // Until the person moves the view, the lesson's starting view stays fitted to the

@@ -1,6 +1,7 @@
 // The lesson canvas: size (device pixels), the world-to-screen transform from the state's
-// view {cx, cy, zoom}, and the interaction a person expects: drag a handle (mouse, touch,
-// pen), drag empty space to pan, wheel or pinch to zoom, and the keyboard: [ and ] select
+// view {cx, cy, zoom}, its Fit button, and the interaction a person expects: drag a handle
+// (mouse, touch, pen), drag empty space to pan (mouse, pen; one finger scrolls the page),
+// wheel or two fingers to pan and zoom, and the keyboard: [ and ] select
 // the previous/next handle, arrows nudge it (Shift: finer), Escape deselects, + and -
 // zoom. Handles come from the lesson; the stage only finds the nearest one.
 import { Transform } from './painter.js';
@@ -66,6 +67,27 @@ export function createStage(canvas, hooks) {
     placeUnderlay();
   }
 
+  // The Fit button (issue 18): one per page, on the canvas's bottom-right corner (the legends
+  // are at the top left, the WebGL note at the top); after the canvas in the tab order; its
+  // key is the page's 0 (toolbar.js). site.css sizes it (44 x 44 CSS px on a phone).
+  let fitButton = null;
+  if (hooks.fitView) {
+    fitButton = document.createElement('button');
+    fitButton.type = 'button';
+    fitButton.className = 'stage-fit';
+    fitButton.textContent = 'Fit';
+    fitButton.title = 'Fit the drawing to the canvas (0)';
+    fitButton.setAttribute('aria-label', 'Fit the drawing to the canvas');
+    fitButton.setAttribute('aria-keyshortcuts', '0');
+    fitButton.addEventListener('click', () => hooks.fitView());
+    canvas.after(fitButton);
+  }
+  function placeFit() {
+    if (!fitButton) return;
+    fitButton.style.left = `${canvas.offsetLeft + cssWidth}px`;
+    fitButton.style.top = `${canvas.offsetTop + cssHeight}px`;
+  }
+
   function resize() {
     const rect = canvas.getBoundingClientRect();
     dpr = window.devicePixelRatio || 1;
@@ -74,6 +96,7 @@ export function createStage(canvas, hooks) {
     canvas.width = Math.round(cssWidth * dpr);
     canvas.height = Math.round(cssHeight * dpr);
     placeUnderlay();
+    placeFit();
     hooks.onResize();
   }
   new ResizeObserver(resize).observe(canvas);
@@ -106,17 +129,56 @@ export function createStage(canvas, hooks) {
     hooks.setView({ cx, cy, zoom });
   }
 
+  // Fingers (issue 18, "a phone"): one finger scrolls the page unless it starts on a
+  // handle, which it then drags; a one-finger tap picks as a click does; two fingers pan
+  // (their midpoint) and zoom (their distance) the view about their midpoint. The canvas's
+  // CSS (touch-action: pan-x pan-y) lets the browser scroll the page with one finger and
+  // never pinch-zoom it; this listener keeps the browser out when the touch starts on a
+  // draggable handle or when a second finger comes down. Mouse and pen are unchanged.
+  const TOUCH_RADIUS_PX = 24;
+  const TAP_SLOP_PX = 10; // a finger that moved farther is not a tap
+  const onHandle = (sx, sy, radius) => {
+    const handle = hit(sx, sy, radius * hooks.handleScale());
+    return handle && handle.draggable !== false ? handle : null;
+  };
+  canvas.addEventListener('touchstart', (event) => {
+    const rect = canvas.getBoundingClientRect();
+    const first = event.touches[0];
+    if (event.touches.length >= 2 || onHandle(first.clientX - rect.left, first.clientY - rect.top, TOUCH_RADIUS_PX)) event.preventDefault();
+  }, { passive: false });
+  canvas.addEventListener('touchmove', (event) => {
+    if (event.touches.length >= 2 && event.cancelable) event.preventDefault();
+  }, { passive: false });
+
+  // Two fingers: the world point under their midpoint at the start stays under their
+  // midpoint; the zoom follows the ratio of their distances.
+  function startPinch() {
+    const [a, b] = [...pointers.values()];
+    const mid = [(a.x + b.x) / 2, (a.y + b.y) / 2];
+    return { type: 'pinch', dist: Math.hypot(a.x - b.x, a.y - b.y), world: transform().toWorld(...mid), view: hooks.getView() };
+  }
+  function movePinch() {
+    const [a, b] = [...pointers.values()];
+    const dist = Math.hypot(a.x - b.x, a.y - b.y);
+    const zoom = gesture.dist > 0 ? Math.min(1e5, Math.max(1, gesture.view.zoom * dist / gesture.dist)) : gesture.view.zoom;
+    const [mx, my] = [(a.x + b.x) / 2, (a.y + b.y) / 2];
+    const [wx, wy] = gesture.world;
+    hooks.setView({ cx: wx - (mx - cssWidth / 2) / zoom, cy: wy + (my - cssHeight / 2) / zoom, zoom });
+  }
+
   canvas.addEventListener('pointerdown', (event) => {
     canvas.focus({ preventScroll: true });
     const [sx, sy] = local(event);
+    const touch = event.pointerType === 'touch';
     pointers.set(event.pointerId, { x: sx, y: sy });
     canvas.setPointerCapture(event.pointerId);
     if (pointers.size === 2) {
-      const [a, b] = [...pointers.values()];
-      gesture = { type: 'pinch', dist: Math.hypot(a.x - b.x, a.y - b.y), view: hooks.getView() };
+      if (gesture?.type === 'handle') hooks.dragEnd(gesture.id); // a second finger: the view, not the handle
+      gesture = startPinch();
       return;
     }
-    const radius = (event.pointerType === 'touch' ? 24 : HIT_RADIUS_PX) * hooks.handleScale();
+    if (pointers.size > 2) return;
+    const radius = (touch ? TOUCH_RADIUS_PX : HIT_RADIUS_PX) * hooks.handleScale();
     const handle = hit(sx, sy, radius);
     if (handle && handle.draggable !== false) {
       gesture = { type: 'handle', id: handle.id, pointerId: event.pointerId };
@@ -125,6 +187,10 @@ export function createStage(canvas, hooks) {
     } else if (handle) {
       hooks.select(handle.id);
       gesture = null;
+    } else if (touch) {
+      // Off the handles a finger belongs to the page (it scrolls); released where it went
+      // down it is a tap, a click (picks an element).
+      gesture = { type: 'tap', pointerId: event.pointerId, x: sx, y: sy };
     } else if (hooks.click && hooks.click(...transform().toWorld(sx, sy), event)) {
       gesture = null;
     } else {
@@ -137,6 +203,7 @@ export function createStage(canvas, hooks) {
     const [sx, sy] = local(event);
     if (pointers.has(event.pointerId)) pointers.set(event.pointerId, { x: sx, y: sy });
     if (!gesture) {
+      if (event.pointerType === 'touch') return;
       const handle = hit(sx, sy);
       canvas.style.cursor = handle ? 'grab' : 'default';
       hooks.hover(handle ? handle.id : null, ...transform().toWorld(sx, sy));
@@ -146,22 +213,26 @@ export function createStage(canvas, hooks) {
       // Coalesced events carry every intermediate position; the last one is enough here.
       const [wx, wy] = transform().toWorld(sx, sy);
       hooks.drag(gesture.id, wx, wy);
+    } else if (gesture.type === 'tap' && Math.hypot(sx - gesture.x, sy - gesture.y) > TAP_SLOP_PX) {
+      gesture = { type: 'scroll' }; // the browser scrolls the page; nothing here
     } else if (gesture.type === 'pan') {
       const v = gesture.view;
       hooks.setView({ cx: v.cx - (sx - gesture.x) / v.zoom, cy: v.cy + (sy - gesture.y) / v.zoom, zoom: v.zoom });
     } else if (gesture.type === 'pinch' && pointers.size === 2) {
-      const [a, b] = [...pointers.values()];
-      const dist = Math.hypot(a.x - b.x, a.y - b.y);
-      if (gesture.dist > 0) {
-        const factor = dist / gesture.dist;
-        hooks.setView({ ...gesture.view, zoom: Math.min(1e5, Math.max(1, gesture.view.zoom * factor)) });
-      }
+      movePinch();
     }
   });
 
   function endPointer(event) {
     pointers.delete(event.pointerId);
     if (gesture?.type === 'handle' && event.pointerId === gesture.pointerId) hooks.dragEnd(gesture.id);
+    if (gesture?.type === 'tap' && event.type === 'pointerup' && event.pointerId === gesture.pointerId) {
+      const [sx, sy] = local(event);
+      gesture = null;
+      hooks.click?.(...transform().toWorld(sx, sy), event);
+    }
+    // One finger of two lifted: the other does nothing more until it is lifted too.
+    if (gesture?.type === 'pinch' && pointers.size === 1) gesture = { type: 'scroll' };
     if (pointers.size === 0) gesture = null;
   }
   canvas.addEventListener('pointerup', endPointer);

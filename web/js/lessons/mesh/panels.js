@@ -46,7 +46,6 @@ export function setupPanels(ctx, selection) {
   };
   const importButton = h('button', { type: 'button', class: 'tool', onclick: () => document.getElementById('import-file')?.click() }, 'Open OFF/OBJ…');
   const toggle3d = h('button', { type: 'button', class: 'tool', id: 'toggle-3d', 'aria-pressed': 'false', onclick: () => set3d(!state().mode3d) }, '3D view');
-  const fitButton = h('button', { type: 'button', class: 'tool', onclick: () => ctx.fitView() }, 'Fit');
 
   function chooseMesh(patch) {
     const next = { ...state(), ...patch, moved: [], ops: [], vertex: 0, face: 0, step: 0 };
@@ -83,7 +82,7 @@ export function setupPanels(ctx, selection) {
   sizeChange(sphereT, (n) => ({ sphere: { ...state().sphere, stacks: n } }));
 
   ctx.controls.replaceChildren(
-    labelled('Mesh', meshSelect), ...Object.values(sizeGroups), importButton, toggle3d, fitButton,
+    labelled('Mesh', meshSelect), ...Object.values(sizeGroups), importButton, toggle3d,
     h('span', { class: 'hint' }, 'Drag a vertex to move it (a click without dragging makes it the walk\'s vertex); drag empty space to pan (in 3D: to rotate); wheel zooms; hover an edge or face to find its table rows.'),
   );
 

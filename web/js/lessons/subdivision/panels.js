@@ -61,7 +61,6 @@ export function setupPanels(ctx, view) {
       button('Next phase ▶', () => nextPhase(), 'Next phase (→, n or PageDown)', 'phase-next'), phaseLabel),
     h('label', {}, limitBox, ' limit positions (l)'),
     labelled('Shading', shadingSelect),
-    h('button', { type: 'button', class: 'tool', onclick: () => ctx.fitView() }, 'Fit'),
     h('span', { class: 'hint advanced' }, 'Drag a control vertex to reshape; drag elsewhere to turn (arrows on the canvas); click a new point for its mask.'),
   );
 
