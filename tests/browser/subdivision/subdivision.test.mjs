@@ -317,3 +317,19 @@ test('the OFF export of a level reads back as that level\'s mesh', async () => {
   assert.deepEqual(page.problems, []);
 });
 
+
+// A finger on the canvas scrolls the page (issue 18), so a phone turns the mesh with the
+// turn and tilt sliders (arrow keys too). Failed before: there were no sliders.
+test('phone: the mesh turns with the turn and tilt sliders', async () => {
+  const page = await env.openLesson(`${env.site.url}subdivision.html`, { viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true });
+  const start = await page.evaluate(() => window.wingspline.state.rotation);
+  await page.locator('#view-turn').focus();
+  for (let i = 0; i < 30; i += 1) await page.keyboard.press('ArrowLeft');
+  const turned = await page.evaluate(() => window.wingspline.state.rotation);
+  assert.ok(Math.abs(turned.yaw - (start.yaw - 0.3)) < 1e-9, `turned by -0.3 rad (${turned.yaw - start.yaw})`);
+  assert.equal(turned.pitch, start.pitch);
+  await page.locator('#view-tilt').focus();
+  await page.keyboard.press('End');
+  assert.ok(Math.abs(await page.evaluate(() => window.wingspline.state.rotation.pitch) - 1.55) < 1e-9, 'tilted to the end, 1.55 rad');
+  assert.deepEqual(page.problems, []);
+});

@@ -10,6 +10,7 @@ import { createRepresentationTabs } from './tabs.js';
 import { vLabel, fLabel } from './labels.js';
 import { pickElement as elementAt } from './draw.js';
 import { createEditPanel } from './edit-panel.js';
+import { createTurnControls } from '../../ui/turn-controls.js';
 
 const BIG_TABLES = 100000; // faces: from this size a new mesh's tables fill a task after its first frame
 
@@ -47,6 +48,8 @@ export function setupPanels(ctx, selection) {
   const importButton = h('button', { type: 'button', class: 'tool', onclick: () => document.getElementById('import-file')?.click() }, 'Open OFF/OBJ…');
   const toggle3d = h('button', { type: 'button', class: 'tool', id: 'toggle-3d', 'aria-pressed': 'false', onclick: () => set3d(!state().mode3d) }, '3D view');
 
+  const turnControls = createTurnControls((rotation) => ctx.commit({ ...state(), rotation }, { history: false }));
+
   function chooseMesh(patch) {
     const next = { ...state(), ...patch, moved: [], ops: [], vertex: 0, face: 0, step: 0 };
     if (next.meshKind === 'lecture') next.vertex = 1;
@@ -82,8 +85,8 @@ export function setupPanels(ctx, selection) {
   sizeChange(sphereT, (n) => ({ sphere: { ...state().sphere, stacks: n } }));
 
   ctx.controls.replaceChildren(
-    labelled('Mesh', meshSelect), ...Object.values(sizeGroups), importButton, toggle3d,
-    h('span', { class: 'hint' }, 'Drag a vertex to move it (a click without dragging makes it the walk\'s vertex); drag empty space to pan (in 3D: to rotate); wheel zooms; hover an edge or face to find its table rows.'),
+    labelled('Mesh', meshSelect), ...Object.values(sizeGroups), importButton, toggle3d, turnControls.root,
+    h('span', { class: 'hint' }, 'Drag a vertex to move it (a click without dragging makes it the walk\'s vertex); drag empty space to pan (in 3D: to rotate, or use turn and tilt); wheel or two fingers zoom; hover an edge or face to find its table rows.'),
   );
 
   // ------------------------------------------------------------ the walk
@@ -226,6 +229,7 @@ export function setupPanels(ctx, selection) {
     for (const [kind, group] of Object.entries(sizeGroups)) group.hidden = s.meshKind !== kind;
     fanN.value = s.fanSize; gridX.value = s.grid.nx; gridY.value = s.grid.ny; sphereS.value = s.sphere.slices; sphereT.value = s.sphere.stacks;
     toggle3d.setAttribute('aria-pressed', String(s.mode3d));
+    turnControls.sync(s.rotation, s.mode3d);
     walkKind.value = s.walk;
     speed.value = s.speed;
   }

@@ -10,6 +10,7 @@ import { createExplorerLink } from './explorer-link.js';
 import { formatNumber } from '../../ui/mathml.js';
 import { SOURCES, PHASES, MAX_LEVEL, label } from './source.js';
 import { formatWeight } from './format-weight.js';
+import { createTurnControls } from '../../ui/turn-controls.js';
 
 const PHASE_NAMES = { 'face-points': 'face points', 'edge-points': 'edge points', 'vertex-points': 'vertex points', reconnection: 'reconnection' };
 const RULE_NAMES = {
@@ -50,6 +51,9 @@ export function setupPanels(ctx, view) {
   const shadingSelect = h('select', { id: 'shading', 'aria-label': 'Shading' }, h('option', { value: 'flat' }, 'flat'), h('option', { value: 'smooth' }, 'smooth'));
   const importButton = h('button', { type: 'button', class: 'tool advanced', onclick: () => document.getElementById('import-file')?.click() }, 'Open OFF/OBJ…');
 
+  const commit = (patch, options) => ctx.commit({ ...state(), ...patch }, options);
+  const turnControls = createTurnControls((rotation) => commit({ rotation }, { coalesce: 'rotate' }), { onEnd: () => ctx.endGesture() });
+
   ctx.controls.replaceChildren(
     labelled('Mesh', meshSelect), ...Object.values(sizeGroups), importButton,
     labelled('Scheme', schemeSelect),
@@ -60,11 +64,9 @@ export function setupPanels(ctx, view) {
       button('◀ Back', () => prevPhase(), 'Back: the previous phase (← or PageUp)', 'phase-prev'),
       button('Next phase ▶', () => nextPhase(), 'Next phase (→, n or PageDown)', 'phase-next'), phaseLabel),
     h('label', {}, limitBox, ' limit positions (l)'),
-    labelled('Shading', shadingSelect),
-    h('span', { class: 'hint advanced' }, 'Drag a control vertex to reshape; drag elsewhere to turn (arrows on the canvas); click a new point for its mask.'),
+    labelled('Shading', shadingSelect), turnControls.root,
+    h('span', { class: 'hint advanced' }, 'Drag a control vertex to reshape; drag elsewhere with a mouse, or use turn and tilt, to turn (arrows on the canvas); click a new point for its mask.'),
   );
-
-  const commit = (patch, options) => ctx.commit({ ...state(), ...patch }, options);
 
   // A new mesh or scheme starts at level 0. Loop refuses a mesh with faces that are not
   // triangles (the core names the face): the message offers Catmull-Clark.
@@ -248,6 +250,7 @@ export function setupPanels(ctx, view) {
     shadingSelect.value = s.shading;
     curveScheme.value = s.curveScheme;
     closedBox.checked = s.curve.closed;
+    turnControls.sync(s.rotation);
   }
 
   function updateStep(model) {

@@ -55,3 +55,23 @@ test('wide screens show the tables beside the walk, not the extra row', async ()
   assert.equal(await page.locator('#walk-row').isVisible(), false);
   assert.ok(await page.locator('#tabpanel-winged tr.is-highlighted').isVisible());
 });
+
+// A finger on the canvas scrolls the page (shell/touch.test.mjs), so on a phone the 3D view
+// turns with its turn and tilt sliders (by finger or keys). Failed before: nothing on a
+// phone turned the mesh lesson's 3D view once one finger scrolled the page.
+test('phone: the 3D view turns and tilts with its sliders', async () => {
+  const page = await env.openLesson(`${env.site.url}mesh.html`, PHONE);
+  assert.equal(await page.locator('#view-turn').isVisible(), false, 'no turn slider in 2D');
+  await page.locator('#toggle-3d').tap();
+  await page.waitForFunction(() => window.wingspline.state.mode3d);
+  const before = await page.evaluate(() => ({ rotation: window.wingspline.state.rotation, p: Array.from(window.wingspline.model.projected.slice(0, 6)) }));
+  await page.locator('#view-turn').focus();
+  for (let i = 0; i < 20; i += 1) await page.keyboard.press('ArrowRight');
+  await page.locator('#view-tilt').focus();
+  for (let i = 0; i < 10; i += 1) await page.keyboard.press('ArrowLeft');
+  const after = await page.evaluate(() => ({ rotation: window.wingspline.state.rotation, p: Array.from(window.wingspline.model.projected.slice(0, 6)) }));
+  assert.ok(Math.abs(after.rotation.yaw - before.rotation.yaw - 0.2) < 1e-9, `turned by 20 steps of 0.01 rad (${after.rotation.yaw - before.rotation.yaw})`);
+  assert.ok(Math.abs(after.rotation.pitch - before.rotation.pitch + 0.1) < 1e-9, `tilted by -0.1 rad (${after.rotation.pitch - before.rotation.pitch})`);
+  assert.ok(after.p.some((x, i) => Math.abs(x - before.p[i]) > 1e-3), 'the projected mesh moved');
+  assert.deepEqual(page.problems, []);
+});
