@@ -3,6 +3,8 @@
 //            lesson contract (web/js/app/contract.js)
 //   native   Catch2 through CTest (build/native)
 //   wasm     node --test tests/wasm   (the JS API over the wasm module)
+//   lessons  node --test tests/lessons (the DOM-free lesson modules over the real core)
+//   package  node --test tests/package (npm pack + install + import, examples/, npm start)
 //   browser  node --test tests/browser (playwright-core + Debian's Chromium)
 //   asan     the native suite again under ASan + UBSan (build/native-asan, built by the layer)
 //   fuzz     libFuzzer targets, a few seconds each (build/fuzz, clang++-14, built by the layer)

@@ -112,6 +112,9 @@ export const layers = [
   { name: 'native', run: () => catchTests(path.join(repoRoot, 'build', 'native', 'wingspline_tests')) },
   { name: 'wasm', run: () => nodeTests('tests/wasm') },
   { name: 'lessons', run: () => nodeTests('tests/lessons') },
+  // Issue 19: npm pack -> install in an empty folder -> import in Node and in a page; the
+  // examples/ scripts; npm start's HOST (tests/package).
+  { name: 'package', run: () => nodeTests('tests/package') },
   // Two browser files at once: on the 2-core machines the layer takes about half the time
   // (each file waits on its page most of the time); see docs/architecture.md, "Tests".
   { name: 'browser', run: () => nodeTests('tests/browser', { concurrency: 2 }) },
