@@ -17,7 +17,8 @@ const segments = [
 ];
 
 const api = await loadWingspline();
-const bezier = (s) => ({ kind: /** @type {const} */ ('bezier'), dim: 2, points: s.flat() });
+/** @type {(s: number[][]) => import('wingspline').BezierCurve} */
+const bezier = (s) => ({ kind: 'bezier', dim: 2, points: s.flat() });
 segments.forEach((s, i) => console.log(`segment ${i + 1}: ${JSON.stringify(s)}`));
 for (let j = 0; j + 1 < segments.length; j += 1) {
   const { parametric, geometric, evidence } = api.jointContinuity(bezier(segments[j]), bezier(segments[j + 1]));

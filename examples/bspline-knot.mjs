@@ -13,12 +13,14 @@ const u = Number(process.argv[3] ?? 0.4);
 const api = await loadWingspline();
 const degree = 3;
 const points = [0, 0, 1, 3, 3, 4, 5, 1, 7, 2, 8, 5]; // six control points, x y each
+/** @type {import('wingspline').BSplineCurve} */
 const curve = { kind: 'bspline', dim: 2, degree, points, knots: api.clampedKnots(points.length / 2, degree) };
 const inserted = api.insertKnot(curve, u);
 
+/** @type {(flat: ArrayLike<number>) => number[][]} */
 const pairs = (flat) => Array.from({ length: flat.length / 2 }, (_, i) => [flat[2 * i], flat[2 * i + 1]]);
 console.log(`degree: ${degree}`);
-console.log(`knots before: ${JSON.stringify(Array.from(curve.knots))}`);
+console.log(`knots before: ${JSON.stringify(Array.from(curve.knots ?? []))}`);
 console.log(`points before: ${JSON.stringify(pairs(points))}`);
 console.log(`insert u = ${u}`);
 console.log(`knots after: ${JSON.stringify(Array.from(inserted.curve.knots ?? []))}`);

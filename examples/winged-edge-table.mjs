@@ -18,9 +18,13 @@ const api = await loadWingspline();
 const mesh = api.buildMesh(api.parseMesh(await readFile(file, 'utf8'), { format }));
 try {
   const { vertices, edges, faces } = mesh.wingedEdge();
+  /** @type {(i: number) => string} */
   const v = (i) => `v${i + 1}`;
+  /** @type {(i: number) => string} */
   const e = (i) => (i < 0 ? '-' : `e${i + 1}`);
+  /** @type {(i: number) => string} */
   const f = (i) => (i < 0 ? '-' : `F${i + 1}`);
+  /** @type {(cells: Array<string | number>) => string} */
   const row = (cells) => cells.map((c) => String(c).padEnd(5)).join(' ').trimEnd();
   const counts = mesh.counts();
   console.log(`${file}: ${counts.vertices} vertices, ${counts.edges} edges, ${counts.faces} faces`);

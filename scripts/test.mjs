@@ -1,6 +1,7 @@
 // npm test: set up, build, then run the test layers and print one summary.
 //   types    tsc --noEmit -p jsconfig.json: the shell and every lesson.js against the JSDoc
-//            lesson contract (web/js/app/contract.js)
+//            lesson contract (web/js/app/contract.js); tsc -p tsconfig.examples.json: the
+//            package's declarations (types/) against examples/ and deliberate misuses
 //   native   Catch2 through CTest (build/native)
 //   wasm     node --test tests/wasm   (the JS API over the wasm module)
 //   lessons  node --test tests/lessons (the DOM-free lesson modules over the real core)
