@@ -3,19 +3,22 @@
 // writes them (v1.., e1.., F1.., '-' where an edge has no face on that side) and the CCW
 // walk around one vertex.
 //   node examples/winged-edge-table.mjs [file.obj] [vertex number, 1-based]
-// Defaults: examples/lecture-mesh.obj and v2. The edges are numbered as the core builds
-// them from the faces (face by face), so they may differ from a slide's numbering; the
-// walk meets the same neighbours in the same order.
+//   node examples/winged-edge-table.mjs --slide [vertex number]
+// Defaults: examples/lecture-mesh.obj and v2. A file has faces but no edge numbers, so the
+// core numbers the edges face by face and they may differ from a slide's; the walk meets the
+// same neighbours in the same order. --slide builds the same mesh with lecture 000's own
+// numbering (api.lectureExample()): the slide's tables, and the walk e6 e5 e3 e2 around v2.
 import { readFile } from 'node:fs/promises';
 import { fileURLToPath } from 'node:url';
 import { loadWingspline } from 'wingspline';
 
-const file = process.argv[2] ?? fileURLToPath(new URL('lecture-mesh.obj', import.meta.url));
+const slide = process.argv[2] === '--slide';
+const file = slide ? "lecture 000's slide" : process.argv[2] ?? fileURLToPath(new URL('lecture-mesh.obj', import.meta.url));
 const vertex = Number(process.argv[3] ?? 2);
 const format = file.toLowerCase().endsWith('.off') ? 'off' : 'obj';
 
 const api = await loadWingspline();
-const mesh = api.buildMesh(api.parseMesh(await readFile(file, 'utf8'), { format }));
+const mesh = api.buildMesh(slide ? api.lectureExample() : api.parseMesh(await readFile(file, 'utf8'), { format }));
 try {
   const { vertices, edges, faces } = mesh.wingedEdge();
   /** @type {(i: number) => string} */
