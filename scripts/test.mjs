@@ -1,8 +1,11 @@
 // npm test: set up, build, then run the test layers and print one summary.
 //   types    tsc --noEmit -p jsconfig.json: the shell and every lesson.js against the JSDoc
-//            lesson contract (web/js/app/contract.js)
+//            lesson contract (web/js/app/contract.js); tsc -p tsconfig.examples.json: the
+//            package's declarations (types/) against examples/ and deliberate misuses
 //   native   Catch2 through CTest (build/native)
 //   wasm     node --test tests/wasm   (the JS API over the wasm module)
+//   lessons  node --test tests/lessons (the DOM-free lesson modules over the real core)
+//   package  node --test tests/package (npm pack + install + import, examples/, npm start)
 //   browser  node --test tests/browser (playwright-core + Debian's Chromium)
 //   asan     the native suite again under ASan + UBSan (build/native-asan, built by the layer)
 //   fuzz     libFuzzer targets, a few seconds each (build/fuzz, clang++-14, built by the layer)

@@ -89,7 +89,21 @@ export async function typesLayer() {
   const r = await capture(process.execPath, [tsc, '--noEmit', '--pretty', 'false', '-p', 'jsconfig.json'], { echo: true });
   const withErrors = new Set([...r.stdout.matchAll(/^(\S[^(\n]*)\(\d+,\d+\): error/gm)].map((m) => m[1]));
   const fail = withErrors.size + unchecked.length + (r.code !== 0 && withErrors.size === 0 ? 1 : 0);
-  return { code: fail ? 1 : 0, pass: checked.filter((f) => !withErrors.has(f)).length, fail, skip: 0 };
+  const pass = checked.filter((f) => !withErrors.has(f)).length;
+  // Issue 19: the package's declarations (types/wingspline.d.ts) against examples/ and a
+  // file of deliberate misuses, each marked @ts-expect-error (an unused one is an error).
+  const examples = await declarationsCheck(tsc);
+  return { code: fail + examples.fail ? 1 : 0, pass: pass + examples.pass, fail: fail + examples.fail, skip: 0 };
+}
+
+// `tsc --noEmit -p tsconfig.examples.json`: one pass per included file without an error.
+async function declarationsCheck(tsc) {
+  const config = JSON.parse(fs.readFileSync(path.join(repoRoot, 'tsconfig.examples.json'), 'utf8'));
+  const files = config.include.flatMap((pattern) => globFiles(pattern));
+  const r = await capture(process.execPath, [tsc, '--noEmit', '--pretty', 'false', '-p', 'tsconfig.examples.json'], { echo: true });
+  const withErrors = new Set([...r.stdout.matchAll(/^(\S[^(\n]*)\(\d+,\d+\): error/gm)].map((m) => m[1]));
+  const fail = withErrors.size + (r.code !== 0 && withErrors.size === 0 ? 1 : 0);
+  return { pass: files.filter((f) => !withErrors.has(f)).length, fail };
 }
 
 // The files a jsconfig include pattern names ('dir/*.js', 'dir/*/name.js'), relative, sorted.
@@ -112,6 +126,9 @@ export const layers = [
   { name: 'native', run: () => catchTests(path.join(repoRoot, 'build', 'native', 'wingspline_tests')) },
   { name: 'wasm', run: () => nodeTests('tests/wasm') },
   { name: 'lessons', run: () => nodeTests('tests/lessons') },
+  // Issue 19: npm pack -> install in an empty folder -> import in Node and in a page; the
+  // examples/ scripts; npm start's HOST (tests/package).
+  { name: 'package', run: () => nodeTests('tests/package') },
   // Two browser files at once: on the 2-core machines the layer takes about half the time
   // (each file waits on its page most of the time); see docs/architecture.md, "Tests".
   { name: 'browser', run: () => nodeTests('tests/browser', { concurrency: 2 }) },

@@ -1,0 +1,676 @@
+// TypeScript declarations of the Wingspline core's public API: what
+// `import { loadWingspline, WingsplineError } from 'wingspline'` gives (dist/js/core/wingspline.js,
+// mesh-api.js, curves-api.js, errors.js, tables.js). Hand-written, nothing generated at run
+// time. Checked by `npm test` (the `types` layer: tsc over examples/ and a file of deliberate
+// misuses, tests/package/types/misuse.ts) and against the running module by
+// tests/package/declarations.test.mjs (every function and method the API object and a Mesh
+// carry is declared here, and nothing declared here is missing from them).
+// Conventions (docs/api-mesh.md, docs/api-curves.md): 0-based indices, -1 = none; points are
+// flat, points[dim * i + k]; results are plain objects of numbers and typed arrays.
+
+// ------------------------------------------------------------------ common
+
+/** A typed array of numbers (not a DataView). */
+export type TypedNumbers = Float64Array | Float32Array | Int32Array | Uint32Array | Int16Array | Uint16Array
+  | Int8Array | Uint8Array | Uint8ClampedArray;
+/** Numbers as an array or a typed array (copied into the module once). */
+export type NumberList = readonly number[] | TypedNumbers;
+/** [x, y, z] */
+export type Vec3 = readonly [number, number, number] | readonly number[] | Float64Array;
+
+/**
+ * The stable error codes (`err.code`). Documented with their causes in docs/api-mesh.md
+ * ("Problems", "Editing the mesh", "Import limits") and docs/api-curves.md ("Error codes").
+ */
+export type WingsplineErrorCode =
+  // loading and arguments (every part)
+  | 'core-load-failed' | 'internal-error' | 'invalid-argument' | 'disposed'
+  // mesh files
+  | 'parse-error' | 'truncated-file' | 'line-too-long' | 'unknown-format' | 'face-too-large' | 'too-large'
+  | 'index-out-of-range' | 'coordinate-out-of-range'
+  // building a mesh (validateMesh problems; buildMesh throws the first)
+  | 'empty-mesh' | 'non-finite-coordinate' | 'too-few-vertices' | 'repeated-vertex' | 'non-manifold-edge'
+  | 'inconsistent-orientation' | 'duplicate-face' | 'non-manifold-vertex' | 'isolated-vertex'
+  | 'invalid-edge-list' | 'invalid-vertex-edge' | 'invalid-face-edge' | 'edge-not-incident' | 'edge-not-on-face'
+  | 'face-first-corner-not-on-face'
+  // structure invariants (mesh.validate())
+  | 'invalid-reference' | 'edge-without-face' | 'wing-mismatch' | 'face-edge-not-incident'
+  | 'vertex-edge-not-incident' | 'open-vertex-ring' | 'open-face-loop'
+  // queries, tables, representations
+  | 'unknown-query' | 'invalid-element' | 'deleted-element' | 'mismatched-face-set' | 'representations-not-built'
+  | 'unknown-representation' | 'unknown-table' | 'unknown-column' | 'unknown-mesh' | 'unknown-task'
+  // changing a mesh
+  | 'unknown-operation' | 'invalid-parameter' | 'same-vertex' | 'not-a-corner' | 'adjacent-corners' | 'edge-exists'
+  | 'boundary-edge' | 'same-face' | 'faces-touch-elsewhere' | 'would-duplicate-face' | 'not-triangles'
+  | 'would-pinch' | 'hole-too-small' | 'degenerate-vertex' | 'link-condition' | 'link-condition-face'
+  // subdivision
+  | 'unknown-scheme' | 'not-a-triangle-mesh' | 'mesh-has-gaps'
+  // curves
+  | 'unknown-curve-kind' | 'unknown-basis' | 'unsupported-curve-kind' | 'invalid-dimension' | 'invalid-points'
+  | 'non-finite-input' | 'non-finite-result' | 'too-few-points' | 'degree-out-of-range' | 'wrong-knot-count'
+  | 'decreasing-knots' | 'invalid-knots' | 'knot-multiplicity-exceeded' | 'empty-domain' | 'wrong-weight-count'
+  | 'invalid-weight' | 'weight-ratio-out-of-range' | 'wrong-tangent-count' | 'wrong-node-count'
+  | 'nodes-not-increasing' | 'nodes-too-close' | 'nodes-out-of-range' | 'vandermonde-out-of-range'
+  | 'parameter-out-of-range' | 'segment-out-of-range' | 'dimension-mismatch' | 'length-overflow'
+  | 'not-converged' | 'wrong-point-count' | 'singular-matrix' | 'perspective-behind-eye';
+
+/** Every error the API throws: a stable `code` and a message a student understands. */
+export class WingsplineError extends Error {
+  constructor(code: WingsplineErrorCode, message: string, details?: readonly MeshProblem[]);
+  readonly name: 'WingsplineError';
+  code: WingsplineErrorCode;
+  /** buildMesh: every problem of the refused face set. */
+  details?: readonly MeshProblem[];
+  /** parseMesh: the 1-based line of the file the error is on. */
+  line?: number;
+}
+
+/** Loads the wasm module once (the `.wasm` next to the glue: a file read in Node, a fetch in a page). */
+export function loadWingspline(): Promise<WingsplineApi>;
+
+/** The check of an operation: allowed, or the refusal it would throw. */
+export type CheckResult = { ok: true } | { ok: false; code: WingsplineErrorCode; message: string };
+
+// ------------------------------------------------------------------ meshes in and out
+
+export type ElementKind = 'vertex' | 'edge' | 'face';
+export type Representation = 'independent-faces' | 'vertex-face-tables' | 'adjacency-lists'
+  | 'partial-adjacency-lists' | 'edge-list' | 'winged-edge';
+export type QueryKind = 'faces-around-vertex' | 'edges-around-vertex' | 'edges-of-face' | 'faces-of-edge' | 'neighbours-of-face';
+export type MeshFileFormat = 'off' | 'obj';
+
+/** An indexed face set: positions x, y, z per vertex; one list of vertex indices per face. */
+export interface IndexedFaceSet {
+  positions: NumberList;
+  faces: ReadonlyArray<NumberList>;
+}
+/** The bulk form: faces as CSR (face f's corners are faceVertices[faceOffsets[f] .. faceOffsets[f+1]-1]). */
+export interface IndexedFaceSetCsr {
+  positions: NumberList;
+  faceOffsets: Int32Array;
+  faceVertices: Int32Array;
+}
+export type MeshInput = IndexedFaceSet | IndexedFaceSetCsr;
+
+/** What buildMesh takes: a face set and, optionally, the numbering of a slide. */
+export type MeshBuildInput = MeshInput & {
+  /** The edge numbering and orientation, [start, end] per edge (or flat pairs). */
+  edges?: ReadonlyArray<readonly [number, number]> | Int32Array;
+  /** The edge each vertex row stores (incident to the vertex). */
+  vertexEdges?: NumberList;
+  /** The edge each face row stores (a side of the face). */
+  faceEdges?: NumberList;
+};
+
+/** A face set as the core returns it. */
+export interface FaceSet {
+  positions: Float64Array;
+  faces: number[][];
+}
+export interface FaceSetCsr {
+  positions: Float64Array;
+  faceOffsets: Int32Array;
+  faceVertices: Int32Array;
+}
+/** A lecture's mesh with the slide's numbering, ready for buildMesh. */
+export interface SlideMesh extends FaceSet {
+  edges: [number, number][];
+  vertexEdges: number[];
+  faceEdges: number[];
+}
+
+export interface ParseMeshOptions {
+  format?: MeshFileFormat;
+  /** false lifts meshLimits' vertex and face counts. */
+  checkCounts?: boolean;
+}
+
+export type GeneratedMeshKind = 'tetrahedron' | 'cube' | 'fan' | 'grid' | 'sphere';
+export interface GenerateMeshOptions {
+  /** fan: triangles around the hub (default 6). */
+  n?: number;
+  /** grid: cells across and down (default 4 x 3). */
+  nx?: number;
+  ny?: number;
+  /** sphere: default 12 slices, 6 stacks. */
+  slices?: number;
+  stacks?: number;
+}
+
+export interface MeshProblem {
+  code: WingsplineErrorCode;
+  severity: 'error' | 'warning';
+  message: string;
+  elements: { vertices: ArrayLike<number>; edges: ArrayLike<number>; faces: ArrayLike<number> };
+}
+export interface ValidationReport {
+  ok: boolean;
+  problems: MeshProblem[];
+}
+
+export interface MeshLimits {
+  readonly maxCoordinate: number;
+  readonly maxFaceCorners: number;
+  readonly maxVertices: number;
+  readonly maxFaces: number;
+}
+
+// ------------------------------------------------------------------ tables (tables.js)
+
+export interface TableArrayDescriptor {
+  readonly name: string;
+  readonly type: 'int32' | 'float64';
+  readonly role: string;
+  readonly stride: number;
+  readonly offsets?: string;
+}
+export interface TableColumn {
+  readonly name: string;
+  readonly label: string;
+  /** The header above the label ('S', 'E'), or ''. */
+  readonly group: string;
+  /** The element kind the cells refer to, or null for numbers (positions). */
+  readonly refers: ElementKind | null;
+  readonly type: 'int32' | 'float64';
+  readonly layout: 'fixed' | 'csr';
+  readonly array: string;
+  readonly offsets?: string;
+  readonly stride: number;
+  readonly first: number;
+  readonly width: number;
+}
+export interface TableDescriptor {
+  readonly representation: Representation;
+  readonly name: string;
+  readonly title: string;
+  /** One row per element of this kind. */
+  readonly rows: ElementKind;
+  readonly arrays: readonly TableArrayDescriptor[];
+  readonly columns: readonly TableColumn[];
+}
+/** A cell: a number, [x, y, z]-like numbers, or for a list column its items. */
+export type TableCell = number | number[] | Array<number | number[]>;
+/** One table of a representation, read by the generic reader (rows by index, cells by column name). */
+export interface MeshTable {
+  readonly descriptor: TableDescriptor;
+  readonly representation: Representation;
+  readonly name: string;
+  readonly title: string;
+  readonly kind: ElementKind;
+  readonly columns: readonly TableColumn[];
+  readonly arrays: Record<string, Int32Array | Float64Array>;
+  /** The table's full row count. */
+  readonly total: number;
+  /** The first row held (the window's start) and how many rows are held. */
+  readonly first: number;
+  readonly count: number;
+  column(name: string): TableColumn;
+  cell(row: number, column: string): TableCell;
+  row(row: number): Record<string, TableCell>;
+  rows(): Array<Record<string, TableCell>>;
+}
+
+export interface WingedEdgeTables {
+  vertices: Array<{ x: number; y: number; z: number; edge: number }>;
+  edges: Array<{
+    start: number; end: number; left: number; right: number;
+    startLeft: number; startRight: number; endLeft: number; endRight: number;
+  }>;
+  faces: Array<{ edge: number }>;
+}
+export interface WingedEdgeArrays {
+  positions: Float64Array;
+  vertexEdge: Int32Array;
+  /** 8 per edge, in edgeFields order. */
+  edges: Int32Array;
+  faceEdge: Int32Array;
+  edgeFields: string[];
+}
+
+export interface StorageOfRepresentation {
+  entries: number;
+  bytes: number;
+  arrays: Array<{ name: string; entries: number; bytesPerEntry: number; bytes: number }>;
+}
+
+// ------------------------------------------------------------------ changing a mesh
+
+export interface MeshVersion {
+  readonly topology: number;
+  readonly geometry: number;
+}
+export interface ElementLists {
+  vertices: ArrayLike<number>;
+  edges: ArrayLike<number>;
+  faces: ArrayLike<number>;
+}
+export interface ChangedRow {
+  table: string;
+  row: number;
+  fields: Array<{ field: string; before: number; after: number }>;
+}
+/** What an operation changed: enough to replay it and to undo it (docs/api-mesh.md). */
+export interface ChangeRecord {
+  op: string;
+  added: ElementLists;
+  removed: ElementLists;
+  rows: ChangedRow[];
+  before: MeshVersion;
+  after: MeshVersion;
+  /** Euler operations: every assignment in the algorithm's order. */
+  steps?: Array<{ table: string; row: number; field: string; before: number; after: number; phase: number }>;
+  /** Euler operations: the algorithm's lines; steps[i].phase indexes them. */
+  phases?: string[];
+  positions?: Array<{ vertex: number; before: number[]; after: number[]; step: number }>;
+  /** With apply(op, {rewritten: true}): stored entries each representation rewrote. */
+  rewritten?: Partial<Record<Representation, number>>;
+}
+export type EulerOperationName = 'split-edge' | 'split-face' | 'join-faces' | 'flip-edge' | 'collapse-edge' | 'poke-face';
+export type MeshOperationName = 'set-vertex-edge' | 'set-face-edge' | EulerOperationName;
+/** One operation as a lesson state holds it, its arguments by name. */
+export type MeshOperation =
+  | { op: 'set-vertex-edge'; v: number; e: number }
+  | { op: 'set-face-edge'; f: number; e: number }
+  | { op: 'split-edge'; e: number; t?: number }
+  | { op: 'split-face'; f: number; a: number; b: number }
+  | { op: 'join-faces'; e: number }
+  | { op: 'flip-edge'; e: number }
+  | { op: 'collapse-edge'; e: number; t?: number }
+  | { op: 'poke-face'; f: number };
+
+export interface MeshOperationsDescriptor {
+  readonly operations: ReadonlyArray<{
+    readonly name: EulerOperationName;
+    readonly method: string;
+    readonly arguments: ReadonlyArray<{ readonly name: string; readonly kind: ElementKind | null; readonly optional: boolean; readonly default: number }>;
+  }>;
+  readonly tables: readonly string[];
+  readonly fields: readonly string[];
+  readonly stepStride: number;
+  readonly positionStride: number;
+}
+
+export interface TraversalStep {
+  edge: number;
+  /** Whether the vertex is the edge's Start or End. */
+  role: 'start' | 'end';
+  /** The wing read: startLeft at the Start, endRight at the End. */
+  column: 'startLeft' | 'endRight';
+  next: number;
+}
+export interface FaceEdgeStep {
+  edge: number;
+  side: 'left' | 'right';
+  column: 'endLeft' | 'startRight';
+  next: number;
+}
+export interface MeshCounts {
+  vertices: number;
+  edges: number;
+  faces: number;
+  boundaryEdges: number;
+  boundaryLoops: number;
+  isolatedVertices: number;
+  euler: number;
+}
+export interface FacePlane {
+  /** [A, B, C, D] from the cross product of crossCorners. */
+  cross: number[];
+  crossCorners: number[];
+  /** [A, B, C, D] by Newell's method. */
+  newell: number[];
+  residual: number;
+}
+
+/** A built mesh; it lives in the core until dispose(). */
+export interface Mesh {
+  readonly disposed: boolean;
+  readonly id: number;
+  readonly version: MeshVersion;
+  coreVersion(): MeshVersion;
+  /** Frees the mesh in the core (idempotent); every other call afterwards throws 'disposed'. */
+  dispose(): void;
+  wingedEdge(): WingedEdgeTables;
+  wingedEdgeArrays(): WingedEdgeArrays;
+  tables(representation: Representation, options?: { limit?: number; offset?: number }): Record<string, MeshTable>;
+  edgesAroundVertex(v: number): Int32Array;
+  facesAroundVertex(v: number): Int32Array;
+  verticesAroundVertex(v: number): Int32Array;
+  edgesOfFace(f: number): Int32Array;
+  verticesOfFace(f: number): Int32Array;
+  faceNeighbours(f: number): Int32Array;
+  facesOfEdge(e: number): { left: number; right: number };
+  /** The CCW walk around vertex v (lecture 000). */
+  traversalSteps(v: number): TraversalStep[];
+  /** The walk along face f. */
+  faceEdgeSteps(f: number): FaceEdgeStep[];
+  counts(): MeshCounts;
+  planes(): FacePlane[];
+  planeArrays(): { cross: Float64Array; crossCorners: Int32Array; newell: Float64Array; residual: Float64Array };
+  /** Newell unit normals, 3 per face; `into` (3F numbers) is filled and returned. */
+  normals(options?: { into?: Float64Array | null }): Float64Array;
+  boundingBox(): { min: number[]; max: number[]; centre: number[] };
+  pick(point: Vec3, towards: Vec3, options?: { radius?: number; max?: number }): { face: number; near: Array<{ face: number; distance: number }> };
+  displayProxy(targetTriangles: number): { positions: Float64Array; triangles: Int32Array; cell: number };
+  vertexNormal(v: number): number[];
+  setVertexPosition(v: number, position: Vec3): { changedEntries: Record<Representation, number> };
+  checkSetVertexEdge(v: number, e: number): CheckResult;
+  setVertexEdge(v: number, e: number): ChangeRecord;
+  checkSetFaceEdge(f: number, e: number): CheckResult;
+  setFaceEdge(f: number, e: number): ChangeRecord;
+  apply(operation: MeshOperation, options?: { rewritten?: boolean }): ChangeRecord;
+  splitEdge(e: number, t?: number): ChangeRecord;
+  splitFace(f: number, a: number, b: number): ChangeRecord;
+  joinFaces(e: number): ChangeRecord;
+  flipEdge(e: number): ChangeRecord;
+  collapseEdge(e: number, t?: number): ChangeRecord;
+  pokeFace(f: number): ChangeRecord;
+  /** Whether an operation may run, changing nothing: check('flip-edge', 4), check('split-face', f, a, b). */
+  check(op: MeshOperationName, ...args: number[]): CheckResult;
+  /** Removes the gaps; old index -> new (-1 = removed). */
+  compact(): { vertices: ArrayLike<number>; edges: ArrayLike<number>; faces: ArrayLike<number> };
+  format(options?: { format?: MeshFileFormat }): string;
+  gaps(): ElementLists;
+  storage(): Record<Representation, StorageOfRepresentation>;
+  representations(options?: { limit?: number; offset?: number }): Record<Representation, Record<string, unknown> & {
+    offset: number; totals: Record<string, number>; storage: StorageOfRepresentation;
+  }>;
+  query(kind: QueryKind, element: number): Record<Representation, { answer: Int32Array; entriesRead: number }>;
+  bytes(): number;
+  validate(): ValidationReport;
+}
+
+export interface MeshBuildJob {
+  /** The build's current phase, e.g. 'counting sides'; 'done' at the end. */
+  readonly phase: string;
+  /** The built mesh once step() has returned true (owned by the caller). */
+  readonly mesh: Mesh | null;
+  /** Runs one phase; true when the mesh is built. Throws buildMesh's refusal. */
+  step(): boolean;
+  cancel(): void;
+}
+
+export type SubdivisionScheme = 'loop' | 'catmull-clark';
+export interface SubdivisionOptions {
+  scheme: SubdivisionScheme;
+}
+export interface SubdivisionSteps {
+  scheme: SubdivisionScheme;
+  phases: Array<{ name: string; first: number; count: number }>;
+  masks: { offsets: Int32Array; vertices: Int32Array; weights: Float64Array };
+  rules: Int32Array;
+  ruleNames: string[];
+  valences: Int32Array;
+  positions: Float64Array;
+  faceOffsets: Int32Array;
+  faceVertices: Int32Array;
+  counts: { vertices: number; edges: number; faces: number };
+}
+
+// ------------------------------------------------------------------ curves
+
+export type CurveKind = 'bezier' | 'bspline' | 'nurbs' | 'hermite' | 'catmull-rom' | 'cardinal' | 'interpolation';
+export type CubicBasis = 'hermite' | 'bezier' | 'bspline' | 'catmull-rom';
+export type Dimension = 2 | 3;
+
+interface CurveBase {
+  dim: Dimension;
+  /** Control points, points[dim * i + k]. */
+  points: NumberList;
+}
+export interface BezierCurve extends CurveBase {
+  kind: 'bezier';
+  /** A rational Bezier curve: one positive weight per point. */
+  weights?: NumberList | null;
+}
+export interface BSplineCurve extends CurveBase {
+  kind: 'bspline';
+  /** Default 3. */
+  degree?: number;
+  /** K + p + 1 non-decreasing values; default uniform. */
+  knots?: NumberList | null;
+}
+export interface NurbsCurve extends CurveBase {
+  kind: 'nurbs';
+  degree?: number;
+  knots?: NumberList | null;
+  weights: NumberList;
+}
+export interface HermiteCurve extends CurveBase {
+  kind: 'hermite';
+  /** One tangent per point, the same layout as the points. */
+  tangents: NumberList;
+}
+export interface CatmullRomCurve extends CurveBase {
+  kind: 'catmull-rom';
+}
+export interface CardinalCurve extends CurveBase {
+  kind: 'cardinal';
+  tension?: number;
+}
+export interface InterpolationCurve extends CurveBase {
+  kind: 'interpolation';
+  /** Increasing parameters, one per point; default 0, 1, 2, ... */
+  nodes?: NumberList | null;
+}
+/** A curve is a plain object; `kind` says which family. */
+export type Curve = BezierCurve | BSplineCurve | NurbsCurve | HermiteCurve | CatmullRomCurve | CardinalCurve | InterpolationCurve;
+/** The curves the B-spline algorithms take (deBoor, insertKnot, ...): bezier with its implicit knots, bspline, nurbs. */
+export type KnotCurve = BezierCurve | BSplineCurve | NurbsCurve;
+/** A curve as the core returns one (arrays as Float64Array). */
+export type ComputedNurbs = NurbsCurve & { points: Float64Array; degree: number; knots: Float64Array; weights: Float64Array };
+
+export interface EvaluateOptions {
+  /** A Float64Array of the result's length to fill instead of allocating one. */
+  out?: Float64Array;
+}
+/** A matrix as a slide writes it: (1 / denominator) . numerators (row-major integers). */
+export interface RationalMatrix {
+  denominator: number;
+  numerators: Float64Array;
+}
+/** An exact matrix: entry i is num[i] / den[i], row-major. */
+export interface ExactMatrix {
+  rows: number;
+  cols: number;
+  num: Float64Array;
+  den: Float64Array;
+}
+export interface SegmentMatrices {
+  segment: number;
+  segmentCount: number;
+  degree: number;
+  basis: string;
+  /** Row-major (degree+1)^2: P(u) = [u^p .. u 1] M G. */
+  M: Float64Array;
+  MT: Float64Array;
+  rational: RationalMatrix | null;
+  G: Float64Array;
+  /** C = M G. */
+  C: Float64Array;
+  columns: number;
+  rows: number;
+  controlIndices: Int32Array;
+  labels: string[];
+  start: number;
+  end: number;
+  localParameter: boolean;
+  homogeneous: boolean;
+  convention: string;
+}
+export interface CurveDomain {
+  start: number;
+  end: number;
+  degree: number;
+  controlPointCount: number;
+  segmentCount: number;
+}
+export interface JointContinuity {
+  /** k of C^k (-1..2); -1: the curves do not meet. */
+  parametric: number;
+  /** k of G^k (-1..2). */
+  geometric: number;
+  evidence: {
+    tolerance: number;
+    a: Float64Array;
+    b: Float64Array;
+    positionGap: number;
+    size: number;
+    relativeGap: number;
+    d1Gap: number;
+    d2Gap: number;
+    ratio: number;
+    tangentAngle: number;
+    curvatureA: number | null;
+    curvatureB: number | null;
+    curvatureVectorGap: number;
+    zeroTangent: boolean;
+    zeroTangentA: boolean;
+    zeroTangentB: boolean;
+    notes: string[];
+  };
+  wordings: Array<{ id: string; source: string; wording: string; geometric: number; reason: string }>;
+}
+export interface Guarantees {
+  parametric: number;
+  geometric: number;
+  joints: number;
+  interpolated: number[];
+}
+export type ConstraintMode = 'free' | 'C0' | 'G1' | 'C1' | 'C2';
+export interface PlaneMap {
+  kind: 'affine' | 'perspective';
+  /** Degrees. */
+  angle?: number;
+  scale?: number;
+  shear?: number;
+  tx?: number;
+  ty?: number;
+  px?: number;
+  py?: number;
+}
+export interface PatchInput {
+  kind: 'hermite' | 'bezier';
+  /** The 4x4 geometry matrix of 3D vectors, points[3 * (4 i + j) + k]. */
+  points: NumberList;
+}
+
+/** The object loadWingspline() resolves to. */
+export interface WingsplineApi {
+  readonly version: string;
+  memoryUsage(): { linearBytes: number; heapInUse: number };
+
+  // ---- meshes (docs/api-mesh.md)
+  buildMesh(input: MeshBuildInput): Mesh;
+  buildMeshInSteps(input: MeshBuildInput): MeshBuildJob;
+  validateMesh(input: MeshInput): ValidationReport;
+  readonly meshLimits: MeshLimits;
+  readonly tableDescriptors: readonly TableDescriptor[];
+  readonly meshOperations: MeshOperationsDescriptor;
+  parseMesh(text: string, options: ParseMeshOptions & { layout: 'csr' }): FaceSetCsr;
+  parseMesh(text: string, options?: ParseMeshOptions & { layout?: 'faces' }): FaceSet;
+  formatMesh(input: MeshInput, options?: { format?: MeshFileFormat }): string;
+  liveMeshCount(): number;
+  /** Lecture 000's mesh with the slide's numbering. */
+  lectureExample(): SlideMesh;
+  /** Lecture 001's two polygons with Foley's edge order. */
+  foleyExample(): SlideMesh;
+  generateMesh(kind: GeneratedMeshKind, options: GenerateMeshOptions & { layout: 'csr' }): FaceSetCsr;
+  generateMesh(kind: GeneratedMeshKind, options?: GenerateMeshOptions & { layout?: 'faces' }): FaceSet;
+  subdivide(mesh: Mesh, options: SubdivisionOptions & { steps?: number }): Mesh;
+  subdivisionSteps(mesh: Mesh, options: SubdivisionOptions): SubdivisionSteps;
+  limitPositions(mesh: Mesh, options: SubdivisionOptions): Float64Array;
+
+  // ---- curves (docs/api-curves.md)
+  basisMatrix(kind: CubicBasis): Float64Array;
+  basisMatrixRational(kind: CubicBasis): RationalMatrix;
+  hermiteFromConstraints(): { constraints: Float64Array; matrix: Float64Array };
+  evaluateCurve(curve: Curve, params: NumberList, options?: EvaluateOptions): Float64Array;
+  evaluateDerivative(curve: Curve, params: NumberList, order?: number, options?: EvaluateOptions): Float64Array;
+  evaluateWithDerivatives(curve: Curve, params: NumberList, maxOrder?: number, options?: EvaluateOptions): Float64Array;
+  curveDomain(curve: Curve): CurveDomain;
+  sampleCurve(curve: Curve, n?: number): { params: Float64Array; points: Float64Array };
+  blendingFunctions(curve: Curve, params: NumberList, order?: number): { count: number; values: Float64Array };
+  segmentMatrices(curve: Curve, segmentIndex?: number): SegmentMatrices;
+  deCasteljau(points: NumberList, dim: Dimension, t: number, weights?: NumberList | null): {
+    degree: number; levels: Float64Array[]; point: Float64Array; levelWeights?: Float64Array[];
+  };
+  subdivideBezier(points: NumberList, dim: Dimension, t?: number, weights?: NumberList | null): {
+    left: Float64Array; right: Float64Array; leftWeights?: Float64Array; rightWeights?: Float64Array;
+  };
+  bezierSubdivisionMatrices(degree?: number, t?: number): {
+    left: Float64Array; right: Float64Array; size: number; leftRational: RationalMatrix | null; rightRational: RationalMatrix | null;
+  };
+  elevateDegree(points: NumberList, dim: Dimension, weights?: NumberList | null): { points: Float64Array; weights?: Float64Array };
+  convertBasis(points: NumberList, dim: Dimension, fromKind: CubicBasis, toKind: CubicBasis): Float64Array;
+  deBoor(curve: KnotCurve, u: number): {
+    span: number; degree: number; firstIndex: number; levels: Float64Array[]; alphas: Float64Array[];
+    point: Float64Array; levelWeights?: Float64Array[];
+  };
+  /** Boehm's insertion of one knot: the same curve with one more point and knot. */
+  insertKnot(curve: KnotCurve, u: number): {
+    curve: BSplineCurve | NurbsCurve; span: number; insertedIndex: number;
+    recomputed: Int32Array; alphas: Float64Array; newPoints: Int32Array;
+  };
+  bsplineToBezier(curve: KnotCurve): Array<{ points: Float64Array; weights?: Float64Array; start: number; end: number }>;
+  knotMultiplicities(curve: KnotCurve): {
+    knots: Float64Array; values: Float64Array; multiplicities: Int32Array; firstIndices: Int32Array;
+    interior: Int32Array; continuity: Int32Array;
+  };
+  segmentAt(curve: Curve, u: number): number;
+  clampedKnots(count: number, degree: number): Float64Array;
+  uniformKnots(count: number, degree: number): Float64Array;
+  unclampedKnots(knots: NumberList, degree: number): Float64Array;
+  isClampedKnots(knots: NumberList, degree: number): boolean;
+  dragWithConstraint(points: NumberList, dim: Dimension, family: CubicBasis, mode: ConstraintMode, index: number, to: NumberList): Float64Array;
+  enforceConstraint(points: NumberList, dim: Dimension, family: CubicBasis, mode: ConstraintMode): Float64Array;
+  appendSegment(points: NumberList, dim: Dimension, family: CubicBasis, mode: ConstraintMode): Float64Array;
+  nurbsCircle(options?: { center?: NumberList; radius?: number; dim?: Dimension }): ComputedNurbs;
+  nurbsArc(options?: { center?: NumberList; radius?: number; startAngle?: number; endAngle?: number; dim?: Dimension }): ComputedNurbs;
+  nurbsEllipse(options?: { center?: NumberList; rx?: number; ry?: number; dim?: Dimension }): ComputedNurbs;
+  nurbsConic(options: { p0: NumberList; p1: NumberList; p2: NumberList; weight?: number; dim?: Dimension }): {
+    curve: ComputedNurbs; conicType: 'ellipse' | 'parabola' | 'hyperbola';
+  };
+  curvature(curve: Curve, params: NumberList): {
+    curvature: Float64Array; signedCurvature: Float64Array; speed: Float64Array; tangent: Float64Array; singular: Uint8Array;
+  };
+  arcLength(curve: Curve, a?: number, b?: number): number;
+  arcLengthParams(curve: Curve, n?: number): { params: Float64Array; lengths: Float64Array; total: number };
+  jointContinuity(a: Curve, b: Curve, options?: { tolerance?: number }): JointContinuity;
+  cubicDerivation(family: CubicBasis): {
+    family: string; size: number; constraint: ExactMatrix; inverse: ExactMatrix; basis: ExactMatrix;
+    rhs: ExactMatrix | null; substitution: ExactMatrix | null; conditions: string[];
+  };
+  interpolatePolynomial(points: NumberList, dim: Dimension, nodes?: NumberList | null): {
+    curve: InterpolationCurve & { nodes: Float64Array }; nodes: Float64Array; vandermonde: Float64Array;
+    inverse: Float64Array; coefficients: Float64Array;
+  };
+  curveLimits(): { maxInterpolationPoints: number; maxDegree: number };
+  chainGuarantees(options: { basis: CubicBasis; slots: number; maps: ReadonlyArray<NumberList>; isPoint: readonly boolean[] }): Guarantees;
+  bsplineGuarantees(options: { knots: NumberList; degree?: number; count: number }): Guarantees;
+  samplePatch(options: PatchInput & { nu?: number; nv?: number }): {
+    nu: number; nv: number; positions: Float64Array; normals: Float64Array; du: Float64Array; dv: Float64Array; twists: Float64Array;
+  };
+  convexHull(points: NumberList): { indices: Int32Array; tolerance: number };
+  mapPoints(points: NumberList, dim: Dimension, transform: PlaneMap, options?: { what?: string }): { points: Float64Array; w: Float64Array };
+  maxDistance(a: NumberList, b: NumberList, dim: 1 | 2 | 3): { distance: number; index: number };
+  blendingWeightCheck(segments: readonly Curve[], samples?: number): {
+    tangentWeight: number; weightsPoints: boolean; minWeight: number; minWeightAt: number; sumError: number;
+    convexHull: boolean; tolerance: number;
+  };
+  pointCurveDistances(points: NumberList, dim: Dimension, segments: readonly Curve[], samples?: number): {
+    distances: Float64Array; interpolated: Int32Array; farthest: number; nearestMissed: number; tolerance: number;
+  };
+  splitCheck(segments: readonly Curve[]): { error: number; segments: number };
+  knotRefinementCheck(curve: KnotCurve, samples?: number): { error: number; inserted: number; pointsBefore: number; pointsAfter: number };
+  catmullRomTangents(points: NumberList, dim: Dimension): Float64Array;
+  convertPatchBasis(points: NumberList, fromKind: 'hermite' | 'bezier', toKind: 'hermite' | 'bezier'): Float64Array;
+  curvatureComb(curve: Curve, params: NumberList): { teeth: Float64Array; maxCurvature: number; singular: number };
+  homogeneousLift(points: NumberList, dim: Dimension, weights: NumberList): Float64Array;
+  patchCornerCheck(options: PatchInput): { corners: Array<{ entry: number; distance: number; interpolated: boolean }>; tolerance: number };
+  patchJoinCheck(options: { kind: 'hermite' | 'bezier'; a: NumberList; b: NumberList; samples?: number }): {
+    positionGap: number; duGap: number; c0: boolean; c1: boolean; tolerance: number;
+  };
+  transformPoints(points: NumberList, dim: Dimension, matrix: NumberList): Float64Array;
+  subdivideCurve(points: NumberList, dim: Dimension, options: { scheme: 'chaikin' | 'cubic-bspline'; closed?: boolean; steps?: number }): Float64Array;
+}
