@@ -447,9 +447,15 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
     bool g1 = false, g2 = false;
     if (c0 && !e.zero_tangent) {
         e.ratio = nb1 / na1;
-        double dot = 0;
-        for (int k = 0; k < d; ++k) dot += A[d + k] * B[d + k];
-        e.tangent_angle = std::acos(std::clamp(dot / (na1 * nb1), -1.0, 1.0));
+        // The angle between the unit tangents u, v as 2 atan2(|u - v|, |u + v|) (Kahan): right
+        // for every angle, where acos of u.v loses the small ones (1e-9 rad read 0).
+        double diff[3], sum[3];
+        for (int k = 0; k < d; ++k) {
+            const double u = A[d + k] / na1, w = B[d + k] / nb1;
+            diff[k] = u - w;
+            sum[k] = u + w;
+        }
+        e.tangent_angle = 2 * std::atan2(norm(diff, d), norm(sum, d));
         const double kgap = distance(ka.data(), kb.data(), d);
         e.curvature_vector_gap = kgap;
         // The rounding of a curvature vector (caller's units): floor2 / |P'|^2 + 2 floor1 |P''| / |P'|^3.

@@ -451,3 +451,31 @@ TEST_CASE("joint continuity: C-1 reports the gap relative to the size of the cur
     // a joint that meets has no gap
     CHECK(verdict(a, {{3, 0}, {4, -1}, {5, 0}, {6, 1}}).evidence.relative_gap == 0);
 }
+
+// The angle between the two tangents at a joint, for angles from 1e-9 rad to pi - 1e-9: the
+// angle's error stays under 1e-13 rad (plus 1e-12 of the angle). Built from exact-angle
+// tangents: u at a random direction phi, and u turned by theta; the points' rounding moves the
+// angle by about 1e-16 rad. acos of the normalised dot product lost the small angles (a C2
+// joint read 2.1e-8 rad; 1e-9 rad read 0): the half-angle form 2 atan2(|u - v|, |u + v|)
+// of unit vectors keeps them.
+TEST_CASE("joint evidence: the tangent angle is right from 1e-9 rad to pi - 1e-9", "[curves][continuity][trust][property]") {
+    std::mt19937_64 rng(20261124);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int test = 0; test < 3000; ++test) {
+        const double theta = test % 2 ? std::pow(10.0, -9 + 9.4 * unit(rng)) : kPi - std::pow(10.0, -9 + 9.4 * unit(rng));
+        if (!(theta > 0 && theta < kPi)) continue;
+        const double phi = 2 * kPi * unit(rng);
+        const Pt p3{unit(rng) - 0.5, unit(rng) - 0.5};
+        const double la = 0.5 + unit(rng), lb = 0.5 + unit(rng);
+        const Pt ua = rotated({1, 0}, phi), ub = rotated({1, 0}, phi + theta);
+        const std::vector<Pt> a = {p3 - 3 * la * ua + perp(ua), p3 - 2 * la * ua, p3 - la * ua, p3};
+        const std::vector<Pt> b = {p3, p3 + lb * ub, p3 + 2 * lb * ub - perp(ub), p3 + 3 * lb * ub};
+        const JointContinuity v = verdict(a, b);
+        // The exact angle of the rounded points' tangents differs from theta by the rounding.
+        INFO("case " << test << " theta " << theta << " got " << v.evidence.tangent_angle);
+        REQUIRE(std::abs(v.evidence.tangent_angle - theta) <= 1e-13 + 1e-12 * theta);
+    }
+    // Equal tangents (a C1 joint built exactly): the angle is 0, not a rounding of acos.
+    const JointContinuity straight = verdict({{0, 0}, {1, 1}, {2, 1}, {3, 1}}, {{3, 1}, {4, 1}, {5, 2}, {6, 0}});
+    CHECK(straight.evidence.tangent_angle == 0.0);
+}
