@@ -78,10 +78,32 @@ const CROWDED = {
 const overlap = (a, b) => Math.min(a.x + a.width, b.x + b.width) - Math.max(a.x, b.x) > OVERLAP_TOL_PX
   && Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y) > OVERLAP_TOL_PX;
 
+// Every visible canvas that draws text in a frame (the 2D context's fillText, watched here)
+// reports labels: no canvas draws text around the layout.
+async function watchText(page) {
+  await page.evaluate(() => {
+    const proto = CanvasRenderingContext2D.prototype;
+    if (!proto.fillText.watched) {
+      const original = proto.fillText;
+      proto.fillText = function fillText(...args) {
+        if (this.canvas?.dataset) this.canvas.dataset.drewText = '1';
+        return original.apply(this, args);
+      };
+      proto.fillText.watched = true;
+    }
+    for (const c of document.querySelectorAll('canvas')) delete c.dataset.drewText;
+    window.wingspline.ctx.render();
+  });
+}
+
 async function checkLabels(page, where, min) {
+  await watchText(page);
   await frames(page);
   const labels = await page.evaluate(() => window.wingspline.labelRects());
   assert.ok(labels.length > 0, `${where}: the page reports its labels`);
+  const texting = await page.$$eval('canvas[data-drew-text]', (list) => list.filter((c) => c.getClientRects().length && c.getBoundingClientRect().width > 0).map((c) => c.id || c.className));
+  assert.ok(texting.includes('stage'), `${where}: the text watch sees the lesson canvas draw its labels`);
+  for (const name of texting) assert.ok(labels.some((l) => l.canvas === name), `${where}: canvas ${name} draws text but reports no label`);
   for (const l of labels) {
     assert.ok(l.fontPx >= min, `${where}: label "${l.text}" on ${l.canvas} is ${l.fontPx}px, under the ${min}px minimum`);
     const c = l.canvasRect;
@@ -132,7 +154,7 @@ for (const { id, page: file, ready } of lessons) {
 
 // Every arrow drawn at a scale has that scale spelled out in the legend.
 const ARROW_LEGENDS = [
-  ['continuity', null, [/velocity arrow drawn at 1\/3 of P'\(u\)/, /1\/3 of P'\(u\)/, /1\/6 of P''\(u\)/]],
+  ['continuity', null, [/velocity P'\/3/, /P'⁻\/3 left/, /P''⁺\/6 right/, /arrows drawn at 1\/3 of P'\(u\) and 1\/6 of P''\(u\)/]],
   ['comparison', null, [/Hermite tangents t_i: arrows drawn at 1\/3 of t_i/]],
   ['surfaces', { show: { twists: true } }, [/twist vectors p_uv: arrows drawn at 1\/9 of p_uv/]],
   ['curves', { family: 'hermite', overlays: { tangent: true, second: true } }, [/1\/3 of T_i/, /arrow drawn at 1\/3 of P'\(u\)/, /arrow drawn at 1\/6 of P''\(u\)/]],

@@ -2,7 +2,7 @@
 // which can never cover the drawing. Entries [color, words, dash?] as a lesson gives them to
 // painter.legend(); each row leads with a short line sample in the entry's colour and dash
 // (the same dash the drawing uses), so the key differs by more than colour. An empty list
-// hides the legend. The SVG export draws the same entries in a band under the figure
+// hides the legend; an entry without a colour is a plain note (no sample). The SVG export draws the same entries in a band under the figure
 // (app/painter.js).
 const SVG_NS = 'http://www.w3.org/2000/svg';
 const legends = new WeakMap(); // canvas -> { list, key }
@@ -45,7 +45,8 @@ export function showLegend(canvas, entries, scale = 1) {
     const item = document.createElement('li');
     const text = document.createElement('span');
     text.textContent = words;
-    item.append(sample(color, dash, scale), text);
+    if (color) item.append(sample(color, dash, scale));
+    item.append(text);
     return item;
   }));
 }

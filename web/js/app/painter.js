@@ -320,8 +320,8 @@ export class SvgPainter {
     this.parts.push(`<rect x="0" y="${svgNumber(top)}" width="${svgNumber(this.t.width)}" height="${svgNumber(rowH * entries.length + px)}" fill="${escapeXml(this.background)}"/>`);
     entries.forEach(([color, words, dash = []], i) => {
       const y = top + px / 2 + rowH * (i + 0.5);
-      this.parts.push(`<line x1="${svgNumber(px)}" y1="${svgNumber(y)}" x2="${svgNumber(3 * px)}" y2="${svgNumber(y)}" ${this.#style({ stroke: color, width: 3, dash })}/>`);
-      this.parts.push(`<text x="${svgNumber(3.6 * px)}" y="${svgNumber(y)}" font-family="system-ui, sans-serif" font-size="${svgNumber(px)}" dominant-baseline="central" fill="${escapeXml(color)}">${escapeXml(words)}</text>`);
+      if (color) this.parts.push(`<line x1="${svgNumber(px)}" y1="${svgNumber(y)}" x2="${svgNumber(3 * px)}" y2="${svgNumber(y)}" ${this.#style({ stroke: color, width: 3, dash })}/>`);
+      this.parts.push(`<text x="${svgNumber(3.6 * px)}" y="${svgNumber(y)}" font-family="system-ui, sans-serif" font-size="${svgNumber(px)}" dominant-baseline="central" fill="${escapeXml(color ?? '#000')}">${escapeXml(words)}</text>`);
     });
     return rowH * entries.length + px;
   }

@@ -322,16 +322,12 @@ export const lesson = {
     painter.circle(t.point[0], t.point[1], 7, { fill: c.series[4], stroke: c.ink, width: 1.5 });
     // The legend (HTML under the canvas): what each arrow is and the scale it is drawn at.
     const legend = [];
-    if (state.family === 'hermite') legend.push([c.muted, `Hermite tangents R: arrows drawn at ${arrowScale(FIRST_SCALE)} of R`, []]);
-    if (state.show.first) {
-      legend.push([c.series[1], `P'(u⁻) from the left: arrow drawn at ${arrowScale(FIRST_SCALE)} of P'(u) (label P'⁻/3)`, []]);
-      legend.push([c.series[5], `P'(u⁺) from the right: arrow at ${arrowScale(FIRST_SCALE)} of P'(u) (P'⁺/3, dashed)`, [6, 3]]);
-    }
-    if (state.show.second) {
-      legend.push([c.series[3], `P''(u⁻) from the left: arrow drawn at ${arrowScale(SECOND_SCALE)} of P''(u) (P''⁻/6)`, []]);
-      legend.push([c.series[6], `P''(u⁺) from the right: arrow at ${arrowScale(SECOND_SCALE)} of P''(u) (P''⁺/6, dashed)`, [5, 3]]);
-    }
-    legend.push([c.series[4], `travelling point P(u), velocity arrow drawn at ${arrowScale(FIRST_SCALE)} of P'(u)`, []]);
+    const third = arrowScale(FIRST_SCALE); const sixth = arrowScale(SECOND_SCALE);
+    if (state.family === 'hermite') legend.push([c.muted, `Hermite tangents R, drawn at ${third} of R`, []]);
+    if (state.show.first) legend.push([c.series[1], 'P\'⁻/3 left', []], [c.series[5], 'P\'⁺/3 right', [6, 3]]);
+    if (state.show.second) legend.push([c.series[3], 'P\'\'⁻/6 left', []], [c.series[6], 'P\'\'⁺/6 right', [5, 3]]);
+    legend.push([c.series[4], 'velocity P\'/3 at the travelling point', []]);
+    legend.push([null, `arrows drawn at ${third} of P'(u)${state.show.second ? ` and ${sixth} of P''(u)` : ''}`]);
     drawLegend(painter, legend);
   },
 
