@@ -5,7 +5,8 @@
 // lies inside the canvas and overlaps no box already placed in this frame. The candidates,
 // in order: the asked position, its mirror images (dx, dy negated), then rings of eight
 // positions around the anchor at 1x, 2x and 3x the box size. A label that fits nowhere is
-// dropped (counted in `dropped`, so a test can see it). Labels are placed in priority
+// dropped (counted in `dropped`, so a test can see it). Labels also keep off the drawn
+// markers (circles: handles, control points) where a candidate allows it. Labels are placed in priority
 // order (higher first, then the order they were asked in): the element a person is
 // pointing at or dragging asks with a higher priority and so keeps its asked place.
 // `fixed: true` labels (a number inside a badge) only take their asked place or are dropped.
@@ -22,6 +23,7 @@ export const MIN_LABEL_PX = 14;
 export const MIN_LABEL_PX_PRESENT = 20;
 export const LABEL_MARGIN_PX = 2;
 export const LABEL_LINE_HEIGHT = 1.25; // box height / font size
+export const OBSTACLE_MIN_RADIUS_PX = 4; // smaller dots (beads, samples) may be under a label
 export const LABEL_FONT_FAMILY = 'system-ui, "DejaVu Sans", sans-serif';
 
 export const isPresenting = () => typeof document !== 'undefined' && document.documentElement.hasAttribute('data-present');
@@ -61,7 +63,14 @@ export class LabelLayout {
     this.width = width;
     this.height = height;
     this.requests = [];
+    this.obstacles = [];
     this.dropped = 0;
+  }
+
+  // A drawn marker (a handle, a control point: a circle of radius >= OBSTACLE_MIN_RADIUS_PX)
+  // that labels keep off when they can: a label never hides the point it names.
+  obstacle(cx, cy, r) {
+    if (r >= OBSTACLE_MIN_RADIUS_PX) this.obstacles.push({ x: cx - r, y: cy - r, w: 2 * r, h: 2 * r });
   }
 
   // text at anchor (ax, ay) in screen px, drawn at (ax + dx, ay + dy) if that is free.
@@ -100,12 +109,18 @@ export class LabelLayout {
         }
       }
       let chosen = null;
-      for (const c of candidates) {
-        const b = { x: c.x - m, y: c.y - m, w: c.w + 2 * m, h: c.h + 2 * m };
-        if (b.x < 0 || b.y < 0 || b.x + b.w > this.width || b.y + b.h > this.height) continue;
-        if (taken.some((t) => overlaps(t, b))) continue;
-        chosen = c; taken.push(b);
-        break;
+      // First a place off the markers too (not for a fixed label: its marker is its badge),
+      // then any place off the other labels.
+      for (const avoid of r.opts.fixed ? [false] : [true, false]) {
+        for (const c of candidates) {
+          const b = { x: c.x - m, y: c.y - m, w: c.w + 2 * m, h: c.h + 2 * m };
+          if (b.x < 0 || b.y < 0 || b.x + b.w > this.width || b.y + b.h > this.height) continue;
+          if (taken.some((t) => overlaps(t, b))) continue;
+          if (avoid && this.obstacles.some((t) => overlaps(t, b))) continue;
+          chosen = c; taken.push(b);
+          break;
+        }
+        if (chosen) break;
       }
       if (!chosen) { this.dropped += 1; continue; }
       // Where to draw so that the text fills the chosen box, with the asked align/baseline.

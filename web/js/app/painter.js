@@ -41,8 +41,16 @@ function arrowHead(t, ax, ay, bx, by, scale) {
 }
 
 // A label asked by either painter: the same sizes and the same layout for both.
-function askLabel(painter, x, y, string, style) {
+const layoutOf = (painter) => {
   if (!painter.layout) painter.layout = new LabelLayout(painter.t.width, painter.t.height);
+  return painter.layout;
+};
+
+// A circle is a marker labels keep off (app/label-layout.js).
+const markerOf = (painter, sx, sy, radiusPx) => layoutOf(painter).obstacle(sx, sy, radiusPx * painter.scale);
+
+function askLabel(painter, x, y, string, style) {
+  layoutOf(painter);
   const [sx, sy] = painter.t.toScreen(x, y);
   painter.layout.ask(string, sx, sy, {
     px: Math.max(style.font ?? MIN_LABEL_PX, MIN_LABEL_PX) * painter.scale,
@@ -168,6 +176,7 @@ export class CanvasPainter {
 
   circle(x, y, radiusPx, style = {}) {
     const [sx, sy] = this.t.toScreen(x, y);
+    markerOf(this, sx, sy, radiusPx);
     this.g.beginPath();
     this.g.arc(sx, sy, radiusPx * this.scale, 0, Math.PI * 2);
     this.#apply(style);
@@ -291,6 +300,7 @@ export class SvgPainter {
 
   circle(x, y, radiusPx, style = {}) {
     const [sx, sy] = this.t.toScreen(x, y);
+    markerOf(this, sx, sy, radiusPx);
     this.parts.push(`<circle cx="${svgNumber(sx)}" cy="${svgNumber(sy)}" r="${svgNumber(radiusPx * this.scale)}" ${this.#style(style)}/>`);
   }
 

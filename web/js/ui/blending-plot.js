@@ -70,8 +70,8 @@ export function createBlendingPlot(container, { label = 'Blending functions', he
       g.strokeStyle = colors.grid;
       g.beginPath(); g.moveTo(xOf(k), PAD.top); g.lineTo(xOf(k), hgt - PAD.bottom); g.stroke();
     }
-    labels.text(fmt(data.domain.start), xOf(data.domain.start), hgt - PAD.bottom + 4, { fill: colors.muted, align: 'left', baseline: 'top', priority: 3 });
-    labels.text(fmt(data.domain.end), xOf(data.domain.end), hgt - PAD.bottom + 4, { fill: colors.muted, align: 'right', baseline: 'top', priority: 3 });
+    labels.text(fmt(data.domain.start), xOf(data.domain.start), hgt - PAD.bottom + 4, { fill: colors.muted, align: 'left', baseline: 'top', priority: 3, fixed: true });
+    labels.text(fmt(data.domain.end), xOf(data.domain.end), hgt - PAD.bottom + 4, { fill: colors.muted, align: 'right', baseline: 'top', priority: 3, fixed: true });
     // the functions
     const { params, count, values } = data;
     for (let i = 0; i < count; i += 1) {
@@ -94,16 +94,16 @@ export function createBlendingPlot(container, { label = 'Blending functions', he
       // it off its neighbours' labels; the highlighted function's label is placed first)
       const pv = values[count * peak + i];
       labels.text(data.labels[i], xOf(params[peak]), yOf(pv), { fill: colors.series[c % colors.series.length], baseline: 'bottom', dy: pv >= 0 ? -2 : 2 + plotFontPx(),
-        halo: colors.background, priority: data.highlight === c ? 2 : 0 });
+        priority: data.highlight === c ? 2 : 0 });
     }
-    // the u cursor, shared with the curve
+    // the u cursor, shared with the curve, over the labels (drawn first)
+    const xu = xOf(data.u);
+    labels.text(`u = ${fmt(data.u)}`, xu, PAD.top - 4, { fill: colors.highlight, baseline: 'bottom', priority: 4 });
+    labels.draw();
     g.setLineDash([]);
     g.strokeStyle = colors.highlight;
     g.lineWidth = 2 * scale;
-    const xu = xOf(data.u);
     g.beginPath(); g.moveTo(xu, PAD.top - 6); g.lineTo(xu, hgt - PAD.bottom); g.stroke();
-    labels.text(`u = ${fmt(data.u)}`, xu, PAD.top - 4, { fill: colors.highlight, baseline: 'bottom', priority: 4, halo: colors.background });
-    labels.draw();
   }
   surface.onRedraw(draw);
 

@@ -15,7 +15,8 @@
 // go through the label layout (app/label-layout.js): no overlap, at least the minimum size.
 import { plotLabels, plotFontPx, measureText } from '../app/label-layout.js';
 
-const padFor = (px) => ({ left: Math.round(measureText('-0.000', px) + 10), right: 10, top: Math.round(px * 1.25 + 4), bottom: Math.round(px * 1.25 + 6) });
+// top: the y label's row, then half a tick label above the top grid line.
+const padFor = (px) => ({ left: Math.round(measureText('-0.000', px) + 10), right: 10, top: Math.round(px * 1.9 + 7), bottom: Math.round(px * 1.25 + 6) });
 
 function niceRange(lo, hi) {
   if (!Number.isFinite(lo) || !Number.isFinite(hi)) return [0, 1];
@@ -70,14 +71,14 @@ export function drawSeriesPlot(canvas, { series, marks = [], cursor = null, yLab
   for (const v of [vMin, 0, vMax]) {
     if (v < vMin || v > vMax) continue;
     g.beginPath(); g.moveTo(PAD.left, Y(v)); g.lineTo(width - PAD.right, Y(v)); g.stroke();
-    labels.text(tickLabel(v), PAD.left - 4, Y(v), { fill: colors.muted, align: 'right', priority: 2 });
+    labels.text(tickLabel(v), PAD.left - 4, Y(v), { fill: colors.muted, align: 'right', priority: 2, fixed: true });
   }
   g.setLineDash([4, 3]);
   g.strokeStyle = colors.muted;
   for (const m of marks) {
     const u = typeof m === 'number' ? m : m.u;
     g.beginPath(); g.moveTo(X(u), PAD.top); g.lineTo(X(u), PAD.top + plotH); g.stroke();
-    labels.text(typeof m === 'number' ? `u=${tickLabel(u)}` : m.label, X(u), PAD.top + plotH + 3, { fill: colors.muted, baseline: 'top', priority: 1 });
+    labels.text(typeof m === 'number' ? `u=${tickLabel(u)}` : m.label, X(u), PAD.top + plotH + 3, { fill: colors.muted, baseline: 'top', priority: 1, fixed: true });
   }
   g.setLineDash([]);
   if (yLabel) labels.text(yLabel, PAD.left + 4, 2, { fill: colors.ink, align: 'left', baseline: 'top', priority: 3 });

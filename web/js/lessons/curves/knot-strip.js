@@ -83,8 +83,8 @@ export function createKnotStrip(container, { onChange, label = 'Knot strip' } = 
       const inside = group.value > data.domain.start && group.value < data.domain.end;
       const text = inside ? continuityLabel(group.continuity) : '';
       const label = group.multiplicity > 1 ? `${text} ×${group.multiplicity}`.trim() : text;
-      if (label) labels.text(label, x, top, { fill: colors.ink, baseline: 'bottom', priority: 1 });
-      labels.text(fmt(group.value), x, AXIS_Y + 10, { fill: colors.muted, baseline: 'top', priority: 2 });
+      if (label) labels.text(label, x, top, { fill: colors.ink, baseline: 'bottom', priority: 1, fixed: true });
+      labels.text(fmt(group.value), x, AXIS_Y + 10, { fill: colors.muted, baseline: 'top', priority: 2, fixed: true });
     }
     if (selected !== null) labels.text(`t${sub(selected)} = ${fmt(data.knots[selected])}`, 4, 2, { fill: colors.highlight, align: 'left', baseline: 'top', priority: 3 });
     labels.draw();

@@ -145,14 +145,14 @@ export const lesson = {
       const selected = ctx.ui.selected === `p${i}`;
       const w = state.family === 'nurbs' ? ` w=${formatNumber(state.weights[i], 3)}` : '';
       painter.circle(x, y, selected ? 9 : 7, { fill: seriesOf(i), stroke: selected ? c.highlight : c.background, width: selected ? 3 : 2, alpha: newPoints ? 0.35 : 1 });
-      painter.text(x, y, `P${i}${w}`, { fill: seriesOf(i), font: 13, dx: 14, dy: -12, halo: c.background, align: 'left', priority: selected ? 2 : 0 });
+      painter.text(x, y, `P${i}${w}`, { fill: seriesOf(i), font: 13, dx: 14, dy: -12, halo: c.background, align: 'left', priority: selected ? 3 : 1 });
     });
     if (state.family === 'hermite') {
       state.points.forEach(([x, y], i) => {
         const [tx, ty] = state.tangents[i];
         const selected = ctx.ui.selected === `t${i}`;
         painter.circle(x + tx / 3, y + ty / 3, selected ? 7 : 5, { fill: c.background, stroke: selected ? c.highlight : seriesOf(i), width: 2.5 });
-        painter.text(x + tx / 3, y + ty / 3, `T${i}/3`, { fill: seriesOf(i), font: 12, dx: 12, dy: 10, halo: c.background, align: 'left', priority: selected ? 2 : 0 });
+        painter.text(x + tx / 3, y + ty / 3, `T${i}/3`, { fill: seriesOf(i), font: 12, dx: 12, dy: 10, halo: c.background, align: 'left', priority: selected ? 3 : 1 });
       });
     }
     // The legend (under the canvas): the scale of every arrow drawn.

@@ -60,11 +60,11 @@ function drawGrowth(canvas, { sizes, series }, { colors, names, yLabel }) {
   g.strokeStyle = colors.grid; g.lineWidth = 1;
   for (let k = y0; k <= y1; k += 1) {
     g.beginPath(); g.moveTo(PAD.left, Y(k)); g.lineTo(width - PAD.right, Y(k)); g.stroke();
-    labels.text(power(k), PAD.left - 4, Y(k), { fill: colors.muted, align: 'right', priority: 1 });
+    labels.text(power(k), PAD.left - 4, Y(k), { fill: colors.muted, align: 'right', priority: 1, fixed: true });
   }
   for (let k = x0; k <= x1; k += 1) {
     g.beginPath(); g.moveTo(X(k), PAD.top); g.lineTo(X(k), height - PAD.bottom); g.stroke();
-    labels.text(power(k), X(k), height - PAD.bottom + 4, { fill: colors.muted, baseline: 'top', priority: 1 });
+    labels.text(power(k), X(k), height - PAD.bottom + 4, { fill: colors.muted, baseline: 'top', priority: 1, fixed: true });
   }
   labels.text('faces F', width - PAD.right, height - PAD.bottom - 4, { fill: colors.ink, align: 'right', baseline: 'bottom', halo: colors.background });
   labels.text(yLabel, PAD.left + 4, PAD.top, { fill: colors.ink, align: 'left', baseline: 'top', halo: colors.background, priority: 2 });
