@@ -8,6 +8,8 @@
 // drawn; the continuity lab's plots of |P'| and kappa start at 0.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import { decodePng } from '../../helpers/png.mjs';
 import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
 import { random as seededRandom } from '../../helpers/seeded-random.mjs';
 import { lessons } from '../../../web/js/lessons/registry.js';
@@ -196,5 +198,24 @@ test('continuity: the |P\'| and kappa plots start at 0, for the default and rand
     await commit(page, { constraint: 'free', family: 'bezier', points });
     await check(`random polygon ${k}`);
   }
+  assert.deepEqual(page.problems, []);
+});
+
+// The exported figures carry the legend: the SVG as a band of text under the drawing, the
+// PNG as a band of rows under the canvas picture (taller than the canvas).
+test('continuity: the exported SVG and PNG figures carry the legend under the drawing', async () => {
+  const page = await env.openLesson(`${env.site.url}continuity.html`);
+  const exportFile = async (key) => {
+    await page.click('details.menu > summary');
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click(`[data-export="${key}"]`)]);
+    return fs.readFileSync(await download.path());
+  };
+  const canvas = await page.$eval('#stage', (c) => ({ cssHeight: c.getBoundingClientRect().height, height: c.height }));
+  const svg = (await exportFile('continuity.svg')).toString('utf8');
+  assert.match(svg, /arrows drawn at 1\/3 of P&apos;\(u\)/);
+  const svgHeight = Number(/<svg[^>]* height="([\d.]+)"/.exec(svg)[1]);
+  assert.ok(svgHeight > canvas.cssHeight + 20, `the SVG (${svgHeight}) is taller than the drawing (${canvas.cssHeight})`);
+  const png = decodePng(await exportFile('continuity.png'));
+  assert.ok(png.height > canvas.height + 20, `the PNG (${png.height} px) is taller than the canvas (${canvas.height} px)`);
   assert.deepEqual(page.problems, []);
 });

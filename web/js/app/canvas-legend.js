@@ -5,7 +5,7 @@
 // hides the legend; an entry without a colour is a plain note (no sample). The SVG export draws the same entries in a band under the figure
 // (app/painter.js).
 const SVG_NS = 'http://www.w3.org/2000/svg';
-const legends = new WeakMap(); // canvas -> { list, key }
+const legends = new WeakMap(); // canvas -> { list, key, entries, scale }
 
 function sample(color, dash, scale) {
   const svg = document.createElementNS(SVG_NS, 'svg');
@@ -40,6 +40,8 @@ export function showLegend(canvas, entries, scale = 1) {
     legends.set(canvas, legend);
   }
   legend.key = key;
+  legend.entries = entries;
+  legend.scale = scale;
   legend.list.hidden = entries.length === 0;
   legend.list.replaceChildren(...entries.map(([color, words, dash]) => {
     const item = document.createElement('li');
@@ -57,4 +59,36 @@ export function legendRects() {
     const r = l.getBoundingClientRect();
     return { id: l.id, text: l.textContent, x: r.left, y: r.top, width: r.width, height: r.height };
   });
+}
+
+// The exported PNG carries the legend too: the picture (a PNG blob of the canvas, device
+// pixels) with a band under it, one row per entry (line sample, then the words), in the
+// page's ink on the canvas background. Without a legend the picture is returned as it is.
+export async function withLegendBand(canvas, blob, { ink = '#000', background = '#fff' } = {}) {
+  const legend = legends.get(canvas);
+  const entries = legend?.entries ?? [];
+  if (!blob || !entries.length) return blob;
+  const image = await createImageBitmap(blob);
+  const dpr = canvas.width / Math.max(1, canvas.getBoundingClientRect().width || canvas.width);
+  const px = Math.round(16 * (legend.scale ?? 1) * dpr);
+  const rowH = Math.round(px * 1.6);
+  const out = document.createElement('canvas');
+  out.width = image.width;
+  out.height = image.height + rowH * entries.length + px;
+  const g = out.getContext('2d');
+  g.fillStyle = background;
+  g.fillRect(0, 0, out.width, out.height);
+  g.drawImage(image, 0, 0);
+  g.font = `${px}px system-ui, "DejaVu Sans", sans-serif`;
+  g.textBaseline = 'middle';
+  entries.forEach(([color, words, dash], i) => {
+    const y = image.height + px / 2 + rowH * (i + 0.5);
+    if (color) {
+      g.strokeStyle = color; g.lineWidth = 3 * dpr; g.setLineDash((dash ?? []).map((d) => d * dpr));
+      g.beginPath(); g.moveTo(px, y); g.lineTo(3 * px, y); g.stroke();
+    }
+    g.fillStyle = ink;
+    g.fillText(words, 3.6 * px, y);
+  });
+  return new Promise((resolve) => out.toBlob(resolve, 'image/png'));
 }

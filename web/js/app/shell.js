@@ -25,7 +25,7 @@ import { checkChange } from './schema.js';
 import { createStage } from './stage.js';
 import { CanvasPainter, SvgPainter } from './painter.js';
 import { labelRects } from './label-layout.js';
-import { legendRects } from './canvas-legend.js';
+import { legendRects, withLegendBand } from './canvas-legend.js';
 import { createKeymap } from './keymap.js';
 import { applyStoredTheme, isPresenting, drawingColors } from './theme.js';
 import { registerServiceWorker } from './sw-register.js';
@@ -291,7 +291,7 @@ export async function runLesson(lesson) {
 
   // ---------------------------------------------------------------- files and toolbar
   const files = createImportExport({
-    lesson, contents, pngFigure: () => ctx.stage.png(), svgFigure, accept, message,
+    lesson, contents, pngFigure: async () => withLegendBand(ctx.stage.canvas, await ctx.stage.png(), { ink: colors.ink, background: colors.background }), svgFigure, accept, message,
     hookArgs: () => [view, model, store.state, ctx],
     announceStatus: announcer.status,
   });

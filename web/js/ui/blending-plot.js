@@ -13,7 +13,6 @@ import { plotLabels, plotFontPx } from '../app/label-layout.js';
 
 // Padding around the plot, in CSS px, from the label size (app/label-layout.js): room for the
 // 0/1 ticks at the left, the domain ends under it, the u label above it.
-let PAD = { left: 40, right: 12, top: 14, bottom: 24 };
 const padFor = (px) => ({ left: Math.round(px * 1.6 + 10), right: 12, top: Math.round(px * 1.25 + 6), bottom: Math.round(px * 1.25 + 8) });
 
 export function createBlendingPlot(container, { label = 'Blending functions', height = 190, onSeek = null } = {}) {
@@ -23,6 +22,7 @@ export function createBlendingPlot(container, { label = 'Blending functions', he
   caption.textContent = label;
   container.append(figure);
   const surface = createPlotCanvas(figure, { className: 'blending-canvas', label, height });
+  let PAD = padFor(plotFontPx()); // set again at every draw (presentation mode changes it)
   figure.append(caption);
   let data = null;
 

@@ -14,15 +14,15 @@ import { formatShort as fmt } from '../../ui/format.js';
 import { continuityLabel } from './families.js';
 
 const PAD_X = 28;
-// The axis sits a label row above the bottom: AXIS_Y() px from the top (the strip is
-// taller in presentation mode, curves.css).
-let AXIS_Y = 58;
+// The axis sits a label row above the bottom (the strip is taller in presentation mode,
+// curves.css): axisFor(height) px from the top.
 const axisFor = (height) => Math.round(height - plotFontPx() * 1.25 - 16);
 const STACK_PX = 11;
 const HIT_PX = 12;
 
 export function createKnotStrip(container, { onChange, label = 'Knot strip' } = {}) {
   const surface = createPlotCanvas(container, { className: 'knot-strip', label, height: 96, tabIndex: 0, role: 'application' });
+  let AXIS_Y = axisFor(96); // set from the strip's height at every draw
   surface.canvas.setAttribute('aria-roledescription', 'knot strip');
   let data = null;
   let selected = null;
