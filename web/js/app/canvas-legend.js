@@ -55,7 +55,7 @@ export function showLegend(canvas, entries, scale = 1) {
 
 // The client rectangles of every shown canvas legend (for tests).
 export function legendRects() {
-  return [...document.querySelectorAll('.canvas-legend')].filter((l) => !l.hidden && l.getClientRects().length).map((l) => {
+  return [...document.querySelectorAll('.canvas-legend')].filter((l) => l.getClientRects().length).map((l) => {
     const r = l.getBoundingClientRect();
     return { id: l.id, text: l.textContent, x: r.left, y: r.top, width: r.width, height: r.height };
   });

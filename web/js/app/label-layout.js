@@ -5,7 +5,8 @@
 // lies inside the canvas and overlaps no box already placed in this frame. The candidates,
 // in order: the asked position, its mirror images (dx, dy negated), then rings of eight
 // positions around the anchor at 1x, 2x and 3x the box size. A label that fits nowhere is
-// dropped (counted in `dropped`, so a test can see it). Labels also keep off the drawn
+// dropped (counted in `dropped`, so a test can see it); one moved farther than
+// LEADER_MIN_PX from its anchor is joined to it by a thin leader line. Labels also keep off the drawn
 // markers (circles: handles, control points) where a candidate allows it. Labels are placed in priority
 // order (higher first, then the order they were asked in): the element a person is
 // pointing at or dragging asks with a higher priority and so keeps its asked place.
@@ -127,10 +128,20 @@ export class LabelLayout {
       const x = align === 'left' || align === 'start' ? chosen.x : align === 'right' || align === 'end' ? chosen.x + w : chosen.x + w / 2;
       const y = baseline === 'top' || baseline === 'hanging' ? chosen.y : baseline === 'bottom' ? chosen.y + h
         : baseline === 'alphabetic' ? chosen.y + h * 0.8 : chosen.y + h / 2;
-      placed.push({ text: r.text, x, y, box: chosen, opts: r.opts });
+      placed.push({ text: r.text, x, y, box: chosen, opts: r.opts, anchor: [r.ax, r.ay], leader: leaderOf(r, chosen, chosen !== candidates[0]) });
     }
     return placed;
   }
+}
+
+// A label moved off its asked place and farther than LEADER_MIN_PX from its anchor gets a
+// thin leader line from the anchor to the nearest point of its box: [x0, y0, x1, y1] or null.
+export const LEADER_MIN_PX = 18;
+function leaderOf(r, box, moved) {
+  if (!moved) return null;
+  const nx = Math.min(Math.max(r.ax, box.x), box.x + box.w);
+  const ny = Math.min(Math.max(r.ay, box.y), box.y + box.h);
+  return Math.hypot(nx - r.ax, ny - r.ay) > LEADER_MIN_PX ? [r.ax, r.ay, nx, ny] : null;
 }
 
 // ---- the labels of the last frame, per canvas --------------------------------------
@@ -138,11 +149,11 @@ const frames = new Map(); // canvas element -> { labels: [{ text, box, px }], dr
 
 export function recordLabels(canvas, placed, dropped = 0) {
   if (!canvas) return;
-  frames.set(canvas, { labels: placed.map((p) => ({ text: p.text, box: p.box, px: p.opts.px })), dropped });
+  frames.set(canvas, { labels: placed.map((p) => ({ text: p.text, box: p.box, px: p.opts.px, anchor: p.anchor, leader: !!p.leader })), dropped });
 }
 
 // Every label drawn in the last frame of every canvas on the page, in client px:
-// [{ canvas (id or class), text, x, y, width, height, fontPx, canvasRect }].
+// [{ canvas (id or class), text, x, y, width, height, fontPx, anchor {x, y}, leader (bool), canvasRect }].
 export function labelRects() {
   const out = [];
   for (const [canvas, frame] of frames) {
@@ -152,6 +163,7 @@ export function labelRects() {
     const name = canvas.id || canvas.className;
     for (const l of frame.labels) {
       out.push({ canvas: name, text: l.text, x: r.left + l.box.x, y: r.top + l.box.y, width: l.box.w, height: l.box.h, fontPx: l.px,
+        anchor: { x: r.left + l.anchor[0], y: r.top + l.anchor[1] }, leader: l.leader,
         canvasRect: { x: r.left, y: r.top, width: r.width, height: r.height } });
     }
   }
@@ -175,6 +187,11 @@ export function plotLabels(g, canvas, width, height) {
     },
     draw() {
       const placed = layout.place();
+      for (const p of placed.filter((q) => q.leader)) { // leaders first: no leader crosses a text
+        g.strokeStyle = p.opts.fill ?? '#000'; g.lineWidth = 1; g.setLineDash([]); g.globalAlpha = 0.7;
+        g.beginPath(); g.moveTo(p.leader[0], p.leader[1]); g.lineTo(p.leader[2], p.leader[3]); g.stroke();
+        g.globalAlpha = 1;
+      }
       for (const p of placed) {
         g.font = cssFont(p.opts.px, p.opts.weight);
         g.textAlign = p.opts.align;

@@ -193,6 +193,13 @@ export class CanvasPainter {
   finish() {
     const g = this.g;
     const placed = placeLabels(this);
+    for (const p of placed.filter((q) => q.leader)) { // leaders first: no leader crosses a text
+      g.globalAlpha = 0.7;
+      g.lineWidth = this.scale;
+      g.setLineDash([]);
+      g.strokeStyle = p.opts.style.fill ?? '#000';
+      g.beginPath(); g.moveTo(p.leader[0], p.leader[1]); g.lineTo(p.leader[2], p.leader[3]); g.stroke();
+    }
     for (const p of placed) {
       const style = p.opts.style;
       g.font = cssFont(p.opts.px, p.opts.weight);
@@ -310,6 +317,11 @@ export class SvgPainter {
 
   legend(entries) { this.legendEntries = entries; }
 
+  #emitLeader(p) {
+    const style = p.opts.style;
+    if (p.leader) this.parts.push(`<line x1="${svgNumber(p.leader[0])}" y1="${svgNumber(p.leader[1])}" x2="${svgNumber(p.leader[2])}" y2="${svgNumber(p.leader[3])}" stroke="${escapeXml(style.fill ?? '#000')}" stroke-width="${svgNumber(this.scale)}" opacity="0.7"/>`);
+  }
+
   #emitText(p) {
     const style = p.opts.style;
     const anchor = { left: 'start', right: 'end', center: 'middle', start: 'start', end: 'end' }[p.opts.align];
@@ -344,7 +356,9 @@ export class SvgPainter {
   }
 
   toString() {
-    for (const p of placeLabels(this)) this.#emitText(p);
+    const placed = placeLabels(this);
+    for (const p of placed) this.#emitLeader(p); // leaders first: no leader crosses a text
+    for (const p of placed) this.#emitText(p);
     this.layout = null;
     const band = this.#legendBand();
     const w = svgNumber(this.t.width);
