@@ -17,8 +17,9 @@ import { lessons } from '../../../web/js/lessons/registry.js';
 // The stated minimum label sizes, CSS px (docs/architecture.md, "Labels").
 const MIN_LABEL_PX = 14;
 const MIN_LABEL_PX_PRESENT = 20;
-// A label farther than this from the point it names (CSS px, box to anchor) has a leader
-// line to it (docs/architecture.md, "Labels"; the layout's LEADER_MIN_PX, 18 px).
+// A label farther than this from the point it names (CSS px, box to anchor), and farther than
+// the place it asked for, has a leader line to it (docs/architecture.md, "Labels"; the
+// layout's LEADER_MIN_PX, 18 px).
 const LEADER_MIN_PX = 18;
 // Two boxes "overlap" when they share more than this, in CSS px, both ways (rounding of
 // client rectangles).
@@ -116,7 +117,7 @@ async function checkLabels(page, where, min) {
       && l.y + l.height <= c.y + c.height + OVERLAP_TOL_PX, `${where}: label "${l.text}" lies inside its canvas ${l.canvas}`);
     const nx = Math.min(Math.max(l.anchor.x, l.x), l.x + l.width); const ny = Math.min(Math.max(l.anchor.y, l.y), l.y + l.height);
     const far = Math.hypot(nx - l.anchor.x, ny - l.anchor.y);
-    if (far > LEADER_MIN_PX + OVERLAP_TOL_PX) assert.ok(l.leader, `${where}: label "${l.text}" is ${far.toFixed(0)}px from its point and has no leader line`);
+    if (far > Math.max(LEADER_MIN_PX, l.askedDistance + 1) + OVERLAP_TOL_PX) assert.ok(l.leader, `${where}: label "${l.text}" is ${far.toFixed(0)}px from its point and has no leader line`);
   }
   for (let i = 0; i < labels.length; i += 1) {
     for (let j = i + 1; j < labels.length; j += 1) {

@@ -5,8 +5,8 @@
 // lies inside the canvas and overlaps no box already placed in this frame. The candidates,
 // in order: the asked position, its mirror images (dx, dy negated), then rings of eight
 // positions around the anchor at 1x, 2x and 3x the box size. A label that fits nowhere is
-// dropped (counted in `dropped`, so a test can see it); one moved farther than
-// LEADER_MIN_PX from its anchor is joined to it by a thin leader line. Labels also keep off the drawn
+// dropped (counted in `dropped`, so a test can see it); one placed farther from its anchor
+// than it asked (and than LEADER_MIN_PX) is joined to it by a thin leader line. Labels also keep off the drawn
 // markers (circles: handles, control points) where a candidate allows it. Labels are placed in priority
 // order (higher first, then the order they were asked in): the element a person is
 // pointing at or dragging asks with a higher priority and so keeps its asked place.
@@ -128,32 +128,37 @@ export class LabelLayout {
       const x = align === 'left' || align === 'start' ? chosen.x : align === 'right' || align === 'end' ? chosen.x + w : chosen.x + w / 2;
       const y = baseline === 'top' || baseline === 'hanging' ? chosen.y : baseline === 'bottom' ? chosen.y + h
         : baseline === 'alphabetic' ? chosen.y + h * 0.8 : chosen.y + h / 2;
-      placed.push({ text: r.text, x, y, box: chosen, opts: r.opts, anchor: [r.ax, r.ay], leader: leaderOf(r, chosen, chosen !== candidates[0]) });
+      placed.push({ text: r.text, x, y, box: chosen, opts: r.opts, anchor: [r.ax, r.ay], asked: askedDistance(r, asked), leader: leaderOf(r, chosen, asked) });
     }
     return placed;
   }
 }
 
-// A label moved off its asked place and farther than LEADER_MIN_PX from its anchor gets a
-// thin leader line from the anchor to the nearest point of its box: [x0, y0, x1, y1] or null.
+// A label placed farther from its anchor than it asked to be, and farther than LEADER_MIN_PX,
+// gets a thin leader line from the anchor to the nearest point of its box ([x0, y0, x1, y1]).
 export const LEADER_MIN_PX = 18;
-function leaderOf(r, box, moved) {
-  if (!moved) return null;
-  const nx = Math.min(Math.max(r.ax, box.x), box.x + box.w);
-  const ny = Math.min(Math.max(r.ay, box.y), box.y + box.h);
-  return Math.hypot(nx - r.ax, ny - r.ay) > LEADER_MIN_PX ? [r.ax, r.ay, nx, ny] : null;
+const distanceToBox = (x, y, box) => {
+  const nx = Math.min(Math.max(x, box.x), box.x + box.w);
+  const ny = Math.min(Math.max(y, box.y), box.y + box.h);
+  return [Math.hypot(nx - x, ny - y), nx, ny];
+};
+function leaderOf(r, box, asked) {
+  const [d, nx, ny] = distanceToBox(r.ax, r.ay, box);
+  return d > Math.max(LEADER_MIN_PX, distanceToBox(r.ax, r.ay, asked)[0] + 1) ? [r.ax, r.ay, nx, ny] : null;
 }
+const askedDistance = (r, asked) => distanceToBox(r.ax, r.ay, asked)[0];
 
 // ---- the labels of the last frame, per canvas --------------------------------------
 const frames = new Map(); // canvas element -> { labels: [{ text, box, px }], dropped }
 
 export function recordLabels(canvas, placed, dropped = 0) {
   if (!canvas) return;
-  frames.set(canvas, { labels: placed.map((p) => ({ text: p.text, box: p.box, px: p.opts.px, anchor: p.anchor, leader: !!p.leader })), dropped });
+  frames.set(canvas, { labels: placed.map((p) => ({ text: p.text, box: p.box, px: p.opts.px, anchor: p.anchor, asked: p.asked, leader: !!p.leader })), dropped });
 }
 
 // Every label drawn in the last frame of every canvas on the page, in client px:
-// [{ canvas (id or class), text, x, y, width, height, fontPx, anchor {x, y}, leader (bool), canvasRect }].
+// [{ canvas (id or class), text, x, y, width, height, fontPx, anchor {x, y}, askedDistance
+// (px from the anchor to the box it asked for), leader (bool), canvasRect }].
 export function labelRects() {
   const out = [];
   for (const [canvas, frame] of frames) {
@@ -163,7 +168,7 @@ export function labelRects() {
     const name = canvas.id || canvas.className;
     for (const l of frame.labels) {
       out.push({ canvas: name, text: l.text, x: r.left + l.box.x, y: r.top + l.box.y, width: l.box.w, height: l.box.h, fontPx: l.px,
-        anchor: { x: r.left + l.anchor[0], y: r.top + l.anchor[1] }, leader: l.leader,
+        anchor: { x: r.left + l.anchor[0], y: r.top + l.anchor[1] }, askedDistance: l.asked, leader: l.leader,
         canvasRect: { x: r.left, y: r.top, width: r.width, height: r.height } });
     }
   }
