@@ -47,9 +47,12 @@
 
 /**
  * Drawing style for a painter call: stroke and fill colours, width and dash in CSS pixels,
- * font size in pixels, text alignment, alpha, and for text an offset (dx, dy) and a halo.
+ * font size in pixels, text alignment, alpha, and for text an offset (dx, dy) and a halo;
+ * a text is a label (app/label-layout.js): `priority` (higher placed first: the selected
+ * element), `fixed` (only its asked place, else dropped).
  * @typedef {{ stroke?: string, fill?: string, width?: number, dash?: number[], font?: number,
  *   align?: string, baseline?: string, alpha?: number, dx?: number, dy?: number, halo?: string,
+ *   priority?: number, fixed?: boolean,
  *   [extra: string]: any }} Style
  */
 
@@ -77,6 +80,7 @@
  *   circle(x: number, y: number, radiusPx: number, style?: Style): void,
  *   text(x: number, y: number, string: string, style?: Style): void,
  *   arrow(ax: number, ay: number, bx: number, by: number, style?: Style): void,
+ *   legend(entries: Array<Array<any>>): void,
  * }} Painter
  */
 

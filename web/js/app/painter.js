@@ -5,6 +5,14 @@
 //   stride=2), circle(x,y,radiusPx,style), text(x,y,string,style), arrow(ax,ay,bx,by,style)
 // `xy` is a flat array (x0, y0, x1, y1, ...) with the given stride (2 or 3: z ignored).
 // style: { stroke, fill, width (px), dash ([px]), font (px size), align, baseline, alpha }
+// Texts are labels (app/label-layout.js): text() asks, finish() places them all (no two
+// overlap, none leaves the canvas, none under MIN_LABEL_PX) and draws them on top.
+// text style extras: priority (higher is placed first: the selected/dragged element),
+// fixed (only the asked place). legend(entries) gives the frame's legend, entries
+// [color, words, dash?]: the canvas painter shows it as HTML next to the canvas
+// (app/canvas-legend.js), the SVG painter as a band under the figure.
+import { LabelLayout, MIN_LABEL_PX, recordLabels, cssFont } from './label-layout.js';
+import { showLegend } from './canvas-legend.js';
 
 export class Transform {
   // world (x, y) -> screen (cssX, cssY): y up in the world, down on screen.
@@ -31,6 +39,33 @@ function arrowHead(t, ax, ay, bx, by, scale) {
   return [[x1, y1], [x1 - head * ux + head * 0.45 * uy, y1 - head * uy - head * 0.45 * ux],
     [x1 - head * ux - head * 0.45 * uy, y1 - head * uy + head * 0.45 * ux]];
 }
+
+// A label asked by either painter: the same sizes and the same layout for both.
+const layoutOf = (painter) => {
+  if (!painter.layout) painter.layout = new LabelLayout(painter.t.width, painter.t.height);
+  return painter.layout;
+};
+
+// A circle is a marker labels keep off (app/label-layout.js).
+const markerOf = (painter, sx, sy, radiusPx) => layoutOf(painter).obstacle(sx, sy, radiusPx * painter.scale);
+
+function askLabel(painter, x, y, string, style) {
+  layoutOf(painter);
+  const [sx, sy] = painter.t.toScreen(x, y);
+  painter.layout.ask(string, sx, sy, {
+    px: Math.max(style.font ?? MIN_LABEL_PX, MIN_LABEL_PX) * painter.scale,
+    weight: style.weight ?? 500,
+    align: style.align ?? 'center',
+    baseline: style.baseline ?? 'middle',
+    dx: (style.dx ?? 0) * painter.scale,
+    dy: (style.dy ?? 0) * painter.scale,
+    priority: style.priority ?? 0,
+    fixed: style.fixed ?? false,
+    style,
+  });
+}
+
+const placeLabels = (painter) => (painter.layout ? painter.layout.place() : []);
 
 export class CanvasPainter {
   constructor(ctx2d, transform, { scale = 1, background = '#fff' } = {}) {
@@ -141,6 +176,7 @@ export class CanvasPainter {
 
   circle(x, y, radiusPx, style = {}) {
     const [sx, sy] = this.t.toScreen(x, y);
+    markerOf(this, sx, sy, radiusPx);
     this.g.beginPath();
     this.g.arc(sx, sy, radiusPx * this.scale, 0, Math.PI * 2);
     this.#apply(style);
@@ -148,24 +184,42 @@ export class CanvasPainter {
   }
 
   text(x, y, string, style = {}) {
-    const [sx, sy] = this.t.toScreen(x, y);
+    askLabel(this, x, y, string, style);
+  }
+
+  legend(entries) { this.legendEntries = entries; }
+
+  // Places and draws the frame's labels, records them for labelRects(), shows the legend.
+  finish() {
     const g = this.g;
-    g.font = `${style.weight ?? 500} ${(style.font ?? 14) * this.scale}px system-ui, "DejaVu Sans", sans-serif`;
-    g.textAlign = style.align ?? 'center';
-    g.textBaseline = style.baseline ?? 'middle';
-    g.globalAlpha = style.alpha ?? 1;
-    const dx = (style.dx ?? 0) * this.scale;
-    const dy = (style.dy ?? 0) * this.scale;
-    if (style.halo) {
-      g.lineWidth = 4 * this.scale;
-      g.strokeStyle = style.halo;
-      g.lineJoin = 'round';
+    const placed = placeLabels(this);
+    for (const p of placed.filter((q) => q.leader)) { // leaders first: no leader crosses a text
+      g.globalAlpha = 0.7;
+      g.lineWidth = this.scale;
       g.setLineDash([]);
-      g.strokeText(string, sx + dx, sy + dy);
+      g.strokeStyle = p.opts.style.fill ?? '#000';
+      g.beginPath(); g.moveTo(p.leader[0], p.leader[1]); g.lineTo(p.leader[2], p.leader[3]); g.stroke();
     }
-    g.fillStyle = style.fill ?? '#000';
-    g.fillText(string, sx + dx, sy + dy);
-    g.globalAlpha = 1;
+    for (const p of placed) {
+      const style = p.opts.style;
+      g.font = cssFont(p.opts.px, p.opts.weight);
+      g.textAlign = p.opts.align;
+      g.textBaseline = p.opts.baseline;
+      g.globalAlpha = style.alpha ?? 1;
+      if (style.halo) {
+        g.lineWidth = 4 * this.scale;
+        g.strokeStyle = style.halo;
+        g.lineJoin = 'round';
+        g.setLineDash([]);
+        g.strokeText(p.text, p.x, p.y);
+      }
+      g.fillStyle = style.fill ?? '#000';
+      g.fillText(p.text, p.x, p.y);
+      g.globalAlpha = 1;
+    }
+    recordLabels(g.canvas, placed, this.layout?.dropped ?? 0);
+    if (g.canvas?.isConnected) showLegend(g.canvas, this.legendEntries ?? [], this.scale);
+    this.layout = null;
   }
 
   arrow(ax, ay, bx, by, style = {}) {
@@ -253,17 +307,45 @@ export class SvgPainter {
 
   circle(x, y, radiusPx, style = {}) {
     const [sx, sy] = this.t.toScreen(x, y);
+    markerOf(this, sx, sy, radiusPx);
     this.parts.push(`<circle cx="${svgNumber(sx)}" cy="${svgNumber(sy)}" r="${svgNumber(radiusPx * this.scale)}" ${this.#style(style)}/>`);
   }
 
   text(x, y, string, style = {}) {
-    const [sx, sy] = this.t.toScreen(x, y);
-    const anchor = { left: 'start', right: 'end', center: 'middle', start: 'start', end: 'end' }[style.align ?? 'center'];
-    const baseline = { top: 'hanging', middle: 'central', bottom: 'text-after-edge', alphabetic: 'alphabetic' }[style.baseline ?? 'middle'];
-    const dx = (style.dx ?? 0) * this.scale;
-    const dy = (style.dy ?? 0) * this.scale;
+    askLabel(this, x, y, string, style);
+  }
+
+  legend(entries) { this.legendEntries = entries; }
+
+  #emitLeader(p) {
+    const style = p.opts.style;
+    if (p.leader) this.parts.push(`<line x1="${svgNumber(p.leader[0])}" y1="${svgNumber(p.leader[1])}" x2="${svgNumber(p.leader[2])}" y2="${svgNumber(p.leader[3])}" stroke="${escapeXml(style.fill ?? '#000')}" stroke-width="${svgNumber(this.scale)}" opacity="0.7"/>`);
+  }
+
+  #emitText(p) {
+    const style = p.opts.style;
+    const anchor = { left: 'start', right: 'end', center: 'middle', start: 'start', end: 'end' }[p.opts.align];
+    const baseline = { top: 'hanging', middle: 'central', bottom: 'text-after-edge', alphabetic: 'alphabetic' }[p.opts.baseline];
     const halo = style.halo ? ` stroke="${escapeXml(style.halo)}" stroke-width="${svgNumber(4 * this.scale)}" paint-order="stroke"` : '';
-    this.parts.push(`<text x="${svgNumber(sx + dx)}" y="${svgNumber(sy + dy)}" font-family="system-ui, sans-serif" font-size="${svgNumber((style.font ?? 14) * this.scale)}" font-weight="${style.weight ?? 500}" text-anchor="${anchor}" dominant-baseline="${baseline}" fill="${escapeXml(style.fill ?? '#000')}"${halo}>${escapeXml(string)}</text>`);
+    const alpha = style.alpha !== undefined ? ` opacity="${svgNumber(style.alpha)}"` : '';
+    this.parts.push(`<text x="${svgNumber(p.x)}" y="${svgNumber(p.y)}" font-family="system-ui, sans-serif" font-size="${svgNumber(p.opts.px)}" font-weight="${p.opts.weight}" text-anchor="${anchor}" dominant-baseline="${baseline}" fill="${escapeXml(style.fill ?? '#000')}"${halo}${alpha}>${escapeXml(p.text)}</text>`);
+  }
+
+  // The legend as a band under the figure: one row per entry, a line sample in the
+  // entry's colour and dash, then its words (the canvas shows the same legend as HTML).
+  #legendBand() {
+    const entries = this.legendEntries ?? [];
+    if (!entries.length) return 0;
+    const px = MIN_LABEL_PX * this.scale;
+    const rowH = px * 1.6;
+    const top = this.t.height;
+    this.parts.push(`<rect x="0" y="${svgNumber(top)}" width="${svgNumber(this.t.width)}" height="${svgNumber(rowH * entries.length + px)}" fill="${escapeXml(this.background)}"/>`);
+    entries.forEach(([color, words, dash = []], i) => {
+      const y = top + px / 2 + rowH * (i + 0.5);
+      if (color) this.parts.push(`<line x1="${svgNumber(px)}" y1="${svgNumber(y)}" x2="${svgNumber(3 * px)}" y2="${svgNumber(y)}" ${this.#style({ stroke: color, width: 3, dash })}/>`);
+      this.parts.push(`<text x="${svgNumber(3.6 * px)}" y="${svgNumber(y)}" font-family="system-ui, sans-serif" font-size="${svgNumber(px)}" dominant-baseline="central" fill="${escapeXml(color ?? '#000')}">${escapeXml(words)}</text>`);
+    });
+    return rowH * entries.length + px;
   }
 
   arrow(ax, ay, bx, by, style = {}) {
@@ -274,8 +356,13 @@ export class SvgPainter {
   }
 
   toString() {
+    const placed = placeLabels(this);
+    for (const p of placed) this.#emitLeader(p); // leaders first: no leader crosses a text
+    for (const p of placed) this.#emitText(p);
+    this.layout = null;
+    const band = this.#legendBand();
     const w = svgNumber(this.t.width);
-    const h = svgNumber(this.t.height);
+    const h = svgNumber(this.t.height + band);
     return `<?xml version="1.0" encoding="UTF-8"?>\n<svg xmlns="http://www.w3.org/2000/svg" width="${w}" height="${h}" viewBox="0 0 ${w} ${h}">\n${this.parts.join('\n')}\n</svg>\n`;
   }
 }

@@ -24,6 +24,8 @@ import { createContentStore } from './content-store.js';
 import { checkChange } from './schema.js';
 import { createStage } from './stage.js';
 import { CanvasPainter, SvgPainter } from './painter.js';
+import { labelRects } from './label-layout.js';
+import { legendRects, withLegendBand } from './canvas-legend.js';
 import { createKeymap } from './keymap.js';
 import { applyStoredTheme, isPresenting, drawingColors } from './theme.js';
 import { registerServiceWorker } from './sw-register.js';
@@ -200,6 +202,7 @@ export async function runLesson(lesson) {
     const painter = new CanvasPainter(g, ctx.stage.transform(), { scale: ui.present ? 1.6 : 1, background: colors.background });
     painter.clear();
     lesson.draw(view, painter, model, state, ctx);
+    painter.finish(); // the labels, placed together (app/label-layout.js), and the legend
     lesson.afterFrame?.(view, model, state, ctx);
   }
 
@@ -289,7 +292,7 @@ export async function runLesson(lesson) {
 
   // ---------------------------------------------------------------- files and toolbar
   const files = createImportExport({
-    lesson, contents, pngFigure: () => ctx.stage.png(), svgFigure, accept, message,
+    lesson, contents, pngFigure: async () => withLegendBand(ctx.stage.canvas, await ctx.stage.png(), { ink: colors.ink, background: colors.background }), svgFigure, accept, message,
     hookArgs: () => [view, model, store.state, ctx],
     announceStatus: announcer.status,
   });
@@ -407,6 +410,9 @@ export async function runLesson(lesson) {
     message: () => message.text,
     svg: svgFigure,
     ctx,
+    // Every label of the last frame on every canvas, and the legends (issue 18).
+    labelRects,
+    legendRects,
   };
   document.body.dataset.ready = 'true';
   // ui_load (tests/bench/browser/load.bench.mjs): navigation start to drawn and interactive.

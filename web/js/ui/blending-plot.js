@@ -9,8 +9,11 @@
 // values[count*j + i] is function i at params[j] (the core's layout).
 import { createPlotCanvas, dashFor } from './plot-canvas.js';
 import { formatShort as fmt } from './format.js';
+import { plotLabels, plotFontPx } from '../app/label-layout.js';
 
-const PAD = { left: 40, right: 12, top: 14, bottom: 24 };
+// Padding around the plot, in CSS px, from the label size (app/label-layout.js): room for the
+// 0/1 ticks at the left, the domain ends under it, the u label above it.
+const padFor = (px) => ({ left: Math.round(px * 1.6 + 10), right: 12, top: Math.round(px * 1.25 + 6), bottom: Math.round(px * 1.25 + 8) });
 
 export function createBlendingPlot(container, { label = 'Blending functions', height = 190, onSeek = null } = {}) {
   const figure = document.createElement('figure');
@@ -19,6 +22,7 @@ export function createBlendingPlot(container, { label = 'Blending functions', he
   caption.textContent = label;
   container.append(figure);
   const surface = createPlotCanvas(figure, { className: 'blending-canvas', label, height });
+  let PAD = padFor(plotFontPx()); // set again at every draw (presentation mode changes it)
   figure.append(caption);
   let data = null;
 
@@ -47,9 +51,10 @@ export function createBlendingPlot(container, { label = 'Blending functions', he
     const g = surface.begin(colors.background);
     const { height: hgt } = surface.size;
     const scale = data.present ? 1.5 : 1;
+    const labels = plotLabels(g, surface.canvas, surface.size.width, hgt);
+    PAD = padFor(plotFontPx());
     const [lo, hi] = range();
     const yOf = (v) => PAD.top + (1 - (v - lo) / (hi - lo || 1)) * (hgt - PAD.top - PAD.bottom);
-    g.font = `${12 * scale}px system-ui, "DejaVu Sans", sans-serif`;
     // axes: 0 and 1
     g.strokeStyle = colors.grid;
     g.lineWidth = 1;
@@ -57,22 +62,16 @@ export function createBlendingPlot(container, { label = 'Blending functions', he
     for (const v of [0, 1]) {
       g.beginPath(); g.moveTo(PAD.left, yOf(v)); g.lineTo(surface.size.width - PAD.right, yOf(v)); g.stroke();
     }
-    g.fillStyle = colors.muted;
-    g.textAlign = 'right';
-    g.textBaseline = 'middle';
-    g.fillText('1', PAD.left - 6, yOf(1));
-    g.fillText('0', PAD.left - 6, yOf(0));
+    labels.text('1', PAD.left - 6, yOf(1), { fill: colors.muted, align: 'right', fixed: true, priority: 3 });
+    labels.text('0', PAD.left - 6, yOf(0), { fill: colors.muted, align: 'right', fixed: true, priority: 3 });
     // knots (B-splines) or segment joints, and the domain ends
-    g.textAlign = 'center';
-    g.textBaseline = 'top';
     for (const k of data.knots ?? []) {
       if (k < data.domain.start - 1e-12 || k > data.domain.end + 1e-12) continue;
       g.strokeStyle = colors.grid;
       g.beginPath(); g.moveTo(xOf(k), PAD.top); g.lineTo(xOf(k), hgt - PAD.bottom); g.stroke();
     }
-    g.fillStyle = colors.muted;
-    g.fillText(fmt(data.domain.start), xOf(data.domain.start), hgt - PAD.bottom + 4);
-    g.fillText(fmt(data.domain.end), xOf(data.domain.end), hgt - PAD.bottom + 4);
+    labels.text(fmt(data.domain.start), xOf(data.domain.start), hgt - PAD.bottom + 4, { fill: colors.muted, align: 'left', baseline: 'top', priority: 3, fixed: true });
+    labels.text(fmt(data.domain.end), xOf(data.domain.end), hgt - PAD.bottom + 4, { fill: colors.muted, align: 'right', baseline: 'top', priority: 3, fixed: true });
     // the functions
     const { params, count, values } = data;
     for (let i = 0; i < count; i += 1) {
@@ -90,27 +89,21 @@ export function createBlendingPlot(container, { label = 'Blending functions', he
         if (j === 0) g.moveTo(xOf(params[j]), yOf(v)); else g.lineTo(xOf(params[j]), yOf(v));
       }
       g.stroke();
-      // label at the function's peak, so the colour is never the only key
-      g.setLineDash([]);
-      g.fillStyle = colors.series[c % colors.series.length];
-      g.textBaseline = 'bottom';
-      const pv = values[count * peak + i];
-      // kept inside the plot: a peak at either end would cut the label in half
-      const half = g.measureText(data.labels[i]).width / 2;
-      const lx = Math.min(Math.max(xOf(params[peak]), PAD.left + half), surface.size.width - PAD.right - half);
-      const ly = Math.min(Math.max(yOf(pv) - (pv >= 0 ? 2 : -14 * scale), 12 * scale + 2), hgt - 2);
-      g.fillText(data.labels[i], lx, ly);
       g.globalAlpha = 1;
+      // label at the function's peak, so the colour is never the only key (the layout moves
+      // it off its neighbours' labels; the highlighted function's label is placed first)
+      const pv = values[count * peak + i];
+      labels.text(data.labels[i], xOf(params[peak]), yOf(pv), { fill: colors.series[c % colors.series.length], baseline: 'bottom', dy: pv >= 0 ? -2 : 2 + plotFontPx(),
+        priority: data.highlight === c ? 2 : 0 });
     }
-    // the u cursor, shared with the curve
+    // the u cursor, shared with the curve, over the labels (drawn first)
+    const xu = xOf(data.u);
+    labels.text(`u = ${fmt(data.u)}`, xu, PAD.top - 4, { fill: colors.highlight, baseline: 'bottom', priority: 4 });
+    labels.draw();
     g.setLineDash([]);
     g.strokeStyle = colors.highlight;
     g.lineWidth = 2 * scale;
-    const xu = xOf(data.u);
     g.beginPath(); g.moveTo(xu, PAD.top - 6); g.lineTo(xu, hgt - PAD.bottom); g.stroke();
-    g.fillStyle = colors.highlight;
-    g.textBaseline = 'bottom';
-    g.fillText(`u = ${fmt(data.u)}`, Math.min(Math.max(xu, PAD.left + 30), surface.size.width - 40), PAD.top + 2);
   }
   surface.onRedraw(draw);
 

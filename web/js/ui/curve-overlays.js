@@ -109,12 +109,16 @@ const SUP = '⁰¹²³⁴⁵⁶⁷⁸⁹';
 const sub = (k) => String(k).split('').map((d) => SUB[Number(d)]).join('');
 const sup = (k) => String(k).split('').map((d) => SUP[Number(d)]).join('');
 
-// A legend in the top left corner of the view (12, 16 CSS px in), one line per
-// [color, words] entry, each led by `marker` in its colour; line height 20 px (times the
-// painter's export scale).
-export function drawLegend(painter, entries, { marker = '■', font = 12, halo }) {
-  const tr = painter.t;
-  const [lx, ly] = tr.toWorld(12, 16);
-  const lineH = (20 * (painter.scale ?? 1)) / tr.zoom;
-  entries.forEach(([color, words], i) => painter.text(lx, ly - i * lineH, `${marker} ${words}`, { fill: color, font, align: 'left', halo }));
+// The legend of the drawing: entries [color, words, dash?] go to painter.legend(), which
+// shows them next to the canvas (HTML, app/canvas-legend.js) or under the SVG figure; never
+// over the drawing (issue 18).
+export function drawLegend(painter, entries) {
+  painter.legend(entries);
+}
+
+// The scale an arrow is drawn at, as the legend says it: 1/3, 1/6, 1/9 (a unit fraction)
+// or the number itself.
+export function arrowScale(scale) {
+  const k = Math.round(1 / scale);
+  return Math.abs(k * scale - 1) < 1e-12 ? `1/${k}` : String(scale);
 }

@@ -7,10 +7,16 @@
 //     series: [{ label, color, dash?, pieces: [{ u: Float64Array, v: Float64Array }] }],
 //     marks: [u...]        vertical lines (joints), labelled marks[i].label if objects
 //     cursor: u | null     the parameter of the travelling point
-//     yLabel, colors: { ink, muted, grid, background }
+//     yLabel, colors: { ink, muted, grid, background },
+//     nonNegative: true     a quantity that is never negative (a speed |P'|, the lecture's
+//                           curvature kappa = |P' x P''| / |P'|^3): the axis starts at 0
 //   })
+// Returns the axis range and the plotted samples' minimum; the labels (ticks, marks, yLabel)
+// go through the label layout (app/label-layout.js): no overlap, at least the minimum size.
+import { plotLabels, plotFontPx, measureText } from '../app/label-layout.js';
 
-const PAD = { left: 46, right: 10, top: 10, bottom: 22 };
+// top: the y label's row, then half a tick label above the top grid line.
+const padFor = (px) => ({ left: Math.round(measureText('-0.000', px) + 10), right: 10, top: Math.round(px * 1.9 + 7), bottom: Math.round(px * 1.25 + 6) });
 
 function niceRange(lo, hi) {
   if (!Number.isFinite(lo) || !Number.isFinite(hi)) return [0, 1];
@@ -25,7 +31,7 @@ function tickLabel(x) {
   return String(Number(x.toPrecision(3)));
 }
 
-export function drawSeriesPlot(canvas, { series, marks = [], cursor = null, yLabel = '', colors }) {
+export function drawSeriesPlot(canvas, { series, marks = [], cursor = null, yLabel = '', colors, nonNegative = false }) {
   const rect = canvas.getBoundingClientRect();
   const dpr = window.devicePixelRatio || 1;
   const width = Math.max(1, rect.width);
@@ -50,38 +56,32 @@ export function drawSeriesPlot(canvas, { series, marks = [], cursor = null, yLab
     }
   }
   if (!Number.isFinite(uMin)) { uMin = 0; uMax = 1; }
+  const sampleMin = vMin;
   [vMin, vMax] = niceRange(Math.min(vMin, 0), vMax);
+  if (nonNegative) { vMin = 0; vMax = Math.max(vMax, 1e-12); }
+  const PAD = padFor(plotFontPx());
+  const labels = plotLabels(g, canvas, width, height);
   const plotW = width - PAD.left - PAD.right;
   const plotH = height - PAD.top - PAD.bottom;
   const X = (u) => PAD.left + ((u - uMin) / Math.max(uMax - uMin, 1e-12)) * plotW;
   const Y = (v) => PAD.top + (1 - (v - vMin) / (vMax - vMin)) * plotH;
 
-  g.font = '11px system-ui, "DejaVu Sans", sans-serif';
   g.lineWidth = 1;
   g.strokeStyle = colors.grid;
-  g.fillStyle = colors.muted;
-  g.textAlign = 'right';
-  g.textBaseline = 'middle';
   for (const v of [vMin, 0, vMax]) {
     if (v < vMin || v > vMax) continue;
     g.beginPath(); g.moveTo(PAD.left, Y(v)); g.lineTo(width - PAD.right, Y(v)); g.stroke();
-    g.fillText(tickLabel(v), PAD.left - 4, Y(v));
+    labels.text(tickLabel(v), PAD.left - 4, Y(v), { fill: colors.muted, align: 'right', priority: 2, fixed: true });
   }
-  g.textAlign = 'center';
-  g.textBaseline = 'top';
   g.setLineDash([4, 3]);
   g.strokeStyle = colors.muted;
   for (const m of marks) {
     const u = typeof m === 'number' ? m : m.u;
     g.beginPath(); g.moveTo(X(u), PAD.top); g.lineTo(X(u), PAD.top + plotH); g.stroke();
-    g.fillText(typeof m === 'number' ? `u=${tickLabel(u)}` : m.label, X(u), PAD.top + plotH + 4);
+    labels.text(typeof m === 'number' ? `u=${tickLabel(u)}` : m.label, X(u), PAD.top + plotH + 3, { fill: colors.muted, baseline: 'top', priority: 1, fixed: true });
   }
   g.setLineDash([]);
-  if (yLabel) {
-    g.textAlign = 'left';
-    g.fillStyle = colors.ink;
-    g.fillText(yLabel, PAD.left + 4, PAD.top);
-  }
+  if (yLabel) labels.text(yLabel, PAD.left + 4, 2, { fill: colors.ink, align: 'left', baseline: 'top', priority: 3 });
 
   for (const s of series) {
     g.strokeStyle = s.color;
@@ -105,5 +105,8 @@ export function drawSeriesPlot(canvas, { series, marks = [], cursor = null, yLab
     g.lineWidth = 1.5;
     g.beginPath(); g.moveTo(X(cursor), PAD.top); g.lineTo(X(cursor), PAD.top + plotH); g.stroke();
   }
-  return { X, Y, uMin, uMax, vMin, vMax };
+  labels.draw();
+  canvas.dataset.axisMin = String(vMin);
+  canvas.dataset.sampleMin = String(sampleMin);
+  return { X, Y, uMin, uMax, vMin, vMax, sampleMin };
 }

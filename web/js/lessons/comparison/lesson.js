@@ -9,7 +9,10 @@ import { formatSize as fmtDistance } from '../../ui/format.js';
 import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH } from './families.js';
 import { computeTable, LECTURE_TABLE, ROW_NAMES } from './checks.js';
 import { computeConversion, computeInvariance } from './transforms.js';
-import { drawCurve, drawPolygon, drawLegend } from '../../ui/curve-overlays.js';
+import { drawCurve, drawPolygon, drawLegend, arrowScale } from '../../ui/curve-overlays.js';
+
+// Hermite tangent arrows are drawn at a third of the tangent (as the curve explorer's T_i/3).
+const TANGENT_SCALE = 1 / 3;
 import { createBlendingPlot } from '../../ui/blending-plot.js';
 import { createMatrixPanel } from '../../ui/matrix-panel.js';
 import { computeDerivations, createDerivationPanel } from './derivation-panel.js';
@@ -106,7 +109,7 @@ export const lesson = {
     const xs = pts.map((p) => p[0]);
     const ys = pts.map((p) => p[1]);
     const [minY, maxY] = [Math.min(...ys), Math.max(...ys)];
-    // Room at the top for the legend.
+    // (The legend is under the canvas: app/canvas-legend.js.)
     return stage.fit(Math.min(...xs), minY - 0.3, Math.max(...xs), maxY + 0.3 * (maxY - minY) + 0.3);
   },
 
@@ -238,7 +241,8 @@ export const lesson = {
       }
       if (state.show.hermite) {
         const t = model.table.tangents;
-        state.points.forEach((p, i) => painter.arrow(p[0], p[1], p[0] + t[i][0] / 3, p[1] + t[i][1] / 3, { stroke: strokeOf('hermite'), width: 1.2, alpha: 0.8 }));
+        state.points.forEach((p, i) => painter.arrow(p[0], p[1], p[0] + t[i][0] * TANGENT_SCALE, p[1] + t[i][1] * TANGENT_SCALE, { stroke: strokeOf('hermite'), width: 1.2, alpha: 0.8 }));
+        legend.push([strokeOf('hermite'), `Hermite tangents t_i: arrows drawn at ${arrowScale(TANGENT_SCALE)} of t_i`, []]);
       }
     } else if (state.scene === 'conversion') {
       const m = model.conversion;
@@ -247,6 +251,7 @@ export const lesson = {
       legend.push([c.series[0], `${FAMILY_NAMES[m.from]} segment of P${state.conversion.start}..P${state.conversion.start + 3}`, []]);
       legend.push([c.series[1], m.mode === 'keep-curve' ? `${FAMILY_NAMES[m.to]} curve of q (max distance ${fmtDistance(m.distance)})` : `same G read as ${FAMILY_NAMES[m.to]}`, [8, 5]]);
       if (m.q) drawGeometry(painter, m.to, m.q, c.series[1], 'q', c);
+      if (m.q && m.to === 'hermite') legend.push([c.series[1], `Hermite tangents of q: arrows drawn at ${arrowScale(TANGENT_SCALE)} of t_i (label t_i/3)`, []]);
     } else {
       const inv = model.invariance;
       for (const piece of inv.drawing.bezier) {
@@ -267,7 +272,7 @@ export const lesson = {
       painter.circle(hd.x, hd.y, on ? 8 : 6, { fill: on ? c.highlight : c.background, stroke: c.ink, width: 1.5 });
       painter.text(hd.x, hd.y, hd.label, { fill: c.ink, font: 12, dx: 12, dy: -12, align: 'left', halo: c.background });
     }
-    drawLegend(painter, legend, { marker: '━', font: 13, halo: c.background });
+    drawLegend(painter, legend);
   },
 
   handles(view, model, state) { return handlesOf(state); },
@@ -347,7 +352,7 @@ function drawGeometry(painter, basis, q, color, name, c) {
     const p = [[q[0], q[1]], [q[2], q[3]]];
     const t = [[q[4], q[5]], [q[6], q[7]]];
     p.forEach((pt, i) => {
-      painter.arrow(pt[0], pt[1], pt[0] + t[i][0] / 3, pt[1] + t[i][1] / 3, { stroke: color, width: 2 });
+      painter.arrow(pt[0], pt[1], pt[0] + t[i][0] * TANGENT_SCALE, pt[1] + t[i][1] * TANGENT_SCALE, { stroke: color, width: 2 });
       painter.circle(pt[0], pt[1], 5, { fill: color });
       painter.text(pt[0], pt[1], `${name}: p${i}, t${i}/3`, { fill: color, font: 12, dy: 16, halo: c.background });
     });

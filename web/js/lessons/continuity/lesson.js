@@ -9,7 +9,7 @@ import { h, panel, table, setChildren } from '../../app/dom.js';
 import { formatNumber } from '../../ui/mathml.js';
 import { formatVector as fmtVec } from '../../ui/format.js';
 import { drawSeriesPlot } from '../../ui/series-plot.js';
-import { drawCurve, drawPolygon, drawSamples, drawVector, drawLegend } from '../../ui/curve-overlays.js';
+import { drawCurve, drawPolygon, drawSamples, drawVector, drawLegend, arrowScale } from '../../ui/curve-overlays.js';
 import { PRESETS, DEFAULT_PRESET } from './presets.js';
 import { CONSTRAINTS, dragWithConstraint, enforceAll, appendSegment } from './constraints.js';
 import { computeModel, segmentCurves, SAMPLES_PER_SEGMENT } from './model.js';
@@ -99,8 +99,8 @@ export const lesson = {
     for (const s of model.segments) for (let j = 0; j < s.points.length; j += 2) { xs.push(s.points[j]); ys.push(s.points[j + 1]); }
     for (const hd of handlesOf(model.state)) { xs.push(hd.x); ys.push(hd.y); }
     const [minY, maxY] = [Math.min(...ys), Math.max(...ys)];
-    // Room at the top for the legend.
-    return stage.fit(Math.min(...xs), minY, Math.max(...xs), maxY + 0.3 * (maxY - minY));
+    // The legend is under the canvas (app/canvas-legend.js): no room to keep for it here.
+    return stage.fit(Math.min(...xs), minY, Math.max(...xs), maxY);
   },
 
   setup(ctx) {
@@ -320,12 +320,15 @@ export const lesson = {
     const t = model.traveller;
     drawVector(painter, t.point, t.velocity, FIRST_SCALE, { stroke: c.series[4], width: 3, halo: c.background }, 'velocity P\'/3');
     painter.circle(t.point[0], t.point[1], 7, { fill: c.series[4], stroke: c.ink, width: 1.5 });
-    // legend (screen corner, in world coordinates of the current view)
-    const legend = [
-      [c.series[1], 'P\'/3 from the left (solid)'], [c.series[5], 'P\'/3 from the right (dashed)'],
-      [c.series[3], 'P\'\'/6 left'], [c.series[6], 'P\'\'/6 right (dashed)'], [c.series[4], 'travelling point, velocity P\'/3'],
-    ];
-    drawLegend(painter, legend, { marker: '■', font: 12, halo: c.background });
+    // The legend (HTML under the canvas): what each arrow is and the scale it is drawn at.
+    const legend = [];
+    const third = arrowScale(FIRST_SCALE); const sixth = arrowScale(SECOND_SCALE);
+    if (state.family === 'hermite') legend.push([c.muted, `Hermite tangents R, drawn at ${third} of R`, []]);
+    if (state.show.first) legend.push([c.series[1], 'P\'⁻/3 left', []], [c.series[5], 'P\'⁺/3 right', [6, 3]]);
+    if (state.show.second) legend.push([c.series[3], 'P\'\'⁻/6 left', []], [c.series[6], 'P\'\'⁺/6 right', [5, 3]]);
+    legend.push([c.series[4], 'velocity P\'/3 at the travelling point', []]);
+    legend.push([null, `arrows drawn at ${third} of P'(u)${state.show.second ? ` and ${sixth} of P''(u)` : ''}`]);
+    drawLegend(painter, legend);
   },
 
   // The plots of |P'|, P'' and the curvature follow every frame (the cursor at u).
@@ -403,7 +406,7 @@ function drawPlots(ui, model, state, ctx) {
   const plotColors = { ink: c.ink, muted: c.muted, grid: c.grid, background: c.background };
   const marks = model.joints.map((j) => ({ u: j.u, label: `J${j.index}` }));
   const speedPieces = model.segments.map((s) => ({ u: s.u, v: s.speed }));
-  drawSeriesPlot(ui.plots.speed, { series: [{ label: '|P\'|', color: c.series[4], pieces: speedPieces }], marks, cursor: state.u, yLabel: '|P\'(u)|', colors: plotColors });
+  drawSeriesPlot(ui.plots.speed, { series: [{ label: '|P\'|', color: c.series[4], pieces: speedPieces }], marks, cursor: state.u, yLabel: '|P\'(u)|', colors: plotColors, nonNegative: true });
   const comp = (k) => model.segments.map((s) => ({ u: s.u, v: s.u.map((_, j) => s.d2[2 * j + k]) }));
   drawSeriesPlot(ui.plots.second, {
     series: [{ label: 'x\'\'', color: c.series[0], pieces: comp(0) }, { label: 'y\'\'', color: c.series[1], dash: [6, 3], pieces: comp(1) }],
@@ -415,6 +418,7 @@ function drawPlots(ui, model, state, ctx) {
     : '';
   drawSeriesPlot(ui.plots.curvature, {
     series: [{ label: 'κ', color: c.series[2], pieces: model.segments.map((s) => ({ u: s.u, v: s.curvature })) }],
-    marks, cursor: state.u, yLabel: 'κ(u)', colors: plotColors,
+    // the core's kappa = |P' x P''| / |P'|^3 (lecture 004), never negative: the axis starts at 0
+    marks, cursor: state.u, yLabel: 'κ(u)', colors: plotColors, nonNegative: true,
   });
 }

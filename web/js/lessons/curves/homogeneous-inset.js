@@ -7,6 +7,8 @@
 //   inset.update({ lifted: [[wx, wy, w]...], curve3: Float64Array (stride 3),
 //                  projected: [[x, y]...], curve2: Float64Array (stride 2), at: [X, Y, W], colors });
 import { createPlotCanvas } from '../../ui/plot-canvas.js';
+import { plotLabels } from '../../app/label-layout.js';
+import { showLegend } from '../../app/canvas-legend.js';
 
 const DEPTH = [0.45, -0.3]; // screen direction of the y axis (oblique projection)
 
@@ -55,9 +57,9 @@ export function createHomogeneousInset(container) {
     line([0, 0, 0], [ext, 0, 0], { stroke: colors.muted });
     line([0, 0, 0], [0, ext, 0], { stroke: colors.muted });
     line([0, 0, 0], [0, 0, 1.6], { stroke: colors.muted });
-    g.fillStyle = colors.muted; g.font = '12px system-ui, sans-serif';
-    g.fillText('w', ...S([0, 0, 1.65]));
-    g.fillText('w = 1', ...S([-0.1 * ext, 0, 1]));
+    const labels = plotLabels(g, surface.canvas, width, height);
+    labels.text('w', ...S([0, 0, 1.65]), { fill: colors.muted, priority: 1, halo: colors.background });
+    labels.text('w = 1', ...S([-0.1 * ext, 0, 1]), { fill: colors.muted, halo: colors.background });
     // rays from the origin through each lifted point to its projection
     data.lifted.forEach((p, i) => {
       const far = p[2] >= 1 ? p : [p[0] / p[2], p[1] / p[2], 1];
@@ -74,10 +76,9 @@ export function createHomogeneousInset(container) {
     line([0, 0, 0], data.at, { stroke: colors.highlight, width: 1.5 });
     const [ax, ay] = S(data.at);
     g.fillStyle = colors.highlight; g.beginPath(); g.arc(ax, ay, 5, 0, Math.PI * 2); g.fill();
-    g.fillStyle = colors.ink;
-    g.fillText('3D polynomial curve', 8, height - 24);
-    g.fillStyle = colors.accent;
-    g.fillText('its projection on w = 1 (the NURBS)', 8, height - 8);
+    labels.draw();
+    // The legend under the inset, never over its drawing (issue 18).
+    showLegend(surface.canvas, [[colors.ink, '3D polynomial curve', []], [colors.accent, 'its projection on w = 1 (the NURBS)', []]]);
   }
   surface.onRedraw(draw);
   return {

@@ -9,16 +9,20 @@
 // groups: the distinct knots as the core reports them ({ value, multiplicity, firstIndex,
 // continuity }, api.knotMultiplicities).
 import { createPlotCanvas } from '../../ui/plot-canvas.js';
+import { plotLabels, plotFontPx } from '../../app/label-layout.js';
 import { formatShort as fmt } from '../../ui/format.js';
 import { continuityLabel } from './families.js';
 
 const PAD_X = 28;
-const AXIS_Y = 58;
+// The axis sits a label row above the bottom (the strip is taller in presentation mode,
+// curves.css): axisFor(height) px from the top.
+const axisFor = (height) => Math.round(height - plotFontPx() * 1.25 - 16);
 const STACK_PX = 11;
 const HIT_PX = 12;
 
 export function createKnotStrip(container, { onChange, label = 'Knot strip' } = {}) {
   const surface = createPlotCanvas(container, { className: 'knot-strip', label, height: 96, tabIndex: 0, role: 'application' });
+  let AXIS_Y = axisFor(96); // set from the strip's height at every draw
   surface.canvas.setAttribute('aria-roledescription', 'knot strip');
   let data = null;
   let selected = null;
@@ -52,9 +56,9 @@ export function createKnotStrip(container, { onChange, label = 'Knot strip' } = 
     if (!data) return;
     const { colors } = data;
     const g = surface.begin(colors.background);
-    const scale = data.present ? 1.4 : 1;
     const w = surface.size.width;
-    g.font = `${12 * scale}px system-ui, "DejaVu Sans", sans-serif`;
+    AXIS_Y = axisFor(surface.size.height);
+    const labels = plotLabels(g, surface.canvas, w, surface.size.height);
     // domain
     g.fillStyle = colors.grid;
     g.fillRect(xOf(data.domain.start), AXIS_Y - 4, xOf(data.domain.end) - xOf(data.domain.start), 8);
@@ -66,7 +70,6 @@ export function createKnotStrip(container, { onChange, label = 'Knot strip' } = 
     g.lineWidth = 2;
     g.beginPath(); g.moveTo(xOf(data.u), AXIS_Y - 10); g.lineTo(xOf(data.u), AXIS_Y + 10); g.stroke();
     // knots
-    g.textAlign = 'center';
     for (const group of data.groups) {
       const x = xOf(group.value);
       for (let j = group.firstIndex; j < group.firstIndex + group.multiplicity; j += 1) {
@@ -76,22 +79,15 @@ export function createKnotStrip(container, { onChange, label = 'Knot strip' } = 
         g.fillStyle = j === selected ? colors.highlight : (data.editable ? colors.accent : colors.muted);
         g.fill();
       }
-      const top = AXIS_Y - (group.multiplicity - 1) * STACK_PX - 12;
-      g.fillStyle = colors.ink;
-      g.textBaseline = 'bottom';
+      const top = AXIS_Y - (group.multiplicity - 1) * STACK_PX - 8;
       const inside = group.value > data.domain.start && group.value < data.domain.end;
       const text = inside ? continuityLabel(group.continuity) : '';
-      g.fillText(group.multiplicity > 1 ? `${text} ×${group.multiplicity}`.trim() : text, x, top);
-      g.fillStyle = colors.muted;
-      g.textBaseline = 'top';
-      g.fillText(fmt(group.value), x, AXIS_Y + 12);
+      const label = group.multiplicity > 1 ? `${text} ×${group.multiplicity}`.trim() : text;
+      if (label) labels.text(label, x, top, { fill: colors.ink, baseline: 'bottom', priority: 1, fixed: true });
+      labels.text(fmt(group.value), x, AXIS_Y + 10, { fill: colors.muted, baseline: 'top', priority: 2, fixed: true });
     }
-    if (selected !== null) {
-      g.textAlign = 'left';
-      g.fillStyle = colors.highlight;
-      g.textBaseline = 'top';
-      g.fillText(`t${sub(selected)} = ${fmt(data.knots[selected])}`, 4, 2);
-    }
+    if (selected !== null) labels.text(`t${sub(selected)} = ${fmt(data.knots[selected])}`, 4, 2, { fill: colors.highlight, align: 'left', baseline: 'top', priority: 3 });
+    labels.draw();
   }
   surface.onRedraw(draw);
 

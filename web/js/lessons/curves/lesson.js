@@ -8,7 +8,7 @@ import { number, integer, boolean, oneOf, list, object, viewSchema } from '../..
 import { FAMILY_IDS, familyInfo, usesKnots, isSpline, defaultPoints, defaultTangents, DEFAULT_KNOTS } from './families.js';
 import { OVERLAYS, CONSTRUCTIONS, DEFAULT_OVERLAYS, blendingLabels } from './names.js';
 import { computeCurveModel, constructionsFor } from './curve-model.js';
-import { drawCurve, drawInfluence, drawPolygon, drawHull, drawVector, drawComb, drawMarks, drawSamples, drawLevels } from '../../ui/curve-overlays.js';
+import { drawCurve, drawInfluence, drawPolygon, drawHull, drawVector, drawComb, drawMarks, drawSamples, drawLevels, drawLegend, arrowScale } from '../../ui/curve-overlays.js';
 import { createPanels, updatePanels, drawPlots } from './panels.js';
 import { formatNumber } from '../../ui/mathml.js';
 
@@ -138,23 +138,29 @@ export const lesson = {
     if (o.tangent) drawVector(painter, model.point, model.d1, 1 / 3, { stroke: c.series[4], halo: c.background }, "P'(u)/3");
     if (o.second) drawVector(painter, model.point, model.d2, 1 / 6, { stroke: c.series[5], halo: c.background }, "P''(u)/6");
     painter.circle(px, py, 7, { fill: c.highlight, stroke: c.background, width: 2 });
-    painter.text(px, py, `P(${formatNumber(model.u, 3)})`, { fill: c.highlight, font: 13, dx: 0, dy: 18, halo: c.background });
+    painter.text(px, py, `P(${formatNumber(model.u, 3)})`, { fill: c.highlight, font: 13, dx: 0, dy: 18, halo: c.background, priority: 1 });
     // control points (and Hermite tangent tips) with their labels
     const newPoints = model.construction?.kind === 'insert-knot' && state.construction.step >= 1;
     state.points.forEach(([x, y], i) => {
       const selected = ctx.ui.selected === `p${i}`;
       const w = state.family === 'nurbs' ? ` w=${formatNumber(state.weights[i], 3)}` : '';
       painter.circle(x, y, selected ? 9 : 7, { fill: seriesOf(i), stroke: selected ? c.highlight : c.background, width: selected ? 3 : 2, alpha: newPoints ? 0.35 : 1 });
-      painter.text(x, y, `P${i}${w}`, { fill: seriesOf(i), font: 13, dx: 14, dy: -12, halo: c.background, align: 'left' });
+      painter.text(x, y, `P${i}${w}`, { fill: seriesOf(i), font: 13, dx: 14, dy: -12, halo: c.background, align: 'left', priority: selected ? 3 : 1 });
     });
     if (state.family === 'hermite') {
       state.points.forEach(([x, y], i) => {
         const [tx, ty] = state.tangents[i];
         const selected = ctx.ui.selected === `t${i}`;
         painter.circle(x + tx / 3, y + ty / 3, selected ? 7 : 5, { fill: c.background, stroke: selected ? c.highlight : seriesOf(i), width: 2.5 });
-        painter.text(x + tx / 3, y + ty / 3, `T${i}/3`, { fill: seriesOf(i), font: 12, dx: 12, dy: 10, halo: c.background, align: 'left' });
+        painter.text(x + tx / 3, y + ty / 3, `T${i}/3`, { fill: seriesOf(i), font: 12, dx: 12, dy: 10, halo: c.background, align: 'left', priority: selected ? 3 : 1 });
       });
     }
+    // The legend (under the canvas): the scale of every arrow drawn.
+    drawLegend(painter, [
+      ...(state.family === 'hermite' ? [[c.ink, `Hermite tangents T_i: dashed arrows drawn at ${arrowScale(1 / 3)} of T_i (label T_i/3)`, [5, 3]]] : []),
+      ...(o.tangent ? [[c.series[4], `tangent at the point: arrow drawn at ${arrowScale(1 / 3)} of P'(u)`, []]] : []),
+      ...(o.second ? [[c.series[5], `second derivative: arrow drawn at ${arrowScale(1 / 6)} of P''(u)`, []]] : []),
+    ]);
   },
 
   // The blending plot, the knot strip and the homogeneous inset follow every frame (the

@@ -382,7 +382,9 @@ function drawBaseCached(baseCache, painter, model, state, ctx, plan) {
     const g = canvas.getContext('2d');
     g.setTransform(dpr, 0, 0, dpr, 0, 0);
     g.clearRect(0, 0, width, height);
-    drawBase(new CanvasPainter(g, painter.t, { scale: painter.scale, background: ctx.colors.background }), model, state, ctx.colors, { vertices: [], faces: [], edges: [] });
+    const basePainter = new CanvasPainter(g, painter.t, { scale: painter.scale, background: ctx.colors.background });
+    drawBase(basePainter, model, state, ctx.colors, { vertices: [], faces: [], edges: [] });
+    basePainter.finish();
     Object.assign(baseCache, { key, sceneKey, view: { ...v }, canvas, ms: performance.now() - t0 });
   }
   painter.g.drawImage(baseCache.canvas, 0, 0, width, height);
@@ -430,7 +432,7 @@ function drawWalk(painter, model, state, colors) {
     const s = model.weShown.edges[8 * e]; const t = model.weShown.edges[8 * e + 1];
     const x = P[3 * s] + (P[3 * t] - P[3 * s]) * 0.7; const y = P[3 * s + 1] + (P[3 * t + 1] - P[3 * s + 1]) * 0.7;
     painter.circle(x, y, 10, { fill: found, stroke: colors.background, width: 1.5 });
-    painter.text(x, y, String(k + 1), { fill: colors.background, font: 12, weight: 700 });
+    painter.text(x, y, String(k + 1), { fill: colors.background, font: 12, weight: 700, fixed: true, priority: 1 });
   }
   if (!frame.done && frame.next >= 0 && frame.line >= 2) highlightEdge(painter, model, frame.next, { stroke: found, width: 3, dash: [6, 6] });
 }

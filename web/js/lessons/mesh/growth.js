@@ -6,6 +6,7 @@
 // storage (mesh.storage: bytes per representation). The page only plots them, on log-log
 // axes, and lists them in a table for the keyboard and screen readers.
 import { h } from '../../app/dom.js';
+import { plotLabels, plotFontPx } from '../../app/label-layout.js';
 import { createVirtualTable } from '../../ui/virtual-table.js';
 
 export const GROWTH_SIZES = [4, 8, 16, 32, 64, 128];
@@ -33,7 +34,8 @@ export function growthSeries(api, kind) {
   return { sizes, series };
 }
 
-const PAD = { left: 52, right: 24, top: 14, bottom: 30 };
+// Room for the axis numbers at the label size (app/label-layout.js).
+const padFor = (px) => ({ left: Math.round(px * 2.6 + 12), right: 24, top: Math.round(px * 1.25 + 8), bottom: Math.round(px * 1.25 + 10) });
 const SUPERSCRIPT = '⁰¹²³⁴⁵⁶⁷⁸⁹';
 const power = (k) => `10${String(k).split('').map((d) => (d === '-' ? '⁻' : SUPERSCRIPT[Number(d)])).join('')}`;
 
@@ -47,28 +49,25 @@ function drawGrowth(canvas, { sizes, series }, { colors, names, yLabel }) {
   g.setTransform(dpr, 0, 0, dpr, 0, 0);
   g.fillStyle = colors.background;
   g.fillRect(0, 0, width, height);
+  const PAD = padFor(plotFontPx());
   const xs = sizes.map((s) => Math.log10(s.faces));
   const values = Object.values(series).flat().filter((v) => v > 0);
   const x0 = Math.floor(Math.min(...xs)); const x1 = Math.ceil(Math.max(...xs));
   const y0 = Math.floor(Math.log10(Math.min(...values))); const y1 = Math.ceil(Math.log10(Math.max(...values)));
   const X = (x) => PAD.left + ((x - x0) / Math.max(1, x1 - x0)) * (width - PAD.left - PAD.right);
   const Y = (y) => PAD.top + (1 - (y - y0) / Math.max(1, y1 - y0)) * (height - PAD.top - PAD.bottom);
-  g.font = '12px system-ui, "DejaVu Sans", sans-serif';
-  g.strokeStyle = colors.grid; g.fillStyle = colors.muted; g.lineWidth = 1;
-  g.textAlign = 'right'; g.textBaseline = 'middle';
+  const labels = plotLabels(g, canvas, width, height);
+  g.strokeStyle = colors.grid; g.lineWidth = 1;
   for (let k = y0; k <= y1; k += 1) {
     g.beginPath(); g.moveTo(PAD.left, Y(k)); g.lineTo(width - PAD.right, Y(k)); g.stroke();
-    g.fillText(power(k), PAD.left - 4, Y(k));
+    labels.text(power(k), PAD.left - 4, Y(k), { fill: colors.muted, align: 'right', priority: 1, fixed: true });
   }
-  g.textAlign = 'center'; g.textBaseline = 'top';
   for (let k = x0; k <= x1; k += 1) {
     g.beginPath(); g.moveTo(X(k), PAD.top); g.lineTo(X(k), height - PAD.bottom); g.stroke();
-    g.fillText(power(k), X(k), height - PAD.bottom + 4);
+    labels.text(power(k), X(k), height - PAD.bottom + 4, { fill: colors.muted, baseline: 'top', priority: 1, fixed: true });
   }
-  g.fillStyle = colors.ink; g.textAlign = 'right'; g.textBaseline = 'bottom';
-  g.fillText('faces F', width - PAD.right, height - 2);
-  g.textAlign = 'left'; g.textBaseline = 'top';
-  g.fillText(yLabel, PAD.left + 4, 0);
+  labels.text('faces F', width - PAD.right, height - PAD.bottom - 4, { fill: colors.ink, align: 'right', baseline: 'bottom', halo: colors.background });
+  labels.text(yLabel, PAD.left + 4, PAD.top, { fill: colors.ink, align: 'left', baseline: 'top', halo: colors.background, priority: 2 });
   Object.keys(series).forEach((rep, i) => {
     const colour = colors.series[i % colors.series.length];
     g.strokeStyle = colour; g.fillStyle = colour; g.lineWidth = 2;
@@ -79,6 +78,7 @@ function drawGrowth(canvas, { sizes, series }, { colors, names, yLabel }) {
     g.setLineDash([]);
     series[rep].forEach((v, k) => { g.beginPath(); g.arc(X(xs[k]), Y(Math.log10(Math.max(v, 1))), 3, 0, 2 * Math.PI); g.fill(); });
   });
+  labels.draw(); // the labels last, on top of the lines, none over another (app/label-layout.js)
   return Object.keys(series).map((rep, i) => ({ rep, name: names(rep), colour: colors.series[i % colors.series.length], dashed: i % 2 === 1 }));
 }
 

@@ -5,9 +5,10 @@
 // frame fits the polygon and stays still while a point is dragged, so the point stays under
 // the pointer. Every position drawn is the core's (the lesson's compute asked for it).
 import { createPlotCanvas } from '../../ui/plot-canvas.js';
+import { showLegend } from '../../app/canvas-legend.js';
 
 const PAD = 14;        // px around the polygon
-const LABELS = 14;     // px above it for the legend
+const LABELS = 0;      // px above it for a legend (the legend is HTML under the plot: app/canvas-legend.js)
 const HIT_PX = 12;     // a press this close to a control point (CSS px) picks it
 const ROUND = 1e4;     // dragged coordinates are kept to 1e-4 (short links)
 
@@ -111,10 +112,9 @@ export function createCurvePlot(container, ctx) {
       path(refined, { stroke: colors.series[0], width: 1.5 }, closed);
       if (refined.length <= 400) dots(refined, 2.5, colors.series[0]);
       g.setLineDash([]);
-      g.font = '12px system-ui, sans-serif';
-      g.fillStyle = colors.muted; g.fillText('control polygon', 6, 12);
-      g.fillStyle = colors.series[0]; g.fillText(`after ${steps} step${steps === 1 ? '' : 's'}`, 112, 12);
-      g.fillStyle = colors.series[1]; g.fillText('B-spline (limit)', 200, 12);
+      // The legend under the plot, never over the curves (issue 18).
+      showLegend(plot.canvas, [[colors.muted, 'control polygon', [5, 4]], [colors.series[0], `after ${steps} step${steps === 1 ? '' : 's'}`, []],
+        [colors.series[1], 'B-spline (limit)', []]]);
     },
   };
 }

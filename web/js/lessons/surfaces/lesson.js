@@ -9,6 +9,7 @@ import { object, list, number, oneOf, boolean, integer, viewSchema } from '../..
 import { h, panel, table } from '../../app/dom.js';
 import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
 import { createCamera, projectAll } from './view3d.js';
+import { drawLegend, arrowScale } from '../../ui/curve-overlays.js';
 import { defaultBezierNet, handleOf, hermiteEntryFromHandle, entryName, joinPatches, sharedEntriesOfB } from './nets.js';
 
 const GRID = 17; // samples per direction: u = i / 16
@@ -388,13 +389,12 @@ export const lesson = {
     /** @type {[string, number[]][]} */ ([['x', [1, 0, 0]], ['y', [0, 1, 0]], ['z', [0, 0, 1]]]).forEach(([name, dir], k) => {
       const [ax, ay] = createCamera({ ...state.camera, perspective: false }).project(...dir);
       painter.arrow(ox, oy, ox + ax * axisLen, oy + ay * axisLen, { stroke: c.series[[0, 1, 2][k]], width: 2 });
-      painter.text(ox + ax * axisLen * 1.3, oy + ay * axisLen * 1.3, name, { fill: c.ink, font: 12 });
+      painter.text(ox + ax * axisLen * 1.3, oy + ay * axisLen * 1.3, name, { fill: c.ink, font: 12, priority: 1 });
     });
-    const [lx, ly] = tr.toWorld(12, 16);
-    const lineH = (20 * (painter.scale ?? 1)) / tr.zoom;
-    /** @type {[string, string][]} */ ([[c.series[0], '━ iso-curves u = const'], [c.series[1], '━ iso-curves v = const'], [c.series[2], '○ corners (interpolated)'],
-      [c.series[3], '→ twist vectors p_uv / 9'], [c.series[4], '● p(u, v) at the marker']])
-      .forEach(([color, words], i) => painter.text(lx, ly - i * lineH, words, { fill: color, font: 13, align: 'left', halo: c.background }));
+    // The legend, under the canvas (app/canvas-legend.js), with the twist arrows' scale.
+    drawLegend(painter, [[c.series[0], 'iso-curves u = const', []], [c.series[1], 'iso-curves v = const', []], [c.series[2], 'corners (interpolated), circled', []],
+      ...(state.show.twists ? [[c.series[3], `twist vectors p_uv: arrows drawn at ${arrowScale(TWIST_SCALE)} of p_uv (label p_uv/9)`, []]] : []),
+      [c.series[4], 'p(u, v) at the marker, a dot', []]]);
   },
 
   handles(view, model, state) {
