@@ -13,6 +13,8 @@ const env = useSiteAndBrowser();
 // Lecture 003 (003_55ddbc47c7ee2ef3.txt), row by row.
 const M_BSPLINE = [[-1, 3, -3, 1], [3, -6, 3, 0], [-3, 0, 3, 0], [1, 4, 1, 0]];
 const M_CR = [[-1, 3, -3, 1], [2, -5, 4, -1], [-1, 0, 1, 0], [0, 2, 0, 0]];
+// Lecture 002 (002_5284cf65dc3cb6f3.txt): M_s = B^-1 A = 1/6 (1 4 1 0; -3 0 3 0; 3 -6 3 0; -1 3 -3 1).
+const M_S_002 = [[1, 4, 1, 0], [-3, 0, 3, 0], [3, -6, 3, 0], [-1, 3, -3, 1]];
 const transpose = (m) => m[0].map((_, j) => m.map((row) => row[j]));
 
 // What the panel typesets for M: the factor in front (numerator, denominator) or null, and the
@@ -49,55 +51,34 @@ test('uniform B-spline: f and the checkbox switch M between decimals and lecture
   assert.deepEqual(shown.entries, strings(M_BSPLINE));
   assert.equal(await page.isChecked('#matrix-fractions'), true);
 
-  // Lecture 001's transposed form: the same fraction, the integers transposed.
+  // m steps through the forms: lecture 002's ascending form (M_s as 002 prints it), then
+  // lecture 001's transposed form.
+  await page.keyboard.press('m');
+  await frame(page);
+  assert.equal((await page.evaluate(() => window.wingspline.state)).form, 'ascending');
+  shown = await shownM(page);
+  assert.deepEqual(shown.fraction, ['1', '6']);
+  assert.deepEqual(shown.entries, strings(M_S_002));
   await page.keyboard.press('m');
   await frame(page);
   shown = await shownM(page);
   assert.deepEqual(shown.fraction, ['1', '6']);
   assert.deepEqual(shown.entries, strings(transpose(M_BSPLINE)));
+  assert.equal(await page.inputValue('#matrix-form'), 'transposed');
 
-  // Undo takes back the transposition, then the notation (each was one step).
+  // Undo takes back each form step, then the notation (each was one step).
   await page.click('[data-action=undo]');
+  await frame(page);
+  assert.deepEqual((await shownM(page)).entries, strings(M_S_002));
   await page.click('[data-action=undo]');
   await frame(page);
-  shown = await shownM(page);
-  assert.equal(shown.notation, 'decimal');
-  assert.equal(shown.fraction, null);
-
-  // The pointer: the checkbox does the same as f.
-  await page.click('#matrix-fractions');
+  assert.deepEqual((await shownM(page)).entries, strings(M_BSPLINE));
+  // The form choice by pointer.
+  await page.selectOption('#matrix-form', 'ascending');
   await frame(page);
-  shown = await shownM(page);
-  assert.deepEqual(shown.fraction, ['1', '6']);
-  assert.deepEqual(shown.entries, strings(M_BSPLINE));
-});
-
-test('Catmull-Rom in fractions is 1/2 [integers]; the notation travels in a share link', async () => {
-  const page = await openCurves(env);
-  await chooseFamily(page, 'catmull-rom');
-  await page.click('#matrix-fractions');
+  assert.deepEqual((await shownM(page)).entries, strings(M_S_002));
+  await page.selectOption('#matrix-form', 'descending');
   await frame(page);
-  const shown = await shownM(page);
-  assert.deepEqual(shown.fraction, ['1', '2']);
-  assert.deepEqual(shown.entries, strings(M_CR));
-
-  const url = await page.evaluate(() => window.wingspline.shareUrl());
-  const other = await env.openPage(url, { colorScheme: 'light' });
-  await other.waitForSelector('body[data-ready=true]');
-  await frame(other);
-  assert.equal((await other.evaluate(() => window.wingspline.state)).notation, 'fraction');
-  const again = await shownM(other);
-  assert.deepEqual(again.fraction, ['1', '2']);
-  assert.deepEqual(again.entries, strings(M_CR));
-});
-
-test('Bezier has integer entries (no factor); uneven knots stay in decimals and the note says why', async () => {
-  const page = await openCurves(env);
-  await page.click('#matrix-fractions');
-  await frame(page);
-  let shown = await shownM(page);
-  assert.equal(shown.fraction, null, 'lecture 003 writes M_Bezier without a factor');
-  assert.deepEqual(shown.entries, strings([[-1, 3, -3, 1], [3, -6, 3, 0], [-3, 3, 0, 0], [1, 0, 0, 0]]));
 
   // A non-uniform B-spline with an irrational interior knot: no small common denominator.
   await chooseFamily(page, 'bspline');
@@ -106,7 +87,7 @@ test('Bezier has integer entries (no factor); uneven knots stay in decimals and 
   // Degree 2 on 4 points: 7 knots, one interior knot at 0.3/sqrt 2, an irrational ratio of
   // the two spans, so M on the first span has no small common denominator.
   const knots = [0, 0, 0, 0.3 * Math.SQRT1_2, 1, 1, 1];
-  const link = envelopeCode('curves', 2, { ...state, degree: 2, knots, u: 0.1 });
+  const link = envelopeCode('curves', 3, { ...state, degree: 2, knots, u: 0.1 });
   const other = await env.openPage(`${env.site.url}curves.html#s=${link}`, { colorScheme: 'light' });
   await other.waitForSelector('body[data-ready=true]');
   await frame(other);
@@ -115,15 +96,35 @@ test('Bezier has integer entries (no factor); uneven knots stay in decimals and 
   assert.match(await other.textContent('.matrix-panel .hint'), /not fractions with a small common denominator/);
 });
 
-test('an old (version 1) link without the notation opens in decimals', async () => {
+test('old links open as they did: version 1 without the notation, version 2 with the lecture-001 checkbox', async () => {
   const page = await openCurves(env);
-  const { notation, ...old } = await page.evaluate(() => window.wingspline.state);
+  const { notation, form, ...rest } = await page.evaluate(() => window.wingspline.state);
   assert.equal(notation, 'decimal');
-  const other = await env.openPage(`${env.site.url}curves.html#s=${envelopeCode('curves', 1, { ...old, transposed: true })}`, { colorScheme: 'light' });
-  await other.waitForSelector('body[data-ready=true]');
-  const state = await other.evaluate(() => window.wingspline.state);
+  assert.equal(form, 'descending');
+  const open = async (version, state) => {
+    const other = await env.openPage(`${env.site.url}curves.html#s=${envelopeCode('curves', version, state)}`, { colorScheme: 'light' });
+    await other.waitForSelector('body[data-ready=true]');
+    await frame(other);
+    return other;
+  };
+  let other = await open(1, { ...rest, transposed: true });
+  let state = await other.evaluate(() => window.wingspline.state);
   assert.equal(state.notation, 'decimal');
-  assert.equal(state.transposed, true, 'the rest of the old link is kept');
+  assert.equal(state.form, 'transposed', 'the old checkbox becomes lecture 001\'s form');
+  assert.equal('transposed' in state, false);
+  assert.equal(await other.$eval('.matrix-panel', (m) => m.dataset.form), 'transposed');
+  other = await open(2, { ...rest, notation: 'fraction', transposed: false });
+  state = await other.evaluate(() => window.wingspline.state);
+  assert.deepEqual([state.form, state.notation], ['descending', 'fraction']);
+  // A tampered link: the checkbox is not true or false. Refused with a message, default kept.
+  other = await open(2, { ...rest, notation: 'fraction', transposed: 'yes' });
+  state = await other.evaluate(() => window.wingspline.state);
+  assert.equal(state.form, 'descending');
+  assert.match(await other.evaluate(() => window.wingspline.message()), /could not be upgraded to version 3/);
+  // ... and a version-3 link with a form the page does not know.
+  other = await open(3, { ...rest, notation: 'decimal', form: 'upside-down' });
+  assert.equal((await other.evaluate(() => window.wingspline.state)).form, 'descending');
+  assert.match(await other.evaluate(() => window.wingspline.message()), /form/);
 });
 
 test('the notes say where the lectures disagree: 002\'s Catmull-Rom first row, 001\'s row and column T', async () => {
@@ -137,7 +138,7 @@ test('the notes say where the lectures disagree: 002\'s Catmull-Rom first row, 0
   await page.click('#matrix-fractions');
   await frame(page);
   assert.deepEqual((await shownM(page)).entries[0], ['-1', '3', '-3', '1']);
-  await page.click('#matrix-transposed');
+  await page.selectOption('#matrix-form', 'transposed');
   await frame(page);
   assert.match(await page.textContent('#notation-note'), /Lecture 001 writes T = \[t³ t² t 1\] as a row in Q\(t\) = T · C and as a column in G · M · T/);
   await chooseFamily(page, 'bezier');

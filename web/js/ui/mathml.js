@@ -12,6 +12,13 @@ export function el(tag, ...children) {
 export const mi = (text) => el('mi', text);
 export const mo = (text) => el('mo', text);
 export const mn = (text) => el('mn', text);
+// A bracket that keeps the height of a row (issue 18: the parentheses of P(u) and of a row
+// vector must not stretch to the height of a matrix beside them; matrix brackets still do).
+export const fixedMo = (text) => {
+  const node = mo(text);
+  node.setAttribute('stretchy', 'false');
+  return node;
+};
 
 // Formats a number for display: integers plainly, others with up to `digits` significant
 // digits, and -0 as 0.

@@ -12,6 +12,7 @@ import { computeConversion, computeInvariance } from './transforms.js';
 import { drawCurve, drawPolygon, drawLegend } from '../../ui/curve-overlays.js';
 import { createBlendingPlot } from '../../ui/blending-plot.js';
 import { createMatrixPanel } from '../../ui/matrix-panel.js';
+import { MATRIX_FORMS, createFormSelect, nextForm } from '../../ui/matrix-forms.js';
 import { computeDerivations, createDerivationPanel } from './derivation-panel.js';
 
 // The blending functions of one segment per point-based family: the convex hull row's
@@ -58,9 +59,11 @@ const handlesOf = (state) => state.points.map(([x, y], i) => ({ id: `p${i}`, x, 
 export const lesson = {
   id: 'comparison',
   title: 'Comparison lab',
-  stateVersion: 2,
+  stateVersion: 3,
   // Version 2 (issue 18): the notation of the matrix panels; older links show decimals.
-  migrations: { 1: (old) => ({ ...old, notation: 'decimal' }) },
+  // Version 3 (issue 18): the matrix form of the panels (MATRIX_FORMS); older links show
+  // lectures 000/003's form, as they did.
+  migrations: { 1: (old) => ({ ...old, notation: 'decimal' }), 2: (old) => ({ ...old, form: 'descending' }) },
   schema: {
     points: list(pair, { min: MIN_POINTS, max: MAX_POINTS }),
     scene: oneOf(...Object.keys(SCENES)),
@@ -72,6 +75,7 @@ export const lesson = {
       px: number({ min: -0.5, max: 0.5 }), py: number({ min: -0.5, max: 0.5 }),
     }),
     notation: oneOf('decimal', 'fraction'),
+    form: oneOf(...MATRIX_FORMS),
     view: viewSchema(),
   },
   checkState(state) {
@@ -86,6 +90,7 @@ export const lesson = {
     conversion: { from: 'bezier', to: 'hermite', start: 0, mode: 'keep-curve' },
     transform: { kind: 'affine', angle: 30, scale: 0.8, shear: 0.3, tx: 0.5, ty: -0.4, px: 0.06, py: 0.03 },
     notation: 'decimal',
+    form: 'descending',
     view: { cx: 0, cy: 0, zoom: 90 },
   }),
 
@@ -94,7 +99,7 @@ export const lesson = {
     return {
       state,
       table: computeTable(api, state.points),
-      conversion: computeConversion(api, state.points, state.conversion),
+      conversion: computeConversion(api, state.points, state.conversion, state.form),
       invariance: computeInvariance(api, state.points, state.transform),
       blending: BLEND_FAMILIES.map((family) => blendingOfFirstSegment(api, family, state.points)),
       derivations: computeDerivations(api, state.points),
@@ -160,10 +165,12 @@ export const lesson = {
       // Issue 18: M in exact fractions as on the slides (1/6 [...], 1/2 [...]) or decimals.
       fractions: h('input', { type: 'checkbox', id: 'conv-fractions', onchange: (e) => ctx.commit({ ...ctx.state, notation: e.target.checked ? 'fraction' : 'decimal' }) }),
     };
+    // Issue 18: the form of a lecture for the two matrix panels (000/003, 002, 001).
+    ({ select: conv.form, row: conv.formRow } = createFormSelect('conv-form', (form) => ctx.commit({ ...ctx.state, form })));
     convBody.append(h('div', { class: 'form-row' },
       h('label', { for: 'conv-mode' }, 'Mode ', conv.mode), h('label', { for: 'conv-from' }, 'P read as ', conv.from),
       h('label', { for: 'conv-to' }, 'other basis ', conv.to), h('label', { for: 'conv-start' }, 'first point P', conv.start),
-      h('label', { class: 'check' }, conv.fractions, ' Exact fractions as on the slides')), conv.out, conv.matrices);
+      h('label', { class: 'check' }, conv.fractions, ' Exact fractions as on the slides')), conv.formRow, conv.out, conv.matrices);
     conv.fromPanel = createMatrixPanel(conv.matrices);
     conv.toPanel = createMatrixPanel(conv.matrices);
 
@@ -186,6 +193,8 @@ export const lesson = {
     ctx.keymap.add({ keys: ['n'], label: 'add a segment (three points)', group: 'Lesson', action: addSegment });
     ctx.keymap.add({ keys: ['f'], label: 'matrix entries: exact fractions or decimals', group: 'Lesson',
       action: () => ctx.commit({ ...ctx.state, notation: ctx.state.notation === 'fraction' ? 'decimal' : 'fraction' }) });
+    ctx.keymap.add({ keys: ['m'], label: 'next matrix form: lectures 000/003, 002, 001', group: 'Lesson',
+      action: () => ctx.commit({ ...ctx.state, form: nextForm(ctx.state.form) }) });
     ctx.keymap.add({ keys: ['x'], label: 'remove the last segment', group: 'Lesson', action: removeSegment });
 
     ctx.keymap.add({ keys: ['v'], label: 'next scene: families, conversion, invariance', group: 'Lesson', action: () => {
@@ -219,8 +228,9 @@ export const lesson = {
     const m = model.conversion;
     const name = (k) => FAMILY_NAMES[k];
     ui.conv.fractions.checked = state.notation === 'fraction';
-    ui.conv.fromPanel.update({ segment: m.segmentFrom, u: 0.5, point: m.midFrom, notation: state.notation, title: `${name(m.from)}: the segment as drawn (P)` });
-    ui.conv.toPanel.update({ segment: m.segmentTo, u: 0.5, point: m.midTo, notation: state.notation,
+    ui.conv.form.value = state.form;
+    ui.conv.fromPanel.update({ segment: m.segmentFrom, u: 0.5, point: m.midFrom, notation: state.notation, form: state.form, title: `${name(m.from)}: the segment as drawn (P)` });
+    ui.conv.toPanel.update({ segment: m.segmentTo, u: 0.5, point: m.midTo, notation: state.notation, form: state.form,
       title: m.q ? `${name(m.to)}: the same curve from q` : `${name(m.to)}: the same G with M swapped` });
   },
 

@@ -71,7 +71,7 @@ export function computeCurveModel(api, state, cache) {
   // P, P', P'' at u in one pass: values[2k + c] is component c of the k-th derivative.
   const pd = api.evaluateWithDerivatives(spec, Float64Array.of(u), 2);
   const segmentIndex = api.segmentAt(spec, u);
-  const segment = api.segmentMatrices(spec, segmentIndex);
+  const segment = api.segmentMatrices(spec, segmentIndex, { form: state.form });
 
   const model = {
     spec,

@@ -14,6 +14,7 @@ import { pairs } from '../../app/arrays.js';
 import { constructionsFor, createModelCache } from './curve-model.js';
 import { createBlendingPlot } from '../../ui/blending-plot.js';
 import { createMatrixPanel } from '../../ui/matrix-panel.js';
+import { createFormSelect, nextForm } from '../../ui/matrix-forms.js';
 import { createSubdivisionMatrices } from './subdivision-matrices.js';
 import { createKnotStrip } from './knot-strip.js';
 import { createHomogeneousInset } from './homogeneous-inset.js';
@@ -131,8 +132,9 @@ export function createPanels(ctx) {
 
   // ---------------------------------------------------------------- side panels
   const matrixBody = panel(ctx.panels, { id: 'panel-matrix', title: 'Matrix form of the current segment' });
-  const transposed = h('input', { type: 'checkbox', id: 'matrix-transposed', onchange: (e) => commit({ ...state(), transposed: e.target.checked }) });
-  matrixBody.append(h('label', { class: 'check' }, transposed, ' Lecture 001 form Q(t) = G · M · T (transposed M)'));
+  // Issue 18: the form of a lecture (descending 000/003, ascending 002, transposed 001).
+  const { select: formSelect, row: formRow } = createFormSelect('matrix-form', (form) => commit({ ...state(), form }));
+  matrixBody.append(formRow);
   // Issue 18: M in exact fractions as on the slides (1/6 [...], 1/2 [...]) or in decimals.
   const fractions = h('input', { type: 'checkbox', id: 'matrix-fractions', onchange: (e) => commit({ ...state(), notation: e.target.checked ? 'fraction' : 'decimal' }) });
   matrixBody.append(h('label', { class: 'check' }, fractions, ' Exact fractions as on the slides (1/6 [integers])'));
@@ -306,7 +308,7 @@ export function createPanels(ctx) {
   ctx.keymap.add({ keys: ['l'], label: 'u a little forward', group: 'Curve', action: () => nudgeU(1) });
   ctx.keymap.add({ keys: ['a'], label: 'add a control point after the selected one', group: 'Curve', action: () => addSelected() });
   ctx.keymap.add({ keys: ['Delete', 'Backspace'], label: 'remove the selected control point', group: 'Curve', action: () => removeSelected() });
-  ctx.keymap.add({ keys: ['m'], label: 'matrix form: u^T M G or G M T', group: 'Curve', action: () => commit({ ...state(), transposed: !state().transposed }) });
+  ctx.keymap.add({ keys: ['m'], label: 'next matrix form: lectures 000/003, 002, 001', group: 'Curve', action: () => commit({ ...state(), form: nextForm(state().form) }) });
   ctx.keymap.add({ keys: ['f'], label: 'matrix entries: exact fractions or decimals', group: 'Curve', action: () => commit({ ...state(), notation: state().notation === 'fraction' ? 'decimal' : 'fraction' }) });
   ctx.keymap.add({ keys: ['Shift+click'], label: 'add a control point at the mouse (on the drawing)', group: 'Curve' });
   function nudgeU(sign) {
@@ -317,7 +319,7 @@ export function createPanels(ctx) {
   // Shift+click on the drawing adds a point there (the lesson's click hook calls this).
   const addAt = (x, y) => addSelected([Math.round(x * 1e4) / 1e4, Math.round(y * 1e4) / 1e4]);
 
-  const view = { addAt, cache: createModelCache(), family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, transposed, fractions, notationNote, splitMatrices, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
+  const view = { addAt, cache: createModelCache(), family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, formSelect, fractions, notationNote, splitMatrices, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
     inspector, tangentFields, weightFields, knotField, knotTable, knotsPanel: knotsBody.parentElement, nurbsPanel: nurbsBody.parentElement, weightList, inset,
     degreeLabel: row1.querySelector('.degree-label'), tensionGroup: row1.querySelector('.tension-group'), lastKnotKey: null, lastWeightKey: null, conPlayer, uPlayer, commit, state, setKnots };
   return view;
@@ -354,13 +356,13 @@ export function updatePanels(els, model, state, ctx) {
   setValue(els.uSlider, model.u);
   els.uOut.textContent = formatNumber(model.u, 4);
   // matrix panel
-  els.transposed.checked = state.transposed;
+  els.formSelect.value = state.form;
   els.fractions.checked = state.notation === 'fraction';
   const noteText = notationNotes(state).join(' ');
   if (els.notationNote.textContent !== noteText) els.notationNote.textContent = noteText;
   els.notationNote.hidden = noteText === '';
   els.splitMatrices.update(state);
-  els.matrix.update({ segment: model.segment, u: model.u, point: model.point, transposed: state.transposed, notation: state.notation,
+  els.matrix.update({ segment: model.segment, u: model.u, point: model.point, form: state.form, notation: state.notation,
     title: `${familyInfo(state.family).label}, basis ${model.segment.basis ?? state.family}` });
   // constructions
   const kinds = constructionsFor(state.family, ctx.api);
@@ -540,7 +542,11 @@ function notationNotes(state) {
     notes.push('Lecture 002 prints the first row of M_R as (−1 3 −3 0); lecture 003 has (−1 3 −3 1), '
       + 'and only that row makes the blending functions add up to 1. The app computes lecture 003\'s matrix.');
   }
-  if (state.transposed) {
+  if (state.form === 'ascending') {
+    notes.push('Lecture 002 writes u = (1, u, u², u³) and C = M g: the matrix of lectures 000 and 003 with its rows in the opposite order '
+      + '(the row of u⁰ first); g is the same geometry.');
+  }
+  if (state.form === 'transposed') {
     notes.push('Lecture 001 writes T = [t³ t² t 1] as a row in Q(t) = T · C and as a column in G · M · T on the same slide; '
       + 'this form is the second one (T a column, M the transpose of the matrix of lectures 000 and 003, as in 001\'s M_H).');
   }
