@@ -38,7 +38,14 @@ export function matrix(rows, { digits = 4 } = {}) {
     }
     table.append(tr);
   }
-  return el('mrow', mo('['), table, mo(']'));
+  return bracketed(table, rows.length);
+}
+
+// [table] with brackets that stretch for a column or a matrix and keep the height of a row
+// for a row vector (issue 18: a one-row matrix's brackets no taller than a row).
+export function bracketed(table, rowCount, open = '[', close = ']') {
+  const b = rowCount === 1 ? fixedMo : mo;
+  return el('mrow', b(open), table, b(close));
 }
 
 export function math(...children) {

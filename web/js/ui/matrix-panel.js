@@ -13,7 +13,7 @@
 // fraction and the integers the core gives (shown.rational); 'decimal' (the default) writes
 // the entries as decimals. A matrix without a small common denominator stays in decimals
 // and the note says so.
-import { math, mi, mo, mn, el, fixedMo, formatNumber } from './mathml.js';
+import { math, mi, mo, mn, el, fixedMo, bracketed, formatNumber } from './mathml.js';
 
 export const MATRIX_DIGITS = 4;
 
@@ -61,12 +61,12 @@ export function createMatrixPanel(container) {
         table.append(tr);
       }
       slots[key].push(out);
-      const bracketed = tag(el('mrow', mo(ascending ? '(' : '['), table, mo(ascending ? ')' : ']')), role);
-      if (key !== 'M' || !fraction) return bracketed;
+      const inBrackets = tag(ascending ? bracketed(table, r, '(', ')') : bracketed(table, r), role);
+      if (key !== 'M' || !fraction) return inBrackets;
       // The slide's common factor in front: 1/d typeset as a fraction (d filled by update).
       const d = document.createTextNode('');
       slots.denominators.push(d);
-      return el('mrow', tag(el('mfrac', mn('1'), el('mn', d)), 'M-fraction'), bracketed);
+      return el('mrow', tag(el('mfrac', mn('1'), el('mn', d)), 'M-fraction'), inBrackets);
     };
     // The powers of the parameter: descending u^p .. u 1 (000, 001, 003), ascending
     // 1 u .. u^p (002).
@@ -79,8 +79,8 @@ export function createMatrixPanel(container) {
       return out;
     };
     // A row vector keeps the height of a row; a column vector's brackets stretch.
-    const powerRow = () => el('mrow', fixedMo('['), el('mtable', el('mtr', ...powers().map((x) => el('mtd', x)))), fixedMo(']'));
-    const powerColumn = () => el('mrow', mo('['), el('mtable', ...powers().map((x) => el('mtr', el('mtd', x)))), mo(']'));
+    const powerRow = () => bracketed(el('mtable', el('mtr', ...powers().map((x) => el('mtd', x)))), 1);
+    const powerColumn = () => bracketed(el('mtable', ...powers().map((x) => el('mtr', el('mtd', x)))), n);
     const shown = segment.shown;
     const [gr, gc] = [shown.geometryRows, shown.geometryColumns];
     const labelColumn = segment.labels.map((l) => [l]);
@@ -167,7 +167,7 @@ function setText(node, text) {
 function labelMatrix(cells, round = false) {
   const table = el('mtable');
   for (const row of cells) table.append(el('mtr', ...row.map((text) => el('mtd', labelNode(String(text))))));
-  return el('mrow', mo(round ? '(' : '['), table, mo(round ? ')' : ']'));
+  return round ? bracketed(table, cells.length, '(', ')') : bracketed(table, cells.length);
 }
 
 function mspace() {

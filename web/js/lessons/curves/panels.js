@@ -363,7 +363,7 @@ export function updatePanels(els, model, state, ctx) {
   els.notationNote.hidden = noteText === '';
   els.splitMatrices.update(state);
   els.matrix.update({ segment: model.segment, u: model.u, point: model.point, form: state.form, notation: state.notation,
-    title: `${familyInfo(state.family).label}, basis ${model.segment.basis ?? state.family}` });
+    title: segmentTitle(state, model.segment) });
   // constructions
   const kinds = constructionsFor(state.family, ctx.api);
   const wanted = ['none', ...kinds].join();
@@ -551,4 +551,16 @@ function notationNotes(state) {
       + 'this form is the second one (T a column, M the transpose of the matrix of lectures 000 and 003, as in 001\'s M_H).');
   }
   return notes;
+}
+
+// The heading of the matrix panel in the lectures' words (issue 18: never a state or basis
+// id): the family, and the basis when it is not the family's own name.
+const BASIS_NAMES = { hermite: 'Hermite', bezier: 'Bezier (Bernstein)', bspline: 'B-spline', 'catmull-rom': 'Catmull-Rom',
+  cardinal: 'cardinal spline', interpolation: 'Lagrange interpolation', nurbs: 'NURBS' };
+function segmentTitle(state, segment) {
+  const label = familyInfo(state.family).label;
+  if (state.family === 'catmull-rom' && state.tension !== 0) return `${label}: cardinal spline, tension ${formatNumber(state.tension, 3)}`;
+  if (state.family === 'nurbs') return `${label}: homogeneous B-spline segment`;
+  const name = BASIS_NAMES[segment.basis];
+  return name && !label.includes(name.split(' ')[0]) ? `${label}: ${name} basis` : label;
 }
