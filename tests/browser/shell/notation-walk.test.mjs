@@ -6,7 +6,8 @@
 //    line high; a stretched one beside a 4-row matrix is well over 3), while the brackets of
 //    the matrices themselves still stretch (more than 2.5 line heights for 4 rows);
 //  - no visible heading, caption, summary, label, option or table header shows a family or
-//    basis id of the lessons' schemas (bezier, bspline-uniform, catmull-rom, nubs, ...).
+//    basis id of the lessons' schemas (bezier, bspline-uniform, catmull-rom, nubs, ...);
+//  - no visible text outside the formulas has a raw "^" (C^(p-m) is typeset, C<sup>).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { useSiteAndBrowser } from '../../helpers/browser.mjs';
@@ -77,7 +78,21 @@ function ids() {
   return found;
 }
 
+// Visible text nodes outside MathML that hold a raw '^'.
+function carets() {
+  const found = [];
+  const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+  for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+    const parent = node.parentElement;
+    if (!node.data.includes('^') || !parent || parent.closest('math, script, style, textarea, [hidden]')) continue;
+    if (parent.getClientRects().length > 0 && parent.checkVisibility({ visibilityProperty: true })) found.push(node.data.trim().slice(0, 80));
+  }
+  return found;
+}
+
 async function check(page, stop, tally) {
+  const raw = await page.evaluate(carets);
+  assert.deepEqual(raw, [], `${stop}: raw "^" in visible text`);
   const m = await page.evaluate(measure);
   for (const f of m.fixed) assert.ok(f.height <= LINE_FACTOR, `${stop}: "${f.where}" is ${f.height.toFixed(2)} line heights (at most ${LINE_FACTOR})`);
   for (const s of m.stretched) assert.ok(s.height >= STRETCHED_FACTOR, `${stop}: the matrix bracket "${s.where}" should stretch (${s.height.toFixed(2)} line heights)`);

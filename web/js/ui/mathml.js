@@ -54,6 +54,16 @@ export function math(...children) {
   return node;
 }
 
+// A formula inside a sentence (no display=block): C^(p-m) in a caption is a superscript.
+export function inlineMath(...children) {
+  return el('math', ...children);
+}
+// C^(sup) with the superscript written as a row of names and signs, e.g. 'p−m', 'k'.
+export function continuityClass(letter, sup) {
+  const parts = sup.split(/([−+-])/).filter(Boolean).map((t) => (/^[−+-]$/.test(t) ? mo(t === '-' ? '−' : t) : /^\d+$/.test(t) ? mn(t) : mi(t)));
+  return inlineMath(el('msup', mi(letter), parts.length === 1 ? parts[0] : el('mrow', ...parts)));
+}
+
 // Splits a row-major 4x4 Float64Array into rows.
 export function rows4(m) {
   return [0, 1, 2, 3].map((r) => Array.from(m.slice(4 * r, 4 * r + 4)));

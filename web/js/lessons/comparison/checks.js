@@ -106,7 +106,7 @@ function spanCurves(api, curve) {
 function subdivisionCell(api, family, sampled) {
   if (family === 'nubs') return knotInsertionCell(api, sampled);
   const { error } = api.splitCheck(sampled.map((s) => s.curve));
-  const how = family === 'bezier' ? 'G_B^L P and G_B^R P directly'
+  const how = family === 'bezier' ? 'lecture 002\'s left and right subdivision matrices (1/8 [integers]) times P directly'
     : family === 'hermite' ? 'to Bezier (q = M_B⁻¹ M_H g), then split' : 'to Bezier (q = M_B⁻¹ M P) first, then split';
   return { answer: LECTURE_TABLE.subdivision[family], quoted: true, evidence: `${how}; halves match to ${fmt(error)}`, error };
 }

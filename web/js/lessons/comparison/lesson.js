@@ -4,7 +4,7 @@
 // the core; basis conversion both ways; affine and perspective invariance measured.
 import { object, list, number, oneOf, integer, boolean, viewSchema } from '../../app/schema.js';
 import { h, panel, table, setChildren } from '../../app/dom.js';
-import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
+import { math, matrix, mi, mo, el, rows4, formatNumber, continuityClass } from '../../ui/mathml.js';
 import { formatSize as fmtDistance } from '../../ui/format.js';
 import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH } from './families.js';
 import { computeTable, LECTURE_TABLE, ROW_NAMES } from './checks.js';
@@ -347,7 +347,7 @@ function updateTable(body, tbl) {
     table({ caption: 'Lecture 003 (Hermite to Catmull-Rom) and lecture 001 (non-uniform B-spline): each guarantee checked for every polygon, beside what this polygon does',
       head: [['', ...FAMILY_IDS.map((f) => ({ text: FAMILY_NAMES[f], colspan: 2 }))], ['', ...FAMILY_IDS.flatMap(() => ['guaranteed', 'this polygon'])]],
       rows, className: 'data-table comparison-table' }),
-    h('p', { class: 'hint' }, 'Guaranteed: what holds for every control polygon. Continuity and interpolation come from the core\'s structural argument: the derivatives at a joint are linear in the control data, so C^k holds for every polygon exactly when their coefficients (basis matrix, or the basis functions at a knot) agree, and a point is always interpolated when its basis function is 1 at a joint. Convex hull: the blending weights of the points are ≥ 0 and sum to 1 (lecture 003). This polygon: distances from the control points to the curve and the core\'s classifier at its joints, which may be smoother than guaranteed. Ease of subdivision is the lecture\'s judgement, quoted; beside it, how well this polygon\'s split halves match.'),
+    h('p', { class: 'hint' }, 'Guaranteed: what holds for every control polygon. Continuity and interpolation come from the core\'s structural argument: the derivatives at a joint are linear in the control data, so ', continuityClass('C', 'k'), ' holds for every polygon exactly when their coefficients (basis matrix, or the basis functions at a knot) agree, and a point is always interpolated when its basis function is 1 at a joint. Convex hull: the blending weights of the points are ≥ 0 and sum to 1 (lecture 003). This polygon: distances from the control points to the curve and the core\'s classifier at its joints, which may be smoother than guaranteed. Ease of subdivision is the lecture\'s judgement, quoted; beside it, how well this polygon\'s split halves match.'),
   );
 }
 

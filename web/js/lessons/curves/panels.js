@@ -5,7 +5,7 @@
 // change leaves the old state and the message line says why).
 import { h, panel } from '../../app/dom.js';
 import { createPlayer } from '../../app/player.js';
-import { formatNumber } from '../../ui/mathml.js';
+import { formatNumber, continuityClass } from '../../ui/mathml.js';
 import {
   FAMILIES, familyInfo, familyMaxPoints, usesKnots, isSpline, hasDegreeChoice, maxDegreeFor, switchFamily, addPoint, removePoint,
   withDegree, continuityLabel,
@@ -447,7 +447,7 @@ function knotGroupTable(model, state, ctx) {
   const where = (g) => (joint(g) ? continuityLabel(g.continuity) : inDomain(g) ? 'end of the domain' : 'outside the domain');
   const editable = usesKnots(state.family);
   const tbl = h('table', { class: 'data-table knot-groups' },
-    h('caption', {}, `Degree p = ${state.degree}: a knot of multiplicity m gives continuity C^(p-m) there.`),
+    h('caption', {}, `Degree p = ${state.degree}: a knot of multiplicity m gives continuity `, continuityClass('C', 'p−m'), ' there.'),
     h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'knot'), h('th', { scope: 'col' }, 'multiplicity m'), h('th', { scope: 'col' }, 'continuity'), editable ? h('th', { scope: 'col' }, 'raise m') : null)),
     h('tbody', {}, groups.map((g) => h('tr', { 'data-knot': String(g.value) },
       h('th', { scope: 'row' }, formatNumber(g.value, 4)),
