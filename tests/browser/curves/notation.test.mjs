@@ -162,3 +162,42 @@ test('a cubic Bezier shows lecture 002\'s G_B^L and G_B^R = 1/8 [integers] with 
   await chooseFamily(page, 'catmull-rom');
   assert.equal(await page.isHidden('#subdivision-matrices'), true, 'only for the cubic Bezier');
 });
+
+test('each form names the geometry and the blending functions as its lecture does (typeset, not raw text)', async () => {
+  // Typed from the lectures: 003 C = M_h G_h, G_h = [P1 P4 R1 R4], 000 H0..H3; 002
+  // g = (p_0, p_3, p'_0, p'_3), b(u) = M_H^T u; 001 G_H = [P1 P4 R1 R4], Q(t) = G_H M_H T.
+  const page = await openCurves(env);
+  await chooseFamily(page, 'hermite');
+  const names = () => page.$eval('.matrix-panel [data-role=lecture-names]', (root) => ({
+    lecture: root.dataset.lecture,
+    // every subscripted name as base + subscript, in order
+    subs: [...root.querySelectorAll('msub')].map((s) => [...s.children].map((c) => c.textContent).join('_')),
+    sups: [...root.querySelectorAll('msup')].map((s) => [...s.children]
+      .map((c) => (c.localName === 'msub' ? [...c.children].map((x) => x.textContent).join('_') : c.textContent)).join('^')),
+    raw: root.textContent,
+  }));
+  let n = await names();
+  assert.equal(n.lecture, '003');
+  for (const name of ['M_h', 'G_h', 'P_1', 'P_4', 'R_1', 'R_4', 'H_0', 'H_1', 'H_2', 'H_3']) assert.ok(n.subs.includes(name), `${name} in ${n.subs}`);
+  assert.doesNotMatch(n.raw, /[_^]/, 'no raw _ or ^');
+  await page.selectOption('#matrix-form', 'ascending');
+  await frame(page);
+  n = await names();
+  assert.equal(n.lecture, '002');
+  for (const name of ['M_H', 'p_0', 'p_3', 'p′_0', 'p′_3']) assert.ok(n.subs.includes(name), `${name} in ${n.subs}`);
+  assert.ok(n.sups.includes('M_H^T'), `b(u) = M_H^T u: ${n.sups}`);
+  await page.selectOption('#matrix-form', 'transposed');
+  await frame(page);
+  n = await names();
+  assert.equal(n.lecture, '001');
+  for (const name of ['G_H', 'M_H', 'P_1', 'P_4', 'R_1', 'R_4']) assert.ok(n.subs.includes(name), `${name} in ${n.subs}`);
+  // The uniform B-spline in 002's form: M_s and p_{i-2} .. p_{i+1}.
+  await chooseFamily(page, 'bspline-uniform');
+  await page.selectOption('#matrix-form', 'ascending');
+  await frame(page);
+  n = await names();
+  for (const name of ['M_s', 'p_i−2', 'p_i−1', 'p_i', 'p_i+1']) assert.ok(n.subs.includes(name), `${name} in ${n.subs}`);
+  // A Bezier curve of degree 5 is not a lecture's cubic: no names line.
+  await chooseFamily(page, 'interpolation');
+  assert.equal(await page.$('.matrix-panel [data-role=lecture-names]'), null);
+});

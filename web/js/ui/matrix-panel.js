@@ -33,7 +33,7 @@ export function createMatrixPanel(container) {
   let shape = null;
   let cells = null;
 
-  function build({ segment, form, title, fraction }) {
+  function build({ segment, form, title, fraction, names }) {
     const p = segment.degree;
     const n = p + 1;
     const transposed = form === 'transposed';
@@ -93,6 +93,7 @@ export function createMatrixPanel(container) {
         ? el('mrow', ...call(mi('u')), mo('='), uT(), mi('C'), mo('='), uT(), mi('M'), mi('g'), mo(','), mspace(),
           uT(), mo('='), powerRow())
         : el('mrow', ...call(mi('u')), mo('='), powerRow(), dot(), mi('M'), dot(), mi('G')));
+    const named = names ? lectureLine(names, form, name, powerRow) : null;
     const geometry = math(el('mrow', mi(geo), mo('='), tag(labelMatrix(transposed ? transpose(labelColumn) : labelColumn, ascending), 'G-labels'), mo('='), numbers('G', gr, gc, 'G')));
     const product = math(transposed
       ? el('mrow', ...call(mi('t')), mo('='), numbers('G', gr, gc, 'G'), dot(), numbers('M', n, n, 'M'), dot(), powerColumn())
@@ -109,7 +110,7 @@ export function createMatrixPanel(container) {
     note.className = 'hint';
     slots.note = document.createTextNode('');
     note.append(slots.note);
-    root.replaceChildren(heading, symbolic, geometry, product, coefficients, value, note);
+    root.replaceChildren(...[heading, symbolic, named, geometry, product, coefficients, value, note].filter(Boolean));
     root.dataset.form = form;
     root.dataset.notation = fraction ? 'fraction' : 'decimal';
     return slots;
@@ -121,7 +122,8 @@ export function createMatrixPanel(container) {
     for (const texts of list) texts.forEach((text, k) => setText(text, formatNumber(flat[k], digits)));
   }
 
-  function update({ segment, u, point, form = 'descending', title = '', notation = 'decimal' }) {
+  // names: the lecture's own names for this segment (matrix-forms.js lectureNames), or null.
+  function update({ segment, u, point, form = 'descending', title = '', notation = 'decimal', names = null }) {
     const p = segment.degree;
     const shown = segment.shown;
     if (!shown || shown.form !== form) throw new Error(`matrix panel: the segment was asked for in the ${shown?.form} form, not ${form}`);
@@ -130,10 +132,10 @@ export function createMatrixPanel(container) {
     // a matrix of integers, written without a factor as the slides do (Bezier, Hermite).
     const rational = notation === 'fraction' ? shown.rational ?? null : null;
     const fraction = rational !== null && rational.denominator !== 1;
-    const key = JSON.stringify([p, shown.geometryRows, shown.geometryColumns, form, title, Array.from(segment.labels), fraction]);
+    const key = JSON.stringify([p, shown.geometryRows, shown.geometryColumns, form, title, Array.from(segment.labels), fraction, names]);
     if (key !== shape) {
       shape = key;
-      cells = build({ segment, form, title, fraction });
+      cells = build({ segment, form, title, fraction, names });
     }
     if (rational) {
       // Integers: every digit is shown, never rounded to MATRIX_DIGITS significant ones.
@@ -168,6 +170,33 @@ function labelMatrix(cells, round = false) {
   const table = el('mtable');
   for (const row of cells) table.append(el('mtr', ...row.map((text) => el('mtd', labelNode(String(text))))));
   return round ? bracketed(table, cells.length, '(', ')') : bracketed(table, cells.length);
+}
+
+// The form's formula in its lecture's names (issue 18): 003 C = M_h G_h, G_h = [P_1 ..]
+// and 000's H_0..H_3; 002 C = M_H g, g = (p_0, ..), b(u) = M_H^T u; 001 Q(t) = G_H M_H T.
+function lectureLine(names, form, name, powerRow) {
+  const sub = (text) => labelNode(text);
+  const rows = names.rows.map((r) => [r]);
+  const parts = [];
+  if (form === 'transposed') {
+    parts.push(mi('Q'), fixedMo('('), mi('t'), fixedMo(')'), mo('='), sub(names.G), mo('·'), sub(names.M), mo('·'), mi('T'), mo(','), mspace(),
+      sub(names.G), mo('='), labelMatrix(transpose(rows)));
+    if (names.blending) parts.push(mo(','), mspace(), sub(names.blending), mo('='), sub(names.M), mo('·'), mi('T'));
+  } else {
+    const ascending = form === 'ascending';
+    parts.push(mi('C'), mo('='), sub(names.M), sub(names.G), mo(','), mspace(), sub(names.G), mo('='), labelMatrix(rows, ascending));
+    if (ascending && names.blending) {
+      parts.push(mo(','), mspace(), mi(names.blending), fixedMo('('), mi(name), fixedMo(')'), mo('='), el('msup', sub(names.M), mi('T')), mi(name));
+    } else if (Array.isArray(names.blending)) {
+      const row = el('mtable', el('mtr', ...names.blending.map((b) => el('mtd', el('mrow', sub(b), fixedMo('('), mi(name), fixedMo(')'))))));
+      parts.push(mo(','), mspace(), bracketed(row, 1), mo('='), powerRow(), mo('·'), sub(names.M));
+    }
+  }
+  const line = math(el('mrow', ...parts));
+  line.setAttribute('data-role', 'lecture-names');
+  line.setAttribute('data-lecture', names.lecture);
+  line.setAttribute('aria-label', `in the names of lecture ${names.lecture}${names.blendingLecture ? ` (blending functions: lecture ${names.blendingLecture})` : ''}`);
+  return line;
 }
 
 function mspace() {

@@ -12,7 +12,7 @@ import { computeConversion, computeInvariance } from './transforms.js';
 import { drawCurve, drawPolygon, drawLegend } from '../../ui/curve-overlays.js';
 import { createBlendingPlot } from '../../ui/blending-plot.js';
 import { createMatrixPanel } from '../../ui/matrix-panel.js';
-import { MATRIX_FORMS, createFormSelect, nextForm } from '../../ui/matrix-forms.js';
+import { MATRIX_FORMS, createFormSelect, nextForm, lectureNames } from '../../ui/matrix-forms.js';
 import { computeDerivations, createDerivationPanel } from './derivation-panel.js';
 
 // The blending functions of one segment per point-based family: the convex hull row's
@@ -229,8 +229,11 @@ export const lesson = {
     const name = (k) => FAMILY_NAMES[k];
     ui.conv.fractions.checked = state.notation === 'fraction';
     ui.conv.form.value = state.form;
-    ui.conv.fromPanel.update({ segment: m.segmentFrom, u: 0.5, point: m.midFrom, notation: state.notation, form: state.form, title: `${name(m.from)}: the segment as drawn (P)` });
+    // The four bases here are the lectures' cubics: each form's own names (issue 18).
+    ui.conv.fromPanel.update({ segment: m.segmentFrom, u: 0.5, point: m.midFrom, notation: state.notation, form: state.form,
+      names: lectureNames(state.form, m.segmentFrom.basis), title: `${name(m.from)}: the segment as drawn (P)` });
     ui.conv.toPanel.update({ segment: m.segmentTo, u: 0.5, point: m.midTo, notation: state.notation, form: state.form,
+      names: lectureNames(state.form, m.segmentTo.basis),
       title: m.q ? `${name(m.to)}: the same curve from q` : `${name(m.to)}: the same G with M swapped` });
   },
 

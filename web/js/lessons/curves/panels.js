@@ -14,7 +14,7 @@ import { pairs } from '../../app/arrays.js';
 import { constructionsFor, createModelCache } from './curve-model.js';
 import { createBlendingPlot } from '../../ui/blending-plot.js';
 import { createMatrixPanel } from '../../ui/matrix-panel.js';
-import { createFormSelect, nextForm } from '../../ui/matrix-forms.js';
+import { createFormSelect, nextForm, lectureNames } from '../../ui/matrix-forms.js';
 import { createSubdivisionMatrices } from './subdivision-matrices.js';
 import { createKnotStrip } from './knot-strip.js';
 import { createHomogeneousInset } from './homogeneous-inset.js';
@@ -363,7 +363,7 @@ export function updatePanels(els, model, state, ctx) {
   els.notationNote.hidden = noteText === '';
   els.splitMatrices.update(state);
   els.matrix.update({ segment: model.segment, u: model.u, point: model.point, form: state.form, notation: state.notation,
-    title: segmentTitle(state, model.segment) });
+    title: segmentTitle(state, model.segment), names: segmentNames(state, model.segment) });
   // constructions
   const kinds = constructionsFor(state.family, ctx.api);
   const wanted = ['none', ...kinds].join();
@@ -563,4 +563,12 @@ function segmentTitle(state, segment) {
   if (state.family === 'nurbs') return `${label}: homogeneous B-spline segment`;
   const name = BASIS_NAMES[segment.basis];
   return name && !label.includes(name.split(' ')[0]) ? `${label}: ${name} basis` : label;
+}
+
+// The lecture's own names when the segment is one of the lectures' cubics (a Bezier of
+// degree 3, the uniform cubic B-spline, Catmull-Rom without tension, Hermite).
+function segmentNames(state, segment) {
+  const cubic = segment.degree === 3 && (state.family === 'hermite' || state.family === 'bezier'
+    || (state.family === 'bspline-uniform') || (state.family === 'catmull-rom' && state.tension === 0));
+  return cubic ? lectureNames(state.form, segment.basis) : null;
 }
