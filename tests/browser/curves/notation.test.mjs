@@ -174,7 +174,7 @@ test('each form names the geometry and the blending functions as its lecture doe
     subs: [...root.querySelectorAll('msub')].map((s) => [...s.children].map((c) => c.textContent).join('_')),
     sups: [...root.querySelectorAll('msup')].map((s) => [...s.children]
       .map((c) => (c.localName === 'msub' ? [...c.children].map((x) => x.textContent).join('_') : c.textContent)).join('^')),
-    raw: root.textContent,
+    raw: [...root.querySelectorAll('math')].map((m) => m.textContent).join(' '),
   }));
   let n = await names();
   assert.equal(n.lecture, '003');

@@ -177,26 +177,31 @@ function labelMatrix(cells, round = false) {
 function lectureLine(names, form, name, powerRow) {
   const sub = (text) => labelNode(text);
   const rows = names.rows.map((r) => [r]);
-  const parts = [];
+  const lines = [];
   if (form === 'transposed') {
-    parts.push(mi('Q'), fixedMo('('), mi('t'), fixedMo(')'), mo('='), sub(names.G), mo('·'), sub(names.M), mo('·'), mi('T'), mo(','), mspace(),
-      sub(names.G), mo('='), labelMatrix(transpose(rows)));
-    if (names.blending) parts.push(mo(','), mspace(), sub(names.blending), mo('='), sub(names.M), mo('·'), mi('T'));
+    lines.push([mi('Q'), fixedMo('('), mi('t'), fixedMo(')'), mo('='), sub(names.G), mo('·'), sub(names.M), mo('·'), mi('T'), mo(','), mspace(),
+      sub(names.G), mo('='), labelMatrix(transpose(rows))]);
+    if (names.blending) lines.push([sub(names.blending), mo('='), sub(names.M), mo('·'), mi('T')]);
   } else {
     const ascending = form === 'ascending';
-    parts.push(mi('C'), mo('='), sub(names.M), sub(names.G), mo(','), mspace(), sub(names.G), mo('='), labelMatrix(rows, ascending));
+    lines.push([mi('C'), mo('='), sub(names.M), sub(names.G), mo(','), mspace(), sub(names.G), mo('='), labelMatrix(rows, ascending)]);
     if (ascending && names.blending) {
-      parts.push(mo(','), mspace(), mi(names.blending), fixedMo('('), mi(name), fixedMo(')'), mo('='), el('msup', sub(names.M), mi('T')), mi(name));
+      lines.push([mi(names.blending), fixedMo('('), mi(name), fixedMo(')'), mo('='), el('msup', sub(names.M), mi('T')), mi(name)]);
     } else if (Array.isArray(names.blending)) {
       const row = el('mtable', el('mtr', ...names.blending.map((b) => el('mtd', el('mrow', sub(b), fixedMo('('), mi(name), fixedMo(')'))))));
-      parts.push(mo(','), mspace(), bracketed(row, 1), mo('='), powerRow(), mo('·'), sub(names.M));
+      lines.push([bracketed(row, 1), mo('='), powerRow(), mo('·'), sub(names.M)]);
     }
   }
-  const line = math(el('mrow', ...parts));
-  line.setAttribute('data-role', 'lecture-names');
-  line.setAttribute('data-lecture', names.lecture);
-  line.setAttribute('aria-label', `in the names of lecture ${names.lecture}${names.blendingLecture ? ` (blending functions: lecture ${names.blendingLecture})` : ''}`);
-  return line;
+  // Each line its own block formula, so a narrow panel wraps between them.
+  const box = document.createElement('div');
+  box.className = 'lecture-names';
+  box.dataset.role = 'lecture-names';
+  box.dataset.lecture = names.lecture;
+  const where = document.createElement('p');
+  where.className = 'hint';
+  where.textContent = `In lecture ${names.lecture}'s names${names.blendingLecture ? ` (the blending functions as lecture ${names.blendingLecture} names them)` : ''}:`;
+  box.append(where, ...lines.map((parts) => math(el('mrow', ...parts))));
+  return box;
 }
 
 function mspace() {
