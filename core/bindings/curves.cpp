@@ -305,7 +305,9 @@ val knot_vector(const std::string& style, int count, int degree, const val& knot
 val knots_clamped(const val& knots, int degree) {
     return guarded([&] {
         val r = val::object();
-        r.set("clamped", is_clamped(to_doubles(knots), degree));
+        const auto t = to_doubles(knots);
+        r.set("clamped", is_clamped(t, degree));
+        r.set("bezier", is_bezier_in_disguise(t, degree)); // issue 18
         return r;
     });
 }

@@ -97,3 +97,10 @@ test('a state with a tangent count other than the point count is refused, naming
   assert.match(lesson.checkState({ ...state, hermite: { ...state.hermite, own: state.hermite.own.slice(1) } }), /one tangent per point/);
   assert.equal(lesson.checkState(state), null);
 });
+
+test('the comparison lab\'s non-uniform B-spline is never a Bezier curve in disguise (the core decides), for every polygon size', async () => {
+  const { nonUniformKnots } = await import('../../web/js/lessons/comparison/families.js');
+  for (let K = 4; K <= 31; K += 3) assert.equal(api.isBezierInDisguise(nonUniformKnots(K), 3), false, `${K} points`);
+  // ... while lecture 002's clamped vector for four points is one.
+  assert.equal(api.isBezierInDisguise([0, 0, 0, 0, 1, 1, 1, 1], 3), true);
+});

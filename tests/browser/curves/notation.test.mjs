@@ -201,3 +201,20 @@ test('each form names the geometry and the blending functions as its lecture doe
   await chooseFamily(page, 'interpolation');
   assert.equal(await page.$('.matrix-panel [data-role=lecture-names]'), null);
 });
+
+test('a non-uniform B-spline that is its points\' Bezier curve says so (lecture 002), and only then', async () => {
+  const page = await openCurves(env);
+  assert.equal(await page.isHidden('#bezier-disguise-note'), true, 'Bezier itself: no note');
+  await chooseFamily(page, 'bspline');
+  const state = await page.evaluate(() => window.wingspline.state);
+  assert.deepEqual(state.knots, [0, 0, 0, 0, 1, 1, 1, 1], 'four points of degree 3, clamped');
+  assert.equal(await page.isVisible('#bezier-disguise-note'), true);
+  assert.match(await page.textContent('#bezier-disguise-note'), /Bezier curve of its 4 points.*lecture 002/);
+  // Five points, an interior knot: a B-spline of two segments, no note.
+  const five = { ...state, points: [...state.points, [5, 1]], weights: [1, 1, 1, 1, 1], tangents: [...state.tangents, [1, 0]], knots: [0, 0, 0, 0, 0.5, 1, 1, 1, 1] };
+  const other = await env.openPage(`${env.site.url}curves.html#s=${envelopeCode('curves', 3, five)}`, { colorScheme: 'light' });
+  await other.waitForSelector('body[data-ready=true]');
+  await frame(other);
+  assert.equal((await other.evaluate(() => window.wingspline.state)).points.length, 5);
+  assert.equal(await other.isHidden('#bezier-disguise-note'), true);
+});

@@ -98,3 +98,17 @@ test('segmentMatrices(..., { form }) shows M, G, C as the lecture writes them; t
   }
   assert.throws(() => api.segmentMatrices(curve, 0, { form: 'reversed' }), (e) => e.code === 'unknown-form');
 });
+
+test('isBezierInDisguise: lecture 002\'s {0,0,0,0,1,1,1,1} yes; more points or spread ends no; bad input refused', () => {
+  assert.equal(api.isBezierInDisguise([0, 0, 0, 0, 1, 1, 1, 1], 3), true);
+  assert.equal(api.isBezierInDisguise([2, 2, 2, 5, 5, 5], 2), true);
+  assert.equal(api.isBezierInDisguise([0, 0, 0, 0, 0.5, 1, 1, 1, 1], 3), false);
+  assert.equal(api.isBezierInDisguise([-3, -2, -1, 0, 1, 2, 3, 4], 3), false);
+  assert.throws(() => api.isBezierInDisguise([0, 0, 1], 3), (e) => e.code === 'wrong-knot-count');
+  // The curves agree exactly when it says so: the B-spline and the Bezier of the same points.
+  const points = [0, 0, 1, 3, 4, 2, 5, -1];
+  const params = Float64Array.from({ length: 21 }, (_, j) => j / 20);
+  const b = api.evaluateCurve({ kind: 'bezier', dim: 2, points }, params);
+  const s = api.evaluateCurve({ kind: 'bspline', dim: 2, degree: 3, points, knots: [0, 0, 0, 0, 1, 1, 1, 1] }, params);
+  assert.ok(api.maxDistance(b, s, 2).distance <= 1e-12 * 5);
+});

@@ -320,6 +320,11 @@ export function createCurvesApi(raw) {
     isClampedKnots(knots, degree) {
       return unwrap(raw.knotsClamped(numbers(knots, 'knots'), wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'))).clamped;
     },
+    // Issue 18 (lecture 002: {0,0,0,0,1,1,1,1} makes the cubic B-spline a cubic Bezier):
+    // true when the B-spline on these knots is exactly the Bezier curve of its points.
+    isBezierInDisguise(knots, degree) {
+      return unwrap(raw.knotsClamped(numbers(knots, 'knots'), wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'))).bezier;
+    },
     // Continuity constraints of a piecewise curve (4 entries per segment: Bezier P0..P3 or
     // Hermite p0, p1, t0, t1; dim numbers each), mode 'free' | 'C0' | 'G1' | 'C1' | 'C2':
     // the entries after dragging entry `index` to `to`, after applying the mode at every

@@ -133,7 +133,9 @@ export const lesson = {
   },
 
   fitView(view, model, stage) {
-    const pts = model.state.scene === 'invariance' ? [...model.state.points, ...model.invariance.mapped] : model.state.points;
+    // (the tips of Hermite's own tangents are handles too: they must be in view)
+    const tips = handlesOf(model.state).filter((hd) => hd.id[0] === 't').map((hd) => [hd.x, hd.y]);
+    const pts = model.state.scene === 'invariance' ? [...model.state.points, ...model.invariance.mapped] : [...model.state.points, ...tips];
     const xs = pts.map((p) => p[0]);
     const ys = pts.map((p) => p[1]);
     const [minY, maxY] = [Math.min(...ys), Math.max(...ys)];
@@ -288,7 +290,7 @@ export const lesson = {
       for (const f of FAMILY_IDS) {
         if (!state.show[f]) continue;
         for (const s of model.table.curves[f]) drawCurve(painter, s.points, { stroke: strokeOf(f), width: f === 'bezier' ? 4 : 2.5, dash: FAMILY_DASH[f] });
-        legend.push([strokeOf(f), `${FAMILY_NAMES[f]}${f === 'catmull-rom' ? ' (end points repeated)' : f === 'nubs' ? ` (knots ${model.table.knots.join(', ')})` : f === 'hermite' ? (state.hermite.tangents === 'own' ? ', own tangents T_i (drag the arrow tips)' : ', t_i = (P_i+1 − P_i−1)/2: Catmull-Rom inside') : ''}`, FAMILY_DASH[f]]);
+        legend.push([strokeOf(f), `${FAMILY_NAMES[f]}${f === 'catmull-rom' ? ' (end points repeated)' : f === 'nubs' ? ` (knots ${model.table.knots.join(', ')})` : f === 'hermite' ? (state.hermite.tangents === 'own' ? `, its own tangents (drag the tips T0..T${state.points.length - 1})` : ', t_i = (P_i+1 − P_i−1)/2: Catmull-Rom inside') : ''}`, FAMILY_DASH[f]]);
       }
       if (state.show.hermite) {
         const t = model.table.tangents;

@@ -98,6 +98,8 @@ export function computeCurveModel(api, state, cache) {
 
   if (isSpline(state.family)) {
     model.knots = knotModel(api, spec, domain);
+    // Issue 18: lecture 002's {0,0,0,0,1,1,1,1}: this B-spline is its points' Bezier curve.
+    model.bezierInDisguise = usesKnots(state.family) && api.isBezierInDisguise(Float64Array.from(state.knots), state.degree);
   } else {
     // Segment joints: the curve at the segment boundaries of the piecewise families.
     const n = domain.segmentCount ?? 1;

@@ -266,7 +266,9 @@ export function createPanels(ctx) {
   const knotTable = h('div', { class: 'knot-table' });
   const removalNote = h('p', { class: 'hint', id: 'knot-removal-note' },
     'Raising m inserts the knot again (Boehm): the curve does not move. Lowering m is knot removal, which moves the curve unless it already has the higher continuity there; take a raise back with Undo, which is exact.');
-  knotsBody.append(presets, knotTable, removalNote);
+  // Issue 18: when the knots make this B-spline a Bezier curve (decided by the core).
+  const bezierNote = h('p', { class: 'hint', id: 'bezier-disguise-note', 'aria-live': 'polite', hidden: true });
+  knotsBody.append(presets, knotTable, bezierNote, removalNote);
   // A preset keeps u, moved onto the new knots' domain [t_p, t_K] (the core's curveDomain).
   function setKnots(knots) {
     const s = state();
@@ -320,7 +322,7 @@ export function createPanels(ctx) {
   const addAt = (x, y) => addSelected([Math.round(x * 1e4) / 1e4, Math.round(y * 1e4) / 1e4]);
 
   const view = { addAt, cache: createModelCache(), family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, formSelect, fractions, notationNote, splitMatrices, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
-    inspector, tangentFields, weightFields, knotField, knotTable, knotsPanel: knotsBody.parentElement, nurbsPanel: nurbsBody.parentElement, weightList, inset,
+    inspector, tangentFields, weightFields, knotField, knotTable, bezierNote, knotsPanel: knotsBody.parentElement, nurbsPanel: nurbsBody.parentElement, weightList, inset,
     degreeLabel: row1.querySelector('.degree-label'), tensionGroup: row1.querySelector('.tension-group'), lastKnotKey: null, lastWeightKey: null, conPlayer, uPlayer, commit, state, setKnots };
   return view;
 }
@@ -398,6 +400,12 @@ export function updatePanels(els, model, state, ctx) {
   // knots panel and strip
   els.knotsPanel.hidden = !isSpline(state.family);
   els.stripBox.hidden = !isSpline(state.family);
+  const disguise = model.bezierInDisguise
+    ? `These knots (${state.knots.map((k) => formatNumber(k, 4)).join(', ')}) make this ${state.family === 'nurbs' ? 'NURBS the rational Bezier curve' : 'B-spline the Bezier curve'} of its ${K} points: `
+      + `one segment, clamped ends (lecture 002: {0, 0, 0, 0, 1, 1, 1, 1}, cubic B-spline → cubic Bezier curve). Add a point or insert a knot for a B-spline that is not one.`
+    : '';
+  if (els.bezierNote.textContent !== disguise) els.bezierNote.textContent = disguise;
+  els.bezierNote.hidden = disguise === '';
   if (model.knots) {
     const key = JSON.stringify([model.knots.values, state.degree, state.family]);
     if (key !== els.lastKnotKey) {
