@@ -12,11 +12,12 @@ export const FORM_LABELS = {
 };
 
 // Version 2 -> 3 of a lesson state: the checkbox `transposed` becomes the form it showed.
-// Anything but a boolean there is a damaged link: refused (share-link.js says so).
+// A damaged value is passed on as the form, so the schema refuses that one field with its
+// message and keeps the rest (a missing one is reset and said, like any missing field).
 export function migrateTransposed(old) {
   const { transposed, ...rest } = old;
-  if (typeof transposed !== 'boolean') throw new TypeError('transposed must be true or false');
-  return { ...rest, form: transposed ? 'transposed' : 'descending' };
+  if (transposed === undefined) return rest;
+  return { ...rest, form: transposed === true ? 'transposed' : transposed === false ? 'descending' : transposed };
 }
 
 // A labelled <select> of the forms; onPick(form) when the person picks one.

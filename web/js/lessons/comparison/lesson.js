@@ -85,7 +85,7 @@ export const lesson = {
   migrations: {
     1: (old) => ({ ...old, notation: 'decimal' }),
     2: (old) => ({ ...old, form: 'descending' }),
-    3: (old) => ({ ...old, hermite: { tangents: 'catmull-rom', own: tangentsFor(old.points) } }),
+    3: (old) => ({ ...old, hermite: { tangents: 'catmull-rom', own: tangentsFor(Array.isArray(old.points) ? old.points : DEFAULT_POINTS) } }),
   },
   schema: {
     points: list(pair, { min: MIN_POINTS, max: MAX_POINTS }),
@@ -172,8 +172,8 @@ export const lesson = {
     // Issue 18: Hermite's tangents, its own (default) or Catmull-Rom's (the comparison of
     // lecture 002's Catmull-Rom conditions inside Hermite), with a note saying which.
     const hermiteTangents = h('select', { id: 'hermite-tangents', onchange: () => ctx.commit({ ...ctx.state, hermite: { ...ctx.state.hermite, tangents: hermiteTangents.value } }) },
-      h('option', { value: 'own' }, 'its own (drag the arrow tips)'),
-      h('option', { value: 'catmull-rom' }, 'Catmull-Rom\'s, (P(i+1) − P(i−1)) / 2'));
+      h('option', { value: 'own' }, 'its own (drag the tips)'),
+      h('option', { value: 'catmull-rom' }, 'Catmull-Rom\'s (P(i+1) − P(i−1))/2'));
     const hermiteNote = h('p', { class: 'hint', id: 'hermite-note', 'aria-live': 'polite' });
     ctx.controls.replaceChildren(h('label', { for: 'scene' }, 'Show ', sceneSelect), ...familyBoxes.map((b) => b.label), addButton, removeButton,
       h('label', { for: 'hermite-tangents' }, 'Hermite tangents ', hermiteTangents), hermiteNote);

@@ -5,7 +5,7 @@
 // change leaves the old state and the message line says why).
 import { h, panel } from '../../app/dom.js';
 import { createPlayer } from '../../app/player.js';
-import { formatNumber, continuityClass } from '../../ui/mathml.js';
+import { formatNumber, continuityClass, inlineMath, el, mi, mo, mn, fixedMo } from '../../ui/mathml.js';
 import {
   FAMILIES, familyInfo, familyMaxPoints, usesKnots, isSpline, hasDegreeChoice, maxDegreeFor, switchFamily, addPoint, removePoint,
   withDegree, continuityLabel,
@@ -521,7 +521,7 @@ export function drawPlots(els, model, state, ctx, hoveredItem) {
     knots: model.knots ? model.knots.groups.map((g) => g.value) : Array.from(model.joints?.params ?? []),
     highlight: hoveredItem === null ? null : (hermite ? hoveredItem % K : hoveredItem),
     present: ctx.ui.present,
-    caption: captionFor(state),
+    caption: cachedCaption(els, state),
   });
   if (model.knots) {
     els.strip.update({ knots: model.knots.values, groups: model.knots.groups, degree: state.degree, domain: model.domain, u: model.u,
@@ -532,14 +532,31 @@ export function drawPlots(els, model, state, ctx, hoveredItem) {
   }
 }
 
+// The blending plot's caption with its names typeset (issue 18: no raw "N_i,3"), built
+// once per family and degree. B-splines are B_i,d with d the degree, as lecture 002 writes
+// B_id (the plot's own labels follow: B0,3 ...).
+function cachedCaption(els, state) {
+  const key = JSON.stringify([state.family, state.degree, state.points.length]);
+  if (els.captionKey !== key) {
+    els.captionKey = key;
+    els.captionNode = captionFor(state);
+  }
+  return els.captionNode;
+}
+
 function captionFor(state) {
+  const span = (...parts) => h('span', {}, ...parts);
+  const f = (name, sub) => inlineMath(el('mrow', el('msub', mi(name), el('mrow', ...sub)), fixedMo('('), mi('u'), fixedMo(')')));
+  const i = mi('i');
+  const comma = mo(',');
+  const n = (k) => mn(String(k));
   switch (state.family) {
-    case 'hermite': return 'Hermite blending functions: solid for the points, dashed for the tangents (B = M T, lecture 001)';
-    case 'bezier': return `Bernstein polynomials B_i,${state.points.length - 1}(u) (lecture 001)`;
-    case 'interpolation': return 'Lagrange polynomials L_i(u): each is 1 at its node and 0 at the others (lecture 000)';
-    case 'nurbs': return `Rational basis R_i,${state.degree}(u) = w_i N_i,${state.degree} / sum w_j N_j,${state.degree}`;
-    case 'catmull-rom': return 'Catmull-Rom / cardinal blending functions (lecture 003)';
-    default: return `B-spline basis N_i,${state.degree}(u) by Cox-de Boor (lecture 002)`;
+    case 'hermite': return span('Hermite blending functions ', f('H', [n(0)]), ' .. ', f('H', [n(3)]), ' (lecture 000): solid for the points, dashed for the tangents');
+    case 'bezier': return span('Bernstein polynomials ', f('B', [i, comma, n(state.points.length - 1)]), ' (lecture 001)');
+    case 'interpolation': return span('Lagrange polynomials ', f('L', [i]), ': each is 1 at its node and 0 at the others (lecture 000)');
+    case 'nurbs': return span('Rational basis ', f('R', [i, comma, mi('d')]), ' = ', inlineMath(el('mrow', el('msub', mi('w'), i.cloneNode(true)), el('msub', mi('B'), el('mrow', mi('i'), mo(','), mi('d'))), mo('/'), mo('∑'), el('msub', mi('w'), mi('j')), el('msub', mi('B'), el('mrow', mi('j'), mo(','), mi('d'))))), `, d = ${state.degree} (lecture 002's NURBS)`);
+    case 'catmull-rom': return span('Catmull-Rom / cardinal blending functions (lecture 003)');
+    default: return span('B-spline basis ', f('B', [i, comma, mi('d')]), `, degree d = ${state.degree}, by Cox-de Boor (lecture 002)`);
   }
 }
 
