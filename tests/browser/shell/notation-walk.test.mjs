@@ -7,7 +7,8 @@
 //    the matrices themselves still stretch (more than 2.5 line heights for 4 rows);
 //  - no visible heading, caption, summary, label, option or table header shows a family or
 //    basis id of the lessons' schemas (bezier, bspline-uniform, catmull-rom, nubs, ...);
-//  - no visible text outside the formulas has a raw "^" (C^(p-m) is typeset, C<sup>).
+//  - no visible text outside the formulas has a raw "^" (C^(p-m) is typeset), and no
+//    heading, caption or label a raw subscript "_" (the blending plot's N_i,3(u)).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { useSiteAndBrowser } from '../../helpers/browser.mjs';
@@ -99,6 +100,8 @@ async function check(page, stop, tally) {
   tally.fixed += m.fixed.length;
   tally.stretched += m.stretched.length;
   for (const text of await page.evaluate(ids)) {
+    // A subscript written as raw text ("N_i,3(u)") in a heading, caption or label.
+    assert.doesNotMatch(text, /[A-Za-z]_[A-Za-z0-9{]/, `${stop}: raw "_" in the heading/label "${text}"`);
     for (const id of IDS) {
       const re = new RegExp(`(?<![\\w-])${id.replace('-', '\\-')}(?![\\w-])`);
       assert.doesNotMatch(text, re, `${stop}: the heading/label "${text}" shows the internal id "${id}"`);

@@ -4,7 +4,7 @@
 // the core; basis conversion both ways; affine and perspective invariance measured.
 import { object, list, number, oneOf, integer, boolean, viewSchema } from '../../app/schema.js';
 import { h, panel, table, setChildren } from '../../app/dom.js';
-import { math, matrix, mi, mo, el, rows4, formatNumber, continuityClass } from '../../ui/mathml.js';
+import { math, matrix, mi, mo, mn, el, rows4, formatNumber, continuityClass, inlineMath } from '../../ui/mathml.js';
 import { formatSize as fmtDistance } from '../../ui/format.js';
 import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH } from './families.js';
 import { computeTable, LECTURE_TABLE, ROW_NAMES } from './checks.js';
@@ -179,7 +179,7 @@ export const lesson = {
       h('label', { for: 'hermite-tangents' }, 'Hermite tangents ', hermiteTangents), hermiteNote);
 
     // The panel of the current scene is open and first in view; the live table stays below.
-    const convBody = panel(ctx.panels, { id: 'conversion-panel', title: 'Basis conversion: q = M⁻¹ M_B P', open: false });
+    const convBody = panel(ctx.panels, { id: 'conversion-panel', title: h('span', {}, 'Basis conversion: ', inlineMath(el('mrow', mi('q'), mo('='), el('msup', mi('M'), el('mrow', mo('−'), mn('1'))), el('msub', mi('M'), mi('B')), mi('P')))), open: false });
     const invBody = panel(ctx.panels, { id: 'invariance-panel', title: 'Invariance: transform the points or the curve', open: false });
     const tableBody = panel(ctx.panels, { id: 'table-panel', title: 'The comparison table, checked live' });
     const blendBody = panel(ctx.panels, { id: 'blending-panel', title: 'Blending weights (the convex hull row)' });
