@@ -100,8 +100,9 @@ val curve_blending(const val& spec, const val& params, int order) {
     });
 }
 
-val curve_segment(const val& spec, int index) {
+val curve_segment(const val& spec, int index, const std::string& form_name) {
     return guarded([&] {
+        const MatrixForm form = parse_matrix_form(form_name);
         const SegmentMatrices s = segment_matrices(curve_from(spec), index);
         val r = val::object();
         r.set("segment", s.segment);
@@ -121,6 +122,18 @@ val curve_segment(const val& spec, int index) {
         r.set("localParameter", s.local_parameter);
         r.set("homogeneous", s.homogeneous);
         r.set("basis", s.basis);
+        // Issue 18: M, G, C as the chosen lecture writes them (segment_in_form).
+        const SegmentForm f = segment_in_form(s, form);
+        val shown = val::object();
+        shown.set("form", std::string(matrix_form_name(f.form)));
+        shown.set("M", to_typed_array(f.M));
+        shown.set("G", to_typed_array(f.G));
+        shown.set("C", to_typed_array(f.C));
+        shown.set("size", f.m_size);
+        shown.set("geometryRows", f.g_rows);
+        shown.set("geometryColumns", f.g_cols);
+        shown.set("rational", rational_value(f.M));
+        r.set("shown", shown);
         return r;
     });
 }
@@ -292,7 +305,9 @@ val knot_vector(const std::string& style, int count, int degree, const val& knot
 val knots_clamped(const val& knots, int degree) {
     return guarded([&] {
         val r = val::object();
-        r.set("clamped", is_clamped(to_doubles(knots), degree));
+        const auto t = to_doubles(knots);
+        r.set("clamped", is_clamped(t, degree));
+        r.set("bezier", is_bezier_in_disguise(t, degree)); // issue 18
         return r;
     });
 }

@@ -79,6 +79,46 @@ std::optional<RationalForm> rational_form(const std::vector<double>& values, int
     return std::nullopt;
 }
 
+MatrixForm parse_matrix_form(const std::string& name) {
+    if (name == "descending") return MatrixForm::Descending;
+    if (name == "ascending") return MatrixForm::Ascending;
+    if (name == "transposed") return MatrixForm::Transposed;
+    throw Error("unknown-form", "unknown matrix form '" + name +
+                                    "'; expected descending (lectures 000, 003), ascending (002) or transposed (001)");
+}
+
+const char* matrix_form_name(MatrixForm form) {
+    switch (form) {
+    case MatrixForm::Descending: return "descending";
+    case MatrixForm::Ascending: return "ascending";
+    case MatrixForm::Transposed: return "transposed";
+    }
+    return "descending";
+}
+
+std::vector<double> matrix_in_form(const std::vector<double>& values, int rows, int cols, MatrixForm form) {
+    require(rows >= 0 && cols >= 0 && values.size() == static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols),
+            "invalid-argument", "the matrix has " + std::to_string(values.size()) + " entries, not " +
+                                    std::to_string(rows) + " x " + std::to_string(cols));
+    std::vector<double> r(values.size());
+    for (int i = 0; i < rows; ++i)
+        for (int j = 0; j < cols; ++j) {
+            const double v = values[static_cast<std::size_t>(cols * i + j)];
+            if (form == MatrixForm::Ascending) r[static_cast<std::size_t>(cols * (rows - 1 - i) + j)] = v;
+            else if (form == MatrixForm::Transposed) r[static_cast<std::size_t>(rows * j + i)] = v;
+            else r[static_cast<std::size_t>(cols * i + j)] = v;
+        }
+    return r;
+}
+
+Mat4 basis_matrix(BasisKind kind, MatrixForm form) {
+    const Mat4 m = basis_matrix(kind);
+    const auto shown = matrix_in_form(std::vector<double>(m.begin(), m.end()), 4, 4, form);
+    Mat4 r{};
+    std::copy(shown.begin(), shown.end(), r.begin());
+    return r;
+}
+
 Mat4 multiply(const Mat4& a, const Mat4& b) {
     Mat4 r{};
     for (int i = 0; i < 4; ++i)

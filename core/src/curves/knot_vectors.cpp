@@ -87,4 +87,16 @@ bool is_clamped(const std::vector<double>& knots, int degree) {
     return true;
 }
 
+bool is_bezier_in_disguise(const std::vector<double>& knots, int degree) {
+    is_clamped(knots, degree); // the same refusals (degree, knot count)
+    const int p = degree;
+    if (knots.size() != static_cast<std::size_t>(2 * p + 2)) return false;
+    // One segment [t_p, t_p+1]; its basis functions read t_1 .. t_2p only (the outermost
+    // knot on each side acts on no span of the domain), and are Bernstein's exactly when
+    // t_1 = .. = t_p and t_p+1 = .. = t_2p.
+    for (int j = 1; j < p; ++j)
+        if (knots[j] != knots[p] || knots[p + 1 + j] != knots[p + 1]) return false;
+    return knots[p] < knots[p + 1];
+}
+
 } // namespace wingspline::curves

@@ -193,4 +193,19 @@ std::vector<double> convert_basis(const std::vector<double>& G, int dim, BasisKi
     return multiply_n(std::vector<double>(T.begin(), T.end()), G, 4, 4, dim);
 }
 
+SegmentForm segment_in_form(const SegmentMatrices& s, MatrixForm form) {
+    const int n = s.degree + 1;
+    const int rows = static_cast<int>(s.G.size()) / std::max(1, s.columns);
+    SegmentForm f;
+    f.form = form;
+    f.m_size = n;
+    f.M = matrix_in_form(s.M, n, n, form);
+    f.C = matrix_in_form(s.C, rows, s.columns, form);
+    // The geometry keeps its row order in 002's form (only the powers are reversed).
+    f.G = form == MatrixForm::Transposed ? matrix_in_form(s.G, rows, s.columns, form) : s.G;
+    f.g_rows = form == MatrixForm::Transposed ? s.columns : rows;
+    f.g_cols = form == MatrixForm::Transposed ? rows : s.columns;
+    return f;
+}
+
 } // namespace wingspline::curves

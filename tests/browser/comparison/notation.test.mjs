@@ -70,3 +70,35 @@ test('conversion panels: f and the checkbox give 1/6 [integers] and 1/2 [integer
   assert.equal(s.notation, 'decimal');
   assert.equal(s.conversion.to, 'bspline');
 });
+
+test('conversion panels in lecture 002\'s and lecture 001\'s forms (the choice is state; old links open in 000/003\'s)', async () => {
+  // Lecture 002 (002_5284cf65dc3cb6f3.txt): M_s = 1/6 (1 4 1 0; -3 0 3 0; 3 -6 3 0; -1 3 -3 1);
+  // its Catmull-Rom from its own conditions (not the slip): 1/2 (0 2 0 0; -1 0 1 0; 2 -5 4 -1; -1 3 -3 1).
+  const M_S_002 = [[1, 4, 1, 0], [-3, 0, 3, 0], [3, -6, 3, 0], [-1, 3, -3, 1]].map((r) => r.map(String));
+  const M_R_002 = [[0, 2, 0, 0], [-1, 0, 1, 0], [2, -5, 4, -1], [-1, 3, -3, 1]].map((r) => r.map(String));
+  const transpose = (m) => m[0].map((_, j) => m.map((row) => row[j]));
+  const page = await env.openPage(`${env.site.url}comparison.html`);
+  await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
+  await page.selectOption('#scene', 'conversion');
+  await page.selectOption('#conv-from', 'catmull-rom');
+  await page.selectOption('#conv-to', 'bspline');
+  await page.click('#conv-fractions');
+  await page.selectOption('#conv-form', 'ascending');
+  await frame(page);
+  let [from, to] = await panels(page);
+  assert.deepEqual([from.entries, to.entries], [M_R_002, M_S_002]);
+  assert.equal(await page.$eval('#conversion-panel .matrix-panel', (r) => r.dataset.form), 'ascending');
+  await page.click('#conversion-panel .matrix-heading');
+  await page.keyboard.press('m');
+  await frame(page);
+  [from, to] = await panels(page);
+  assert.deepEqual([from.entries, to.entries], [transpose(M_CR), transpose(M_BSPLINE)]);
+  assert.equal((await page.evaluate(() => window.wingspline.state)).form, 'transposed');
+  // A version-2 link (before the choice) opens in lectures 000/003's form.
+  const { form, ...old } = await page.evaluate(() => window.wingspline.state);
+  const other = await env.openPage(`${env.site.url}comparison.html#s=${envelopeCode('comparison', 2, old)}`);
+  await other.waitForSelector('body[data-ready=true]', { timeout: 15000 });
+  await frame(other);
+  assert.equal((await other.evaluate(() => window.wingspline.state)).form, 'descending');
+  assert.deepEqual((await panels(other))[1].entries, M_BSPLINE);
+});

@@ -142,13 +142,15 @@ export function createCurvesApi(raw) {
   const api = {
     // The row-major 4x4 basis matrix M of P(u) = [u^3 u^2 u 1] M G (lectures 000, 003);
     // lecture 001's Q(t) = G M T uses its transpose (segmentMatrices gives both).
-    basisMatrix(kind) {
-      return unwrap(raw.basisMatrix(String(kind))).matrix;
+    basisMatrix(kind, form = 'descending') {
+      return unwrap(raw.basisMatrix(String(kind), String(form))).matrix;
     },
     // Issue 18: the same matrix as on the slide, {denominator, numerators} (1/6 [...] for the
-    // uniform B-spline, 1/2 [...] for Catmull-Rom).
-    basisMatrixRational(kind) {
-      return unwrap(raw.basisMatrix(String(kind))).rational;
+    // uniform B-spline, 1/2 [...] for Catmull-Rom). form: 'descending' (lectures 000, 003),
+    // 'ascending' (002: u = (1, u, u^2, u^3), C = M g, the rows reversed) or 'transposed'
+    // (001: Q(t) = G M T); an unknown form throws 'unknown-form'.
+    basisMatrixRational(kind, form = 'descending') {
+      return unwrap(raw.basisMatrix(String(kind), String(form))).rational;
     },
     // Lecture 000's Hermite derivation, computed: the constraint matrix and its inverse.
     hermiteFromConstraints() {
@@ -197,9 +199,11 @@ export function createCurvesApi(raw) {
     // The matrix form of one polynomial piece: P(u) = [u^p .. u 1] M G, C = M G; MT = M^T
     // for lecture 001's Q(t) = G M^T T. Matrices row-major; G and C have `columns` numbers
     // per row (dim, or dim+1 homogeneous for rational curves).
-    segmentMatrices(curve, segmentIndex = 0) {
+    // options.form (issue 18): `shown` holds M, G, C as that lecture writes them
+    // ({form, M, G, C, size, geometryRows, geometryColumns, rational}); default 'descending'.
+    segmentMatrices(curve, segmentIndex = 0, { form = 'descending' } = {}) {
       wholeNumber(segmentIndex, 'segmentIndex', 0, 2 ** 31 - 1, 'segment-out-of-range');
-      const r = unwrap(raw.curveSegment(normalizeCurve(curve), segmentIndex));
+      const r = unwrap(raw.curveSegment(normalizeCurve(curve), segmentIndex, String(form)));
       const n = r.degree + 1;
       return {
         segment: r.segment,
@@ -221,6 +225,7 @@ export function createCurvesApi(raw) {
         end: r.end,
         localParameter: r.localParameter,
         homogeneous: r.homogeneous,
+        shown: r.shown,
         convention: r.localParameter
           ? `P(t) = [u^${r.degree} .. u 1] M G with u = (t - ${r.start}) / (${r.end} - ${r.start}); Q(u) = G^T M^T [u^${r.degree} .. u 1]^T`
           : `P(u) = [u^${r.degree} .. u 1] M G with the global parameter u`,
@@ -314,6 +319,11 @@ export function createCurvesApi(raw) {
     },
     isClampedKnots(knots, degree) {
       return unwrap(raw.knotsClamped(numbers(knots, 'knots'), wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'))).clamped;
+    },
+    // Issue 18 (lecture 002: {0,0,0,0,1,1,1,1} makes the cubic B-spline a cubic Bezier):
+    // true when the B-spline on these knots is exactly the Bezier curve of its points.
+    isBezierInDisguise(knots, degree) {
+      return unwrap(raw.knotsClamped(numbers(knots, 'knots'), wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'))).bezier;
     },
     // Continuity constraints of a piecewise curve (4 entries per segment: Bezier P0..P3 or
     // Hermite p0, p1, t0, t1; dim numbers each), mode 'free' | 'C0' | 'G1' | 'C1' | 'C2':

@@ -127,7 +127,9 @@ export function createBlendingPlot(container, { label = 'Blending functions', he
     canvas: surface.canvas,
     update(next) {
       data = next;
-      caption.textContent = next.caption ?? label;
+      // A caption is text, or a node (typeset names, issue 18) put in once while it stays.
+      const c = next.caption ?? label;
+      if (typeof c === 'string') { if (caption.textContent !== c || caption.firstElementChild) caption.textContent = c; } else if (caption.firstChild !== c) caption.replaceChildren(c);
       draw();
     },
     // Screen position of the cursor (tests and the bench ask where u is drawn).

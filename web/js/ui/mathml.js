@@ -12,6 +12,13 @@ export function el(tag, ...children) {
 export const mi = (text) => el('mi', text);
 export const mo = (text) => el('mo', text);
 export const mn = (text) => el('mn', text);
+// A bracket that keeps the height of a row (issue 18: the parentheses of P(u) and of a row
+// vector must not stretch to the height of a matrix beside them; matrix brackets still do).
+export const fixedMo = (text) => {
+  const node = mo(text);
+  node.setAttribute('stretchy', 'false');
+  return node;
+};
 
 // Formats a number for display: integers plainly, others with up to `digits` significant
 // digits, and -0 as 0.
@@ -31,13 +38,30 @@ export function matrix(rows, { digits = 4 } = {}) {
     }
     table.append(tr);
   }
-  return el('mrow', mo('['), table, mo(']'));
+  return bracketed(table, rows.length);
+}
+
+// [table] with brackets that stretch for a column or a matrix and keep the height of a row
+// for a row vector (issue 18: a one-row matrix's brackets no taller than a row).
+export function bracketed(table, rowCount, open = '[', close = ']') {
+  const b = rowCount === 1 ? fixedMo : mo;
+  return el('mrow', b(open), table, b(close));
 }
 
 export function math(...children) {
   const node = el('math', ...children);
   node.setAttribute('display', 'block');
   return node;
+}
+
+// A formula inside a sentence (no display=block): C^(p-m) in a caption is a superscript.
+export function inlineMath(...children) {
+  return el('math', ...children);
+}
+// C^(sup) with the superscript written as a row of names and signs, e.g. 'p−m', 'k'.
+export function continuityClass(letter, sup) {
+  const parts = sup.split(/([−+-])/).filter(Boolean).map((t) => (/^[−+-]$/.test(t) ? mo(t === '-' ? '−' : t) : /^\d+$/.test(t) ? mn(t) : mi(t)));
+  return inlineMath(el('msup', mi(letter), parts.length === 1 ? parts[0] : el('mrow', ...parts)));
 }
 
 // Splits a row-major 4x4 Float64Array into rows.

@@ -1,17 +1,19 @@
 // The matrix form of one curve segment as MathML, with the numbers the core multiplies
-// with (STYLE.md 12: the matrix shown is the matrix used):
-//   lectures 000, 003, 004:  P(u) = [u^3 u^2 u 1] . M . G = [u^3 u^2 u 1] . C
-//   lecture 001:             Q(t) = G . M . T, G a row of points, M transposed, T a column
-// Reusable: give it what api.segmentMatrices returns ({M, G, C, labels, degree, columns,
-// homogeneous, start, end, localParameter}) and the parameter.
+// with (STYLE.md 12: the matrix shown is the matrix used), in the form a lecture writes it
+// (issue 18; the core gives M, G, C in that form, segmentMatrices(..., { form }).shown):
+//   'descending' (lectures 000, 003, 004): P(u) = [u^3 u^2 u 1] . M . G, C = M . G
+//   'ascending'  (lecture 002):            p(u) = u^T M g, u = (1, u, u^2, u^3), C = M g
+//   'transposed' (lecture 001):            Q(t) = G . M . T, G a row of points, T a column
+// Reusable: give it what api.segmentMatrices returns ({M, G, C, shown, labels, degree,
+// columns, homogeneous, start, end, localParameter}) and the parameter.
 //
 //   const panel = createMatrixPanel(container);
-//   panel.update({ segment, u, point, transposed, title, notation });
+//   panel.update({ segment, u, point, form, title, notation });
 // notation 'fraction' (issue 18) writes M as the slides do, (1/d) . [integers], with the
-// fraction and the integers the core gives (segment.rational); 'decimal' (the default) writes
+// fraction and the integers the core gives (shown.rational); 'decimal' (the default) writes
 // the entries as decimals. A matrix without a small common denominator stays in decimals
 // and the note says so.
-import { math, mi, mo, mn, el, formatNumber } from './mathml.js';
+import { math, mi, mo, mn, el, fixedMo, bracketed, formatNumber } from './mathml.js';
 
 export const MATRIX_DIGITS = 4;
 
@@ -31,11 +33,16 @@ export function createMatrixPanel(container) {
   let shape = null;
   let cells = null;
 
-  function build({ segment, transposed, title, fraction }) {
+  function build({ segment, form, title, fraction, names }) {
     const p = segment.degree;
     const n = p + 1;
-    const cols = segment.columns;
+    const transposed = form === 'transposed';
+    const ascending = form === 'ascending';
     const name = transposed ? 't' : 'u';
+    // Lecture 002 writes p and g in lower case; 000/001/003 write P (Q for 001) and G.
+    const curve = transposed ? 'Q' : ascending ? 'p' : 'P';
+    const geo = ascending ? 'g' : 'G';
+    const call = (arg) => [mi(curve), fixedMo('('), arg, fixedMo(')')];
     const heading = document.createElement('p');
     heading.className = 'matrix-heading';
     heading.textContent = title;
@@ -54,83 +61,89 @@ export function createMatrixPanel(container) {
         table.append(tr);
       }
       slots[key].push(out);
-      const bracketed = tag(el('mrow', mo('['), table, mo(']')), role);
-      if (key !== 'M' || !fraction) return bracketed;
+      const inBrackets = tag(ascending ? bracketed(table, r, '(', ')') : bracketed(table, r), role);
+      if (key !== 'M' || !fraction) return inBrackets;
       // The slide's common factor in front: 1/d typeset as a fraction (d filled by update).
       const d = document.createTextNode('');
       slots.denominators.push(d);
-      return el('mrow', tag(el('mfrac', mn('1'), el('mn', d)), 'M-fraction'), bracketed);
+      return el('mrow', tag(el('mfrac', mn('1'), el('mn', d)), 'M-fraction'), inBrackets);
     };
+    // The powers of the parameter: descending u^p .. u 1 (000, 001, 003), ascending
+    // 1 u .. u^p (002).
     const powers = () => {
       const out = [];
-      for (let r = p; r >= 0; r -= 1) out.push(r === 0 ? mn('1') : r === 1 ? mi(name) : el('msup', mi(name), mn(String(r))));
+      for (let k = 0; k <= p; k += 1) {
+        const r = ascending ? k : p - k;
+        out.push(r === 0 ? mn('1') : r === 1 ? mi(name) : el('msup', mi(name), mn(String(r))));
+      }
       return out;
     };
-    const powerRow = () => el('mrow', mo('['), el('mtable', el('mtr', ...powers().map((x) => el('mtd', x)))), mo(']'));
-    const powerColumn = () => el('mrow', mo('['), el('mtable', ...powers().map((x) => el('mtr', el('mtd', x)))), mo(']'));
-    const rowsG = segment.rows ?? n;
-    const [gr, gc] = transposed ? [cols, rowsG] : [rowsG, cols];
+    // A row vector keeps the height of a row; a column vector's brackets stretch.
+    const powerRow = () => bracketed(el('mtable', el('mtr', ...powers().map((x) => el('mtd', x)))), 1);
+    const powerColumn = () => bracketed(el('mtable', ...powers().map((x) => el('mtr', el('mtd', x)))), n);
+    const shown = segment.shown;
+    const [gr, gc] = [shown.geometryRows, shown.geometryColumns];
     const labelColumn = segment.labels.map((l) => [l]);
+    const uT = () => el('msup', mi(name), mi('T'));
+    const dot = () => mo('·');
 
     const symbolic = math(transposed
-      ? el('mrow', mi('Q'), mo('('), mi('t'), mo(')'), mo('='), mi('G'), mo('·'), mi('M'), mo('·'), mi('T'))
-      : el('mrow', mi('P'), mo('('), mi('u'), mo(')'), mo('='), powerRow(), mo('·'), mi('M'), mo('·'), mi('G')));
-    const geometry = math(el('mrow', mi('G'), mo('='), tag(labelMatrix(transposed ? transpose(labelColumn) : labelColumn), 'G-labels'), mo('='), numbers('G', gr, gc, 'G')));
+      ? el('mrow', ...call(mi('t')), mo('='), mi('G'), dot(), mi('M'), dot(), mi('T'))
+      : ascending
+        ? el('mrow', ...call(mi('u')), mo('='), uT(), mi('C'), mo('='), uT(), mi('M'), mi('g'), mo(','), mspace(),
+          uT(), mo('='), powerRow())
+        : el('mrow', ...call(mi('u')), mo('='), powerRow(), dot(), mi('M'), dot(), mi('G')));
+    const named = names ? lectureLine(names, form, name, powerRow) : null;
+    const geometry = math(el('mrow', mi(geo), mo('='), tag(labelMatrix(transposed ? transpose(labelColumn) : labelColumn, ascending), 'G-labels'), mo('='), numbers('G', gr, gc, 'G')));
     const product = math(transposed
-      ? el('mrow', mi('Q'), mo('('), mi('t'), mo(')'), mo('='), numbers('G', gr, gc, 'G'), mo('·'), numbers('M', n, n, 'M'), mo('·'), powerColumn())
-      : el('mrow', mi('P'), mo('('), mi('u'), mo(')'), mo('='), powerRow(), mo('·'), numbers('M', n, n, 'M'), mo('·'), numbers('G', gr, gc, 'G')));
+      ? el('mrow', ...call(mi('t')), mo('='), numbers('G', gr, gc, 'G'), dot(), numbers('M', n, n, 'M'), dot(), powerColumn())
+      : el('mrow', ...call(mi('u')), mo('='), powerRow(), dot(), numbers('M', n, n, 'M'), dot(), numbers('G', gr, gc, 'G')));
     const coefficients = math(transposed
-      ? el('mrow', mi('G'), mo('·'), mi('M'), mo('='), numbers('C', gr, gc, 'C'))
-      : el('mrow', mi('C'), mo('='), mi('M'), mo('·'), mi('G'), mo('='), numbers('C', gr, gc, 'C')));
+      ? el('mrow', mi('G'), dot(), mi('M'), mo('='), numbers('C', gr, gc, 'C'))
+      : el('mrow', mi('C'), mo('='), mi('M'), dot(), mi(geo), mo('='), numbers('C', gr, gc, 'C')));
     slots.t = document.createTextNode('');
     slots.x = document.createTextNode('');
     slots.y = document.createTextNode('');
-    const value = math(el('mrow', mi(transposed ? 'Q' : 'P'), mo('('), el('mn', slots.t), mo(')'), mo('='),
-      mo('('), el('mn', slots.x), mo(','), el('mn', slots.y), mo(')')));
+    const value = math(el('mrow', ...call(el('mn', slots.t)), mo('='),
+      fixedMo('('), el('mn', slots.x), mo(','), el('mn', slots.y), fixedMo(')')));
     const note = document.createElement('p');
     note.className = 'hint';
     slots.note = document.createTextNode('');
     note.append(slots.note);
-    root.replaceChildren(heading, symbolic, geometry, product, coefficients, value, note);
-    root.dataset.form = transposed ? 'GMT' : 'TMG';
+    root.replaceChildren(...[heading, symbolic, named, geometry, product, coefficients, value, note].filter(Boolean));
+    root.dataset.form = form;
     root.dataset.notation = fraction ? 'fraction' : 'decimal';
     return slots;
   }
 
-  // Writes a row-major r x c matrix (transposed if asked) into every copy of its slots.
-  function fill(list, flat, r, c, transposed, digits = MATRIX_DIGITS) {
-    for (const texts of list) {
-      let k = 0;
-      const [rr, cc] = transposed ? [c, r] : [r, c];
-      for (let i = 0; i < rr; i += 1) {
-        for (let j = 0; j < cc; j += 1) {
-          setText(texts[k], formatNumber(transposed ? flat[c * j + i] : flat[c * i + j], digits));
-          k += 1;
-        }
-      }
-    }
+  // Writes a row-major matrix, already in the shown form (the core's), into every copy of
+  // its slots.
+  function fill(list, flat, digits = MATRIX_DIGITS) {
+    for (const texts of list) texts.forEach((text, k) => setText(text, formatNumber(flat[k], digits)));
   }
 
-  function update({ segment, u, point, transposed = false, title = '', notation = 'decimal' }) {
+  // names: the lecture's own names for this segment (matrix-forms.js lectureNames), or null.
+  function update({ segment, u, point, form = 'descending', title = '', notation = 'decimal', names = null }) {
     const p = segment.degree;
-    const n = p + 1;
-    const cols = segment.columns;
+    const shown = segment.shown;
+    if (!shown || shown.form !== form) throw new Error(`matrix panel: the segment was asked for in the ${shown?.form} form, not ${form}`);
+    const transposed = form === 'transposed';
     // Fractions when asked for and the core found the slide's form; a denominator of 1 is
     // a matrix of integers, written without a factor as the slides do (Bezier, Hermite).
-    const rational = notation === 'fraction' ? segment.rational ?? null : null;
+    const rational = notation === 'fraction' ? shown.rational ?? null : null;
     const fraction = rational !== null && rational.denominator !== 1;
-    const key = JSON.stringify([p, segment.rows, cols, transposed, title, Array.from(segment.labels), fraction]);
+    const key = JSON.stringify([p, shown.geometryRows, shown.geometryColumns, form, title, Array.from(segment.labels), fraction, names]);
     if (key !== shape) {
       shape = key;
-      cells = build({ segment, transposed, title, fraction });
+      cells = build({ segment, form, title, fraction, names });
     }
     if (rational) {
       // Integers: every digit is shown, never rounded to MATRIX_DIGITS significant ones.
-      fill(cells.M, rational.numerators, n, n, transposed, 17);
+      fill(cells.M, rational.numerators, 17);
       for (const d of cells.denominators) setText(d, String(rational.denominator));
-    } else fill(cells.M, segment.M, n, n, transposed);
-    fill(cells.G, segment.G, segment.rows ?? n, cols, transposed);
-    fill(cells.C, segment.C, segment.rows ?? n, cols, transposed);
+    } else fill(cells.M, shown.M);
+    fill(cells.G, shown.G);
+    fill(cells.C, shown.C);
     const local = segment.localParameter === false ? u : (u - segment.start) / ((segment.end - segment.start) || 1);
     const t = Math.min(1, Math.max(0, local));
     const name = transposed ? 't' : 'u';
@@ -151,11 +164,50 @@ function setText(node, text) {
   if (node.data !== text) node.data = text;
 }
 
-// The slide's row names ("P_0", "t_k+1") with their subscripts typeset.
-function labelMatrix(cells) {
+// The slide's row names ("P_0", "t_k+1") with their subscripts typeset; lecture 002 writes
+// its vectors in round brackets.
+function labelMatrix(cells, round = false) {
   const table = el('mtable');
   for (const row of cells) table.append(el('mtr', ...row.map((text) => el('mtd', labelNode(String(text))))));
-  return el('mrow', mo('['), table, mo(']'));
+  return round ? bracketed(table, cells.length, '(', ')') : bracketed(table, cells.length);
+}
+
+// The form's formula in its lecture's names (issue 18): 003 C = M_h G_h, G_h = [P_1 ..]
+// and 000's H_0..H_3; 002 C = M_H g, g = (p_0, ..), b(u) = M_H^T u; 001 Q(t) = G_H M_H T.
+function lectureLine(names, form, name, powerRow) {
+  const sub = (text) => labelNode(text);
+  const rows = names.rows.map((r) => [r]);
+  const lines = [];
+  if (form === 'transposed') {
+    lines.push([mi('Q'), fixedMo('('), mi('t'), fixedMo(')'), mo('='), sub(names.G), mo('·'), sub(names.M), mo('·'), mi('T'), mo(','), mspace(),
+      sub(names.G), mo('='), labelMatrix(transpose(rows))]);
+    if (names.blending) lines.push([sub(names.blending), mo('='), sub(names.M), mo('·'), mi('T')]);
+  } else {
+    const ascending = form === 'ascending';
+    lines.push([mi('C'), mo('='), sub(names.M), sub(names.G), mo(','), mspace(), sub(names.G), mo('='), labelMatrix(rows, ascending)]);
+    if (ascending && names.blending) {
+      lines.push([mi(names.blending), fixedMo('('), mi(name), fixedMo(')'), mo('='), el('msup', sub(names.M), mi('T')), mi(name)]);
+    } else if (Array.isArray(names.blending)) {
+      const row = el('mtable', el('mtr', ...names.blending.map((b) => el('mtd', el('mrow', sub(b), fixedMo('('), mi(name), fixedMo(')'))))));
+      lines.push([bracketed(row, 1), mo('='), powerRow(), mo('·'), sub(names.M)]);
+    }
+  }
+  // Each line its own block formula, so a narrow panel wraps between them.
+  const box = document.createElement('div');
+  box.className = 'lecture-names';
+  box.dataset.role = 'lecture-names';
+  box.dataset.lecture = names.lecture;
+  const where = document.createElement('p');
+  where.className = 'hint';
+  where.textContent = `In lecture ${names.lecture}'s names${names.blendingLecture ? ` (the blending functions as lecture ${names.blendingLecture} names them)` : ''}:`;
+  box.append(where, ...lines.map((parts) => math(el('mrow', ...parts))));
+  return box;
+}
+
+function mspace() {
+  const node = el('mspace');
+  node.setAttribute('width', '1em');
+  return node;
 }
 
 function labelNode(text) {

@@ -45,6 +45,21 @@ constexpr int kMaxNotationDenominator = 1000;
 std::optional<RationalForm> rational_form(const std::vector<double>& values,
                                           int max_denominator = kMaxNotationDenominator);
 
+// Issue 18: the three ways the lectures write a basis matrix M of P(u) = [u^p .. u 1] M G.
+//   Descending (000, 003, 004): M itself, rows multiply u^p .. u 1.
+//   Ascending  (002): p(u) = u^T C, u = (1, u, .., u^p), C = M g: M's rows in reverse order.
+//   Transposed (001): Q(t) = G M T, T = [t^p .. t 1]^T a column: M^T.
+enum class MatrixForm { Descending, Ascending, Transposed };
+// Parses 'descending' | 'ascending' | 'transposed'; throws Error("unknown-form").
+MatrixForm parse_matrix_form(const std::string& name);
+const char* matrix_form_name(MatrixForm form);
+// A rows x cols row-major matrix of the descending form (M, or the coefficients C = M G)
+// written in `form`: rows reversed (ascending) or transposed (cols x rows). Throws
+// Error("invalid-argument") when values.size() != rows * cols.
+std::vector<double> matrix_in_form(const std::vector<double>& values, int rows, int cols, MatrixForm form);
+// The slide's matrix in `form` (lecture 002's M_H, M_B, M_s; lecture 001's M_H, M_B).
+Mat4 basis_matrix(BasisKind kind, MatrixForm form);
+
 Mat4 multiply(const Mat4& a, const Mat4& b);
 Mat4 transpose(const Mat4& m);
 // Throws Error("singular-matrix") when the matrix has no inverse.

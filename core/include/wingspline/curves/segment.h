@@ -40,6 +40,17 @@ int segment_at(const Curve& curve, double t);
 // Throws 'segment-out-of-range' naming the valid indices.
 SegmentMatrices segment_matrices(const Curve& curve, int segment);
 
+// Issue 18: a segment's M, G and C as a lecture writes them (basis_matrix.h, MatrixForm):
+// descending M, G, C as above; ascending (002) M and C with their rows reversed, G as is
+// (p(u) = u^T C, C = M g); transposed (001) M^T, G^T (a row of points) and C^T = G^T M^T.
+struct SegmentForm {
+    MatrixForm form = MatrixForm::Descending;
+    std::vector<double> M, G, C;  // row-major, sizes below
+    int m_size = 4;               // M is m_size x m_size
+    int g_rows = 4, g_cols = 2;   // G and C have the same shape
+};
+SegmentForm segment_in_form(const SegmentMatrices& s, MatrixForm form);
+
 // Lecture 002, basis conversion: the geometry q in basis `to` that gives the same cubic as
 // P in basis `from`: q = M_to^-1 M_from P. P and q are 4 x dim, flat.
 std::vector<double> convert_basis(const std::vector<double>& G, int dim, BasisKind from, BasisKind to);

@@ -106,7 +106,7 @@ function spanCurves(api, curve) {
 function subdivisionCell(api, family, sampled) {
   if (family === 'nubs') return knotInsertionCell(api, sampled);
   const { error } = api.splitCheck(sampled.map((s) => s.curve));
-  const how = family === 'bezier' ? 'G_B^L P and G_B^R P directly'
+  const how = family === 'bezier' ? 'lecture 002\'s left and right subdivision matrices (1/8 [integers]) times P directly'
     : family === 'hermite' ? 'to Bezier (q = M_B⁻¹ M_H g), then split' : 'to Bezier (q = M_B⁻¹ M P) first, then split';
   return { answer: LECTURE_TABLE.subdivision[family], quoted: true, evidence: `${how}; halves match to ${fmt(error)}`, error };
 }
@@ -138,13 +138,14 @@ function guaranteesOf(api, family, count, easy = false) {
 
 // columns[family][row]: the guarantee (answer, evidence; quoted: true for the lecture's own
 // judgement); polygon[family][row]: what this polygon does.
-export function computeTable(api, points) {
+// tangents: Hermite's own tangents (one [x, y] per point), or null for Catmull-Rom's.
+export function computeTable(api, points, tangents = null) {
   const columns = {};
   const polygon = {};
   const curves = {};
   const K = points.length;
   for (const family of FAMILY_IDS) {
-    const segs = familySegments(api, family, points);
+    const segs = familySegments(api, family, points, tangents);
     const sampled = sampleSegments(api, segs);
     curves[family] = sampled;
     const seen = polygonInterpolation(api, points, sampled);
@@ -175,5 +176,5 @@ export function computeTable(api, points) {
       easy: hasRule ? continuityCell(api, easySegments(api, family, points)) : inherentSeen,
     };
   }
-  return { columns, polygon, curves, knots: nonUniformKnots(K), tangents: pointTangents(api, points) };
+  return { columns, polygon, curves, knots: nonUniformKnots(K), tangents: tangents ?? pointTangents(api, points) };
 }

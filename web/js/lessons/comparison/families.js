@@ -27,7 +27,8 @@ export const pointTangents = (api, points) => pairs(api.catmullRomTangents(flat(
 
 // Each family as a list of segment curves (joints between consecutive entries) and the
 // control point indices each segment is built from.
-export function familySegments(api, family, points) {
+// tangents (Hermite): one [x, y] per point, or null for Catmull-Rom's (pointTangents).
+export function familySegments(api, family, points, tangents = null) {
   const segs = [];
   // The non-uniform B-spline is evaluated as one curve; its joints are the core's spans.
   if (family === 'nubs') return [nubsCurve(points)];
@@ -35,7 +36,7 @@ export function familySegments(api, family, points) {
     // Piecewise cubic Bezier: segment i is P3i..P3i+3, neighbours share the end point.
     for (let i = 0; i + 3 < points.length; i += 3) segs.push({ kind: 'bezier', dim: 2, points: flat(points.slice(i, i + 4)) });
   } else if (family === 'hermite') {
-    const t = pointTangents(api, points);
+    const t = tangents ?? pointTangents(api, points);
     for (let i = 0; i + 1 < points.length; i += 1) {
       segs.push({ kind: 'hermite', dim: 2, points: flat([points[i], points[i + 1]]), tangents: flat([t[i], t[i + 1]]) });
     }

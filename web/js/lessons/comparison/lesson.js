@@ -4,7 +4,7 @@
 // the core; basis conversion both ways; affine and perspective invariance measured.
 import { object, list, number, oneOf, integer, boolean, viewSchema } from '../../app/schema.js';
 import { h, panel, table, setChildren } from '../../app/dom.js';
-import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
+import { math, matrix, mi, mo, mn, el, rows4, formatNumber, continuityClass, inlineMath } from '../../ui/mathml.js';
 import { formatSize as fmtDistance } from '../../ui/format.js';
 import { FAMILY_IDS, FAMILY_NAMES, FAMILY_COLOR, FAMILY_DASH } from './families.js';
 import { computeTable, LECTURE_TABLE, ROW_NAMES } from './checks.js';
@@ -15,6 +15,7 @@ import { drawCurve, drawPolygon, drawLegend, arrowScale } from '../../ui/curve-o
 const TANGENT_SCALE = 1 / 3;
 import { createBlendingPlot } from '../../ui/blending-plot.js';
 import { createMatrixPanel } from '../../ui/matrix-panel.js';
+import { MATRIX_FORMS, createFormSelect, nextForm, lectureNames } from '../../ui/matrix-forms.js';
 import { computeDerivations, createDerivationPanel } from './derivation-panel.js';
 
 // The blending functions of one segment per point-based family: the convex hull row's
@@ -30,6 +31,12 @@ const pair = list(number(), { min: 2, max: 2 });
 // joint is accidentally smoother than its family guarantees.
 const DEFAULT_POINTS = [[-3.2, -1.2], [-2.4, 1.3], [-0.9, 1.6], [-0.2, -0.4], [1.1, -1.5], [2.3, 0.2], [3.3, 1.4]];
 
+// Hermite's own tangents T_i for the default polygon (issue 18: not Catmull-Rom's
+// (P_i+1 - P_i-1)/2, so the two curves differ visibly; dragging the arrow tips edits them).
+// A new segment's points get NEW_TANGENT. Plain data, in the points' units.
+const DEFAULT_TANGENTS = [[0, 4], [3, 0], [2, -3], [1.5, -3], [3, 0], [1.5, 3], [3, 0]];
+const NEW_TANGENT = [2, 0];
+
 const MIN_POINTS = 4;  // one cubic segment (a share link may hold one)
 const MIN_POINTS_BY_BUTTON = 7; // two segments: the continuity rows need a joint
 const MAX_POINTS = 31; // ten segments (the schema's limit)
@@ -37,6 +44,11 @@ const MAX_POINTS = 31; // ten segments (the schema's limit)
 // Three more points continuing the polygon: each side turns by a different angle from the
 // last one (so no joint comes out accidentally smoother than its family guarantees),
 // rounded to hundredths so share links stay short.
+// One tangent per point: the ones kept, NEW_TANGENT for new points (a segment added).
+function tangentsFor(points, own = DEFAULT_TANGENTS) {
+  return points.map((_, i) => (own[i] ?? NEW_TANGENT).slice());
+}
+
 function withNewSegment(points) {
   const out = points.map((p) => p.slice());
   const [a, b] = out.slice(-2);
@@ -55,15 +67,29 @@ const fmt = (x) => formatNumber(x, 3);
 // A bracket that keeps its text size next to tall matrices.
 const fixed = (text) => { const o = mo(text); o.setAttribute('stretchy', 'false'); return o; };
 
-const handlesOf = (state) => state.points.map(([x, y], i) => ({ id: `p${i}`, x, y, label: `P${i}` }));
+// The points, and Hermite's own tangent tips P_i + T_i/3 (drawn at a third, as the arrows)
+// while the families scene shows Hermite with its own tangents.
+const ownTangents = (state) => state.scene === 'families' && state.show.hermite && state.hermite.tangents === 'own';
+const handlesOf = (state) => [
+  ...state.points.map(([x, y], i) => ({ id: `p${i}`, x, y, label: `P${i}` })),
+  ...(ownTangents(state) ? state.points.map(([x, y], i) => ({ id: `t${i}`, x: x + state.hermite.own[i][0] / 3, y: y + state.hermite.own[i][1] / 3, label: `T${i}` })) : []),
+];
 
 /** @type {import('../../app/contract.js').Lesson} */
 export const lesson = {
   id: 'comparison',
   title: 'Comparison lab',
-  stateVersion: 2,
+  stateVersion: 4,
   // Version 2 (issue 18): the notation of the matrix panels; older links show decimals.
-  migrations: { 1: (old) => ({ ...old, notation: 'decimal' }) },
+  // Version 3 (issue 18): the matrix form of the panels (MATRIX_FORMS); older links show
+  // lectures 000/003's form, as they did.
+  // Version 4 (issue 18): Hermite's tangents (own, or Catmull-Rom's). Older links drew
+  // Hermite with Catmull-Rom's tangents: they open that way, with own tangents in reserve.
+  migrations: {
+    1: (old) => ({ ...old, notation: 'decimal' }),
+    2: (old) => ({ ...old, form: 'descending' }),
+    3: (old) => ({ ...old, hermite: { tangents: 'catmull-rom', own: tangentsFor(Array.isArray(old.points) ? old.points : DEFAULT_POINTS) } }),
+  },
   schema: {
     points: list(pair, { min: MIN_POINTS, max: MAX_POINTS }),
     scene: oneOf(...Object.keys(SCENES)),
@@ -75,10 +101,13 @@ export const lesson = {
       px: number({ min: -0.5, max: 0.5 }), py: number({ min: -0.5, max: 0.5 }),
     }),
     notation: oneOf('decimal', 'fraction'),
+    form: oneOf(...MATRIX_FORMS),
+    hermite: object({ tangents: oneOf('own', 'catmull-rom'), own: list(pair, { min: MIN_POINTS, max: MAX_POINTS }) }),
     view: viewSchema(),
   },
   checkState(state) {
     if ((state.points.length - 1) % 3 !== 0) return `the polygon needs 3n + 1 points (whole cubic Bezier segments), not ${state.points.length}`;
+    if (state.hermite.own.length !== state.points.length) return `Hermite needs one tangent per point (${state.points.length}), not ${state.hermite.own.length}`;
     if (state.conversion.start + 4 > state.points.length) return `the converted segment starts at P${state.conversion.start} but needs four points`;
     return null;
   },
@@ -89,6 +118,8 @@ export const lesson = {
     conversion: { from: 'bezier', to: 'hermite', start: 0, mode: 'keep-curve' },
     transform: { kind: 'affine', angle: 30, scale: 0.8, shear: 0.3, tx: 0.5, ty: -0.4, px: 0.06, py: 0.03 },
     notation: 'decimal',
+    form: 'descending',
+    hermite: { tangents: 'own', own: DEFAULT_TANGENTS.map((t) => t.slice()) },
     view: { cx: 0, cy: 0, zoom: 90 },
   }),
 
@@ -96,8 +127,8 @@ export const lesson = {
     const api = ctx.api;
     return {
       state,
-      table: computeTable(api, state.points),
-      conversion: computeConversion(api, state.points, state.conversion),
+      table: computeTable(api, state.points, state.hermite.tangents === 'own' ? state.hermite.own : null),
+      conversion: computeConversion(api, state.points, state.conversion, state.form),
       invariance: computeInvariance(api, state.points, state.transform),
       blending: BLEND_FAMILIES.map((family) => blendingOfFirstSegment(api, family, state.points)),
       derivations: computeDerivations(api, state.points),
@@ -105,7 +136,9 @@ export const lesson = {
   },
 
   fitView(view, model, stage) {
-    const pts = model.state.scene === 'invariance' ? [...model.state.points, ...model.invariance.mapped] : model.state.points;
+    // (the tips of Hermite's own tangents are handles too: they must be in view)
+    const tips = handlesOf(model.state).filter((hd) => hd.id[0] === 't').map((hd) => [hd.x, hd.y]);
+    const pts = model.state.scene === 'invariance' ? [...model.state.points, ...model.invariance.mapped] : [...model.state.points, ...tips];
     const xs = pts.map((p) => p[0]);
     const ys = pts.map((p) => p[1]);
     const [minY, maxY] = [Math.min(...ys), Math.max(...ys)];
@@ -127,20 +160,29 @@ export const lesson = {
     const addSegment = () => {
       const state = ctx.state;
       if (state.points.length + 3 > MAX_POINTS) { ctx.message.error(`At most ${MAX_POINTS} points (ten segments)`, 'too-many-points'); return; }
-      if (ctx.commit({ ...state, points: withNewSegment(state.points) })) ctx.fitView();
+      const points = withNewSegment(state.points);
+      if (ctx.commit({ ...state, points, hermite: { ...state.hermite, own: tangentsFor(points, state.hermite.own) } })) ctx.fitView();
     };
     const removeSegment = () => {
       const state = ctx.state;
       if (state.points.length - 3 < MIN_POINTS_BY_BUTTON) { ctx.message.error('Two segments are the least here: the continuity rows need a joint', 'too-few-points'); return; }
       const points = state.points.slice(0, -3);
-      ctx.commit({ ...state, points, conversion: { ...state.conversion, start: Math.min(state.conversion.start, points.length - 4) } });
+      ctx.commit({ ...state, points, hermite: { ...state.hermite, own: tangentsFor(points, state.hermite.own) },
+        conversion: { ...state.conversion, start: Math.min(state.conversion.start, points.length - 4) } });
     };
     const addButton = h('button', { type: 'button', class: 'tool', id: 'add-segment', onclick: addSegment }, 'Add a segment');
     const removeButton = h('button', { type: 'button', class: 'tool', id: 'remove-segment', onclick: removeSegment }, 'Remove the last segment');
-    ctx.controls.replaceChildren(h('label', { for: 'scene' }, 'Show ', sceneSelect), ...familyBoxes.map((b) => b.label), addButton, removeButton);
+    // Issue 18: Hermite's tangents, its own (default) or Catmull-Rom's (the comparison of
+    // lecture 002's Catmull-Rom conditions inside Hermite), with a note saying which.
+    const hermiteTangents = h('select', { id: 'hermite-tangents', onchange: () => ctx.commit({ ...ctx.state, hermite: { ...ctx.state.hermite, tangents: hermiteTangents.value } }) },
+      h('option', { value: 'own' }, 'its own (drag the tips)'),
+      h('option', { value: 'catmull-rom' }, 'Catmull-Rom\'s (P(i+1) − P(i−1))/2'));
+    const hermiteNote = h('p', { class: 'hint', id: 'hermite-note', 'aria-live': 'polite' });
+    ctx.controls.replaceChildren(h('label', { for: 'scene' }, 'Show ', sceneSelect), ...familyBoxes.map((b) => b.label), addButton, removeButton,
+      h('label', { for: 'hermite-tangents' }, 'Hermite tangents ', hermiteTangents), hermiteNote);
 
     // The panel of the current scene is open and first in view; the live table stays below.
-    const convBody = panel(ctx.panels, { id: 'conversion-panel', title: 'Basis conversion: q = M⁻¹ M_B P', open: false });
+    const convBody = panel(ctx.panels, { id: 'conversion-panel', title: h('span', {}, 'Basis conversion: ', inlineMath(el('mrow', mi('q'), mo('='), el('msup', mi('M'), el('mrow', mo('−'), mn('1'))), el('msub', mi('M'), mi('B')), mi('P')))), open: false });
     const invBody = panel(ctx.panels, { id: 'invariance-panel', title: 'Invariance: transform the points or the curve', open: false });
     const tableBody = panel(ctx.panels, { id: 'table-panel', title: 'The comparison table, checked live' });
     const blendBody = panel(ctx.panels, { id: 'blending-panel', title: 'Blending weights (the convex hull row)' });
@@ -163,10 +205,12 @@ export const lesson = {
       // Issue 18: M in exact fractions as on the slides (1/6 [...], 1/2 [...]) or decimals.
       fractions: h('input', { type: 'checkbox', id: 'conv-fractions', onchange: (e) => ctx.commit({ ...ctx.state, notation: e.target.checked ? 'fraction' : 'decimal' }) }),
     };
+    // Issue 18: the form of a lecture for the two matrix panels (000/003, 002, 001).
+    ({ select: conv.form, row: conv.formRow } = createFormSelect('conv-form', (form) => ctx.commit({ ...ctx.state, form })));
     convBody.append(h('div', { class: 'form-row' },
       h('label', { for: 'conv-mode' }, 'Mode ', conv.mode), h('label', { for: 'conv-from' }, 'P read as ', conv.from),
       h('label', { for: 'conv-to' }, 'other basis ', conv.to), h('label', { for: 'conv-start' }, 'first point P', conv.start),
-      h('label', { class: 'check' }, conv.fractions, ' Exact fractions as on the slides')), conv.out, conv.matrices);
+      h('label', { class: 'check' }, conv.fractions, ' Exact fractions as on the slides')), conv.formRow, conv.out, conv.matrices);
     conv.fromPanel = createMatrixPanel(conv.matrices);
     conv.toPanel = createMatrixPanel(conv.matrices);
 
@@ -184,11 +228,13 @@ export const lesson = {
     };
     invBody.append(h('label', { for: 'tf-kind' }, 'Map ', inv.kind), h('div', { class: 'slider-grid' }, inv.sliders.map((s) => s.label)), inv.out);
     const derivation = createDerivationPanel(ctx.panels);
-    const ui = { sceneSelect, familyBoxes, tableBody, conv, inv, blendPlots, addButton, removeButton, shownScene: null, derivation,
+    const ui = { sceneSelect, familyBoxes, hermiteTangents, hermiteNote, tableBody, conv, inv, blendPlots, addButton, removeButton, shownScene: null, derivation,
       convPanel: convBody.parentElement, invPanel: invBody.parentElement };
     ctx.keymap.add({ keys: ['n'], label: 'add a segment (three points)', group: 'Lesson', action: addSegment });
     ctx.keymap.add({ keys: ['f'], label: 'matrix entries: exact fractions or decimals', group: 'Lesson',
       action: () => ctx.commit({ ...ctx.state, notation: ctx.state.notation === 'fraction' ? 'decimal' : 'fraction' }) });
+    ctx.keymap.add({ keys: ['m'], label: 'next matrix form: lectures 000/003, 002, 001', group: 'Lesson',
+      action: () => ctx.commit({ ...ctx.state, form: nextForm(ctx.state.form) }) });
     ctx.keymap.add({ keys: ['x'], label: 'remove the last segment', group: 'Lesson', action: removeSegment });
 
     ctx.keymap.add({ keys: ['v'], label: 'next scene: families, conversion, invariance', group: 'Lesson', action: () => {
@@ -210,6 +256,12 @@ export const lesson = {
     }
     ui.sceneSelect.value = state.scene;
     for (const b of ui.familyBoxes) b.box.checked = state.show[b.f];
+    ui.hermiteTangents.value = state.hermite.tangents;
+    const note = state.hermite.tangents === 'catmull-rom'
+      ? 'Catmull-Rom inside Hermite: with the tangents (P(i+1) − P(i−1)) / 2 of lecture 002\'s Catmull-Rom conditions, every inner Hermite segment is the Catmull-Rom segment, so the two curves coincide there (they differ only in the end segments, where Hermite takes the chord and Catmull-Rom repeats the end point).'
+      : '';
+    if (ui.hermiteNote.textContent !== note) ui.hermiteNote.textContent = note;
+    ui.hermiteNote.hidden = note === '';
     ui.addButton.disabled = state.points.length + 3 > MAX_POINTS;
     ui.removeButton.disabled = state.points.length - 3 < MIN_POINTS_BY_BUTTON;
     updateTable(ui.tableBody, model.table);
@@ -222,8 +274,12 @@ export const lesson = {
     const m = model.conversion;
     const name = (k) => FAMILY_NAMES[k];
     ui.conv.fractions.checked = state.notation === 'fraction';
-    ui.conv.fromPanel.update({ segment: m.segmentFrom, u: 0.5, point: m.midFrom, notation: state.notation, title: `${name(m.from)}: the segment as drawn (P)` });
-    ui.conv.toPanel.update({ segment: m.segmentTo, u: 0.5, point: m.midTo, notation: state.notation,
+    ui.conv.form.value = state.form;
+    // The four bases here are the lectures' cubics: each form's own names (issue 18).
+    ui.conv.fromPanel.update({ segment: m.segmentFrom, u: 0.5, point: m.midFrom, notation: state.notation, form: state.form,
+      names: lectureNames(state.form, m.segmentFrom.basis), title: `${name(m.from)}: the segment as drawn (P)` });
+    ui.conv.toPanel.update({ segment: m.segmentTo, u: 0.5, point: m.midTo, notation: state.notation, form: state.form,
+      names: lectureNames(state.form, m.segmentTo.basis),
       title: m.q ? `${name(m.to)}: the same curve from q` : `${name(m.to)}: the same G with M swapped` });
   },
 
@@ -237,7 +293,7 @@ export const lesson = {
       for (const f of FAMILY_IDS) {
         if (!state.show[f]) continue;
         for (const s of model.table.curves[f]) drawCurve(painter, s.points, { stroke: strokeOf(f), width: f === 'bezier' ? 4 : 2.5, dash: FAMILY_DASH[f] });
-        legend.push([strokeOf(f), `${FAMILY_NAMES[f]}${f === 'catmull-rom' ? ' (end points repeated)' : f === 'nubs' ? ` (knots ${model.table.knots.join(', ')})` : f === 'hermite' ? ', t_i = (P_i+1 − P_i−1)/2: Catmull-Rom inside' : ''}`, FAMILY_DASH[f]]);
+        legend.push([strokeOf(f), `${FAMILY_NAMES[f]}${f === 'catmull-rom' ? ' (end points repeated)' : f === 'nubs' ? ` (knots ${model.table.knots.join(', ')})` : f === 'hermite' ? (state.hermite.tangents === 'own' ? `, its own tangents (drag the tips T0..T${state.points.length - 1})` : ', t_i = (P_i+1 − P_i−1)/2: Catmull-Rom inside') : ''}`, FAMILY_DASH[f]]);
       }
       if (state.show.hermite) {
         const t = model.table.tangents;
@@ -280,6 +336,13 @@ export const lesson = {
   moveHandle(view, state, id, x, y) {
     const i = Number(id.slice(1));
     if (!Number.isInteger(i) || i < 0 || i >= state.points.length) return null;
+    if (id[0] === 't') {
+      // The tip is drawn at P_i + T_i/3.
+      if (!ownTangents(state)) return null;
+      const own = state.hermite.own.map((t) => t.slice());
+      own[i] = [3 * (x - state.points[i][0]), 3 * (y - state.points[i][1])];
+      return { ...state, hermite: { ...state.hermite, own } };
+    }
     const points = state.points.map((p) => p.slice());
     points[i] = [x, y];
     return { ...state, points };
@@ -343,7 +406,7 @@ function updateTable(body, tbl) {
     table({ caption: 'Lecture 003 (Hermite to Catmull-Rom) and lecture 001 (non-uniform B-spline): each guarantee checked for every polygon, and under it what this polygon does',
       head: [['', ...FAMILY_IDS.map((f) => FAMILY_NAMES[f])]],
       rows, className: 'data-table comparison-table' }),
-    h('p', { class: 'hint' }, 'Guaranteed: what holds for every control polygon. Continuity and interpolation come from the core\'s structural argument: the derivatives at a joint are linear in the control data, so C^k holds for every polygon exactly when their coefficients (basis matrix, or the basis functions at a knot) agree, and a point is always interpolated when its basis function is 1 at a joint. Convex hull: the blending weights of the points are ≥ 0 and sum to 1 (lecture 003). This polygon: distances from the control points to the curve and the core\'s classifier at its joints, which may be smoother than guaranteed. Ease of subdivision is the lecture\'s judgement, quoted; beside it, how well this polygon\'s split halves match.'),
+    h('p', { class: 'hint' }, 'Guaranteed: what holds for every control polygon. Continuity and interpolation come from the core\'s structural argument: the derivatives at a joint are linear in the control data, so ', continuityClass('C', 'k'), ' holds for every polygon exactly when their coefficients (basis matrix, or the basis functions at a knot) agree, and a point is always interpolated when its basis function is 1 at a joint. Convex hull: the blending weights of the points are ≥ 0 and sum to 1 (lecture 003). This polygon: distances from the control points to the curve and the core\'s classifier at its joints, which may be smoother than guaranteed. Ease of subdivision is the lecture\'s judgement, quoted; beside it, how well this polygon\'s split halves match.'),
   );
 }
 

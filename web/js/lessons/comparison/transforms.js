@@ -15,7 +15,7 @@ export function segmentCurve(kind, g) {
 
 const maxDistance = (api, a, b) => api.maxDistance(a, b, 2).distance;
 
-export function computeConversion(api, points, { from, to, start, mode }) {
+export function computeConversion(api, points, { from, to, start, mode }, form = 'descending') {
   const g = flat(points.slice(start, start + 4));
   const params = linspace(0, 1, SAMPLES);
   const original = api.evaluateCurve(segmentCurve(from, g), params);
@@ -24,14 +24,14 @@ export function computeConversion(api, points, { from, to, start, mode }) {
     const converted = api.evaluateCurve(segmentCurve(to, Array.from(q)), params);
     return { mode, from, to, g, q, original, other: converted, distance: maxDistance(api, original, converted),
       Mfrom: api.basisMatrix(from), Mto: api.basisMatrix(to),
-      segmentFrom: api.segmentMatrices(segmentCurve(from, g), 0), segmentTo: api.segmentMatrices(segmentCurve(to, Array.from(q)), 0),
+      segmentFrom: api.segmentMatrices(segmentCurve(from, g), 0, { form }), segmentTo: api.segmentMatrices(segmentCurve(to, Array.from(q)), 0, { form }),
       midFrom: [original[MID * 2], original[MID * 2 + 1]], midTo: [converted[MID * 2], converted[MID * 2 + 1]] };
   }
   // Keep G, swap M: the same four rows read as the geometry of another basis.
   const swapped = api.evaluateCurve(segmentCurve(to, g), params);
   return { mode, from, to, g, q: null, original, other: swapped, distance: maxDistance(api, original, swapped),
     Mfrom: api.basisMatrix(from), Mto: api.basisMatrix(to),
-    segmentFrom: api.segmentMatrices(segmentCurve(from, g), 0), segmentTo: api.segmentMatrices(segmentCurve(to, g), 0),
+    segmentFrom: api.segmentMatrices(segmentCurve(from, g), 0, { form }), segmentTo: api.segmentMatrices(segmentCurve(to, g), 0, { form }),
     midFrom: [original[MID * 2], original[MID * 2 + 1]], midTo: [swapped[MID * 2], swapped[MID * 2 + 1]] };
 }
 

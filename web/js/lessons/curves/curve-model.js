@@ -71,7 +71,7 @@ export function computeCurveModel(api, state, cache) {
   // P, P', P'' at u in one pass: values[2k + c] is component c of the k-th derivative.
   const pd = api.evaluateWithDerivatives(spec, Float64Array.of(u), 2);
   const segmentIndex = api.segmentAt(spec, u);
-  const segment = api.segmentMatrices(spec, segmentIndex);
+  const segment = api.segmentMatrices(spec, segmentIndex, { form: state.form });
 
   const model = {
     spec,
@@ -98,6 +98,8 @@ export function computeCurveModel(api, state, cache) {
 
   if (isSpline(state.family)) {
     model.knots = knotModel(api, spec, domain);
+    // Issue 18: lecture 002's {0,0,0,0,1,1,1,1}: this B-spline is its points' Bezier curve.
+    model.bezierInDisguise = usesKnots(state.family) && api.isBezierInDisguise(Float64Array.from(state.knots), state.degree);
   } else {
     // Segment joints: the curve at the segment boundaries of the piecewise families.
     const n = domain.segmentCount ?? 1;

@@ -11,6 +11,7 @@ import { computeCurveModel, constructionsFor } from './curve-model.js';
 import { drawCurve, drawInfluence, drawPolygon, drawHull, drawVector, drawComb, drawMarks, drawSamples, drawLevels, drawLegend, arrowScale } from '../../ui/curve-overlays.js';
 import { createPanels, updatePanels, drawPlots } from './panels.js';
 import { formatNumber } from '../../ui/mathml.js';
+import { MATRIX_FORMS, migrateTransposed } from '../../ui/matrix-forms.js';
 
 const pair = list(number(), { min: 2, max: 2 });
 // Parse bound of the per-point lists of a share link or file; each family's own limit is
@@ -24,9 +25,14 @@ const overlaySchema = object(Object.fromEntries(Object.keys(OVERLAYS).map((k) =>
 export const lesson = {
   id: 'curves',
   title: 'Curve explorer',
-  stateVersion: 2,
+  stateVersion: 3,
   // Version 2 (issue 18): the notation of the matrix panel; older links show decimals.
-  migrations: { 1: (old) => ({ ...old, notation: 'decimal' }) },
+  // Version 3 (issue 18): the matrix form (MATRIX_FORMS) replaces the lecture-001 checkbox
+  // `transposed`; an old link opens in the form it showed.
+  migrations: {
+    1: (old) => ({ ...old, notation: 'decimal' }),
+    2: (old) => migrateTransposed(old),
+  },
   schema: {
     family: oneOf(...FAMILY_IDS),
     points: list(pair, { min: 2, max: MAX_LIST }),
@@ -38,7 +44,7 @@ export const lesson = {
     u: number(),
     construction: object({ kind: oneOf(...CONSTRUCTIONS), step: integer({ min: 0, max: 40 }) }),
     overlays: overlaySchema,
-    transposed: boolean(),
+    form: oneOf(...MATRIX_FORMS),
     notation: oneOf('decimal', 'fraction'),
     compare: boolean(),
     view: viewSchema(),
@@ -57,7 +63,7 @@ export const lesson = {
       u: 0.35,
       construction: { kind: 'none', step: 0 },
       overlays: { ...DEFAULT_OVERLAYS },
-      transposed: false,
+      form: 'descending',
       notation: 'decimal',
       compare: true,
       view: { cx: 2, cy: 1, zoom: 120 },

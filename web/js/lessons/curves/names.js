@@ -22,7 +22,8 @@ export function blendingLabels(state, count) {
   const p = state.degree;
   return Array.from({ length: count }, (_, i) => {
     if (state.family === 'hermite') return i < K ? `H_P${i}` : `H_T${i - K}`;
-    if (isSpline(state.family)) return state.family === 'nurbs' ? `R${i},${p}` : `N${i},${p}`;
+    // Lecture 002 writes the B-spline basis B_id (d the degree); NURBS R_i,d is its weighted form.
+    if (isSpline(state.family)) return state.family === 'nurbs' ? `R${i},${p}` : `B${i},${p}`;
     if (state.family === 'bezier') return `B${i},${K - 1}`;
     if (state.family === 'interpolation') return `L${i}`;
     return `B_P${i}`;

@@ -5,7 +5,7 @@
 // change leaves the old state and the message line says why).
 import { h, panel } from '../../app/dom.js';
 import { createPlayer } from '../../app/player.js';
-import { formatNumber } from '../../ui/mathml.js';
+import { formatNumber, continuityClass, inlineMath, el, mi, mo, mn, fixedMo } from '../../ui/mathml.js';
 import {
   FAMILIES, familyInfo, familyMaxPoints, usesKnots, isSpline, hasDegreeChoice, maxDegreeFor, switchFamily, addPoint, removePoint,
   withDegree, continuityLabel,
@@ -14,6 +14,7 @@ import { pairs } from '../../app/arrays.js';
 import { constructionsFor, createModelCache } from './curve-model.js';
 import { createBlendingPlot } from '../../ui/blending-plot.js';
 import { createMatrixPanel } from '../../ui/matrix-panel.js';
+import { createFormSelect, nextForm, lectureNames } from '../../ui/matrix-forms.js';
 import { createSubdivisionMatrices } from './subdivision-matrices.js';
 import { createKnotStrip } from './knot-strip.js';
 import { createHomogeneousInset } from './homogeneous-inset.js';
@@ -131,8 +132,9 @@ export function createPanels(ctx) {
 
   // ---------------------------------------------------------------- side panels
   const matrixBody = panel(ctx.panels, { id: 'panel-matrix', title: 'Matrix form of the current segment' });
-  const transposed = h('input', { type: 'checkbox', id: 'matrix-transposed', onchange: (e) => commit({ ...state(), transposed: e.target.checked }) });
-  matrixBody.append(h('label', { class: 'check' }, transposed, ' Lecture 001 form Q(t) = G · M · T (transposed M)'));
+  // Issue 18: the form of a lecture (descending 000/003, ascending 002, transposed 001).
+  const { select: formSelect, row: formRow } = createFormSelect('matrix-form', (form) => commit({ ...state(), form }));
+  matrixBody.append(formRow);
   // Issue 18: M in exact fractions as on the slides (1/6 [...], 1/2 [...]) or in decimals.
   const fractions = h('input', { type: 'checkbox', id: 'matrix-fractions', onchange: (e) => commit({ ...state(), notation: e.target.checked ? 'fraction' : 'decimal' }) });
   matrixBody.append(h('label', { class: 'check' }, fractions, ' Exact fractions as on the slides (1/6 [integers])'));
@@ -264,7 +266,9 @@ export function createPanels(ctx) {
   const knotTable = h('div', { class: 'knot-table' });
   const removalNote = h('p', { class: 'hint', id: 'knot-removal-note' },
     'Raising m inserts the knot again (Boehm): the curve does not move. Lowering m is knot removal, which moves the curve unless it already has the higher continuity there; take a raise back with Undo, which is exact.');
-  knotsBody.append(presets, knotTable, removalNote);
+  // Issue 18: when the knots make this B-spline a Bezier curve (decided by the core).
+  const bezierNote = h('p', { class: 'hint', id: 'bezier-disguise-note', 'aria-live': 'polite', hidden: true });
+  knotsBody.append(presets, knotTable, bezierNote, removalNote);
   // A preset keeps u, moved onto the new knots' domain [t_p, t_K] (the core's curveDomain).
   function setKnots(knots) {
     const s = state();
@@ -306,7 +310,7 @@ export function createPanels(ctx) {
   ctx.keymap.add({ keys: ['l'], label: 'u a little forward', group: 'Curve', action: () => nudgeU(1) });
   ctx.keymap.add({ keys: ['a'], label: 'add a control point after the selected one', group: 'Curve', action: () => addSelected() });
   ctx.keymap.add({ keys: ['Delete', 'Backspace'], label: 'remove the selected control point', group: 'Curve', action: () => removeSelected() });
-  ctx.keymap.add({ keys: ['m'], label: 'matrix form: u^T M G or G M T', group: 'Curve', action: () => commit({ ...state(), transposed: !state().transposed }) });
+  ctx.keymap.add({ keys: ['m'], label: 'next matrix form: lectures 000/003, 002, 001', group: 'Curve', action: () => commit({ ...state(), form: nextForm(state().form) }) });
   ctx.keymap.add({ keys: ['f'], label: 'matrix entries: exact fractions or decimals', group: 'Curve', action: () => commit({ ...state(), notation: state().notation === 'fraction' ? 'decimal' : 'fraction' }) });
   ctx.keymap.add({ keys: ['Shift+click'], label: 'add a control point at the mouse (on the drawing)', group: 'Curve' });
   function nudgeU(sign) {
@@ -317,8 +321,8 @@ export function createPanels(ctx) {
   // Shift+click on the drawing adds a point there (the lesson's click hook calls this).
   const addAt = (x, y) => addSelected([Math.round(x * 1e4) / 1e4, Math.round(y * 1e4) / 1e4]);
 
-  const view = { addAt, cache: createModelCache(), family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, transposed, fractions, notationNote, splitMatrices, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
-    inspector, tangentFields, weightFields, knotField, knotTable, knotsPanel: knotsBody.parentElement, nurbsPanel: nurbsBody.parentElement, weightList, inset,
+  const view = { addAt, cache: createModelCache(), family, degree, tension, tensionOut, uSlider, uOut, blending, strip, stripBox, matrix, formSelect, fractions, notationNote, splitMatrices, conKind, conStep, conButtons, overlayBoxes, compare, compareLabel,
+    inspector, tangentFields, weightFields, knotField, knotTable, bezierNote, knotsPanel: knotsBody.parentElement, nurbsPanel: nurbsBody.parentElement, weightList, inset,
     degreeLabel: row1.querySelector('.degree-label'), tensionGroup: row1.querySelector('.tension-group'), lastKnotKey: null, lastWeightKey: null, conPlayer, uPlayer, commit, state, setKnots };
   return view;
 }
@@ -354,14 +358,14 @@ export function updatePanels(els, model, state, ctx) {
   setValue(els.uSlider, model.u);
   els.uOut.textContent = formatNumber(model.u, 4);
   // matrix panel
-  els.transposed.checked = state.transposed;
+  els.formSelect.value = state.form;
   els.fractions.checked = state.notation === 'fraction';
   const noteText = notationNotes(state).join(' ');
   if (els.notationNote.textContent !== noteText) els.notationNote.textContent = noteText;
   els.notationNote.hidden = noteText === '';
   els.splitMatrices.update(state);
-  els.matrix.update({ segment: model.segment, u: model.u, point: model.point, transposed: state.transposed, notation: state.notation,
-    title: `${familyInfo(state.family).label}, basis ${model.segment.basis ?? state.family}` });
+  els.matrix.update({ segment: model.segment, u: model.u, point: model.point, form: state.form, notation: state.notation,
+    title: segmentTitle(state, model.segment), names: segmentNames(state, model.segment) });
   // constructions
   const kinds = constructionsFor(state.family, ctx.api);
   const wanted = ['none', ...kinds].join();
@@ -396,6 +400,12 @@ export function updatePanels(els, model, state, ctx) {
   // knots panel and strip
   els.knotsPanel.hidden = !isSpline(state.family);
   els.stripBox.hidden = !isSpline(state.family);
+  const disguise = model.bezierInDisguise
+    ? `These knots (${state.knots.map((k) => formatNumber(k, 4)).join(', ')}) make this ${state.family === 'nurbs' ? 'NURBS the rational Bezier curve' : 'B-spline the Bezier curve'} of its ${K} points: `
+      + `one segment, clamped ends (lecture 002: {0, 0, 0, 0, 1, 1, 1, 1}, cubic B-spline → cubic Bezier curve). Add a point or insert a knot for a B-spline that is not one.`
+    : '';
+  if (els.bezierNote.textContent !== disguise) els.bezierNote.textContent = disguise;
+  els.bezierNote.hidden = disguise === '';
   if (model.knots) {
     const key = JSON.stringify([model.knots.values, state.degree, state.family]);
     if (key !== els.lastKnotKey) {
@@ -445,7 +455,7 @@ function knotGroupTable(model, state, ctx) {
   const where = (g) => (joint(g) ? continuityLabel(g.continuity) : inDomain(g) ? 'end of the domain' : 'outside the domain');
   const editable = usesKnots(state.family);
   const tbl = h('table', { class: 'data-table knot-groups' },
-    h('caption', {}, `Degree p = ${state.degree}: a knot of multiplicity m gives continuity C^(p-m) there.`),
+    h('caption', {}, `Degree p = ${state.degree}: a knot of multiplicity m gives continuity `, continuityClass('C', 'p−m'), ' there.'),
     h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'knot'), h('th', { scope: 'col' }, 'multiplicity m'), h('th', { scope: 'col' }, 'continuity'), editable ? h('th', { scope: 'col' }, 'raise m') : null)),
     h('tbody', {}, groups.map((g) => h('tr', { 'data-knot': String(g.value) },
       h('th', { scope: 'row' }, formatNumber(g.value, 4)),
@@ -511,7 +521,7 @@ export function drawPlots(els, model, state, ctx, hoveredItem) {
     knots: model.knots ? model.knots.groups.map((g) => g.value) : Array.from(model.joints?.params ?? []),
     highlight: hoveredItem === null ? null : (hermite ? hoveredItem % K : hoveredItem),
     present: ctx.ui.present,
-    caption: captionFor(state),
+    caption: cachedCaption(els, state),
   });
   if (model.knots) {
     els.strip.update({ knots: model.knots.values, groups: model.knots.groups, degree: state.degree, domain: model.domain, u: model.u,
@@ -522,14 +532,31 @@ export function drawPlots(els, model, state, ctx, hoveredItem) {
   }
 }
 
+// The blending plot's caption with its names typeset (issue 18: no raw "N_i,3"), built
+// once per family and degree. B-splines are B_i,d with d the degree, as lecture 002 writes
+// B_id (the plot's own labels follow: B0,3 ...).
+function cachedCaption(els, state) {
+  const key = JSON.stringify([state.family, state.degree, state.points.length]);
+  if (els.captionKey !== key) {
+    els.captionKey = key;
+    els.captionNode = captionFor(state);
+  }
+  return els.captionNode;
+}
+
 function captionFor(state) {
+  const span = (...parts) => h('span', {}, ...parts);
+  const f = (name, sub) => inlineMath(el('mrow', el('msub', mi(name), el('mrow', ...sub)), fixedMo('('), mi('u'), fixedMo(')')));
+  const i = mi('i');
+  const comma = mo(',');
+  const n = (k) => mn(String(k));
   switch (state.family) {
-    case 'hermite': return 'Hermite blending functions: solid for the points, dashed for the tangents (B = M T, lecture 001)';
-    case 'bezier': return `Bernstein polynomials B_i,${state.points.length - 1}(u) (lecture 001)`;
-    case 'interpolation': return 'Lagrange polynomials L_i(u): each is 1 at its node and 0 at the others (lecture 000)';
-    case 'nurbs': return `Rational basis R_i,${state.degree}(u) = w_i N_i,${state.degree} / sum w_j N_j,${state.degree}`;
-    case 'catmull-rom': return 'Catmull-Rom / cardinal blending functions (lecture 003)';
-    default: return `B-spline basis N_i,${state.degree}(u) by Cox-de Boor (lecture 002)`;
+    case 'hermite': return span('Hermite blending functions ', f('H', [n(0)]), ' .. ', f('H', [n(3)]), ' (lecture 000): solid for the points, dashed for the tangents');
+    case 'bezier': return span('Bernstein polynomials ', f('B', [i, comma, n(state.points.length - 1)]), ' (lecture 001)');
+    case 'interpolation': return span('Lagrange polynomials ', f('L', [i]), ': each is 1 at its node and 0 at the others (lecture 000)');
+    case 'nurbs': return span('Rational basis ', f('R', [i, comma, mi('d')]), ' = ', inlineMath(el('mrow', el('msub', mi('w'), i.cloneNode(true)), el('msub', mi('B'), el('mrow', mi('i'), mo(','), mi('d'))), mo('/'), mo('∑'), el('msub', mi('w'), mi('j')), el('msub', mi('B'), el('mrow', mi('j'), mo(','), mi('d'))))), `, d = ${state.degree} (lecture 002's NURBS)`);
+    case 'catmull-rom': return span('Catmull-Rom / cardinal blending functions (lecture 003)');
+    default: return span('B-spline basis ', f('B', [i, comma, mi('d')]), `, degree d = ${state.degree}, by Cox-de Boor (lecture 002)`);
   }
 }
 
@@ -540,9 +567,33 @@ function notationNotes(state) {
     notes.push('Lecture 002 prints the first row of M_R as (−1 3 −3 0); lecture 003 has (−1 3 −3 1), '
       + 'and only that row makes the blending functions add up to 1. The app computes lecture 003\'s matrix.');
   }
-  if (state.transposed) {
+  if (state.form === 'ascending') {
+    notes.push('Lecture 002 writes u = (1, u, u², u³) and C = M g: the matrix of lectures 000 and 003 with its rows in the opposite order '
+      + '(the row of u⁰ first); g is the same geometry.');
+  }
+  if (state.form === 'transposed') {
     notes.push('Lecture 001 writes T = [t³ t² t 1] as a row in Q(t) = T · C and as a column in G · M · T on the same slide; '
       + 'this form is the second one (T a column, M the transpose of the matrix of lectures 000 and 003, as in 001\'s M_H).');
   }
   return notes;
+}
+
+// The heading of the matrix panel in the lectures' words (issue 18: never a state or basis
+// id): the family, and the basis when it is not the family's own name.
+const BASIS_NAMES = { hermite: 'Hermite', bezier: 'Bezier (Bernstein)', bspline: 'B-spline', 'catmull-rom': 'Catmull-Rom',
+  cardinal: 'cardinal spline', interpolation: 'Lagrange interpolation', nurbs: 'NURBS' };
+function segmentTitle(state, segment) {
+  const label = familyInfo(state.family).label;
+  if (state.family === 'catmull-rom' && state.tension !== 0) return `${label}: cardinal spline, tension ${formatNumber(state.tension, 3)}`;
+  if (state.family === 'nurbs') return `${label}: homogeneous B-spline segment`;
+  const name = BASIS_NAMES[segment.basis];
+  return name && !label.includes(name.split(' ')[0]) ? `${label}: ${name} basis` : label;
+}
+
+// The lecture's own names when the segment is one of the lectures' cubics (a Bezier of
+// degree 3, the uniform cubic B-spline, Catmull-Rom without tension, Hermite).
+function segmentNames(state, segment) {
+  const cubic = segment.degree === 3 && (state.family === 'hermite' || state.family === 'bezier'
+    || (state.family === 'bspline-uniform') || (state.family === 'catmull-rom' && state.tension === 0));
+  return cubic ? lectureNames(state.form, segment.basis) : null;
 }

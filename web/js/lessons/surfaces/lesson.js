@@ -7,7 +7,7 @@
 // and panel bodies update fills in); the lesson keeps nothing at module level.
 import { object, list, number, oneOf, boolean, integer, viewSchema } from '../../app/schema.js';
 import { h, panel, table } from '../../app/dom.js';
-import { math, matrix, mi, mo, el, rows4, formatNumber } from '../../ui/mathml.js';
+import { math, matrix, mi, mo, el, rows4, formatNumber, inlineMath } from '../../ui/mathml.js';
 import { createCamera, projectAll } from './view3d.js';
 import { drawLegend, arrowScale } from '../../ui/curve-overlays.js';
 import { defaultBezierNet, handleOf, hermiteEntryFromHandle, entryName, joinPatches, sharedEntriesOfB } from './nets.js';
@@ -269,8 +269,8 @@ export const lesson = {
       });
     }
     view.cornersBody.replaceChildren(table({
-      caption: 'The patch interpolates its corner points; p_uv is the twist (flat there when 0)',
-      head: [['corner', 'p(u,v) from the core', 'control entry', 'distance', 'twist p_uv']], rows: cornerRows, className: 'data-table corners-table',
+      caption: h('span', {}, 'The patch interpolates its corner points; ', inlineMath(el('msub', mi('p'), mi('uv'))), ' is the twist (flat there when 0)'),
+      head: [['corner', 'p(u,v) from the core', 'control entry', 'distance', h('span', {}, 'twist ', inlineMath(el('msub', mi('p'), mi('uv'))))]], rows: cornerRows, className: 'data-table corners-table',
     }));
 
     if (model.boundary) {
