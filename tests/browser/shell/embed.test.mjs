@@ -301,7 +301,7 @@ test('panels= shows the listed side panels beside the canvas, and no other', asy
   const lesson = readyLessons.find((l) => l.id === 'curves');
   const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
   const { link } = await prepare(context, lesson);
-  const { frame } = await openHost(context, iframeHtml(embedSrc(link, '&panels=panel-matrix,panel-knots')));
+  const { frame } = await openHost(context, iframeHtml(embedSrc(link, '&panels=panel-matrix,panel-overlays')));
   const seen = await frame.evaluate(() => ({
     shown: [...document.querySelectorAll('#panels > *')].filter((el) => el.getClientRects().length > 0).map((el) => el.id),
     all: document.querySelectorAll('#panels > *').length,
@@ -310,7 +310,7 @@ test('panels= shows the listed side panels beside the canvas, and no other', asy
     message: window.wingspline.message(),
     scroll: { w: document.scrollingElement.scrollWidth, h: document.scrollingElement.scrollHeight },
   }));
-  assert.deepEqual(seen.shown.sort(), ['panel-knots', 'panel-matrix']);
+  assert.deepEqual(seen.shown.sort(), ['panel-matrix', 'panel-overlays']);
   assert.ok(seen.all > 2, 'the lesson has other panels, hidden');
   assert.equal(seen.message, '', 'nothing to say');
   assert.ok(seen.panels.left >= seen.canvas.right - EDGE_PX, 'the panels beside the canvas');
