@@ -190,6 +190,13 @@ for (const lesson of readyLessons) {
     const after = await app.evaluate((k) => ({ code: localStorage.getItem(k), theme: localStorage.getItem('wingspline:theme'), state: window.wingspline.state }), key);
     assert.equal(after.code, saved.code, 'the saved work of the lesson is unchanged');
     assert.deepEqual(withoutView(after.state), withoutView(saved.state), 'the full app opens at the saved work');
+    // Open in Wingspline (after Reset: the prepared state) opens the full lesson there.
+    const openHref = await frame.evaluate(() => document.querySelector('#lesson-toolbar a[data-action=open]').href);
+    const full = await context.newPage();
+    await full.goto(openHref);
+    await full.waitForSelector('body[data-ready=true]', { timeout: 15000 });
+    assert.deepEqual(withoutView(await full.evaluate(() => window.wingspline.state)), withoutView(prepared), 'Open in Wingspline shows the state of the frame');
+    assert.equal(await full.locator('[data-action=share]').count(), 1, 'in the full app');
     assert.deepEqual(page.problems, []);
   });
 

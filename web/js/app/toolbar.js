@@ -41,7 +41,7 @@ export function createToolbar({ header, lesson, store, persister, keymap, messag
         return runExport(item);
       },
     }, item.label)),
-    h('button', { type: 'button', 'data-export': 'embed-code', onclick() {
+    h('button', { type: 'button', 'data-action': 'embed-code', onclick() {
       exportMenu.open = false;
       return copyEmbedCode();
     } }, 'Copy embed code'))));
