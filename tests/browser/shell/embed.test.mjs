@@ -183,12 +183,17 @@ for (const lesson of readyLessons) {
     await settle(frame);
     assertFitted(await layout(frame), SMALL, 'after a resize to 400x300');
 
-    // Nothing of the embed reached the person's storage; the full app shows the saved work.
+    // Nothing of the embed reached the person's storage (read in the frame, which shares it,
+    // before any full app opens again: a full app may write the same state back with its
+    // fields in another order); the full app shows the saved work.
+    await frame.evaluate(() => window.wingspline.flush());
+    await settle(frame);
+    assert.equal(await frame.evaluate((k) => localStorage.getItem(k), key), saved.code, 'the saved work of the lesson is unchanged');
+    assert.equal(await frame.evaluate(() => localStorage.getItem('wingspline:theme')), saved.theme, 'the theme preference is unchanged');
     const app = await context.newPage();
     await app.goto(new URL(lesson.page, env.site.url).href);
     await app.waitForSelector('body[data-ready=true]', { timeout: 15000 });
-    const after = await app.evaluate((k) => ({ code: localStorage.getItem(k), theme: localStorage.getItem('wingspline:theme'), state: window.wingspline.state }), key);
-    assert.equal(after.code, saved.code, 'the saved work of the lesson is unchanged');
+    const after = await app.evaluate(() => ({ state: window.wingspline.state }));
     assert.deepEqual(withoutView(after.state), withoutView(saved.state), 'the full app opens at the saved work');
     // Open in Wingspline (after Reset: the prepared state) opens the full lesson there.
     const openHref = await frame.evaluate(() => document.querySelector('#lesson-toolbar a[data-action=open]').href);
@@ -321,6 +326,23 @@ test('panels= shows the listed side panels beside the canvas, and no other', asy
   assert.ok(seen.all > 2, 'the lesson has other panels, hidden');
   assert.equal(seen.message, '', 'nothing to say');
   assert.ok(seen.panels.left >= seen.canvas.right - EDGE_PX, 'the panels beside the canvas');
+  assert.ok(seen.scroll.w <= FRAME.width && seen.scroll.h <= FRAME.height, `no scroll bars (${JSON.stringify(seen.scroll)})`);
+  assert.deepEqual((await layout(frame)).outside, [], 'every handle on the canvas');
+});
+
+test('controls=1 shows the lesson\'s controls under the canvas, inside the frame', async () => {
+  const lesson = readyLessons.find((l) => l.id === 'curves');
+  const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
+  const { link } = await prepare(context, lesson);
+  const { frame } = await openHost(context, iframeHtml(embedSrc(link, '&controls=1')));
+  const seen = await frame.evaluate(() => {
+    const c = document.getElementById('stage-controls').getBoundingClientRect();
+    const s = document.getElementById('stage').getBoundingClientRect();
+    return { controls: { top: c.top, bottom: c.bottom, height: c.height }, canvasBottom: s.bottom,
+      scroll: { w: document.scrollingElement.scrollWidth, h: document.scrollingElement.scrollHeight } };
+  });
+  assert.ok(seen.controls.height > 0, 'the controls are shown');
+  assert.ok(seen.controls.top >= seen.canvasBottom - EDGE_PX && seen.controls.bottom <= FRAME.height + EDGE_PX, `under the canvas, inside the frame (${JSON.stringify(seen)})`);
   assert.ok(seen.scroll.w <= FRAME.width && seen.scroll.h <= FRAME.height, `no scroll bars (${JSON.stringify(seen.scroll)})`);
   assert.deepEqual((await layout(frame)).outside, [], 'every handle on the canvas');
 });
