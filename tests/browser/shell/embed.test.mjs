@@ -346,3 +346,19 @@ test('controls=1 shows the lesson\'s controls under the canvas, inside the frame
   assert.ok(seen.scroll.w <= FRAME.width && seen.scroll.h <= FRAME.height, `no scroll bars (${JSON.stringify(seen.scroll)})`);
   assert.deepEqual((await layout(frame)).outside, [], 'every handle on the canvas');
 });
+
+test('an embed whose state is damaged shows the starting point with one line, and leaves the saved work alone', async () => {
+  const lesson = readyLessons.find((l) => l.id === 'curves');
+  const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
+  const { link, key, saved } = await prepare(context, lesson);
+  const damaged = embedSrc(link).replace(/&s=.*/, '&s=QUJDREVGR0hJSktMTU5PUA');
+  const { frame } = await openHost(context, iframeHtml(damaged));
+  const seen = await frame.evaluate((k) => ({ message: window.wingspline.message(), stored: localStorage.getItem(k),
+    isDefault: (() => { const { view, ...rest } = window.wingspline.state; const { view: v, ...d } = window.wingspline.hooks.defaultState(); return JSON.stringify(rest) === JSON.stringify(d); })() }), key);
+  assert.match(seen.message, /could not be used/);
+  assert.ok(seen.message.length <= MESSAGE_MAX_CHARS);
+  assert.equal(seen.isDefault, true, 'the lesson\'s starting point, not the saved work');
+  assert.equal(seen.stored, saved.code, 'the saved work is neither shown nor moved');
+  assert.deepEqual(await toolbarActions(frame), ['reset', 'open']);
+  assertFitted(await layout(frame), FRAME, 'at the starting point');
+});
