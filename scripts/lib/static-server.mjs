@@ -1,6 +1,8 @@
 // A small static file server for dist/ (used by `npm start` and by the browser tests).
 // Sends .wasm as application/wasm (so Chrome stream-compiles it once) and the same
-// security headers a careful static host would send.
+// security headers a careful static host would send. No X-Frame-Options and no
+// frame-ancestors: a static teaching site is meant to be embedded in slides and course
+// pages (docs/embed.md, "Being framed"); each page's own CSP stays strict.
 import fs from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';

@@ -125,6 +125,20 @@ export async function restoreState(lesson, { contents } = {}) {
   return { state: lesson.defaultState(), source: 'default', problem: null, previous: null };
 }
 
+// An embed (docs/embed.md) shows its link's state, or the lesson's starting point when the
+// link cannot be used, and reads nothing of the person's saved work (nor takes this tab's
+// pending state, nor moves anything aside): an embed never touches that work.
+export async function restoreLinkOnly(lesson, { contents } = {}) {
+  const code = readHashCode();
+  if (code === null) return { state: lesson.defaultState(), source: 'default', problem: null, previous: null };
+  try {
+    const { state, problem } = await readLink(lesson, code, { contents });
+    return { state, source: 'link', problem, previous: null };
+  } catch (err) {
+    return { state: lesson.defaultState(), source: 'default', problem: `This share link could not be used: ${err.message}. Showing the lesson's starting point instead.`, previous: null };
+  }
+}
+
 // Decodes a link pasted into the address bar of the open page (hashchange): resolves to
 // { state, problem } or rejects with an Error of one sentence.
 export async function readLink(lesson, code, { contents } = {}) {
@@ -136,7 +150,9 @@ export async function readLink(lesson, code, { contents } = {}) {
 // notify(kind, detail) is called once per kind when something cannot be kept:
 // 'storage-full' (local storage refuses the state: the link still holds it) and
 // 'content-not-stored' (a large field could not be put in IndexedDB).
-export function createPersister(lesson, { delayMs = 200, contents = null, notify = (kind, detail) => {} } = {}) {
+// keep: false (an embed): nothing is written, neither the address bar nor local storage nor
+// the pending state of this tab; shareLink still makes the full lesson's link.
+export function createPersister(lesson, { delayMs = 200, contents = null, notify = (kind, detail) => {}, keep = true } = {}) {
   let timer = null;
   let pending = null;
   let lastCode = readHashCode();
@@ -157,7 +173,7 @@ export function createPersister(lesson, { delayMs = 200, contents = null, notify
       // storage disabled or full: the debounced write is all there is
     }
   }
-  window.addEventListener('pagehide', keepPending);
+  if (keep) window.addEventListener('pagehide', keepPending);
 
   let inflight = Promise.resolve();
   function flush() {
@@ -195,6 +211,7 @@ export function createPersister(lesson, { delayMs = 200, contents = null, notify
 
   return {
     save(state) {
+      if (!keep) return;
       pending = state;
       if (!timer) timer = setTimeout(flush, delayMs);
     },
@@ -208,6 +225,7 @@ export function createPersister(lesson, { delayMs = 200, contents = null, notify
     },
     // The saved code is moved aside (the page could not show it): the next save keeps it.
     keepSavedAside() {
+      if (!keep) return;
       const code = storage?.getItem(storageKey(lesson));
       if (code) keepAside(lesson, storage, code);
     },

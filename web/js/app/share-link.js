@@ -301,3 +301,70 @@ export async function decodeState(lesson, text, { contents } = {}) {
   }
   return readEnvelopeResolved(lesson, data, { contents });
 }
+
+// ------------------------------------------------------------------ embed (issue 19)
+// The embed parameters of a link's fragment, beside the state (docs/embed.md):
+//   lesson.html#embed=1&s=<code>[&panels=<id>,<id>][&theme=light|dark][&present=1][&controls=1]
+// `embed` present: the page is an embed (a value other than 1 is said, and the page is still
+// an embed, so a mistyped flag never turns a frame into the full app writing over the
+// person's saved work). Every other parameter is checked like the state: a value that is not
+// understood is named in one sentence and left out; the lesson opens with the rest.
+export const EMBED_MAX_PANELS = 12;
+const PANEL_ID = /^[a-z][a-z0-9-]{0,39}$/;
+const EMBED_THEMES = ['light', 'dark'];
+// A value from a link, quoted for a message: shown as text only, cut to a few words.
+const quoted = (value) => JSON.stringify(value.length > 24 ? `${value.slice(0, 24)}…` : value);
+
+// Resolves a fragment ('#embed=1&s=...', with or without '#') to null (not an embed) or
+// { panels: [ids], theme: 'light'|'dark'|null, present, controls, problems: [sentences] }.
+export function readEmbedOptions(hash) {
+  const params = new URLSearchParams(String(hash ?? '').replace(/^#/, ''));
+  if (!params.has('embed')) return null;
+  const problems = [];
+  const flag = (name) => {
+    if (!params.has(name)) return false;
+    const value = params.get(name);
+    if (value === '1') return true;
+    problems.push(`${name}=${quoted(value)} is not understood (${name}=1 turns it on)`);
+    return false;
+  };
+  flag('embed');
+  const present = flag('present');
+  const controls = flag('controls');
+  let theme = null;
+  if (params.has('theme')) {
+    const value = params.get('theme');
+    if (EMBED_THEMES.includes(value)) theme = value;
+    else problems.push(`theme=${quoted(value)} is not light or dark, so the usual theme is used`);
+  }
+  const panels = [];
+  if (params.has('panels')) {
+    for (const id of params.get('panels').split(',').filter((x) => x !== '')) {
+      if (!PANEL_ID.test(id)) problems.push(`panels lists ${quoted(id)}, which is not a panel name`);
+      else if (panels.length >= EMBED_MAX_PANELS) problems.push(`panels lists more than ${EMBED_MAX_PANELS} panels`);
+      else if (!panels.includes(id)) panels.push(id);
+    }
+  }
+  return { panels, theme, present, controls, problems: [...new Set(problems)] };
+}
+
+// The one line an embed says about parameters it could not use (null when all were fine).
+export function embedProblemsText(problems) {
+  if (!problems.length) return null;
+  if (problems.length === 1) return `This embed link's ${problems[0]}; the lesson opens without it.`;
+  const names = [...new Set(problems.map((p) => p.match(/^[a-z]+/)?.[0] ?? 'setting'))];
+  return `This embed link's ${names.join(', ')} settings were not understood (${problems[0]}); the lesson opens without them.`;
+}
+
+// The link of an embed: the lesson's page with embed=1 before the state (the link code of
+// `shareUrl`), and the iframe snippet that holds it (attribute values escaped).
+export function embedUrl(shareUrl) {
+  const url = new URL(shareUrl);
+  const code = new URLSearchParams(url.hash.slice(1)).get('s');
+  url.hash = code ? `embed=1&s=${code}` : 'embed=1';
+  return url.href;
+}
+const escapeAttribute = (text) => String(text).replace(/[&"<>]/g, (c) => ({ '&': '&amp;', '"': '&quot;', '<': '&lt;', '>': '&gt;' })[c]);
+export function embedSnippet(src, title) {
+  return `<iframe src="${escapeAttribute(src)}" width="800" height="500" title="${escapeAttribute(`${title} (Wingspline)`)}" loading="lazy" style="border:0"></iframe>`;
+}

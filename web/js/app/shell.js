@@ -19,7 +19,8 @@
 // only ever set as text.
 import { loadWingspline } from '../core/wingspline.js';
 import { createStore } from './store.js';
-import { restoreState, createPersister, readHashCode, readLink } from './persist.js';
+import { restoreState, restoreLinkOnly, createPersister, readHashCode, readLink } from './persist.js';
+import { readEmbedOptions, embedProblemsText } from './share-link.js';
 import { createContentStore } from './content-store.js';
 import { checkChange } from './schema.js';
 import { createStage } from './stage.js';
@@ -27,14 +28,14 @@ import { CanvasPainter, SvgPainter } from './painter.js';
 import { labelRects } from './label-layout.js';
 import { legendRects, withLegendBand } from './canvas-legend.js';
 import { createKeymap } from './keymap.js';
-import { applyStoredTheme, isPresenting, drawingColors } from './theme.js';
+import { applyStoredTheme, setTheme, showPresenting, isPresenting, drawingColors } from './theme.js';
 import { registerServiceWorker } from './sw-register.js';
 import { watchScrollRegions } from './dom.js';
 import { createMessageLine, createAnnouncer, errorText, coordinate } from './message-line.js';
 import { createPresenter } from './presenter.js';
 import { createInspector } from './inspector.js';
 import { createImportExport } from './import-export.js';
-import { createToolbar } from './toolbar.js';
+import { createToolbar, createEmbedToolbar } from './toolbar.js';
 
 /**
  * @typedef {import('./contract.js').Lesson} Lesson
@@ -44,7 +45,17 @@ import { createToolbar } from './toolbar.js';
  * @returns {Promise<Ctx | null>}
  */
 export async function runLesson(lesson) {
+  // An embed (#embed=1&..., docs/embed.md): the canvas and its few controls, fitted to the
+  // frame; its theme and presentation mode come from the link and are not remembered; it
+  // reads and writes nothing of the person's saved work.
+  const embed = readEmbedOptions(window.location.hash);
   applyStoredTheme();
+  if (embed) {
+    document.documentElement.dataset.embed = '';
+    if (embed.controls) document.documentElement.dataset.embedControls = '';
+    if (embed.theme) setTheme(embed.theme, { remember: false });
+    showPresenting(embed.present);
+  }
   registerServiceWorker();
   const byId = (id) => /** @type {HTMLElement} */ (document.getElementById(id));
   const els = {
@@ -73,11 +84,11 @@ export async function runLesson(lesson) {
 
   // Large fields (an imported mesh) live in IndexedDB by content hash; the link refers to them.
   const contents = createContentStore();
-  const restored = await restoreState(lesson, { contents });
+  const restored = embed ? await restoreLinkOnly(lesson, { contents }) : await restoreState(lesson, { contents });
   // A link that replaced saved work is one undoable step: Undo brings the work back.
   const store = createStore(restored.previous ?? restored.state);
   if (restored.previous) store.replace(restored.state, 'link');
-  const persister = createPersister(lesson, { contents, notify: (kind) => sayKept(kind) });
+  const persister = createPersister(lesson, { contents, notify: (kind) => sayKept(kind), keep: !embed });
   const ui = { selected: null, hover: null, hoverPoint: null, present: isPresenting() };
   /** The lesson's view: what its setup returned, handed back to every later hook. */
   let view = {};
@@ -266,7 +277,8 @@ export async function runLesson(lesson) {
       if (changed || lesson.usesHoverPoint) scheduleRender();
     },
     dragStart(id) {
-      autoFit = false;
+      // An embed keeps fitting to its frame until the person pans or zooms.
+      if (!embed) autoFit = false;
       dragId = id;
     },
     drag(id, x, y) {
@@ -297,16 +309,27 @@ export async function runLesson(lesson) {
     announceStatus: announcer.status,
   });
 
+  // The state an embed's Reset returns to: its link's state as first shown (set at start).
+  let prepared = null;
   function reset() {
+    if (embed && prepared) {
+      if (!accept(prepared, 'import')) return;
+      autoFit = true;
+      fitView();
+      message.info('Back to the prepared state (Undo brings your changes back).');
+      return;
+    }
     if (!accept(lesson.defaultState(), 'import')) return;
     fitView();
     message.info('Lesson reset to its starting point (Undo brings your work back).');
   }
 
-  const toolbar = createToolbar({
-    header: els.header, lesson, store, persister, keymap, message, ui, files, recolor, reset, fitView,
-    announceStatus: announcer.status,
-  });
+  const toolbar = embed
+    ? createEmbedToolbar({ header: els.header, store, persister, keymap, recolor, reset, fitView })
+    : createToolbar({
+      header: els.header, lesson, store, persister, keymap, message, ui, files, recolor, reset, fitView,
+      announceStatus: announcer.status,
+    });
 
   // ---------------------------------------------------------------- kept work and links
   // What the persister could not keep, said once (issue 13, item 19).
@@ -356,8 +379,11 @@ export async function runLesson(lesson) {
       following = null;
     }
   }
-  window.addEventListener('hashchange', followAddress);
-  window.addEventListener('popstate', followAddress);
+  // (An embed shows the link it was given; its address is the host page's business.)
+  if (!embed) {
+    window.addEventListener('hashchange', followAddress);
+    window.addEventListener('popstate', followAddress);
+  }
 
   // ---------------------------------------------------------------- start
   // The lesson builds its panels first; its view is handed to every later hook.
@@ -379,8 +405,10 @@ export async function runLesson(lesson) {
   }
   if (restored.previous) offerPrevious(restored.previous, restored.problem);
   else if (restored.problem) message.warn(restored.problem);
-  autoFit = restored.source === 'default';
-  if (restored.source === 'default' && lesson.fitView) {
+  const embedProblem = embed ? embedProblemsText([...embed.problems, ...showEmbedPanels(embed.panels)]) : null;
+  if (embedProblem) message.warn(restored.problem ? `${embedProblem} ${restored.problem}` : embedProblem, { code: 'embed-setting-refused' });
+  autoFit = restored.source === 'default' || Boolean(embed);
+  if ((restored.source === 'default' || embed) && lesson.fitView) {
     // The default view is fitted to the canvas once its size is known.
     await new Promise((resolve) => requestAnimationFrame(resolve));
     const fitted = fittedView();
@@ -388,8 +416,20 @@ export async function runLesson(lesson) {
   }
   refresh();
   renderNow();
+  prepared = store.state;
   // The URL and storage hold what is shown (a damaged link is replaced by what survived).
   persister.save(store.state);
+
+  // An embed's side panels: only those its link lists (panels=a,b), by their ids; the names
+  // that are no panel of this lesson come back as sentences.
+  function showEmbedPanels(ids) {
+    const found = [];
+    for (const el of /** @type {HTMLElement[]} */ ([...(els.panels?.children ?? [])])) {
+      if (el.id && ids.includes(el.id)) { el.dataset.embedShown = ''; found.push(el.id); }
+    }
+    if (found.length) document.documentElement.dataset.embedPanels = '';
+    return ids.filter((id) => !found.includes(id)).map((id) => `panels lists "${id}", which is not a panel of this lesson`);
+  }
 
   // What tests and students' scripts may ask the page (never used by the page itself).
   // `hooks` is the lesson object, for benchmarks that time its hooks (read when called).

@@ -18,10 +18,12 @@ export function currentTheme() {
   return document.documentElement.dataset.theme ?? 'system';
 }
 
-export function setTheme(theme) {
+// `remember: false` (an embed's theme= parameter, docs/embed.md): shown, not saved as the
+// person's preference.
+export function setTheme(theme, { remember = true } = {}) {
   if (theme === 'system') delete document.documentElement.dataset.theme;
   else document.documentElement.dataset.theme = theme;
-  store(THEME_KEY, theme);
+  if (remember) store(THEME_KEY, theme);
 }
 
 export function cycleTheme() {
@@ -34,9 +36,15 @@ export function isPresenting() {
   return document.documentElement.hasAttribute('data-present');
 }
 
-export async function setPresenting(on) {
+// Large type and high contrast only, without full screen (an embed's present=1: a frame
+// in a slide cannot take the screen without a gesture, and need not).
+export function showPresenting(on) {
   if (on) document.documentElement.setAttribute('data-present', '');
   else document.documentElement.removeAttribute('data-present');
+}
+
+export async function setPresenting(on) {
+  showPresenting(on);
   try {
     if (on && !document.fullscreenElement) await document.documentElement.requestFullscreen?.();
     if (!on && document.fullscreenElement) await document.exitFullscreen?.();

@@ -5,6 +5,7 @@
 // (undo, present, keys, reset); the rest is .advanced.
 import { h } from './dom.js';
 import { cycleTheme, currentTheme, isPresenting, setPresenting } from './theme.js';
+import { embedUrl, embedSnippet } from './share-link.js';
 
 /**
  * @param {{
@@ -39,7 +40,11 @@ export function createToolbar({ header, lesson, store, persister, keymap, messag
         exportMenu.open = false;
         return runExport(item);
       },
-    }, item.label)))));
+    }, item.label)),
+    h('button', { type: 'button', 'data-action': 'embed-code', onclick() {
+      exportMenu.open = false;
+      return copyEmbedCode();
+    } }, 'Copy embed code'))));
 
   // A link to a state with a large field (an imported mesh) only refers to it: it opens on
   // this browser only, and the person is offered the file to send with it.
@@ -64,6 +69,37 @@ export function createToolbar({ header, lesson, store, persister, keymap, messag
       message.info('The address bar holds the link to this exact state; copy it from there.');
     }
     return url;
+  }
+
+  // "Copy embed code" (docs/embed.md): an iframe snippet of the embed link of this state.
+  // Where the clipboard is refused, the snippet is shown in a dialog to copy by hand (as
+  // text: the URL is never parsed as markup).
+  async function copyEmbedCode() {
+    const { url, refs } = await persister.shareLink(store.state);
+    const snippet = embedSnippet(embedUrl(url), lesson.title);
+    const local = refs.length ? ` It refers to "${refs[0].label}", which is only stored in this browser: the frame shows it on this browser only.` : '';
+    try {
+      await navigator.clipboard.writeText(snippet);
+      message.info(`Embed code copied: paste it into a web page, a slide or a course page.${local}`);
+    } catch {
+      showSnippet(snippet);
+      message.info(`The clipboard refused the embed code: copy it from the dialog.${local}`);
+    }
+    return snippet;
+  }
+  function showSnippet(snippet) {
+    const area = /** @type {HTMLTextAreaElement} */ (h('textarea', { readonly: true, rows: 5, cols: 60, 'aria-labelledby': 'embed-code-title', spellcheck: 'false' }));
+    area.value = snippet;
+    const dialog = /** @type {HTMLDialogElement} */ (h('dialog', { class: 'keymap-dialog embed-code-dialog', 'aria-labelledby': 'embed-code-title' },
+      h('h2', { id: 'embed-code-title' }, 'Embed code'),
+      h('p', {}, 'Copy this into your page (Ctrl+C); it shows the lesson as you see it now.'),
+      area,
+      h('p', {}, h('button', { type: 'button', onclick: () => dialog.close() }, 'Close'))));
+    dialog.addEventListener('close', () => dialog.remove());
+    document.body.append(dialog);
+    dialog.showModal();
+    area.focus();
+    area.select();
   }
 
   async function togglePresent(on = !isPresenting()) {
@@ -128,4 +164,50 @@ export function createToolbar({ header, lesson, store, persister, keymap, messag
       buttons.present.setAttribute('aria-pressed', String(ui.present));
     },
   };
+}
+
+// The embed's controls (docs/embed.md): Reset (back to the prepared state of the link) and
+// "Open in Wingspline" (the full lesson, in a new tab, at the state shown), and the keys that
+// change nothing outside the frame (no theme or presentation keys: those are the link's).
+/**
+ * @param {{
+ *   header: HTMLElement,
+ *   store: any,
+ *   persister: any,
+ *   keymap: import('./contract.js').Keymap,
+ *   recolor: (options?: { now?: boolean }) => void,
+ *   reset: () => void,
+ *   fitView: () => void,
+ * }} parts
+ * @returns {{ update(): void }}
+ */
+export function createEmbedToolbar({ header, store, persister, keymap, recolor, reset, fitView }) {
+  const open = /** @type {HTMLAnchorElement} */ (h('a', { class: 'tool', 'data-action': 'open', target: '_blank', rel: 'noopener noreferrer',
+    title: 'Open this lesson in Wingspline, in a new tab, as you see it now', href: window.location.href.split('#')[0] }, 'Open in Wingspline'));
+  header.replaceChildren(
+    h('button', { type: 'button', class: 'tool', 'data-action': 'reset', title: 'Back to the prepared state', onclick: reset }, 'Reset'),
+    open,
+  );
+  // The link follows the state shown; links resolve in order, so an older one never wins.
+  let shownFor = null;
+  let asked = 0;
+  async function follow() {
+    const state = store.state;
+    if (state === shownFor) return;
+    shownFor = state;
+    asked += 1;
+    const mine = asked;
+    try {
+      const { url } = await persister.shareLink(state);
+      if (mine === asked) open.href = url;
+    } catch {
+      // a state that cannot be written keeps the last link
+    }
+  }
+  keymap.add({ keys: ['Ctrl+z'], label: 'undo', group: 'Editing', action: () => store.undo() });
+  keymap.add({ keys: ['Ctrl+Shift+z', 'Ctrl+y'], label: 'redo', group: 'Editing', action: () => store.redo() });
+  keymap.add({ keys: ['0'], label: 'fit the drawing to the frame', group: 'View', action: fitView });
+  keymap.add({ keys: ['?'], label: 'show this key map', group: 'View', action: () => keymap.showDialog() });
+  window.matchMedia?.('(prefers-color-scheme: dark)').addEventListener?.('change', () => recolor());
+  return { update() { follow(); } };
 }
