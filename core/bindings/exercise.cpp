@@ -11,15 +11,23 @@ namespace {
 
 using namespace wingspline::mesh;
 
-WingedEdgeAnswer answer_from(const val& edges, const val& vertex_edges, const val& face_edges) {
-    return {to_ints(edges), to_ints(vertex_edges), to_ints(face_edges)};
+// The exercise's mesh and the student's answer, as the core's check reads them.
+struct ExerciseInput {
+    std::vector<int32_t> face_offsets, face_vertices;
+    int32_t vertex_count;
+    WingedEdgeAnswer answer;
+};
+
+ExerciseInput exercise_input(const val& face_offsets, const val& face_vertices, int32_t vertex_count, const val& edges,
+                             const val& vertex_edges, const val& face_edges) {
+    return {to_ints(face_offsets), to_ints(face_vertices), vertex_count, {to_ints(edges), to_ints(vertex_edges), to_ints(face_edges)}};
 }
 
 val check_answer(const val& face_offsets, const val& face_vertices, int32_t vertex_count, const val& edges,
                  const val& vertex_edges, const val& face_edges) {
     return guarded([&] {
-        const AnswerCheck c = check_winged_edge_answer(to_ints(face_offsets), to_ints(face_vertices), vertex_count,
-                                                       answer_from(edges, vertex_edges, face_edges));
+        const ExerciseInput in = exercise_input(face_offsets, face_vertices, vertex_count, edges, vertex_edges, face_edges);
+        const AnswerCheck c = check_winged_edge_answer(in.face_offsets, in.face_vertices, in.vertex_count, in.answer);
         val findings = val::array();
         for (std::size_t i = 0; i < c.findings.size(); ++i) {
             const AnswerFinding& f = c.findings[i];
@@ -44,8 +52,8 @@ val check_answer(const val& face_offsets, const val& face_vertices, int32_t vert
 val worked_answer(const val& face_offsets, const val& face_vertices, int32_t vertex_count, const val& edges,
                   const val& vertex_edges, const val& face_edges) {
     return guarded([&] {
-        const WingedEdgeAnswer w = worked_winged_edge_answer(to_ints(face_offsets), to_ints(face_vertices), vertex_count,
-                                                             answer_from(edges, vertex_edges, face_edges));
+        const ExerciseInput in = exercise_input(face_offsets, face_vertices, vertex_count, edges, vertex_edges, face_edges);
+        const WingedEdgeAnswer w = worked_winged_edge_answer(in.face_offsets, in.face_vertices, in.vertex_count, in.answer);
         val r = val::object();
         r.set("edges", to_typed_array(w.edges));
         r.set("vertexEdges", to_typed_array(w.vertex_edges));

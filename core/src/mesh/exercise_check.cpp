@@ -178,7 +178,7 @@ void Checker::match_rows() {
                                                       " and " + vertex_label(t) + " as neighbouring corners";
         const char* code = duplicate ? "duplicate-edge" : "not-an-edge";
         if (best == kNone) {
-            add_row_finding(r, kS, kNone, code, reason);
+            add_row_finding(r, kS, kNone, code, reason + "; every edge of the mesh already has its row, so this one can go");
             continue;
         }
         match(r, best, best_reverse);

@@ -1,31 +1,23 @@
 // Issue 19, exercise kind 1 over the real module: a student's winged-edge table for lecture
 // 000's mesh, checked by api.checkWingedEdgeAnswer. The slide's table is written here as the
 // slide prints it; renumbered and flipped copies are made here (a correct table in another
-// numbering), and the expected value of a corrupted cell is the slide's own.
+// numbering), and the expected value of a corrupted cell is the slide's own
+// (tests/helpers/lecture-slide.mjs).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
 import { random } from '../../helpers/seeded-random.mjs';
+import { SLIDE_EDGE_TABLE } from '../../helpers/lecture-slide.mjs';
 
 const api = await loadWingspline();
 
 const FIELDS = ['start', 'end', 'left', 'right', 'startLeft', 'startRight', 'endLeft', 'endRight'];
 const HEADS = ['S', 'E', 'L', 'R', 'S:L', 'S:R', 'E:L', 'E:R'];
 
-// Lecture 000: e  S  E  L  R  S:L S:R E:L E:R ('-' = none)
-const SLIDE = [
-  'e1 v1 v3 -  F1 e2 e2 e4 e3',
-  'e2 v1 v2 F1 -  e1 e1 e3 e6',
-  'e3 v2 v3 F1 F2 e2 e5 e1 e4',
-  'e4 v3 v4 -  F2 e1 e3 e7 e5',
-  'e5 v2 v4 F2 F3 e3 e6 e4 e7',
-  'e6 v2 v5 F3 -  e5 e2 e7 e7',
-  'e7 v4 v5 -  F3 e4 e5 e6 e6',
-];
 const number = (s) => (s === '-' ? -1 : Number(s.slice(1)) - 1);
 function slideAnswer() {
   return {
-    edges: SLIDE.flatMap((row) => row.split(/\s+/).slice(1).map(number)),
+    edges: SLIDE_EDGE_TABLE.flatMap((row) => row.split(/\s+/).slice(1).map(number)),
     vertexEdges: ['e1', 'e6', 'e3', 'e5', 'e6'].map(number),
     faceEdges: ['e1', 'e3', 'e5'].map(number),
   };
