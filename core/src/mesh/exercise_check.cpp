@@ -46,6 +46,10 @@ int32_t cell_of(const EdgeRecord& r, int k) {
 
 std::pair<int32_t, int32_t> key(int32_t a, int32_t b) { return {std::min(a, b), std::max(a, b)}; }
 
+// A cell as the table shows it.
+std::string face_text(int32_t f) { return f == kNone ? "none" : f == kBlank ? "blank" : face_label(f); }
+std::string edge_text(int32_t e) { return e == kNone ? "none" : e == kBlank ? "blank" : edge_label(e); }
+
 // Everything the checker knows, and the match it builds.
 struct Checker {
     const WingedEdgeMesh& mesh;
@@ -57,6 +61,8 @@ struct Checker {
     std::vector<int32_t> edge_row;   // mesh edge -> the student's row (kNone: no row describes it)
     std::vector<int32_t> worked_label; // mesh edge -> its number in the worked answer
     std::vector<AnswerFinding> row_findings, missing_findings;
+
+    int32_t label_of(int32_t e) const { return e == kNone ? kNone : worked_label[e]; }
 
     Checker(const WingedEdgeMesh& m, const WingedEdgeAnswer& a)
         : mesh(m), answer(a), rows(static_cast<int32_t>(a.edges.size() / kCellsPerRow)) {
@@ -87,6 +93,15 @@ struct Checker {
             n += key(a, b) == key(mesh.edge(want).start, mesh.edge(want).end);
         }
         return n;
+    }
+
+    // The edges at v that no row describes yet (a walk around v: a vertex has few edges, so
+    // matching a wrong row costs its degree, not the mesh's size).
+    std::vector<int32_t> unmatched_at(int32_t v) const {
+        std::vector<int32_t> out;
+        for (int32_t e : mesh.edges_around_vertex(v))
+            if (edge_row[e] == kNone) out.push_back(e);
+        return out;
     }
 
     void match(int32_t r, int32_t e, bool reverse) {
@@ -159,12 +174,9 @@ void Checker::match_rows() {
         // whose orientation agrees best with the rest of the row.
         int32_t best = kNone, best_score = -1, blamed = kE;
         bool best_reverse = false;
-        for (int32_t e = 0; e < mesh.edge_count(); ++e) {
-            if (edge_row[e] != kNone) continue;
-            const EdgeRecord& m = mesh.edge(e);
-            for (int kept : {kS, kE}) {
-                const int32_t v = kept == kS ? s : t;
-                if (m.start != v && m.end != v) continue;
+        for (int kept : {kS, kE}) {
+            for (int32_t e : unmatched_at(kept == kS ? s : t)) {
+                const EdgeRecord& m = mesh.edge(e);
                 const bool reverse = kept == kS ? m.start != s : m.end != t;
                 const int score = agreement(r, e, reverse);
                 if (score > best_score) best = e, best_score = score, blamed = kept == kS ? kE : kS, best_reverse = reverse;
@@ -188,12 +200,19 @@ void Checker::match_rows() {
                             (blamed == kS ? "E = " + vertex_label(t) : "S = " + vertex_label(s)) + ", this row is that edge, so " +
                             (blamed == kS ? "S" : "E") + " is " + vertex_label(want));
     }
+    // Rows that give one end first: a row with neither takes what they leave.
+    std::stable_partition(unread.begin(), unread.end(), [&](int32_t r) { return is_vertex(given(r, kS)) || is_vertex(given(r, kE)); });
+    int32_t next_unmatched = 0;
     for (int32_t r : unread) {
         const int32_t s = given(r, kS), t = given(r, kE);
         int32_t best = kNone, best_score = -1;
         bool best_reverse = false;
-        for (int32_t e = 0; e < mesh.edge_count(); ++e) {
-            if (edge_row[e] != kNone) continue;
+        // The edges that fit the end the row gives; with neither end, the next edge no row describes.
+        while (next_unmatched < mesh.edge_count() && edge_row[next_unmatched] != kNone) ++next_unmatched;
+        const std::vector<int32_t> candidates = is_vertex(s) ? unmatched_at(s) : is_vertex(t) ? unmatched_at(t)
+                                                : next_unmatched < mesh.edge_count() ? std::vector<int32_t>{next_unmatched}
+                                                                                     : std::vector<int32_t>{};
+        for (int32_t e : candidates) {
             const EdgeRecord& m = mesh.edge(e);
             for (bool reverse : {false, true}) {
                 const EdgeRecord x = reverse ? reversed(m) : m;
@@ -269,11 +288,9 @@ std::string Checker::wing_reason(int32_t r, int k, const EdgeRecord& x) const {
     const bool ccw = k == kSL || k == kER;
     return "it is the other edge at " + vertex_label(vertex) + " (the " + (at_start ? "Start" : "End") + ") of " + face_words +
            "; walking " + (ccw ? "counter-clockwise" : "clockwise") + " around " + vertex_label(vertex) + ", the edge after " +
-           edge_label(r) + " is " + edge_label(worked_label[cell_of(x, k)]);
+           edge_label(r) + " is " + edge_text(label_of(cell_of(x, k)));
 }
 
-std::string face_text(int32_t f) { return f == kNone ? "none" : f == kBlank ? "blank" : face_label(f); }
-std::string edge_text(int32_t e) { return e == kNone ? "none" : e == kBlank ? "blank" : edge_label(e); }
 
 void Checker::check_row(int32_t r) {
     const int32_t e = row_edge[r];
@@ -290,11 +307,11 @@ void Checker::check_row(int32_t r) {
         else add_row_finding(r, k, want, "wrong-face", kFieldWords[k] + std::string(" is ") + face_text(want) + ", not " + face_text(g) + ": " + why);
     }
     for (int k = kSL; k <= kER; ++k) {
-        const int32_t g = given(r, k), wing = cell_of(x, k), want = worked_label[wing];
+        const int32_t g = given(r, k), wing = cell_of(x, k), want = label_of(wing);
         if (g == want && is_row(g)) continue; // a number past the last row is unknown even where the worked answer adds it
         // A wing naming a row that describes no edge, where the wing's edge has no row either:
         // that row's own finding says what is wrong; judging the wing would repeat it.
-        if (is_row(g) && row_edge[g] == kNone && edge_row[wing] == kNone) continue;
+        if (is_row(g) && row_edge[g] == kNone && wing != kNone && edge_row[wing] == kNone) continue;
         const std::string why = wing_reason(r, k, x);
         if (g == kBlank) add_row_finding(r, k, want, "blank", kFieldWords[k] + std::string(" is blank; ") + why);
         else if (g >= rows)

@@ -423,3 +423,29 @@ TEST_CASE("random correct tables are accepted; one corrupted cell is named with 
     CHECK(corrupted > 3000);
     CHECK(still_right > 0);
 }
+
+TEST_CASE("a large table with every S left blank: each row is matched by its E and its wings", "[mesh][exercise]") {
+    // 2,400 triangles, 3,669 edges: each row keeps only E, so the check must find each row's edge
+    // among the edges at E that agree with the row's faces and wings (one blank finding per row).
+    const FaceSet f = face_set_of(grid(40, 30));
+    const Reference ref(f);
+    std::mt19937 rng(1919);
+    const WingedEdgeAnswer right = random_correct_answer(ref, rng);
+    WingedEdgeAnswer a = right;
+    const int32_t E = ref.edges();
+    for (int32_t r = 0; r < E; ++r) a.edges[8 * r] = kBlank;
+    // Two rows with both ends blank take an edge by the rest of the row.
+    a.edges[8 * 7 + 1] = kBlank;
+    a.edges[8 * 100 + 1] = kBlank;
+    const AnswerCheck c = check(f, a);
+    REQUIRE(c.findings.size() == static_cast<std::size_t>(E + 2));
+    int32_t wrong_expectation = 0;
+    for (const AnswerFinding& x : c.findings) {
+        CHECK(x.code == "blank");
+        wrong_expectation += x.expected != right.edges[8 * x.row + (x.field == "start" ? 0 : 1)];
+    }
+    // Both-blank rows: any unmatched edge is a defensible reading; the ones given here are
+    // matched by their faces and wings once every other row has taken its own edge.
+    CHECK(wrong_expectation == 0);
+    CHECK(worked_winged_edge_answer(f.offsets, f.corners, f.vertices, a).edges == right.edges);
+}
