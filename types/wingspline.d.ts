@@ -576,7 +576,7 @@ export interface WingedEdgeAnswer {
 }
 export type WingedEdgeField = 'start' | 'end' | 'left' | 'right' | 'startLeft' | 'startRight' | 'endLeft' | 'endRight' | 'edge' | '';
 export type WingedEdgeFindingCode = 'blank' | 'unknown-label' | 'not-an-edge' | 'duplicate-edge' | 'missing-edge'
-  | 'wrong-face' | 'wrong-wing' | 'not-incident' | 'not-on-face';
+  | 'swapped-ends' | 'wrong-face' | 'wrong-wing' | 'not-incident' | 'not-on-face';
 /** One thing wrong in the answer: the row (the student's; -1 for a missing edge), the column, the value given and the right one. */
 export interface WingedEdgeFinding {
   table: ElementKind;

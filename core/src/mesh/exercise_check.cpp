@@ -296,6 +296,21 @@ void Checker::check_row(int32_t r) {
     const int32_t e = row_edge[r];
     if (e == kNone) return;
     const EdgeRecord x = expected_row(e, row_reversed[r]);
+    // S and E written the other way round with everything else right is one mistake, not six:
+    // the row is read in the orientation its faces and wings describe.
+    const auto fits = [&](const EdgeRecord& y) {
+        for (int k = kL; k < kCellsPerRow; ++k)
+            if (given(r, k) != (k < kSL ? cell_of(y, k) : label_of(cell_of(y, k))) || (k >= kSL && !is_row(given(r, k)))) return false;
+        return true;
+    };
+    if (!fits(x) && fits(reversed(x))) {
+        row_reversed[r] = !row_reversed[r];
+        add_row_finding(r, kS, x.end, "swapped-ends",
+                        "S and E are the other way round: L, R and the wings describe the edge run from " +
+                            vertex_label(x.end) + " to " + vertex_label(x.start) + ", so swap them (S = " +
+                            vertex_label(x.end) + ", E = " + vertex_label(x.start) + ")");
+        return;
+    }
     for (int k : {kL, kR}) {
         const int32_t g = given(r, k), want = cell_of(x, k);
         if (g == want) continue;

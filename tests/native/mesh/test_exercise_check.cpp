@@ -449,3 +449,22 @@ TEST_CASE("a large table with every S left blank: each row is matched by its E a
     CHECK(wrong_expectation == 0);
     CHECK(worked_winged_edge_answer(f.offsets, f.corners, f.vertices, a).edges == right.edges);
 }
+
+TEST_CASE("S and E written the other way round, the rest right: one finding says to swap them", "[mesh][exercise]") {
+    // Row e5 as v4 -> v2 with the slide's L, R and wings (which fit v2 -> v4): L, R and all four
+    // wings would each be wrong for v4 -> v2; the one mistake is the order of S and E.
+    const FaceSet f = face_set_of(lecture_example().mesh);
+    WingedEdgeAnswer a = slide_answer();
+    std::swap(a.edges[8 * label("e5")], a.edges[8 * label("e5") + 1]);
+    const AnswerCheck c = check(f, a);
+    INFO(describe(c));
+    REQUIRE(c.findings.size() == 1);
+    CHECK(c.findings[0].code == "swapped-ends");
+    CHECK(c.findings[0].row == label("e5"));
+    CHECK(c.findings[0].field == "start");
+    CHECK(c.findings[0].given == 3);
+    CHECK(c.findings[0].expected == 1);
+    CHECK(c.findings[0].reason.find("swap") != std::string::npos);
+    // The worked answer puts S and E back and keeps the rest: the slide's table.
+    CHECK(worked_winged_edge_answer(f.offsets, f.corners, f.vertices, a).edges == slide_answer().edges);
+}

@@ -141,3 +141,12 @@ test('checking leaks no wasm memory', () => {
   }
   assert.equal(api.memoryUsage().heapInUse, before);
 });
+
+test('S and E written the other way round in row e3, all else right: one finding, swapped-ends', () => {
+  const a = slideAnswer();
+  [a.edges[16], a.edges[17]] = [a.edges[17], a.edges[16]];
+  const { findings } = api.checkWingedEdgeAnswer(mesh, a);
+  assert.deepEqual(findings.map((f) => [f.code, f.row, f.field, f.given, f.expected]), [['swapped-ends', 2, 'start', 2, 1]]);
+  assert.match(findings[0].reason, /^row e3: S and E are the other way round/);
+  assert.deepEqual(Array.from(api.workedWingedEdgeAnswer(mesh, a).edges), slideAnswer().edges);
+});

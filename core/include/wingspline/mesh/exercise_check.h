@@ -42,8 +42,9 @@ struct WingedEdgeAnswer {
 // vertex and face tables; "" for an edge of the mesh that has no row). given/expected are
 // cell values as in WingedEdgeAnswer; expected edges use the worked answer's numbering (the
 // student's where a row matches, see worked_winged_edge_answer).
-// Codes: blank, unknown-label, not-an-edge, duplicate-edge, missing-edge, wrong-face,
-// wrong-wing, not-incident (vertex table), not-on-face (face table).
+// Codes: blank, unknown-label, not-an-edge, duplicate-edge, missing-edge, swapped-ends (S and
+// E the other way round, all else right: one finding), wrong-face, wrong-wing, not-incident
+// (vertex table), not-on-face (face table).
 struct AnswerFinding {
     MeshTable table = MeshTable::Edge;
     int32_t row = kNone; // the student's row (vertex/face tables: the vertex/face); kNone for missing-edge
