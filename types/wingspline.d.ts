@@ -45,6 +45,8 @@ export type WingsplineErrorCode =
   | 'would-pinch' | 'hole-too-small' | 'degenerate-vertex' | 'link-condition' | 'link-condition-face'
   // subdivision
   | 'unknown-scheme' | 'not-a-triangle-mesh' | 'mesh-has-gaps'
+  // checking a student's winged-edge table (exercise kind 1)
+  | 'invalid-answer' | 'invalid-faces'
   // curves
   | 'unknown-curve-kind' | 'unknown-basis' | 'unsupported-curve-kind' | 'invalid-dimension' | 'invalid-points'
   | 'non-finite-input' | 'non-finite-result' | 'too-few-points' | 'degree-out-of-range' | 'wrong-knot-count'
@@ -555,6 +557,51 @@ export interface PatchInput {
   points: NumberList;
 }
 
+// ------------------------------------------------------------------ exercises (issue 19)
+
+/** The mesh of a winged-edge exercise: its faces (vertex and face numbers fixed) and vertex count (or positions). */
+export type ExerciseMesh = ({ faces: ReadonlyArray<NumberList> } | { faceOffsets: Int32Array; faceVertices: Int32Array })
+  & ({ vertexCount: number } | { positions: NumberList });
+/**
+ * A student's winged-edge table, cells 0-based; an edge is the student's row number.
+ * -1 = none (a boundary side), -2 = blank (answerCells).
+ */
+export interface WingedEdgeAnswer {
+  /** 8 per row: edges[8*r + k], k: S E L R S:L S:R E:L E:R. */
+  edges: NumberList;
+  /** One edge per vertex (the vertex table). */
+  vertexEdges: NumberList;
+  /** One edge per face (the face table). */
+  faceEdges: NumberList;
+}
+export type WingedEdgeField = 'start' | 'end' | 'left' | 'right' | 'startLeft' | 'startRight' | 'endLeft' | 'endRight' | 'edge' | '';
+export type WingedEdgeFindingCode = 'blank' | 'unknown-label' | 'not-an-edge' | 'duplicate-edge' | 'missing-edge'
+  | 'swapped-ends' | 'wrong-face' | 'wrong-wing' | 'not-incident' | 'not-on-face';
+/** One thing wrong in the answer: the row (the student's; -1 for a missing edge), the column, the value given and the right one. */
+export interface WingedEdgeFinding {
+  table: ElementKind;
+  row: number;
+  field: WingedEdgeField;
+  given: number;
+  expected: number;
+  code: WingedEdgeFindingCode;
+  /** Names the row and column and says why, from the definition (lecture 000). */
+  reason: string;
+}
+export interface WingedEdgeCheck {
+  correct: boolean;
+  findings: WingedEdgeFinding[];
+  /** Per student row: the mesh edge (core numbering) it was matched to, -1 none. */
+  rowEdges: Int32Array;
+  /** Per student row: true where it runs the mesh edge from End to Start. */
+  rowReversed: boolean[];
+}
+export interface WorkedWingedEdgeAnswer {
+  edges: Int32Array;
+  vertexEdges: Int32Array;
+  faceEdges: Int32Array;
+}
+
 /** The object loadWingspline() resolves to. */
 export interface WingsplineApi {
   readonly version: string;
@@ -580,6 +627,13 @@ export interface WingsplineApi {
   subdivide(mesh: Mesh, options: SubdivisionOptions & { steps?: number }): Mesh;
   subdivisionSteps(mesh: Mesh, options: SubdivisionOptions): SubdivisionSteps;
   limitPositions(mesh: Mesh, options: SubdivisionOptions): Float64Array;
+
+  // ---- exercises (docs/api-mesh.md, "Checking a student's winged-edge table")
+  readonly answerCells: { readonly none: -1; readonly blank: -2 };
+  /** Checks a student's winged-edge table: any consistent edge numbering, either orientation per edge. */
+  checkWingedEdgeAnswer(mesh: ExerciseMesh, answer: WingedEdgeAnswer): WingedEdgeCheck;
+  /** The right table in the student's numbering where rows match, blanks filled. */
+  workedWingedEdgeAnswer(mesh: ExerciseMesh, answer: WingedEdgeAnswer): WorkedWingedEdgeAnswer;
 
   // ---- curves (docs/api-curves.md)
   basisMatrix(kind: CubicBasis): Float64Array;

@@ -8,6 +8,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { execFileSync } from 'node:child_process';
 import { repoRoot } from '../helpers/browser.mjs';
+import { SLIDE_EDGE_TABLE } from '../helpers/lecture-slide.mjs';
 
 const run = (script, args = []) => execFileSync(process.execPath, [path.join('examples', script), ...args], { cwd: repoRoot, encoding: 'utf8' });
 const line = (out, label) => {
@@ -53,16 +54,8 @@ test('winged-edge-table.mjs: the lecture mesh\'s OBJ gives a winged-edge table c
 
 test('winged-edge-table.mjs --slide: lecture 000\'s numbering gives the slide\'s edge table row for row and the walk e6 e5 e3 e2', () => {
   const out = run('winged-edge-table.mjs', ['--slide']);
-  // Lecture 000, "Winged Edge", EDGE TABLE: S E L R, then S:L S:R E:L E:R ('-': no face).
-  const slide = [
-    'e1 v1 v3 - F1 e2 e2 e4 e3',
-    'e2 v1 v2 F1 - e1 e1 e3 e6',
-    'e3 v2 v3 F1 F2 e2 e5 e1 e4',
-    'e4 v3 v4 - F2 e1 e3 e7 e5',
-    'e5 v2 v4 F2 F3 e3 e6 e4 e7',
-    'e6 v2 v5 F3 - e5 e2 e7 e7',
-    'e7 v4 v5 - F3 e4 e5 e6 e6',
-  ];
+  // Lecture 000, "Winged Edge", EDGE TABLE (tests/helpers/lecture-slide.mjs).
+  const slide = SLIDE_EDGE_TABLE;
   const rows = out.split('\n').filter((l) => /^e\d+\s+v\d/.test(l)).map((l) => l.trim().split(/\s+/).join(' '));
   assert.deepEqual(rows, slide);
   assert.equal(line(out, 'CCW walk around v2:'), 'e6 e5 e3 e2');

@@ -74,5 +74,15 @@ export async function misuse(): Promise<void> {
   api.parseMesh({ file: 'mesh.obj' });
   // @ts-expect-error the csr layout has no faces list
   api.parseMesh('', { layout: 'csr' }).faces;
-  void p; void wrong; void op; void edges;
+  // Issue 19: checking a winged-edge table.
+  const slide = api.lectureExample();
+  const check = api.checkWingedEdgeAnswer({ faces: slide.faces, vertexCount: 5 }, { edges: [], vertexEdges: [], faceEdges: [] });
+  const firstField: string = check.findings[0]?.field ?? '';
+  // @ts-expect-error the exercise mesh needs its vertex count (or positions)
+  api.checkWingedEdgeAnswer({ faces: slide.faces }, { edges: [], vertexEdges: [], faceEdges: [] });
+  // @ts-expect-error the answer needs its face table
+  api.checkWingedEdgeAnswer({ faces: slide.faces, vertexCount: 5 }, { edges: [], vertexEdges: [] });
+  // @ts-expect-error findings have a row, not an edge
+  void check.findings[0].edge;
+  void p; void wrong; void op; void edges; void firstField;
 }

@@ -64,6 +64,17 @@ const patch = Array.from({ length: 16 }, (_, c) => [Math.floor(c / 4), c % 4, ((
 const lecture = api.buildMesh(api.lectureExample());
 const V_MISSING = 1000; // the lecture mesh has 5 vertices, 7 edges and 3 faces
 
+// Issue 19: the lecture mesh's own tables as a student's answer (a wrong wing, so the check
+// has a finding to report), and the same with a row cut short (malformed: 'invalid-answer').
+const exerciseMesh = { faces: api.lectureExample().faces, vertexCount: 5 };
+const exerciseAnswer = (() => {
+  const w = lecture.wingedEdgeArrays();
+  const edges = Array.from(w.edges);
+  edges[4] = edges[5] === 0 ? 1 : 0;
+  return { edges, vertexEdges: Array.from(w.vertexEdge), faceEdges: Array.from(w.faceEdge) };
+})();
+const shortAnswer = { ...exerciseAnswer, edges: exerciseAnswer.edges.slice(1) };
+
 // A mesh already disposed: the methods that take no input (counts, storage, planes...) have
 // one failing call, on a mesh that is gone ('disposed').
 const gone = api.buildMesh(tetra);
@@ -85,6 +96,10 @@ const cases = [
     [['non-manifold-edge', () => { const job = api.buildMeshInSteps(nonManifold); while (!job.step()); }]]],
   ['parseMesh (OFF)', FULL, () => api.parseMesh(offText, { format: 'off' }), [['parse-error', () => api.parseMesh(badOff, { format: 'off' })]]],
   ['validateMesh', REDUCED, () => api.validateMesh(tetra), [['index-out-of-range', () => api.validateMesh({ positions: [0, 0, 0], faces: [[0, 1, 2]] })]]],
+  ['checkWingedEdgeAnswer + workedWingedEdgeAnswer', REDUCED,
+    () => { api.checkWingedEdgeAnswer(exerciseMesh, exerciseAnswer); api.workedWingedEdgeAnswer(exerciseMesh, exerciseAnswer); },
+    [['invalid-answer', () => api.checkWingedEdgeAnswer(exerciseMesh, shortAnswer)],
+      ['invalid-answer', () => api.workedWingedEdgeAnswer(exerciseMesh, shortAnswer)]]],
   ['evaluateCurve', REDUCED, () => api.evaluateCurve(nurbs, params), [['decreasing-knots', () => api.evaluateCurve(decreasing, params)]]],
   ['evaluateDerivative', REDUCED, () => api.evaluateDerivative(bezier, params, 1), [['invalid-weight', () => api.evaluateDerivative(zeroWeight, params, 1)]]],
   ['mesh.edgesAroundVertex', FULL, () => lecture.edgesAroundVertex(1), [['invalid-element', () => lecture.edgesAroundVertex(V_MISSING)]]],

@@ -31,7 +31,7 @@ function checkIndex(value, what) {
 }
 
 // faces: number[][] (one array of vertex indices per face) -> CSR typed arrays.
-function facesToCsr(faces) {
+export function facesToCsr(faces) {
   if (!Array.isArray(faces)) fail('invalid-argument', 'faces must be an array with one array of vertex indices per face');
   const faceOffsets = new Int32Array(faces.length + 1);
   let total = 0;

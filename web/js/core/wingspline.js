@@ -6,6 +6,7 @@ import createWingsplineCore from '../../wasm/wingspline-core.js';
 import { unwrap, WingsplineError } from './errors.js';
 import { createMeshApi } from './mesh-api.js';
 import { createCurvesApi } from './curves-api.js';
+import { createExerciseApi } from './exercise-api.js';
 
 export { WingsplineError } from './errors.js';
 
@@ -86,6 +87,7 @@ function createApi(raw) {
     },
     ...createMeshApi(raw),
     ...createCurvesApi(raw),
+    ...createExerciseApi(raw),
   });
 }
 
