@@ -61,7 +61,7 @@ test('wide screens show the tables beside the walk, not the extra row', async ()
 // phone turned the mesh lesson's 3D view once one finger scrolled the page.
 test('phone: the 3D view turns and tilts with its sliders', async () => {
   const page = await env.openLesson(`${env.site.url}mesh.html`, PHONE);
-  assert.equal(await page.locator('#view-turn').isVisible(), false, 'no turn slider in 2D');
+  assert.equal(await page.locator('#view-turn').isDisabled(), true, 'the turn slider is off in 2D');
   await page.locator('#toggle-3d').tap();
   await page.waitForFunction(() => window.wingspline.state.mode3d);
   const before = await page.evaluate(() => ({ rotation: window.wingspline.state.rotation, p: Array.from(window.wingspline.model.projected.slice(0, 6)) }));

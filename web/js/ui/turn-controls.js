@@ -7,7 +7,7 @@ const TURN = 3.14; // the turn slider's ends, on its 0.01 grid (so a turn of 0.6
 export const MAX_TILT = 1.55;
 
 // onTurn({yaw, pitch}): the person moved a slider; onEnd(): they let go of it (one undo
-// step per slide where the lesson keeps turns in its history). Returns {root, sync(rotation, shown)}.
+// step per slide where the lesson keeps turns in its history). Returns {root, sync(rotation, enabled)}.
 export function createTurnControls(onTurn, { onEnd = () => {} } = {}) {
   const slider = (id, min, max, label) => h('input', { type: 'range', id, min, max, step: 0.01, 'aria-label': label });
   const turn = slider('view-turn', -TURN, TURN, 'Turn the 3D view (radians about the vertical axis)');
@@ -21,8 +21,11 @@ export function createTurnControls(onTurn, { onEnd = () => {} } = {}) {
   tilt.addEventListener('change', () => onEnd());
   return {
     root,
-    sync(rotation, shown = true) {
-      root.hidden = !shown;
+    // enabled: false in a 2D view; the sliders stay in place (disabled) so that switching
+    // to 3D does not change the canvas's size.
+    sync(rotation, enabled = true) {
+      turn.disabled = !enabled;
+      tilt.disabled = !enabled;
       // The slider shows the turn in (-pi, pi]; a mouse drag may have turned past it.
       turn.value = String(rotation.yaw - 2 * Math.PI * Math.round(rotation.yaw / (2 * Math.PI)));
       tilt.value = String(rotation.pitch);
