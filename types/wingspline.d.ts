@@ -48,7 +48,7 @@ export type WingsplineErrorCode =
   // checking a student's winged-edge table (exercise kind 1)
   | 'invalid-answer' | 'invalid-faces'
   // curves
-  | 'unknown-curve-kind' | 'unknown-basis' | 'unsupported-curve-kind' | 'invalid-dimension' | 'invalid-points'
+  | 'unknown-curve-kind' | 'unknown-basis' | 'unknown-form' | 'unsupported-curve-kind' | 'invalid-dimension' | 'invalid-points'
   | 'non-finite-input' | 'non-finite-result' | 'too-few-points' | 'degree-out-of-range' | 'wrong-knot-count'
   | 'decreasing-knots' | 'invalid-knots' | 'knot-multiplicity-exceeded' | 'empty-domain' | 'wrong-weight-count'
   | 'invalid-weight' | 'weight-ratio-out-of-range' | 'wrong-tangent-count' | 'wrong-node-count'
@@ -478,6 +478,19 @@ export interface ExactMatrix {
   num: Float64Array;
   den: Float64Array;
 }
+/** How a lecture writes P(u) = ... : descending powers (000, 003), ascending (002: C = M g), transposed (001: Q(t) = G M T). */
+export type MatrixForm = 'descending' | 'ascending' | 'transposed';
+/** M, G and C of a segment as the chosen lecture writes them. */
+export interface SegmentForm {
+  form: MatrixForm;
+  M: Float64Array;
+  G: Float64Array;
+  C: Float64Array;
+  size: number;
+  geometryRows: number;
+  geometryColumns: number;
+  rational: RationalMatrix | null;
+}
 export interface SegmentMatrices {
   segment: number;
   segmentCount: number;
@@ -498,6 +511,8 @@ export interface SegmentMatrices {
   end: number;
   localParameter: boolean;
   homogeneous: boolean;
+  /** M, G, C in the form asked for (options.form). */
+  shown: SegmentForm;
   convention: string;
 }
 export interface CurveDomain {
@@ -636,8 +651,9 @@ export interface WingsplineApi {
   workedWingedEdgeAnswer(mesh: ExerciseMesh, answer: WingedEdgeAnswer): WorkedWingedEdgeAnswer;
 
   // ---- curves (docs/api-curves.md)
-  basisMatrix(kind: CubicBasis): Float64Array;
-  basisMatrixRational(kind: CubicBasis): RationalMatrix;
+  /** form: 'descending' (lectures 000, 003; the default), 'ascending' (002) or 'transposed' (001). */
+  basisMatrix(kind: CubicBasis, form?: MatrixForm): Float64Array;
+  basisMatrixRational(kind: CubicBasis, form?: MatrixForm): RationalMatrix;
   hermiteFromConstraints(): { constraints: Float64Array; matrix: Float64Array };
   evaluateCurve(curve: Curve, params: NumberList, options?: EvaluateOptions): Float64Array;
   evaluateDerivative(curve: Curve, params: NumberList, order?: number, options?: EvaluateOptions): Float64Array;
@@ -645,7 +661,7 @@ export interface WingsplineApi {
   curveDomain(curve: Curve): CurveDomain;
   sampleCurve(curve: Curve, n?: number): { params: Float64Array; points: Float64Array };
   blendingFunctions(curve: Curve, params: NumberList, order?: number): { count: number; values: Float64Array };
-  segmentMatrices(curve: Curve, segmentIndex?: number): SegmentMatrices;
+  segmentMatrices(curve: Curve, segmentIndex?: number, options?: { form?: MatrixForm }): SegmentMatrices;
   deCasteljau(points: NumberList, dim: Dimension, t: number, weights?: NumberList | null): {
     degree: number; levels: Float64Array[]; point: Float64Array; levelWeights?: Float64Array[];
   };
@@ -676,6 +692,8 @@ export interface WingsplineApi {
   uniformKnots(count: number, degree: number): Float64Array;
   unclampedKnots(knots: NumberList, degree: number): Float64Array;
   isClampedKnots(knots: NumberList, degree: number): boolean;
+  /** True when the B-spline on these knots is exactly the Bezier curve of its points (lecture 002). */
+  isBezierInDisguise(knots: NumberList, degree: number): boolean;
   dragWithConstraint(points: NumberList, dim: Dimension, family: CubicBasis, mode: ConstraintMode, index: number, to: NumberList): Float64Array;
   enforceConstraint(points: NumberList, dim: Dimension, family: CubicBasis, mode: ConstraintMode): Float64Array;
   appendSegment(points: NumberList, dim: Dimension, family: CubicBasis, mode: ConstraintMode): Float64Array;

@@ -93,3 +93,15 @@ for (const screen of SCREENS) {
     assert.deepEqual(page.problems, []);
   });
 }
+
+// The notes about the lectures (a slip, which form is shown) stay on the projector, though
+// presentation mode hides the other hints. Failed before: every .hint was hidden.
+test('presentation mode keeps the notes about the lectures (curve explorer, Catmull-Rom)', async () => {
+  const page = await env.openLesson(`${env.site.url}curves.html`, { viewport: { width: 1920, height: 1080 } });
+  await page.selectOption('#curve-family', 'catmull-rom');
+  await present(page);
+  const note = page.locator('#notation-note');
+  assert.ok(await note.isVisible(), 'the note on lecture 002\'s Catmull-Rom row is shown');
+  assert.match(await note.textContent(), /Lecture 002 prints the first row/);
+  assert.equal(await page.locator('.stage-controls .hint').first().isVisible(), false, 'other hints stay hidden');
+});

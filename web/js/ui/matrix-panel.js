@@ -198,7 +198,7 @@ function lectureLine(names, form, name, powerRow) {
   box.dataset.role = 'lecture-names';
   box.dataset.lecture = names.lecture;
   const where = document.createElement('p');
-  where.className = 'hint';
+  where.className = 'hint lecture-note';
   where.textContent = `In lecture ${names.lecture}'s names${names.blendingLecture ? ` (the blending functions as lecture ${names.blendingLecture} names them)` : ''}:`;
   box.append(where, ...lines.map((parts) => math(el('mrow', ...parts))));
   return box;

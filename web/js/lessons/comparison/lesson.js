@@ -177,7 +177,7 @@ export const lesson = {
     const hermiteTangents = h('select', { id: 'hermite-tangents', onchange: () => ctx.commit({ ...ctx.state, hermite: { ...ctx.state.hermite, tangents: hermiteTangents.value } }) },
       h('option', { value: 'own' }, 'its own (drag the tips)'),
       h('option', { value: 'catmull-rom' }, 'Catmull-Rom\'s (P(i+1) − P(i−1))/2'));
-    const hermiteNote = h('p', { class: 'hint', id: 'hermite-note', 'aria-live': 'polite' });
+    const hermiteNote = h('p', { class: 'hint lecture-note', id: 'hermite-note', 'aria-live': 'polite' });
     ctx.controls.replaceChildren(h('label', { for: 'scene' }, 'Show ', sceneSelect), ...familyBoxes.map((b) => b.label), addButton, removeButton,
       h('label', { for: 'hermite-tangents' }, 'Hermite tangents ', hermiteTangents), hermiteNote);
 

@@ -141,7 +141,7 @@ export function createPanels(ctx) {
   const matrix = createMatrixPanel(matrixBody);
   // Issue 18: where the lecture notes disagree about the form shown, a short note says so and
   // which form the app computes (quoted in docs/lesson-curves.md).
-  const notationNote = h('p', { class: 'hint', id: 'notation-note', 'aria-live': 'polite' });
+  const notationNote = h('p', { class: 'hint lecture-note', id: 'notation-note', 'aria-live': 'polite' });
   matrixBody.append(notationNote);
   const splitMatrices = createSubdivisionMatrices(matrixBody, ctx.api);
 
@@ -267,7 +267,7 @@ export function createPanels(ctx) {
   const removalNote = h('p', { class: 'hint', id: 'knot-removal-note' },
     'Raising m inserts the knot again (Boehm): the curve does not move. Lowering m is knot removal, which moves the curve unless it already has the higher continuity there; take a raise back with Undo, which is exact.');
   // Issue 18: when the knots make this B-spline a Bezier curve (decided by the core).
-  const bezierNote = h('p', { class: 'hint', id: 'bezier-disguise-note', 'aria-live': 'polite', hidden: true });
+  const bezierNote = h('p', { class: 'hint lecture-note', id: 'bezier-disguise-note', 'aria-live': 'polite', hidden: true });
   knotsBody.append(presets, knotTable, bezierNote, removalNote);
   // A preset keeps u, moved onto the new knots' domain [t_p, t_K] (the core's curveDomain).
   function setKnots(knots) {

@@ -255,7 +255,7 @@ export const lesson = {
       // Issue 18: u^T here is [u^3 u^2 u 1] (descending, lectures 000 and 003), so M is the
       // matrix of those lectures; lecture 002 writes u = (1, u, u^2, u^3) and its M_B, M_H are
       // this M with the rows in the opposite order.
-      h('p', { class: 'hint', id: 'surface-matrix-name' }, state.kind === 'bezier'
+      h('p', { class: 'hint lecture-note', id: 'surface-matrix-name' }, state.kind === 'bezier'
         ? 'Bezier: P holds the 16 control points p_ij (lecture 002). M is M_Bezier of lecture 003, for uᵀ = [u³ u² u 1]; lecture 002 writes u = (1, u, u², u³), and its M_B is this M with the rows in the opposite order.'
         : 'Hermite: P holds corner points, v-tangents, u-tangents and twists (lecture 002\'s Q = [q_ij]). M is M_Hermite of lectures 000 and 003, for uᵀ = [u³ u² u 1]; lecture 002 writes u = (1, u, u², u³), and its M_H = A_H⁻¹ is this M with the rows in the opposite order.'),
     );
