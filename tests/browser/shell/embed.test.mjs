@@ -74,10 +74,16 @@ const withoutView = (state) => { const { view, ...rest } = state; return rest; }
 async function layout(frame) {
   return frame.evaluate(() => {
     const r = document.getElementById('stage').getBoundingClientRect();
+    // The canvas legend (colours, arrow scales) stays under the canvas in an embed: the
+    // figure is the canvas and its legend.
+    const legend = document.querySelector('.canvas-legend');
+    const l = legend && legend.getClientRects().length ? legend.getBoundingClientRect() : null;
     const handles = window.wingspline.handles();
     const s = document.scrollingElement;
     return {
       canvas: { left: r.left, top: r.top, right: r.right, bottom: r.bottom },
+      figureBottom: l ? l.bottom : r.bottom,
+      legendGap: l ? l.top - r.bottom : 0,
       frame: { width: innerWidth, height: innerHeight },
       handles: handles.length,
       outside: handles.filter((hd) => !(hd.x >= r.left && hd.x <= r.right && hd.y >= r.top && hd.y <= r.bottom)).map((hd) => hd.label),
@@ -91,8 +97,10 @@ function assertFitted(fit, size, what) {
   assert.ok(fit.handles > 0, `${what}: the lesson has handles`);
   assert.deepEqual(fit.outside, [], `${what}: every handle is on the canvas`);
   assert.ok(Math.abs(fit.canvas.left) <= EDGE_PX && Math.abs(fit.canvas.top) <= EDGE_PX
-    && Math.abs(fit.canvas.right - size.width) <= EDGE_PX && Math.abs(fit.canvas.bottom - size.height) <= EDGE_PX,
-  `${what}: the canvas fills the frame (${JSON.stringify(fit.canvas)} in ${size.width}x${size.height})`);
+    && Math.abs(fit.canvas.right - size.width) <= EDGE_PX && Math.abs(fit.figureBottom - size.height) <= EDGE_PX,
+  `${what}: the canvas (and its legend under it) fills the frame (${JSON.stringify(fit)} in ${size.width}x${size.height})`);
+  assert.ok(Math.abs(fit.legendGap) <= EDGE_PX, `${what}: the legend sits right under the canvas`);
+  assert.ok(fit.canvas.bottom - fit.canvas.top >= 0.5 * size.height, `${what}: the canvas is at least half the frame`);
   assert.ok(fit.scroll.width <= fit.scroll.clientWidth && fit.scroll.height <= fit.scroll.clientHeight,
     `${what}: no scroll bars (${JSON.stringify(fit.scroll)})`);
 }
@@ -338,7 +346,9 @@ test('controls=1 shows the lesson\'s controls under the canvas, inside the frame
   const seen = await frame.evaluate(() => {
     const c = document.getElementById('stage-controls').getBoundingClientRect();
     const s = document.getElementById('stage').getBoundingClientRect();
-    return { controls: { top: c.top, bottom: c.bottom, height: c.height }, canvasBottom: s.bottom,
+    const legend = document.querySelector('.canvas-legend');
+    const figureBottom = legend && legend.getClientRects().length ? legend.getBoundingClientRect().bottom : s.bottom;
+    return { controls: { top: c.top, bottom: c.bottom, height: c.height }, canvasBottom: figureBottom,
       scroll: { w: document.scrollingElement.scrollWidth, h: document.scrollingElement.scrollHeight } };
   });
   assert.ok(seen.controls.height > 0, 'the controls are shown');

@@ -105,3 +105,30 @@ test('presentation mode keeps the notes about the lectures (curve explorer, Catm
   assert.match(await note.textContent(), /Lecture 002 prints the first row/);
   assert.equal(await page.locator('.stage-controls .hint').first().isVisible(), false, 'other hints stay hidden');
 });
+
+// Every curve family of the explorer in each of the three matrix forms, at 1280x720: no
+// formula runs off the side column. Failed before: Hermite's line of lecture names, and the
+// Catmull-Rom, NURBS and interpolation matrices (up to 545 px in a 450 px column).
+test('curve explorer at 1280x720: every family in every matrix form fits the side column', async () => {
+  const page = await env.openLesson(`${env.site.url}curves.html`, { viewport: { width: 1280, height: 720 } });
+  await present(page);
+  await page.evaluate(() => { for (const d of document.querySelectorAll('#panels details')) d.open = true; });
+  const families = await page.$$eval('#curve-family option', (options) => options.map((o) => o.value));
+  assert.ok(families.length >= 6, `families: ${families}`);
+  for (const family of families) {
+    await page.selectOption('#curve-family', family);
+    for (const form of ['descending', 'ascending', 'transposed']) {
+      await page.selectOption('#matrix-form', form);
+      await settle(page);
+      await settle(page);
+      const cut = await page.evaluate(() => {
+        const panels = document.querySelector('#panels').getBoundingClientRect();
+        return [...document.querySelectorAll('#panels math, #panels .formula, #panels table')].filter((el) => el.getClientRects().length)
+          .filter((el) => el.scrollWidth > el.clientWidth + 1 || el.getBoundingClientRect().right > panels.right + 1)
+          .map((el) => `${el.tagName.toLowerCase()}.${el.className} (${el.scrollWidth} px in ${el.clientWidth} px, ${getComputedStyle(el).fontSize})`);
+      });
+      assert.deepEqual(cut, [], `${family}, ${form} form`);
+    }
+  }
+  assert.deepEqual(page.problems, []);
+});

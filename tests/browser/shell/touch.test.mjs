@@ -153,3 +153,23 @@ for (const { id, page: file } of lessons.filter((l) => l.ready)) {
     assert.deepEqual(page.problems, []);
   });
 }
+
+// Issue 18: dragging must not silently change the walk's vertex. A pinch whose first finger
+// lands on a mesh vertex is a gesture on the view: the walk keeps its vertex. Failed before:
+// the vertex under the first finger became the walk's vertex when the fingers lifted.
+test('mesh: a pinch that starts on a vertex zooms and leaves the walk\'s vertex alone', async () => {
+  const { page, touch } = await openPhone('mesh');
+  const { handles } = await layout(page);
+  const vertex0 = await page.evaluate(() => window.wingspline.state.vertex);
+  const target = handles.find((hd) => hd.label !== `v${vertex0 + 1}` && hd.y > 60 && hd.y < 780);
+  assert.ok(target, 'a vertex other than the walk\'s, on screen');
+  const zoom0 = await page.evaluate(() => window.wingspline.state.view.zoom);
+  await touch('touchStart', [[target.x, target.y]]);
+  await touch('touchStart', [[target.x, target.y], [target.x + 60, target.y]]);
+  for (let k = 1; k <= 6; k += 1) await touch('touchMove', [[target.x - 5 * k, target.y], [target.x + 60 + 5 * k, target.y]]);
+  await touch('touchEnd');
+  await frames(page, 4);
+  assert.ok(await page.evaluate(() => window.wingspline.state.view.zoom) > zoom0 * 1.2, 'the pinch zoomed');
+  assert.equal(await page.evaluate(() => window.wingspline.state.vertex), vertex0, 'the walk keeps its vertex');
+  assert.deepEqual(page.problems, []);
+});

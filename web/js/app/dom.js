@@ -63,9 +63,9 @@ const watched = new WeakSet();
 // Presentation mode (issue 18, projector): a formula a little wider than its column is set
 // smaller until it fits, never below FORMULA_FLOOR_PX (nor 80% of its size); wider ones
 // still scroll, with the edge shadows. Outside presentation mode formulas keep their size.
-const FORMULA_FLOOR_PX = 16;
+const FORMULA_FLOOR_PX = 15;
 function fitFormula(target) {
-  if (!target.matches('.formula')) return;
+  if (!target.matches('.formula, math[display=block]')) return;
   if (target.style.fontSize) target.style.fontSize = '';
   if (!document.documentElement.hasAttribute('data-present')) return;
   const ratio = target.clientWidth / target.scrollWidth;

@@ -1,4 +1,4 @@
-// Theme (system, light, dark) and presentation mode, both remembered in local storage.
+// Theme (system, light, dark), remembered in local storage, and presentation mode (for this page only).
 const THEME_KEY = 'wingspline:theme';
 const themes = ['system', 'light', 'dark'];
 
@@ -10,8 +10,9 @@ function store(key, value) {
 }
 
 export function applyStoredTheme() {
+  // Re-applies what was read; writes nothing (an embed must not save a preference).
   const theme = stored(THEME_KEY);
-  setTheme(themes.includes(theme) ? theme : 'system');
+  setTheme(themes.includes(theme) ? theme : 'system', { remember: false });
 }
 
 export function currentTheme() {

@@ -95,9 +95,13 @@ export function createMatrixPanel(container) {
         : el('mrow', ...call(mi('u')), mo('='), powerRow(), dot(), mi('M'), dot(), mi('G')));
     const named = names ? lectureLine(names, form, name, powerRow) : null;
     const geometry = math(el('mrow', mi(geo), mo('='), tag(labelMatrix(transposed ? transpose(labelColumn) : labelColumn, ascending), 'G-labels'), mo('='), numbers('G', gr, gc, 'G')));
-    const product = math(transposed
-      ? el('mrow', ...call(mi('t')), mo('='), numbers('G', gr, gc, 'G'), dot(), numbers('M', n, n, 'M'), dot(), powerColumn())
-      : el('mrow', ...call(mi('u')), mo('='), powerRow(), dot(), numbers('M', n, n, 'M'), dot(), numbers('G', gr, gc, 'G')));
+    // The product in three pieces that wrap (site.css .formula-pieces): a degree-3 product in
+    // decimals is 650 px wide, more than a projector's side column (issue 18).
+    const product = document.createElement('div');
+    product.className = 'formula-pieces matrix-product';
+    product.append(...(transposed
+      ? [math(el('mrow', ...call(mi('t')), mo('='), numbers('G', gr, gc, 'G'), dot())), math(el('mrow', numbers('M', n, n, 'M'), dot())), math(powerColumn())]
+      : [math(el('mrow', ...call(mi('u')), mo('='), powerRow(), dot())), math(el('mrow', numbers('M', n, n, 'M'), dot())), math(numbers('G', gr, gc, 'G'))]));
     const coefficients = math(transposed
       ? el('mrow', mi('G'), dot(), mi('M'), mo('='), numbers('C', gr, gc, 'C'))
       : el('mrow', mi('C'), mo('='), mi('M'), dot(), mi(geo), mo('='), numbers('C', gr, gc, 'C')));

@@ -369,7 +369,11 @@ export const meshLesson = {
     view.selection.pick = { kind: 'vertex', index: v }; // the edit panel's element too
     if (!view.pointer.down) return; // [ or ]: selected for the arrow keys only
     view.pressed = { v, dragged: false };
+    // A second finger down before the release makes it a pinch (the view), not a choice.
+    const secondPointer = () => { if (view.pressed) view.pressed.dragged = true; };
+    window.addEventListener('pointerdown', secondPointer, { capture: true });
     window.addEventListener('pointerup', () => {
+      window.removeEventListener('pointerdown', secondPointer, { capture: true });
       const pressed = view.pressed;
       view.pressed = null;
       const state = ctx.state;
