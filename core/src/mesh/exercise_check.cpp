@@ -170,16 +170,19 @@ void Checker::match_rows() {
     for (int32_t r : bad_pair) {
         const int32_t s = given(r, kS), t = given(r, kE);
         const bool duplicate = s != t && edge_of_pair.count(key(s, t));
-        // Which end to keep, and the edge it then describes: the unmatched edge at S or at E
-        // whose orientation agrees best with the rest of the row.
-        int32_t best = kNone, best_score = -1, blamed = kE;
+        // The edge the row describes: an unmatched edge at S or at E, in the orientation its
+        // L, R and wings agree with best (the end it keeps breaks a tie). Both ends can be
+        // wrong: S = w, E = z for the edge u -> w whose faces and wings the row gives.
+        int32_t best = kNone, best_score = -1;
         bool best_reverse = false;
         for (int kept : {kS, kE}) {
             for (int32_t e : unmatched_at(kept == kS ? s : t)) {
-                const EdgeRecord& m = mesh.edge(e);
-                const bool reverse = kept == kS ? m.start != s : m.end != t;
-                const int score = agreement(r, e, reverse);
-                if (score > best_score) best = e, best_score = score, blamed = kept == kS ? kE : kS, best_reverse = reverse;
+                for (bool reverse : {false, true}) {
+                    const EdgeRecord x = expected_row(e, reverse);
+                    const int ends = (x.start == s) + (x.end == t);
+                    const int score = 4 * agreement(r, e, reverse) + ends;
+                    if (score > best_score) best = e, best_score = score, best_reverse = reverse;
+                }
             }
         }
         std::string reason = duplicate ? vertex_label(s) + "-" + vertex_label(t) + " is already the edge of row " +
@@ -190,11 +193,25 @@ void Checker::match_rows() {
                                                       " and " + vertex_label(t) + " as neighbouring corners";
         const char* code = duplicate ? "duplicate-edge" : "not-an-edge";
         if (best == kNone) {
-            add_row_finding(r, kS, kNone, code, reason + "; every edge of the mesh already has its row, so this one can go");
+            // Only the edges at its two ends were looked at: say so, no more (an edge elsewhere
+            // may still lack a row, and then the worked answer gives it this row's number).
+            add_row_finding(r, kS, kNone, code, reason + "; every edge at " + vertex_label(s) + " and at " + vertex_label(t) +
+                                                    " already has its row, so this row is none of them");
             continue;
         }
         match(r, best, best_reverse);
-        const int32_t want = cell_of(expected_row(best, best_reverse), blamed);
+        const EdgeRecord x = expected_row(best, best_reverse);
+        if (x.start != s && x.end != t) {
+            // Neither end fits: the row's faces and wings are those of the edge x.
+            add_row_finding(r, kS, x.start, code,
+                            reason + ". The edge " + pair_words(best) + " has no row, and this row's L, R and wings are those of " +
+                                vertex_label(x.start) + " -> " + vertex_label(x.end) + ", so S is " + vertex_label(x.start) +
+                                " and E is " + vertex_label(x.end));
+            add_row_finding(r, kE, x.end, code, "E is " + vertex_label(x.end) + ", not " + vertex_label(t) + " (see S)");
+            continue;
+        }
+        const int blamed = x.start == s ? kE : kS;
+        const int32_t want = cell_of(x, blamed);
         add_row_finding(r, blamed, want, code,
                         reason + ". The edge " + pair_words(best) + " has no row; read with " +
                             (blamed == kS ? "E = " + vertex_label(t) : "S = " + vertex_label(s)) + ", this row is that edge, so " +
@@ -227,7 +244,9 @@ void Checker::match_rows() {
             if (is_vertex(g)) continue;
             const int32_t want = best == kNone ? kNone : cell_of(expected_row(best, best_reverse), k);
             const std::string what = k == kS ? "S" : "E";
-            const std::string fix = best == kNone ? "; every edge of the mesh already has a row"
+            const std::string fix = best == kNone ? (is_vertex(s) || is_vertex(t)
+                                                         ? "; every edge at " + vertex_label(is_vertex(s) ? s : t) + " already has a row"
+                                                         : std::string("; every edge of the mesh already has a row"))
                                                   : "; the edge " + pair_words(best) + " has no other row, so " + what + " is " +
                                                         vertex_label(want);
             if (g == kBlank) add_row_finding(r, k, want, "blank", what + " is blank" + fix);
@@ -303,7 +322,12 @@ void Checker::check_row(int32_t r) {
             if (given(r, k) != (k < kSL ? cell_of(y, k) : label_of(cell_of(y, k))) || (k >= kSL && !is_row(given(r, k)))) return false;
         return true;
     };
-    if (!fits(x) && fits(reversed(x))) {
+    // Not on a row whose S or E was already judged (read through one end while matching):
+    // that finding names the end to fix, and a swap would contradict it.
+    const bool ends_judged = std::any_of(row_findings.begin(), row_findings.end(), [&](const AnswerFinding& f) {
+        return f.table == MeshTable::Edge && f.row == r && (f.field == kFieldName[kS] || f.field == kFieldName[kE]);
+    });
+    if (!ends_judged && !fits(x) && fits(reversed(x))) {
         row_reversed[r] = !row_reversed[r];
         add_row_finding(r, kS, x.end, "swapped-ends",
                         "S and E are the other way round: L, R and the wings describe the edge run from " +

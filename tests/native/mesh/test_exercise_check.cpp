@@ -468,3 +468,52 @@ TEST_CASE("S and E written the other way round, the rest right: one finding says
     // The worked answer puts S and E back and keeps the rest: the slide's table.
     CHECK(worked_winged_edge_answer(f.offsets, f.corners, f.vertices, a).edges == slide_answer().edges);
 }
+
+// Review findings (issue 19): feedback never contradicts itself or the worked answer.
+TEST_CASE("a row that is no edge, with an edge elsewhere missing: the reason claims only what was looked at", "[mesh][exercise]") {
+    // Row e7 (v4-v5) replaced by v1-v2, which is e2's pair: every edge at v1 and v2 has its
+    // row, but v4-v5 has none. Before, the reason said "every edge of the mesh already has its
+    // row, so this one can go", while a missing-edge finding named v4-v5 and the worked answer
+    // gave it this very row.
+    const FaceSet f = face_set_of(lecture_example().mesh);
+    WingedEdgeAnswer a = slide_answer();
+    a.edges[8 * label("e7") + 0] = 0;
+    a.edges[8 * label("e7") + 1] = 1;
+    const AnswerCheck c = check(f, a);
+    INFO(describe(c));
+    bool missing = false, duplicate = false;
+    for (const AnswerFinding& x : c.findings) {
+        CHECK(x.reason.find("can go") == std::string::npos);
+        CHECK(x.reason.find("every edge of the mesh already") == std::string::npos);
+        missing = missing || (x.code == "missing-edge" && x.reason.find("v4-v5") != std::string::npos);
+        if (x.code == "duplicate-edge") {
+            duplicate = true;
+            CHECK(x.row == label("e7"));
+            CHECK(x.reason.find("every edge at v1 and at v2 already has its row") != std::string::npos);
+        }
+    }
+    CHECK(missing);
+    CHECK(duplicate);
+}
+
+TEST_CASE("both ends wrong, the rest right: S and E are named, no swap is suggested", "[mesh][exercise]") {
+    // Row e5 written S = v4, E = v1 (v4-v1 is no edge) with the slide's L, R and wings, which are
+    // those of v2 -> v4. Before: "E is v2" and also "S and E are the other way round", and the
+    // faces and wings read backwards.
+    const FaceSet f = face_set_of(lecture_example().mesh);
+    WingedEdgeAnswer a = slide_answer();
+    a.edges[8 * label("e5") + 0] = 3;
+    a.edges[8 * label("e5") + 1] = 0;
+    const AnswerCheck c = check(f, a);
+    INFO(describe(c));
+    REQUIRE(c.findings.size() == 2);
+    for (const AnswerFinding& x : c.findings) {
+        CHECK(x.row == label("e5"));
+        CHECK(x.code == "not-an-edge");
+    }
+    CHECK(c.findings[0].field == "start");
+    CHECK(c.findings[0].expected == 1); // v2
+    CHECK(c.findings[1].field == "end");
+    CHECK(c.findings[1].expected == 3); // v4
+    CHECK(worked_winged_edge_answer(f.offsets, f.corners, f.vertices, a).edges == slide_answer().edges);
+}
