@@ -10,6 +10,16 @@ const WINDOW_MARGIN = 12;
 const FALLBACK_ROW_PX = 26;
 const SCROLL_KEYS = new Set(['Home', 'End', 'PageUp', 'PageDown', 'ArrowUp', 'ArrowDown', ' ']);
 
+// The header rows of a table: `head` is a list of rows, each a list of cells, a cell a string
+// or {text, colspan, rowspan, scope, class}. Row k is row k + 1 of the whole table for
+// assistive technology (aria-rowindex). Also used for a lone row shown with its table's head
+// (the mesh walk's row, lessons/mesh/tabs.js).
+export function headRows(head) {
+  return head.map((cells, k) => h('tr', { 'aria-rowindex': k + 1 }, cells.map((cell) =>
+    typeof cell === 'string' ? h('th', { scope: 'col' }, cell)
+      : h('th', { scope: cell.scope ?? 'col', colspan: cell.colspan, rowspan: cell.rowspan, class: cell.class }, cell.text))));
+}
+
 // rowAttributes(i): extra attributes of row i's <tr> (e.g. data-representation);
 // cellClasses[k]: the class of every row's k-th <td>; className: the <table>'s classes.
 export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnter, onRowLeave, onRowClick,
@@ -17,9 +27,7 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
   // Header rows are rows 1..head.length of the whole table for assistive technology; data
   // row i is row head.length + i + 1 (aria-rowindex), the table has head.length + total rows
   // (aria-rowcount), so a windowed row is announced where it sits in the whole table.
-  const thead = h('thead', {}, head.map((cells, k) => h('tr', { 'aria-rowindex': k + 1 }, cells.map((cell) =>
-    typeof cell === 'string' ? h('th', { scope: 'col' }, cell)
-      : h('th', { scope: cell.scope ?? 'col', colspan: cell.colspan, rowspan: cell.rowspan, class: cell.class }, cell.text)))));
+  const thead = h('thead', {}, headRows(head));
   const headColumns = Math.max(1, ...head.map((cells) => cells.reduce((n, c) => n + (typeof c === 'string' ? 1 : (c.colspan ?? 1)), 0)));
   const tbody = h('tbody', {});
   const captionEl = h('caption', {}, caption);

@@ -10,7 +10,7 @@ import { createRepresentationTabs } from './tabs.js';
 import { vLabel, fLabel } from './labels.js';
 import { pickElement as elementAt } from './draw.js';
 import { createEditPanel } from './edit-panel.js';
-import { createTurnControls } from '../../ui/turn-controls.js';
+import { createTurnControls, MAX_TILT } from '../../ui/turn-controls.js';
 
 const BIG_TABLES = 100000; // faces: from this size a new mesh's tables fill a task after its first frame
 
@@ -197,7 +197,7 @@ export function setupPanels(ctx, selection) {
   window.addEventListener('pointermove', (event) => {
     if (!rotating) return;
     const yaw = rotating.yaw + (event.clientX - rotating.x) * 0.01;
-    const pitch = Math.max(-1.55, Math.min(1.55, rotating.pitch + (event.clientY - rotating.y) * 0.01));
+    const pitch = Math.max(-MAX_TILT, Math.min(MAX_TILT, rotating.pitch + (event.clientY - rotating.y) * 0.01));
     ctx.commit({ ...state(), rotation: { yaw, pitch } }, { history: false });
   });
   window.addEventListener('pointerup', () => { rotating = null; });

@@ -5,7 +5,7 @@
 // adjacency rows ask the core only for those rows.
 import { h, revealInBoxes } from '../../app/dom.js';
 import { createGrowthPlot, growthSeries } from './growth.js';
-import { createVirtualTable } from '../../ui/virtual-table.js';
+import { createVirtualTable, headRows } from '../../ui/virtual-table.js';
 import { num } from './labels.js';
 import { createStoredEdgeControl } from './stored-edge.js';
 import { readTable, findDescriptor } from '../../core/tables.js';
@@ -254,13 +254,11 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
     const d = findDescriptor(ctx.api.tableDescriptors, 'winged-edge', name);
     const letters = NOTATION.default;
     const cells = rowCells(d, tableAt('winged-edge', name, frame.row).row(frame.row), letters);
-    const head = headOf(d).map((cells, k) => h('tr', {}, cells.map((c) => (typeof c === 'string'
-      ? h('th', { scope: 'col' }, c) : h('th', { scope: 'col', colspan: c.colspan }, c.text)))));
     // Column k of the big table is cell k - 1 here (its first cell is the row's label).
     const mark = (k) => (k === frame.read ? 'is-read' : k === frame.compared ? 'is-compared' : null);
     walkRow.replaceChildren(h('table', { class: 'data-table walk-row-table' },
       h('caption', {}, `${d.title}: the row the walk reads`),
-      h('thead', {}, head),
+      h('thead', {}, headRows(headOf(d))),
       h('tbody', {}, h('tr', { class: 'is-highlighted' }, h('th', { scope: 'row' }, sub(letters[d.rows], frame.row)),
         cells.map((c, k) => h('td', { class: mark(k + 1) }, c))))));
   }

@@ -10,7 +10,7 @@ import { createExplorerLink } from './explorer-link.js';
 import { formatNumber } from '../../ui/mathml.js';
 import { SOURCES, PHASES, MAX_LEVEL, label } from './source.js';
 import { formatWeight } from './format-weight.js';
-import { createTurnControls } from '../../ui/turn-controls.js';
+import { createTurnControls, MAX_TILT } from '../../ui/turn-controls.js';
 
 const PHASE_NAMES = { 'face-points': 'face points', 'edge-points': 'edge points', 'vertex-points': 'vertex points', reconnection: 'reconnection' };
 const RULE_NAMES = {
@@ -158,7 +158,7 @@ export function setupPanels(ctx, view) {
     action: (e) => {
       const { yaw, pitch } = state().rotation;
       const d = { ArrowLeft: [-ROTATE_STEP, 0], ArrowRight: [ROTATE_STEP, 0], ArrowUp: [0, -ROTATE_STEP], ArrowDown: [0, ROTATE_STEP] }[e.key];
-      commit({ rotation: { yaw: yaw + d[0], pitch: Math.max(-1.55, Math.min(1.55, pitch + d[1])) } }, { coalesce: 'rotate' });
+      commit({ rotation: { yaw: yaw + d[0], pitch: Math.max(-MAX_TILT, Math.min(MAX_TILT, pitch + d[1])) } }, { coalesce: 'rotate' });
     } });
 
   // Turning by dragging (mouse, pen or finger: pointer events); one undo step per drag.
@@ -166,7 +166,7 @@ export function setupPanels(ctx, view) {
     const r = view.rotating;
     if (!r) return;
     const yaw = r.yaw + (event.clientX - r.x) * DRAG_RADIANS_PER_PX;
-    const pitch = Math.max(-1.55, Math.min(1.55, r.pitch + (event.clientY - r.y) * DRAG_RADIANS_PER_PX));
+    const pitch = Math.max(-MAX_TILT, Math.min(MAX_TILT, r.pitch + (event.clientY - r.y) * DRAG_RADIANS_PER_PX));
     commit({ rotation: { yaw, pitch } }, { coalesce: 'rotate' });
   });
   const endRotation = () => { if (view.rotating) { view.rotating = null; ctx.endGesture(); } };
