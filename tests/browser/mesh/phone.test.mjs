@@ -64,6 +64,8 @@ test('phone: the 3D view turns and tilts with its sliders', async () => {
   assert.equal(await page.locator('#view-turn').isDisabled(), true, 'the turn slider is off in 2D');
   await page.locator('#toggle-3d').tap();
   await page.waitForFunction(() => window.wingspline.state.mode3d);
+  // The sliders are enabled when the panels show the 3D state (the next frame).
+  await page.waitForFunction(() => !document.getElementById('view-turn').disabled && !document.getElementById('view-tilt').disabled);
   const before = await page.evaluate(() => ({ rotation: window.wingspline.state.rotation, p: Array.from(window.wingspline.model.projected.slice(0, 6)) }));
   await page.locator('#view-turn').focus();
   for (let i = 0; i < 20; i += 1) await page.keyboard.press('ArrowRight');
