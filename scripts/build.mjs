@@ -8,6 +8,7 @@ import { pathToFileURL } from 'node:url';
 import { repoRoot, log, must } from './lib/run.mjs';
 import { writeServiceWorkerManifest } from './lib/site-manifest.mjs';
 import { lessonPage } from './lib/lesson-page.mjs';
+import { exerciseIndex } from './lib/exercise-index.mjs';
 
 const jobs = ['-j', '2'];
 
@@ -80,6 +81,9 @@ export async function assembleSite() {
     const st = fs.statSync(from);
     if (!old || old.size !== st.size || old.mtimeMs < st.mtimeMs) fs.copyFileSync(from, to);
   }
+  const index = JSON.stringify(await exerciseIndex(repoRoot), null, 1) + '\n';
+  fs.mkdirSync(path.join(dist, 'exercises'), { recursive: true });
+  fs.writeFileSync(path.join(dist, 'exercises', 'index.json'), index);
   writeServiceWorkerManifest(dist);
 }
 

@@ -145,7 +145,7 @@
  *   refresh(): void,
  *   message: MessageLine,
  *   keymap: Keymap,
- *   ui: { selected: string | null, hover: string | null, hoverPoint: number[] | null, present: boolean },
+ *   ui: { selected: string | null, hover: string | null, hoverPoint: number[] | null, present: boolean, exercise: string | null },
  *   stage: Stage,
  *   readonly colors: { background: string, ink: string, muted: string, highlight: string, series: string[], [name: string]: any },
  *   panels: HTMLElement,
@@ -180,11 +180,28 @@
  */
 
 /**
+ * What a lesson offers exercises (issue 19, docs/exercises.md; web/js/exercise/). `kinds`:
+ * the kinds of check its drawing gives (exercise/format.js KINDS); `subject`: what a check
+ * is asked of, from the lesson's model (exercise/subjects.js lists the shapes); `keepsState`:
+ * the kinds whose answer is the drawing itself (kept with the exercise's progress);
+ * `showWalk`: the drawing follows a walk being predicted; `suggest`: the authoring dialog's
+ * starting check, hidden panels and question for a kind, from the view shown.
+ * @typedef {{
+ *   kinds: string[],
+ *   subject(view: View, model: Model, state: State, ctx: Ctx): { mesh?: any, curve?: any, curves?: Object<string, any>, joints?: Array<{ a: any, b: any }>, patch?: any },
+ *   keepsState?: string[],
+ *   showWalk?: (ctx: Ctx, around: string, element: number, known: number) => void,
+ *   suggest?: (kind: string, state: State) => { check: any, hide: string[], question: string },
+ * }} ExerciseSupport
+ */
+
+/**
  * The lesson object.
  * @typedef {{
  *   id: string,
  *   title: string,
  *   stateVersion: number,
+ *   exercise?: ExerciseSupport,
  *   schema: Object<string, any>,
  *   migrations?: Object<number, (old: any) => any>,
  *   checkState?: (state: State) => string | null,

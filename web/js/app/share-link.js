@@ -66,6 +66,19 @@ async function pipe(bytes, stream) {
   return new Uint8Array(await out.arrayBuffer());
 }
 
+// Any text as a link code (deflate-raw, base64url), and back: the state's codec, also used
+// for exercises (exercise/link.js). unpackText refuses a code that unpacks past `cap` bytes.
+export async function packText(textValue) {
+  return toBase64Url(await pipe(new TextEncoder().encode(textValue), new CompressionStream('deflate-raw')));
+}
+export async function unpackText(code, cap = MAX_STATE_BYTES) {
+  try {
+    return new TextDecoder('utf-8', { fatal: true }).decode(await inflateCapped(fromBase64Url(code), cap));
+  } catch (err) {
+    throw new Error(err.message.startsWith('it ') ? err.message : 'it is truncated or damaged (it does not decompress)');
+  }
+}
+
 export function envelope(lesson, state) {
   return { format: FORMAT, lesson: lesson.id, version: lesson.stateVersion, state };
 }
@@ -240,8 +253,7 @@ export async function encodeState(lesson, state, { contents } = {}) {
 
 // The link code of a state already externalized.
 export async function compressEnvelope(lesson, state) {
-  const json = stringifyExact(envelope(lesson, state));
-  return toBase64Url(await pipe(new TextEncoder().encode(json), new CompressionStream('deflate-raw')));
+  return packText(stringifyExact(envelope(lesson, state)));
 }
 
 // Checks and upgrades a parsed envelope. Returns { state, problems } (problems: sentences);
@@ -287,12 +299,7 @@ export function readEnvelope(lesson, data) {
 export async function decodeState(lesson, text, { contents } = {}) {
   if (typeof text !== 'string' || text.length === 0) throw new Error('it is empty');
   if (text.length > MAX_LINK_CHARS) throw new Error('it is far longer than any lesson state');
-  let json;
-  try {
-    json = new TextDecoder('utf-8', { fatal: true }).decode(await inflateCapped(fromBase64Url(text), MAX_STATE_BYTES));
-  } catch (err) {
-    throw new Error(err.message.startsWith('it ') ? err.message : 'it is truncated or damaged (it does not decompress)');
-  }
+  const json = await unpackText(text, MAX_STATE_BYTES);
   let data;
   try {
     data = JSON.parse(json);

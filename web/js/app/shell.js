@@ -36,6 +36,8 @@ import { createPresenter } from './presenter.js';
 import { createInspector } from './inspector.js';
 import { createImportExport } from './import-export.js';
 import { createToolbar, createEmbedToolbar } from './toolbar.js';
+import { openExercise, startExercise } from '../exercise/session.js';
+import { openAuthorDialog } from '../exercise/author.js';
 
 /**
  * @typedef {import('./contract.js').Lesson} Lesson
@@ -84,18 +86,26 @@ export async function runLesson(lesson) {
 
   // Large fields (an imported mesh) live in IndexedDB by content hash; the link refers to them.
   const contents = createContentStore();
-  const restored = embed ? await restoreLinkOnly(lesson, { contents }) : await restoreState(lesson, { contents });
+  // An exercise link (#exercise=<id> or #x=<code>, docs/exercises.md) opens the lesson on the
+  // exercise's state; the person's own saved work is neither read nor written meanwhile. A
+  // link that cannot be used is said, and the saved work is shown as without it.
+  const exercise = embed ? null : await openExercise(lesson);
+  const restored = exercise?.ready ? exercise.restored
+    : embed ? await restoreLinkOnly(lesson, { contents }) : await restoreState(lesson, { contents });
   // A link that replaced saved work is one undoable step: Undo brings the work back.
   const store = createStore(restored.previous ?? restored.state);
   if (restored.previous) store.replace(restored.state, 'link');
-  const persister = createPersister(lesson, { contents, notify: (kind) => sayKept(kind), keep: !embed });
-  const ui = { selected: null, hover: null, hoverPoint: null, present: isPresenting() };
+  const persister = createPersister(lesson, { contents, notify: (kind) => sayKept(kind), keep: !embed && !exercise?.ready });
+  // ui.exercise: the kind of the exercise the page shows (a lesson hides what would answer it).
+  const ui = { selected: null, hover: null, hoverPoint: null, present: isPresenting(), exercise: null };
   /** The lesson's view: what its setup returned, handed back to every later hook. */
   let view = {};
   let model = null;
   let modelState = null; // the state `model` was computed from
   /** @type {{ update(): void } | null} */
   let inspector = null; // built after the lesson's own controls
+  /** @type {any} */
+  let player = null; // the exercise player, when the page shows an exercise
   let autoFit = false; // the default view follows the canvas size until the person pans or zooms
   let frame = 0;
   let colors = drawingColors();
@@ -183,6 +193,7 @@ export async function runLesson(lesson) {
     if (reason !== 'view' && state !== modelState) recompute(state);
     if (reason !== 'view') needsPanelUpdate = true;
     persister.save(state);
+    if (reason !== 'view') player?.stateChanged();
     scheduleRender();
   });
 
@@ -213,6 +224,7 @@ export async function runLesson(lesson) {
     const painter = new CanvasPainter(g, ctx.stage.transform(), { scale: ui.present ? 1.6 : 1, background: colors.background });
     painter.clear();
     lesson.draw(view, painter, model, state, ctx);
+    player?.draw(painter, colors);
     painter.finish(); // the labels, placed together (app/label-layout.js), and the legend
     lesson.afterFrame?.(view, model, state, ctx);
   }
@@ -312,6 +324,12 @@ export async function runLesson(lesson) {
   // The state an embed's Reset returns to: its link's state as first shown (set at start).
   let prepared = null;
   function reset() {
+    if (player) {
+      if (!accept(player.initialState, 'import')) return;
+      fitView();
+      message.info('Back to the exercise\'s starting drawing (Undo brings your changes back).');
+      return;
+    }
     if (embed && prepared) {
       if (!accept(prepared, 'import')) return;
       autoFit = true;
@@ -329,6 +347,7 @@ export async function runLesson(lesson) {
     : createToolbar({
       header: els.header, lesson, store, persister, keymap, message, ui, files, recolor, reset, fitView,
       announceStatus: announcer.status,
+      makeExercise: lesson.exercise ? () => openAuthorDialog({ ctx, lesson, view, message }) : null,
     });
 
   // ---------------------------------------------------------------- kept work and links
@@ -380,7 +399,11 @@ export async function runLesson(lesson) {
     }
   }
   // (An embed shows the link it was given; its address is the host page's business.)
-  if (!embed) {
+  if (exercise?.ready) {
+    // Another link in the address bar of an exercise: opened afresh (the exercise's progress
+    // is kept; the lesson's own saved work was never touched).
+    window.addEventListener('hashchange', () => window.location.reload());
+  } else if (!embed) {
     window.addEventListener('hashchange', followAddress);
     window.addEventListener('popstate', followAddress);
   }
@@ -393,7 +416,8 @@ export async function runLesson(lesson) {
     // A restored state the current core refuses: the work a link replaced if there is one,
     // else the default, and the saved code is kept aside, not written over.
     const fallback = restored.previous ?? lesson.defaultState();
-    message.warn(`The ${restored.source === 'link' ? 'link' : 'saved state'} could not be shown (${errorText(startProblem)}); showing ${restored.previous ? 'your previous work' : 'the starting point'}.`);
+    if (exercise?.ready) exercise.refuse(`its drawing cannot be shown (${errorText(startProblem)})`);
+    message.warn(`The ${restored.source === 'link' ? 'link' : restored.source === 'exercise' ? 'exercise' : 'saved state'} could not be shown (${errorText(startProblem)}); showing ${restored.previous ? 'your previous work' : 'the starting point'}.`);
     if (!restored.previous && restored.source === 'storage') persister.keepSavedAside();
     recompute(fallback);
     store.set(fallback, { history: false, reason: 'view' });
@@ -407,12 +431,15 @@ export async function runLesson(lesson) {
   else if (restored.problem) message.warn(restored.problem);
   const embedProblem = embed ? embedProblemsText([...embed.problems, ...showEmbedPanels(embed.panels)]) : null;
   if (embedProblem) message.warn(restored.problem ? `${embedProblem} ${restored.problem}` : embedProblem, { code: 'embed-setting-refused' });
-  autoFit = restored.source === 'default' || Boolean(embed);
-  if ((restored.source === 'default' || embed) && lesson.fitView) {
+  autoFit = restored.source === 'default' || Boolean(embed) || restored.source === 'exercise';
+  if ((restored.source === 'default' || embed || restored.source === 'exercise') && lesson.fitView) {
     // The default view is fitted to the canvas once its size is known.
     await new Promise((resolve) => requestAnimationFrame(resolve));
     const fitted = fittedView();
     if (fitted) store.set({ ...store.state, view: fitted }, { history: false, reason: 'view' });
+  }
+  if (exercise) {
+    player = startExercise(exercise, { ctx, lesson, view: () => view, panels: els.panels, message, reset });
   }
   refresh();
   renderNow();

@@ -21,10 +21,11 @@ import { embedUrl, embedSnippet } from './share-link.js';
  *   recolor: (options?: { now?: boolean }) => void,
  *   reset: () => void,
  *   fitView: () => void,
+ *   makeExercise?: (() => void) | null,
  * }} parts
  * @returns {{ update(): void }}
  */
-export function createToolbar({ header, lesson, store, persister, keymap, message, announceStatus, ui, files, recolor, reset, fitView }) {
+export function createToolbar({ header, lesson, store, persister, keymap, message, announceStatus, ui, files, recolor, reset, fitView, makeExercise = null }) {
   const { exportItems, runExport, fileInput } = files;
   const buttons = {};
   function toolButton(key, label, onclick, title = label, { advanced = false } = {}) {
@@ -138,6 +139,8 @@ export function createToolbar({ header, lesson, store, persister, keymap, messag
     toolButton('share', 'Share link', share, undefined, { advanced: true }),
     exportMenu,
     toolButton('import', 'Import', () => fileInput.click(), 'Import a state (JSON) or a lesson file; dropping a file on the page works too', { advanced: true }),
+    // "Make an exercise from this view" (issue 19, exercise/author.js).
+    makeExercise ? toolButton('make-exercise', 'Make an exercise', makeExercise, 'Make an exercise from this view: choose what to hide, write the question, export the JSON and a link', { advanced: true }) : '',
     fileInput,
     toolButton('theme', 'Theme', changeTheme, 'Theme: system, light, dark (T)', { advanced: true }),
     toolButton('present', 'Present', () => togglePresent(), 'Presentation mode (P)'),

@@ -17,6 +17,7 @@ import { createBlendingPlot } from '../../ui/blending-plot.js';
 import { createMatrixPanel } from '../../ui/matrix-panel.js';
 import { MATRIX_FORMS, createFormSelect, nextForm, lectureNames } from '../../ui/matrix-forms.js';
 import { computeDerivations, createDerivationPanel } from './derivation-panel.js';
+import { comparisonExercise } from './exercise.js';
 
 // The blending functions of one segment per point-based family: the convex hull row's
 // evidence (lecture 003: weights in [0, 1] summing to 1), drawn with the curve explorer's plot.
@@ -80,6 +81,7 @@ export const lesson = {
   id: 'comparison',
   title: 'Comparison lab',
   stateVersion: 4,
+  exercise: comparisonExercise,
   // Version 2 (issue 18): the notation of the matrix panels; older links show decimals.
   // Version 3 (issue 18): the matrix form of the panels (MATRIX_FORMS); older links show
   // lectures 000/003's form, as they did.

@@ -13,6 +13,7 @@ import { drawCurve, drawPolygon, drawSamples, drawVector, drawLegend, arrowScale
 import { PRESETS, DEFAULT_PRESET } from './presets.js';
 import { CONSTRAINTS, dragWithConstraint, enforceAll, appendSegment } from './constraints.js';
 import { computeModel, segmentCurves, SAMPLES_PER_SEGMENT } from './model.js';
+import { continuityExercise } from './exercise.js';
 
 const FAMILIES = ['bezier', 'hermite', 'bspline', 'catmull-rom'];
 const FAMILY_NAMES = { bezier: 'Bezier', hermite: 'Hermite', bspline: 'Uniform B-spline', 'catmull-rom': 'Catmull-Rom' };
@@ -71,6 +72,7 @@ export const lesson = {
   id: 'continuity',
   title: 'Continuity lab',
   stateVersion: 1,
+  exercise: continuityExercise,
   schema: {
     family: oneOf(...FAMILIES),
     constraint: oneOf(...CONSTRAINTS),
@@ -116,6 +118,8 @@ export const lesson = {
     const constraintSelect = h('select', { id: 'constraint', onchange: () => switchConstraint(constraintSelect.value) },
       CONSTRAINTS.map((c) => h('option', { value: c }, c === 'free' ? 'free (ends may part: C-1)' : `keep ${c}`)));
     const presetSelect = h('select', { id: 'preset', onchange: () => loadPreset(presetSelect.value) },
+      // (a state from an exercise or a file may name no preset: "your own points")
+      h('option', { value: '', hidden: true }, 'your own points'),
       Object.entries(PRESETS).map(([key, p]) => h('option', { value: key }, p.label)));
     const uSlider = h('input', { type: 'range', id: 'u', min: 0, max: 2, step: 1 / PLAY_STEPS_PER_SEGMENT,
       oninput: () => ctx.commit({ ...ctx.state, u: Number(uSlider.value) }, { history: false }) });
@@ -210,7 +214,8 @@ export const lesson = {
     } });
     // The view: the panels' elements, the travelling point's player, and the core (the
     // constraint modes move points through it while a handle is dragged).
-    return { ui, player, api: ctx.api };
+    // While a "classify this joint" exercise is answered, the verdicts are not shown (issue 19).
+    return { ui, player, api: ctx.api, verdictsHidden: () => ctx.ui.exercise === 'joint' };
   },
 
   update(view, model, state, ctx) {
@@ -219,7 +224,7 @@ export const lesson = {
     ui.constraintSelect.value = state.constraint;
     ui.constraintSelect.disabled = !isPiecewise(state.family);
     ui.constraintSelect.title = isPiecewise(state.family) ? '' : `${FAMILY_NAMES[state.family]} joints are continuous by construction`;
-    ui.presetSelect.value = PRESETS[state.preset] ? state.preset : DEFAULT_PRESET;
+    ui.presetSelect.value = PRESETS[state.preset] ? state.preset : '';
     ui.uSlider.max = String(model.segmentCount);
     ui.uSlider.value = String(state.u);
     ui.uOut.textContent = formatNumber(state.u, 3);
@@ -308,7 +313,7 @@ export const lesson = {
           apart(joint.left.d1, joint.right.d1, FIRST_SCALE) ? 'P\'⁺/3' : null);
       }
       painter.circle(at[0], at[1], 5, { fill: c.background, stroke: c.ink, width: 2 });
-      painter.text(at[0], at[1], `J${joint.index}: ${label('C', joint.parametric)} ${label('G', joint.geometric)}`, { fill: c.ink, font: 15, weight: 700, dy: 24, halo });
+      painter.text(at[0], at[1], view.verdictsHidden() ? `J${joint.index}` : `J${joint.index}: ${label('C', joint.parametric)} ${label('G', joint.geometric)}`, { fill: c.ink, font: 15, weight: 700, dy: 24, halo });
     }
     // handles
     const selected = ctx.ui.selected;
@@ -354,7 +359,7 @@ export const lesson = {
 
   describe(view, model, state) {
     if (!model) return '';
-    const joints = model.joints.map((j) => `joint ${j.index}: ${label('C', j.parametric)} and ${label('G', j.geometric)}, speed ${formatNumber(j.left.speed, 3)} before and ${formatNumber(j.right.speed, 3)} after`).join('; ');
+    const joints = model.joints.map((j) => `joint ${j.index}: ${view.verdictsHidden() ? '' : `${label('C', j.parametric)} and ${label('G', j.geometric)}, `}speed ${formatNumber(j.left.speed, 3)} before and ${formatNumber(j.right.speed, 3)} after`).join('; ');
     return `${FAMILY_NAMES[state.family]} curve of ${model.segmentCount} segments, dragging keeps ${state.constraint}. ${joints}. Travelling point at u = ${formatNumber(state.u, 3)}, (${formatNumber(model.traveller.point[0], 3)}, ${formatNumber(model.traveller.point[1], 3)}).`;
   },
 

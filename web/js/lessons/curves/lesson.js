@@ -12,6 +12,7 @@ import { drawCurve, drawInfluence, drawPolygon, drawHull, drawVector, drawComb, 
 import { createPanels, updatePanels, drawPlots } from './panels.js';
 import { formatNumber } from '../../ui/mathml.js';
 import { MATRIX_FORMS, migrateTransposed } from '../../ui/matrix-forms.js';
+import { curvesExercise } from './exercise.js';
 
 const pair = list(number(), { min: 2, max: 2 });
 // Parse bound of the per-point lists of a share link or file; each family's own limit is
@@ -26,6 +27,7 @@ export const lesson = {
   id: 'curves',
   title: 'Curve explorer',
   stateVersion: 3,
+  exercise: curvesExercise,
   // Version 2 (issue 18): the notation of the matrix panel; older links show decimals.
   // Version 3 (issue 18): the matrix form (MATRIX_FORMS) replaces the lecture-001 checkbox
   // `transposed`; an old link opens in the form it showed.

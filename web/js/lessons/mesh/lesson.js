@@ -14,6 +14,7 @@ import { viewRotation, projectAll, unprojectDelta, facesAway } from '../../ui/me
 import { setupPanels } from './panels.js';
 import { meshExports } from './exports.js';
 import { vLabel, fLabel, eLabel } from './labels.js';
+import { meshExercise } from './exercise.js';
 
 export const TABS = ['winged', 'faces', 'vertex-face', 'adjacency', 'edge-list', 'queries', 'storage', 'planes'];
 export const QUERY_KINDS = ['faces-around-vertex', 'edges-around-vertex', 'edges-of-face', 'neighbours-of-face', 'faces-of-edge'];
@@ -332,6 +333,7 @@ export const meshLesson = {
   id: 'mesh',
   title: 'Mesh representations',
   stateVersion: 3,
+  exercise: meshExercise,
   // Version 2 (issue 14) holds the mesh operations; a version 1 state had none. Version 3
   // (issue 15) adds the edit panel's t and playback step.
   migrations: { 1: (old) => ({ ...old, ops: [] }), 2: (old) => ({ ...old, editT: 0.5, editStep: -1 }) },

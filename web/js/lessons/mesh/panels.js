@@ -125,7 +125,7 @@ export function setupPanels(ctx, selection) {
   const stepLabel = h('span', { class: 'walk-step', id: 'walk-step' });
   player.onChange(() => { playButton.textContent = player.playing ? '⏸ Pause' : '▶ Play'; playButton.setAttribute('aria-pressed', String(player.playing)); });
 
-  const walkPanel = h('section', { class: 'walk-panel', 'aria-labelledby': 'walk-title' },
+  const walkPanel = h('section', { class: 'walk-panel', id: 'walk-panel', 'aria-labelledby': 'walk-title' },
     h('h2', { id: 'walk-title' }, 'Winged-edge walk'),
     h('div', { class: 'walk-choice' }, labelled('Walk', walkKind), walkElementLabel, walkElement),
     code,

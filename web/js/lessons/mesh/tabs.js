@@ -111,7 +111,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
     ctx.commit({ ...ctx.state, tab: next }, { history: false });
     buttons[next].focus();
   });
-  const root = h('section', { class: 'mesh-representations', 'aria-label': 'Representations' }, tablist, ...Object.values(panels));
+  const root = h('section', { class: 'mesh-representations', id: 'tables-panel', 'aria-label': 'Representations' }, tablist, ...Object.values(panels));
 
   let model = null;
   // Every representation table is drawn from its descriptor (web/js/core/tables.js): the

@@ -14,6 +14,7 @@ import { viewRotation, projectAll, unprojectDelta } from '../../ui/mesh-view.js'
 import { SOURCES, IMPORTED_FIELD, PHASES, MAX_LEVEL, sourceKey, meshInput, hashNumbers, label } from './source.js';
 import { setupPanels } from './panels.js';
 import { drawScene, pointAt } from './draw.js';
+import { subdivisionExercise } from './exercise.js';
 
 // The control polygon of the curve beside the mesh (x, y) as it starts: a zigzag, so the two
 // schemes can be compared on the same points; the person drags its points (state.curve).
@@ -357,6 +358,7 @@ export const subdivisionLesson = {
   id: 'subdivision',
   title: 'Subdivision',
   stateVersion: 2,
+  exercise: subdivisionExercise,
   // Version 2 holds the curve's polygon (it was fixed before): a version-1 link gets it.
   migrations: { 1: (old) => ({ ...old, curve: { points: [...CURVE_POLYGON], closed: false } }) },
   schema,

@@ -193,7 +193,7 @@ export function setupPanels(ctx, view) {
   const maskValence = h('p', { class: 'mask-valence', id: 'mask-valence' });
   const maskPanel = h('section', { class: 'mask-panel', id: 'mask-panel', 'aria-live': 'polite' }, maskTitle, maskRule, maskTerms, maskValence);
   const extraordinary = h('p', { class: 'extraordinary', id: 'extraordinary' });
-  const stepPanel = h('section', { class: 'step-panel', 'aria-labelledby': 'step-title' },
+  const stepPanel = h('section', { class: 'step-panel', id: 'step-panel', 'aria-labelledby': 'step-title' },
     h('h2', { id: 'step-title' }, 'One step, phase by phase'), levelNote, phaseList, maskPanel, countsTable, extraordinary);
 
   // ------------------------------------------------------------ the curve beside it
@@ -203,7 +203,7 @@ export function setupPanels(ctx, view) {
   const curveCaption = h('p', { class: 'hint', id: 'curve-caption' });
   const closedBox = h('input', { type: 'checkbox', id: 'curve-closed' });
   closedBox.addEventListener('change', () => commit({ curve: { ...state().curve, closed: closedBox.checked } }));
-  const curvePanel = h('section', { class: 'curve-panel', 'aria-labelledby': 'curve-title' },
+  const curvePanel = h('section', { class: 'curve-panel', id: 'curve-panel', 'aria-labelledby': 'curve-title' },
     h('h2', { id: 'curve-title' }, 'The same rule on a curve'), labelled('Scheme', curveScheme), h('label', {}, closedBox, ' closed'));
   const curvePlot = createCurvePlot(curvePanel, ctx);
   const explorerAnchor = h('a', { href: 'curves.html', id: 'curve-explorer-link' }, 'insert a knot into this polygon\'s B-spline in the curve explorer');
@@ -235,7 +235,7 @@ export function setupPanels(ctx, view) {
     });
   };
   const tables = { vertices: wingedTable('vertices', 'sub-vertex-table'), edges: wingedTable('edges', 'sub-edge-table'), faces: wingedTable('faces', 'sub-face-table') };
-  const tablesPanel = h('section', { class: 'tables-panel', 'aria-labelledby': 'tables-title' },
+  const tablesPanel = h('section', { class: 'tables-panel', id: 'tables-panel', 'aria-labelledby': 'tables-title' },
     h('h2', { id: 'tables-title' }, 'Winged-edge tables of the mesh shown'), ...Object.values(tables).map((t) => t.root));
 
   ctx.panels.replaceChildren(stepPanel, curvePanel, tablesPanel);

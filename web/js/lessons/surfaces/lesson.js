@@ -11,6 +11,7 @@ import { math, matrix, mi, mo, el, rows4, formatNumber, inlineMath } from '../..
 import { createCamera, projectAll } from './view3d.js';
 import { drawLegend, arrowScale } from '../../ui/curve-overlays.js';
 import { defaultBezierNet, handleOf, hermiteEntryFromHandle, entryName, joinPatches, sharedEntriesOfB } from './nets.js';
+import { surfacesExercise } from './exercise.js';
 
 const GRID = 17; // samples per direction: u = i / 16
 const ISO_EVERY = 2; // an iso-curve every 2 grid steps: u, v = 0, 1/8, ..., 1
@@ -90,6 +91,7 @@ export const lesson = {
   id: 'surfaces',
   title: 'Surface patches',
   stateVersion: 1,
+  exercise: surfacesExercise,
   // The net's entries are 3D: its own inspector takes x, y and z; the shell's 2D
   // inspector would type view-plane coordinates, which are not the entry's.
   inspector: false,

@@ -1,0 +1,82 @@
+// @ts-check
+// Kind 2: predict the next edge of the counter-clockwise walk around a vertex (or along a
+// face), step after step (lecture 000's traversal). The walk is the core's
+// (mesh.traversalSteps / faceEdgeSteps); the student picks the next edge among the mesh's
+// edges, by pointer or with the arrow keys, and checks it. A right edge is added to the walk
+// (and drawn by the lesson); a wrong one is explained from the rule the walk reads.
+import { h, setChildren } from '../../app/dom.js';
+import { ExerciseError } from '../format.js';
+import { label } from './table.js';
+
+/** @param {any} parts */
+export function createWalkKind({ api, check, subject, support, ctx }) {
+  const mesh = subject().mesh;
+  if (!mesh) throw new ExerciseError('this lesson has no mesh to walk on', 'exercise.check.kind');
+  const built = api.buildMesh(mesh);
+  let steps;
+  let edgeCount;
+  try {
+    const we = built.wingedEdge();
+    const count = check.around === 'vertex' ? we.vertices.length : we.faces.length;
+    edgeCount = we.edges.length;
+    if (check.element > count) {
+      throw new ExerciseError(`its field exercise.check.element is ${check.element}, but the mesh has ${count} ${check.around === 'vertex' ? 'vertices' : 'faces'}`, 'exercise.check.element');
+    }
+    steps = check.around === 'vertex' ? built.traversalSteps(check.element - 1) : built.faceEdgeSteps(check.element - 1);
+  } finally {
+    built.dispose();
+  }
+  if (steps.length < 2) throw new ExerciseError(`the walk ${check.around === 'vertex' ? 'around' : 'along'} ${check.around === 'vertex' ? 'v' : 'F'}${check.element} has no step to predict`, 'exercise.check.element');
+  const where = check.around === 'vertex' ? `around v${check.element}` : `along F${check.element}`;
+  // The rule of a step, in the slide's words (what the core's step says it read).
+  const rule = (s) => (check.around === 'vertex'
+    ? `v${check.element} is the ${s.role === 'start' ? 'Start' : 'End'} of ${label('edge', s.edge)}, so the walk reads its ${s.role === 'start' ? 'S:L' : 'E:R'} column`
+    : `F${check.element} is the ${s.side === 'left' ? 'Left' : 'Right'} face of ${label('edge', s.edge)}, so the walk reads its ${s.side === 'left' ? 'E:L' : 'S:R'} column`);
+
+  let known = 1; // edges of the walk shown: steps[0..known-1]
+  const path = h('p', { class: 'exercise-walk-path', 'aria-live': 'polite' });
+  const prompt = h('p', { class: 'exercise-walk-prompt' });
+  const group = h('div', { class: 'exercise-choices', role: 'radiogroup', 'aria-label': 'The next edge' });
+  const radios = Array.from({ length: edgeCount }, (_, e) => {
+    const input = /** @type {HTMLInputElement} */ (h('input', { type: 'radio', name: 'exercise-next-edge', value: String(e), id: `exercise-edge-${e + 1}` }));
+    group.append(h('label', { class: 'choice', for: `exercise-edge-${e + 1}` }, input, label('edge', e)));
+    return input;
+  });
+  const root = h('div', { class: 'exercise-walk' }, path, prompt, group);
+
+  function show() {
+    const done = known >= steps.length;
+    setChildren(path, `The walk ${where}: `, steps.slice(0, known).map((s, i) => [i ? ' → ' : '', h('strong', {}, label('edge', s.edge))]), done ? ` → back to ${label('edge', steps[0].edge)}` : ' → ?');
+    prompt.textContent = done ? 'The walk is closed: every edge is found.' : `Step ${known}: the walk is at ${label('edge', steps[known - 1].edge)}. Which edge comes next?`;
+    for (const r of radios) { r.checked = false; r.disabled = done; }
+    support.showWalk?.(ctx, check.around, check.element - 1, known - 1);
+  }
+
+  return {
+    root,
+    answer: () => ({ known }),
+    restore(saved) {
+      if (saved && Number.isSafeInteger(saved.known) && saved.known >= 1 && saved.known <= steps.length) known = saved.known;
+    },
+    start: show,
+    check() {
+      if (known >= steps.length) return { correct: true, findings: [] };
+      const picked = radios.find((r) => r.checked);
+      if (!picked) return { correct: false, findings: ['Pick the next edge first (click it, or use the arrow keys in the list).'], incomplete: true };
+      const given = Number(picked.value);
+      const now = steps[known - 1];
+      const expected = known < steps.length ? steps[known].edge : steps[0].edge;
+      if (given !== expected) {
+        return { correct: false, findings: [`Not ${label('edge', given)}: ${rule(now)}, which holds ${label('edge', expected)}.`] };
+      }
+      known += 1;
+      const closed = known >= steps.length;
+      show();
+      return { correct: closed, partial: !closed, findings: [], note: `Right: ${rule(now)}, ${label('edge', expected)}.${closed ? ` Its next edge is ${label('edge', steps[0].edge)} again: the walk is closed.` : ''}` };
+    },
+    worked() {
+      return { lines: steps.map((s, i) => `${label('edge', s.edge)} → ${label('edge', steps[(i + 1) % steps.length].edge)}: ${rule(s)}.`) };
+    },
+    reset() { known = 1; show(); },
+  };
+}

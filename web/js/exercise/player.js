@@ -1,0 +1,151 @@
+// @ts-check
+// The exercise player (issue 19): in a lesson page opened with an exercise link
+// (exercise/link.js), a panel at the top of the side column holds the question, the answer
+// for its kind (kinds/), Check (or Enter in the answer), the feedback that names what is
+// wrong, the worked answer on request, and the progress kept in this browser
+// (progress.js). The lesson keeps its drawing and interaction; the panels the exercise hides
+// are hidden. Nothing of the person's own saved lesson work is read or written meanwhile.
+import { h, setChildren } from '../app/dom.js';
+import { readEnvelope } from '../app/share-link.js';
+import { KINDS, ExerciseError } from './format.js';
+import { readProgress, writeProgress, clearProgress } from './progress.js';
+import { createTableKind } from './kinds/table.js';
+import { createWalkKind } from './kinds/walk.js';
+import { createJointKind } from './kinds/joint.js';
+import { createValueKind } from './kinds/value.js';
+import { createPropertyKind } from './kinds/property.js';
+
+const CREATE = { table: createTableKind, walk: createWalkKind, joint: createJointKind, value: createValueKind, property: createPropertyKind };
+
+/**
+ * The lesson state of an exercise, read like a share link's (migrated, validated); a field
+ * the lesson refuses refuses the exercise, naming it.
+ * @param {import('../app/contract.js').Lesson} lesson
+ */
+export function readExerciseState(lesson, exercise) {
+  if (exercise.lesson !== lesson.id) throw new ExerciseError(`it is an exercise of the ${exercise.lesson} lesson, not of ${lesson.title}`, 'exercise.lesson');
+  const support = lesson.exercise;
+  if (!support || !support.kinds.includes(exercise.check.kind)) {
+    throw new ExerciseError(`${lesson.title} has no exercises of the kind "${exercise.check.kind}" (it has ${support?.kinds.join(', ') || 'none'})`, 'exercise.check.kind');
+  }
+  let read;
+  try {
+    read = readEnvelope(lesson, { format: 'wingspline', lesson: lesson.id, version: exercise.stateVersion, state: exercise.state });
+  } catch (err) {
+    throw new ExerciseError(`its state cannot be used: ${err.message}`, 'exercise.state');
+  }
+  // validatePartial's sentences start with the field's path inside the state.
+  if (read.problems.length) throw new ExerciseError(`its field exercise.state.${read.problems[0].replace(/^state\.?/, '')}`, 'exercise.state');
+  return read.state;
+}
+
+/**
+ * @param {{ ctx: any, lesson: any, view: () => any, exercise: any, key: string, panels: HTMLElement, reset: () => void, initialState: any }} parts
+ */
+export function mountExercise({ ctx, lesson, view, exercise, key, panels, reset, initialState }) {
+  const support = lesson.exercise;
+  const subject = () => support.subject(view(), ctx.model, ctx.state, ctx);
+  const { check } = exercise;
+  const loaded = readProgress(key);
+  /** @type {any} */
+  let progress = loaded.progress ?? { status: 'started', checks: 0, answer: null, state: null, solvedAt: null, title: exercise.title, lesson: exercise.lesson };
+  const feedback = h('div', { class: 'exercise-feedback', id: 'exercise-feedback', role: 'status', 'aria-live': 'polite' });
+  const worked = h('div', { class: 'exercise-worked-lines', id: 'exercise-worked', hidden: true });
+  const status = h('p', { class: 'exercise-status', id: 'exercise-status' });
+
+  const kind = CREATE[check.kind]({ api: ctx.api, check, subject, support, ctx });
+  if (loaded.progress) kind.restore(progress.answer);
+
+  const checkButton = h('button', { type: 'button', class: 'primary', id: 'exercise-check', onclick: () => runCheck() }, 'Check');
+  const workedButton = h('button', { type: 'button', id: 'exercise-show-worked', onclick: () => showWorked() }, 'Show the worked answer');
+  const againButton = h('button', { type: 'button', id: 'exercise-start-again', onclick: () => startAgain() }, 'Start again');
+  const root = h('section', { class: 'exercise-panel callout', id: 'exercise-panel', 'aria-labelledby': 'exercise-title' },
+    h('p', { class: 'exercise-kind' }, `Exercise · ${KINDS[check.kind].label}`),
+    h('h2', { id: 'exercise-title' }, exercise.title),
+    exercise.source ? h('p', { class: 'exercise-source hint lecture-note' }, exercise.source) : null,
+    h('p', { class: 'exercise-question', id: 'exercise-question' }, exercise.question),
+    kind.root,
+    h('div', { class: 'exercise-actions' }, checkButton, workedButton, againButton),
+    feedback, worked, status,
+    h('p', { class: 'exercise-leave' }, h('a', { href: `./${lesson.id}.html`, id: 'exercise-leave' }, 'Leave the exercise'), ' · ', h('a', { href: './exercises.html' }, 'All exercises')));
+  panels.prepend(root);
+  // Enter in a typed answer checks it (a radio group's Enter too).
+  kind.root.addEventListener('keydown', (event) => {
+    if (event.key === 'Enter' && !event.isComposing && event.target instanceof HTMLInputElement) {
+      event.preventDefault();
+      runCheck();
+    }
+  });
+  kind.root.addEventListener('input', () => save());
+  kind.root.addEventListener('change', () => save());
+  showStatus();
+  kind.start?.();
+  kind.stateChanged?.();
+
+  function save() {
+    progress = { ...progress, answer: kind.answer(), state: support.keepsState?.includes(check.kind) ? ctx.state : null };
+    if (!writeProgress(key, progress)) setChildren(status, 'This browser does not keep progress (its storage is full or disabled); your answer stays on this page until you leave it.');
+  }
+
+  function showStatus() {
+    const solved = progress.status === 'solved';
+    status.dataset.status = progress.status;
+    setChildren(status, solved ? '✓ Solved' : 'Not solved yet', ` · ${progress.checks} check${progress.checks === 1 ? '' : 's'} · kept in this browser`);
+  }
+
+  function runCheck() {
+    let result;
+    try {
+      result = kind.check();
+    } catch (err) {
+      setChildren(feedback, h('p', { class: 'exercise-wrong' }, `This answer could not be checked: ${err.message}`));
+      return null;
+    }
+    if (!result.incomplete) {
+      progress = { ...progress, checks: progress.checks + 1 };
+      if (result.correct && progress.status !== 'solved') progress = { ...progress, status: 'solved', solvedAt: new Date().toISOString() };
+    }
+    feedback.dataset.result = result.correct ? 'right' : result.partial ? 'partial' : 'wrong';
+    if (result.correct) {
+      setChildren(feedback, h('p', { class: 'exercise-right' }, '✓ Right.', result.note ? ` ${result.note}` : ''));
+    } else if (result.partial) {
+      setChildren(feedback, h('p', { class: 'exercise-right' }, result.note ?? 'Right so far.'));
+    } else {
+      setChildren(feedback, h('p', { class: 'exercise-wrong' }, result.findings.length === 1 ? 'Not yet:' : `Not yet: ${result.findings.length} things to look at.`),
+        h('ul', {}, result.findings.slice(0, 40).map((f) => h('li', {}, f))),
+        result.findings.length > 40 ? h('p', {}, `… and ${result.findings.length - 40} more.`) : null);
+    }
+    save();
+    showStatus();
+    return result;
+  }
+
+  function showWorked() {
+    let lines;
+    try {
+      lines = kind.worked().lines;
+    } catch (err) {
+      lines = [`The worked answer could not be made: ${err.message}`];
+    }
+    setChildren(worked, lines.length ? [h('h3', {}, 'Worked answer'), h('ol', {}, lines.map((l) => h('li', {}, l)))] : null);
+    worked.hidden = lines.length === 0;
+  }
+
+  function startAgain() {
+    clearProgress(key);
+    progress = { status: 'started', checks: 0, answer: null, state: null, solvedAt: null, title: exercise.title, lesson: exercise.lesson };
+    window.location.reload();
+  }
+
+  return {
+    root,
+    problem: loaded.problem,
+    initialState,
+    stateChanged() {
+      kind.stateChanged?.();
+      if (support.keepsState?.includes(check.kind)) save();
+    },
+    draw(painter, colors) { kind.draw?.(painter, colors); },
+    check: runCheck,
+  };
+}

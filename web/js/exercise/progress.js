@@ -1,0 +1,82 @@
+// @ts-check
+// Progress kept in this browser (issue 19): per exercise, whether it was solved, how many
+// checks it took, the answer as last typed and, for the kinds where the drawing is the answer,
+// the lesson state. Keyed by the exercise: a shipped one by its id, any other by a hash of
+// its text, so two different exercises never share an entry. An entry this page cannot read
+// is moved aside (never written over) and the exercise starts fresh.
+import { stringifyExact, sha256 } from '../app/share-link.js';
+
+const PREFIX = 'wingspline:exercise:';
+const PROGRESS_VERSION = 1;
+
+function storage() {
+  try {
+    return window.localStorage;
+  } catch {
+    return null;
+  }
+}
+
+/** The key of an exercise's progress: 'site:<id>' for a shipped one, 'x:<hash>' otherwise. */
+export async function progressKey(exercise, { shipped }) {
+  if (shipped) return `site:${exercise.id}`;
+  return `x:${(await sha256(stringifyExact(exercise))).slice(7, 7 + 24)}`;
+}
+
+/**
+ * @typedef {{ version: number, status: 'started' | 'solved', checks: number, answer: any, state: any, solvedAt: string | null, title: string, lesson: string }} Progress
+ */
+
+/** @returns {{ progress: Progress | null, problem: string | null }} */
+export function readProgress(key) {
+  const store = storage();
+  let raw = null;
+  try {
+    raw = store?.getItem(PREFIX + key) ?? null;
+  } catch {
+    raw = null;
+  }
+  if (raw === null) return { progress: null, problem: null };
+  try {
+    const p = JSON.parse(raw);
+    if (!p || typeof p !== 'object' || p.version !== PROGRESS_VERSION || !['started', 'solved'].includes(p.status) || !Number.isSafeInteger(p.checks)) throw new Error('shape');
+    return { progress: p, problem: null };
+  } catch {
+    try {
+      store?.setItem(`${PREFIX}${key}:unreadable`, raw);
+      store?.removeItem(PREFIX + key);
+    } catch {
+      // storage refuses: the entry stays as it is and is not written over below
+      return { progress: null, problem: 'Your earlier progress on this exercise could not be read; it is kept as it was, and this attempt is not saved.' };
+    }
+    return { progress: null, problem: 'Your earlier progress on this exercise could not be read; it is kept aside in this browser, and the exercise starts fresh.' };
+  }
+}
+
+/** @returns {boolean} whether it was kept */
+export function writeProgress(key, progress) {
+  try {
+    storage()?.setItem(PREFIX + key, JSON.stringify({ ...progress, version: PROGRESS_VERSION }));
+    return true;
+  } catch {
+    return false;
+  }
+}
+
+export function clearProgress(key) {
+  try {
+    storage()?.removeItem(PREFIX + key);
+  } catch {
+    // nothing to do: storage disabled
+  }
+}
+
+/** Every shipped exercise's status, for the gallery: { [id]: 'started' | 'solved' }. */
+export function siteStatuses(ids) {
+  const out = {};
+  for (const id of ids) {
+    const { progress } = readProgress(`site:${id}`);
+    if (progress) out[id] = progress.status;
+  }
+  return out;
+}

@@ -1,0 +1,84 @@
+// @ts-check
+// An exercise in a lesson page, from the link to the player (the shell calls these two):
+// openExercise reads the link, the exercise and its lesson state before the lesson starts;
+// startExercise hides the panels the exercise hides and mounts the player once the lesson's
+// panels are built. Whatever cannot be used is said in one sentence naming the field, and
+// the page carries on as a plain lesson with the person's own work (nothing is lost).
+import { lessons } from '../lessons/registry.js';
+import { readExerciseLink, loadLinkedExercise } from './link.js';
+import { progressKey, readProgress } from './progress.js';
+import { readExerciseState, mountExercise } from './player.js';
+import { readEnvelope } from '../app/share-link.js';
+
+const lessonIds = lessons.map((l) => l.id);
+
+/**
+ * @param {import('../app/contract.js').Lesson} lesson
+ * @returns {Promise<null | { ready: boolean, problem: string | null, restored?: any, exercise?: any, key?: string, initialState?: any, refuse(text: string): void }>}
+ */
+export async function openExercise(lesson) {
+  const link = readExerciseLink(window.location.hash);
+  if (!link) return null;
+  const session = {
+    ready: false,
+    problem: /** @type {string | null} */ (null),
+    refuse(text) { session.ready = false; session.problem = `This exercise could not be opened: ${text}. Showing your own work instead.`; },
+  };
+  if ('problem' in link) {
+    session.refuse(link.problem);
+    return session;
+  }
+  try {
+    const exercise = await loadLinkedExercise(link, { lessonIds });
+    const initialState = readExerciseState(lesson, exercise);
+    const key = await progressKey(exercise, { shipped: 'id' in link });
+    // The drawing as the student left it, for the kinds where the drawing is the answer.
+    let state = initialState;
+    const kept = readProgress(key).progress?.state;
+    if (kept && lesson.exercise?.keepsState?.includes(exercise.check.kind)) {
+      try {
+        const read = readEnvelope(lesson, { format: 'wingspline', lesson: lesson.id, version: lesson.stateVersion, state: kept });
+        if (!read.problems.length) state = read.state;
+      } catch {
+        // the kept drawing is not usable: the exercise's own is shown
+      }
+    }
+    Object.assign(session, { ready: true, exercise, key, initialState, restored: { state, source: 'exercise', problem: null, previous: null } });
+  } catch (err) {
+    session.refuse(err.message);
+  }
+  return session;
+}
+
+/**
+ * @param {any} session what openExercise returned
+ * @param {{ ctx: any, lesson: any, view: () => any, panels: HTMLElement, message: any, reset: () => void }} parts
+ */
+export function startExercise(session, { ctx, lesson, view, panels, message, reset }) {
+  if (!session.ready) {
+    if (session.problem) message.warn(session.problem, { code: 'exercise-refused' });
+    return null;
+  }
+  const { exercise, key, initialState } = session;
+  const missing = [];
+  for (const id of exercise.hide ?? []) {
+    const el = document.getElementById(id);
+    if (el && panels.contains(el)) el.dataset.exerciseHidden = '';
+    else missing.push(id);
+  }
+  document.documentElement.dataset.exercise = exercise.check.kind;
+  ctx.ui.exercise = exercise.check.kind;
+  let player;
+  try {
+    player = mountExercise({ ctx, lesson, view, exercise, key, panels, reset, initialState });
+  } catch (err) {
+    delete document.documentElement.dataset.exercise;
+    ctx.ui.exercise = null;
+    for (const el of panels.querySelectorAll('[data-exercise-hidden]')) delete /** @type {HTMLElement} */ (el).dataset.exerciseHidden;
+    message.warn(`This exercise could not be opened: ${err.message}.`, { code: 'exercise-refused' });
+    return null;
+  }
+  const notes = [player.problem, missing.length ? `The exercise hides ${missing.map((m) => `"${m}"`).join(', ')}, which ${missing.length === 1 ? 'is' : 'are'} not a panel of this lesson.` : null].filter(Boolean);
+  if (notes.length) message.warn(notes.join(' '), { code: 'exercise-note' });
+  return player;
+}

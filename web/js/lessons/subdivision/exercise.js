@@ -1,0 +1,20 @@
+// @ts-check
+// The subdivision lesson's exercises (issue 19): fill in a table of the mesh at the level
+// shown (kind 1), e.g. the face table after one Loop step. The numbering of vertices and
+// faces is the core's subdivision numbering, shown in the drawing; edges are numbered freely.
+import { meshSubjectOf } from '../../exercise/subjects.js';
+
+/** @type {import('../../app/contract.js').ExerciseSupport} */
+export const subdivisionExercise = {
+  kinds: ['table'],
+  subject(view, model) {
+    return { mesh: meshSubjectOf(model.mesh) };
+  },
+  suggest() {
+    return {
+      check: { kind: 'table', table: 'faces' },
+      hide: ['tables-panel'],
+      question: 'After this subdivision step, write the face table: for every face its vertices, counter-clockwise.',
+    };
+  },
+};
