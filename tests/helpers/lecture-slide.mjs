@@ -9,3 +9,31 @@ export const SLIDE_EDGE_TABLE = Object.freeze([
   'e6 v2 v5 F3 - e5 e2 e7 e7',
   'e7 v4 v5 - F3 e4 e5 e6 e6',
 ]);
+
+// The slide's VERTEX TABLE and FACE TABLE edges (lecture 000, "Winged Edge (Example)").
+export const SLIDE_VERTEX_EDGES = Object.freeze(['e1', 'e6', 'e3', 'e5', 'e6']);
+export const SLIDE_FACE_EDGES = Object.freeze(['e1', 'e3', 'e5']);
+
+// The slide's edge table as objects: { e, S, E, L, R, SL, SR, EL, ER } ('-' kept).
+export function slideRows() {
+  return SLIDE_EDGE_TABLE.map((row) => {
+    const [e, S, E, L, R, SL, SR, EL, ER] = row.split(' ');
+    return { e, S, E, L, R, SL, SR, EL, ER };
+  });
+}
+
+// The lecture's walk, read off the slide's tables by its own rule: around a vertex, "if v is
+// the Start, the next CCW edge is on the Left of e, coming out of the Start (S:L); otherwise
+// on the Right, coming out of the End (E:R)"; along a face, E:L when the face is the edge's
+// Left, S:R when it is its Right. Returns the edges until the walk is back at its first.
+export function slideWalk(around, element) {
+  const rows = Object.fromEntries(slideRows().map((r) => [r.e, r]));
+  const first = around === 'vertex' ? SLIDE_VERTEX_EDGES[Number(element.slice(1)) - 1] : SLIDE_FACE_EDGES[Number(element.slice(1)) - 1];
+  const out = [first];
+  for (let e = first; ;) {
+    const r = rows[e];
+    e = around === 'vertex' ? (r.S === element ? r.SL : r.ER) : (r.L === element ? r.EL : r.SR);
+    if (e === first) return out;
+    out.push(e);
+  }
+}

@@ -33,7 +33,9 @@ export function createWalkKind({ api, check, subject, support, ctx }) {
     ? `v${check.element} is the ${s.role === 'start' ? 'Start' : 'End'} of ${label('edge', s.edge)}, so the walk reads its ${s.role === 'start' ? 'S:L' : 'E:R'} column`
     : `F${check.element} is the ${s.side === 'left' ? 'Left' : 'Right'} face of ${label('edge', s.edge)}, so the walk reads its ${s.side === 'left' ? 'E:L' : 'S:R'} column`);
 
-  let known = 1; // edges of the walk shown: steps[0..known-1]
+  // Predictions made: the walk shows steps[0..known-1]; known = steps.length + 1 once the
+  // student has also said that the walk comes back to its first edge (the loop's "while").
+  let known = 1;
   const path = h('p', { class: 'exercise-walk-path', 'aria-live': 'polite' });
   const prompt = h('p', { class: 'exercise-walk-prompt' });
   const group = h('div', { class: 'exercise-choices', role: 'radiogroup', 'aria-label': 'The next edge' });
@@ -45,8 +47,8 @@ export function createWalkKind({ api, check, subject, support, ctx }) {
   const root = h('div', { class: 'exercise-walk' }, path, prompt, group);
 
   function show() {
-    const done = known >= steps.length;
-    setChildren(path, `The walk ${where}: `, steps.slice(0, known).map((s, i) => [i ? ' → ' : '', h('strong', {}, label('edge', s.edge))]), done ? ` → back to ${label('edge', steps[0].edge)}` : ' → ?');
+    const done = known > steps.length;
+    setChildren(path, `The walk ${where}: `, steps.slice(0, Math.min(known, steps.length)).map((s, i) => [i ? ' → ' : '', h('strong', {}, label('edge', s.edge))]), done ? ` → back to ${label('edge', steps[0].edge)}` : ' → ?');
     prompt.textContent = done ? 'The walk is closed: every edge is found.' : `Step ${known}: the walk is at ${label('edge', steps[known - 1].edge)}. Which edge comes next?`;
     for (const r of radios) { r.checked = false; r.disabled = done; }
     support.showWalk?.(ctx, check.around, check.element - 1, known - 1);
@@ -56,11 +58,11 @@ export function createWalkKind({ api, check, subject, support, ctx }) {
     root,
     answer: () => ({ known }),
     restore(saved) {
-      if (saved && Number.isSafeInteger(saved.known) && saved.known >= 1 && saved.known <= steps.length) known = saved.known;
+      if (saved && Number.isSafeInteger(saved.known) && saved.known >= 1 && saved.known <= steps.length + 1) known = saved.known;
     },
     start: show,
     check() {
-      if (known >= steps.length) return { correct: true, findings: [] };
+      if (known > steps.length) return { correct: true, findings: [] };
       const picked = radios.find((r) => r.checked);
       if (!picked) return { correct: false, findings: ['Pick the next edge first (click it, or use the arrow keys in the list).'], incomplete: true };
       const given = Number(picked.value);
@@ -70,9 +72,9 @@ export function createWalkKind({ api, check, subject, support, ctx }) {
         return { correct: false, findings: [`Not ${label('edge', given)}: ${rule(now)}, which holds ${label('edge', expected)}.`] };
       }
       known += 1;
-      const closed = known >= steps.length;
+      const closed = known > steps.length;
       show();
-      return { correct: closed, partial: !closed, findings: [], note: `Right: ${rule(now)}, ${label('edge', expected)}.${closed ? ` Its next edge is ${label('edge', steps[0].edge)} again: the walk is closed.` : ''}` };
+      return { correct: closed, partial: !closed, findings: [], note: `Right: ${rule(now)}, ${label('edge', expected)}.${closed ? ` That is ${label('edge', steps[0].edge)} again: the walk is closed.` : ''}` };
     },
     worked() {
       return { lines: steps.map((s, i) => `${label('edge', s.edge)} → ${label('edge', steps[(i + 1) % steps.length].edge)}: ${rule(s)}.`) };

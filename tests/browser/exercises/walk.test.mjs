@@ -1,0 +1,76 @@
+// Exercise kind 2 (issue 19): predicting the CCW walk, step after step, in the mesh lesson,
+// by keyboard and by pointer. The expected walks are read off lecture 000's printed tables by
+// the lecture's own rule (tests/helpers/lecture-slide.mjs), not from the app.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { slideWalk } from '../../helpers/lecture-slide.mjs';
+
+const env = useSiteAndBrowser();
+const feedback = (page) => page.locator('#exercise-feedback').innerText();
+const status = (page) => page.locator('#exercise-status').getAttribute('data-status');
+
+test('the lecture\'s walks, as the slide reads them', () => {
+  assert.deepEqual(slideWalk('vertex', 'v2'), ['e6', 'e5', 'e3', 'e2']);
+  assert.deepEqual(slideWalk('face', 'F1'), ['e1', 'e2', 'e3']);
+});
+
+test('around v2 by keyboard: a wrong edge is explained, the right ones close the walk, and the progress survives a reload', async () => {
+  const page = await env.openLesson(`${env.site.url}mesh.html#exercise=mesh-walk-around-v2`);
+  const walk = slideWalk('vertex', 'v2');
+  assert.match(await page.locator('.exercise-walk-path').innerText(), new RegExp(`${walk[0]} → \\?`));
+  // The walk's own panel and the tables, which would tell the answer, are hidden.
+  assert.equal(await page.locator('#walk-panel').isVisible(), false);
+  assert.equal(await page.locator('#tables-panel').isVisible(), false);
+  // Wrong first: e7 (the keyboard reaches it: focus the first choice, arrow keys).
+  await page.locator('#exercise-edge-1').focus();
+  for (let i = 0; i < 6; i += 1) await page.keyboard.press('ArrowRight');
+  assert.equal(await page.locator('#exercise-edge-7').isChecked(), true);
+  await page.keyboard.press('Enter');
+  const wrong = await feedback(page);
+  assert.match(wrong, /Not e7: v2 is the Start of e6, so the walk reads its S:L column, which holds e5/);
+  assert.equal(await status(page), 'started');
+  // Then every right edge in turn, typed from the keyboard: Home, arrows to it, Enter.
+  for (let k = 1; k < walk.length; k += 1) {
+    const n = Number(walk[k].slice(1));
+    await page.locator('#exercise-edge-1').focus();
+    await page.keyboard.press('ArrowLeft'); // wraps to the last
+    await page.keyboard.press('ArrowRight'); // back to e1, checked
+    for (let i = 1; i < n; i += 1) await page.keyboard.press('ArrowRight');
+    await page.keyboard.press('Enter');
+    assert.match(await feedback(page), new RegExp(`Right: .*${walk[k]}`));
+  }
+  // The walk comes back to its first edge: the last check closes it.
+  await page.locator(`#exercise-edge-${walk[0].slice(1)}`).focus();
+  await page.keyboard.press('Space');
+  await page.locator('#exercise-check').click();
+  assert.match(await feedback(page), new RegExp(`✓ Right\\. .*${walk[0]} again: the walk is closed`));
+  assert.equal(await status(page), 'solved');
+  assert.match(await page.locator('.exercise-walk-path').innerText(), new RegExp(`${walk.join(' → ')} → back to ${walk[0]}`));
+  await page.reload();
+  await page.waitForSelector('body[data-ready="true"]');
+  assert.equal(await status(page), 'solved');
+  assert.match(await page.locator('#exercise-status').innerText(), /Solved · 5 checks/);
+  assert.match(await page.locator('.exercise-walk-path').innerText(), /back to e6/);
+});
+
+test('along F1 by pointer: click the edges, then the worked answer lists the walk with its rule', async () => {
+  const page = await env.openLesson(`${env.site.url}mesh.html#exercise=mesh-walk-along-f1`);
+  const walk = slideWalk('face', 'F1');
+  await page.locator(`label[for="exercise-edge-${walk[2].slice(1)}"]`).click(); // skips a step: wrong
+  await page.locator('#exercise-check').click();
+  assert.match(await feedback(page), new RegExp(`Not ${walk[2]}: F1 is the Right face of ${walk[0]}, so the walk reads its S:R column, which holds ${walk[1]}`));
+  for (const e of [...walk.slice(1), walk[0]]) {
+    await page.locator(`label[for="exercise-edge-${e.slice(1)}"]`).click();
+    await page.locator('#exercise-check').click();
+  }
+  assert.equal(await status(page), 'solved');
+  await page.locator('#exercise-show-worked').click();
+  const lines = await page.locator('#exercise-worked li').allInnerTexts();
+  assert.deepEqual(lines.map((l) => l.split(':')[0]), walk.map((e, i) => `${e} → ${walk[(i + 1) % walk.length]}`));
+  // Start again clears the progress.
+  await page.locator('#exercise-start-again').click();
+  await page.waitForSelector('body[data-ready="true"]');
+  assert.equal(await status(page), 'started');
+  assert.match(await page.locator('.exercise-walk-path').innerText(), new RegExp(`${walk[0]} → \\?`));
+});
