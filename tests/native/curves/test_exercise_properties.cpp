@@ -103,3 +103,31 @@ TEST_CASE("passes-through: the reason names the distance, the closest u and the 
     expect_error([] { check_passes_through(line({0, 0}, {4, 0}), {2, 1, 0}, 0.1); }, "invalid-argument", "3 coordinates");
     expect_error([] { check_passes_through(line({1, 1}, {1, 1}), {2, 1}, 0.1); }, "degenerate-curve", "single point");
 }
+
+TEST_CASE("closest point: the same straight line y = 0, x in [0, 3], drawn by every polynomial family", "[exercise][property]") {
+    auto with = [](CurveKind kind, std::vector<double> points) {
+        Curve c;
+        c.kind = kind;
+        c.dim = 2;
+        c.points = std::move(points);
+        return c;
+    };
+    Curve hermite = with(CurveKind::Hermite, {0, 0, 1, 0, 2, 0, 3, 0});
+    hermite.tangents = {1, 0, 1, 0, 1, 0, 1, 0};
+    Curve bspline = with(CurveKind::BSpline, {0, 0, 1, 0, 2, 0, 3, 0});
+    bspline.knots = {0, 0, 0, 0, 1, 1, 1, 1};
+    const Curve lines[] = {with(CurveKind::Bezier, {0, 0, 1, 0, 2, 0, 3, 0}), bspline, hermite,
+                           with(CurveKind::CatmullRom, {-1, 0, 0, 0, 1, 0, 2, 0, 3, 0, 4, 0}),
+                           with(CurveKind::Interpolation, {0, 0, 1, 0, 2, 0, 3, 0})};
+    std::mt19937_64 rng(1914);
+    std::uniform_real_distribution<double> u01(0, 1);
+    for (const Curve& c : lines) {
+        for (int n = 0; n < 200; ++n) {
+            const double x = 3 * u01(rng), h = 2 * u01(rng) - 1;
+            const ClosestPoint p = closest_point(c, {x, h});
+            INFO(curve_kind_name(c.kind) << " at (" << x << ", " << h << ")");
+            REQUIRE(std::abs(p.distance - std::abs(h)) <= kDistanceRel * 3);
+            REQUIRE(std::abs(p.point[0] - x) <= 1e-6);
+        }
+    }
+}

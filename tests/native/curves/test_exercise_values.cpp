@@ -292,3 +292,66 @@ TEST_CASE("values: bad asks and answers get stable codes naming the field", "[ex
     expect_error([&] { worked_value(of_curve(curve_of(CurveKind::CatmullRom, 2, {0, 0, 1, 1, 2, 0, 3, 1})), b); }, "unsupported-curve-kind",
                  "catmull-rom");
 }
+
+TEST_CASE("blend: Hermite H0..H3 (lecture 000), Catmull-Rom 1/2 [..] and a NURBS R_i,2 against their formulas", "[exercise][value]") {
+    std::mt19937_64 rng(1907);
+    std::uniform_real_distribution<double> u01(0, 1);
+    Curve h = curve_of(CurveKind::Hermite, 2, {0, 0, 1, 0});
+    h.tangents = {1, 1, 1, -1};
+    Curve cr = curve_of(CurveKind::CatmullRom, 2, {0, 0, 1, 1, 2, 0, 3, 1});
+    for (int n = 0; n < kCases; ++n) {
+        const double u = u01(rng);
+        // Hermite items: p0, p1 (i = 0, 1), then t0, t1 (i = 2, 3).
+        const double H[4] = {2 * u * u * u - 3 * u * u + 1, -2 * u * u * u + 3 * u * u, u * u * u - 2 * u * u + u, u * u * u - u * u};
+        // Catmull-Rom (lecture 003, times 2): rows (-1 3 -3 1), (2 -5 4 -1), (-1 0 1 0), (0 2 0 0).
+        const double C[4] = {(-u * u * u + 2 * u * u - u) / 2, (3 * u * u * u - 5 * u * u + 2) / 2, (-3 * u * u * u + 4 * u * u + u) / 2,
+                             (u * u * u - u * u) / 2};
+        for (int i = 0; i < 4; ++i) {
+            ValueAsk a = ask("blend");
+            a.i = i;
+            a.u = u;
+            const WorkedValue wh = worked_value(of_curve(h), a);
+            const WorkedValue wc = worked_value(of_curve(cr), a);
+            INFO("u " << u << ", i " << i);
+            REQUIRE(close(wh.expected[0], H[i]));
+            REQUIRE(close(wc.expected[0], C[i]));
+            // The worked line (the column of the slide's matrix) ends with the same value.
+            for (const WorkedValue* w : {&wh, &wc}) {
+                const std::string& last = w->working.back();
+                REQUIRE(std::abs(std::stod(last.substr(last.rfind("= ") + 2)) - w->expected[0]) <= 1e-5);
+            }
+        }
+    }
+    // The quarter circle: weights 1, sqrt(2)/2, 1; at u = 1/2, N = (1/4, 1/2, 1/4) and
+    // R_1,2 = (sqrt(2)/2 . 1/2) / (1/4 + sqrt(2)/4 + 1/4) = sqrt(2) / (2 + sqrt(2)) (lecture 001, NURBS).
+    Curve q = curve_of(CurveKind::Nurbs, 2, {1, 0, 1, 1, 0, 1});
+    q.degree = 2;
+    q.knots = {0, 0, 0, 1, 1, 1};
+    q.weights = {1, std::sqrt(0.5), 1};
+    ValueAsk a = ask("blend");
+    a.i = 1;
+    a.u = 0.5;
+    const WorkedValue w = worked_value(of_curve(q), a);
+    CHECK(w.label == "R₁,₂(0.5)");
+    CHECK(close(w.expected[0], std::sqrt(2.0) / (2 + std::sqrt(2.0))));
+}
+
+TEST_CASE("boehm: on a NURBS the new point is the combination in homogeneous coordinates", "[exercise][value]") {
+    Curve q = curve_of(CurveKind::Nurbs, 2, {1, 0, 1, 1, 0, 1});
+    q.degree = 2;
+    q.knots = {0, 0, 0, 1, 1, 1};
+    q.weights = {1, std::sqrt(0.5), 1};
+    // u = 1/2 in the span k = 2, p = 2: Q_1 from P_0, P_1 with a_1 = 1/2, Q_2 from P_1, P_2 with a_2 = 1/2.
+    for (int index = 1; index <= 2; ++index) {
+        ValueAsk a = ask("boehm");
+        a.u = 0.5;
+        a.index = index;
+        const WorkedValue w = worked_value(of_curve(q), a);
+        const double w0 = q.weights[index - 1], w1 = q.weights[index];
+        for (int x = 0; x < 2; ++x) {
+            const double expected = (0.5 * w0 * q.points[2 * (index - 1) + x] + 0.5 * w1 * q.points[2 * index + x]) / (0.5 * w0 + 0.5 * w1);
+            CHECK(close(w.expected[x], expected));
+        }
+        CHECK(w.working.back().find(index == 1 ? "Q₁ = (0.5 · 1 · (1, 0) + 0.5 · 0.707107 · (1, 1))" : "Q₂ = (0.5 · 0.707107 · (1, 1) + 0.5 · 1 · (0, 1))") == 0);
+    }
+}
