@@ -261,7 +261,7 @@ WorkedValue patch_point(const ValueSubject& subject, const ValueAsk& ask) {
     for (auto [x, name] : {std::pair{u, "ask.u"}, std::pair{v, "ask.v"}})
         require(x >= 0 && x <= 1, "parameter-out-of-range", std::string(name) + " = " + detail::num(x) + " is outside the patch's [0, 1]");
     const std::vector<double>& P = subject.patch_points;
-    require(P.size() == 48, "invalid-argument",
+    require(P.size() == 48, "wrong-point-count",
             "subject.patch.points must hold the 4 x 4 geometry matrix of 3D vectors (48 numbers), not " + std::to_string(P.size()));
     for (std::size_t i = 0; i < P.size(); ++i)
         require(std::isfinite(P[i]), "non-finite-input", "subject.patch.points[" + std::to_string(i) + "] is not a finite number");

@@ -107,6 +107,9 @@ test('checkValueAnswer: unknown quantity, missing and bad fields, wrong sizes', 
   throwsCode(() => api.checkValueAnswer(subject, { quantity: 'point', u: 0.5 }, [1, 1], -0.1), 'invalid-argument', 'tolerance');
   throwsCode(() => api.workedValue(subject, { quantity: 'patch-point', u: 0.5, v: 0.5 }), 'invalid-argument', 'subject must be {patch');
   throwsCode(() => api.workedValue({ patch: { kind: 'nurbs', points: [] } }, { quantity: 'patch-point', u: 0, v: 0 }), 'unknown-basis');
+  throwsCode(() => api.workedValue({ patch: { kind: 'bezier', points: [0, 0, 0] } }, { quantity: 'patch-point', u: 0, v: 0 }), 'wrong-point-count', '48 numbers');
+  throwsCode(() => api.workedValue({ patch: { kind: 'bezier', points: new Array(48).fill(0) } }, { quantity: 'patch-point', u: 0, v: 1.5 }),
+    'parameter-out-of-range', 'ask.v');
   throwsCode(() => api.workedValue({ curve: { kind: 'hermite', dim: 2, points: [0, 0, 1, 0], tangents: [1, 0, 1, 0] } },
     { quantity: 'boehm', u: 0.5, index: 0 }), 'unsupported-curve-kind');
 });
