@@ -14,6 +14,10 @@ inline std::string fmt(double x) {
     return buf;
 }
 
+// A number as an operand inside a sum or difference: negative ones in parentheses, so a
+// line reads "3 · 0 + (-6) · 2", never "+ -6 · 2".
+inline std::string operand(double x) { return x < 0 ? "(" + fmt(x) + ")" : fmt(x); }
+
 inline std::string vec(const double* v, int d) {
     std::string s = "(";
     for (int k = 0; k < d; ++k) s += (k ? ", " : "") + fmt(v[k]);

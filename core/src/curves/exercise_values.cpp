@@ -15,6 +15,7 @@
 namespace wingspline::curves {
 
 using exercise_text::fmt;
+using exercise_text::operand;
 using exercise_text::sub;
 using exercise_text::sup;
 using exercise_text::vec;
@@ -112,7 +113,7 @@ void work_matrix_blend(const Curve& c, int i, double u, WorkedValue& w) {
         for (int k = 0; k < n; ++k) {
             col[k] = s.M[k * n + r];
             sum += T[k] * col[k];
-            terms += (k ? " + " : "") + fmt(T[k]) + " · " + fmt(col[k]);
+            terms += (k ? " + " : "") + operand(T[k]) + " · " + operand(col[k]);
         }
         w.working.push_back("row " + std::to_string(r) + " of G is " + item_name(c, i) + "; column " + std::to_string(r) +
                             " of M = " + vec(col.data(), n) + "; " + terms + " = " + fmt(sum));
@@ -177,7 +178,7 @@ WorkedValue point(const Curve& c, const ValueAsk& ask) {
         if (bi == 0) continue;
         const double* q = item_value(c, i);
         for (int k = 0; k < d; ++k) sum[k] += bi * q[k];
-        terms += (terms.empty() ? "" : " + ") + fmt(bi) + " · " + item_name(c, i) + vec(q, d);
+        terms += (terms.empty() ? "" : " + ") + operand(bi) + " · " + item_name(c, i) + vec(q, d);
     }
     w.working.push_back("P(" + fmt(u) + ") = " + terms + " = " + vec(sum.data(), d));
     return w;
@@ -200,7 +201,7 @@ WorkedValue matrix_entry(const Curve& c, const ValueAsk& ask) {
     for (int j = 0; j < n; ++j) {
         const double m = s.M[row * n + j], g = s.G[s.columns * j + col];
         sum += m * g;
-        terms += (j ? " + " : "") + fmt(m) + " · " + fmt(g);
+        terms += (j ? " + " : "") + operand(m) + " · " + operand(g);
         column += (j ? ", " : "") + s.labels[j];
     }
     w.working.push_back("the rows of G are " + column + "; column " + std::to_string(col) + " of G = their coordinate " +
@@ -236,7 +237,7 @@ WorkedValue boehm(const Curve& c, const ValueAsk& ask) {
     }
     const double a = (u - t[index]) / (t[index + p] - t[index]);
     w.working.push_back("a" + sub(index) + " = (u − u" + sub(index) + ") / (u" + sub(index + p) + " − u" + sub(index) + ") = (" + fmt(u) +
-                        " − " + fmt(t[index]) + ") / (" + fmt(t[index + p]) + " − " + fmt(t[index]) + ") = " + fmt(a));
+                        " − " + operand(t[index]) + ") / (" + fmt(t[index + p]) + " − " + operand(t[index]) + ") = " + fmt(a));
     const double* P0 = &before.points[(index - 1) * d];
     const double* P1 = &before.points[index * d];
     std::vector<double> q(d);

@@ -183,7 +183,7 @@ TEST_CASE("mg: entries of C = M G equal the slide's Bezier matrix times the geom
     a.col = 1;
     const WorkedValue w = worked_value(of_curve(curve_of(CurveKind::Bezier, 2, {0, 0, 1, 2, 3, 2, 4, 0})), a);
     CHECK(w.label == "(M G)₁,₁ of segment 0");
-    CHECK(w.working.back() == "(M G)₁,₁ = Σⱼ M₁,ⱼ Gⱼ,₁ = 3 · 0 + -6 · 2 + 3 · 2 + 0 · 0 = -6");
+    CHECK(w.working.back() == "(M G)₁,₁ = Σⱼ M₁,ⱼ Gⱼ,₁ = 3 · 0 + (-6) · 2 + 3 · 2 + 0 · 0 = -6");
 }
 
 TEST_CASE("boehm: inserting a knot into a uniform cubic B-spline, against exact rational arithmetic", "[exercise][value]") {
@@ -228,7 +228,7 @@ TEST_CASE("boehm: inserting a knot into a uniform cubic B-spline, against exact 
     const WorkedValue w = worked_value(of_curve(c), ak);
     CHECK(w.label == "Q₂ after inserting the knot u = 0.5");
     // a_2 = (u - u_2) / (u_5 - u_2) = (0.5 - (-1)) / (2 - (-1)) = 0.5; Q_2 = 0.5 P_1 + 0.5 P_2.
-    CHECK(w.working[1] == "a₂ = (u − u₂) / (u₅ − u₂) = (0.5 − -1) / (2 − -1) = 0.5");
+    CHECK(w.working[1] == "a₂ = (u − u₂) / (u₅ − u₂) = (0.5 − (-1)) / (2 − (-1)) = 0.5");
     CHECK(w.working[2] == "Q₂ = (1 − a₂) P₁ + a₂ P₂ = 0.5 · (1, 1) + 0.5 · (2, 4) = (1.5, 2.5)");
 }
 
