@@ -54,7 +54,9 @@ export type WingsplineErrorCode =
   | 'invalid-weight' | 'weight-ratio-out-of-range' | 'wrong-tangent-count' | 'wrong-node-count'
   | 'nodes-not-increasing' | 'nodes-too-close' | 'nodes-out-of-range' | 'vandermonde-out-of-range'
   | 'parameter-out-of-range' | 'segment-out-of-range' | 'dimension-mismatch' | 'length-overflow'
-  | 'not-converged' | 'wrong-point-count' | 'singular-matrix' | 'perspective-behind-eye';
+  | 'not-converged' | 'wrong-point-count' | 'singular-matrix' | 'perspective-behind-eye'
+  // curve exercises (kinds 3-5)
+  | 'unknown-quantity' | 'unknown-property' | 'degenerate-curve';
 
 /** Every error the API throws: a stable `code` and a message a student understands. */
 export class WingsplineError extends Error {
@@ -745,4 +747,92 @@ export interface WingsplineApi {
   };
   transformPoints(points: NumberList, dim: Dimension, matrix: NumberList): Float64Array;
   subdivideCurve(points: NumberList, dim: Dimension, options: { scheme: 'chaikin' | 'cubic-bspline'; closed?: boolean; steps?: number }): Float64Array;
+
+  // ---- curve exercises (docs/api-curves.md, "Exercises: joints, values, properties")
+  /** Kind 3: the statements about the joint a student ticks as true, in a fixed order. */
+  jointReasons(): JointReason[];
+  /** The classes a student picks from (k = -1..2; k = 2 reads "C² (or smoother)"). */
+  jointClasses(): { parametric: JointClass[]; geometric: JointClass[] };
+  /** A field left out of the answer is not checked. tolerance: relative, as jointContinuity (default 1e-9). */
+  checkJointAnswer(a: Curve, b: Curve, answer?: JointAnswer, options?: { tolerance?: number }): JointAnswerCheck;
+  /** Kind 4: the value asked, its label and the worked lines. */
+  workedValue(subject: ValueSubject, ask: ValueAsk): WorkedValue;
+  /** tolerance: absolute, in the units of the value; given: 1 number for a scalar, dim for a point. */
+  checkValueAnswer(subject: ValueSubject, ask: ValueAsk, given: NumberList | number, tolerance: number): ValueAnswerCheck;
+  /** Kind 5: does the property hold now, and what to change. */
+  checkCurveProperty(subject: { a: Curve; b: Curve }, property: JointClassProperty): JointClassPropertyCheck;
+  checkCurveProperty(subject: { curve: Curve }, property: PassesThroughProperty): PassesThroughPropertyCheck;
+}
+
+// ------------------------------------------------------------------ curve exercises (issue 19, kinds 3-5)
+
+export type JointReasonId = 'meet' | 'equal-first' | 'same-direction' | 'equal-second' | 'equal-curvature';
+export type JointClassK = -1 | 0 | 1 | 2;
+export interface JointReason {
+  id: JointReasonId;
+  /** In the lectures' notation: P is the first segment at its end, Q the second at its start. */
+  statement: string;
+}
+export interface JointClass {
+  k: JointClassK;
+  label: string;
+  /** The statements that must all hold for this class. */
+  requires: JointReasonId[];
+}
+export interface JointAnswer {
+  parametric?: number;
+  geometric?: number;
+  /** The statements ticked as true. */
+  why?: readonly string[];
+}
+export type JointAnswerFinding =
+  | { field: 'parametric' | 'geometric'; given: number; expected: number; reason: string }
+  | { field: JointReasonId; given: boolean; expected: boolean; reason: string };
+export interface JointAnswerCheck {
+  correct: boolean;
+  findings: JointAnswerFinding[];
+  worked: { parametric: JointClassK; geometric: JointClassK; why: JointReasonId[]; explanation: string[] };
+}
+export type ValueSubject = { curve: Curve } | { patch: PatchInput };
+export type ValueAsk =
+  | { quantity: 'blend'; i: number; u: number }
+  | { quantity: 'point'; u: number }
+  | { quantity: 'mg'; segment: number; row: number; col: number }
+  | { quantity: 'boehm'; u: number; index: number }
+  | { quantity: 'patch-point'; u: number; v: number };
+export interface WorkedValue {
+  expected: number[];
+  /** What is asked in the lecture's notation, e.g. "B₁,₃(0.5)". */
+  label: string;
+  working: string[];
+}
+export interface ValueAnswerCheck extends WorkedValue {
+  correct: boolean;
+  /** Euclidean distance of the answer from the expected value. */
+  distance: number;
+  /** Why the answer is wrong; '' when it is right. */
+  reason: string;
+}
+export interface JointClassProperty {
+  kind: 'joint-class';
+  parametric?: number;
+  geometric?: number;
+  /** Relative, as jointContinuity (default 1e-9). */
+  tolerance?: number;
+}
+export interface PassesThroughProperty {
+  kind: 'passes-through';
+  point: NumberList;
+  /** Relative to the control polygon's diameter (the largest distance between two control points). */
+  tolerance: number;
+}
+export interface JointClassPropertyCheck {
+  holds: boolean;
+  reason: string;
+  measured: { parametric: JointClassK; geometric: JointClassK; why: JointReasonId[] };
+}
+export interface PassesThroughPropertyCheck {
+  holds: boolean;
+  reason: string;
+  measured: { distance: number; relativeDistance: number; size: number; u: number; closest: number[] };
 }

@@ -419,9 +419,14 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
     // Equal: the difference is at most `tolerance` of the larger of the two (positions: of the
     // configuration's size), or below the rounding floor of that order.
     auto same = [&](double g, double scale, int order) { return g <= std::max(tolerance * scale, floor_k[order]); };
-    const bool c0 = same(gap0, size, 0);
-    const bool c1 = c0 && same(gap1, std::max(na1, nb1), 1);
-    const bool c2 = c1 && same(gap2, std::max(na2, nb2), 2);
+    // Each statement on its own (issue 19: a student judges them one by one), then the
+    // verdict from them: C^k needs every equality up to order k.
+    const bool eq0 = same(gap0, size, 0);
+    const bool eq1 = same(gap1, std::max(na1, nb1), 1);
+    const bool eq2 = same(gap2, std::max(na2, nb2), 2);
+    const bool c0 = eq0;
+    const bool c1 = c0 && eq1;
+    const bool c2 = c1 && eq2;
     r.parametric = c2 ? 2 : c1 ? 1 : c0 ? 0 : -1;
     e.relative_gap = c0 || size == 0 ? 0 : gap0 / size;
     e.zero_tangent_a = na1 <= floor_a[1];
@@ -434,7 +439,7 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
     auto curvature_vector = [&](const double* J, double speed, std::vector<double>& out) {
         int f = 0;
         std::frexp(speed, &f);
-        double j1[3], j2[3];
+        double j1[3] = {0, 0, 0}, j2[3] = {0, 0, 0};
         for (int k = 0; k < d; ++k) j1[k] = std::ldexp(J[d + k], -f), j2[k] = std::ldexp(J[2 * d + k], -f);
         const double v = norm(j1, d);
         double along = 0;
@@ -444,8 +449,8 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
     };
     if (!e.zero_tangent_a) e.curvature_a = curvature_vector(A, na1, ka);
     if (!e.zero_tangent_b) e.curvature_b = curvature_vector(B, nb1, kb);
-    bool g1 = false, g2 = false;
-    if (c0 && !e.zero_tangent) {
+    bool same_direction = false, equal_curvature = false;
+    if (!e.zero_tangent) {
         e.ratio = nb1 / na1;
         // The angle between the unit tangents u, v as 2 atan2(|u - v|, |u + v|) (Kahan): right
         // for every angle, where acos of u.v loses the small ones (1e-9 rad read 0).
@@ -455,19 +460,27 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
             diff[k] = u - w;
             sum[k] = u + w;
         }
-        e.tangent_angle = 2 * std::atan2(norm(diff, d), norm(sum, d));
         const double kgap = distance(ka.data(), kb.data(), d);
-        e.curvature_vector_gap = kgap;
+        if (c0) {
+            e.tangent_angle = 2 * std::atan2(norm(diff, d), norm(sum, d));
+            e.curvature_vector_gap = kgap;
+        }
         // The rounding of a curvature vector (caller's units): floor2 / |P'|^2 + 2 floor1 |P''| / |P'|^3.
         const double m1 = std::ldexp(std::min(na1, nb1), ex), m2 = std::ldexp(std::max(na2, nb2), ex);
         const double f1 = std::ldexp(floor_k[1], ex), f2 = std::ldexp(floor_k[2], ex);
         const double kappa_floor = f2 / m1 / m1 + 2 * (f1 / m1) * (m2 / m1) / m1;
-        // C^k implies G^k where the tangents are non-zero (lecture 004), so C^k counts here.
-        g1 = c1 || direction_gap(A + d, B + d, d) <= tolerance;
-        g2 = g1 && (c2 || kgap <= std::max(tolerance * std::max(e.curvature_a, e.curvature_b), kappa_floor));
-    } else if (!e.zero_tangent) {
-        e.ratio = nb1 / na1;
+        // Equal derivatives imply the same direction and curvature where the tangents are
+        // non-zero (lecture 004: C^k => G^k), so the equalities count here.
+        same_direction = eq1 || direction_gap(A + d, B + d, d) <= tolerance;
+        equal_curvature = (eq1 && eq2) || kgap <= std::max(tolerance * std::max(e.curvature_a, e.curvature_b), kappa_floor);
     }
+    e.meet = eq0;
+    e.equal_first = eq1;
+    e.equal_second = eq2;
+    e.same_direction = same_direction;
+    e.equal_curvature = equal_curvature;
+    const bool g1 = c0 && same_direction;
+    const bool g2 = g1 && equal_curvature;
     r.geometric = g2 ? 2 : g1 ? 1 : c0 ? 0 : -1;
     if (!c0)
         e.notes.push_back("C-1: the joint is discontinuous, V1(1) != V2(0) (lecture 004); the gap is " + detail::num(e.position_gap) +

@@ -33,6 +33,19 @@ export async function misuse(): Promise<void> {
   api.jointContinuity(bezier, bezier, 1e-9);
   // @ts-expect-error constraint modes are free, C0, G1, C1, C2
   api.enforceConstraint([0, 0], 2, 'bezier', 'G2');
+  // Curve exercises (kinds 3-5): the shapes the player relies on.
+  const joint = api.checkJointAnswer(bezier, bezier, { parametric: 1, why: ['meet'] });
+  const jointField: string = joint.findings.length > 0 ? joint.findings[0].field : joint.worked.why.join();
+  const value: number[] = api.checkValueAnswer({ curve: bezier }, { quantity: 'blend', i: 1, u: 0.5 }, [0.375], 0.001).expected;
+  const holds: boolean = api.checkCurveProperty({ curve: bezier }, { kind: 'passes-through', point: [2, 1], tolerance: 0.01 }).holds;
+  // @ts-expect-error a blending function needs its index i
+  api.checkValueAnswer({ curve: bezier }, { quantity: 'blend', u: 0.5 }, [0.375], 0.001);
+  // @ts-expect-error an unknown quantity
+  api.workedValue({ curve: bezier }, { quantity: 'slope', u: 0.5 });
+  // @ts-expect-error passes-through is asked of one curve, not of a joint
+  api.checkCurveProperty({ a: bezier, b: bezier }, { kind: 'passes-through', point: [2, 1], tolerance: 0.01 });
+  // @ts-expect-error the statements ticked are a list of ids
+  api.checkJointAnswer(bezier, bezier, { why: 'meet' });
 
   // @ts-expect-error buildMesh needs the faces
   api.buildMesh({ positions: [0, 0, 0] });
@@ -84,5 +97,5 @@ export async function misuse(): Promise<void> {
   api.checkWingedEdgeAnswer({ faces: slide.faces, vertexCount: 5 }, { edges: [], vertexEdges: [] });
   // @ts-expect-error findings have a row, not an edge
   void check.findings[0].edge;
-  void p; void wrong; void op; void edges; void firstField;
+  void p; void wrong; void op; void edges; void firstField; void jointField; void value; void holds;
 }

@@ -82,7 +82,8 @@ gone.dispose();
 
 // API functions that take no input at all, so no call of them can fail: they get only the
 // succeeding calls (the table test below checks they really declare no parameter).
-const NO_FAILING_INPUT = ['memoryUsage', 'liveMeshCount', 'lectureExample', 'foleyExample', 'hermiteFromConstraints', 'curveLimits'];
+const NO_FAILING_INPUT = ['memoryUsage', 'liveMeshCount', 'lectureExample', 'foleyExample', 'hermiteFromConstraints', 'curveLimits',
+  'jointReasons', 'jointClasses'];
 
 // [name, calls of each kind, succeed(), failing calls]. Each failing call is [code, fn]: fn
 // calls the function the case names with bad input and must be refused with exactly that
@@ -170,6 +171,19 @@ const cases = [
   ['arcLength', REDUCED, () => api.arcLength(nurbs), [['decreasing-knots', () => api.arcLength(decreasing)]]],
   ['arcLengthParams', REDUCED, () => api.arcLengthParams(nurbs, 10), [['decreasing-knots', () => api.arcLengthParams(decreasing, 10)]]],
   ['jointContinuity', REDUCED, () => api.jointContinuity(bezier, following, { tolerance: 1e-9 }), [['decreasing-knots', () => api.jointContinuity(bezier, decreasing)]]],
+  // Issue 19, curve exercises (kinds 3-5).
+  ['checkJointAnswer + jointReasons + jointClasses', REDUCED,
+    () => { api.jointReasons(); api.jointClasses(); api.checkJointAnswer(bezier, following, { parametric: 1, geometric: 1, why: ['meet'] }); },
+    [['invalid-argument', () => api.checkJointAnswer(bezier, following, { why: ['tangent'] })],
+      ['decreasing-knots', () => api.checkJointAnswer(bezier, decreasing, {})]]],
+  ['workedValue + checkValueAnswer', REDUCED,
+    () => { api.workedValue({ curve: bspline }, { quantity: 'boehm', u: 0.5, index: 2 }); api.checkValueAnswer({ curve: bezier }, { quantity: 'blend', i: 1, u: 0.5 }, [0.4], 0.001); },
+    [['invalid-argument', () => api.checkValueAnswer({ curve: bezier }, { quantity: 'blend', i: 9, u: 0.5 }, [0.4], 0.001)],
+      ['parameter-out-of-range', () => api.workedValue({ curve: bezier }, { quantity: 'point', u: 1.5 })]]],
+  ['checkCurveProperty', REDUCED,
+    () => { api.checkCurveProperty({ a: bezier, b: following }, { kind: 'joint-class', parametric: 1 }); api.checkCurveProperty({ curve: bezier }, { kind: 'passes-through', point: [2, 1], tolerance: 0.01 }); },
+    [['degenerate-curve', () => api.checkCurveProperty({ curve: { kind: 'bezier', dim: 2, points: [1, 1, 1, 1] } }, { kind: 'passes-through', point: [0, 0], tolerance: 0.1 })],
+      ['invalid-argument', () => api.checkCurveProperty({ a: bezier, b: following }, { kind: 'joint-class', geometric: 5 })]]],
   ['cubicDerivation', REDUCED, () => api.cubicDerivation('bspline'), [['unsupported-curve-kind', () => api.cubicDerivation('catmull-rom')]]],
   ['interpolatePolynomial', REDUCED, () => api.interpolatePolynomial(geometry, 2),
     [['nodes-not-increasing', () => api.interpolatePolynomial(geometry, 2, [0, 1, 1, 2])], ['nodes-too-close', () => api.interpolatePolynomial(geometry, 2, [0, 1e-12, 1, 2])]]],

@@ -7,6 +7,7 @@ import { unwrap, WingsplineError } from './errors.js';
 import { createMeshApi } from './mesh-api.js';
 import { createCurvesApi } from './curves-api.js';
 import { createExerciseApi } from './exercise-api.js';
+import { createExerciseCurvesApi } from './exercise-curves-api.js';
 
 export { WingsplineError } from './errors.js';
 
@@ -88,6 +89,7 @@ function createApi(raw) {
     ...createMeshApi(raw),
     ...createCurvesApi(raw),
     ...createExerciseApi(raw),
+    ...createExerciseCurvesApi(raw),
   });
 }
 
