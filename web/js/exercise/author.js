@@ -37,7 +37,7 @@ function fieldsOf(kind, subject) {
   }
   return [pick('property.kind', 'Property', subject.joints ? { 'joint-class': 'a joint of exactly this class' } : { 'passes-through': 'the curve passes through a point' }),
     ...(subject.joints ? [num('property.joint', 'Joint (1 = the first)', { min: 1, step: 1 }), num('property.parametric', 'Exactly C^k: k (-1 to 3; empty: any)', { min: -1, max: 3, step: 1 }), num('property.geometric', 'Exactly G^k: k (empty: any)', { min: -1, max: 3, step: 1 })]
-      : [num('property.x', 'Point x', { step: 'any' }), num('property.y', 'Point y', { step: 'any' }), num('property.tolerance', 'Tolerance (fraction of the control polygon\'s size)', { min: 0, step: 'any' }),
+      : [num('property.x', 'Point x', { step: 'any' }), num('property.y', 'Point y', { step: 'any' }), num('property.tolerance', 'Tolerance (fraction of the largest distance between two control points)', { min: 0, step: 'any' }),
         ...(subject.curves ? [pick('property.family', 'Family', Object.fromEntries(Object.keys(subject.curves).map((f) => [f, f])))] : [])])];
 }
 
@@ -117,7 +117,7 @@ export function openAuthorDialog({ ctx, lesson, message }) {
     });
     const read = readExercise(JSON.parse(stringifyExact(exercise)), { lessonIds });
     readExerciseState(lesson, read);
-    if (kind === 'value') ctx.api.checkValueAnswer(askOf(read.check, subject).of, askOf(read.check, subject).ask, [0], read.check.tolerance);
+    if (kind === 'value') ctx.api.workedValue(askOf(read.check, subject).of, askOf(read.check, subject).ask);
     if (kind === 'property') ctx.api.checkCurveProperty(propertySubject(read.check.property, subject), (({ joint, ...rest }) => rest)(read.check.property));
     if (kind === 'joint' && read.check.joint > (subject.joints?.length ?? 0)) throw new Error(`the curve has ${subject.joints?.length ?? 0} joints, not ${read.check.joint}`);
     return read;

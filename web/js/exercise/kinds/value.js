@@ -50,7 +50,7 @@ export function createValueKind({ api, check, subject }) {
   // Asked once now: a question the core cannot answer for this drawing is refused at once.
   try {
     const { of, ask } = target();
-    api.checkValueAnswer(of, ask, [0], check.tolerance);
+    api.workedValue(of, ask);
   } catch (err) {
     if (err instanceof ExerciseError) throw err;
     throw new ExerciseError(`its check cannot be asked of this drawing: ${err.message}`, 'exercise.check');
@@ -73,9 +73,8 @@ export function createValueKind({ api, check, subject }) {
     },
     worked() {
       const { of, ask } = target();
-      const typed = readNumbers(input.value);
-      const r = api.checkValueAnswer(of, ask, typed.value ?? new Array(1).fill(0), check.tolerance);
-      return { lines: r.working };
+      const r = api.workedValue(of, ask);
+      return { lines: [...r.working, `${r.label} = ${r.expected.map((x) => String(Number(x.toPrecision(6)))).join(', ')}`] };
     },
   };
 }

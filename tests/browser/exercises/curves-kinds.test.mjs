@@ -1,0 +1,109 @@
+// Exercise kinds 3, 4 and 5 (issue 19) in their lessons, answered right and wrong by pointer
+// and keyboard: classify a joint and say why (continuity lab), compute a value by hand
+// (curve explorer: B₁,₃(1/2) = 3·(1/2)·(1/2)² = 3/8; P(1/2) of P0..P3 = (0,0), (1,2), (3,2),
+// (4,0) is (P0 + 3P1 + 3P2 + P3)/8 = (2, 1.5)), and shape a curve until it passes through a
+// point (the inner points raised by 4/3 lift P(1/2) by 3/8·4/3·2 = 1).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { drag } from '../../helpers/pointer.mjs';
+
+const env = useSiteAndBrowser();
+const feedback = (page) => page.locator('#exercise-feedback').innerText();
+const status = (page) => page.locator('#exercise-status').getAttribute('data-status');
+
+test('a joint that is G1 but not C1 (legs 1 : 2): a wrong class is explained, the right one with its reasons is accepted', async () => {
+  const page = await env.openLesson(`${env.site.url}continuity.html#exercise=continuity-classify-g1`);
+  // The lab does not give the answer away: no verdict on the drawing, the joint panel hidden.
+  assert.equal(await page.locator('#joints-panel').isVisible(), false);
+  assert.equal(await page.evaluate(() => window.wingspline.labelRects().some((r) => /C\d|G\d/.test(r.text ?? ''))), false);
+  // Wrong, by pointer: C1 and G1.
+  await page.locator('label[for="exercise-parametric-1"]').click();
+  await page.locator('label[for="exercise-geometric-1"]').click();
+  await page.locator('#exercise-check').click();
+  assert.match(await feedback(page), /Not yet/);
+  assert.equal(await status(page), 'started');
+  // Right, by keyboard: C0 (arrow left from C1), G1 kept, the reasons ticked with Space.
+  await page.locator('#exercise-parametric-1').focus();
+  await page.keyboard.press('ArrowLeft');
+  assert.equal(await page.locator('#exercise-parametric-0').isChecked(), true);
+  const reasons = await page.evaluate(() => window.wingspline.api.jointReasons().map((r) => r.id));
+  for (const id of ['meet', 'same-direction']) {
+    assert.ok(reasons.includes(id), id);
+    await page.locator(`#exercise-why-${id}`).focus();
+    await page.keyboard.press('Space');
+  }
+  await page.locator(`#exercise-why-${reasons[0]}`).focus();
+  await page.keyboard.press('Enter');
+  assert.match(await feedback(page), /^✓ Right\./);
+  assert.equal(await status(page), 'solved');
+  await page.locator('#exercise-show-worked').click();
+  assert.ok((await page.locator('#exercise-worked li').count()) >= 1);
+});
+
+test('B₁,₃(0.5) by hand: 0.4 is refused with the exact value named; 3/8 typed as a fraction is right', async () => {
+  const page = await env.openLesson(`${env.site.url}curves.html#exercise=curves-bernstein-half`);
+  await page.locator('#exercise-value').click();
+  await page.keyboard.type('0.4');
+  await page.locator('#exercise-check').click();
+  assert.match(await feedback(page), /0\.375/);
+  assert.equal(await status(page), 'started');
+  await page.locator('#exercise-value').fill('');
+  await page.locator('#exercise-value').focus();
+  await page.keyboard.type('3/8');
+  await page.keyboard.press('Enter');
+  assert.match(await feedback(page), /^✓ Right\./);
+  await page.locator('#exercise-show-worked').click();
+  assert.ok((await page.locator('#exercise-worked li').allInnerTexts()).some((l) => /0\.375/.test(l)));
+  // Not a number: said, not counted as a check.
+  await page.locator('#exercise-value').fill('three eighths');
+  await page.locator('#exercise-check').click();
+  assert.match(await feedback(page), /"three" is not a number/);
+  assert.match(await page.locator('#exercise-status').innerText(), /2 checks/);
+});
+
+test('P(0.5) of the lecture\'s Bezier curve: a point typed as x, y', async () => {
+  const page = await env.openLesson(`${env.site.url}curves.html#exercise=curves-de-casteljau-point`);
+  await page.locator('#exercise-value').fill('(2, 1.4)');
+  await page.locator('#exercise-check').click();
+  assert.match(await feedback(page), /Not yet/);
+  await page.locator('#exercise-value').fill('2, 1.5');
+  await page.locator('#exercise-value').press('Enter');
+  assert.match(await feedback(page), /^✓ Right\./);
+});
+
+test('through a point: dragging by pointer gets close, the inspector (keyboard) makes it hold; the shaped curve survives a reload', async () => {
+  const page = await env.openLesson(`${env.site.url}curves.html#exercise=curves-through-a-point`);
+  const live = () => page.locator('.exercise-live').innerText();
+  assert.match(await live(), /^Not yet/);
+  const zoom = await page.evaluate(() => window.wingspline.state.view.zoom);
+  await drag(page, 'p1', 0, -0.5 * zoom);
+  assert.match(await live(), /^Not yet/);
+  await page.locator('#exercise-check').click();
+  assert.match(await feedback(page), /Not yet/);
+  for (const [id, steps] of [['p1', 2], ['p2', 3]]) {
+    await page.locator('#stage').focus();
+    for (let i = 0; i < steps; i += 1) await page.keyboard.press(']');
+    assert.equal(await page.evaluate(() => window.wingspline.selected), id);
+    await page.locator('#inspect-y').fill(String(2 + 4 / 3));
+    await page.locator('#inspect-y').press('Enter');
+  }
+  assert.match(await live(), /holds/);
+  await page.locator('#exercise-check').click();
+  assert.match(await feedback(page), /^✓ Right\./);
+  await page.reload();
+  await page.waitForSelector('#exercise-panel');
+  assert.ok(Math.abs((await page.evaluate(() => window.wingspline.state.points[1][1])) - (2 + 4 / 3)) < 1e-9);
+  assert.equal(await status(page), 'solved');
+});
+
+test('C¹ but not C²: dragging under the C1 constraint breaks C2 and the property holds', async () => {
+  const page = await env.openLesson(`${env.site.url}continuity.html#exercise=continuity-make-c1-not-c2`);
+  const live = () => page.locator('.exercise-live').innerText();
+  assert.match(await live(), /^Not yet/);
+  const handles = await page.evaluate(() => window.wingspline.handles().map((x) => x.id));
+  await drag(page, handles[handles.length - 2], 30, 40);
+  assert.match(await live(), /holds/);
+  await page.locator('#exercise-check').click();
+  assert.match(await feedback(page), /^✓ Right\./);
+});
