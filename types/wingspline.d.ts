@@ -45,8 +45,8 @@ export type WingsplineErrorCode =
   | 'would-pinch' | 'hole-too-small' | 'degenerate-vertex' | 'link-condition' | 'link-condition-face'
   // subdivision
   | 'unknown-scheme' | 'not-a-triangle-mesh' | 'mesh-has-gaps'
-  // checking a student's winged-edge table (exercise kind 1)
-  | 'invalid-answer' | 'invalid-faces'
+  // checking a student's tables (exercise kind 1) and walk steps (kind 2)
+  | 'invalid-answer' | 'invalid-faces' | 'invalid-step' | 'no-walk'
   // curves
   | 'unknown-curve-kind' | 'unknown-basis' | 'unknown-form' | 'unsupported-curve-kind' | 'invalid-dimension' | 'invalid-points'
   | 'non-finite-input' | 'non-finite-result' | 'too-few-points' | 'degree-out-of-range' | 'wrong-knot-count'
