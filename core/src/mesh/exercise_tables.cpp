@@ -78,16 +78,18 @@ struct SetResult {
 
 SetResult check_set_row(const SetRow& s, const std::vector<int32_t>& given, const std::vector<int32_t>& expected) {
     std::vector<char> seen(expected.size(), 0);
+    std::map<int32_t, std::size_t> slot; // item -> its place in `expected` (items are distinct)
+    for (std::size_t k = 0; k < expected.size(); ++k) slot[expected[k]] = k;
     std::vector<int32_t> bad; // positions
     std::vector<char> ok(given.size(), 0), skipped(given.size(), 0);
     for (std::size_t i = 0; i < given.size(); ++i) {
         const int32_t g = given[i];
-        const auto it = std::find(expected.begin(), expected.end(), g);
-        if (g >= 0 && g < s.range && !s.judged(g) && it == expected.end()) {
+        const auto it = slot.find(g);
+        if (g >= 0 && g < s.range && !s.judged(g) && it == slot.end()) {
             skipped[i] = 1;
             continue;
         }
-        if (it != expected.end() && !seen[it - expected.begin()]) seen[it - expected.begin()] = 1, ok[i] = 1;
+        if (it != slot.end() && !seen[it->second]) seen[it->second] = 1, ok[i] = 1;
         else bad.push_back(static_cast<int32_t>(i));
     }
     std::vector<int32_t> missing;
@@ -106,8 +108,7 @@ SetResult check_set_row(const SetRow& s, const std::vector<int32_t>& given, cons
                                            at + (g < 0 ? std::string("none is not ") + (s.table == MeshTable::Vertex ? "a vertex" : "an edge")
                                                        : s.label(g) + " does not exist") + instead + "; " + s.rule));
         else {
-            const bool twice = std::find(given.begin(), given.begin() + i, g) != given.begin() + i &&
-                               std::find(expected.begin(), expected.end(), g) != expected.end();
+            const bool twice = slot.count(g) > 0; // a right item on a wrong entry: its first copy was taken
             out.findings.push_back(finding(s.table, s.row, s.field, i, g, want, s.wrong_code,
                                            at + s.label(g) + (twice ? " is listed twice" : " " + s.wrong_words) + instead + "; " + s.rule));
         }
@@ -134,18 +135,28 @@ struct Alignment {
     int matches = -1;
 };
 
+// A face's corners are distinct, so a corner the student wrote at position i sits in place for
+// exactly one start per direction: the matches of every (direction, start) counted in one pass.
 Alignment align(const std::vector<int32_t>& given, const std::vector<int32_t>& c) {
-    Alignment best;
-    const std::size_t n = c.size();
-    for (bool cw : {false, true}) {
-        for (std::size_t rot = 0; rot < n; ++rot) {
-            std::vector<int32_t> a(n);
-            for (std::size_t i = 0; i < n; ++i) a[i] = cw ? c[(rot + n - i) % n] : c[(rot + i) % n];
-            int m = 0;
-            for (std::size_t i = 0; i < n; ++i) m += given[i] == a[i];
-            if (m > best.matches) best = {cw, a, m};
-        }
+    const int32_t n = static_cast<int32_t>(c.size());
+    std::map<int32_t, int32_t> position;
+    for (int32_t p = 0; p < n; ++p) position[c[p]] = p;
+    std::vector<int> ccw(n, 0), cw(n, 0);
+    for (int32_t i = 0; i < n; ++i) {
+        const auto it = position.find(given[i]);
+        if (it == position.end()) continue;
+        ++ccw[((it->second - i) % n + n) % n]; // a[i] = c[(rot + i) mod n]
+        ++cw[(it->second + i) % n];            // a[i] = c[(rot - i) mod n]
     }
+    Alignment best;
+    int32_t rot = 0;
+    for (bool clockwise : {false, true})
+        for (int32_t r = 0; r < n; ++r) {
+            const int m = clockwise ? cw[r] : ccw[r];
+            if (m > best.matches) best.matches = m, best.clockwise = clockwise, rot = r;
+        }
+    best.cycle.resize(n);
+    for (int32_t i = 0; i < n; ++i) best.cycle[i] = best.clockwise ? c[((rot - i) % n + n) % n] : c[(rot + i) % n];
     return best;
 }
 
