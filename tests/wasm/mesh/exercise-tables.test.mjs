@@ -85,6 +85,53 @@ test('edge-list: Foley\'s table as printed is accepted, and renumbered with rows
   assert.deepEqual(p.worked.polygons, polygons);
 });
 
+test('edge-list: 200 seeded renumberings of a grid\'s edge list accepted; a changed P cell named with the face it held', () => {
+  const rand = random(1904);
+  const grid = api.generateMesh('grid', { nx: 3, ny: 2 });
+  const m = { faces: grid.faces, vertexCount: grid.positions.length / 3 };
+  // The edges from the faces: neighbouring corners; the face running a -> b.
+  const runs = new Map();
+  const pairs = [];
+  const sides = grid.faces.map(() => []);
+  const seen = new Map();
+  grid.faces.forEach((face, f) => face.forEach((a, i) => {
+    const b = face[(i + 1) % face.length];
+    runs.set(`${a},${b}`, f);
+    const key = `${Math.min(a, b)},${Math.max(a, b)}`;
+    if (!seen.has(key)) {
+      seen.set(key, pairs.length);
+      pairs.push([a, b]);
+    }
+    sides[f].push(seen.get(key));
+  }));
+  const run = (a, b) => runs.get(`${a},${b}`) ?? -1;
+  for (let trial = 0; trial < 200; trial += 1) {
+    const to = pairs.map((_, e) => e);
+    for (let i = to.length - 1; i > 0; i -= 1) {
+      const j = Math.floor(rand() * (i + 1));
+      [to[i], to[j]] = [to[j], to[i]];
+    }
+    const edges = new Array(4 * pairs.length);
+    pairs.forEach(([a, b], e) => {
+      const [s, t] = rand() < 0.5 ? [a, b] : [b, a];
+      const p = rand() < 0.5 ? [run(s, t), run(t, s)] : [run(t, s), run(s, t)];
+      edges.splice(4 * to[e], 4, s, t, ...p);
+    });
+    const polygons = sides.map((list) => list.map((e) => to[e]));
+    const ok = api.checkMeshTableAnswer(m, 'edge-list', { edges, polygons });
+    assert.deepEqual(ok.findings, [], `trial ${trial}`);
+    const row = Math.floor(rand() * pairs.length);
+    const k = 2 + Math.floor(rand() * 2);
+    const wrong = edges.slice();
+    const old = edges[4 * row + k];
+    wrong[4 * row + k] = -2;
+    const r = api.checkMeshTableAnswer(m, 'edge-list', { edges: wrong, polygons });
+    assert.deepEqual(r.findings.map((f) => [f.table, f.row, f.field, f.given, f.expected, f.code]),
+      [['edge', row, k === 2 ? 'p1' : 'p2', -2, old, 'blank']], `trial ${trial}`);
+    assert.deepEqual(r.worked.edges, edges);
+  }
+});
+
 test('adjacency: each vertex\'s neighbours in any order; a wrong one and a missing one are named', () => {
   // From the slide's faces: v1: v2 v3; v2: v1 v3 v4 v5; v3: v1 v2 v4; v4: v2 v3 v5; v5: v2 v4.
   const right = [[1, 2], [0, 2, 3, 4], [0, 1, 3], [1, 2, 4], [1, 3]];
