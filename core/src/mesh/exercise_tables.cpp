@@ -17,9 +17,13 @@ std::vector<int32_t> row_of(const ListAnswer& a, int32_t r) {
     return {a.cells.begin() + a.offsets[r], a.cells.begin() + a.offsets[r + 1]};
 }
 
-std::string list_text(const std::vector<int32_t>& items, std::string (*label)(int32_t)) {
+// A list as a reason writes it: "v2 v4 v3"; a long one (a fan's hub) is cut after
+// kListShown items, so a reason stays a sentence however large the exercise.
+constexpr std::size_t kListShown = 12;
+std::string list_text(const std::vector<int32_t>& items, std::string (*label)(int32_t), const char* separator = " ") {
     std::string s;
-    for (int32_t x : items) s += (s.empty() ? "" : " ") + label(x);
+    for (std::size_t i = 0; i < items.size() && i < kListShown; ++i) s += (i == 0 ? "" : separator) + label(items[i]);
+    if (items.size() > kListShown) s += std::string(separator) + "... (" + std::to_string(items.size()) + " in all)";
     return s;
 }
 
@@ -412,8 +416,7 @@ void EdgeListChecker::check_polygons() {
     for (int32_t f = 0; f < mesh.face_count(); ++f) {
         std::vector<int32_t> expected;
         for (int32_t e : mesh.edges_of_face(f)) expected.push_back(worked_label[e]);
-        std::string sides_text;
-        for (int32_t x : expected) sides_text += (sides_text.empty() ? "" : ", ") + edge_label(x);
+        const std::string sides_text = list_text(expected, edge_label, ", ");
         SetRow s{MeshTable::Face, f, "edges", "polygon " + face_label(f), face_label(f) + "'s sides are " + sides_text + " (in any order)", edge_label, rows,
                  "not-on-face", "missing-edge", "is not a side of " + face_label(f), "is missing (a side of " + face_label(f) + ")"};
         s.judged = [this](int32_t g) { return row_edge[g] != kNone; };

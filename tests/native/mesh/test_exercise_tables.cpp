@@ -608,3 +608,14 @@ TEST_CASE("walk errors: no such vertex or face, a vertex with no edge", "[mesh][
     CHECK(code_of(true, 4) == "index-out-of-range");
     CHECK(code_of(true, -1) == "index-out-of-range");
 }
+
+TEST_CASE("a reason stays a sentence on a large exercise: a hub's long list is cut", "[mesh][exercise]") {
+    const Faces fan = faces_of(open_fan(40)); // vertex 0 has 41 neighbours
+    std::vector<std::vector<int32_t>> rows(fan.vertices);
+    const TableAnswerCheck c = check_adjacency_answer(fan.offsets, fan.corners, fan.vertices, list_answer(rows));
+    const AnswerFinding& hub = c.findings.front();
+    REQUIRE(hub.row == 0);
+    CHECK(hub.code == "missing-vertex");
+    CHECK(hub.reason.find("... (41 in all)") != std::string::npos);
+    CHECK(hub.reason.size() < 300);
+}
