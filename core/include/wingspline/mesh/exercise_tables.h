@@ -75,10 +75,11 @@ ListAnswer worked_faces_answer(const std::vector<int32_t>& face_offsets, const s
 TableAnswerCheck check_edge_list_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                         int32_t vertex_count, const EdgeListAnswer& answer);
 // The worked table in the student's numbering and orientation where rows match (the mesh's
-// edges no row describes take the unmatched rows' numbers, then new ones); P1, P2 kept where
-// right, else (the face on the left, the face on the right) of the row's direction with lambda
-// written second as on the slide; a polygon's list kept where right, else its sides in
-// counter-clockwise order.
+// edges no row describes take the unmatched rows' numbers, then new ones); a matched row keeps
+// its P1, P2 with a wrong one replaced by the face its finding expects, a new row gets (the face
+// on the left, the face on the right) with lambda written second as on the slide; a polygon
+// keeps its right entries in place, each wrong one replaced by the side its finding expects,
+// the sides still missing after them.
 EdgeListAnswer worked_edge_list_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                        int32_t vertex_count, const EdgeListAnswer& answer);
 
