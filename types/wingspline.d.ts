@@ -45,8 +45,8 @@ export type WingsplineErrorCode =
   | 'would-pinch' | 'hole-too-small' | 'degenerate-vertex' | 'link-condition' | 'link-condition-face'
   // subdivision
   | 'unknown-scheme' | 'not-a-triangle-mesh' | 'mesh-has-gaps'
-  // checking a student's winged-edge table (exercise kind 1)
-  | 'invalid-answer' | 'invalid-faces'
+  // checking a student's tables (exercise kind 1) and walk steps (kind 2)
+  | 'invalid-answer' | 'invalid-faces' | 'invalid-step' | 'no-walk'
   // curves
   | 'unknown-curve-kind' | 'unknown-basis' | 'unknown-form' | 'unsupported-curve-kind' | 'invalid-dimension' | 'invalid-points'
   | 'non-finite-input' | 'non-finite-result' | 'too-few-points' | 'degree-out-of-range' | 'wrong-knot-count'
@@ -619,6 +619,65 @@ export interface WorkedWingedEdgeAnswer {
   faceEdges: Int32Array;
 }
 
+/** The tables checkMeshTableAnswer checks (exercise kind 1). */
+export type MeshExerciseTable = 'winged-edge' | 'faces' | 'edge-list' | 'adjacency';
+/** Lecture 000's face table: per face (the mesh's numbering) its corners, counter-clockwise, any first. -2 = blank. */
+export interface FacesAnswer { faces: ReadonlyArray<NumberList> }
+/** Lecture 001's edge list: 4 per row (V1 V2 P1 P2; -1 = λ, -2 = blank) and per polygon the student's edge (row) numbers. */
+export interface EdgeListAnswer { edges: NumberList; polygons: ReadonlyArray<NumberList> }
+/** Lecture 000's adjacency lists, per vertex its neighbours (any order). */
+export interface AdjacencyAnswer { vertexVertices: ReadonlyArray<NumberList> }
+export interface MeshTableAnswers {
+  'winged-edge': WingedEdgeAnswer;
+  faces: FacesAnswer;
+  'edge-list': EdgeListAnswer;
+  adjacency: AdjacencyAnswer;
+}
+/** The right answer in the answer's own shape (plain arrays), in the student's numbering where rows match. */
+export interface MeshTableWorked {
+  'winged-edge': { edges: number[]; vertexEdges: number[]; faceEdges: number[] };
+  faces: { faces: number[][] };
+  'edge-list': { edges: number[]; polygons: number[][] };
+  adjacency: { vertexVertices: number[][] };
+}
+export type MeshTableFindingCode = WingedEdgeFindingCode | 'clockwise' | 'wrong-vertex' | 'wrong-order' | 'missing-vertex'
+  | 'extra-vertex' | 'not-adjacent';
+/** One thing wrong: as WingedEdgeFinding, plus index, the position in a list column (-1: a fixed column, or an item missing). */
+export interface MeshTableFinding {
+  table: ElementKind;
+  row: number;
+  /** The column as the table descriptors name it: 'vertices' (faces, adjacency), 'v1' | 'v2' | 'p1' | 'p2' | 'edges' (edge list), or a winged-edge field. */
+  field: string;
+  index: number;
+  given: number;
+  expected: number;
+  code: MeshTableFindingCode;
+  reason: string;
+}
+export interface MeshTableCheck<T extends MeshExerciseTable> {
+  correct: boolean;
+  findings: MeshTableFinding[];
+  worked: MeshTableWorked[T];
+}
+/** The mesh of a walk exercise: an ExerciseMesh, optionally with a slide's numbering (as lectureExample() returns it). */
+export type WalkExerciseMesh = ExerciseMesh & { edges?: ReadonlyArray<readonly [number, number]>; vertexEdges?: NumberList; faceEdges?: NumberList };
+/** Step k (from 1) of the CCW walk around a vertex (along a face): the student's edge for the walk's edge k. */
+export interface WalkStepQuestion {
+  around: 'vertex' | 'face';
+  element: number;
+  step: number;
+  given: number;
+}
+export interface WalkStepCheck {
+  correct: boolean;
+  /** The edge the lecture's rule reads (0-based). */
+  expected: number;
+  /** expected is the walk's first edge again: the walk is closed. */
+  done: boolean;
+  /** The rule applied to this step, e.g. "e5: v2 is the Start of e6, so the CCW walk around v2 reads its S:L column, e5". */
+  reason: string;
+}
+
 /** The object loadWingspline() resolves to. */
 export interface WingsplineApi {
   readonly version: string;
@@ -651,6 +710,10 @@ export interface WingsplineApi {
   checkWingedEdgeAnswer(mesh: ExerciseMesh, answer: WingedEdgeAnswer): WingedEdgeCheck;
   /** The right table in the student's numbering where rows match, blanks filled. */
   workedWingedEdgeAnswer(mesh: ExerciseMesh, answer: WingedEdgeAnswer): WorkedWingedEdgeAnswer;
+  /** Checks a student's table of kind 1 (any correct answer is accepted; docs/api-mesh.md). */
+  checkMeshTableAnswer<T extends MeshExerciseTable>(mesh: ExerciseMesh, table: T, answer: MeshTableAnswers[T]): MeshTableCheck<T>;
+  /** Checks one predicted step of the CCW walk (exercise kind 2). */
+  checkWalkStep(mesh: WalkExerciseMesh, question: WalkStepQuestion): WalkStepCheck;
 
   // ---- curves (docs/api-curves.md)
   /** form: 'descending' (lectures 000, 003; the default), 'ascending' (002) or 'transposed' (001). */

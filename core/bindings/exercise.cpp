@@ -5,6 +5,8 @@
 #include "boundary.h"
 
 #include "wingspline/mesh/exercise_check.h"
+#include "wingspline/mesh/exercise_tables.h"
+#include "wingspline/mesh/exercise_walk.h"
 
 namespace wingspline::bindings {
 namespace {
@@ -23,26 +25,32 @@ ExerciseInput exercise_input(const val& face_offsets, const val& face_vertices, 
     return {to_ints(face_offsets), to_ints(face_vertices), vertex_count, {to_ints(edges), to_ints(vertex_edges), to_ints(face_edges)}};
 }
 
+// Findings as plain objects {table, row, field, index, given, expected, code, reason}.
+val findings_value(const std::vector<AnswerFinding>& list) {
+    val findings = val::array();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const AnswerFinding& f = list[i];
+        val o = val::object();
+        o.set("table", std::string(table_name(f.table)));
+        o.set("row", f.row);
+        o.set("field", f.field);
+        o.set("index", f.index);
+        o.set("given", f.given);
+        o.set("expected", f.expected);
+        o.set("code", f.code);
+        o.set("reason", f.reason);
+        findings.set(i, o);
+    }
+    return findings;
+}
+
 val check_answer(const val& face_offsets, const val& face_vertices, int32_t vertex_count, const val& edges,
                  const val& vertex_edges, const val& face_edges) {
     return guarded([&] {
         const ExerciseInput in = exercise_input(face_offsets, face_vertices, vertex_count, edges, vertex_edges, face_edges);
         const AnswerCheck c = check_winged_edge_answer(in.face_offsets, in.face_vertices, in.vertex_count, in.answer);
-        val findings = val::array();
-        for (std::size_t i = 0; i < c.findings.size(); ++i) {
-            const AnswerFinding& f = c.findings[i];
-            val o = val::object();
-            o.set("table", std::string(table_name(f.table)));
-            o.set("row", f.row);
-            o.set("field", f.field);
-            o.set("given", f.given);
-            o.set("expected", f.expected);
-            o.set("code", f.code);
-            o.set("reason", f.reason);
-            findings.set(i, o);
-        }
         val r = val::object();
-        r.set("findings", findings);
+        r.set("findings", findings_value(c.findings));
         r.set("rowEdges", to_typed_array(c.row_edge));
         r.set("rowReversed", to_typed_array(c.row_reversed));
         return r;
@@ -62,10 +70,71 @@ val worked_answer(const val& face_offsets, const val& face_vertices, int32_t ver
     });
 }
 
+// The other tables (exercise_tables.h): `flat` holds the edge list's rows (4 per row), the list
+// (offsets + cells) the face table's, the polygon table's or the adjacency list's rows. Returns
+// {findings, worked: {flat, offsets, cells}} (flat empty but for the edge list).
+val check_table(const val& face_offsets, const val& face_vertices, int32_t vertex_count, const std::string& table,
+                const val& flat, const val& list_offsets, const val& list_cells) {
+    return guarded([&] {
+        const std::vector<int32_t> fo = to_ints(face_offsets), fv = to_ints(face_vertices);
+        const ListAnswer list{to_ints(list_offsets), to_ints(list_cells)};
+        std::vector<AnswerFinding> findings;
+        std::vector<int32_t> worked_flat;
+        ListAnswer worked;
+        if (table == "faces") {
+            findings = check_faces_answer(fo, fv, vertex_count, list).findings;
+            worked = worked_faces_answer(fo, fv, vertex_count, list);
+        } else if (table == "edge-list") {
+            const EdgeListAnswer answer{to_ints(flat), list};
+            findings = check_edge_list_answer(fo, fv, vertex_count, answer).findings;
+            EdgeListAnswer w = worked_edge_list_answer(fo, fv, vertex_count, answer);
+            worked_flat = std::move(w.edges);
+            worked = std::move(w.polygons);
+        } else if (table == "adjacency") {
+            findings = check_adjacency_answer(fo, fv, vertex_count, list).findings;
+            worked = worked_adjacency_answer(fo, fv, vertex_count, list);
+        } else {
+            throw Error("unknown-table", "no exercise table '" + table.substr(0, 40) + "'; use faces, edge-list or adjacency");
+        }
+        val w = val::object();
+        w.set("flat", to_typed_array(worked_flat));
+        w.set("offsets", to_typed_array(worked.offsets));
+        w.set("cells", to_typed_array(worked.cells));
+        val r = val::object();
+        r.set("findings", findings_value(findings));
+        r.set("worked", w);
+        return r;
+    });
+}
+
+// A walk step (exercise_walk.h) on the mesh built from the faces with the slide's numbering
+// when given: edges = [S, E] per edge (flat), vertexEdges, faceEdges (each may be empty).
+val check_walk(const val& face_offsets, const val& face_vertices, int32_t vertex_count, const val& edges, const val& vertex_edges,
+               const val& face_edges, bool around_face, int32_t element, int32_t step, int32_t given) {
+    return guarded([&] {
+        BuildOptions options;
+        const std::vector<int32_t> pairs = to_ints(edges);
+        require(pairs.size() % 2 == 0, "invalid-argument", "edges must hold [S, E] for each edge");
+        for (std::size_t i = 0; i + 1 < pairs.size(); i += 2) options.edges.push_back({pairs[i], pairs[i + 1]});
+        options.vertex_edges = to_ints(vertex_edges);
+        options.face_edges = to_ints(face_edges);
+        const WingedEdgeMesh mesh = exercise_mesh(to_ints(face_offsets), to_ints(face_vertices), vertex_count, options);
+        const WalkStepCheck c = check_walk_step(mesh, around_face, element, step, given);
+        val r = val::object();
+        r.set("correct", c.correct);
+        r.set("expected", c.expected);
+        r.set("done", c.done);
+        r.set("reason", c.reason);
+        return r;
+    });
+}
+
 } // namespace
 } // namespace wingspline::bindings
 
 EMSCRIPTEN_BINDINGS(wingspline_exercise) {
     emscripten::function("exerciseCheckWingedEdge", &wingspline::bindings::check_answer);
     emscripten::function("exerciseWorkedWingedEdge", &wingspline::bindings::worked_answer);
+    emscripten::function("exerciseCheckTable", &wingspline::bindings::check_table);
+    emscripten::function("exerciseCheckWalkStep", &wingspline::bindings::check_walk);
 }

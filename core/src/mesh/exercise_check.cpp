@@ -412,8 +412,8 @@ TableCheck check_face_cell(const Checker& c, int32_t f, int32_t g) {
 // quadratic repairs (a wrong row is compared with each unmatched edge) cheap.
 constexpr int32_t kExerciseMaxFaces = 10000;
 
-WingedEdgeMesh exercise_mesh(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
-                             int32_t vertex_count, const WingedEdgeAnswer& answer) {
+void require_exercise_faces(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
+                            int32_t vertex_count) {
     require(vertex_count >= 0 && vertex_count <= 4 * kExerciseMaxFaces, "invalid-faces",
             "the vertex count must be a whole number from 0 to " + std::to_string(4 * kExerciseMaxFaces) + ", not " + std::to_string(vertex_count));
     require(!face_offsets.empty() && face_offsets.front() == 0 && face_offsets.back() == static_cast<int32_t>(face_vertices.size()) &&
@@ -422,6 +422,12 @@ WingedEdgeMesh exercise_mesh(const std::vector<int32_t>& face_offsets, const std
     const int32_t F = static_cast<int32_t>(face_offsets.size()) - 1;
     require(F <= kExerciseMaxFaces, "invalid-faces",
             "an exercise's mesh has at most " + std::to_string(kExerciseMaxFaces) + " faces, not " + std::to_string(F));
+}
+
+WingedEdgeMesh winged_edge_exercise_mesh(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
+                                         int32_t vertex_count, const WingedEdgeAnswer& answer) {
+    require_exercise_faces(face_offsets, face_vertices, vertex_count);
+    const int32_t F = static_cast<int32_t>(face_offsets.size()) - 1;
     require(answer.edges.size() % kCellsPerRow == 0, "invalid-answer",
             "the edge table has " + std::to_string(answer.edges.size()) + " cells; each row holds 8 (S E L R S:L S:R E:L E:R)");
     require(answer.vertex_edges.size() == static_cast<std::size_t>(vertex_count), "invalid-answer",
@@ -439,11 +445,7 @@ WingedEdgeMesh exercise_mesh(const std::vector<int32_t>& face_offsets, const std
             require((*table)[i] >= kBlank, "invalid-answer",
                     std::string(table == &answer.vertex_edges ? "vertex " + vertex_label(static_cast<int32_t>(i)) : "face " + face_label(static_cast<int32_t>(i))) +
                         " holds " + std::to_string((*table)[i]) + "; a cell is a number from 0, -1 (none) or -2 (blank)");
-    IndexedMesh m;
-    m.positions.assign(3 * static_cast<std::size_t>(vertex_count), 0.0); // the check reads connectivity only
-    m.face_offsets = face_offsets;
-    m.face_vertices = face_vertices;
-    return WingedEdgeMesh::build(m);
+    return exercise_mesh(face_offsets, face_vertices, vertex_count);
 }
 
 Checker run_checker(const WingedEdgeMesh& mesh, const WingedEdgeAnswer& answer) {
@@ -456,9 +458,19 @@ Checker run_checker(const WingedEdgeMesh& mesh, const WingedEdgeAnswer& answer) 
 
 } // namespace
 
+WingedEdgeMesh exercise_mesh(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
+                             int32_t vertex_count, const BuildOptions& options) {
+    require_exercise_faces(face_offsets, face_vertices, vertex_count);
+    IndexedMesh m;
+    m.positions.assign(3 * static_cast<std::size_t>(vertex_count), 0.0); // the checks read connectivity only
+    m.face_offsets = face_offsets;
+    m.face_vertices = face_vertices;
+    return WingedEdgeMesh::build(m, options);
+}
+
 AnswerCheck check_winged_edge_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                      int32_t vertex_count, const WingedEdgeAnswer& answer) {
-    const WingedEdgeMesh mesh = exercise_mesh(face_offsets, face_vertices, vertex_count, answer);
+    const WingedEdgeMesh mesh = winged_edge_exercise_mesh(face_offsets, face_vertices, vertex_count, answer);
     Checker c = run_checker(mesh, answer);
     AnswerCheck out;
     std::stable_sort(c.row_findings.begin(), c.row_findings.end(),
@@ -487,7 +499,7 @@ AnswerCheck check_winged_edge_answer(const std::vector<int32_t>& face_offsets, c
 WingedEdgeAnswer worked_winged_edge_answer(const std::vector<int32_t>& face_offsets,
                                            const std::vector<int32_t>& face_vertices, int32_t vertex_count,
                                            const WingedEdgeAnswer& answer) {
-    const WingedEdgeMesh mesh = exercise_mesh(face_offsets, face_vertices, vertex_count, answer);
+    const WingedEdgeMesh mesh = winged_edge_exercise_mesh(face_offsets, face_vertices, vertex_count, answer);
     const Checker c = run_checker(mesh, answer);
     int32_t rows = c.rows;
     for (int32_t label : c.worked_label) rows = std::max(rows, label + 1);

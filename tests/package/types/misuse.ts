@@ -97,5 +97,19 @@ export async function misuse(): Promise<void> {
   api.checkWingedEdgeAnswer({ faces: slide.faces, vertexCount: 5 }, { edges: [], vertexEdges: [] });
   // @ts-expect-error findings have a row, not an edge
   void check.findings[0].edge;
+  // Issue 19: the other tables and the walk.
+  const faces = api.checkMeshTableAnswer({ faces: slide.faces, vertexCount: 5 }, 'faces', { faces: [[0, 1, 2], [1, 3, 2], [1, 4, 3]] });
+  const workedFaces: number[][] = faces.worked.faces;
+  const list = api.checkMeshTableAnswer({ faces: slide.faces, vertexCount: 5 }, 'edge-list', { edges: [0, 1, 0, -1], polygons: [[0], [], []] });
+  const firstIndex: number = list.findings[0]?.index ?? -1;
+  // @ts-expect-error an edge list's answer has polygons, not faces
+  api.checkMeshTableAnswer({ faces: slide.faces, vertexCount: 5 }, 'edge-list', { faces: [] });
+  // @ts-expect-error no such table
+  api.checkMeshTableAnswer({ faces: slide.faces, vertexCount: 5 }, 'half-edge', { faces: [] });
+  const step = api.checkWalkStep(slide, { around: 'vertex', element: 1, step: 1, given: 4 });
+  const closed: boolean = step.done;
+  // @ts-expect-error a walk goes around a vertex or a face, not an edge
+  api.checkWalkStep(slide, { around: 'edge', element: 1, step: 1, given: 4 });
+  void workedFaces; void firstIndex; void closed;
   void p; void wrong; void op; void edges; void firstField; void jointField; void value; void holds;
 }

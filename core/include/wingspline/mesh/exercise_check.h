@@ -49,6 +49,10 @@ struct AnswerFinding {
     MeshTable table = MeshTable::Edge;
     int32_t row = kNone; // the student's row (vertex/face tables: the vertex/face); kNone for missing-edge
     std::string field;
+    // In a column that holds a list (exercise_tables.h: a face's corners, a polygon's edges, a
+    // vertex's neighbours): the position in the student's list, 0-based; kNone for a cell of
+    // a fixed column and for an item missing from the list.
+    int32_t index = kNone;
     int32_t given = kNone;
     int32_t expected = kNone;
     std::string code;
@@ -71,6 +75,13 @@ struct AnswerCheck {
 // cannot hold.
 AnswerCheck check_winged_edge_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                      int32_t vertex_count, const WingedEdgeAnswer& answer);
+
+// The exercise's mesh from its faces (CSR, as above) on vertex_count vertices, built with
+// `options` (a slide's numbering; empty: the default build). Throws "invalid-faces" when the
+// arrays do not fit together or the mesh is larger than an exercise's, or the mesh's own
+// validation code. Every exercise check builds its mesh here.
+WingedEdgeMesh exercise_mesh(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
+                             int32_t vertex_count, const BuildOptions& options = {});
 
 // The worked answer, as close to the student's table as it can be: every row the check could
 // match keeps its number and orientation; the mesh's edges no row describes take the

@@ -1,0 +1,54 @@
+// Checking a predicted step of the counter-clockwise walk (exercise kind 2, issue 19): the
+// expected edge is the core's own walk's, and the reason spells out the lecture's rule for it.
+#include "wingspline/mesh/exercise_walk.h"
+
+#include "wingspline/error.h"
+
+namespace wingspline::mesh {
+
+WalkStepCheck check_walk_step(const WingedEdgeMesh& mesh, bool around_face, int32_t element, int32_t step, int32_t given) {
+    const int32_t count = around_face ? mesh.face_count() : mesh.vertex_count();
+    const std::string name = element >= 0 && element < count ? (around_face ? face_label(element) : vertex_label(element)) : "";
+    require(element >= 0 && element < count, "index-out-of-range",
+            std::string("the mesh has no ") + (around_face ? "face " : "vertex ") + std::to_string(element) + " (it has " +
+                std::to_string(count) + (around_face ? " faces)" : " vertices)"));
+    require(around_face || mesh.vertex_edge(element) != kNone, "no-walk",
+            name + " belongs to no face: it has no edge to walk around");
+    // The walk's edges, and per edge the column the rule reads there and what it says.
+    std::vector<int32_t> edges;
+    std::vector<int32_t> next;
+    std::vector<bool> first_case; // around v: v is the Start; along f: f is the Left face
+    if (around_face) {
+        for (const FaceStep& s : mesh.face_edge_steps(element)) edges.push_back(s.edge), next.push_back(s.next), first_case.push_back(s.face_is_left);
+    } else {
+        for (const TraversalStep& s : mesh.traversal_steps(element)) edges.push_back(s.edge), next.push_back(s.next), first_case.push_back(s.at_start);
+    }
+    const int32_t n = static_cast<int32_t>(edges.size());
+    require(step >= 1 && step <= n, "invalid-step",
+            "the walk " + std::string(around_face ? "along " : "around ") + name + " has " + std::to_string(n) +
+                " edges, so a step is 1 to " + std::to_string(n) + " (step " + std::to_string(n) + " closes it), not " +
+                std::to_string(step));
+    const int32_t from = edges[step - 1];
+    WalkStepCheck out;
+    out.expected = next[step - 1];
+    out.done = out.expected == edges[0];
+    out.correct = given == out.expected;
+    const bool first = first_case[step - 1];
+    std::string why;
+    if (around_face)
+        why = name + " is the " + (first ? "Left" : "Right") + " face of " + edge_label(from) + ", so the walk along " + name +
+              " reads its " + (first ? "E:L" : "S:R") + " column";
+    else
+        why = name + " is the " + (first ? "Start" : "End") + " of " + edge_label(from) + ", so the CCW walk around " + name +
+              " reads its " + (first ? "S:L" : "E:R") + " column";
+    const std::string closed = out.done ? "; that is the first edge again, so the walk is closed" : "";
+    if (out.correct) out.reason = edge_label(out.expected) + ": " + why + ", " + edge_label(out.expected) + closed;
+    else {
+        const std::string wrong = given == -2 ? std::string("no edge given") : given >= 0 && given < mesh.edge_count() ? "not " + edge_label(given)
+                                                                             : "not " + std::to_string(given) + " (the mesh has no such edge)";
+        out.reason = wrong + ": " + why + ", which is " + edge_label(out.expected) + closed;
+    }
+    return out;
+}
+
+} // namespace wingspline::mesh
