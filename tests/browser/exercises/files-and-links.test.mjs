@@ -56,7 +56,8 @@ test('an exercise made from the view round-trips through its JSON file and throu
   assert.ok(exercise.hide.includes('walk-panel'));
   assert.equal(exercise.title, 'Around v4 <b>by hand</b>');
   await page.locator('#author-copy-link').click();
-  const url = await page.evaluate(() => navigator.clipboard.readText());
+  await page.waitForSelector('#author-link:not([hidden])');
+  const url = await page.locator('#author-link').inputValue();
   assert.match(url, /mesh\.html#x=[A-Za-z0-9_-]+$/);
   await page.locator('#author-close').click();
 

@@ -28,7 +28,7 @@ test('around v2 by keyboard: a wrong edge is explained, the right ones close the
   assert.equal(await page.locator('#exercise-edge-7').isChecked(), true);
   await page.keyboard.press('Enter');
   const wrong = await feedback(page);
-  assert.match(wrong, /Not e7: v2 is the Start of e6, so the walk reads its S:L column, which holds e5/);
+  assert.match(wrong, /Not e7: v2 is the Start of e6, so the CCW walk around v2 reads its S:L column, which is e5/);
   assert.equal(await status(page), 'started');
   // Then every right edge in turn, typed from the keyboard: Home, arrows to it, Enter.
   for (let k = 1; k < walk.length; k += 1) {
@@ -44,7 +44,7 @@ test('around v2 by keyboard: a wrong edge is explained, the right ones close the
   await page.locator(`#exercise-edge-${walk[0].slice(1)}`).focus();
   await page.keyboard.press('Space');
   await page.locator('#exercise-check').click();
-  assert.match(await feedback(page), new RegExp(`✓ Right\\. .*${walk[0]} again: the walk is closed`));
+  assert.match(await feedback(page), new RegExp(`✓ Right\\. ${walk[0]}: .*the first edge again, so the walk is closed`));
   assert.equal(await status(page), 'solved');
   assert.match(await page.locator('.exercise-walk-path').innerText(), new RegExp(`${walk.join(' → ')} → back to ${walk[0]}`));
   await page.reload();
@@ -59,7 +59,7 @@ test('along F1 by pointer: click the edges, then the worked answer lists the wal
   const walk = slideWalk('face', 'F1');
   await page.locator(`label[for="exercise-edge-${walk[2].slice(1)}"]`).click(); // skips a step: wrong
   await page.locator('#exercise-check').click();
-  assert.match(await feedback(page), new RegExp(`Not ${walk[2]}: F1 is the Right face of ${walk[0]}, so the walk reads its S:R column, which holds ${walk[1]}`));
+  assert.match(await feedback(page), new RegExp(`Not ${walk[2]}: F1 is the Right face of ${walk[0]}, so the walk along F1 reads its S:R column, which is ${walk[1]}`));
   for (const e of [...walk.slice(1), walk[0]]) {
     await page.locator(`label[for="exercise-edge-${e.slice(1)}"]`).click();
     await page.locator('#exercise-check').click();

@@ -142,8 +142,9 @@ export function openAuthorDialog({ ctx, lesson, message }) {
       try { await navigator.clipboard.writeText(url); } catch { copied = false; }
       linkBox.value = url;
       linkBox.hidden = false;
-      result.textContent = copied ? 'The link is copied: it opens this exercise, with nothing else needed.' : 'Copy the link below: it opens this exercise.';
-      if (!copied) { linkBox.focus(); linkBox.select(); }
+      result.textContent = copied ? 'The link (below) is copied: it opens this exercise, with nothing else needed.' : 'Copy the link below: it opens this exercise.';
+      linkBox.focus();
+      linkBox.select();
     } else {
       window.open(url, '_blank', 'noopener');
     }

@@ -179,7 +179,7 @@ export function createTableKind({ api, check, subject }) {
       const { value, problems } = read();
       if (problems.length) {
         for (const p of problems) mark(p.x, p.text);
-        return { correct: false, findings: problems.map((p) => `${p.x.input.getAttribute('aria-label')}: ${p.text}.`) };
+        return { correct: false, incomplete: true, findings: problems.map((p) => `${p.x.input.getAttribute('aria-label')}: ${p.text}.`) };
       }
       const r = api.checkMeshTableAnswer(mesh, check.table, value);
       for (const f of r.findings) {

@@ -28,10 +28,9 @@ export function createWalkKind({ api, check, subject, support, ctx }) {
   }
   if (steps.length < 2) throw new ExerciseError(`the walk ${check.around === 'vertex' ? 'around' : 'along'} ${check.around === 'vertex' ? 'v' : 'F'}${check.element} has no step to predict`, 'exercise.check.element');
   const where = check.around === 'vertex' ? `around v${check.element}` : `along F${check.element}`;
-  // The rule of a step, in the slide's words (what the core's step says it read).
-  const rule = (s) => (check.around === 'vertex'
-    ? `v${check.element} is the ${s.role === 'start' ? 'Start' : 'End'} of ${label('edge', s.edge)}, so the walk reads its ${s.role === 'start' ? 'S:L' : 'E:R'} column`
-    : `F${check.element} is the ${s.side === 'left' ? 'Left' : 'Right'} face of ${label('edge', s.edge)}, so the walk reads its ${s.side === 'left' ? 'E:L' : 'S:R'} column`);
+  // The core checks a step and says why, from the rule the walk reads (S:L or E:R around a
+  // vertex, E:L or S:R along a face).
+  const stepCheck = (step, given) => api.checkWalkStep(mesh, { around: check.around, element: check.element - 1, step, given });
 
   // Predictions made: the walk shows steps[0..known-1]; known = steps.length + 1 once the
   // student has also said that the walk comes back to its first edge (the loop's "while").
@@ -66,18 +65,15 @@ export function createWalkKind({ api, check, subject, support, ctx }) {
       const picked = radios.find((r) => r.checked);
       if (!picked) return { correct: false, findings: ['Pick the next edge first (click it, or use the arrow keys in the list).'], incomplete: true };
       const given = Number(picked.value);
-      const now = steps[known - 1];
-      const expected = known < steps.length ? steps[known].edge : steps[0].edge;
-      if (given !== expected) {
-        return { correct: false, findings: [`Not ${label('edge', given)}: ${rule(now)}, which holds ${label('edge', expected)}.`] };
-      }
+      const r = stepCheck(known, given);
+      if (!r.correct) return { correct: false, findings: [`${r.reason[0].toUpperCase()}${r.reason.slice(1)}.`] };
       known += 1;
       const closed = known > steps.length;
       show();
-      return { correct: closed, partial: !closed, findings: [], note: `Right: ${rule(now)}, ${label('edge', expected)}.${closed ? ` That is ${label('edge', steps[0].edge)} again: the walk is closed.` : ''}` };
+      return { correct: closed, partial: !closed, findings: [], note: closed ? `${r.reason}.` : `Right: ${r.reason}.` };
     },
     worked() {
-      return { lines: steps.map((s, i) => `${label('edge', s.edge)} → ${label('edge', steps[(i + 1) % steps.length].edge)}: ${rule(s)}.`) };
+      return { lines: steps.map((s, k) => `${label('edge', s.edge)} → ${stepCheck(k + 1, k + 1 < steps.length ? steps[k + 1].edge : steps[0].edge).reason}.`) };
     },
     reset() { known = 1; show(); },
   };
