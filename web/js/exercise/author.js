@@ -36,7 +36,7 @@ function fieldsOf(kind, subject) {
       num('index', 'New control point Q_i: i (from 0)', { min: 0, step: 1 }), num('tolerance', 'Tolerance (absolute)', { min: 0, step: 'any' })];
   }
   return [pick('property.kind', 'Property', subject.joints ? { 'joint-class': 'a joint of exactly this class' } : { 'passes-through': 'the curve passes through a point' }),
-    ...(subject.joints ? [num('property.joint', 'Joint (1 = the first)', { min: 1, step: 1 }), num('property.parametric', 'Exactly C^k: k (-1 to 3; empty: any)', { min: -1, max: 3, step: 1 }), num('property.geometric', 'Exactly G^k: k (empty: any)', { min: -1, max: 3, step: 1 })]
+    ...(subject.joints ? [num('property.joint', 'Joint (1 = the first)', { min: 1, step: 1 }), num('property.parametric', 'Exactly Cᵏ: k (-1 to 3; empty: any)', { min: -1, max: 3, step: 1 }), num('property.geometric', 'Exactly Gᵏ: k (empty: any)', { min: -1, max: 3, step: 1 })]
       : [num('property.x', 'Point x', { step: 'any' }), num('property.y', 'Point y', { step: 'any' }), num('property.tolerance', 'Tolerance (fraction of the largest distance between two control points)', { min: 0, step: 'any' }),
         ...(subject.curves ? [pick('property.family', 'Family', Object.fromEntries(Object.keys(subject.curves).map((f) => [f, f])))] : [])])];
 }

@@ -46,7 +46,7 @@ export const QUANTITIES = Object.freeze({
 
 // What kind 5 can ask the student to make true by moving control points.
 export const PROPERTIES = Object.freeze({
-  'joint-class': { label: 'make a joint exactly C^k (and G^k)' },
+  'joint-class': { label: 'make a joint exactly Cᵏ (and Gᵏ)' },
   'passes-through': { label: 'make the curve pass through a point' },
 });
 
@@ -55,7 +55,7 @@ export const PROPERTIES = Object.freeze({
 export const KINDS = Object.freeze({
   table: { label: 'Fill in a table' },
   walk: { label: 'Predict the next edge of a walk' },
-  joint: { label: 'Classify a joint (C^k and G^k) and say why' },
+  joint: { label: 'Classify a joint (Cᵏ and Gᵏ) and say why' },
   value: { label: 'Compute a value by hand' },
   property: { label: 'Move control points until a property holds' },
 });

@@ -44,7 +44,7 @@ export function createJointKind({ api, check, subject }) {
     },
     check() {
       const a = answer();
-      const missing = [a.parametric === null ? 'the parametric class (C^k)' : null, a.geometric === null ? 'the geometric class (G^k)' : null].filter(Boolean);
+      const missing = [a.parametric === null ? 'the parametric class (Cᵏ)' : null, a.geometric === null ? 'the geometric class (Gᵏ)' : null].filter(Boolean);
       if (missing.length) return { correct: false, incomplete: true, findings: [`Choose ${missing.join(' and ')} first.`] };
       const { a: first, b: second } = jointOf();
       const r = api.checkJointAnswer(first, second, a);

@@ -47,7 +47,7 @@ export function createPropertyKind({ api, check, subject }) {
     },
     worked() {
       const r = measure();
-      return { lines: [r.reason, property.kind === 'joint-class' ? 'Lecture 000: a joint is C^k when the derivatives up to order k agree there; G^k when they agree after reparametrisation (same directions, lengths may differ).' : 'Move the nearest part of the curve towards the point: drag the control points that weigh most there (the blending functions at that u).'] };
+      return { lines: [r.reason, property.kind === 'joint-class' ? 'Lecture 000: a joint is Cᵏ when the derivatives up to order k agree there; Gᵏ when they agree after reparametrisation (same directions, lengths may differ).' : 'Move the nearest part of the curve towards the point: drag the control points that weigh most there (the blending functions at that u).'] };
     },
     // The target point on the drawing (world coordinates), for "passes through".
     draw(painter, colors) {

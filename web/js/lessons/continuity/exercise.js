@@ -21,7 +21,7 @@ export const continuityExercise = {
     return {
       check: { kind: 'joint', joint: 1 },
       hide: ['joints-panel', 'plots-panel'],
-      question: 'Classify the first joint: which C^k and which G^k is it? Tick the statements that say why.',
+      question: 'Classify the first joint: which Cᵏ and which Gᵏ is it? Tick the statements that say why.',
     };
   },
 };
