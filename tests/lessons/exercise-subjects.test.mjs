@@ -94,6 +94,18 @@ test('curve values: B₁,₃(1/2) = 3/8 and P(1/2) = (P0 + 3P1 + 3P2 + P3)/8 of 
   assert.equal(api.checkValueAnswer(q.of, q.ask, mid, point.exercise.check.tolerance).correct, true);
 });
 
+test('Boehm\'s rule: inserting u = 1/4 into knots (0,0,0,0,1/2,1,1,1,1) gives Q₂ = 3/4 P₁ + 1/4 P₂ (a₂ = 1/4 / (1 − 0))', () => {
+  const { exercise, subject } = opened('curves-boehm-insert');
+  assert.deepEqual(Array.from(subject.curve.knots), [0, 0, 0, 0, 0.5, 1, 1, 1, 1]);
+  const P = subject.curve.points;
+  const q2 = [0.75 * P[2] + 0.25 * P[4], 0.75 * P[3] + 0.25 * P[5]];
+  const { of, ask } = askOf(exercise.check, subject);
+  assert.equal(api.checkValueAnswer(of, ask, q2, 1e-12).correct, true);
+  // Q₂ is not P₂ nor the average of P₁ and P₂.
+  assert.equal(api.checkValueAnswer(of, ask, [P[4], P[5]], exercise.check.tolerance).correct, false);
+  assert.equal(api.checkValueAnswer(of, ask, [(P[2] + P[4]) / 2, (P[3] + P[5]) / 2], exercise.check.tolerance).correct, false);
+});
+
 test('the comparison lab\'s values: the first Bezier segment at 1/2, and M_H G of the first Hermite segment', () => {
   const bez = opened('comparison-bezier-midpoint');
   const pts = bez.subject.curves.bezier.points;
