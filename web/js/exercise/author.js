@@ -70,7 +70,7 @@ export function openAuthorDialog({ ctx, lesson, message }) {
   let inputs = new Map();
 
   function fill(kind) {
-    const suggestion = support.suggest?.(kind, ctx.state) ?? { check: { kind }, hide: [], question: '' };
+    const suggestion = support.suggest?.(kind, ctx.state, { api: ctx.api, subject }) ?? { check: { kind }, hide: [], question: '' };
     inputs = new Map();
     const check = suggestion.check;
     const valueOf = (name) => (name.startsWith('property.') ? (name === 'property.x' ? check.property?.point?.[0] : name === 'property.y' ? check.property?.point?.[1] : check.property?.[name.slice(9)]) : check[name]);

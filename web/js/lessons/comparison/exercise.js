@@ -15,7 +15,15 @@ export const comparisonExercise = {
     for (const family of FAMILY_IDS) curves[family] = familySegments(ctx.api, family, state.points, family === 'hermite' ? own : null)[0];
     return { curves };
   },
-  suggest() {
+  suggest(kind, state) {
+    if (kind === 'property') {
+      const point = state.points[1].map((x) => Math.round(x * 100) / 100);
+      return {
+        check: { kind: 'property', property: { kind: 'passes-through', family: 'bezier', point, tolerance: 0.005 } },
+        hide: ['table-panel'],
+        question: `Move the control points until the first Bezier segment passes through the target (${point.join(', ')}).`,
+      };
+    }
     return {
       check: { kind: 'value', quantity: 'point', family: 'bezier', u: 0.5, tolerance: 0.01 },
       hide: ['table-panel', 'blending-panel'],

@@ -10,12 +10,19 @@ export const continuityExercise = {
   subject(view, model) {
     return { joints: model.segments.slice(1).map((b, i) => ({ a: model.segments[i].curve, b: b.curve })) };
   },
-  suggest(kind) {
+  suggest(kind, state, { api, subject }) {
     if (kind === 'property') {
+      // One class below what the first joint is now (a C¹ joint: make it C⁰ only), or C¹
+      // for a joint that is not C¹: a change the student can make by dragging (with the
+      // "while dragging" constraint where it helps).
+      const { a, b } = subject.joints[0];
+      const now = api.checkCurveProperty({ a, b }, { kind: 'joint-class', parametric: 0 }).measured.parametric;
+      const k = now >= 1 ? now - 1 : 1;
+      const sup = ['⁰', '¹', '²'];
       return {
-        check: { kind: 'property', property: { kind: 'joint-class', joint: 1, parametric: 1 } },
+        check: { kind: 'property', property: { kind: 'joint-class', joint: 1, parametric: k } },
         hide: ['joints-panel'],
-        question: 'Move the control points until the first joint is C¹ but not C².',
+        question: `Move the control points until the first joint is C${sup[k]}${k < 2 ? ` but not C${sup[k + 1]}` : ''}.`,
       };
     }
     return {

@@ -13,10 +13,12 @@ export const curvesExercise = {
   },
   suggest(kind, state) {
     if (kind === 'property') {
+      // A point the curve does not pass through: where the second control point is now.
+      const point = state.points[Math.min(1, state.points.length - 1)].map((x) => Math.round(x * 100) / 100);
       return {
-        check: { kind: 'property', property: { kind: 'passes-through', point: [0, 0], tolerance: 0.01 } },
+        check: { kind: 'property', property: { kind: 'passes-through', point, tolerance: 0.005 } },
         hide: [],
-        question: 'Move the control points until the curve passes through the point marked "target".',
+        question: `Move the control points until the curve passes through the target (${point.join(', ')}).`,
       };
     }
     const u = Math.round(state.u * 100) / 100;

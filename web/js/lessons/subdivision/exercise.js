@@ -12,9 +12,9 @@ export const subdivisionExercise = {
   },
   suggest() {
     return {
-      check: { kind: 'table', table: 'faces' },
+      check: { kind: 'table', table: 'adjacency' },
       hide: ['tables-panel'],
-      question: 'After this subdivision step, write the face table: for every face its vertices, counter-clockwise.',
+      question: 'Write the adjacency list of every vertex of the mesh drawn: the vertices joined to it by an edge, as the drawing numbers them.',
     };
   },
 };
