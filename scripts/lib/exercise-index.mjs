@@ -21,9 +21,9 @@ export async function exerciseIndex(repoRoot) {
       throw new Error(`web/exercises/${file}: ${err.message}`);
     }
     if (exercise.id !== file.replace(/\.json$/, '')) throw new Error(`web/exercises/${file}: its id must be "${file.replace(/\.json$/, '')}" (the file's name), not "${exercise.id}"`);
-    entries.push({ id: exercise.id, title: exercise.title, lesson: exercise.lesson, kind: exercise.check.kind, source: exercise.source ?? '' });
+    entries.push({ id: exercise.id, title: exercise.title, lesson: exercise.lesson, kind: exercise.check.kind, source: exercise.source ?? '', order: exercise.order ?? 0 });
   }
-  // Course order, then the file order within a lesson.
-  entries.sort((a, b) => lessonIds.indexOf(a.lesson) - lessonIds.indexOf(b.lesson));
+  // Course order, then the exercise's `order` within its lesson (the lecture's order).
+  entries.sort((a, b) => lessonIds.indexOf(a.lesson) - lessonIds.indexOf(b.lesson) || a.order - b.order || a.id.localeCompare(b.id));
   return { format: 'wingspline-exercise-index', version: 1, exercises: entries };
 }

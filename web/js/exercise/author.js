@@ -31,9 +31,9 @@ function fieldsOf(kind, subject) {
     const quantities = Object.fromEntries(Object.entries(QUANTITIES).filter(([k]) => (k === 'patch-point' ? Boolean(subject.patch) : !subject.patch)).map(([k, v]) => [k, v.label]));
     return [pick('quantity', 'Value to compute', quantities),
       ...(subject.curves ? [pick('family', 'Family', Object.fromEntries(Object.keys(subject.curves).map((f) => [f, f])))] : []),
-      num('i', 'i (blending function B_i, from 0)', { min: 0, step: 1 }), num('u', 'u', { step: 'any' }), num('v', 'v', { step: 'any' }),
+      num('i', 'i (the blending function Bᵢ, from 0)', { min: 0, step: 1 }), num('u', 'u', { step: 'any' }), num('v', 'v', { step: 'any' }),
       num('segment', 'Segment (from 1)', { min: 1, step: 1 }), num('row', 'Row of M G (from 1)', { min: 1, step: 1 }), num('col', 'Column of M G (from 1)', { min: 1, step: 1 }),
-      num('index', 'New control point Q_i: i (from 0)', { min: 0, step: 1 }), num('tolerance', 'Tolerance (absolute)', { min: 0, step: 'any' })];
+      num('index', 'The new control point Qᵢ: i (from 0)', { min: 0, step: 1 }), num('tolerance', 'Tolerance (absolute)', { min: 0, step: 'any' })];
   }
   return [pick('property.kind', 'Property', subject.joints ? { 'joint-class': 'a joint of exactly this class' } : { 'passes-through': 'the curve passes through a point' }),
     ...(subject.joints ? [num('property.joint', 'Joint (1 = the first)', { min: 1, step: 1 }), num('property.parametric', 'Exactly Cᵏ: k (-1 to 3; empty: any)', { min: -1, max: 3, step: 1 }), num('property.geometric', 'Exactly Gᵏ: k (empty: any)', { min: -1, max: 3, step: 1 })]
@@ -81,8 +81,17 @@ export function openAuthorDialog({ ctx, lesson, message }) {
         ? h('select', { id }, Object.entries(f.options).map(([k, v]) => h('option', { value: k, selected: k === current }, v)))
         : h('input', { id, type: f.type === 'list' ? 'text' : 'number', min: f.min, max: f.max, step: f.step, value: current === undefined ? '' : Array.isArray(current) ? current.join(', ') : String(current) });
       inputs.set(f.name, /** @type {any} */ (input));
-      return h('div', {}, h('label', { class: 'field', for: id }, f.label), input);
+      return h('div', { 'data-field': f.name }, h('label', { class: 'field', for: id }, f.label), input);
     }));
+    // A value shows only the fields its quantity needs.
+    const quantity = inputs.get('quantity');
+    const showFields = () => {
+      for (const name of VALUE_FIELDS) {
+        const box = /** @type {HTMLElement | null} */ (fieldBox.querySelector(`[data-field="${name}"]`));
+        if (box) box.hidden = !QUANTITIES[quantity?.value]?.fields.includes(name);
+      }
+    };
+    if (quantity) { quantity.addEventListener('change', showFields); showFields(); }
     question.value = suggestion.question;
     for (const box of hideBoxes) box.checked = suggestion.hide.includes(box.value);
     if (!title.value) title.value = `${lesson.title}: ${KINDS[kind].label.toLowerCase()}`;

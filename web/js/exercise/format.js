@@ -139,8 +139,9 @@ const EXERCISE = object({
     return v;
   },
   hide: list(text({ maxLength: 64 }), { max: 24 }),
+  order: integer({ min: 0, max: 1e6 }),
   check: readCheck,
-}, { optional: ['id', 'source', 'hide'] });
+}, { optional: ['id', 'source', 'hide', 'order'] });
 
 function nonEmpty(v, path, maxLength) {
   const s = text({ maxLength })(v, path);
