@@ -37,3 +37,13 @@ export function slideWalk(around, element) {
     out.push(e);
   }
 }
+
+// Lecture 001, "Pointers to an Edge List" (Foley): the edge list and polygon table as printed.
+export const FOLEY_EDGE_LIST = Object.freeze([
+  ['V1', 'V2', 'P1', 'λ'],
+  ['V2', 'V3', 'P2', 'λ'],
+  ['V3', 'V4', 'P2', 'λ'],
+  ['V4', 'V2', 'P1', 'P2'],
+  ['V4', 'V1', 'P1', 'λ'],
+]);
+export const FOLEY_POLYGONS = Object.freeze([['E1', 'E4', 'E5'], ['E2', 'E3', 'E4']]);

@@ -18,7 +18,7 @@ import { lesson as continuityLesson } from '../../web/js/lessons/continuity/less
 import { lesson as comparisonLesson } from '../../web/js/lessons/comparison/lesson.js';
 import { lesson as surfacesLesson } from '../../web/js/lessons/surfaces/lesson.js';
 import { subdivisionLesson } from '../../web/js/lessons/subdivision/lesson.js';
-import { slideRows, SLIDE_VERTEX_EDGES, SLIDE_FACE_EDGES, slideWalk } from '../helpers/lecture-slide.mjs';
+import { slideRows, SLIDE_VERTEX_EDGES, SLIDE_FACE_EDGES, slideWalk, FOLEY_EDGE_LIST, FOLEY_POLYGONS } from '../helpers/lecture-slide.mjs';
 
 const api = await loadWingspline();
 const LESSONS = Object.fromEntries([meshLesson, curvesLesson, continuityLesson, comparisonLesson, surfacesLesson, subdivisionLesson].map((l) => [l.id, l]));
@@ -65,20 +65,16 @@ test('the walk exercises follow the slide\'s walks (the core numbering the edges
   }
 });
 
-test('Foley\'s two polygons: the edge list and polygon table of lecture 001 answer the edge-list exercise', () => {
+test('Foley\'s two polygons: the edge list and polygon table as lecture 001 prints them answer the edge-list exercise', () => {
   const { exercise, subject } = opened('mesh-edge-list-foley');
-  // Lecture 001: V1..V4 shared by P1 = (V1 V2 V4)?: the faces given to the core are the slide's.
-  const faces = subject.mesh.faces;
-  const edges = [];
-  const polygons = faces.map(() => []);
-  const key = (a, b) => (a < b ? `${a},${b}` : `${b},${a}`);
-  const index = new Map();
-  faces.forEach((f, p) => f.forEach((v, i) => {
-    const w = f[(i + 1) % f.length];
-    if (!index.has(key(v, w))) { index.set(key(v, w), edges.length / 4); edges.push(v, w, p, -1); } else edges[4 * index.get(key(v, w)) + 3] = p;
-    polygons[p].push(index.get(key(v, w)));
-  }));
+  // Lecture 001: P1 = (1, 2, 4), P2 = (4, 2, 3): the faces the exercise's mesh holds.
+  assert.deepEqual(subject.mesh.faces.map((f) => f.map((v) => v + 1)), [[1, 2, 4], [4, 2, 3]]);
+  const ref = (x) => (x === 'λ' ? -1 : Number(x.slice(1)) - 1);
+  const edges = FOLEY_EDGE_LIST.flatMap((row) => row.map(ref));
+  const polygons = FOLEY_POLYGONS.map((p) => p.map(ref));
   assert.deepEqual(api.checkMeshTableAnswer(subject.mesh, exercise.check.table, { edges, polygons }).findings, []);
+  polygons[1][2] = 0; // P2 = (E2, E3, E1): E1 is not a side of P2
+  assert.equal(api.checkMeshTableAnswer(subject.mesh, exercise.check.table, { edges, polygons }).findings.length, 1);
 });
 
 test('curve values: B₁,₃(1/2) = 3/8 and P(1/2) = (P0 + 3P1 + 3P2 + P3)/8 of the lecture\'s polygon', () => {
@@ -129,10 +125,11 @@ test('the surface patch: p(1/2, 1/2) by the Bernstein weights 1/8, 3/8, 3/8, 1/8
   assert.equal(api.checkValueAnswer(a.of, a.ask, expected, 1e-9).correct, true);
   const corner = opened('surfaces-bezier-corner');
   const c = askOf(corner.exercise.check, corner.subject);
-  const worked = api.workedValue(c.of, c.ask).expected;
-  // A Bezier patch interpolates its four corner entries: p(1, 0) is one of them.
-  const corners = [0, 3, 12, 15].map((k) => P.slice(3 * k, 3 * k + 3));
-  assert.ok(corners.some((q) => q.every((x, i) => Math.abs(x - worked[i]) < 1e-12)));
+  // p(u, v) = Σ B_i(u) B_j(v) P_ij with the net row-major in i (u) then j (v), as the lesson's
+  // formula panel writes it: at u = 1, v = 0 only B_3(1) B_0(0) = 1 remains, so p = P_30.
+  assert.equal(api.checkValueAnswer(c.of, c.ask, P.slice(3 * 12, 3 * 12 + 3), 1e-12).correct, true);
+  // and not the other corners (a u/v swap would give P_03).
+  for (const k of [0, 3, 15]) assert.equal(api.checkValueAnswer(c.of, c.ask, P.slice(3 * k, 3 * k + 3), 0.01).correct, false, `corner ${k}`);
 });
 
 test('the continuity exercises: the G1 preset is G1 but not C1, the corner C0; the C2 joint is not yet "C1 but not C2"', () => {

@@ -43,7 +43,7 @@ test('a check the drawing cannot answer is said in the dialog, and nothing is ex
   await page.locator('#author-kind').selectOption('joint');
   await page.locator('#author-field-joint').fill('9');
   await page.locator('#author-copy-link').click();
-  assert.match(await page.locator('.author-problem').innerText(), /Not yet an exercise: the curve has 1 joints?, not 9/);
+  assert.match(await page.locator('.author-problem').innerText(), /Not yet an exercise: its field exercise\.check\.joint is 9, but the curve has 1 joint/);
   assert.equal(await page.locator('#author-link').isVisible(), false);
   await page.locator('#author-field-joint').fill('1');
   await page.locator('#author-question').fill('');

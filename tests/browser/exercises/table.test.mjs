@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { useSiteAndBrowser } from '../../helpers/browser.mjs';
-import { slideRows, SLIDE_VERTEX_EDGES, SLIDE_FACE_EDGES } from '../../helpers/lecture-slide.mjs';
+import { slideRows, SLIDE_VERTEX_EDGES, SLIDE_FACE_EDGES, FOLEY_EDGE_LIST, FOLEY_POLYGONS } from '../../helpers/lecture-slide.mjs';
 
 const env = useSiteAndBrowser();
 const FIELDS = ['S', 'E', 'L', 'R', 'SL', 'SR', 'EL', 'ER'];
@@ -90,13 +90,65 @@ test('a cell that is not a label is said before anything is checked', async () =
   assert.match(await page.locator('#exercise-status').innerText(), /0 checks/);
 });
 
-test('the edge list of two polygons (lecture 001) in the student\'s numbering: right and wrong', async () => {
+test('the edge list of two polygons as lecture 001 prints it, renumbered E5..E1: right; a wrong polygon and a wrong side are marked', async () => {
   const page = await env.openLesson(`${env.site.url}mesh.html#exercise=mesh-edge-list-foley`);
-  const worked = async () => {
-    await page.locator('#exercise-show-worked').click();
-    return page.locator('.exercise-worked table').first().locator('tbody tr').count();
+  // The student numbers the edges backwards: their E1 is the lecture's E5, and so on.
+  const order = [4, 3, 2, 1, 0];
+  const rename = (e) => `E${order.indexOf(Number(e.slice(1)) - 1) + 1}`;
+  const rows = order.map((i) => FOLEY_EDGE_LIST[i]);
+  const polygons = FOLEY_POLYGONS.map((p) => p.map(rename).join(' '));
+  const type = async (cells) => {
+    await page.locator('.exercise-grid input.cell').first().focus();
+    for (const value of cells) {
+      await page.keyboard.press('Control+a');
+      await page.keyboard.type(value);
+      await page.keyboard.press('Tab');
+    }
   };
-  assert.equal(await worked(), await page.locator('.exercise-grid').first().locator('tbody tr').count());
+  await type([...rows.flat(), ...polygons]);
+  await page.locator('#exercise-check').click();
+  assert.match(await page.locator('#exercise-feedback').innerText(), /^✓ Right\./);
+  // P2 lists the lecture's E1 (here E5) instead of E4 (here E2); E1's polygon is P2, not P1.
+  await page.locator('.exercise-grid input[aria-label="P2 edges"]').fill(FOLEY_POLYGONS[1].map((e) => (e === 'E4' ? 'E1' : e)).map(rename).join(' '));
+  await page.locator('.exercise-grid input[aria-label="E1 P₁"]').fill('P2');
   await page.locator('#exercise-check').click();
   assert.match(await page.locator('#exercise-feedback').innerText(), /Not yet/);
+  assert.equal(await page.locator('.exercise-grid input[aria-label="P2 edges"]').getAttribute('aria-invalid'), 'true');
+  assert.equal(await page.locator('.exercise-grid input[aria-label="E1 P₁"]').getAttribute('aria-invalid'), 'true');
+});
+
+test('an all-blank table is not counted as a check', async () => {
+  const page = await env.openLesson(`${env.site.url}mesh.html#exercise=mesh-edge-list-foley`);
+  await page.locator('#exercise-check').click();
+  assert.match(await page.locator('#exercise-feedback').innerText(), /every cell is blank/);
+  assert.match(await page.locator('#exercise-status').innerText(), /0 checks/);
+});
+
+test('adjacency lists after one Catmull-Clark step (subdivision lesson): a neighbour missing is named, then right', async () => {
+  const page = await env.openLesson(`${env.site.url}subdivision.html#exercise=subdivision-catmull-clark-triangles`);
+  assert.equal(await page.locator('.exercise-grid input.cell').count(), 11);
+  // The neighbours a student reads off the drawing: the sides of the quads (the drawing's
+  // labels are the core's numbering; the test reads the quads through the exercise's subject).
+  const next = await page.evaluate(() => {
+    const { faceOffsets, faceVertices } = window.wingspline.hooks.exercise.subject(window.wingspline.view, window.wingspline.model, window.wingspline.state, window.wingspline.ctx).mesh;
+    const out = Array.from({ length: 11 }, () => new Set());
+    for (let f = 0; f + 1 < faceOffsets.length; f += 1) {
+      const q = Array.from(faceVertices.slice(faceOffsets[f], faceOffsets[f + 1]));
+      q.forEach((v, i) => { const w = q[(i + 1) % q.length]; out[v].add(w); out[w].add(v); });
+    }
+    return out.map((s) => [...s].map((v) => `v${v + 1}`));
+  });
+  const cells = next.map((list) => list.join(', '));
+  cells[0] = next[0].slice(1).join(', ');
+  await page.locator('.exercise-grid input.cell').first().focus();
+  for (const value of cells) {
+    await page.keyboard.type(value);
+    await page.keyboard.press('Tab');
+  }
+  await page.locator('#exercise-check').click();
+  assert.match(await page.locator('#exercise-feedback').innerText(), new RegExp(`v1.*${next[0][0]}`));
+  assert.equal(await page.locator('.exercise-grid input[aria-label="v1 vertices"]').getAttribute('aria-invalid'), 'true');
+  await page.locator('.exercise-grid input[aria-label="v1 vertices"]').fill(next[0].join(' '));
+  await page.locator('.exercise-grid input[aria-label="v1 vertices"]').press('Enter');
+  assert.match(await page.locator('#exercise-feedback').innerText(), /^✓ Right\./);
 });

@@ -215,6 +215,13 @@ export function createPersister(lesson, { delayMs = 200, contents = null, notify
       pending = state;
       if (!timer) timer = setTimeout(flush, delayMs);
     },
+    // Keeps from now on (a page that opened as an exercise and shows the person's own work
+    // after all: app/shell.js).
+    resume() {
+      if (keep) return;
+      keep = true;
+      window.addEventListener('pagehide', keepPending);
+    },
     async flushNow() {
       if (timer) {
         clearTimeout(timer);

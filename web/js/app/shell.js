@@ -37,6 +37,7 @@ import { createInspector } from './inspector.js';
 import { createImportExport } from './import-export.js';
 import { createToolbar, createEmbedToolbar } from './toolbar.js';
 import { openExercise, startExercise } from '../exercise/session.js';
+import { readExerciseLink } from '../exercise/link.js';
 import { openAuthorDialog } from '../exercise/author.js';
 
 /**
@@ -215,7 +216,7 @@ export async function runLesson(lesson) {
       needsPanelUpdate = false;
       lesson.update?.(view, model, state, ctx);
       watchScrollRegions(els.panels?.parentElement ?? document);
-      const text = lesson.describe?.(view, model, state);
+      const text = player?.description ?? lesson.describe?.(view, model, state);
       if (text && els.description && els.description.textContent !== text) els.description.textContent = text;
       toolbar.update();
     }
@@ -398,14 +399,14 @@ export async function runLesson(lesson) {
       following = null;
     }
   }
-  // (An embed shows the link it was given; its address is the host page's business.)
-  if (exercise?.ready) {
-    // Another link in the address bar of an exercise: opened afresh (the exercise's progress
-    // is kept; the lesson's own saved work was never touched).
-    window.addEventListener('hashchange', () => window.location.reload());
-  } else if (!embed) {
-    window.addEventListener('hashchange', followAddress);
-    window.addEventListener('popstate', followAddress);
+  // (An embed shows the link it was given; its address is the host page's business.) An
+  // exercise's page, and any page given an exercise link, opens afresh: the exercise's
+  // progress is kept, and the lesson's own saved work is read as the page starts.
+  function listenToAddress(exerciseShown) {
+    if (embed) return;
+    const follow = () => (exerciseShown || readExerciseLink(window.location.hash) ? window.location.reload() : followAddress());
+    window.addEventListener('hashchange', follow);
+    window.addEventListener('popstate', follow);
   }
 
   // ---------------------------------------------------------------- start
@@ -416,9 +417,13 @@ export async function runLesson(lesson) {
     // A restored state the current core refuses: the work a link replaced if there is one,
     // else the default, and the saved code is kept aside, not written over.
     const fallback = restored.previous ?? lesson.defaultState();
-    if (exercise?.ready) exercise.refuse(`its drawing cannot be shown (${errorText(startProblem)})`);
-    message.warn(`The ${restored.source === 'link' ? 'link' : restored.source === 'exercise' ? 'exercise' : 'saved state'} could not be shown (${errorText(startProblem)}); showing ${restored.previous ? 'your previous work' : 'the starting point'}.`);
-    if (!restored.previous && restored.source === 'storage') persister.keepSavedAside();
+    if (exercise?.ready) {
+      // (the person's own work comes back below, as for any exercise that cannot be shown)
+      exercise.refuse(`its drawing cannot be shown (${errorText(startProblem)})`);
+    } else {
+      message.warn(`The ${restored.source === 'link' ? 'link' : 'saved state'} could not be shown (${errorText(startProblem)}); showing ${restored.previous ? 'your previous work' : 'the starting point'}.`);
+      if (!restored.previous && restored.source === 'storage') persister.keepSavedAside();
+    }
     recompute(fallback);
     store.set(fallback, { history: false, reason: 'view' });
     restored.previous = null;
@@ -440,12 +445,30 @@ export async function runLesson(lesson) {
   }
   if (exercise) {
     player = startExercise(exercise, { ctx, lesson, view: () => view, panels: els.panels, message, reset });
+    // An exercise that cannot be played after all (its check does not fit its drawing, the
+    // core refused its drawing): the person's own work is shown, and kept again from now on.
+    if (!player && exercise.shownOnStart) await returnToOwnWork();
   }
+  listenToAddress(Boolean(player));
   refresh();
   renderNow();
   prepared = store.state;
   // The URL and storage hold what is shown (a damaged link is replaced by what survived).
   persister.save(store.state);
+
+  async function returnToOwnWork() {
+    const own = await restoreState(lesson, { contents });
+    persister.resume();
+    if (!recompute(own.state)) {
+      const start = lesson.defaultState();
+      recompute(start);
+      store.set(start, { history: false, reason: 'import' });
+    } else {
+      store.set(own.state, { history: false, reason: 'import' });
+    }
+    autoFit = own.source === 'default';
+    if (autoFit) fitView();
+  }
 
   // An embed's side panels: only those its link lists (panels=a,b), by their ids; the names
   // that are no panel of this lesson come back as sentences.

@@ -8,11 +8,9 @@ import { h, setChildren } from '../app/dom.js';
 import { download } from '../app/file-io.js';
 import { stringifyExact } from '../app/share-link.js';
 import { lessons } from '../lessons/registry.js';
-import { KINDS, TABLES, QUANTITIES, exerciseOf, readExercise } from './format.js';
-import { readExerciseState } from './player.js';
+import { KINDS, TABLES, QUANTITIES, exerciseOf, parseExercise } from './format.js';
+import { readExerciseState, CREATE } from './player.js';
 import { exerciseUrl } from './link.js';
-import { askOf } from './kinds/value.js';
-import { propertySubject } from './kinds/property.js';
 
 const lessonIds = lessons.map((l) => l.id);
 
@@ -45,11 +43,11 @@ function fieldsOf(kind, subject) {
 const VALUE_FIELDS = ['i', 'u', 'v', 'segment', 'row', 'col', 'index'];
 
 /** @param {{ ctx: any, lesson: any, view: any, message: any }} parts */
-export function openAuthorDialog({ ctx, lesson, message }) {
+export function openAuthorDialog({ ctx, lesson, view, message }) {
   const support = lesson.exercise;
   let subject;
   try {
-    subject = support.subject(null, ctx.model, ctx.state, ctx);
+    subject = support.subject(view, ctx.model, ctx.state, ctx);
   } catch (err) {
     message.warn(`No exercise can be made from this view: ${err.message}.`, { code: 'exercise-author-refused' });
     return null;
@@ -124,11 +122,12 @@ export function openAuthorDialog({ ctx, lesson, message }) {
       title: title.value.trim(), lesson: lesson.id, source: source.value.trim(), question: question.value.trim(),
       stateVersion: lesson.stateVersion, state: ctx.state, hide: hideBoxes.filter((b) => b.checked).map((b) => b.value), check: checkOf(kind),
     });
-    const read = readExercise(JSON.parse(stringifyExact(exercise)), { lessonIds });
+    // As a student's page reads it: the text (with its size limit), the lesson's state, and
+    // the kind's own checks against this drawing (a walk element, a joint, a mesh too big
+    // to work by hand, a quantity the curve cannot give), the answer form built and dropped.
+    const read = parseExercise(stringifyExact(exercise), { lessonIds });
     readExerciseState(lesson, read);
-    if (kind === 'value') ctx.api.workedValue(askOf(read.check, subject).of, askOf(read.check, subject).ask);
-    if (kind === 'property') ctx.api.checkCurveProperty(propertySubject(read.check.property, subject), (({ joint, ...rest }) => rest)(read.check.property));
-    if (kind === 'joint' && read.check.joint > (subject.joints?.length ?? 0)) throw new Error(`the curve has ${subject.joints?.length ?? 0} joints, not ${read.check.joint}`);
+    CREATE[kind]({ api: ctx.api, check: read.check, subject: () => subject, support, ctx });
     return read;
   }
 

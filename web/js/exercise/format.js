@@ -16,6 +16,9 @@ export const EXERCISE_VERSION = 1;
 // An exercise is a small file: a lesson state of a slide-sized example and a question.
 export const MAX_EXERCISE_CHARS = 256 * 1024;
 export const EXERCISE_ID = /^[a-z0-9][a-z0-9-]{0,63}$/;
+// A mesh exercise is worked by hand: at most this many vertices and faces (the lectures'
+// examples have under 10; a grid of 10 x 10 squares has 121 vertices and 200 triangles).
+export const MAX_EXERCISE_ELEMENTS = 200;
 
 export class ExerciseError extends Error {
   /** @param {string} message @param {string} [field] */

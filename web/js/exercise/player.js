@@ -8,14 +8,17 @@
 import { h, setChildren } from '../app/dom.js';
 import { readEnvelope } from '../app/share-link.js';
 import { KINDS, ExerciseError } from './format.js';
-import { readProgress, writeProgress, clearProgress } from './progress.js';
+import { writeProgress, clearProgress } from './progress.js';
 import { createTableKind } from './kinds/table.js';
 import { createWalkKind } from './kinds/walk.js';
 import { createJointKind } from './kinds/joint.js';
 import { createValueKind } from './kinds/value.js';
 import { createPropertyKind } from './kinds/property.js';
 
-const CREATE = { table: createTableKind, walk: createWalkKind, joint: createJointKind, value: createValueKind, property: createPropertyKind };
+// Typed arrays as plain lists, to compare two subjects.
+const plain = (key, value) => (ArrayBuffer.isView(value) ? Array.from(/** @type {any} */ (value)) : value);
+
+export const CREATE = { table: createTableKind, walk: createWalkKind, joint: createJointKind, value: createValueKind, property: createPropertyKind };
 
 /**
  * The lesson state of an exercise, read like a share link's (migrated, validated); a field
@@ -40,18 +43,29 @@ export function readExerciseState(lesson, exercise) {
 }
 
 /**
- * @param {{ ctx: any, lesson: any, view: () => any, exercise: any, key: string, panels: HTMLElement, reset: () => void, initialState: any }} parts
+ * @param {{ ctx: any, lesson: any, view: () => any, exercise: any, key: string, loaded: { progress: any, problem: string | null }, panels: HTMLElement, reset: () => void, initialState: any }} parts
  */
-export function mountExercise({ ctx, lesson, view, exercise, key, panels, reset, initialState }) {
+export function mountExercise({ ctx, lesson, view, exercise, key, loaded, panels, reset, initialState }) {
   const support = lesson.exercise;
-  const subject = () => support.subject(view(), ctx.model, ctx.state, ctx);
   const { check } = exercise;
-  const loaded = readProgress(key);
+  // What the check is asked of. A question is about the exercise's drawing: its subject is
+  // taken once, as the exercise opens; only "move points until it holds" asks the drawing as
+  // it is now. If the drawing is changed meanwhile, the panel says so and offers it back.
+  const live = () => support.subject(view(), ctx.model, ctx.state, ctx);
+  const keepsState = Boolean(support.keepsState?.includes(check.kind));
+  const asOpened = keepsState ? null : live();
+  const subject = keepsState ? live : () => asOpened;
+  const same = (a, b) => JSON.stringify(a, plain) === JSON.stringify(b, plain);
   /** @type {any} */
   let progress = loaded.progress ?? { status: 'started', checks: 0, answer: null, state: null, solvedAt: null, title: exercise.title, lesson: exercise.lesson };
   const feedback = h('div', { class: 'exercise-feedback', id: 'exercise-feedback', role: 'status', 'aria-live': 'polite' });
   const worked = h('div', { class: 'exercise-worked-lines', id: 'exercise-worked', hidden: true });
   const status = h('p', { class: 'exercise-status', id: 'exercise-status' });
+  const drift = h('p', { class: 'exercise-drift callout warning', id: 'exercise-drift', hidden: true },
+    'The drawing has changed since the exercise began; the question is about its starting drawing. ',
+    h('button', { type: 'button', id: 'exercise-back-to-drawing', onclick: () => reset() }, 'Back to the exercise\'s drawing'));
+  let unsaved = false; // this browser refuses to keep progress
+  let saveTimer = 0;
 
   const kind = CREATE[check.kind]({ api: ctx.api, check, subject, support, ctx });
   if (loaded.progress) kind.restore(progress.answer);
@@ -64,6 +78,7 @@ export function mountExercise({ ctx, lesson, view, exercise, key, panels, reset,
     h('h2', { id: 'exercise-title' }, exercise.title),
     exercise.source ? h('p', { class: 'exercise-source hint lecture-note' }, exercise.source) : null,
     h('p', { class: 'exercise-question', id: 'exercise-question' }, exercise.question),
+    drift,
     kind.root,
     h('div', { class: 'exercise-actions' }, checkButton, workedButton, againButton),
     feedback, worked, status,
@@ -83,14 +98,24 @@ export function mountExercise({ ctx, lesson, view, exercise, key, panels, reset,
   kind.stateChanged?.();
 
   function save() {
-    progress = { ...progress, answer: kind.answer(), state: support.keepsState?.includes(check.kind) ? ctx.state : null };
-    if (!writeProgress(key, progress)) setChildren(status, 'This browser does not keep progress (its storage is full or disabled); your answer stays on this page until you leave it.');
+    window.clearTimeout(saveTimer);
+    saveTimer = 0;
+    progress = { ...progress, answer: kind.answer(), state: keepsState ? ctx.state : null };
+    const kept = writeProgress(key, progress);
+    if (kept === unsaved) { unsaved = !kept; showStatus(); }
   }
+  // A drawing dragged or played writes its progress once it rests, not at every frame.
+  function saveSoon() {
+    if (!saveTimer) saveTimer = window.setTimeout(save, 300);
+  }
+  window.addEventListener('pagehide', () => { if (saveTimer) save(); });
 
   function showStatus() {
     const solved = progress.status === 'solved';
     status.dataset.status = progress.status;
-    setChildren(status, solved ? '✓ Solved' : 'Not solved yet', ` · ${progress.checks} check${progress.checks === 1 ? '' : 's'} · kept in this browser`);
+    setChildren(status, solved ? (progress.sawWorked ? '✓ Solved (after the worked answer)' : '✓ Solved') : 'Not solved yet',
+      ` · ${progress.checks} check${progress.checks === 1 ? '' : 's'}`,
+      unsaved ? ' · this browser does not keep progress (its storage is full or disabled): your answer stays on this page until you leave it' : ' · kept in this browser');
   }
 
   function runCheck() {
@@ -129,6 +154,10 @@ export function mountExercise({ ctx, lesson, view, exercise, key, panels, reset,
     }
     setChildren(worked, lines.length ? [h('h3', {}, 'Worked answer'), h('ol', {}, lines.map((l) => h('li', {}, l)))] : null);
     worked.hidden = lines.length === 0;
+    if (progress.status !== 'solved' && !progress.sawWorked) {
+      progress = { ...progress, sawWorked: true };
+      save();
+    }
   }
 
   function startAgain() {
@@ -141,9 +170,19 @@ export function mountExercise({ ctx, lesson, view, exercise, key, panels, reset,
     root,
     problem: loaded.problem,
     initialState,
+    // What the drawing's description says while the exercise is answered: the question, not
+    // the lesson's live values (they would read the answer out).
+    description: keepsState ? null : `Exercise: ${exercise.title}. ${exercise.question}`,
     stateChanged() {
       kind.stateChanged?.();
-      if (support.keepsState?.includes(check.kind)) save();
+      if (keepsState) saveSoon();
+      else {
+        try {
+          drift.hidden = same(live(), asOpened);
+        } catch {
+          drift.hidden = false; // (a drawing the exercise cannot be asked of: an edited mesh)
+        }
+      }
     },
     draw(painter, colors) { kind.draw?.(painter, colors); },
     check: runCheck,

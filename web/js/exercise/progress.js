@@ -27,35 +27,64 @@ export async function progressKey(exercise, { shipped }) {
  * @typedef {{ version: number, status: 'started' | 'solved', checks: number, answer: any, state: any, solvedAt: string | null, title: string, lesson: string }} Progress
  */
 
-/** @returns {{ progress: Progress | null, problem: string | null }} */
-export function readProgress(key) {
-  const store = storage();
-  let raw = null;
+function parse(raw) {
+  const p = JSON.parse(raw);
+  if (!p || typeof p !== 'object' || p.version !== PROGRESS_VERSION || !['started', 'solved'].includes(p.status) || !Number.isSafeInteger(p.checks)) throw new Error('shape');
+  return p;
+}
+
+function readRaw(key) {
   try {
-    raw = store?.getItem(PREFIX + key) ?? null;
+    return storage()?.getItem(PREFIX + key) ?? null;
   } catch {
-    raw = null;
+    return null;
   }
+}
+
+/**
+ * Reads an exercise's progress. An entry that cannot be read is moved aside under the first
+ * free `…:unreadable-<n>` key (never over an earlier one) and the exercise starts fresh.
+ * @returns {{ progress: Progress | null, problem: string | null }}
+ */
+export function readProgress(key) {
+  const raw = readRaw(key);
   if (raw === null) return { progress: null, problem: null };
   try {
-    const p = JSON.parse(raw);
-    if (!p || typeof p !== 'object' || p.version !== PROGRESS_VERSION || !['started', 'solved'].includes(p.status) || !Number.isSafeInteger(p.checks)) throw new Error('shape');
-    return { progress: p, problem: null };
+    return { progress: parse(raw), problem: null };
   } catch {
+    const store = storage();
     try {
-      store?.setItem(`${PREFIX}${key}:unreadable`, raw);
+      let n = 1;
+      while (store?.getItem(`${PREFIX}${key}:unreadable-${n}`) !== null && n < 1000) n += 1;
+      store?.setItem(`${PREFIX}${key}:unreadable-${n}`, raw);
       store?.removeItem(PREFIX + key);
     } catch {
-      // storage refuses: the entry stays as it is and is not written over below
+      // storage refuses: the entry stays as it is and is not written over (see writeProgress)
       return { progress: null, problem: 'Your earlier progress on this exercise could not be read; it is kept as it was, and this attempt is not saved.' };
     }
     return { progress: null, problem: 'Your earlier progress on this exercise could not be read; it is kept aside in this browser, and the exercise starts fresh.' };
   }
 }
 
+/** An exercise's status without changing anything (the gallery): null when none or unreadable. */
+export function peekStatus(key) {
+  const raw = readRaw(key);
+  if (raw === null) return null;
+  try {
+    return parse(raw).status;
+  } catch {
+    return null;
+  }
+}
+
 /** @returns {boolean} whether it was kept */
 export function writeProgress(key, progress) {
   try {
+    // An entry that could not be read nor moved aside is never written over.
+    const raw = readRaw(key);
+    if (raw !== null) {
+      try { parse(raw); } catch { return false; }
+    }
     storage()?.setItem(PREFIX + key, JSON.stringify({ ...progress, version: PROGRESS_VERSION }));
     return true;
   } catch {
@@ -75,8 +104,8 @@ export function clearProgress(key) {
 export function siteStatuses(ids) {
   const out = {};
   for (const id of ids) {
-    const { progress } = readProgress(`site:${id}`);
-    if (progress) out[id] = progress.status;
+    const status = peekStatus(`site:${id}`);
+    if (status) out[id] = status;
   }
   return out;
 }

@@ -14,7 +14,7 @@ const lessonIds = lessons.map((l) => l.id);
 
 /**
  * @param {import('../app/contract.js').Lesson} lesson
- * @returns {Promise<null | { ready: boolean, problem: string | null, restored?: any, exercise?: any, key?: string, initialState?: any, refuse(text: string): void }>}
+ * @returns {Promise<null | { ready: boolean, shownOnStart?: boolean, problem: string | null, restored?: any, exercise?: any, key?: string, loaded?: any, initialState?: any, refuse(text: string): void }>}
  */
 export async function openExercise(lesson) {
   const link = readExerciseLink(window.location.hash);
@@ -34,7 +34,9 @@ export async function openExercise(lesson) {
     const key = await progressKey(exercise, { shipped: 'id' in link });
     // The drawing as the student left it, for the kinds where the drawing is the answer.
     let state = initialState;
-    const kept = readProgress(key).progress?.state;
+    // Read once: an unreadable entry is moved aside here, and the player says so.
+    const loaded = readProgress(key);
+    const kept = loaded.progress?.state;
     if (kept && lesson.exercise?.keepsState?.includes(exercise.check.kind)) {
       try {
         const read = readEnvelope(lesson, { format: 'wingspline', lesson: lesson.id, version: lesson.stateVersion, state: kept });
@@ -43,7 +45,7 @@ export async function openExercise(lesson) {
         // the kept drawing is not usable: the exercise's own is shown
       }
     }
-    Object.assign(session, { ready: true, exercise, key, initialState, restored: { state, source: 'exercise', problem: null, previous: null } });
+    Object.assign(session, { ready: true, shownOnStart: true, exercise, key, loaded, initialState, restored: { state, source: 'exercise', problem: null, previous: null } });
   } catch (err) {
     session.refuse(err.message);
   }
@@ -59,26 +61,34 @@ export function startExercise(session, { ctx, lesson, view, panels, message, res
     if (session.problem) message.warn(session.problem, { code: 'exercise-refused' });
     return null;
   }
-  const { exercise, key, initialState } = session;
+  const { exercise, key, initialState, loaded } = session;
   const missing = [];
   for (const id of exercise.hide ?? []) {
     const el = document.getElementById(id);
-    if (el && panels.contains(el)) el.dataset.exerciseHidden = '';
+    // (a panel inside the side column; never the column itself, which holds the exercise)
+    if (el && el !== panels && panels.contains(el)) el.dataset.exerciseHidden = '';
     else missing.push(id);
   }
   document.documentElement.dataset.exercise = exercise.check.kind;
   ctx.ui.exercise = exercise.check.kind;
   let player;
   try {
-    player = mountExercise({ ctx, lesson, view, exercise, key, panels, reset, initialState });
+    player = mountExercise({ ctx, lesson, view, exercise, key, loaded, panels, reset, initialState });
   } catch (err) {
     delete document.documentElement.dataset.exercise;
     ctx.ui.exercise = null;
     for (const el of panels.querySelectorAll('[data-exercise-hidden]')) delete /** @type {HTMLElement} */ (el).dataset.exerciseHidden;
-    message.warn(`This exercise could not be opened: ${err.message}.`, { code: 'exercise-refused' });
+    message.warn(`This exercise could not be opened: ${err.message}. Showing your own work instead.`, { code: 'exercise-refused' });
     return null;
   }
   const notes = [player.problem, missing.length ? `The exercise hides ${missing.map((m) => `"${m}"`).join(', ')}, which ${missing.length === 1 ? 'is' : 'are'} not a panel of this lesson.` : null].filter(Boolean);
   if (notes.length) message.warn(notes.join(' '), { code: 'exercise-note' });
+  // On a phone the exercise is under the drawing: the message line says where.
+  if (window.matchMedia?.('(max-width: 800px)').matches && !notes.length) {
+    message.info(`Exercise: ${exercise.title}. The question is under the drawing.`, {
+      code: 'exercise-below',
+      action: { id: 'go-to-exercise', label: 'Go to the question', run: () => player.root.scrollIntoView({ block: 'start' }) },
+    });
+  }
   return player;
 }

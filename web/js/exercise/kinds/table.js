@@ -6,6 +6,7 @@
 // describes and names each mistake. Given columns come filled in from the lesson's own tables.
 import { h, setChildren } from '../../app/dom.js';
 import { ExerciseError, TABLES } from '../format.js';
+import { refuseLargeMesh } from '../subjects.js';
 
 export const NONE = -1;
 export const BLANK = -2;
@@ -65,6 +66,7 @@ export function readLabel(raw, ref, count, allowNone) {
 export function createTableKind({ api, check, subject }) {
   const mesh = subject().mesh;
   if (!mesh) throw new ExerciseError('this lesson has no mesh to fill a table for', 'exercise.check.kind');
+  refuseLargeMesh(mesh);
   // The lesson's own tables, for the columns the exercise gives (the lesson's numbering).
   const built = api.buildMesh(mesh);
   let own;
@@ -163,7 +165,8 @@ export function createTableKind({ api, check, subject }) {
 
   // A finding's cell: its table, the student's row, its field.
   function cellOf(f) {
-    const table = f.table === 'polygons' ? 'polygon' : f.table === 'edges' ? 'edge' : f.table === 'vertices' ? 'vertex' : f.table === 'faces' ? 'face' : f.table;
+    // (the core names a row by its kind: the edge list's polygon rows are 'face' rows)
+    const table = check.table === 'edge-list' && f.table === 'face' ? 'polygon' : f.table;
     const grid = grids.find((g) => g.table === table);
     if (!grid) return null;
     const field = grid.columns.some((c) => c.field === f.field) ? f.field : grid.columns.length === 1 ? grid.columns[0].field : null;
@@ -177,6 +180,9 @@ export function createTableKind({ api, check, subject }) {
     check() {
       clearMarks();
       const { value, problems } = read();
+      if ([...inputs.values()].every((x) => x.input.readOnly || x.input.value.trim() === '')) {
+        return { correct: false, incomplete: true, findings: ['Fill in the table first: every cell is blank.'] };
+      }
       if (problems.length) {
         for (const p of problems) mark(p.x, p.text);
         return { correct: false, incomplete: true, findings: problems.map((p) => `${p.x.input.getAttribute('aria-label')}: ${p.text}.`) };

@@ -7,11 +7,13 @@
 import { h, setChildren } from '../../app/dom.js';
 import { ExerciseError } from '../format.js';
 import { label } from './table.js';
+import { refuseLargeMesh } from '../subjects.js';
 
 /** @param {any} parts */
 export function createWalkKind({ api, check, subject, support, ctx }) {
   const mesh = subject().mesh;
   if (!mesh) throw new ExerciseError('this lesson has no mesh to walk on', 'exercise.check.kind');
+  refuseLargeMesh(mesh);
   const built = api.buildMesh(mesh);
   let steps;
   let edgeCount;
@@ -61,7 +63,7 @@ export function createWalkKind({ api, check, subject, support, ctx }) {
     },
     start: show,
     check() {
-      if (known > steps.length) return { correct: true, findings: [] };
+      if (known > steps.length) return { correct: true, incomplete: true, findings: [] };
       const picked = radios.find((r) => r.checked);
       if (!picked) return { correct: false, findings: ['Pick the next edge first (click it, or use the arrow keys in the list).'], incomplete: true };
       const given = Number(picked.value);

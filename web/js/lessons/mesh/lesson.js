@@ -379,7 +379,7 @@ export const meshLesson = {
       const pressed = view.pressed;
       view.pressed = null;
       const state = ctx.state;
-      if (pressed && !pressed.dragged && state.walk === 'vertex' && state.vertex !== pressed.v) ctx.commit({ ...state, vertex: pressed.v, step: 0 }, { history: false });
+      if (pressed && !pressed.dragged && state.walk === 'vertex' && state.vertex !== pressed.v && ctx.ui.exercise !== 'walk') ctx.commit({ ...state, vertex: pressed.v, step: 0 }, { history: false });
     }, { once: true });
   },
   click(view, x, y, ctx, event) {

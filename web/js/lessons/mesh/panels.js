@@ -114,7 +114,8 @@ export function setupPanels(ctx, selection) {
   const player = createPlayer({
     count: () => ctx.model?.frames.length ?? 0,
     getStep: () => ctx.model?.stepIndex ?? 0,
-    onStep: (i) => commit({ step: i }, { history: false }),
+    // While a walk is being predicted (an exercise), the walk does not step by itself.
+    onStep: (i) => { if (ctx.ui.exercise !== 'walk') commit({ step: i }, { history: false }); },
     stepsPerSecond: state().speed,
   });
   const button = (label, action, title) => h('button', { type: 'button', class: 'tool', title, 'aria-label': title, onclick: action }, label);
