@@ -53,8 +53,8 @@ export const PROPERTIES = Object.freeze({
   'passes-through': { label: 'make the curve pass through a point' },
 });
 
-// The five kinds, in the issue's order. `lessons` are those whose drawing gives what the
-// kind checks (the lesson's `exercise.kinds` says the same from the lesson's side).
+// The five kinds, in the issue's order. Which lessons offer a kind is the lesson's to say
+// (its `exercise.kinds`, app/contract.js).
 export const KINDS = Object.freeze({
   table: { label: 'Fill in a table' },
   walk: { label: 'Predict the next edge of a walk' },

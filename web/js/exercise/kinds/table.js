@@ -7,6 +7,7 @@
 import { h, setChildren } from '../../app/dom.js';
 import { ExerciseError, TABLES } from '../format.js';
 import { refuseLargeMesh } from '../subjects.js';
+import { elementLabel } from '../../ui/element-labels.js';
 
 export const NONE = -1;
 export const BLANK = -2;
@@ -15,34 +16,38 @@ const PREFIX = { vertex: 'v', edge: 'e', face: 'F' };
 const REF_NAME = { vertex: 'a vertex', edge: 'an edge', face: 'a face' };
 const NONE_WORDS = new Set(['none', '-', '—', '–', 'λ', 'nil', 'null']);
 
-// The grids of each table: the checker's table and field names, the slide's headers.
-function gridsOf(table, counts) {
-  const { V, E, F } = counts;
-  /** @returns {{ field: string, head: string, ref: 'vertex'|'edge'|'face', list?: boolean, none?: boolean, given?: string }} */
-  const cell = (field, head, ref, extra = {}) => ({ field, head, ref, ...extra });
-  if (table === 'winged-edge') {
-    return [
-      { table: 'edge', title: 'EDGE TABLE', rows: E, rowRef: 'edge', columns: [
-        cell('start', 'S', 'vertex'), cell('end', 'E', 'vertex'), cell('left', 'L', 'face', { none: true }), cell('right', 'R', 'face', { none: true }),
-        cell('startLeft', 'S:L', 'edge'), cell('startRight', 'S:R', 'edge'), cell('endLeft', 'E:L', 'edge'), cell('endRight', 'E:R', 'edge')] },
-      { table: 'vertex', title: 'VERTEX TABLE', rows: V, rowRef: 'vertex', columns: [cell('edge', 'edge', 'edge', { given: 'vertexEdge', none: true })] },
-      { table: 'face', title: 'FACE TABLE', rows: F, rowRef: 'face', columns: [cell('edge', 'edge', 'edge', { given: 'faceEdge' })] },
-    ];
-  }
-  if (table === 'faces') {
-    return [{ table: 'face', title: 'FACE TABLE (each face lists vertex references, counter-clockwise)', rows: F, rowRef: 'face', columns: [cell('vertices', 'vertices', 'vertex', { list: true })] }];
-  }
-  if (table === 'edge-list') {
-    return [
-      { table: 'edge', title: 'Eᵢ = (V₁, V₂, P₁, P₂)', rows: E, rowRef: 'edge', columns: [
-        cell('v1', 'V₁', 'vertex'), cell('v2', 'V₂', 'vertex'), cell('p1', 'P₁', 'face', { none: true }), cell('p2', 'P₂', 'face', { none: true })] },
-      { table: 'polygon', title: 'Pᵢ = (E…)', rows: F, rowRef: 'face', columns: [cell('edges', 'edges', 'edge', { list: true })] },
-    ];
-  }
-  return [{ table: 'vertex', title: 'Adjacency lists: the vertices next to each vertex', rows: V, rowRef: 'vertex', columns: [cell('vertices', 'vertices', 'vertex', { list: true })] }];
+// Each exercise table is one or more of the core's tables (api.tableDescriptors, the one
+// description of every table: its title, the kind of its rows, its columns with the slide's
+// headers and what they refer to): [representation, table, the columns to fill (null: every
+// column that refers to an element)]. The checker names a cell by the kind of its row and
+// the column's name, as the descriptors do.
+const PARTS = {
+  'winged-edge': [['winged-edge', 'edges', null], ['winged-edge', 'vertices', ['edge']], ['winged-edge', 'faces', null]],
+  faces: [['vertex-face-tables', 'faces', null]],
+  'edge-list': [['edge-list', 'edges', null], ['edge-list', 'polygons', null]],
+  adjacency: [['adjacency-lists', 'vertices', ['vertices']]],
+};
+// Lecture 001 names the edge list's rows E1.. and its polygons P1..
+const ROW_PREFIX = { 'edge-list': { edge: 'E', face: 'P' } };
+
+/** @returns {Array<{ table: string, representation: string, name: string, title: string, rows: number, rowRef: 'vertex'|'edge'|'face', rowName: (r: number) => string, columns: Array<{ field: string, head: string, ref: 'vertex'|'edge'|'face', list: boolean, none: boolean }> }>} */
+function gridsOf(api, table, counts) {
+  return PARTS[table].map(([representation, name, only]) => {
+    const d = api.tableDescriptors.find((x) => x.representation === representation && x.name === name);
+    const columns = d.columns.filter((c) => c.refers && (!only || only.includes(c.name))).map((c) => ({
+      field: c.name, head: c.group ? `${c.group}:${c.label}` : c.label, ref: c.refers, list: c.layout === 'csr',
+      // "none" where the slides leave a cell empty: no face on a side, no edge at a vertex
+      none: c.refers === 'face' || (d.rows === 'vertex' && c.refers === 'edge'),
+    }));
+    const prefix = ROW_PREFIX[table]?.[d.rows];
+    return {
+      table: d.rows, representation, name, title: d.title, rows: counts[d.rows], rowRef: d.rows, columns,
+      rowName: (r) => (prefix ? `${prefix}${r + 1}` : label(d.rows, r)),
+    };
+  });
 }
 
-export const label = (ref, i) => (i === NONE ? 'none' : i === BLANK ? '' : `${PREFIX[ref]}${i + 1}`);
+export const label = (ref, i) => (i === NONE ? 'none' : i === BLANK ? '' : elementLabel(ref, i));
 
 /**
  * Reads one typed label: {value} (0-based, NONE, BLANK) or {problem}.
@@ -69,34 +74,34 @@ export function createTableKind({ api, check, subject }) {
   refuseLargeMesh(mesh);
   // The lesson's own tables, for the columns the exercise gives (the lesson's numbering).
   const built = api.buildMesh(mesh);
-  let own;
-  let counts;
+  let grids;
+  const own = {}; // the lesson's own rows, by the grid's row kind
   try {
     const we = built.wingedEdge();
-    const el = built.tables('edge-list');
-    counts = { V: we.vertices.length, E: we.edges.length, F: we.faces.length };
-    own = { edge: we.edges, vertex: we.vertices.map((x) => ({ vertexEdge: x.edge })), face: we.faces.map((x) => ({ faceEdge: x.edge })), edgeList: el.edges.rows() };
+    const counts = { vertex: we.vertices.length, edge: we.edges.length, face: we.faces.length };
+    grids = gridsOf(api, check.table, counts);
+    for (const grid of grids) own[grid.table] = built.tables(grid.representation)[grid.name].rows();
+    for (const kind of ['vertex', 'edge', 'face']) own[`${kind}Count`] = counts[kind];
   } finally {
     built.dispose();
   }
+  const countOf = (ref) => own[`${ref}Count`];
   const given = new Set(check.given ?? []);
-  const grids = gridsOf(check.table, counts);
-  const countOf = (ref) => ({ vertex: counts.V, edge: counts.E, face: counts.F })[ref];
   const inputs = new Map(); // `${table}:${row}:${field}` -> input
 
+  // A column the exercise gives, in format.js's names (the winged edge's vertex and face
+  // tables' one column: vertexEdge, faceEdge).
+  const givenName = (grid, column) => (check.table === 'winged-edge' && grid.table !== 'edge' ? `${grid.table}Edge` : column.field);
   function givenValue(grid, row, column) {
-    const name = column.given ?? column.field;
-    if (!given.has(name)) return null;
-    if (check.table === 'edge-list') return own.edgeList[row][name];
-    return own[grid.table][row][name];
+    return given.has(givenName(grid, column)) ? own[grid.table][row][column.field] : null;
   }
 
   const root = h('div', { class: 'exercise-tables' });
   for (const grid of grids) {
-    const head = h('tr', {}, h('th', { scope: 'col' }, grid.rowRef === 'edge' && check.table === 'edge-list' ? 'E' : grid.rowRef), grid.columns.map((c) => h('th', { scope: 'col' }, c.head)));
+    const head = h('tr', {}, h('th', { scope: 'col' }, grid.rowRef), grid.columns.map((c) => h('th', { scope: 'col' }, c.head)));
     const body = [];
     for (let r = 0; r < grid.rows; r += 1) {
-      const rowName = grid.table === 'polygon' ? `P${r + 1}` : grid.rowRef === 'edge' && check.table === 'edge-list' ? `E${r + 1}` : label(grid.rowRef, r);
+      const rowName = grid.rowName(r);
       body.push(h('tr', {}, h('th', { scope: 'row' }, rowName), grid.columns.map((c) => {
         const value = givenValue(grid, r, c);
         const input = /** @type {HTMLInputElement} */ (h('input', {
@@ -150,7 +155,7 @@ export function createTableKind({ api, check, subject }) {
     let value;
     if (check.table === 'winged-edge') value = { edges: rowsOf('edge').flat(), vertexEdges: rowsOf('vertex').flat(), faceEdges: rowsOf('face').flat() };
     else if (check.table === 'faces') value = { faces: rowsOf('face').map((r) => r[0]) };
-    else if (check.table === 'edge-list') value = { edges: rowsOf('edge').flat(), polygons: rowsOf('polygon').map((r) => r[0]) };
+    else if (check.table === 'edge-list') value = { edges: rowsOf('edge').flat(), polygons: rowsOf('face').map((r) => r[0]) };
     else value = { vertexVertices: rowsOf('vertex').map((r) => r[0]) };
     return { value, problems };
   }
@@ -165,8 +170,7 @@ export function createTableKind({ api, check, subject }) {
 
   // A finding's cell: its table, the student's row, its field.
   function cellOf(f) {
-    // (the core names a row by its kind: the edge list's polygon rows are 'face' rows)
-    const table = check.table === 'edge-list' && f.table === 'face' ? 'polygon' : f.table;
+    const table = f.table; // (the kind of the row: the edge list's polygons are 'face' rows)
     const grid = grids.find((g) => g.table === table);
     if (!grid) return null;
     const field = grid.columns.some((c) => c.field === f.field) ? f.field : grid.columns.length === 1 ? grid.columns[0].field : null;
@@ -207,7 +211,7 @@ export function createTableKind({ api, check, subject }) {
   function workedTables(worked) {
     const rows = (table) => {
       const grid = grids.find((g) => g.table === table);
-      const flat = { edge: check.table === 'edge-list' ? worked.edges : worked.edges, vertex: check.table === 'winged-edge' ? worked.vertexEdges : worked.vertexVertices, face: check.table === 'winged-edge' ? worked.faceEdges : worked.faces, polygon: worked.polygons }[table];
+      const flat = { edge: worked.edges, vertex: check.table === 'winged-edge' ? worked.vertexEdges : worked.vertexVertices, face: check.table === 'winged-edge' ? worked.faceEdges : check.table === 'edge-list' ? worked.polygons : worked.faces }[table];
       const width = grid.columns.length;
       return Array.from({ length: grid.rows }, (_, r) => grid.columns.map((c, k) => {
         const v = c.list ? flat[r] : flat[width * r + k];
@@ -216,7 +220,7 @@ export function createTableKind({ api, check, subject }) {
     };
     return grids.map((grid) => h('table', { class: 'data-table exercise-grid worked' }, h('caption', {}, grid.title),
       h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, ''), grid.columns.map((c) => h('th', { scope: 'col' }, c.head)))),
-      h('tbody', {}, rows(grid.table).map((cells, r) => h('tr', {}, h('th', { scope: 'row' }, grid.table === 'polygon' ? `P${r + 1}` : label(grid.rowRef, r)), cells.map((c) => h('td', {}, c)))))));
+      h('tbody', {}, rows(grid.table).map((cells, r) => h('tr', {}, h('th', { scope: 'row' }, grid.rowName(r)), cells.map((c) => h('td', {}, c)))))));
   }
 }
 

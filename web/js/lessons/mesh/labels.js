@@ -1,8 +1,5 @@
-// The slides' labels: 1-based on screen (v1, e1, F1) although the core's indices are
-// 0-based; -1 (none: a boundary side) is shown as an empty cell, as on the slide.
-export const vLabel = (i) => (i >= 0 ? `v${i + 1}` : '');
-export const eLabel = (i) => (i >= 0 ? `e${i + 1}` : '');
-export const fLabel = (i) => (i >= 0 ? `F${i + 1}` : '');
+// The slides' labels (v1, e1, F1): ui/element-labels.js, shared with the other pages.
+export { vLabel, eLabel, fLabel } from '../../ui/element-labels.js';
 
 // Numbers in tables: short, and -0 as 0.
 export function num(x, digits = 4) {

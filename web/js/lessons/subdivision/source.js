@@ -12,7 +12,7 @@ export const MAX_LEVEL = 5;
 export const PHASES = ['face-points', 'edge-points', 'vertex-points', 'reconnection'];
 
 // The slides' labels, 1-based: v1, e1, F1 (-1, no element, is an empty cell).
-export const label = (kind, i) => (i >= 0 ? `${{ vertex: 'v', edge: 'e', face: 'F' }[kind]}${i + 1}` : '');
+export { elementLabel as label } from '../../ui/element-labels.js';
 
 export const SOURCES = [
   { id: 'tetrahedron', label: 'Tetrahedron (triangles)' },
