@@ -70,6 +70,7 @@ const DAMAGE = [
   ['a fractional index', (x) => { x.check.i = 1.5; }, /exercise\.check\.i must be a whole number/],
   ['a walk from vertex 0', (x) => { x.check = { kind: 'walk', around: 'vertex', element: 0 }; }, /exercise\.check\.element must be between 1/],
   ['a table with an unknown column', (x) => { x.check = { kind: 'table', table: 'winged-edge', given: ['colour'] }; }, /exercise\.check\.given\[0\] must be a column/],
+  ['a table with every column given', (x) => { x.check = { kind: 'table', table: 'edge-list', given: ['v1', 'v2', 'p1', 'p2'] }; }, /exercise\.check\.given gives every column: nothing is left to fill in/],
   ['a joint class with no class', (x) => { x.check = { kind: 'property', property: { kind: 'joint-class', joint: 1 } }; }, /exercise\.check\.property must name the class/],
   ['a point with one coordinate', (x) => { x.check = { kind: 'property', property: { kind: 'passes-through', point: [1], tolerance: 0.01 } }; }, /exercise\.check\.property\.point must have 2 to 2 entries/],
   ['no state', (x) => { delete x.state; }, /exercise\.state is missing/],

@@ -33,7 +33,11 @@ async function takePending(lesson, code, contents) {
   session.removeItem(pendingKey(lesson));
   try {
     const record = JSON.parse(raw);
-    if (record?.fromCode !== code) return null;
+    // The pending edit belongs to the address it was made at; or, when the page was writing
+    // its previous state as it went away, to the code that write put in the address bar and
+    // in storage just before the reload (the same page's own last write, not another link).
+    const ownWrite = record?.writing === true && code !== null && code === safeStorage()?.getItem(storageKey(lesson));
+    if (record?.fromCode !== code && !ownWrite) return null;
     const { state, problems } = await readEnvelopeResolved(lesson, JSON.parse(record.json), { contents });
     return problems.length ? null : state;
   } catch {
@@ -168,7 +172,7 @@ export function createPersister(lesson, { delayMs = 200, contents = null, notify
   function keepPending() {
     if (!pending) return;
     try {
-      sessionStore()?.setItem(pendingKey(lesson), JSON.stringify({ fromCode: readHashCode(), json: stringifyExact(envelope(lesson, externalizeKnown(lesson, pending))) }));
+      sessionStore()?.setItem(pendingKey(lesson), JSON.stringify({ fromCode: readHashCode(), writing: writing > 0, json: stringifyExact(envelope(lesson, externalizeKnown(lesson, pending))) }));
     } catch {
       // storage disabled or full: the debounced write is all there is
     }
@@ -176,9 +180,11 @@ export function createPersister(lesson, { delayMs = 200, contents = null, notify
   if (keep) window.addEventListener('pagehide', keepPending);
 
   let inflight = Promise.resolve();
+  let writing = 0; // writes under way (their code may reach the address bar after a pagehide)
   function flush() {
     timer = null;
-    inflight = inflight.then(write).catch(() => { /* the next save tries again */ });
+    writing += 1;
+    inflight = inflight.then(write).catch(() => { /* the next save tries again */ }).finally(() => { writing -= 1; });
     return inflight;
   }
 

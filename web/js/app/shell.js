@@ -402,9 +402,17 @@ export async function runLesson(lesson) {
   // (An embed shows the link it was given; its address is the host page's business.) An
   // exercise's page, and any page given an exercise link, opens afresh: the exercise's
   // progress is kept, and the lesson's own saved work is read as the page starts.
-  function listenToAddress(exerciseShown) {
-    if (embed) return;
-    const follow = () => (exerciseShown || readExerciseLink(window.location.hash) ? window.location.reload() : followAddress());
+  // (Edits not yet written are written first, the reload must not drop them; writing puts the
+  // state's link in the address bar, so the address that came is put back before reloading.)
+  const reloadKeeping = () => {
+    const target = window.location.href;
+    persister.flushNow().finally(() => {
+      window.history.replaceState(window.history.state, '', target);
+      window.location.reload();
+    });
+  };
+  if (!embed) {
+    const follow = () => (player || readExerciseLink(window.location.hash) ? reloadKeeping() : followAddress());
     window.addEventListener('hashchange', follow);
     window.addEventListener('popstate', follow);
   }
@@ -449,24 +457,29 @@ export async function runLesson(lesson) {
     // core refused its drawing): the person's own work is shown, and kept again from now on.
     if (!player && exercise.shownOnStart) await returnToOwnWork();
   }
-  listenToAddress(Boolean(player));
   refresh();
   renderNow();
   prepared = store.state;
   // The URL and storage hold what is shown (a damaged link is replaced by what survived).
   persister.save(store.state);
 
+  // The person's own work, as a plain lesson page would show it (with what it would say
+  // about it), after an exercise that could not be played; saving resumes. A saved state
+  // the core refuses is kept aside first, as at the start, never written over.
   async function returnToOwnWork() {
     const own = await restoreState(lesson, { contents });
     persister.resume();
-    if (!recompute(own.state)) {
-      const start = lesson.defaultState();
-      recompute(start);
-      store.set(start, { history: false, reason: 'import' });
-    } else {
-      store.set(own.state, { history: false, reason: 'import' });
+    let { state } = own;
+    let problem = own.problem;
+    if (!recompute(state)) {
+      if (own.source === 'storage') persister.keepSavedAside();
+      problem = 'Your saved work could not be shown by this version of Wingspline; it is kept aside in this browser, and the lesson starts fresh.';
+      state = lesson.defaultState();
+      recompute(state);
     }
-    autoFit = own.source === 'default';
+    store.set(state, { history: false, reason: 'import' });
+    if (problem) message.warn(`${message.text} ${problem}`);
+    autoFit = own.source === 'default' || state !== own.state;
     if (autoFit) fitView();
   }
 

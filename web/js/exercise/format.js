@@ -113,6 +113,8 @@ function readCheck(v, path) {
     }
   }
   if (kind === 'table') {
+    const all = TABLES[check.table].columns;
+    if (all.length && all.every((c) => check.given?.includes(c))) throw new SchemaError(`${path}.given`, 'gives every column: nothing is left to fill in');
     for (const [i, column] of (check.given ?? []).entries()) {
       if (!TABLES[check.table].columns.includes(column)) {
         throw new SchemaError(`${path}.given[${i}]`, TABLES[check.table].columns.length

@@ -43,7 +43,7 @@ export function readExerciseState(lesson, exercise) {
 }
 
 /**
- * @param {{ ctx: any, lesson: any, view: () => any, exercise: any, key: string, loaded: { progress: any, problem: string | null }, panels: HTMLElement, reset: () => void, initialState: any }} parts
+ * @param {{ ctx: any, lesson: any, view: () => any, exercise: any, key: string, loaded: { progress: any, problem: string | null, stuck?: boolean }, panels: HTMLElement, reset: () => void, initialState: any }} parts
  */
 export function mountExercise({ ctx, lesson, view, exercise, key, loaded, panels, reset, initialState }) {
   const support = lesson.exercise;
@@ -52,9 +52,10 @@ export function mountExercise({ ctx, lesson, view, exercise, key, loaded, panels
   // taken once, as the exercise opens; only "move points until it holds" asks the drawing as
   // it is now. If the drawing is changed meanwhile, the panel says so and offers it back.
   const live = () => support.subject(view(), ctx.model, ctx.state, ctx);
+  const asksNow = check.kind === 'property';
   const keepsState = Boolean(support.keepsState?.includes(check.kind));
-  const asOpened = keepsState ? null : live();
-  const subject = keepsState ? live : () => asOpened;
+  const asOpened = asksNow ? null : live();
+  const subject = asksNow ? live : () => asOpened;
   const same = (a, b) => JSON.stringify(a, plain) === JSON.stringify(b, plain);
   /** @type {any} */
   let progress = loaded.progress ?? { status: 'started', checks: 0, answer: null, state: null, solvedAt: null, title: exercise.title, lesson: exercise.lesson };
@@ -65,6 +66,7 @@ export function mountExercise({ ctx, lesson, view, exercise, key, loaded, panels
     'The drawing has changed since the exercise began; the question is about its starting drawing. ',
     h('button', { type: 'button', id: 'exercise-back-to-drawing', onclick: () => reset() }, 'Back to the exercise\'s drawing'));
   let unsaved = false; // this browser refuses to keep progress
+  let leaving = false; // Start again: the page reloads, nothing more is saved
   let saveTimer = 0;
 
   const kind = CREATE[check.kind]({ api: ctx.api, check, subject, support, ctx });
@@ -83,7 +85,6 @@ export function mountExercise({ ctx, lesson, view, exercise, key, loaded, panels
     h('div', { class: 'exercise-actions' }, checkButton, workedButton, againButton),
     feedback, worked, status,
     h('p', { class: 'exercise-leave' }, h('a', { href: `./${lesson.id}.html`, id: 'exercise-leave' }, 'Leave the exercise'), ' · ', h('a', { href: './exercises.html' }, 'All exercises')));
-  panels.prepend(root);
   // Enter in a typed answer checks it (a radio group's Enter too).
   kind.root.addEventListener('keydown', (event) => {
     if (event.key === 'Enter' && !event.isComposing && event.target instanceof HTMLInputElement) {
@@ -96,10 +97,12 @@ export function mountExercise({ ctx, lesson, view, exercise, key, loaded, panels
   showStatus();
   kind.start?.();
   kind.stateChanged?.();
+  panels.prepend(root); // (only a panel whose kind started is shown)
 
   function save() {
     window.clearTimeout(saveTimer);
     saveTimer = 0;
+    if (leaving) return;
     progress = { ...progress, answer: kind.answer(), state: keepsState ? ctx.state : null };
     const kept = writeProgress(key, progress);
     if (kept === unsaved) { unsaved = !kept; showStatus(); }
@@ -161,7 +164,12 @@ export function mountExercise({ ctx, lesson, view, exercise, key, loaded, panels
   }
 
   function startAgain() {
-    clearProgress(key);
+    // Nothing more is written on the way out (a pending save would bring the attempt back),
+    // and an entry that could not be read nor moved aside stays as it was.
+    window.clearTimeout(saveTimer);
+    saveTimer = 0;
+    leaving = true;
+    if (!loaded.stuck) clearProgress(key);
     progress = { status: 'started', checks: 0, answer: null, state: null, solvedAt: null, title: exercise.title, lesson: exercise.lesson };
     window.location.reload();
   }
@@ -172,11 +180,11 @@ export function mountExercise({ ctx, lesson, view, exercise, key, loaded, panels
     initialState,
     // What the drawing's description says while the exercise is answered: the question, not
     // the lesson's live values (they would read the answer out).
-    description: keepsState ? null : `Exercise: ${exercise.title}. ${exercise.question}`,
+    description: asksNow ? null : `Exercise: ${exercise.title}. ${exercise.question}`,
     stateChanged() {
       kind.stateChanged?.();
       if (keepsState) saveSoon();
-      else {
+      if (!asksNow) {
         try {
           drift.hidden = same(live(), asOpened);
         } catch {

@@ -44,7 +44,7 @@ function readRaw(key) {
 /**
  * Reads an exercise's progress. An entry that cannot be read is moved aside under the first
  * free `…:unreadable-<n>` key (never over an earlier one) and the exercise starts fresh.
- * @returns {{ progress: Progress | null, problem: string | null }}
+ * @returns {{ progress: Progress | null, problem: string | null, stuck?: boolean }}
  */
 export function readProgress(key) {
   const raw = readRaw(key);
@@ -60,7 +60,7 @@ export function readProgress(key) {
       store?.removeItem(PREFIX + key);
     } catch {
       // storage refuses: the entry stays as it is and is not written over (see writeProgress)
-      return { progress: null, problem: 'Your earlier progress on this exercise could not be read; it is kept as it was, and this attempt is not saved.' };
+      return { progress: null, stuck: true, problem: 'Your earlier progress on this exercise could not be read; it is kept as it was, and this attempt is not saved.' };
     }
     return { progress: null, problem: 'Your earlier progress on this exercise could not be read; it is kept aside in this browser, and the exercise starts fresh.' };
   }

@@ -12,7 +12,11 @@ import { elementLabel } from '../../ui/element-labels.js';
 export const NONE = -1;
 export const BLANK = -2;
 
-const PREFIX = { vertex: 'v', edge: 'e', face: 'F' };
+// How each table names elements: the slides' v1, e1, F1 and "none"; lecture 001's edge list
+// writes V1, E1, P1 and λ.
+const NAMES = { vertex: 'v', edge: 'e', face: 'F', none: 'none' };
+const TABLE_NAMES = { 'edge-list': { vertex: 'V', edge: 'E', face: 'P', none: 'λ' } };
+const namesOf = (table) => ({ ...NAMES, ...TABLE_NAMES[table] });
 const REF_NAME = { vertex: 'a vertex', edge: 'an edge', face: 'a face' };
 const NONE_WORDS = new Set(['none', '-', '—', '–', 'λ', 'nil', 'null']);
 
@@ -27,8 +31,6 @@ const PARTS = {
   'edge-list': [['edge-list', 'edges', null], ['edge-list', 'polygons', null]],
   adjacency: [['adjacency-lists', 'vertices', ['vertices']]],
 };
-// Lecture 001 names the edge list's rows E1.. and its polygons P1..
-const ROW_PREFIX = { 'edge-list': { edge: 'E', face: 'P' } };
 
 /** @returns {Array<{ table: string, representation: string, name: string, title: string, rows: number, rowRef: 'vertex'|'edge'|'face', rowName: (r: number) => string, columns: Array<{ field: string, head: string, ref: 'vertex'|'edge'|'face', list: boolean, none: boolean }> }>} */
 function gridsOf(api, table, counts) {
@@ -39,21 +41,25 @@ function gridsOf(api, table, counts) {
       // "none" where the slides leave a cell empty: no face on a side, no edge at a vertex
       none: c.refers === 'face' || (d.rows === 'vertex' && c.refers === 'edge'),
     }));
-    const prefix = ROW_PREFIX[table]?.[d.rows];
+    const names = namesOf(table);
     return {
-      table: d.rows, representation, name, title: d.title, rows: counts[d.rows], rowRef: d.rows, columns,
-      rowName: (r) => (prefix ? `${prefix}${r + 1}` : label(d.rows, r)),
+      table: d.rows, representation, name, rows: counts[d.rows], rowRef: d.rows, columns,
+      title: table === 'faces' ? `${d.title}, counter-clockwise` : d.title,
+      rowName: (r) => `${names[d.rows]}${r + 1}`,
     };
   });
 }
 
 export const label = (ref, i) => (i === NONE ? 'none' : i === BLANK ? '' : elementLabel(ref, i));
+// The same in a table's own names (lecture 001's edge list: V1, E1, P1, λ).
+const labelIn = (names, ref, i) => (i === NONE ? names.none : i === BLANK ? '' : `${names[ref]}${i + 1}`);
 
 /**
  * Reads one typed label: {value} (0-based, NONE, BLANK) or {problem}.
  * @param {string} raw @param {'vertex'|'edge'|'face'} ref @param {number} count @param {boolean} allowNone
  */
-export function readLabel(raw, ref, count, allowNone) {
+export function readLabel(raw, ref, count, allowNone, names = NAMES) {
+  const PREFIX = names;
   const s = raw.trim();
   if (s === '') return { value: BLANK };
   if (NONE_WORDS.has(s.toLowerCase())) {
@@ -61,7 +67,7 @@ export function readLabel(raw, ref, count, allowNone) {
   }
   const m = /^([a-zA-Z]?)\s*(\d{1,7})$/.exec(s);
   const letters = { vertex: 'vV', edge: 'eE', face: 'fFpP' }[ref];
-  if (!m || (m[1] !== '' && !letters.includes(m[1]))) return { problem: `"${s.slice(0, 20)}" is not ${REF_NAME[ref]} (write ${PREFIX[ref]}1 to ${PREFIX[ref]}${count}${allowNone ? ', or none' : ''})` };
+  if (!m || (m[1] !== '' && !letters.includes(m[1]))) return { problem: `"${s.slice(0, 20)}" is not ${REF_NAME[ref]} (write ${PREFIX[ref]}1 to ${PREFIX[ref]}${count}${allowNone ? `, or ${names.none}` : ''})` };
   const n = Number(m[2]);
   if (n < 1 || n > count) return { problem: `"${s}" is not ${REF_NAME[ref]} of this mesh (${PREFIX[ref]}1 to ${PREFIX[ref]}${count})` };
   return { value: n - 1 };
@@ -87,6 +93,7 @@ export function createTableKind({ api, check, subject }) {
   }
   const countOf = (ref) => own[`${ref}Count`];
   const given = new Set(check.given ?? []);
+  const names = namesOf(check.table);
   const inputs = new Map(); // `${table}:${row}:${field}` -> input
 
   // A column the exercise gives, in format.js's names (the winged edge's vertex and face
@@ -107,7 +114,7 @@ export function createTableKind({ api, check, subject }) {
         const input = /** @type {HTMLInputElement} */ (h('input', {
           type: 'text', class: c.list ? 'cell list' : 'cell', spellcheck: 'false', autocomplete: 'off', autocapitalize: 'off',
           'aria-label': `${rowName} ${c.head}`, 'data-table': grid.table, 'data-row': r, 'data-field': c.field,
-          readonly: value !== null, value: value === null ? '' : value === NONE ? 'none' : label(c.ref, value),
+          readonly: value !== null, value: value === null ? '' : labelIn(names, c.ref, value),
         }));
         if (value !== null) input.classList.add('given');
         inputs.set(`${grid.table}:${r}:${c.field}`, { input, column: c, grid });
@@ -138,13 +145,13 @@ export function createTableKind({ api, check, subject }) {
         const parts = raw.split(/[\s,;]+/).filter((p) => p !== '');
         const out = [];
         for (const p of parts) {
-          const r = readLabel(p, x.column.ref, countOf(x.column.ref), false);
+          const r = readLabel(p, x.column.ref, countOf(x.column.ref), false, names);
           if (r.problem) problems.push({ x, text: r.problem });
           else out.push(r.value);
         }
         return out;
       }
-      const r = readLabel(raw, x.column.ref, countOf(x.column.ref), Boolean(x.column.none) || x.column.ref === 'edge');
+      const r = readLabel(raw, x.column.ref, countOf(x.column.ref), Boolean(x.column.none) || x.column.ref === 'edge', names);
       if (r.problem) { problems.push({ x, text: r.problem }); return BLANK; }
       return r.value;
     };
@@ -215,7 +222,7 @@ export function createTableKind({ api, check, subject }) {
       const width = grid.columns.length;
       return Array.from({ length: grid.rows }, (_, r) => grid.columns.map((c, k) => {
         const v = c.list ? flat[r] : flat[width * r + k];
-        return c.list ? v.map((x) => label(c.ref, x)).join(' ') : label(c.ref, v);
+        return c.list ? v.map((x) => labelIn(names, c.ref, x)).join(' ') : labelIn(names, c.ref, v);
       }));
     };
     return grids.map((grid) => h('table', { class: 'data-table exercise-grid worked' }, h('caption', {}, grid.title),

@@ -218,9 +218,11 @@ export function setupPanels(ctx, selection) {
     selection.pick = element;
     if (ctx.model) edit.update(ctx.model);
     tabs.markElements({ reveal: fromCanvas });
-    if (element?.kind === 'face' && state().walk === 'face' && state().face !== element.index) commit({ face: element.index, step: 0 }, { history: false });
+    // (while a walk is being predicted, its element is the exercise's)
+    const walkIsMine = ctx.ui.exercise !== 'walk';
+    if (walkIsMine && element?.kind === 'face' && state().walk === 'face' && state().face !== element.index) commit({ face: element.index, step: 0 }, { history: false });
     // A vertex picked on a mesh too big for handles (the stage's onSelect) walks from it too.
-    if (element?.kind === 'vertex' && state().walk === 'vertex' && state().vertex !== element.index) commit({ vertex: element.index, step: 0 }, { history: false });
+    if (walkIsMine && element?.kind === 'vertex' && state().walk === 'vertex' && state().vertex !== element.index) commit({ vertex: element.index, step: 0 }, { history: false });
     ctx.render();
   }
 
