@@ -81,18 +81,16 @@ val check_table(const val& face_offsets, const val& face_vertices, int32_t verte
         std::vector<AnswerFinding> findings;
         std::vector<int32_t> worked_flat;
         ListAnswer worked;
-        if (table == "faces") {
-            findings = check_faces_answer(fo, fv, vertex_count, list).findings;
-            worked = worked_faces_answer(fo, fv, vertex_count, list);
+        // (one pass each: the findings and the worked table together)
+        if (table == "faces" || table == "adjacency") {
+            ListTableResult m = table == "faces" ? mark_faces_answer(fo, fv, vertex_count, list) : mark_adjacency_answer(fo, fv, vertex_count, list);
+            findings = std::move(m.check.findings);
+            worked = std::move(m.worked);
         } else if (table == "edge-list") {
-            const EdgeListAnswer answer{to_ints(flat), list};
-            findings = check_edge_list_answer(fo, fv, vertex_count, answer).findings;
-            EdgeListAnswer w = worked_edge_list_answer(fo, fv, vertex_count, answer);
-            worked_flat = std::move(w.edges);
-            worked = std::move(w.polygons);
-        } else if (table == "adjacency") {
-            findings = check_adjacency_answer(fo, fv, vertex_count, list).findings;
-            worked = worked_adjacency_answer(fo, fv, vertex_count, list);
+            EdgeListTableResult m = mark_edge_list_answer(fo, fv, vertex_count, EdgeListAnswer{to_ints(flat), list});
+            findings = std::move(m.check.findings);
+            worked_flat = std::move(m.worked.edges);
+            worked = std::move(m.worked.polygons);
         } else {
             throw Error("unknown-table", "no exercise table '" + table.substr(0, 40) + "'; use faces, edge-list or adjacency");
         }

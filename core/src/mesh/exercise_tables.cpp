@@ -172,17 +172,12 @@ std::vector<int32_t> ccw_from(const std::vector<int32_t>& c, int32_t first) {
     return out;
 }
 
-struct FacesResult {
-    TableAnswerCheck check;
-    ListAnswer worked;
-};
-
-FacesResult run_faces(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices, int32_t vertex_count,
+ListTableResult run_faces(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices, int32_t vertex_count,
                       const ListAnswer& answer) {
     const WingedEdgeMesh mesh = exercise_mesh(face_offsets, face_vertices, vertex_count);
     const int32_t F = static_cast<int32_t>(face_offsets.size()) - 1;
     require_list(answer, F, "the face table", face_label);
-    FacesResult out;
+    ListTableResult out;
     out.worked.offsets.push_back(0);
     for (int32_t f = 0; f < F; ++f) {
         const std::vector<int32_t> c(face_vertices.begin() + face_offsets[f], face_vertices.begin() + face_offsets[f + 1]);
@@ -427,12 +422,7 @@ void EdgeListChecker::check_polygons() {
     }
 }
 
-struct EdgeListResult {
-    TableAnswerCheck check;
-    EdgeListAnswer worked;
-};
-
-EdgeListResult run_edge_list(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices, int32_t vertex_count,
+EdgeListTableResult run_edge_list(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices, int32_t vertex_count,
                              const EdgeListAnswer& answer) {
     const WingedEdgeMesh mesh = exercise_mesh(face_offsets, face_vertices, vertex_count);
     require(answer.edges.size() % 4 == 0, "invalid-answer",
@@ -449,7 +439,7 @@ EdgeListResult run_edge_list(const std::vector<int32_t>& face_offsets, const std
     c.number_edges();
     for (int32_t r = 0; r < c.rows; ++r) c.check_faces(r);
     c.check_polygons();
-    EdgeListResult out;
+    EdgeListTableResult out;
     std::stable_sort(c.row_findings.begin(), c.row_findings.end(), [](const AnswerFinding& a, const AnswerFinding& b) { return a.row < b.row; });
     for (auto* list : {&c.row_findings, &c.missing_findings, &c.polygon_findings})
         for (AnswerFinding& x : *list) out.check.findings.push_back(std::move(x));
@@ -475,12 +465,7 @@ EdgeListResult run_edge_list(const std::vector<int32_t>& face_offsets, const std
 }
 
 // ------------------------------------------------------------------ adjacency
-struct AdjacencyResult {
-    TableAnswerCheck check;
-    ListAnswer worked;
-};
-
-AdjacencyResult run_adjacency(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices, int32_t vertex_count,
+ListTableResult run_adjacency(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices, int32_t vertex_count,
                               const ListAnswer& answer) {
     const WingedEdgeMesh mesh = exercise_mesh(face_offsets, face_vertices, vertex_count);
     require_list(answer, vertex_count, "the adjacency list", vertex_label);
@@ -490,7 +475,7 @@ AdjacencyResult run_adjacency(const std::vector<int32_t>& face_offsets, const st
         around[mesh.edge(e).start].push_back(mesh.edge(e).end);
         around[mesh.edge(e).end].push_back(mesh.edge(e).start);
     }
-    AdjacencyResult out;
+    ListTableResult out;
     out.worked.offsets.push_back(0);
     for (int32_t v = 0; v < vertex_count; ++v) {
         const std::string rule = around[v].empty() ? vertex_label(v) + " belongs to no face, so it has no neighbours"
@@ -509,6 +494,18 @@ AdjacencyResult run_adjacency(const std::vector<int32_t>& face_offsets, const st
 
 } // namespace
 
+ListTableResult mark_faces_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
+                                  int32_t vertex_count, const ListAnswer& answer) {
+    return run_faces(face_offsets, face_vertices, vertex_count, answer);
+}
+EdgeListTableResult mark_edge_list_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
+                                          int32_t vertex_count, const EdgeListAnswer& answer) {
+    return run_edge_list(face_offsets, face_vertices, vertex_count, answer);
+}
+ListTableResult mark_adjacency_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
+                                      int32_t vertex_count, const ListAnswer& answer) {
+    return run_adjacency(face_offsets, face_vertices, vertex_count, answer);
+}
 TableAnswerCheck check_faces_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                     int32_t vertex_count, const ListAnswer& answer) {
     return run_faces(face_offsets, face_vertices, vertex_count, answer).check;

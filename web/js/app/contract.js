@@ -190,7 +190,7 @@
  *   kinds: string[],
  *   subject(view: View, model: Model, state: State, ctx: Ctx): { mesh?: any, curve?: any, curves?: Object<string, any>, joints?: Array<{ a: any, b: any }>, patch?: any },
  *   keepsState?: string[],
- *   showWalk?: (ctx: Ctx, around: string, element: number, known: number) => void,
+ *   showWalk?: (ctx: Ctx, around: string, element: number) => void,
  *   suggest?: (kind: string, state: State, asked: { api: any, subject: any }) => { check: any, hide: string[], question: string },
  * }} ExerciseSupport
  */

@@ -39,8 +39,8 @@ function fieldsOf(kind, subject) {
         ...(subject.curves ? [pick('property.family', 'Family', Object.fromEntries(Object.keys(subject.curves).map((f) => [f, f])))] : [])])];
 }
 
-// The fields a quantity does not use are left out of the check.
-const VALUE_FIELDS = ['i', 'u', 'v', 'segment', 'row', 'col', 'index'];
+// Every field some quantity uses (format.js QUANTITIES); a quantity's unused ones are left out.
+const VALUE_FIELDS = [...new Set(Object.values(QUANTITIES).flatMap((q) => q.fields))];
 
 /** @param {{ ctx: any, lesson: any, view: any, message: any }} parts */
 export function openAuthorDialog({ ctx, lesson, view, message }) {

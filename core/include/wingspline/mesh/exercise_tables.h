@@ -92,4 +92,21 @@ TableAnswerCheck check_adjacency_answer(const std::vector<int32_t>& face_offsets
 ListAnswer worked_adjacency_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                    int32_t vertex_count, const ListAnswer& answer);
 
+// The check and the worked table of one answer from one pass (what a page shows together;
+// check_* and worked_* above each run the whole check).
+struct ListTableResult {
+    TableAnswerCheck check;
+    ListAnswer worked;
+};
+struct EdgeListTableResult {
+    TableAnswerCheck check;
+    EdgeListAnswer worked;
+};
+ListTableResult mark_faces_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
+                                  int32_t vertex_count, const ListAnswer& answer);
+EdgeListTableResult mark_edge_list_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
+                                          int32_t vertex_count, const EdgeListAnswer& answer);
+ListTableResult mark_adjacency_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
+                                      int32_t vertex_count, const ListAnswer& answer);
+
 } // namespace wingspline::mesh

@@ -52,7 +52,7 @@ export function createWalkKind({ api, check, subject, support, ctx }) {
     setChildren(path, `The walk ${where}: `, steps.slice(0, Math.min(known, steps.length)).map((s, i) => [i ? ' → ' : '', h('strong', {}, label('edge', s.edge))]), done ? ` → back to ${label('edge', steps[0].edge)}` : ' → ?');
     prompt.textContent = done ? 'The walk is closed: every edge is found.' : `Step ${known}: the walk is at ${label('edge', steps[known - 1].edge)}. Which edge comes next?`;
     for (const r of radios) { r.checked = false; r.disabled = done; }
-    support.showWalk?.(ctx, check.around, check.element - 1, known - 1);
+    support.showWalk?.(ctx, check.around, check.element - 1);
   }
 
   return {
