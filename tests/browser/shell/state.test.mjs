@@ -301,16 +301,18 @@ describe('Values are checked where they enter with the limits of the state forma
 });
 
 describe('Classroom fixture: saved work this page cannot read', () => {
-  test('is kept aside, never written over (a state from a newer Wingspline)', async () => {
+  test('is kept in the History as it was, never written over (a state from a newer Wingspline)', async () => {
     const page = await env.openLesson(new URL('fixture.html', env.site.url).href);
     const newer = envelopeCode('fixture', 99, { points: [{ x: 5, y: 5 }], future: true });
     await page.evaluate(() => window.wingspline.flush()); // the page's own first save is done
     await page.evaluate((code) => localStorage.setItem('wingspline:fixture:state', code), newer);
     await page.goto(new URL('fixture.html', env.site.url).href.replace(/#.*/, '') + '?again');
     await waitReady(page);
-    assert.match(await page.evaluate(() => window.wingspline.message()), /could not be read.*kept aside/);
+    assert.match(await page.evaluate(() => window.wingspline.message()), /could not be read.*kept in the History as it was/);
     await editByKeyboard(page);
-    assert.equal(await page.evaluate(() => localStorage.getItem('wingspline:fixture:unreadable')), newer, 'the unreadable work is kept');
+    await page.waitForFunction(() => window.wingspline.historyEntries().then((list) => list.length > 0));
+    const entries = await page.evaluate(() => window.wingspline.historyEntries());
+    assert.deepEqual(entries.map((e) => [e.reason, e.raw]), [['unreadable', newer]], 'the unreadable work is kept as it was');
     assert.notEqual(await page.evaluate(() => localStorage.getItem('wingspline:fixture:state')), newer);
   });
 });

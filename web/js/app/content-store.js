@@ -1,67 +1,49 @@
 // Large parts of a lesson state (an imported mesh) kept in IndexedDB by the SHA-256 of
-// their text, so the link and local storage only hold a reference to them (issue 13, item
-// 12; docs/state-format.md, "Large fields"). share-link.js decides what is stored here and
+// their text, so the link and local storage only hold a reference to them
+// (docs/state-format.md, "Large fields"). share-link.js decides what is stored here and
 // checks, when reading, that the text still has its hash.
 //
-// One database per origin, `wingspline-content`, one object store `content`:
-// { hash: 'sha256-<64 hex>', text, used: <ms since 1970> }. The MAX_ENTRIES most recently
-// used entries are kept; older ones are dropped when a new one is written (a link that
-// refers to a dropped entry says so and asks for the file).
+// Stores `content` { hash, text } and `meta` { hash, chars, used } of the database in
+// idb.js. What is kept: every entry that saved work (any lesson's, in local storage) or an
+// entry of the history refers to, whatever its age; of the others, the
+// KEEP_UNREFERENCED most recently used (an import not yet saved, a link opened a moment ago),
+// within the budget of work-history.js. Nothing referred to is ever dropped to make room:
+// when the browser refuses a write, the caller says so and keeps the work.
+import { createDatabase, request, done } from './idb.js';
 
-const DB_NAME = 'wingspline-content';
-const STORE = 'content';
-export const MAX_ENTRIES = 16;
+export const KEEP_UNREFERENCED = 16;
 
-function request(req) {
-  return new Promise((resolve, reject) => {
-    req.onsuccess = () => resolve(req.result);
-    req.onerror = () => reject(req.error ?? new Error('IndexedDB request failed'));
-  });
-}
-
-function done(tx) {
-  return new Promise((resolve, reject) => {
-    tx.oncomplete = () => resolve();
-    tx.onerror = () => reject(tx.error ?? new Error('IndexedDB transaction failed'));
-    tx.onabort = () => reject(tx.error ?? new Error('IndexedDB transaction aborted'));
-  });
-}
-
-// A content store on this browser's IndexedDB; every method rejects when IndexedDB is not
-// available (some private modes), and the caller then keeps the value inline.
-export function createContentStore() {
-  let opened = null;
-  function open() {
-    if (!opened) {
-      opened = new Promise((resolve, reject) => {
-        if (typeof indexedDB === 'undefined') { reject(new Error('IndexedDB is not available')); return; }
-        const req = indexedDB.open(DB_NAME, 1);
-        req.onupgradeneeded = () => {
-          const store = req.result.createObjectStore(STORE, { keyPath: 'hash' });
-          store.createIndex('used', 'used');
-        };
-        req.onsuccess = () => resolve(req.result);
-        req.onerror = () => reject(req.error ?? new Error('IndexedDB could not be opened'));
-        req.onblocked = () => reject(new Error('IndexedDB is blocked by another tab'));
-      });
-      opened.catch(() => { opened = null; });
-    }
-    return opened;
-  }
+/**
+ * A content store on this browser's IndexedDB; every method rejects when IndexedDB is not
+ * available (some private modes), and the caller then keeps the value inline.
+ * `referenced()`: the hashes that saved work and the history refer to (a page gives it; a
+ * worker, which has no local storage, does not, and never drops anything).
+ * @param {{ db?: { open(): Promise<IDBDatabase> }, referenced?: (() => Promise<Set<string>>) | null, budgetChars?: number }} [options]
+ */
+export function createContentStore({ db = createDatabase(), referenced = null, budgetChars = Infinity } = {}) {
   // Hashes known to be in the database (this page wrote or read them): no second write.
   const known = new Set();
+  // Hashes this page shows or is about to save: never dropped by this page's collection.
+  const pinned = new Set();
 
-  return {
+  const store = {
+    database: db,
     // A hash another context of the page (the import worker) has just written: no second write.
     markStored(hash) {
       known.add(hash);
+      pinned.add(hash);
+      store.collect().catch(() => {});
+    },
+    // The hashes the page's current state refers to (the persister tells after each write).
+    pin(hashes) {
+      pinned.clear();
+      for (const h of hashes) pinned.add(h);
     },
     async get(hash) {
-      const db = await open();
-      const tx = db.transaction(STORE, 'readwrite');
-      const store = tx.objectStore(STORE);
-      const entry = await request(store.get(hash));
-      if (entry) store.put({ ...entry, used: Date.now() });
+      const idb = await db.open();
+      const tx = idb.transaction(['content', 'meta'], 'readwrite');
+      const entry = await request(tx.objectStore('content').get(hash));
+      if (entry && typeof entry.text === 'string') tx.objectStore('meta').put({ hash, chars: entry.text.length, used: Date.now() });
       await done(tx);
       if (!entry || typeof entry.text !== 'string') return null;
       known.add(hash);
@@ -69,27 +51,57 @@ export function createContentStore() {
     },
     async put(hash, text) {
       if (known.has(hash)) return;
-      const db = await open();
-      const tx = db.transaction(STORE, 'readwrite');
-      const store = tx.objectStore(STORE);
-      store.put({ hash, text, used: Date.now() });
-      // Keep the newest MAX_ENTRIES: walk the index from the oldest and drop the surplus.
-      const count = await request(store.count());
-      let surplus = count - MAX_ENTRIES;
-      if (surplus > 0) {
-        const cursorReq = store.index('used').openCursor();
-        await new Promise((resolve, reject) => {
-          cursorReq.onsuccess = () => {
-            const cursor = cursorReq.result;
-            if (!cursor || surplus <= 0) { resolve(); return; }
-            if (cursor.value.hash !== hash) { cursor.delete(); surplus -= 1; known.delete(cursor.value.hash); }
-            cursor.continue();
-          };
-          cursorReq.onerror = () => reject(cursorReq.error);
-        });
-      }
+      const idb = await db.open();
+      const tx = idb.transaction(['content', 'meta'], 'readwrite');
+      tx.objectStore('content').put({ hash, text, used: Date.now() });
+      tx.objectStore('meta').put({ hash, chars: text.length, used: Date.now() });
       await done(tx);
       known.add(hash);
+      pinned.add(hash); // until the persister says what the saved state refers to (pin)
+      await store.collect().catch(() => {});
+    },
+    // { hash: chars } of every entry.
+    async sizes() {
+      const idb = await db.open();
+      const all = await request(idb.transaction('meta').objectStore('meta').getAll());
+      return new Map(all.map((m) => [m.hash, m.chars]));
+    },
+    // Drops the entries nothing refers to, beyond the most recently used KEEP_UNREFERENCED and
+    // beyond the budget (with `keep`: hashes the caller knows are referred to, e.g. the
+    // history it has just pruned). Resolves to the hashes dropped.
+    async collect(keep = null) {
+      if (!referenced) return [];
+      const refs = keep ?? await referenced();
+      for (const h of pinned) refs.add(h);
+      const idb = await db.open();
+      const metas = await request(idb.transaction('meta').objectStore('meta').getAll());
+      let total = metas.filter((m) => refs.has(m.hash)).reduce((sum, m) => sum + m.chars, 0);
+      const loose = metas.filter((m) => !refs.has(m.hash)).sort((a, b) => b.used - a.used);
+      const drop = [];
+      loose.forEach((m, i) => {
+        if (i >= KEEP_UNREFERENCED || total + m.chars > budgetChars) drop.push(m.hash);
+        else total += m.chars;
+      });
+      if (!drop.length) return drop;
+      const tx = idb.transaction(['content', 'meta'], 'readwrite');
+      for (const hash of drop) {
+        tx.objectStore('content').delete(hash);
+        tx.objectStore('meta').delete(hash);
+        known.delete(hash);
+      }
+      await done(tx);
+      return drop;
+    },
+    // Everything gone (Forget my work on this computer).
+    async clear() {
+      const idb = await db.open();
+      const tx = idb.transaction(['content', 'meta'], 'readwrite');
+      tx.objectStore('content').clear();
+      tx.objectStore('meta').clear();
+      await done(tx);
+      known.clear();
+      pinned.clear();
     },
   };
+  return store;
 }

@@ -215,6 +215,7 @@
  *   handles?: (view: View, model: Model, state: State) => Handle[],
  *   moveHandle?: (view: View, state: State, id: string, x: number, y: number, model: Model) => State | null,
  *   describe?: (view: View, model: Model, state: State) => string,
+ *   summarize?: (state: State) => string,
  *   fitView?: (view: View, model: Model, stage: Stage) => CameraView,
  *   click?: (view: View, x: number, y: number, ctx: Ctx, event: PointerEvent) => boolean,
  *   onSelect?: (view: View, id: string | null, ctx: Ctx) => void,
@@ -230,7 +231,8 @@
  * view changes). `draw` draws on the canvas or the SVG figure, no mathematics. `afterFrame`
  * draws side canvases (plots) after each canvas frame, never for the SVG export. `handles`
  * lists the draggable points; `moveHandle` returns the state with one moved (null: refused).
- * `describe` is the text for screen readers. `click` on empty canvas returns true if the
+ * `describe` is the text for screen readers. `summarize` is one line of what a state holds
+ * ("grid 4 x 3, 2 edits"), shown with each entry of the History. `click` on empty canvas returns true if the
  * lesson consumed it. `onSelect` follows the selected handle. `usesHoverPoint`: redraw on
  * every pointer move, not only when the hovered handle changes. `inspector: false`: no shell
  * inspector (the lesson has its own inputs). `importers[ext]` turns a file into a state.

@@ -1,21 +1,34 @@
 // Keeps a lesson's state in the page URL (#s=...) and in local storage, and restores it.
 // The URL is updated with replaceState, so the back button undoes navigation, not edits.
-// Writing is debounced (and compression is asynchronous), so an edit made just before a
-// reload is also written synchronously to session storage on pagehide, together with the
-// link it supersedes; a reload of that same link restores the newer state.
 // Large fields (an imported mesh) are kept in IndexedDB by content hash and the link refers
-// to them (share-link.js, content-store.js).
+// to them (share-link.js, content-store.js). docs/state-format.md describes the formats,
+// docs/classroom.md the rules below as a person meets them.
 //
-// The person's saved work is never lost to a link or a state that cannot be read (issue
-// 13, items 12 and 18): a link that cannot be used shows the saved work instead; a link
-// that can replaces it as one undoable step (restoreState's `previous`); a saved state
-// this page cannot read is kept aside under `wingspline:<lesson>:unreadable` before
-// anything is written over it.
-import { decodeState, readEnvelopeResolved, externalize, externalizeKnown, compressEnvelope, envelope, stringifyExact } from './share-link.js';
+// Nothing saved is lost:
+// - A link that cannot be used shows the saved work instead; a link that can replaces it as
+//   one undoable step, and the replaced work goes into the history (work-history.js), as
+//   it does for Reset, an import, a restore and a clash between tabs.
+// - Saved work this page cannot read is set aside into the history, as it was, before
+//   anything is written over it.
+// - Tabs: each save carries a revision (saved-record.js); a tab writes only over the
+//   revision it last read. A tab that notices a later save of another tab (storage events,
+//   and again when it is shown) takes it, unless it has an edit of its own not yet saved; a
+//   change of the view alone (pan, zoom) never writes over a later drawing. When two tabs
+//   edited the same revision, the later save is the current work, the earlier goes into the
+//   history, and the tab whose work was set aside says so, with one click to bring it back.
+// - A tab closed right after an edit: the edit not yet written is written to local storage
+//   synchronously on pagehide (as JSON: compression is asynchronous), by the same rule.
+// - A page shown inside another page's frame, and an embed, read and write nothing of it.
+// - A state the reader would refuse (longer than a link may be: an imported mesh kept inline
+//   where IndexedDB is missing) is never saved: the earlier work stays, and the page says so.
+import { decodeState, externalize, externalizeKnown, compressEnvelope, envelope, stringifyExact, MAX_LINK_CHARS } from './share-link.js';
+import { localStore, readRecord, writeRecord, decodeRecord, storageKey, textHash } from './saved-record.js';
+import { setAsideNow } from './work-history.js';
 
-const storageKey = (lesson) => `wingspline:${lesson.id}:state`;
-const pendingKey = (lesson) => `wingspline:${lesson.id}:pending`;
-const unreadableKey = (lesson) => `wingspline:${lesson.id}:unreadable`;
+const legacyPendingKey = (lesson) => `wingspline:${lesson.id}:pending`;
+// The link code this tab last put in its address bar (session storage survives a reload of
+// the tab): an address that is this tab's own is not a link to open over newer saved work.
+const ownCodeKey = (lesson) => `wingspline:${lesson.id}:own-code`;
 
 function sessionStore() {
   try {
@@ -25,23 +38,12 @@ function sessionStore() {
   }
 }
 
-// The state this tab had not yet written when it was last hidden, if it belongs to `code`.
-async function takePending(lesson, code, contents) {
-  const session = sessionStore();
-  const raw = session?.getItem(pendingKey(lesson));
-  if (!raw) return null;
-  session.removeItem(pendingKey(lesson));
+/** Whether this page is shown inside another page (a frame of any origin). */
+export function isFramed() {
   try {
-    const record = JSON.parse(raw);
-    // The pending edit belongs to the address it was made at; or, when the page was writing
-    // its previous state as it went away, to the code that write put in the address bar and
-    // in storage just before the reload (the same page's own last write, not another link).
-    const ownWrite = record?.writing === true && code !== null && code === safeStorage()?.getItem(storageKey(lesson));
-    if (record?.fromCode !== code && !ownWrite) return null;
-    const { state, problems } = await readEnvelopeResolved(lesson, JSON.parse(record.json), { contents });
-    return problems.length ? null : state;
+    return window.self !== window.top;
   } catch {
-    return null;
+    return true;
   }
 }
 
@@ -50,19 +52,26 @@ export function readHashCode() {
   return params.get('s');
 }
 
-function safeStorage() {
+// The drawing of a state: its text without the view (pan and zoom), as a short hash.
+function drawingOf(lesson, written) {
+  const { view, ...drawing } = written ?? {};
+  return textHash(stringifyExact(envelope(lesson, drawing)));
+}
+
+// A pending edit left in session storage by a page of an earlier version as it went away
+// (it belongs to the address it was made at).
+async function takeLegacyPending(lesson, code, contents) {
+  const session = sessionStore();
+  const raw = session?.getItem(legacyPendingKey(lesson));
+  if (!raw) return null;
+  session.removeItem(legacyPendingKey(lesson));
   try {
-    const probe = '__wingspline_probe__';
-    window.localStorage.setItem(probe, '1');
-    window.localStorage.removeItem(probe);
-    return window.localStorage;
+    const record = JSON.parse(raw);
+    if (record?.fromCode !== code) return null;
+    const { state, problems } = await decodeRecord(lesson, { json: record.json });
+    return problems.length ? null : state;
   } catch {
-    // Private mode, storage disabled, or full to the last byte: reading still works.
-    try {
-      return window.localStorage ?? null;
-    } catch {
-      return null;
-    }
+    return null;
   }
 }
 
@@ -74,40 +83,43 @@ const sameState = (a, b) => {
   }
 };
 
-// A saved state this page cannot read (made by a newer Wingspline, its mesh gone from this
-// browser) is moved aside, so the next save does not destroy it.
-function keepAside(lesson, storage, code) {
-  try {
-    storage?.setItem(unreadableKey(lesson), code);
-  } catch {
-    // storage full: the saved code stays where it is until the next successful save
-  }
+/**
+ * Saved work this page cannot read (made by a newer Wingspline, its mesh gone from this
+ * browser): set aside as it was, for the history, before anything is written over it.
+ */
+function keepAside(lesson, storage, record, why) {
+  if (!record) return;
+  setAsideNow(storage, { lesson: lesson.id, reason: 'unreadable', summary: `saved work this version could not read: ${why}`.slice(0, 200), raw: record.raw });
 }
 
-// Resolves to { state, source: 'link'|'storage'|'default', problem, previous }.
-// `previous`: the saved work a link replaced (undo returns to it), or null.
+// Resolves to { state, source: 'link'|'storage'|'default', problem, previous, base }.
+// `previous`: the saved work a link replaced (undo returns to it), or null. `base`: the
+// revision read, for the persister.
 export async function restoreState(lesson, { contents } = {}) {
   const code = readHashCode();
-  const storage = safeStorage();
-  const storedCode = storage?.getItem(storageKey(lesson)) ?? null;
-  const pending = await takePending(lesson, code, contents);
-  if (pending) return { state: pending, source: code === null ? 'storage' : 'link', problem: null, previous: null };
+  const storage = localStore();
+  const record = readRecord(storage, lesson.id);
+  const base = { rev: record?.rev ?? 0, drawing: record?.drawing ?? null };
+  const legacy = await takeLegacyPending(lesson, code, contents);
+  if (legacy) return { state: legacy, source: code === null ? 'storage' : 'link', problem: null, previous: null, base };
 
   let saved = null;
   let savedError = null;
-  if (storedCode) {
+  if (record) {
     try {
-      saved = await decodeState(lesson, storedCode, { contents });
+      saved = await decodeRecord(lesson, record, { contents });
     } catch (err) {
       savedError = err.message;
-      keepAside(lesson, storage, storedCode);
+      keepAside(lesson, storage, record, err.message);
     }
   }
   const savedProblem = savedError
-    ? `Your saved work could not be read (${savedError}); it is kept aside in this browser`
+    ? `Your saved work could not be read (${savedError}); it is kept in the History as it was`
     : saved?.problems.length ? `Part of your saved work was reset (${saved.problems[0]})` : null;
 
-  if (code !== null && code !== storedCode) {
+  // This tab's own address (a reload) or the saved work's own link is not a link to open.
+  const own = code !== null && (code === record?.code || code === sessionStore()?.getItem(ownCodeKey(lesson)));
+  if (code !== null && !own) {
     try {
       const { state, problems } = await decodeState(lesson, code, { contents });
       const previous = saved && !sameState(saved.state, state) ? saved.state : null;
@@ -116,30 +128,32 @@ export async function restoreState(lesson, { contents } = {}) {
         source: 'link',
         problem: problems.length ? `Part of this link was not usable (${problems[0]}); that part was reset.` : null,
         previous,
+        base,
       };
     } catch (err) {
       if (saved) {
-        return { state: saved.state, source: 'storage', problem: `This share link could not be used: ${err.message}. Showing your saved work instead.`, previous: null };
+        return { state: saved.state, source: 'storage', problem: `This share link could not be used: ${err.message}. Showing your saved work instead.`, previous: null, base };
       }
-      return { state: lesson.defaultState(), source: 'default', problem: `This share link could not be used: ${err.message}. Showing the lesson's starting point instead.`, previous: null };
+      return { state: lesson.defaultState(), source: 'default', problem: `This share link could not be used: ${err.message}. Showing the lesson's starting point instead.`, previous: null, base };
     }
   }
-  if (saved) return { state: saved.state, source: code === null ? 'storage' : 'link', problem: savedProblem ? `${savedProblem}.` : null, previous: null };
-  if (savedError) return { state: lesson.defaultState(), source: 'default', problem: `${savedProblem}; starting fresh.`, previous: null };
-  return { state: lesson.defaultState(), source: 'default', problem: null, previous: null };
+  if (saved) return { state: saved.state, source: 'storage', problem: savedProblem ? `${savedProblem}.` : null, previous: null, base };
+  if (savedError) return { state: lesson.defaultState(), source: 'default', problem: `${savedProblem}; starting fresh.`, previous: null, base };
+  return { state: lesson.defaultState(), source: 'default', problem: null, previous: null, base };
 }
 
-// An embed (docs/embed.md) shows its link's state, or the lesson's starting point when the
-// link cannot be used, and reads nothing of the person's saved work (nor takes this tab's
-// pending state, nor moves anything aside): an embed never touches that work.
+// An embed (docs/embed.md), or a page framed by another page, shows its link's state, or
+// the lesson's starting point when the link cannot be used, and reads nothing of the
+// person's saved work (nor moves anything aside): it never touches that work.
 export async function restoreLinkOnly(lesson, { contents } = {}) {
   const code = readHashCode();
-  if (code === null) return { state: lesson.defaultState(), source: 'default', problem: null, previous: null };
+  const base = { rev: 0, drawing: null };
+  if (code === null) return { state: lesson.defaultState(), source: 'default', problem: null, previous: null, base };
   try {
     const { state, problem } = await readLink(lesson, code, { contents });
-    return { state, source: 'link', problem, previous: null };
+    return { state, source: 'link', problem, previous: null, base };
   } catch (err) {
-    return { state: lesson.defaultState(), source: 'default', problem: `This share link could not be used: ${err.message}. Showing the lesson's starting point instead.`, previous: null };
+    return { state: lesson.defaultState(), source: 'default', problem: `This share link could not be used: ${err.message}. Showing the lesson's starting point instead.`, previous: null, base };
   }
 }
 
@@ -150,47 +164,135 @@ export async function readLink(lesson, code, { contents } = {}) {
   return { state, problem: problems.length ? `Part of this link was not usable (${problems[0]}); that part was reset.` : null };
 }
 
-// Returns a persister: save(state) writes URL and storage, debounced.
-// notify(kind, detail) is called once per kind when something cannot be kept:
-// 'storage-full' (local storage refuses the state: the link still holds it) and
-// 'content-not-stored' (a large field could not be put in IndexedDB).
-// keep: false (an embed): nothing is written, neither the address bar nor local storage nor
-// the pending state of this tab; shareLink still makes the full lesson's link.
-export function createPersister(lesson, { delayMs = 200, contents = null, notify = (kind, detail) => {}, keep = true } = {}) {
+// Navigator locks, where the browser has them: one tab at a time reads and writes a lesson's
+// record (local storage has no compare-and-set of its own).
+function withLock(name, fn) {
+  const locks = /** @type {any} */ (globalThis.navigator)?.locks;
+  return locks?.request ? locks.request(name, fn) : fn();
+}
+
+/**
+ * Returns a persister: save(state, { replacing }) writes URL and storage, debounced.
+ * notify(kind, detail) is called once per kind when something cannot be kept:
+ * 'storage-full' (local storage refuses the state: the link still holds it),
+ * 'content-not-stored' (a large field could not be put in IndexedDB) and 'too-long' (the
+ * state is longer than a link may be: it is not saved, the earlier work stays).
+ * otherTab(record, { setAside }) is called when another tab saved later work and this tab
+ * has nothing of its own waiting (the shell shows it; `setAside`: this tab's work was the
+ * one replaced).
+ * keep: false (an embed, a framed page, an exercise): nothing is written, neither the
+ * address bar nor local storage; shareLink still makes the full lesson's link.
+ * @param {any} lesson
+ * @param {{ delayMs?: number, contents?: any, history?: any, notify?: (kind: string, detail?: any) => void, keep?: boolean,
+ *   base?: { rev: number, drawing: string | null }, saved?: any, summarize?: (state: any) => string, otherTab?: (record: any, info: { setAside: boolean }) => void }} options
+ */
+export function createPersister(lesson, {
+  delayMs = 200, contents = null, history = null, notify = () => {}, keep = true,
+  base = { rev: 0, drawing: null }, saved = null, summarize = () => '', otherTab = () => {},
+} = {}) {
+  const tab = `t-${Date.now().toString(36)}-${Math.random().toString(36).slice(2, 10)}`;
+  const lockName = `wingspline:${lesson.id}:save`;
   let timer = null;
   let pending = null;
+  let replacing = null; // why the next write replaces the saved work (it goes into the history)
+  let inflightState = null; // taken by a write that has not reached storage yet
   let lastCode = readHashCode();
-  const storage = safeStorage();
+  let adopted = null; // a state taken from another tab: already saved, not written again
+  let readRev = base.rev; // the revision of the saved work this tab last read or wrote
+  let readDrawing = base.drawing;
+  let savedState = saved; // the state object known to be the saved work: never written again
+  const storage = localStore();
   const said = new Set();
   const sayOnce = (kind, detail) => {
     if (said.has(kind)) return;
     said.add(kind);
     notify(kind, detail);
   };
-
-  // Synchronous last word before the page goes away (reload, navigation, tab closed).
-  function keepPending() {
-    if (!pending) return;
+  const summaryOf = (state) => {
     try {
-      sessionStore()?.setItem(pendingKey(lesson), JSON.stringify({ fromCode: readHashCode(), writing: writing > 0, json: stringifyExact(envelope(lesson, externalizeKnown(lesson, pending))) }));
+      return String(summarize(state) ?? '').slice(0, 200);
     } catch {
-      // storage disabled or full: the debounced write is all there is
+      return '';
+    }
+  };
+
+  // Keeps `record` (the saved work about to be replaced) in the history.
+  async function keepInHistory(record, reason) {
+    const entry = { lesson: lesson.id, reason, summary: record.summary ?? 'saved work', time: record.at ?? Date.now(), ...(record.code !== undefined ? { code: record.code } : { json: record.json }) };
+    const id = history ? await history.add(entry).catch(() => null) : null;
+    if (id === null && !setAsideNow(storage, entry)) return false;
+    return true;
+  }
+
+  // The rule of tabs, shared by the asynchronous write and the one on pagehide: what to do
+  // with the saved record `now` when this tab writes a state whose drawing is `drawing`.
+  function decide(now, drawing) {
+    const stale = (now?.rev ?? 0) !== readRev;
+    if (!stale) return { write: true, clash: false };
+    // Only the view changed here since the saved work was read: never rewrite a later drawing.
+    if (drawing === readDrawing) return { write: now?.drawing === drawing, clash: false, take: now?.drawing !== drawing };
+    if (now?.drawing === drawing) return { write: true, clash: false };
+    return { write: true, clash: true };
+  }
+
+  // Synchronous last word before the page goes away (reload, navigation, tab closed): the
+  // edit not yet written reaches local storage, as JSON, under the same rule.
+  function keepPending() {
+    const state = pending ?? inflightState;
+    if (!state || state === savedState) return;
+    try {
+      const written = externalizeKnown(lesson, state);
+      const json = stringifyExact(envelope(lesson, written));
+      if (json.length > MAX_LINK_CHARS) return;
+      const drawing = drawingOf(lesson, written);
+      const now = readRecord(storage, lesson.id);
+      if (now?.json === json) return;
+      const { write, clash } = decide(now, drawing);
+      if (!write) return;
+      const aside = Boolean(now && (clash || (replacing && now.drawing !== drawing)));
+      if (aside) {
+        setAsideNow(storage, { lesson: lesson.id, reason: clash ? 'clash' : replacing, summary: now.summary ?? 'saved work', time: now.at ?? Date.now(), ...(now.code !== undefined ? { code: now.code } : { json: now.json }) });
+      }
+      const rec = writeRecord(storage, lesson.id, { rev: (now?.rev ?? 0) + 1, tab, drawing, summary: summaryOf(state), json, setAside: aside && now?.tab && now.tab !== tab ? { tab: now.tab, rev: now.rev } : null });
+      readRev = rec.rev;
+      readDrawing = drawing;
+      savedState = state;
+      pending = null;
+    } catch {
+      // storage disabled or full: the debounced write was all there is
     }
   }
-  if (keep) window.addEventListener('pagehide', keepPending);
+  const listen = () => {
+    window.addEventListener('pagehide', keepPending);
+    window.addEventListener('storage', (event) => { if (event.key === storageKey(lesson.id) || event.key === null) noticeOtherTab(); });
+    document.addEventListener('visibilitychange', () => { if (document.visibilityState === 'visible') noticeOtherTab(); });
+  };
+  if (keep) listen();
+
+  // Another tab may have saved: take its work when this tab has nothing of its own waiting
+  // (a write under way or due decides by the rule above instead).
+  function noticeOtherTab() {
+    if (!keep) return;
+    const now = readRecord(storage, lesson.id);
+    if (!now || now.rev === readRev || now.tab === tab) return;
+    if (now.drawing !== null && now.drawing === readDrawing) {
+      readRev = now.rev; // only the other tab's view changed: this tab keeps its own
+      return;
+    }
+    if (pending || inflightState || timer) return;
+    otherTab(now, { setAside: now.setAside?.tab === tab });
+  }
 
   let inflight = Promise.resolve();
-  let writing = 0; // writes under way (their code may reach the address bar after a pagehide)
   function flush() {
     timer = null;
-    writing += 1;
-    inflight = inflight.then(write).catch(() => { /* the next save tries again */ }).finally(() => { writing -= 1; });
+    inflight = inflight.then(write).catch(() => { /* the next save tries again */ });
     return inflight;
   }
 
   async function linkOf(state) {
     const { state: written, refs, unstored } = await externalize(lesson, state, contents);
-    return { code: await compressEnvelope(lesson, written), refs, unstored };
+    return { code: await compressEnvelope(lesson, written), refs, unstored, written };
   }
 
   // Writes run one after the other, so a slow compression can never let an older state
@@ -198,35 +300,107 @@ export function createPersister(lesson, { delayMs = 200, contents = null, notify
   async function write() {
     const state = pending;
     if (state === null) return;
-    const { code, unstored } = await linkOf(state);
-    if (pending === state) pending = null;
-    if (unstored.length) sayOnce('content-not-stored', unstored);
-    if (code === lastCode) return;
-    lastCode = code;
-    const url = new URL(window.location.href);
-    url.hash = `s=${code}`;
-    window.history.replaceState(window.history.state, '', url);
+    inflightState = state;
+    pending = null;
     try {
-      storage?.setItem(storageKey(lesson), code);
-      said.delete('storage-full'); // room again: a later shortage is said again
-    } catch {
-      // Storage full (another page of the origin, a big import): the link holds the state.
-      if (storage) sayOnce('storage-full');
+      const { code, refs, unstored, written } = await linkOf(state);
+      if (unstored.length) sayOnce('content-not-stored', unstored);
+      // The reader refuses a link this long on the next visit: the earlier work stays saved.
+      if (code.length > MAX_LINK_CHARS) {
+        sayOnce('too-long', { chars: code.length });
+        return;
+      }
+      said.delete('too-long');
+      contents?.pin?.(refs.map((r) => r.hash));
+      if (code !== lastCode) {
+        lastCode = code;
+        const url = new URL(window.location.href);
+        url.hash = `s=${code}`;
+        window.history.replaceState(window.history.state, '', url);
+        try { sessionStore()?.setItem(ownCodeKey(lesson), code); } catch { /* storage disabled */ }
+      }
+      if (adopted === state) {
+        adopted = null;
+        return;
+      }
+      const drawing = drawingOf(lesson, written);
+      const why = replacing;
+      replacing = null;
+      await withLock(lockName, async () => {
+        const now = readRecord(storage, lesson.id);
+        if (now?.code === code) {
+          readRev = now.rev;
+          readDrawing = now.drawing;
+          savedState = state;
+          return;
+        }
+        const { write: go, clash } = decide(now, drawing);
+        if (!go) return; // (the other tab's later work is taken after this write)
+        // The work replaced goes into the history; when it was another tab's, that tab says so.
+        const aside = Boolean(now && (clash || (why && now.drawing !== drawing)));
+        if (aside) await keepInHistory(now, clash ? 'clash' : why);
+        try {
+          const rec = writeRecord(storage, lesson.id, { rev: (now?.rev ?? 0) + 1, tab, drawing, summary: summaryOf(state), code, setAside: aside && now?.tab && now.tab !== tab ? { tab: now.tab, rev: now.rev } : null });
+          readRev = rec.rev;
+          readDrawing = drawing;
+          savedState = state;
+          said.delete('storage-full'); // room again: a later shortage is said again
+          // The budget, now that the saved work refers to what it does.
+          if (aside) history?.prune().catch(() => {});
+        } catch {
+          // Storage full (another page of the origin, a big import): the link holds the state.
+          if (storage) sayOnce('storage-full');
+          replacing = replacing ?? why;
+        }
+      });
+    } finally {
+      if (inflightState === state) inflightState = null;
+      // A later save of another tab noticed meanwhile (and left to this write) is reconsidered.
+      setTimeout(noticeOtherTab, 0);
     }
   }
 
   return {
-    save(state) {
+    tab,
+    save(state, { replacing: why = null } = {}) {
       if (!keep) return;
       pending = state;
+      if (why && !replacing) replacing = why;
       if (!timer) timer = setTimeout(flush, delayMs);
     },
+    // The work of another tab, now shown here: saved already, so not written again.
+    took(record, state) {
+      readRev = record.rev;
+      readDrawing = record.drawing;
+      adopted = state;
+      savedState = state;
+    },
     // Keeps from now on (a page that opened as an exercise and shows the person's own work
-    // after all: app/shell.js).
-    resume() {
+    // after all: app/shell.js), from the revision `base` the shell has just read.
+    resume(from = null, shown = null) {
       if (keep) return;
       keep = true;
-      window.addEventListener('pagehide', keepPending);
+      if (from) {
+        readRev = from.rev;
+        readDrawing = from.drawing;
+      }
+      savedState = shown;
+      listen();
+    },
+    // Nothing more is written from now on (the person's work was forgotten).
+    stop() {
+      keep = false;
+      pending = null;
+      inflightState = null;
+      if (timer) clearTimeout(timer);
+      timer = null;
+    },
+    get keeping() { return keep; },
+    // The saved work could not be shown (the core refuses it): set aside as it was, for the
+    // history, so the next save does not destroy it.
+    keepSavedAside(why = 'this version could not show it') {
+      if (!keep) return;
+      keepAside(lesson, storage, readRecord(storage, lesson.id), why);
     },
     async flushNow() {
       if (timer) {
@@ -235,12 +409,6 @@ export function createPersister(lesson, { delayMs = 200, contents = null, notify
       } else {
         await inflight;
       }
-    },
-    // The saved code is moved aside (the page could not show it): the next save keeps it.
-    keepSavedAside() {
-      if (!keep) return;
-      const code = storage?.getItem(storageKey(lesson));
-      if (code) keepAside(lesson, storage, code);
     },
     // The code this page last wrote to the address bar: a hash change to anything else
     // came from outside (a pasted link, back/forward).

@@ -19,9 +19,13 @@
 // only ever set as text.
 import { loadWingspline } from '../core/wingspline.js';
 import { createStore } from './store.js';
-import { restoreState, restoreLinkOnly, createPersister, readHashCode, readLink } from './persist.js';
+import { restoreState, restoreLinkOnly, createPersister, readHashCode, readLink, isFramed } from './persist.js';
 import { readEmbedOptions, embedProblemsText } from './share-link.js';
 import { createContentStore } from './content-store.js';
+import { createDatabase } from './idb.js';
+import { createWorkHistory, BUDGET_CHARS } from './work-history.js';
+import { decodeRecord } from './saved-record.js';
+import { createHistoryMenu } from './history-menu.js';
 import { checkChange } from './schema.js';
 import { createStage } from './stage.js';
 import { CanvasPainter, SvgPainter } from './painter.js';
@@ -39,6 +43,10 @@ import { createToolbar, createEmbedToolbar } from './toolbar.js';
 import { openExercise, startExercise } from '../exercise/session.js';
 import { readExerciseLink } from '../exercise/link.js';
 import { openAuthorDialog } from '../exercise/author.js';
+
+// Reasons of a whole new state that replaces the saved work (the replaced work goes into the
+// history): a link, Reset, an import, a restore, an exercise's Start again.
+const REPLACING = ['link', 'reset', 'import', 'restore', 'exercise'];
 
 /**
  * @typedef {import('./contract.js').Lesson} Lesson
@@ -85,18 +93,35 @@ export async function runLesson(lesson) {
     document.querySelector('.core-loading[data-core-status]')?.remove();
   }
 
-  // Large fields (an imported mesh) live in IndexedDB by content hash; the link refers to them.
-  const contents = createContentStore();
+  // A page shown inside another page (a frame without embed=1 too) reads and writes nothing of
+  // the person's saved work, whatever its address says: the frame may be hidden, and its
+  // offers would be invisible (docs/embed.md).
+  const framed = !embed && isFramed();
+  const keepsWork = !embed && !framed;
+  // Large fields (an imported mesh) live in IndexedDB by content hash; the link refers to
+  // them. The history of the person's work lives beside them (work-history.js); the content
+  // store never drops a mesh that saved work or the history refers to.
+  const database = createDatabase();
+  /** @type {any} */
+  let history = null;
+  const contents = createContentStore({ db: database, referenced: keepsWork ? () => history.referenced() : null, budgetChars: BUDGET_CHARS });
+  if (keepsWork) history = createWorkHistory({ db: database, contents });
   // An exercise link (#exercise=<id> or #x=<code>, docs/exercises.md) opens the lesson on the
   // exercise's state; the person's own saved work is neither read nor written meanwhile. A
   // link that cannot be used is said, and the saved work is shown as without it.
   const exercise = embed ? null : await openExercise(lesson);
   const restored = exercise?.ready ? exercise.restored
-    : embed ? await restoreLinkOnly(lesson, { contents }) : await restoreState(lesson, { contents });
+    : keepsWork ? await restoreState(lesson, { contents }) : await restoreLinkOnly(lesson, { contents });
   // A link that replaced saved work is one undoable step: Undo brings the work back.
   const store = createStore(restored.previous ?? restored.state);
   if (restored.previous) store.replace(restored.state, 'link');
-  const persister = createPersister(lesson, { contents, notify: (kind) => sayKept(kind), keep: !embed && !exercise?.ready });
+  const persister = createPersister(lesson, {
+    contents, history, notify: (kind) => sayKept(kind), keep: keepsWork && !exercise?.ready,
+    base: restored.base, saved: restored.source === 'storage' && !restored.problem ? restored.state : null, summarize: (state) => summaryOf(state), otherTab: (record, info) => takeOtherTab(record, info),
+  });
+  // Work set aside while a page went away, and unreadable entries of earlier versions, into
+  // the history (not awaited: the lesson starts meanwhile).
+  history?.sweep().catch(() => {});
   // ui.exercise: the kind of the exercise the page shows (a lesson hides what would answer it).
   const ui = { selected: null, hover: null, hoverPoint: null, present: isPresenting(), exercise: null };
   /** The lesson's view: what its setup returned, handed back to every later hook. */
@@ -193,7 +218,8 @@ export async function runLesson(lesson) {
     // Undo and redo bring back a state without a model; everything else computed first.
     if (reason !== 'view' && state !== modelState) recompute(state);
     if (reason !== 'view') needsPanelUpdate = true;
-    persister.save(state);
+    // A whole new state from outside replaces the saved work: that goes into the history.
+    persister.save(state, { replacing: REPLACING.includes(reason) ? reason : null });
     if (reason !== 'view') player?.stateChanged();
     scheduleRender();
   });
@@ -326,21 +352,23 @@ export async function runLesson(lesson) {
   let prepared = null;
   function reset() {
     if (player) {
-      if (!accept(player.initialState, 'import')) return;
+      const drawing = store.state;
+      if (!accept(player.initialState, 'exercise')) return;
+      keepExerciseDrawing(drawing);
       fitView();
       message.info('Back to the exercise\'s starting drawing (Undo brings your changes back).');
       return;
     }
     if (embed && prepared) {
-      if (!accept(prepared, 'import')) return;
+      if (!accept(prepared, 'reset')) return;
       autoFit = true;
       fitView();
       message.info('Back to the prepared state (Undo brings your changes back).');
       return;
     }
-    if (!accept(lesson.defaultState(), 'import')) return;
+    if (!accept(lesson.defaultState(), 'reset')) return;
     fitView();
-    message.info('Lesson reset to its starting point (Undo brings your work back).');
+    message.info(`Lesson reset to its starting point (Undo brings your work back${history ? '; so does the History' : ''}).`);
   }
 
   const toolbar = embed
@@ -349,6 +377,7 @@ export async function runLesson(lesson) {
       header: els.header, lesson, store, persister, keymap, message, ui, files, recolor, reset, fitView,
       announceStatus: announcer.status,
       makeExercise: lesson.exercise ? () => openAuthorDialog({ ctx, lesson, view, message }) : null,
+      openHistory: history ? createHistoryMenu({ lesson, history, restore: restoreEntry, forget: forgetEverything }) : null,
     });
 
   // ---------------------------------------------------------------- kept work and links
@@ -358,7 +387,89 @@ export async function runLesson(lesson) {
       message.warn('This browser\'s storage for this site is full, so your changes are not saved in this browser any more; they are kept in the link in the address bar (bookmark or copy it).', { code: 'storage-full' });
     } else if (kind === 'content-not-stored') {
       message.warn('The imported file could not be stored in this browser (its storage is full or disabled); keep the file: it may not come back after a reload.', { code: 'content-not-stored' });
+    } else if (kind === 'too-long') {
+      // An imported mesh kept inline (no IndexedDB here): the reader would refuse it on the
+      // next visit, so it is not saved; the earlier work stays saved.
+      const field = Object.entries(lesson.contentFields ?? {}).find(([key]) => store.state?.[key]);
+      const item = field && files.exportItems.find((x) => x.filename === field[1].export);
+      const name = field ? field[1].label?.(store.state[field[0]]) : null;
+      message.warn(`${name ? `"${name}"` : 'This state'} is too large to keep in this browser here (it has no IndexedDB: a private window?), so it will be gone after a reload; your earlier saved work is kept. Keep ${field?.[1].file ?? 'the file'} to open it again.`, {
+        code: 'too-long-to-keep',
+        action: item ? { id: 'export', label: `Export ${field?.[1].file ?? 'the file'}`, run: () => files.runExport(item) } : null,
+      });
     }
+  }
+
+  // ---------------------------------------------------------------- the history
+  // One line of what a state holds, for the History list (the lesson's own words if it has them).
+  function summaryOf(state) {
+    const own = lesson.summarize?.(state);
+    return typeof own === 'string' && own ? own : lesson.title;
+  }
+
+  // Another tab saved later work of this lesson and this tab has nothing of its own waiting:
+  // this tab shows it (one undoable step). When this tab's work was the one set aside (two
+  // tabs edited the same work), it is in the history, and one click brings it back here.
+  let taking = 0;
+  async function takeOtherTab(record, { setAside }) {
+    const asked = ++taking;
+    const mine = store.state;
+    let read;
+    try {
+      read = await decodeRecord(lesson, record, { contents });
+    } catch {
+      return; // unreadable here (a newer Wingspline in the other tab): this tab keeps its own
+    }
+    // An edit made meanwhile, or a later notice, decides instead.
+    if (asked !== taking || store.state !== mine || read.problems.length) return;
+    persister.took(record, read.state);
+    if (!accept(read.state, 'other-tab')) return;
+    if (setAside) {
+      message.warn('Another tab saved later work of this lesson, so the work shown here before is set aside in the History.', {
+        code: 'work-set-aside',
+        action: { id: 'bring-back', label: 'Bring my work back', run: () => { if (accept(mine, 'restore')) message.info('Your work is back (the other tab\'s is in the History).'); } },
+      });
+    } else if (byId('message').dataset.code !== 'work-set-aside') {
+      // (an offer to bring this tab's work back stays until it is taken or dismissed)
+      message.info('Updated to the work saved in another tab (Undo shows what this tab had).');
+    }
+  }
+
+  async function restoreEntry(entry) {
+    try {
+      const read = await decodeRecord(lesson, entry, { contents });
+      if (!accept(read.state, 'restore')) return false;
+      fitView();
+      const when = new Date(entry.time).toLocaleString(undefined, { dateStyle: 'medium', timeStyle: 'short' });
+      message.info(`Restored your work of ${when}${read.problems.length ? ` (part of it was reset: ${read.problems[0]})` : ''}. The work it replaced is in the History.`);
+      return true;
+    } catch (err) {
+      message.warn(`That entry of the History could not be restored: ${err.message}.`, { code: 'history-refused' });
+      return false;
+    }
+  }
+
+  // An exercise's drawing before Start again / Reset: into the history.
+  function keepExerciseDrawing(drawing) {
+    if (!history || !exercise?.exercise) return;
+    persister.shareLink(drawing).then(({ url }) => history.add({
+      lesson: lesson.id, reason: 'exercise', summary: `your drawing in the exercise "${exercise.exercise.title}"`,
+      code: new URLSearchParams(new URL(url).hash.slice(1)).get('s'),
+    })).catch(() => {});
+  }
+
+  // Forget my work on this computer (a shared lab laptop): everything kept for this site in
+  // this browser but the theme; the page then starts afresh, with nothing left to write.
+  async function forgetEverything() {
+    persister.stop();
+    try {
+      await history.forgetAll();
+    } catch (err) {
+      message.error(`Not everything could be forgotten: ${err.message}.`);
+      return;
+    }
+    try { window.sessionStorage.clear(); } catch { /* storage disabled */ }
+    window.location.replace(window.location.href.split('#')[0]);
   }
 
   // A link replaced the work shown before it: say so, offer it back (issue 13, item 18).
@@ -370,7 +481,7 @@ export async function runLesson(lesson) {
     });
   }
   function restorePrevious(previous) {
-    if (accept(previous, 'import')) message.info('Your previous work is back (Undo shows the link again).');
+    if (accept(previous, 'restore')) message.info('Your previous work is back (Undo shows the link again; it is in the History too).');
   }
 
   // A link pasted into the address bar of this open tab (or back/forward between links):
@@ -430,7 +541,7 @@ export async function runLesson(lesson) {
       exercise.refuse(`its drawing cannot be shown (${errorText(startProblem)})`);
     } else {
       message.warn(`The ${restored.source === 'link' ? 'link' : 'saved state'} could not be shown (${errorText(startProblem)}); showing ${restored.previous ? 'your previous work' : 'the starting point'}.`);
-      if (!restored.previous && restored.source === 'storage') persister.keepSavedAside();
+      if (!restored.previous && restored.source === 'storage') persister.keepSavedAside(errorText(startProblem));
     }
     recompute(fallback);
     store.set(fallback, { history: false, reason: 'view' });
@@ -460,24 +571,26 @@ export async function runLesson(lesson) {
   refresh();
   renderNow();
   prepared = store.state;
-  // The URL and storage hold what is shown (a damaged link is replaced by what survived).
-  persister.save(store.state);
+  // The URL and storage hold what is shown (a damaged link is replaced by what survived); a
+  // link that replaced saved work puts that work into the history.
+  persister.save(store.state, { replacing: restored.previous ? 'link' : null });
+  if (framed && !message.text) message.info('This lesson is shown inside another page: your saved work is neither read nor changed here. Open the lesson in its own tab to work on it.', { code: 'framed' });
 
   // The person's own work, as a plain lesson page would show it (with what it would say
   // about it), after an exercise that could not be played; saving resumes. A saved state
   // the core refuses is kept aside first, as at the start, never written over.
   async function returnToOwnWork() {
     const own = await restoreState(lesson, { contents });
-    persister.resume();
+    persister.resume(own.base, own.source === 'storage' && !own.problem ? own.state : null);
     let { state } = own;
     let problem = own.problem;
     if (!recompute(state)) {
-      if (own.source === 'storage') persister.keepSavedAside();
-      problem = 'Your saved work could not be shown by this version of Wingspline; it is kept aside in this browser, and the lesson starts fresh.';
+      if (own.source === 'storage') persister.keepSavedAside('this version could not show it');
+      problem = 'Your saved work could not be shown by this version of Wingspline; it is kept in the History as it was, and the lesson starts fresh.';
       state = lesson.defaultState();
       recompute(state);
     }
-    store.set(state, { history: false, reason: 'import' });
+    store.set(state, { history: false, reason: 'own-work' });
     if (problem) message.warn(`${message.text} ${problem}`);
     autoFit = own.source === 'default' || state !== own.state;
     if (autoFit) fitView();
@@ -509,6 +622,8 @@ export async function runLesson(lesson) {
     handles: () => handles().map((x) => ({ id: x.id, label: x.label, world: { x: x.x, y: x.y }, draggable: x.draggable !== false, ...ctx.stage.toClient(x.x, x.y) })),
     toClient: (x, y) => ctx.stage.toClient(x, y),
     shareUrl: () => persister.shareUrl(store.state),
+    // This lesson's entries of the history, newest first (work-history.js).
+    historyEntries: async () => (history ? history.list(lesson.id) : []),
     flush: () => persister.flushNow(),
     message: () => message.text,
     svg: svgFigure,

@@ -22,10 +22,11 @@ import { embedUrl, embedSnippet } from './share-link.js';
  *   reset: () => void,
  *   fitView: () => void,
  *   makeExercise?: (() => void) | null,
+ *   openHistory?: (() => Promise<HTMLDialogElement>) | null,
  * }} parts
  * @returns {{ update(): void }}
  */
-export function createToolbar({ header, lesson, store, persister, keymap, message, announceStatus, ui, files, recolor, reset, fitView, makeExercise = null }) {
+export function createToolbar({ header, lesson, store, persister, keymap, message, announceStatus, ui, files, recolor, reset, fitView, makeExercise = null, openHistory = null }) {
   const { exportItems, runExport, fileInput } = files;
   const buttons = {};
   function toolButton(key, label, onclick, title = label, { advanced = false } = {}) {
@@ -142,6 +143,8 @@ export function createToolbar({ header, lesson, store, persister, keymap, messag
     // "Make an exercise from this view" (issue 19, exercise/author.js).
     makeExercise ? toolButton('make-exercise', 'Make an exercise', makeExercise, 'Make an exercise from this view: choose what to hide, write the question, export the JSON and a link', { advanced: true }) : '',
     fileInput,
+    // The work links, Reset, imports and other tabs replaced, and Forget (app/history-menu.js).
+    openHistory ? toolButton('history', 'History', () => openHistory(), 'Your earlier work in this lesson, to bring back; forget your work on this computer', { advanced: true }) : '',
     toolButton('theme', 'Theme', changeTheme, 'Theme: system, light, dark (T)', { advanced: true }),
     toolButton('present', 'Present', () => togglePresent(), 'Presentation mode (P)'),
     toolButton('keys', 'Keys ?', () => keymap.showDialog(), 'Keyboard map (?)'),

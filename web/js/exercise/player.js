@@ -169,7 +169,7 @@ export function mountExercise({ ctx, lesson, view, exercise, key, loaded, panels
     window.clearTimeout(saveTimer);
     saveTimer = 0;
     leaving = true;
-    if (!loaded.stuck) clearProgress(key);
+    if (!loaded.stuck) clearProgress(key, { lesson: lesson.id, version: lesson.stateVersion });
     progress = { status: 'started', checks: 0, answer: null, state: null, solvedAt: null, title: exercise.title, lesson: exercise.lesson };
     window.location.reload();
   }

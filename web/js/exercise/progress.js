@@ -3,15 +3,18 @@
 // checks it took, the answer as last typed and, for the kinds where the drawing is the answer,
 // the lesson state. Keyed by the exercise: a shipped one by its id, any other by a hash of
 // its text, so two different exercises never share an entry. An entry this page cannot read
-// is moved aside (never written over) and the exercise starts fresh.
+// is set aside for the History (never written over) and the exercise starts fresh. A page
+// shown inside another page's frame reads and writes no progress (nor any saved work).
 import { stringifyExact, sha256 } from '../app/share-link.js';
+import { isFramed } from '../app/persist.js';
+import { setAsideNow } from '../app/work-history.js';
 
 const PREFIX = 'wingspline:exercise:';
 const PROGRESS_VERSION = 1;
 
 function storage() {
   try {
-    return window.localStorage;
+    return isFramed() ? null : window.localStorage;
   } catch {
     return null;
   }
@@ -42,27 +45,29 @@ function readRaw(key) {
 }
 
 /**
- * Reads an exercise's progress. An entry that cannot be read is moved aside under the first
- * free `…:unreadable-<n>` key (never over an earlier one) and the exercise starts fresh.
+ * Reads an exercise's progress. An entry that cannot be read is set aside for the History
+ * (work-history.js: a key of its own, never over an earlier one) and the exercise starts fresh.
+ * @param {string} key
+ * @param {{ lesson?: string }} [options] the exercise's lesson, whose History lists the entry
  * @returns {{ progress: Progress | null, problem: string | null, stuck?: boolean }}
  */
-export function readProgress(key) {
+export function readProgress(key, { lesson = 'exercise' } = {}) {
   const raw = readRaw(key);
   if (raw === null) return { progress: null, problem: null };
   try {
     return { progress: parse(raw), problem: null };
   } catch {
     const store = storage();
-    try {
-      let n = 1;
-      while (store?.getItem(`${PREFIX}${key}:unreadable-${n}`) !== null && n < 1000) n += 1;
-      store?.setItem(`${PREFIX}${key}:unreadable-${n}`, raw);
-      store?.removeItem(PREFIX + key);
-    } catch {
+    if (!setAsideNow(store, { lesson, reason: 'unreadable', summary: 'exercise progress this version could not read', raw })) {
       // storage refuses: the entry stays as it is and is not written over (see writeProgress)
       return { progress: null, stuck: true, problem: 'Your earlier progress on this exercise could not be read; it is kept as it was, and this attempt is not saved.' };
     }
-    return { progress: null, problem: 'Your earlier progress on this exercise could not be read; it is kept aside in this browser, and the exercise starts fresh.' };
+    try {
+      store?.removeItem(PREFIX + key);
+    } catch {
+      // (set aside already: the next write replaces it)
+    }
+    return { progress: null, problem: 'Your earlier progress on this exercise could not be read; it is kept in the History as it was, and the exercise starts fresh.' };
   }
 }
 
@@ -79,6 +84,7 @@ export function peekStatus(key) {
 
 /** @returns {boolean} whether it was kept */
 export function writeProgress(key, progress) {
+  if (!storage()) return false;
   try {
     // An entry that could not be read nor moved aside is never written over.
     const raw = readRaw(key);
@@ -92,8 +98,23 @@ export function writeProgress(key, progress) {
   }
 }
 
-export function clearProgress(key) {
+export function clearProgress(key, { lesson = 'exercise', version = 1 } = {}) {
   try {
+    // The attempt goes into the History first (a drawing as the lesson state it is).
+    const raw = readRaw(key);
+    if (raw !== null) {
+      /** @type {{ raw?: string, json?: string }} */
+      let entry = { raw };
+      let summary = 'an exercise attempt';
+      try {
+        const p = parse(raw);
+        summary = `your attempt at "${p.title}" (${p.checks} check${p.checks === 1 ? '' : 's'}${p.status === 'solved' ? ', solved' : ''})`;
+        if (p.state && typeof p.state === 'object') entry = { json: JSON.stringify({ format: 'wingspline', lesson, version, state: p.state }) };
+      } catch {
+        // kept as it was
+      }
+      setAsideNow(storage(), { lesson, reason: 'exercise', summary, ...entry });
+    }
     storage()?.removeItem(PREFIX + key);
   } catch {
     // nothing to do: storage disabled

@@ -35,7 +35,7 @@ export async function openExercise(lesson) {
     // The drawing as the student left it, for the kinds where the drawing is the answer.
     let state = initialState;
     // Read once: an unreadable entry is moved aside here, and the player says so.
-    const loaded = readProgress(key);
+    const loaded = readProgress(key, { lesson: lesson.id });
     const kept = loaded.progress?.state;
     if (kept && lesson.exercise?.keepsState?.includes(exercise.check.kind)) {
       try {

@@ -350,6 +350,8 @@ export const lesson = {
     return { ...state, points };
   },
 
+  // One line for the History.
+  summarize: (state) => `${state.points.length} control points, ${state.scene}`,
   describe(view, model, state) {
     if (!model) return '';
     const cols = model.table.columns;

@@ -357,6 +357,8 @@ export const lesson = {
     return { ...state, points: dragWithConstraint(view.api, state.points, state.family, state.constraint, i, to) };
   },
 
+  // One line for the History.
+  summarize: (state) => `${state.family}, ${state.points.length} points, ${state.constraint} dragging`,
   describe(view, model, state) {
     if (!model) return '';
     const joints = model.joints.map((j) => `joint ${j.index}: ${view.verdictsHidden() ? '' : `${label('C', j.parametric)} and ${label('G', j.geometric)}, `}speed ${formatNumber(j.left.speed, 3)} before and ${formatNumber(j.right.speed, 3)} after`).join('; ');

@@ -215,6 +215,8 @@ export const lesson = {
     return null;
   },
 
+  // One line for the History.
+  summarize: (state) => `${state.family} curve, ${state.points.length} control points`,
   describe(view, model, state) {
     const info = familyInfo(state.family);
     const pts = state.points.map(([x, y], i) => `P${i} (${formatNumber(x, 3)}, ${formatNumber(y, 3)})`).join(', ');

@@ -361,6 +361,15 @@ export const meshLesson = {
   handles,
   moveHandle,
   describe,
+  // One line for the History: which mesh, and what was done to it.
+  summarize: (state) => {
+    const mesh = state.meshKind === 'file' ? `"${state.imported?.name ?? 'an imported mesh'}"`
+      : state.meshKind === 'grid' ? `grid ${state.grid.nx} x ${state.grid.ny}` : state.meshKind === 'fan' ? `fan of ${state.fanSize}`
+        : state.meshKind === 'sphere' ? `sphere ${state.sphere.slices} x ${state.sphere.stacks}` : `${state.meshKind} mesh`;
+    const edits = state.ops?.length ?? 0;
+    const moved = state.moved?.length ?? 0;
+    return `${mesh}, ${edits} edit${edits === 1 ? '' : 's'}, ${moved} moved ${moved === 1 ? 'vertex' : 'vertices'}`;
+  },
   fitView,
   // A vertex pressed with the pointer becomes the walk's vertex when it is released without
   // being dragged (issue 18: dragging a vertex must not silently change the walk's vertex);

@@ -376,6 +376,8 @@ export const subdivisionLesson = {
   draw: (view, painter, model, state, ctx) => drawScene(painter, model, state, ctx),
   afterFrame: (view, model, state, ctx) => view.panels.curvePlot.draw(model, ctx.colors),
   describe,
+  // One line for the History.
+  summarize: (state) => `${state.scheme === 'loop' ? 'Loop' : 'Catmull-Clark'} on ${state.meshKind === 'file' ? `"${state.imported?.name ?? 'an imported mesh'}"` : state.meshKind}, level ${state.level}`,
   fitView,
   handles,
   moveHandle,

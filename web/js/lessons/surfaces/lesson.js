@@ -440,6 +440,8 @@ export const lesson = {
     return withEntry(state, sel.patch, sel.i, sel.j, value);
   },
 
+  // One line for the History.
+  summarize: (state) => `${state.kind} patch${state.joined ? `es joined ${state.join}` : ''}`,
   describe(view, model, state) {
     if (!model) return '';
     const a = model.patches.a;
