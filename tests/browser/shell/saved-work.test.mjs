@@ -193,7 +193,7 @@ test('a link replaced my work, then I reloaded: the work is in the History and o
   assert.deepEqual(await points(page), linked, 'after the reload: the link\'s state');
   const entries = await historyEntries(page);
   assert.equal(entries.length, 1);
-  assert.match(entries[0], /bezier curve, 4 control points \(replaced by a link\)/);
+  assert.match(entries[0], /bezier curve, 4 control points: .* \(replaced by a link\)/);
   await page.click('.history-dialog [data-history-restore]');
   assert.deepEqual(await points(page), mine, 'restored');
   assert.match(await message(page), /Restored your work of/);

@@ -41,7 +41,7 @@ export const reasonText = {
   exercise: 'an exercise drawing, before Start again',
   clash: 'set aside by a later save in another tab',
   'other-tab': 'replaced by a later save in another tab',
-  unreadable: 'could not be read by this version (kept as it was)',
+  unreadable: 'kept as it was: save it as a file',
 };
 
 const entryText = (e) => e.code ?? e.json ?? e.raw ?? '';

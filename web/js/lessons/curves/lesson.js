@@ -216,7 +216,10 @@ export const lesson = {
   },
 
   // One line for the History.
-  summarize: (state) => `${state.family} curve, ${state.points.length} control points`,
+  summarize: (state) => {
+    const pts = state.points.slice(0, 4).map(([x, y]) => `(${+x.toFixed(2)}, ${+y.toFixed(2)})`).join(' ');
+    return `${state.family} curve, ${state.points.length} control points: ${pts}${state.points.length > 4 ? ' …' : ''}`;
+  },
   describe(view, model, state) {
     const info = familyInfo(state.family);
     const pts = state.points.map(([x, y], i) => `P${i} (${formatNumber(x, 3)}, ${formatNumber(y, 3)})`).join(', ');
