@@ -121,9 +121,9 @@ test('two tabs editing the same work: the later save is the work, the other is s
   assert.deepEqual([...a.problems, ...b.problems, ...fresh.problems], []);
 });
 
-test('an edit is saved even when the tab is closed at once after it (10 runs)', async () => {
+test('an edit is saved even when the tab is closed at once after it (6 runs)', async () => {
   const context = await env.newContext(VIEWPORT);
-  for (let run = 0; run < 10; run += 1) {
+  for (let run = 0; run < 6; run += 1) {
     const page = await tab(context, 'curves.html');
     const before = await points(page);
     await page.click('#stage');
@@ -398,4 +398,61 @@ test('without IndexedDB: a mesh too big to keep is not saved over the earlier wo
   await page.click('[data-action=history]');
   await page.waitForSelector('.history-dialog .history-note');
   assert.match(await page.locator('.history-dialog .history-note').innerText(), /no IndexedDB here .* large imported meshes are not kept/);
+});
+
+test('an exercise\'s drawing goes into the History before its Reset and before Start again, and comes back from it', async () => {
+  const context = await env.newContext(VIEWPORT);
+  const page = await tab(context, 'curves.html#exercise=curves-through-a-point');
+  await page.waitForSelector('#exercise-panel');
+  const first = await page.evaluate(() => window.wingspline.handles().find((x) => x.draggable).id);
+  await drag(page, first, 30, -30);
+  const dragged = await points(page);
+  await page.click('[data-action=reset]');
+  await page.waitForFunction(() => window.wingspline.historyEntries().then((list) => list.length === 1));
+  const [entry] = await page.evaluate(() => window.wingspline.historyEntries());
+  assert.equal(entry.reason, 'exercise');
+  assert.match(entry.summary, /your drawing in the exercise/);
+  // Restore from the History brings the drawing back into the exercise.
+  await page.click('[data-action=history]');
+  await page.click('.history-dialog [data-history-restore]');
+  assert.deepEqual(await points(page), dragged);
+  // Start again: the attempt (its drawing) is kept too, and listed after the reload.
+  await drag(page, first, -30, 30);
+  await page.waitForTimeout(400); // the exercise's progress is written once the drawing rests
+  await Promise.all([page.waitForNavigation(), page.click('#exercise-start-again')]);
+  await waitReady(page);
+  await page.waitForFunction(() => window.wingspline.historyEntries().then((list) => list.some((e) => /your attempt at/.test(e.summary))));
+  assert.deepEqual(page.problems, []);
+});
+
+test('the History by keyboard alone, and axe finds no serious violation in it (light and dark)', async () => {
+  const { createRequire } = await import('node:module');
+  const fs = await import('node:fs');
+  const axeSource = fs.readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+  for (const scheme of ['light', 'dark']) {
+    const context = await env.newContext({ ...VIEWPORT, colorScheme: scheme });
+    const page = await tab(context, 'curves.html');
+    await drag(page, 'p1', 40, 40);
+    await settle(page);
+    const mine = await points(page);
+    await page.click('[data-action=reset]');
+    await settle(page);
+    await page.focus('[data-action=history]');
+    await page.keyboard.press('Enter');
+    await page.waitForSelector('.history-dialog [data-history-restore]');
+    await page.evaluate(axeSource);
+    const violations = await page.evaluate(() => window.axe.run(document.querySelector('.history-dialog'), { resultTypes: ['violations'] }));
+    assert.deepEqual(violations.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.id}: ${v.help}`), [], scheme);
+    // Tab reaches Restore (its name says which work); Enter restores and closes the dialog.
+    let name = '';
+    for (let i = 0; i < 10 && !/^Restore the work of/.test(name); i += 1) {
+      await page.keyboard.press('Tab');
+      name = await page.evaluate(() => document.activeElement?.getAttribute('aria-label') ?? '');
+    }
+    assert.match(name, /^Restore the work of .*: bezier curve/);
+    await page.keyboard.press('Enter');
+    await page.waitForSelector('.history-dialog', { state: 'detached' });
+    assert.deepEqual(await points(page), mine);
+    assert.deepEqual(page.problems, []);
+  }
 });

@@ -23,10 +23,10 @@ export function createHistoryMenu({ lesson, history, restore, forget }) {
   function entryItem(entry, dialog) {
     const readable = entry.code !== undefined || entry.json !== undefined;
     const action = readable
-      ? h('button', { type: 'button', 'data-history-restore': String(entry.id), async onclick() {
+      ? h('button', { type: 'button', 'data-history-restore': String(entry.id), 'aria-label': `Restore the work of ${when(entry.time)}: ${entry.summary || 'saved work'}`, async onclick() {
         if (await restore(entry)) dialog.close();
       } }, 'Restore')
-      : h('button', { type: 'button', 'data-history-save': String(entry.id), onclick() {
+      : h('button', { type: 'button', 'data-history-save': String(entry.id), 'aria-label': `Save the work of ${when(entry.time)} as a file`, onclick() {
         download(`wingspline-${lesson.id}-kept-${new Date(entry.time).toISOString().slice(0, 19).replace(/:/g, '-')}.txt`, entry.raw);
       } }, 'Save as file');
     return h('li', { 'data-history-entry': String(entry.id) },

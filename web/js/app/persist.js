@@ -26,6 +26,8 @@ import { localStore, readRecord, writeRecord, decodeRecord, storageKey, textHash
 import { setAsideNow } from './work-history.js';
 
 const legacyPendingKey = (lesson) => `wingspline:${lesson.id}:pending`;
+// The longest JSON text written as a page goes away (a link code is about a third as long).
+const PAGEHIDE_MAX_CHARS = 2 * MAX_LINK_CHARS;
 // The link code this tab last put in its address bar (session storage survives a reload of
 // the tab): an address that is this tab's own is not a link to open over newer saved work.
 const ownCodeKey = (lesson) => `wingspline:${lesson.id}:own-code`;
@@ -196,6 +198,7 @@ export function createPersister(lesson, {
   let pending = null;
   let replacing = null; // why the next write replaces the saved work (it goes into the history)
   let inflightState = null; // taken by a write that has not reached storage yet
+  let inflightWhy = null; // and why it replaces the saved work, if it does
   let lastCode = readHashCode();
   let adopted = null; // a state taken from another tab: already saved, not written again
   let readRev = base.rev; // the revision of the saved work this tab last read or wrote
@@ -243,21 +246,24 @@ export function createPersister(lesson, {
     try {
       const written = externalizeKnown(lesson, state);
       const json = stringifyExact(envelope(lesson, written));
-      if (json.length > MAX_LINK_CHARS) return;
+      // Only an imported mesh kept inline (no IndexedDB) makes a state this long: never saved.
+      if (json.length > PAGEHIDE_MAX_CHARS) return;
+      const why = replacing ?? (state === inflightState ? inflightWhy : null);
       const drawing = drawingOf(lesson, written);
       const now = readRecord(storage, lesson.id);
       if (now?.json === json) return;
       const { write, clash } = decide(now, drawing);
       if (!write) return;
-      const aside = Boolean(now && (clash || (replacing && now.drawing !== drawing)));
+      const aside = Boolean(now && (clash || (why && now.drawing !== drawing)));
       if (aside) {
-        setAsideNow(storage, { lesson: lesson.id, reason: clash ? 'clash' : replacing, summary: now.summary ?? 'saved work', time: now.at ?? Date.now(), ...(now.code !== undefined ? { code: now.code } : { json: now.json }) });
+        setAsideNow(storage, { lesson: lesson.id, reason: clash ? 'clash' : why, summary: now.summary ?? 'saved work', time: now.at ?? Date.now(), ...(now.code !== undefined ? { code: now.code } : { json: now.json }) });
       }
       const rec = writeRecord(storage, lesson.id, { rev: (now?.rev ?? 0) + 1, tab, drawing, summary: summaryOf(state), json, setAside: aside && now?.tab && now.tab !== tab ? { tab: now.tab, rev: now.rev } : null });
       readRev = rec.rev;
       readDrawing = drawing;
       savedState = state;
       pending = null;
+      replacing = null;
     } catch {
       // storage disabled or full: the debounced write was all there is
     }
@@ -326,6 +332,7 @@ export function createPersister(lesson, {
       const drawing = drawingOf(lesson, written);
       const why = replacing;
       replacing = null;
+      inflightWhy = why;
       await withLock(lockName, async () => {
         const now = readRecord(storage, lesson.id);
         if (now?.code === code) {
