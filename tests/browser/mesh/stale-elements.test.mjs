@@ -7,13 +7,14 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { clickToPick } from '../../helpers/mesh-page.mjs';
 
 const env = useSiteAndBrowser();
 const settle = (page) => page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
 const rowLabels = (page, id) => page.$$eval(`#${id} tbody tr[data-row]`, (rows) => rows.map((r) => r.children[0].textContent.trim()));
 
-// The client point inside face f, a little off its centroid toward its first corner (asked
-// of the page: where the face is drawn, not what it holds).
+// The client point of face f's centroid (asked of the page: where the face is drawn, not
+// what it holds).
 async function faceInside(page, f) {
   return page.evaluate((face) => {
     const m = window.wingspline.model;
@@ -26,10 +27,7 @@ async function faceInside(page, f) {
 }
 
 async function pickFaceWithPointer(page, f) {
-  const p = await faceInside(page, f);
-  await page.mouse.click(p.x, p.y);
-  await settle(page);
-  await page.waitForFunction((label) => document.querySelector('#edit-picked')?.textContent === `Picked: ${label}`, `F${f + 1}`);
+  await clickToPick(page, await faceInside(page, f), `F${f + 1}`);
 }
 
 async function chooseGrid(page) {
@@ -40,6 +38,7 @@ async function chooseGrid(page) {
 }
 
 async function expectTetrahedron(page, what) {
+  // (not there in time: the assertions below say what the page shows instead)
   await page.waitForFunction(() => /4 − 6 \+ 4 = 2/.test(document.querySelector('#edit-euler')?.textContent ?? ''), null, { timeout: 5000 })
     .catch(() => {});
   await settle(page);
