@@ -2,6 +2,7 @@
 //   types    tsc --noEmit -p jsconfig.json: the shell and every lesson.js against the JSDoc
 //            lesson contract (web/js/app/contract.js); tsc -p tsconfig.examples.json: the
 //            package's declarations (types/) against examples/ and deliberate misuses
+//   scripts  node --test tests/scripts (how these layers count node:test results)
 //   native   Catch2 through CTest (build/native)
 //   wasm     node --test tests/wasm   (the JS API over the wasm module)
 //   lessons  node --test tests/lessons (the DOM-free lesson modules over the real core)
@@ -9,7 +10,8 @@
 //   browser  node --test tests/browser (playwright-core + Debian's Chromium)
 //   asan     the native suite again under ASan + UBSan (build/native-asan, built by the layer)
 //   fuzz     libFuzzer targets, a few seconds each (build/fuzz, clang++-14, built by the layer)
-// The layers are listed in scripts/lib/test-layers.mjs.
+// The layers are listed in scripts/lib/test-layers.mjs. A node:test layer is counted from
+// node:test's events (scripts/lib/count-reporter.mjs), whichever reporter Node prints.
 import { setup } from './setup.mjs';
 import { build } from './build.mjs';
 import { log } from './lib/run.mjs';

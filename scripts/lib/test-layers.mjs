@@ -1,6 +1,8 @@
 // The test layers npm test runs, in order. Each resolves to { code, pass, fail, skip }.
 import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
+import { pathToFileURL } from 'node:url';
 import { repoRoot, capture } from './run.mjs';
 import { buildNative } from '../build.mjs';
 import { fuzzLayer } from './fuzz.mjs';
@@ -24,11 +26,50 @@ const SLOWEST_FIRST = ['tests/browser/shell/tampered-links.test.mjs', 'tests/bro
 async function nodeTests(dir, { concurrency = 1, extraEnv = {} } = {}) {
   const rank = (f) => { const i = SLOWEST_FIRST.indexOf(f); return i < 0 ? SLOWEST_FIRST.length : i; };
   const files = testFiles(dir).sort((a, b) => rank(a) - rank(b));
-  const r = await capture(process.execPath, ['--test', `--test-concurrency=${concurrency}`, ...files],
-    { echo: true, env: { ...process.env, ...extraEnv } });
-  const count = (label) => Number((r.stdout.match(new RegExp(`^# ${label} (\\d+)`, 'm')) ?? [0, 0])[1]);
-  // Skipped tests are reported, and a skip is never counted as a pass.
-  return { code: r.code, pass: count('pass'), fail: count('fail') + count('cancelled'), skip: count('skipped') + count('todo') };
+  return runNodeTests(files, { concurrency, env: { ...process.env, ...extraEnv } });
+}
+
+const COUNT_REPORTER = pathToFileURL(path.join(repoRoot, 'scripts', 'lib', 'count-reporter.mjs')).href;
+
+// NODE_OPTIONS without --test-reporter / --test-reporter-destination: the run names its
+// own reporters, and Node refuses a run whose reporters and destinations do not pair up.
+export function withoutReporterOptions(nodeOptions = '') {
+  return nodeOptions.split(/\s+/).filter((option, i, all) => {
+    if (/^--test-reporter(-destination)?(=|$)/.test(option)) return false;
+    const previous = all[i - 1] ?? '';
+    return !/^--test-reporter(-destination)?$/.test(previous);
+  }).join(' ').trim();
+}
+
+// `node --test` over the files, counted from node:test's own events: the spec reporter
+// prints for people on stdout, and scripts/lib/count-reporter.mjs writes the counts as
+// JSON to a temporary file. Nothing is read from a reporter's text, so the counts are the
+// same whichever reporter Node would use by default (TAP when piped up to Node 22, spec
+// from Node 23). Resolves to { code, pass, fail, skip }: cancelled tests count as failed,
+// skipped and todo tests as skipped, never as passed. A run that wrote no counts (Node
+// could not start the run) is one failure.
+export async function runNodeTests(files, { concurrency = 1, env = process.env, cwd = repoRoot, echo = true } = {}) {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'wingspline-counts-'));
+  const countsFile = path.join(dir, 'counts.json');
+  try {
+    // NODE_TEST_CONTEXT is set inside a test run (a test that runs this): with it, Node
+    // would report to its parent instead of to the reporters named here.
+    const { NODE_TEST_CONTEXT: _parent, ...ownEnv } = env;
+    const nodeOptions = withoutReporterOptions(env.NODE_OPTIONS);
+    const r = await capture(process.execPath, ['--test', `--test-concurrency=${concurrency}`,
+      '--test-reporter=spec', '--test-reporter-destination=stdout',
+      `--test-reporter=${COUNT_REPORTER}`, `--test-reporter-destination=${countsFile}`, ...files],
+    { echo, cwd, env: { ...ownEnv, NODE_OPTIONS: nodeOptions } });
+    let counts = null;
+    try { counts = JSON.parse(fs.readFileSync(countsFile, 'utf8')); } catch { counts = null; }
+    if (counts === null) {
+      process.stderr.write('[wingspline] node --test reported no counts\n');
+      return { code: r.code || 1, pass: 0, fail: 1, skip: 0 };
+    }
+    return { code: r.code, pass: counts.pass, fail: counts.fail + counts.cancelled, skip: counts.skip + counts.todo };
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
 }
 
 // Runs a Catch2 test binary directly and reads its summary line. (CTest's
@@ -123,6 +164,8 @@ function globFiles(pattern) {
 
 export const layers = [
   { name: 'types', run: typesLayer },
+  // The project scripts themselves: how a node:test layer is counted (tests/scripts).
+  { name: 'scripts', run: () => nodeTests('tests/scripts') },
   { name: 'native', run: () => catchTests(path.join(repoRoot, 'build', 'native', 'wingspline_tests')) },
   { name: 'wasm', run: () => nodeTests('tests/wasm') },
   { name: 'lessons', run: () => nodeTests('tests/lessons') },

@@ -125,3 +125,20 @@ test('on a phone the message line points to the question under the drawing', asy
   const top = await page.locator('#exercise-panel').evaluate((el) => el.getBoundingClientRect().top);
   assert.ok(top >= -1 && top < 100, `the exercise at the top of the screen: ${top}`);
 });
+
+// An exercise whose state holds a field nested 100,000 lists deep (200 KB, under the 256 KB
+// limit) was accepted by the reader, and the page then said "Maximum call stack size
+// exceeded". It is refused naming the field, past 64 levels (docs/exercises.md), and the
+// person's own page opens as without the link.
+test('an exercise link nesting a field 100,000 deep is refused naming the field; the page works', async () => {
+  const depth = 100000;
+  const text = JSON.stringify(shipped('mesh-walk-around-v2')).replace('"state":{', `"state":{"extra":${'['.repeat(depth)}${']'.repeat(depth)},`);
+  const page = await env.openLesson(`${env.site.url}mesh.html#x=${linkCode(text)}`);
+  assert.match(await page.locator('#message').innerText(),
+    /^This exercise could not be opened: its field exercise\.state\.extra\[0\]\[0\]\[0\]\[0\]… nests deeper than 64 levels\. Showing your own work instead\./);
+  assert.equal(await page.locator('#exercise-panel').count(), 0);
+  // The lesson works: the walk steps, and nothing was thrown.
+  await page.click('#walk-panel button[title^="Step forward"]');
+  await page.waitForFunction(() => window.wingspline.state.step === 1);
+  assert.deepEqual(page.problems, []);
+});

@@ -6,6 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { openPage, screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { clickToPick } from '../../helpers/mesh-page.mjs';
 
 const env = useSiteAndBrowser();
 
@@ -43,10 +44,7 @@ async function edgeMiddle(page, e) {
 }
 
 async function pickEdgeWithPointer(page, e) {
-  const p = await edgeMiddle(page, e);
-  await page.mouse.click(p.x, p.y);
-  await settle(page);
-  await page.waitForFunction((label) => document.querySelector('#edit-picked')?.textContent.includes(label), `e${e + 1}`);
+  await clickToPick(page, await edgeMiddle(page, e), `e${e + 1}`);
 }
 
 const rowOf = (rows, label) => rows.find((r) => r[0] === label);

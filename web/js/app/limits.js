@@ -17,3 +17,10 @@ export const MAX_FACE_CORNERS = 1000;
 // school laptop holds, docs/api-mesh.md "Import limits and memory").
 export const MAX_MESH_VERTICES = 2000000;
 export const MAX_MESH_FACES = 2000000;
+// Levels of objects and lists inside each other in a value read from outside (a share link,
+// a saved state, an imported JSON state, an exercise, an exercise's progress), counting the
+// outermost object as level 1. A lesson state needs about 6 (envelope, state, imported mesh,
+// faces, a face); deeper values are refused before anything walks them, since copying or
+// writing a value (structuredClone, JSON.stringify) recurses once per level and 100,000
+// levels overflow the stack (docs/state-format.md, "Limits").
+export const MAX_NESTING = 64;

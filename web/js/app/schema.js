@@ -3,7 +3,7 @@
 // naming the path ("points[3].x is not a number"). Nothing from outside is used unchecked.
 // The same validators check every change the page makes (ctx.commit in shell.js, with
 // checkChange below), so the page never holds a value its state format would refuse.
-import { COORDINATE_BOUND } from './limits.js';
+import { COORDINATE_BOUND, MAX_NESTING } from './limits.js';
 
 export class SchemaError extends Error {
   constructor(path, message) {
@@ -143,6 +143,77 @@ export function checkChange(shape, next, previous, checkState) {
   } catch (err) {
     return `the change breaks a rule of the lesson (${err.message})`;
   }
+}
+
+// A value parsed from outside nests at most `limit` levels of objects and lists (the
+// outermost is level 1), or a SchemaError names the path to the first level too deep
+// ("exercise.state.extra.a.a.a… nests deeper than 64 levels"). Measured without recursion,
+// with a stack of at most `limit` entries, before any recursive walk (validators, copies,
+// JSON.stringify) sees the value. `root` names the outermost value in the path.
+export function checkNesting(value, root = '', limit = MAX_NESTING) {
+  if (value === null || typeof value !== 'object') return value;
+  // One entry per open level: the container, its keys (objects) and the next position.
+  const nodes = [value];
+  const keyLists = [Array.isArray(value) ? null : Object.keys(value)];
+  const positions = [0];
+  const path = [];
+  while (nodes.length) {
+    const level = nodes.length - 1;
+    const node = nodes[level];
+    const keys = keyLists[level];
+    let i = positions[level];
+    let child = null;
+    // Numbers and texts are passed over in this loop (a mesh's millions of coordinates).
+    if (keys === null) {
+      for (; i < node.length; i += 1) {
+        const v = node[i];
+        if (typeof v === 'object' && v !== null) { child = v; break; }
+      }
+    } else {
+      for (; i < keys.length; i += 1) {
+        const v = node[keys[i]];
+        if (typeof v === 'object' && v !== null) { child = v; break; }
+      }
+    }
+    if (child === null) {
+      nodes.pop(); keyLists.pop(); positions.pop(); path.pop();
+      continue;
+    }
+    positions[level] = i + 1;
+    const key = keys === null ? i : keys[i];
+    if (nodes.length >= limit) throw new SchemaError(nestingPath(root, [...path, key]), `nests deeper than ${limit} levels`);
+    path.push(key);
+    nodes.push(child);
+    keyLists.push(Array.isArray(child) ? null : Object.keys(child));
+    positions.push(0);
+  }
+  return value;
+}
+
+// The same check for a reader whose refusals are sentences about "it" (a link, a file, a
+// saved state): the sentence, or null when the value nests within the limit.
+export function nestingProblem(value, root = '') {
+  try {
+    checkNesting(value, root);
+    return null;
+  } catch (err) {
+    if (err instanceof SchemaError) return `its field ${err.message}`;
+    throw err;
+  }
+}
+
+// The path to a too-deep value as a person reads it: the first steps, then "…".
+const PATH_STEPS_SHOWN = 6;
+const KEY_CHARS_SHOWN = 24;
+function nestingPath(root, keys) {
+  const step = (key) => {
+    if (typeof key === 'number') return `[${key}]`;
+    const name = key.length > KEY_CHARS_SHOWN ? `${key.slice(0, KEY_CHARS_SHOWN)}…` : key;
+    return /^[A-Za-z_$][\w$]*$/.test(key) ? `.${name}` : `[${JSON.stringify(name)}]`;
+  };
+  const shown = keys.slice(0, PATH_STEPS_SHOWN).map(step).join('');
+  const path = `${root}${shown}`.replace(/^\./, '');
+  return keys.length > PATH_STEPS_SHOWN ? `${path}…` : path;
 }
 
 // The 2D view a drawing lesson keeps in its state: the centre (world units) and the zoom

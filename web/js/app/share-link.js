@@ -9,7 +9,7 @@
 // text kept in a content store (content-store.js, IndexedDB) by its SHA-256; values of at
 // most INLINE_CONTENT_MAX_CHARS characters of JSON still travel inline, so a link to a
 // small mesh works on any machine (docs/state-format.md, "Large fields").
-import { validatePartial } from './schema.js';
+import { validatePartial, nestingProblem } from './schema.js';
 
 export const FORMAT = 'wingspline';
 export const MAX_LINK_CHARS = 200000;
@@ -260,6 +260,9 @@ export async function compressEnvelope(lesson, state) {
 // throws an Error whose message is one sentence when nothing of it can be used.
 export function readEnvelope(lesson, data) {
   if (data === null || typeof data !== 'object' || Array.isArray(data)) throw new Error('it does not hold a lesson state');
+  // Before anything walks it (migrations, validators, copies): at most MAX_NESTING levels.
+  const tooDeep = nestingProblem(data);
+  if (tooDeep) throw new Error(tooDeep);
   if (data.format !== FORMAT) throw new Error('it is not a Wingspline state');
   if (data.lesson !== lesson.id) {
     if (typeof data.lesson !== 'string' || !/^[a-z][a-z0-9-]{0,39}$/.test(data.lesson)) throw new Error(`it does not name a lesson, and this is ${lesson.title}`);

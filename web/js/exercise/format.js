@@ -9,7 +9,7 @@
 // numbers in `check` are written as the lectures write them: vertices, edges, faces, joints,
 // segments and matrix rows/columns from 1 (v1, e1, F1, the first joint); blending functions
 // and control points from 0 (B₀,₃, P₀, Q₀).
-import { SchemaError, object, text, oneOf, integer, number, list } from '../app/schema.js';
+import { SchemaError, object, text, oneOf, integer, number, list, checkNesting } from '../app/schema.js';
 
 export const EXERCISE_FORMAT = 'wingspline-exercise';
 export const EXERCISE_VERSION = 1;
@@ -171,6 +171,8 @@ export function readExercise(data, { lessonIds }) {
   }
   let exercise;
   try {
+    // At most MAX_NESTING levels (app/limits.js), measured before anything walks the value.
+    checkNesting(raw, 'exercise');
     exercise = EXERCISE(raw, 'exercise');
   } catch (err) {
     if (err instanceof SchemaError) throw new ExerciseError(`its field ${err.message}`, err.path);

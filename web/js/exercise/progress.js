@@ -8,6 +8,7 @@
 import { stringifyExact, sha256 } from '../app/share-link.js';
 import { isFramed } from '../app/persist.js';
 import { setAsideNow } from '../app/work-history.js';
+import { checkNesting } from '../app/schema.js';
 
 const PREFIX = 'wingspline:exercise:';
 const PROGRESS_VERSION = 1;
@@ -32,6 +33,7 @@ export async function progressKey(exercise, { shipped }) {
 
 function parse(raw) {
   const p = JSON.parse(raw);
+  checkNesting(p, 'progress'); // an entry nested past MAX_NESTING levels is unreadable
   if (!p || typeof p !== 'object' || p.version !== PROGRESS_VERSION || !['started', 'solved'].includes(p.status) || !Number.isSafeInteger(p.checks)) throw new Error('shape');
   return p;
 }

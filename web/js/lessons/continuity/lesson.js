@@ -117,10 +117,11 @@ export const lesson = {
       FAMILIES.map((f) => h('option', { value: f }, FAMILY_NAMES[f])));
     const constraintSelect = h('select', { id: 'constraint', onchange: () => switchConstraint(constraintSelect.value) },
       CONSTRAINTS.map((c) => h('option', { value: c }, c === 'free' ? 'free (ends may part: C-1)' : `keep ${c}`)));
+    // "your own points": what the menu shows while the points are no preset (an exercise's,
+    // a file's, a link's); never a choice (disabled), and not listed while a preset is shown.
+    const ownPoints = h('option', { value: '', disabled: true, hidden: true }, 'your own points');
     const presetSelect = h('select', { id: 'preset', onchange: () => loadPreset(presetSelect.value) },
-      // (a state from an exercise or a file may name no preset: "your own points")
-      h('option', { value: '', hidden: true }, 'your own points'),
-      Object.entries(PRESETS).map(([key, p]) => h('option', { value: key }, p.label)));
+      ownPoints, Object.entries(PRESETS).map(([key, p]) => h('option', { value: key }, p.label)));
     const uSlider = h('input', { type: 'range', id: 'u', min: 0, max: 2, step: 1 / PLAY_STEPS_PER_SEGMENT,
       oninput: () => ctx.commit({ ...ctx.state, u: Number(uSlider.value) }, { history: false }) });
     const uOut = h('output', { for: 'u', id: 'u-value' });
@@ -157,9 +158,10 @@ export const lesson = {
       h('h3', {}, 'Curvature κ(u)'), plots.curvature, curvatureUndefined,
       h('p', { class: 'hint' }, 'u runs over segment i on [i, i+1]; dashed lines mark the joints. A jump in |P\'| is a G1-but-not-C1 joint; a jump in κ is a joint that is not G2.'),
     );
-    const ui = { curvatureUndefined, familySelect, constraintSelect, presetSelect, uSlider, uOut, toggles, jointsBody, ruleBody, plots, addButton, removeButton };
+    const ui = { curvatureUndefined, familySelect, constraintSelect, presetSelect, ownPoints, uSlider, uOut, toggles, jointsBody, ruleBody, plots, addButton, removeButton };
 
     function loadPreset(name) {
+      if (!Object.prototype.hasOwnProperty.call(PRESETS, name)) { ctx.refresh(); return; } // not a preset: the menu shows the state again
       player.pause();
       const next = presetState(name, ctx.state.view);
       if (ctx.commit(next)) ctx.fitView();
@@ -224,7 +226,9 @@ export const lesson = {
     ui.constraintSelect.value = state.constraint;
     ui.constraintSelect.disabled = !isPiecewise(state.family);
     ui.constraintSelect.title = isPiecewise(state.family) ? '' : `${FAMILY_NAMES[state.family]} joints are continuous by construction`;
-    ui.presetSelect.value = PRESETS[state.preset] ? state.preset : '';
+    const isPreset = Object.prototype.hasOwnProperty.call(PRESETS, state.preset);
+    ui.ownPoints.hidden = isPreset;
+    ui.presetSelect.value = isPreset ? state.preset : '';
     ui.uSlider.max = String(model.segmentCount);
     ui.uSlider.value = String(state.u);
     ui.uOut.textContent = formatNumber(state.u, 3);

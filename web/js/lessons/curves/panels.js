@@ -327,13 +327,18 @@ export function createPanels(ctx) {
   return view;
 }
 
+// The selected control point (p<i>) or tangent handle (t<i>): null when none is selected,
+// or when the state shown has no such point any more (undo, a link, another family).
 function selectedPoint(ctx) {
-  const id = ctx.ui.selected;
-  return typeof id === 'string' && id[0] === 'p' ? Number(id.slice(1)) : null;
+  return selectedIndex(ctx.ui.selected, 'p', ctx.state.points.length);
 }
 function selectedTangent(ctx) {
-  const id = ctx.ui.selected;
-  return typeof id === 'string' && id[0] === 't' ? Number(id.slice(1)) : null;
+  return selectedIndex(ctx.ui.selected, 't', ctx.state.family === 'hermite' ? ctx.state.tangents.length : 0);
+}
+function selectedIndex(id, letter, count) {
+  if (typeof id !== 'string' || id[0] !== letter) return null;
+  const i = Number(id.slice(1));
+  return Number.isInteger(i) && i >= 0 && i < count ? i : null;
 }
 
 const setValue = (input, v) => { if (document.activeElement !== input) input.value = String(v); };

@@ -8,6 +8,7 @@ import { createPlayer } from '../../app/player.js';
 import { EDIT_OPS, EDIT_OP, checkArgs, withEdit } from './edit-ops.js';
 import { visibleSteps, stepText } from './edit-playback.js';
 import { vLabel, eLabel, fLabel } from './labels.js';
+import { exists, whyNot, goneNote, keptCorner } from './live-elements.js';
 
 const LABEL = { vertex: vLabel, edge: eLabel, face: fLabel };
 const REPRESENTATION_NAMES = {
@@ -31,6 +32,10 @@ export function createEditPanel(ctx, selection, { pick }) {
     const limit = { vertex: ctx.model.V, edge: ctx.model.E, face: ctx.model.F }[kind];
     if (!Number.isInteger(n) || n < 0 || n >= limit) {
       ctx.message.error(`Choose a ${kind} number from 1 to ${limit}`, 'invalid-element');
+      return;
+    }
+    if (!exists(ctx.model, { kind, index: n })) {
+      ctx.message.error(`${whyNot(ctx.model, { kind, index: n })}: choose another ${kind}`, 'invalid-element');
       return;
     }
     pick({ kind, index: n });
@@ -135,20 +140,24 @@ export function createEditPanel(ctx, selection, { pick }) {
       action: () => run(entry.op), when: () => selection.pick?.kind === entry.needs });
   }
 
+  // The corners of the picked face, read again when the mesh or the pick changes; a corner
+  // the person chose stays chosen while the face still has it.
   let lastCornersKey = null;
   function refreshCorners(model) {
     const p = selection.pick;
-    corners.hidden = p?.kind !== 'face';
-    if (p?.kind !== 'face') return;
+    const face = p?.kind === 'face' && exists(model, p);
+    corners.hidden = !face;
+    if (!face) { lastCornersKey = null; return; }
     const key = `${model.topology}:${p.index}`;
     if (key === lastCornersKey) return;
     lastCornersKey = key;
     const list = Array.from(model.mesh.verticesOfFace(p.index));
     const options = () => list.map((v) => h('option', { value: String(v) }, vLabel(v)));
+    const [a, b] = [Number(cornerA.value), Number(cornerB.value)];
     cornerA.replaceChildren(...options());
     cornerB.replaceChildren(...options());
-    cornerA.value = String(list[0]);
-    cornerB.value = String(list[Math.min(2, list.length - 1)]);
+    cornerA.value = String(keptCorner(a, list, list[0]));
+    cornerB.value = String(keptCorner(b, list, list[Math.min(2, list.length - 1)]));
   }
 
   function refreshButtons() {
@@ -206,7 +215,8 @@ export function createEditPanel(ctx, selection, { pick }) {
     root,
     update(model) {
       const p = selection.pick;
-      picked.textContent = p ? `Picked: ${LABEL[p.kind](p.index)}` : 'Nothing picked';
+      const gone = goneNote(selection, model);
+      picked.textContent = p ? `Picked: ${LABEL[p.kind](p.index)}` : gone ? `Nothing picked (${gone})` : 'Nothing picked';
       if (p) { kindSelect.value = p.kind; number.value = String(p.index + 1); }
       number.max = String({ vertex: model.V, edge: model.E, face: model.F }[kindSelect.value]);
       tInput.value = String(state().editT);

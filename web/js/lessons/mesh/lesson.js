@@ -15,6 +15,7 @@ import { setupPanels } from './panels.js';
 import { meshExports } from './exports.js';
 import { vLabel, fLabel, eLabel } from './labels.js';
 import { meshExercise } from './exercise.js';
+import { dropStale } from './live-elements.js';
 
 export const TABS = ['winged', 'faces', 'vertex-face', 'adjacency', 'edge-list', 'queries', 'storage', 'planes'];
 export const QUERY_KINDS = ['faces-around-vertex', 'edges-around-vertex', 'edges-of-face', 'neighbours-of-face', 'faces-of-edge'];
@@ -104,6 +105,13 @@ function checkState(state) {
   return null;
 }
 
+// What compute needs of the lesson view, without the page: the hovered and picked element
+// (live-elements.js keeps them to the model's elements), the live mesh and its caches.
+// setup adds the panels and the picture; a test in Node computes with this alone.
+export function createMeshView() {
+  return { selection: { hover: null, pick: null, gone: null }, source: createMeshSource(), derived: createDerived() };
+}
+
 // Per-topology and per-version caches (keyed on the mesh's id and version, cacheKeys), so a
 // traversal step costs one frame lookup. One per lesson view (setup).
 function createDerived() {
@@ -184,7 +192,7 @@ function compute(view, state, ctx) {
     derived.fromBehind = state.mode3d && walkElement >= 0 && !removed
       && facesAway(R, walkKind === 'vertex' ? entry.mesh.vertexNormal(walkElement) : faceNormal(derived, entry.mesh, walkElement));
   }
-  return {
+  const model = {
     mesh: entry.mesh,
     source: keys.source,
     topology: keys.topology,
@@ -213,11 +221,18 @@ function compute(view, state, ctx) {
     is3dMesh: derived.zExtent > 0,
     mode3d: state.mode3d,
     walkKind, walkElement, frames, frame,
+    // The walk's element is a number an edit removed (a gap): nothing to walk, and said.
+    walkRemoved: Boolean(removed),
     walkSeenFromBehind: derived.fromBehind,
     stepIndex: Math.min(state.step, Math.max(0, frames.length - 1)),
     lastChange: derived.lastChange,
     derived,
   };
+  // Whatever changed the state (another mesh, undo, redo, an import, a link, an edit), the
+  // picked and hovered element are the model's or nothing: the panels and the drawing only
+  // ever ask the core about elements it has.
+  dropStale(view.selection, model);
+  return model;
 }
 
 function unwritten(weShown, E, out) {
@@ -298,7 +313,7 @@ function handles(view, model) {
 // A vertex dragged in the view plane moves by R^T (dx, dy, 0) in the world (in 2D: x, y).
 function moveHandle(view, state, id, x, y, model) {
   const v = Number(id.slice(1));
-  if (!model || !Number.isInteger(v) || v >= model.V) return null;
+  if (!model || !Number.isInteger(v) || v >= model.V || model.vertexGap?.[v]) return null;
   if (view.pressed) view.pressed.dragged = true; // a drag, not a click: the walk keeps its vertex
   const [dx, dy, dz] = unprojectDelta(model.rotation, x - model.projected[3 * v], y - model.projected[3 * v + 1]);
   const p = [model.positions[3 * v] + dx, model.positions[3 * v + 1] + dy, model.positions[3 * v + 2] + dz];
@@ -345,7 +360,7 @@ export const meshLesson = {
   // The view: the panels, the live mesh (source), the caches derived from it and the
   // picture cache of a big mesh, the hovered and picked element; nothing of the lesson lives at module level.
   setup: (ctx) => {
-    const selection = { hover: null, pick: null }; // the hovered and picked element: {kind, index}
+    const { selection, source, derived } = createMeshView(); // selection: the hovered and picked element ({kind, index})
     // walkZoomKey: the walk (element, step) the view last followed (zoomToWalk; undefined until
     // the first frame); pressed: the vertex under a pressed pointer, until it is released.
     // pointer.down: a pointer is pressed (seen first, in the capture phase), so onSelect
@@ -353,7 +368,7 @@ export const meshLesson = {
     const pointer = { down: false };
     window.addEventListener('pointerdown', () => { pointer.down = true; }, true);
     for (const type of ['pointerup', 'pointercancel']) window.addEventListener(type, () => { pointer.down = false; }, true);
-    return { selection, panels: setupPanels(ctx, selection), source: createMeshSource(), derived: createDerived(), baseCache: createBaseCache(), walkZoomKey: undefined, pressed: null, pointer };
+    return { selection, panels: setupPanels(ctx, selection), source, derived, baseCache: createBaseCache(), walkZoomKey: undefined, pressed: null, pointer };
   },
   update: (view, model, state) => view.panels.update(model, state),
   afterFrame: zoomToWalk,

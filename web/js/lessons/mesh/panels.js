@@ -11,6 +11,7 @@ import { vLabel, fLabel } from './labels.js';
 import { pickElement as elementAt } from './draw.js';
 import { createEditPanel } from './edit-panel.js';
 import { createTurnControls, MAX_TILT } from '../../ui/turn-controls.js';
+import { exists, whyNot } from './live-elements.js';
 
 const BIG_TABLES = 100000; // faces: from this size a new mesh's tables fill a task after its first frame
 
@@ -214,8 +215,14 @@ export function setupPanels(ctx, selection) {
   }
 
   // A picked element is highlighted everywhere; a face or vertex also becomes the walk's.
+  // A number that is not an element of this mesh (a struck-through gap row) is not picked: said.
   function pickElement(element, { fromCanvas = false } = {}) {
+    if (element && ctx.model && !exists(ctx.model, element)) {
+      ctx.message.error(`${whyNot(ctx.model, element)}: pick another element`, 'invalid-element');
+      return;
+    }
     selection.pick = element;
+    selection.gone = null;
     if (ctx.model) edit.update(ctx.model);
     tabs.markElements({ reveal: fromCanvas });
     // (while a walk is being predicted, its element is the exercise's)
@@ -256,7 +263,8 @@ export function setupPanels(ctx, selection) {
     }
     const what = model.walkKind === 'vertex' ? vLabel(model.walkElement) : fLabel(model.walkElement);
     stepLabel.textContent = `step ${model.stepIndex} / ${Math.max(0, model.frames.length - 1)}`;
-    narration.textContent = frame ? frame.text : `${what}: nothing to walk.`;
+    narration.textContent = frame ? frame.text
+      : model.walkRemoved ? `${what} was removed by an edit: nothing to walk (choose another ${model.walkKind === 'vertex' ? 'vertex' : 'face'}).` : `${what}: nothing to walk.`;
     side.hidden = !model.walkSeenFromBehind;
     side.textContent = model.walkSeenFromBehind
       ? `Viewed from behind: the normal of ${what} points away from you, so the counter-clockwise walk appears clockwise here. Turn the mesh to see it from the front.`

@@ -11,6 +11,7 @@ import { createStoredEdgeControl } from './stored-edge.js';
 import { readTable, findDescriptor } from '../../core/tables.js';
 import { VERTEX_EDGE_COLUMN, FACE_EDGE_COLUMN } from './walk.js';
 import { visibleSteps, rowsNotYetWritten, EDGE_FIELDS } from './edit-playback.js';
+import { queryTarget, whyNot } from './live-elements.js';
 
 // A label as the slides write it (F with a subscript 1): a text and one <sub> element, no
 // wrapper, so a 250-item adjacency list lays out as few boxes as it can (issue 17).
@@ -448,19 +449,28 @@ function createQueryPanel(ctx, growthOf) {
     caption: 'The same query against mesh size: the middle element of grids of 4 × 4 to 128 × 128 quads (the core\'s counts; log-log axes). A line that stays flat reads in proportion to the answer; a rising one scans the mesh.',
     names: (rep) => PROS_CONS[rep]?.title ?? rep });
   result.append(table.root, cheapestNote, smallNote, queryGrowth.root);
+  const removedNote = h('p', { class: 'hint', id: 'query-removed', 'aria-live': 'polite', hidden: true });
   const root = h('div', { class: 'query-panel' },
-    h('div', { class: 'query-choice' }, h('label', {}, 'Query ', kind), ' ', prefix, element), result);
+    h('div', { class: 'query-choice' }, h('label', {}, 'Query ', kind), ' ', prefix, element), removedNote, result);
 
   return {
     root,
     update(model, state) {
       const q = state.query.kind;
       const [, f, letter] = QUERY_LABELS[q];
-      const index = Math.min(state.query[f], limitOf(model, f) - 1);
+      const target = queryTarget(model, state.query, f);
+      const index = target.index;
       kind.value = q;
       prefix.textContent = LETTER[f];
       element.value = index + 1;
       element.max = limitOf(model, f);
+      // A number an edit removed: nothing to ask, and said.
+      removedNote.hidden = !target.removed;
+      result.hidden = target.removed;
+      if (target.removed) {
+        removedNote.textContent = `${whyNot(model, target)}: choose another ${f}.`;
+        return;
+      }
       const key = `${model.topology}:${q}:${index}`;
       if (model.derived.queryKey !== key) {
         model.derived.queryKey = key;

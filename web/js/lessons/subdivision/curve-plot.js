@@ -61,6 +61,8 @@ export function createCurvePlot(container, ctx) {
     const [px, py] = plot.local(e);
     const [x, y] = drag.frame.toWorld(px, py).map((v) => Math.round(v * ROUND) / ROUND);
     const state = ctx.state;
+    // The polygon changed under the pointer (undo, a link) and has no such point: the drag ends.
+    if (2 * drag.i + 1 >= state.curve.points.length) { self.drag = null; ctx.endGesture(); return; }
     const points = state.curve.points.slice();
     points[2 * drag.i] = x; points[2 * drag.i + 1] = y;
     ctx.commit({ ...state, curve: { ...state.curve, points } }, { coalesce: drag.key });
