@@ -18,8 +18,9 @@ export function testFiles(dir) {
 }
 
 // The browser test files that take longest, started first so that two files running side
-// by side finish together (measured: tampered links about 130 s, state about 75 s).
-const SLOWEST_FIRST = ['tests/browser/shell/tampered-links.test.mjs', 'tests/browser/shell/state.test.mjs'];
+// by side finish together (measured: tampered links about 130 s, saved work about 150 s, state
+// about 75 s).
+const SLOWEST_FIRST = ['tests/browser/shell/tampered-links.test.mjs', 'tests/browser/shell/saved-work.test.mjs', 'tests/browser/shell/state.test.mjs'];
 
 // concurrency: how many test files run at once, each in its own process (a browser file
 // has its own server and browser, so two files never share a page).
