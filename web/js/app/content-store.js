@@ -34,6 +34,10 @@ export function createContentStore({ db = createDatabase(), referenced = null, b
       pinned.add(hash);
       store.collect().catch(() => {});
     },
+    // Whether this page knows the entry is in the database (it wrote or read it).
+    has(hash) {
+      return known.has(hash);
+    },
     // The hashes the page's current state refers to (the persister tells after each write).
     pin(hashes) {
       pinned.clear();

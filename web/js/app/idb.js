@@ -60,11 +60,14 @@ export function createDatabase() {
             idb = undefined;
           }
           if (!idb) { reject(new Error('IndexedDB is not available')); return; }
+          // The database exists in this browser but cannot be opened now: `unavailable`, which a
+          // reader tells apart from a browser without IndexedDB.
+          const unavailable = (text) => Object.assign(new Error(text), { unavailable: true });
           let req;
           try {
             req = idb.open(DB_NAME, DB_VERSION);
           } catch (err) {
-            reject(new Error(`IndexedDB could not be opened (${err?.message ?? err})`));
+            reject(unavailable(`IndexedDB could not be opened (${err?.message ?? err})`));
             return;
           }
           let blockedTimer = null;
@@ -76,9 +79,9 @@ export function createDatabase() {
             db.onversionchange = () => { db.close(); opened = null; };
             resolve(db);
           };
-          req.onerror = () => { clearTimeout(blockedTimer); reject(req.error ?? new Error('IndexedDB could not be opened')); };
+          req.onerror = () => { clearTimeout(blockedTimer); reject(unavailable(`IndexedDB could not be opened (${req.error?.message ?? 'refused'})`)); };
           req.onblocked = () => {
-            blockedTimer = setTimeout(() => reject(new Error('IndexedDB is held by an older Wingspline page in another tab (reload or close it)')), BLOCKED_MS);
+            blockedTimer = setTimeout(() => reject(unavailable('this site\'s storage is held by an older Wingspline page in another tab (reload or close it, then reload this one)')), BLOCKED_MS);
           };
         });
         opened.catch(() => { opened = null; });

@@ -23,6 +23,10 @@
 //   where IndexedDB is missing) is never saved: the earlier work stays, and the page says so.
 import { decodeState, externalize, externalizeKnown, compressEnvelope, envelope, stringifyExact, MAX_LINK_CHARS } from './share-link.js';
 import { localStore, readRecord, writeRecord, decodeRecord, storageKey, textHash } from './saved-record.js';
+
+// The content hashes a state (as written to a link) refers to.
+const contentRefsOf = (written) => Object.values(written ?? {})
+  .filter((v) => v && typeof v === 'object' && !Array.isArray(v) && typeof v.$content === 'string').map((v) => v.$content);
 import { setAsideNow } from './work-history.js';
 
 const legacyPendingKey = (lesson) => `wingspline:${lesson.id}:pending`;
@@ -90,8 +94,8 @@ const sameState = (a, b) => {
  * browser): set aside as it was, for the history, before anything is written over it.
  */
 function keepAside(lesson, storage, record, why) {
-  if (!record) return;
-  setAsideNow(storage, { lesson: lesson.id, reason: 'unreadable', summary: `saved work this version could not read: ${why}`.slice(0, 200), raw: record.raw });
+  if (!record) return true;
+  return setAsideNow(storage, { lesson: lesson.id, reason: 'unreadable', summary: `saved work this version could not read: ${why}`.slice(0, 200), raw: record.raw });
 }
 
 // Resolves to { state, source: 'link'|'storage'|'default', problem, previous, base }.
@@ -111,8 +115,14 @@ export async function restoreState(lesson, { contents } = {}) {
     try {
       saved = await decodeRecord(lesson, record, { contents });
     } catch (err) {
+      // Saved work that cannot be read now (its mesh's database held by another page), or
+      // that cannot be set aside: shown as the starting point, and this page saves nothing
+      // until it is reloaded, so the work stays as it is.
+      if (err.unavailable || !keepAside(lesson, storage, record, err.message)) {
+        return { state: lesson.defaultState(), source: 'default', hold: true, previous: null, base,
+          problem: `Your saved work cannot be read now (${err.message}); it is left as it was, and this page saves nothing until it is reloaded.` };
+      }
       savedError = err.message;
-      keepAside(lesson, storage, record, err.message);
     }
   }
   const savedProblem = savedError
@@ -199,6 +209,7 @@ export function createPersister(lesson, {
   let replacing = null; // why the next write replaces the saved work (it goes into the history)
   let inflightState = null; // taken by a write that has not reached storage yet
   let inflightWhy = null; // and why it replaces the saved work, if it does
+  let syncWrites = 0; // records written on pagehide: a write under way since then is older
   let lastCode = readHashCode();
   let adopted = null; // a state taken from another tab: already saved, not written again
   let readRev = base.rev; // the revision of the saved work this tab last read or wrote
@@ -222,7 +233,7 @@ export function createPersister(lesson, {
   // Keeps `record` (the saved work about to be replaced) in the history.
   async function keepInHistory(record, reason) {
     const entry = { lesson: lesson.id, reason, summary: record.summary ?? 'saved work', time: record.at ?? Date.now(), ...(record.code !== undefined ? { code: record.code } : { json: record.json }) };
-    const id = history ? await history.add(entry).catch(() => null) : null;
+    const id = history ? await history.add(entry, { prune: false }).catch(() => null) : null;
     if (id === null && !setAsideNow(storage, entry)) return false;
     return true;
   }
@@ -242,28 +253,33 @@ export function createPersister(lesson, {
   // edit not yet written reaches local storage, as JSON, under the same rule.
   function keepPending() {
     const state = pending ?? inflightState;
-    if (!state || state === savedState) return;
+    if (!keep || !state || state === savedState) return;
     try {
-      const written = externalizeKnown(lesson, state);
+      let written = externalizeKnown(lesson, state);
+      // A reference to a mesh this page has not seen stored (IndexedDB refused it) would
+      // name nothing on the next visit: such a state is written whole, or not at all.
+      if (JSON.stringify(contentRefsOf(written)) !== JSON.stringify(contentRefsOf(written).filter((h) => contents?.has?.(h)))) written = state;
       const json = stringifyExact(envelope(lesson, written));
       // Only an imported mesh kept inline (no IndexedDB) makes a state this long: never saved.
       if (json.length > PAGEHIDE_MAX_CHARS) return;
-      const why = replacing ?? (state === inflightState ? inflightWhy : null);
+      const why = pending ? replacing : inflightWhy;
       const drawing = drawingOf(lesson, written);
       const now = readRecord(storage, lesson.id);
       if (now?.json === json) return;
       const { write, clash } = decide(now, drawing);
       if (!write) return;
       const aside = Boolean(now && (clash || (why && now.drawing !== drawing)));
-      if (aside) {
-        setAsideNow(storage, { lesson: lesson.id, reason: clash ? 'clash' : why, summary: now.summary ?? 'saved work', time: now.at ?? Date.now(), ...(now.code !== undefined ? { code: now.code } : { json: now.json }) });
-      }
+      // What is replaced is kept first; where it cannot be kept, it is not written over.
+      if (aside && !setAsideNow(storage, { lesson: lesson.id, reason: clash ? 'clash' : why, summary: now.summary ?? 'saved work', time: now.at ?? Date.now(), ...(now.code !== undefined ? { code: now.code } : { json: now.json }) })) return;
       const rec = writeRecord(storage, lesson.id, { rev: (now?.rev ?? 0) + 1, tab, drawing, summary: summaryOf(state), json, setAside: aside && now?.tab && now.tab !== tab ? { tab: now.tab, rev: now.rev } : null });
       readRev = rec.rev;
       readDrawing = drawing;
       savedState = state;
-      pending = null;
-      replacing = null;
+      syncWrites += 1; // a write under way (back from the page cache) must not write its older state over this
+      if (pending === state) {
+        pending = null;
+        replacing = null;
+      }
     } catch {
       // storage disabled or full: the debounced write was all there is
     }
@@ -305,9 +321,14 @@ export function createPersister(lesson, {
   // overwrite a newer one, and flushNow() can wait for the one under way.
   async function write() {
     const state = pending;
-    if (state === null) return;
+    if (state === null || !keep) return;
+    const why = replacing; // the reason goes with the state it came with
     inflightState = state;
+    inflightWhy = why;
     pending = null;
+    replacing = null;
+    const started = syncWrites;
+    let kept = false;
     try {
       const { code, refs, unstored, written } = await linkOf(state);
       if (unstored.length) sayOnce('content-not-stored', unstored);
@@ -323,45 +344,63 @@ export function createPersister(lesson, {
         const url = new URL(window.location.href);
         url.hash = `s=${code}`;
         window.history.replaceState(window.history.state, '', url);
-        try { sessionStore()?.setItem(ownCodeKey(lesson), code); } catch { /* storage disabled */ }
       }
       if (adopted === state) {
         adopted = null;
+        kept = true;
         return;
       }
       const drawing = drawingOf(lesson, written);
-      const why = replacing;
-      replacing = null;
-      inflightWhy = why;
       await withLock(lockName, async () => {
-        const now = readRecord(storage, lesson.id);
-        if (now?.code === code) {
-          readRev = now.rev;
-          readDrawing = now.drawing;
-          savedState = state;
+        for (let attempt = 0; attempt < 3; attempt += 1) {
+          // Written synchronously as the page went away meanwhile (and came back): newer.
+          if (!keep || syncWrites !== started) return;
+          const now = readRecord(storage, lesson.id);
+          if (now?.code === code) {
+            readRev = now.rev;
+            readDrawing = now.drawing;
+            savedState = state;
+            kept = true;
+            return;
+          }
+          const { write: go, clash } = decide(now, drawing);
+          if (!go) return; // (the other tab's later work is taken after this write)
+          // The work replaced goes into the history first; when it was another tab's, that
+          // tab says so. Where it cannot be kept, it is not written over.
+          const aside = Boolean(now && (clash || (why && now.drawing !== drawing)));
+          if (aside && !await keepInHistory(now, clash ? 'clash' : why)) {
+            sayOnce('storage-full');
+            return;
+          }
+          // Another tab (without locks, or on its way out) may have written meanwhile.
+          if (aside && readRecord(storage, lesson.id)?.raw !== now.raw) continue;
+          try {
+            const rec = writeRecord(storage, lesson.id, { rev: (now?.rev ?? 0) + 1, tab, drawing, summary: summaryOf(state), code, setAside: aside && now?.tab && now.tab !== tab ? { tab: now.tab, rev: now.rev } : null });
+            readRev = rec.rev;
+            readDrawing = drawing;
+            savedState = state;
+            kept = true;
+            said.delete('storage-full'); // room again: a later shortage is said again
+            // The budget, now that the saved work refers to what it does.
+            if (aside) history?.prune().catch(() => {});
+          } catch {
+            // Storage full (another page of the origin, a big import): the link holds the state.
+            if (storage) sayOnce('storage-full');
+          }
           return;
         }
-        const { write: go, clash } = decide(now, drawing);
-        if (!go) return; // (the other tab's later work is taken after this write)
-        // The work replaced goes into the history; when it was another tab's, that tab says so.
-        const aside = Boolean(now && (clash || (why && now.drawing !== drawing)));
-        if (aside) await keepInHistory(now, clash ? 'clash' : why);
-        try {
-          const rec = writeRecord(storage, lesson.id, { rev: (now?.rev ?? 0) + 1, tab, drawing, summary: summaryOf(state), code, setAside: aside && now?.tab && now.tab !== tab ? { tab: now.tab, rev: now.rev } : null });
-          readRev = rec.rev;
-          readDrawing = drawing;
-          savedState = state;
-          said.delete('storage-full'); // room again: a later shortage is said again
-          // The budget, now that the saved work refers to what it does.
-          if (aside) history?.prune().catch(() => {});
-        } catch {
-          // Storage full (another page of the origin, a big import): the link holds the state.
-          if (storage) sayOnce('storage-full');
-          replacing = replacing ?? why;
-        }
       });
+      // This tab's own address is the saved work's only once it is saved: a reload of an
+      // address that could not be saved opens it as a link, over the older saved work.
+      if (kept) {
+        try { sessionStore()?.setItem(ownCodeKey(lesson), code); } catch { /* storage disabled */ }
+      }
     } finally {
-      if (inflightState === state) inflightState = null;
+      if (!kept && why && !replacing) replacing = why; // the next write keeps the replaced work
+      if (inflightState === state) {
+        inflightState = null;
+        inflightWhy = null;
+      }
       // A later save of another tab noticed meanwhile (and left to this write) is reconsidered.
       setTimeout(noticeOtherTab, 0);
     }
@@ -371,6 +410,7 @@ export function createPersister(lesson, {
     tab,
     save(state, { replacing: why = null } = {}) {
       if (!keep) return;
+      if (state !== adopted) adopted = null;
       pending = state;
       if (why && !replacing) replacing = why;
       if (!timer) timer = setTimeout(flush, delayMs);
@@ -395,12 +435,14 @@ export function createPersister(lesson, {
       listen();
     },
     // Nothing more is written from now on (the person's work was forgotten).
+    // Resolves once a write under way has given up.
     stop() {
       keep = false;
       pending = null;
       inflightState = null;
       if (timer) clearTimeout(timer);
       timer = null;
+      return inflight;
     },
     get keeping() { return keep; },
     // The saved work could not be shown (the core refuses it): set aside as it was, for the

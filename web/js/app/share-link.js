@@ -221,7 +221,10 @@ async function internalize(lesson, data, contents) {
     let stored = null;
     try {
       stored = contents ? await contents.get(ref.$content) : null;
-    } catch {
+    } catch (err) {
+      // The database is there but cannot be opened now (an older page holding it, a lost
+      // connection): not the same as a mesh this browser does not have; nothing is set aside.
+      if (err?.unavailable) throw Object.assign(new Error(`${what} ("${label}") cannot be read now: ${err.message}`), { unavailable: true });
       stored = null;
     }
     if (typeof stored !== 'string') throw new Error(missing);

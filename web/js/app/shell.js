@@ -116,7 +116,7 @@ export async function runLesson(lesson) {
   const store = createStore(restored.previous ?? restored.state);
   if (restored.previous) store.replace(restored.state, 'link');
   const persister = createPersister(lesson, {
-    contents, history, notify: (kind) => sayKept(kind), keep: keepsWork && !exercise?.ready,
+    contents, history, notify: (kind) => sayKept(kind), keep: keepsWork && !exercise?.ready && !restored.hold,
     base: restored.base, saved: restored.source === 'storage' && !restored.problem ? restored.state : null, summarize: (state) => summaryOf(state), otherTab: (record, info) => takeOtherTab(record, info),
   });
   // Work set aside while a page went away, and unreadable entries of earlier versions, into
@@ -422,8 +422,8 @@ export async function runLesson(lesson) {
     }
     // An edit made meanwhile, or a later notice, decides instead.
     if (asked !== taking || store.state !== mine || read.problems.length) return;
-    persister.took(record, read.state);
     if (!accept(read.state, 'other-tab')) return;
+    persister.took(record, read.state); // (before the save accept scheduled runs)
     if (setAside) {
       message.warn('Another tab saved later work of this lesson, so the work shown here before is set aside in the History.', {
         code: 'work-set-aside',
@@ -461,7 +461,7 @@ export async function runLesson(lesson) {
   // Forget my work on this computer (a shared lab laptop): everything kept for this site in
   // this browser but the theme; the page then starts afresh, with nothing left to write.
   async function forgetEverything() {
-    persister.stop();
+    await persister.stop();
     try {
       await history.forgetAll();
     } catch (err) {
@@ -580,8 +580,9 @@ export async function runLesson(lesson) {
   // about it), after an exercise that could not be played; saving resumes. A saved state
   // the core refuses is kept aside first, as at the start, never written over.
   async function returnToOwnWork() {
-    const own = await restoreState(lesson, { contents });
-    persister.resume(own.base, own.source === 'storage' && !own.problem ? own.state : null);
+    // (a framed page reads nothing of the person's work, and keeps nothing)
+    const own = keepsWork ? await restoreState(lesson, { contents }) : await restoreLinkOnly(lesson, { contents });
+    if (keepsWork && !own.hold) persister.resume(own.base, own.source === 'storage' && !own.problem ? own.state : null);
     let { state } = own;
     let problem = own.problem;
     if (!recompute(state)) {

@@ -15,7 +15,7 @@
 // imported meshes only they refer to; the meshes saved work refers to count too, and are
 // never dropped), at most MAX_PER_LESSON entries a lesson and MAX_ENTRIES in all; past it the
 // oldest entries go first, and the meshes only they referred to with them.
-import { localStore, recordRefs, savedLessons, readRecord } from './saved-record.js';
+import { localStore, recordRefs, savedLessons, readRecord, parseRecord } from './saved-record.js';
 import { request, done } from './idb.js';
 
 export const MAX_PER_LESSON = 40;
@@ -80,11 +80,21 @@ function cleanEntry(e) {
  * @param {{ db: { open(): Promise<IDBDatabase> }, contents: any, storage?: Storage | null, budgetChars?: number }} parts
  */
 export function createWorkHistory({ db, contents, storage = localStore(), budgetChars = BUDGET_CHARS }) {
+  // 'indexeddb'; 'local' (a browser without IndexedDB: local storage); 'none' (no storage at
+  // all); 'unavailable' (the database exists but cannot be opened now: nothing is moved or
+  // kept elsewhere meanwhile, and the next call asks again).
   let modeAsked = null;
   function mode() {
-    if (!modeAsked) modeAsked = db.open().then(() => 'indexeddb', () => (storage ? 'local' : 'none'));
+    if (!modeAsked) {
+      modeAsked = db.open().then(() => 'indexeddb', (err) => {
+        modeAsked = null;
+        if (err?.unavailable) return 'unavailable';
+        return storage ? 'local' : 'none';
+      });
+    }
     return modeAsked;
   }
+  const local = async () => ['local', 'none'].includes(await mode());
 
   // ------------------------------------------------------------ local storage (no IndexedDB)
   function readLocal() {
@@ -129,7 +139,29 @@ export function createWorkHistory({ db, contents, storage = localStore(), budget
       const record = readRecord(storage, id);
       if (record) for (const h of await recordRefs(record)) refs.add(h);
     }
+    // Work set aside and not yet swept into the history.
+    for (const key of asideKeys()) {
+      try {
+        const e = JSON.parse(storage?.getItem(key) ?? 'null');
+        const rec = typeof e?.code === 'string' ? { code: e.code } : typeof e?.json === 'string' ? { json: e.json } : parseRecord(typeof e?.raw === 'string' ? e.raw : null);
+        if (rec) for (const h of await recordRefs(rec)) refs.add(h);
+      } catch {
+        // not ours to read: nothing it refers to is known
+      }
+    }
     return refs;
+  }
+  function asideKeys() {
+    const keys = [];
+    try {
+      for (let i = 0; i < (storage?.length ?? 0); i += 1) {
+        const key = storage?.key(i) ?? '';
+        if (key.startsWith(ASIDE_PREFIX)) keys.push(key);
+      }
+    } catch {
+      // storage disabled
+    }
+    return keys;
   }
 
   const history = {
@@ -137,9 +169,8 @@ export function createWorkHistory({ db, contents, storage = localStore(), budget
     /** The hashes that saved work and the history refer to (the content store keeps them). */
     async referenced() {
       const refs = await savedRefs();
-      if (await mode() === 'indexeddb') {
-        for (const e of await allEntries(await db.open())) for (const h of e.refs ?? []) refs.add(h);
-      }
+      if (await mode() !== 'indexeddb') throw new Error('the history cannot be read now'); // (nothing is dropped)
+      for (const e of await allEntries(await db.open())) for (const h of e.refs ?? []) refs.add(h);
       return refs;
     },
 
@@ -152,7 +183,9 @@ export function createWorkHistory({ db, contents, storage = localStore(), budget
       const entry = cleanEntry({ ...raw, time: raw.time ?? Date.now() });
       if (!entry) return null;
       const text = entryText(entry);
-      if (await mode() !== 'indexeddb') {
+      const where = await mode();
+      if (where === 'unavailable') return null;
+      if (where !== 'indexeddb') {
         if (text.length > LOCAL_MAX_ENTRY_CHARS) return null;
         const list = readLocal();
         const same = list.find((e) => e.lesson === entry.lesson && entryText(e) === text);
@@ -160,7 +193,8 @@ export function createWorkHistory({ db, contents, storage = localStore(), budget
         const kept = writeLocal([...list.filter((e) => e !== same), { ...entry, id }]);
         return kept.some((e) => e.id === id) ? id : null;
       }
-      const refs = entry.raw !== undefined ? [] : await recordRefs(entry);
+      // (raw: saved work this version could not read; the meshes it names are kept with it)
+      const refs = await recordRefs(entry.raw !== undefined ? parseRecord(entry.raw) ?? { code: '' } : entry);
       const idb = await db.open();
       const tx = idb.transaction('history', 'readwrite');
       const store = tx.objectStore('history');
@@ -174,7 +208,8 @@ export function createWorkHistory({ db, contents, storage = localStore(), budget
     /** A lesson's entries, newest first. */
     async list(lessonId) {
       const mine = (e) => e.lesson === lessonId || e.lesson === EXERCISES;
-      if (await mode() !== 'indexeddb') return readLocal().filter(mine).sort((a, b) => b.time - a.time);
+      if (await mode() === 'unavailable') return [];
+      if (await local()) return readLocal().filter(mine).sort((a, b) => b.time - a.time);
       const idb = await db.open();
       const index = idb.transaction('history').objectStore('history').index('lesson');
       const list = [...await request(index.getAll(lessonId)), ...(lessonId === EXERCISES ? [] : await request(index.getAll(EXERCISES)))];
@@ -182,7 +217,7 @@ export function createWorkHistory({ db, contents, storage = localStore(), budget
     },
 
     async get(id) {
-      if (await mode() !== 'indexeddb') return readLocal().find((e) => e.id === id) ?? null;
+      if (await local()) return readLocal().find((e) => e.id === id) ?? null;
       const idb = await db.open();
       return (await request(idb.transaction('history').objectStore('history').get(id))) ?? null;
     },
@@ -190,10 +225,12 @@ export function createWorkHistory({ db, contents, storage = localStore(), budget
     /** Keeps the budget (see the top of this file); resolves to the ids dropped. */
     async prune() {
       if (await mode() !== 'indexeddb') return [];
+      // The saved work first: a replacement writes its history entry before its record, so an
+      // entry read after the records cannot miss a mesh both refer to.
+      const counted = await savedRefs();
       const idb = await db.open();
       const entries = (await allEntries(idb)).sort((a, b) => b.time - a.time || b.id - a.id);
       const sizes = await contents.sizes();
-      const counted = await savedRefs();
       let used = [...counted].reduce((sum, h) => sum + (sizes.get(h) ?? 0), 0);
       const perLesson = new Map();
       const kept = new Set(counted);
@@ -227,7 +264,7 @@ export function createWorkHistory({ db, contents, storage = localStore(), budget
      * number moved.
      */
     async sweep() {
-      if (!storage) return 0;
+      if (!storage || await mode() === 'unavailable') return 0;
       const keys = [];
       try {
         for (let i = 0; i < storage.length; i += 1) {
@@ -263,7 +300,9 @@ export function createWorkHistory({ db, contents, storage = localStore(), budget
 
     /** Forget my work on this computer: the history, every lesson's saved work, the progress. */
     async forgetAll() {
-      if (await mode() === 'indexeddb') {
+      const where = await mode();
+      if (where === 'unavailable') throw new Error('this site\'s storage in this browser cannot be opened now (close other Wingspline tabs, reload, and try again)');
+      if (where === 'indexeddb') {
         const idb = await db.open();
         const tx = idb.transaction('history', 'readwrite');
         tx.objectStore('history').clear();
