@@ -201,6 +201,18 @@ struct EulerAccess {
         } while (e != first && ++n <= m.edge_count());
         return false;
     }
+    // Every corner of p but a and b is a corner of q.
+    static bool corners_within(const WingedEdgeMesh& m, int32_t p, int32_t q, int32_t a, int32_t b) {
+        const int32_t first = m.face_edge_[p];
+        int32_t x = first, n = 0;
+        do {
+            const EdgeRecord& r = m.edges_[x];
+            const int32_t v = r.left == p ? r.start : r.end; // the corner this side leaves
+            if (v != a && v != b && !face_has_corner(m, q, v)) return false;
+            x = m.next_in_face(x, p);
+        } while (x != first && ++n <= m.edge_count());
+        return true;
+    }
     template <class H> static const char* element(const WingedEdgeMesh& m, H h, int32_t count) {
         if (h.idx < 0 || h.idx >= count) return "invalid-element";
         return m.is_deleted(h) ? "deleted-element" : nullptr;
@@ -307,11 +319,18 @@ struct EulerAccess {
                 continue;
             }
             if (n > 3) continue;
-            const int32_t c = head(m, next(m, h));
+            // The triangle (S, E, c) goes and its two edges at c become one, between the faces
+            // beyond them: A across c-S, B across E-c. c keeps one edge fewer. With three, all
+            // inside, it keeps two, both between A and B: polygons may (join-faces makes such a
+            // vertex), two triangles would be one triangle twice. (With two, what lies beyond
+            // them is a face holding both S and E, refused by the link condition below, or
+            // the boundary, where S and E are both boundary vertices: refused above.)
+            const Half into_c = next(m, h), out_of_c = next(m, into_c);
+            const int32_t c = head(m, into_c);
             opposite[s] = c;
-            // The two edges at c merge into one: c keeps one edge fewer.
-            const int32_t need = on_boundary(m, c) ? 3 : 4;
-            if (valence(m, c) < need) return refuse("degenerate-vertex", e.idx, c);
+            const Half to_a = twin(out_of_c), to_b = twin(into_c);
+            if (valence(m, c) == 3 && !on_boundary(m, c) && loop_size(m, to_a, 4) == 3 && loop_size(m, to_b, 4) == 3)
+                return refuse("degenerate-vertex", e.idx, c, face(m, to_a), face(m, to_b));
         }
         // The link condition: the vertices joined to both S and E are exactly the opposite
         // corners of the triangles on e.
@@ -332,6 +351,26 @@ struct EulerAccess {
                 return refuse("link-condition-face", e.idx, f, r.start, r.end);
             x = m.next_ccw(x, r.end);
         } while (x != first_e && ++n <= m.edge_count());
+        // No two faces may become the same polygon (validate_indexed's duplicate-face): with
+        // E renamed S, a face at E must not have the corners of another face at S. A face
+        // that goes with its triangle takes no part; L and R keep all their corners but E.
+        const auto goes = [&](int32_t f) { return f == kNone || (f == r.left && opposite[0] != kNone) || (f == r.right && opposite[1] != kNone); };
+        const auto corners_after = [&](int32_t f) { return face_size(m, f) - (f == r.left || f == r.right ? 1 : 0); };
+        for (int32_t p_edge = first_e, i = 0;;) {
+            const int32_t p = m.edges_[p_edge].start == r.end ? m.edges_[p_edge].left : m.edges_[p_edge].right;
+            if (!goes(p)) {
+                const int32_t size = corners_after(p);
+                for (int32_t q_edge = first, j = 0;;) {
+                    const int32_t q = m.edges_[q_edge].start == r.start ? m.edges_[q_edge].left : m.edges_[q_edge].right;
+                    if (q != p && !goes(q) && corners_after(q) == size && corners_within(m, p, q, r.start, r.end))
+                        return refuse("would-duplicate-face", e.idx, p, q);
+                    q_edge = m.next_ccw(q_edge, r.start);
+                    if (q_edge == first || ++j > m.edge_count()) break;
+                }
+            }
+            p_edge = m.next_ccw(p_edge, r.end);
+            if (p_edge == first_e || ++i > m.edge_count()) break;
+        }
         return {};
     }
     static Verdict poke_face(const WingedEdgeMesh& m, Face f) {
@@ -375,6 +414,8 @@ struct EulerAccess {
         else if (code == "faces-touch-elsewhere")
             msg = F(x[2]) + " and " + F(x[3]) + " also meet at " + V(x[1]) + ": joining them across " + E(x[0]) +
                   " would make a face that passes " + V(x[1]) + " twice";
+        else if (code == "would-duplicate-face" && opname == "collapse")
+            msg = "collapsing " + E(x[0]) + " would give " + F(x[1]) + " the corners of " + F(x[2]) + ": the same polygon twice";
         else if (code == "would-duplicate-face")
             msg = "joining " + F(x[2]) + " and " + F(x[3]) + " across " + E(x[0]) + " would give a face with the same sides as " + F(x[1]) +
                   ": the same polygon twice";
@@ -386,7 +427,8 @@ struct EulerAccess {
         else if (code == "hole-too-small")
             msg = "the boundary hole beside " + E(x[0]) + " has only three corners: collapsing " + E(x[0]) + " would close it into two edges with no face between";
         else if (code == "degenerate-vertex")
-            msg = "collapsing " + E(x[0]) + " would leave " + V(x[1]) + " with too few edges: its two remaining faces would share both of them";
+            msg = "collapsing " + E(x[0]) + " would leave " + V(x[1]) + " with two edges, both between the triangles " + F(x[2]) + " and " +
+                  F(x[3]) + ": the same triangle twice";
         else if (code == "link-condition")
             msg = V(x[1]) + " is joined to both " + V(x[2]) + " and " + V(x[3]) + " but not across a triangle on " + E(x[0]) +
                   ": collapsing " + E(x[0]) + " would make two edges between the same vertices (the link condition)";
