@@ -795,7 +795,7 @@ val mesh_limits() {
     return guarded([] {
         val r = val::object();
         r.set("maxCoordinate", kFileLimits.max_coordinate);
-        r.set("maxFaceCorners", kFileLimits.max_face_corners);
+        r.set("maxFaceCorners", kMaxFaceCorners);
         r.set("maxVertices", kFileLimits.max_vertices);
         r.set("maxFaces", kFileLimits.max_faces);
         return r;

@@ -14,6 +14,7 @@
 // next_in_face(); a boundary side (face kNone) is walked as though the boundary were a
 // face, as the slide defines the wings. Which side of the next edge belongs to the same
 // face is read from its faces (an edge never has one face on both sides).
+#include "wingspline/mesh/limits.h"
 #include "wingspline/mesh/winged_edge.h"
 
 #include <algorithm>
@@ -219,11 +220,33 @@ struct EulerAccess {
     }
     static constexpr int32_t kVertexKind = 0, kEdgeKind = 1, kFaceKind = 2; // Verdict x[1] of an element refusal
 
+    // The mesh limits (limits.h): an edit makes nothing a mesh file could not hold, so the
+    // page can always read its own export back. Corners of a side's face, counted up to one
+    // past the limit (a walk of at most kMaxFaceCorners + 1 steps).
+    static int32_t corners(const WingedEdgeMesh& m, Half h) { return loop_size(m, h, kMaxFaceCorners + 1); }
+    // Whether `added` more elements would make more live ones than `limit`: the rows less the
+    // gaps, which are counted only when the rows alone would pass it (O(1) below the limit).
+    static bool over_limit(const std::vector<char>& gaps, int32_t rows, int32_t added, int32_t limit) {
+        if (static_cast<int64_t>(rows) + added <= limit) return false;
+        return rows - std::count(gaps.begin(), gaps.end(), char(1)) + static_cast<int64_t>(added) > limit;
+    }
+    // too-large, before the operation: x = {its element, 0 (vertices) or 1 (faces), how many then}.
+    static Verdict counts_within(const WingedEdgeMesh& m, int32_t element, int32_t new_vertices, int32_t new_faces) {
+        if (over_limit(m.vertex_deleted_, m.vertex_count(), new_vertices, kFileLimits.max_vertices))
+            return refuse("too-large", element, 0, m.counts().vertices + new_vertices);
+        if (over_limit(m.face_deleted_, m.face_count(), new_faces, kFileLimits.max_faces))
+            return refuse("too-large", element, 1, m.counts().faces + new_faces);
+        return {};
+    }
+
     // ------------------------------------------------------------ the checks, without words
     static Verdict split_edge(const WingedEdgeMesh& m, Edge e, double t) {
         if (const char* c = element(m, e, m.edge_count())) return refuse(c, e.idx, kEdgeKind);
         if (!(t > 0.0 && t < 1.0)) return refuse("invalid-parameter", e.idx);
-        return {};
+        // Both faces gain a corner.
+        for (const Half h : {Half{e.idx, true}, Half{e.idx, false}})
+            if (face(m, h) != kNone && corners(m, h) + 1 > kMaxFaceCorners) return refuse("face-too-large", e.idx, face(m, h), kNone, corners(m, h) + 1);
+        return counts_within(m, e.idx, 1, 0);
     }
     static Verdict split_face(const WingedEdgeMesh& m, Face f, Vertex a, Vertex b, FaceSides* sides = nullptr) {
         if (const char* c = element(m, f, m.face_count())) return refuse(c, f.idx, kFaceKind);
@@ -254,6 +277,7 @@ struct EulerAccess {
             const EdgeRecord& r = m.edges_[existing];
             return refuse(r.left == f.idx || r.right == f.idx ? "adjacent-corners" : "edge-exists", a.idx, b.idx, existing, f.idx);
         }
+        if (const Verdict v = counts_within(m, f.idx, 0, 1); !v.ok()) return v;
         if (sides) {
             *sides = found;
             sides->a = a.idx, sides->b = b.idx;
@@ -291,6 +315,9 @@ struct EulerAccess {
             } while (x != start && ++n <= m.edge_count());
         }
         if (one_face) return refuse("would-duplicate-face", e.idx, across, r.left, r.right);
+        // The joined face has the corners of both but the two of e counted twice.
+        const int32_t joined = corners(m, {e.idx, true}) + corners(m, {e.idx, false}) - 2;
+        if (joined > kMaxFaceCorners) return refuse("face-too-large", e.idx, r.left, r.right, joined);
         return {};
     }
     static Verdict flip_edge(const WingedEdgeMesh& m, Edge e) {
@@ -375,7 +402,8 @@ struct EulerAccess {
     }
     static Verdict poke_face(const WingedEdgeMesh& m, Face f) {
         if (const char* c = element(m, f, m.face_count())) return refuse(c, f.idx, kFaceKind);
-        return {};
+        // A new vertex, and an n-gon becomes n triangles (n - 1 new faces).
+        return counts_within(m, f.idx, 1, corners(m, side_of(m, m.face_edge_[f.idx], f.idx)) - 1);
     }
 
     // ------------------------------------------------------------ the checks in words
@@ -419,6 +447,16 @@ struct EulerAccess {
         else if (code == "would-duplicate-face")
             msg = "joining " + F(x[2]) + " and " + F(x[3]) + " across " + E(x[0]) + " would give a face with the same sides as " + F(x[1]) +
                   ": the same polygon twice";
+        else if (code == "face-too-large" && opname == "join")
+            msg = "joining " + F(x[1]) + " and " + F(x[2]) + " would make a face of " + std::to_string(x[3]) +
+                  " corners; a face may have at most " + std::to_string(kMaxFaceCorners);
+        else if (code == "face-too-large")
+            msg = "splitting " + E(x[0]) + " would give " + F(x[1]) + " " + std::to_string(x[3]) + " corners; a face may have at most " +
+                  std::to_string(kMaxFaceCorners);
+        else if (code == "too-large")
+            msg = (opname == "poke" ? "poking " + F(x[0]) : opname == "split-face" ? "splitting " + F(x[0]) : "splitting " + E(x[0])) +
+                  " would make " + std::to_string(x[2]) + (x[1] == 0 ? " vertices" : " faces") + "; a mesh may have at most " +
+                  std::to_string(x[1] == 0 ? kFileLimits.max_vertices : kFileLimits.max_faces) + ", as many as a mesh file may hold";
         else if (code == "not-triangles")
             msg = "only an edge between two triangles can be flipped, but " + F(x[1]) + " beside " + E(x[0]) + " is not a triangle";
         else if (code == "would-pinch")

@@ -56,6 +56,10 @@ std::string vertex_label(int32_t v) { return "v" + std::to_string(v + 1); }
 std::string face_label(int32_t f) { return "F" + std::to_string(f + 1); }
 std::string edge_label(int32_t e) { return "e" + std::to_string(e + 1); }
 
+std::string face_too_large_message(int32_t f, int64_t corners) {
+    return face_label(f) + " has " + std::to_string(corners) + " corners; a face may have at most " + std::to_string(kMaxFaceCorners);
+}
+
 namespace {
 
 std::string join_faces(const std::vector<int32_t>& faces) {
@@ -135,6 +139,7 @@ ValidationReport validate_indexed(const IndexedMesh& mesh) {
             out.push_back(make("too-few-vertices", face_label(f) + " has " + std::to_string(n) +
                                " vertices; a polygon needs at least 3", {}, {f}));
         }
+        if (n > kMaxFaceCorners) out.push_back(make("face-too-large", face_too_large_message(f, n), {}, {f}));
         std::vector<int32_t> bad;
         for (int32_t i = 0; i < n; ++i) {
             const int32_t v = mesh.corner(f, i);

@@ -184,10 +184,8 @@ double to_coordinate(std::string_view token, int line, const char* what, const M
     return x;
 }
 
-void check_corners(long n, long face, int line, const MeshLimits& limits) {
-    if (n > limits.max_face_corners)
-        throw ParseError("face-too-large", line, "F" + std::to_string(face + 1) + " has " + std::to_string(n) +
-                         " corners; a face may have at most " + std::to_string(limits.max_face_corners));
+void check_corners(long n, long face, int line) {
+    if (n > kMaxFaceCorners) throw ParseError("face-too-large", line, face_too_large_message(static_cast<int32_t>(face), n));
 }
 
 std::string too_many(long n, const char* what, long limit) {
@@ -246,7 +244,7 @@ IndexedMesh read_off(LineReader& in, std::size_t text_size, const MeshLimits& li
         if (n < 0 || static_cast<std::size_t>(n) + 1 > t.size())
             throw ParseError("parse-error", in.number(), face_name(f) + " announces " + std::string(t[0]) +
                              " vertex indices but the line has " + std::to_string(t.size() - 1));
-        check_corners(n, f, in.number(), limits);
+        check_corners(n, f, in.number());
         corners.clear();
         for (long i = 0; i < n; ++i) {
             const long v = to_integer(t[1 + i], in.number(), "a vertex index");
@@ -272,7 +270,7 @@ void prescan_obj(LineReader& in, const MeshLimits& limits) {
             throw ParseError("too-large", in.number(), too_many(vertices, "vertices or more", limits.max_vertices));
         if (key == "f") {
             if (++faces > limits.max_faces) throw ParseError("too-large", in.number(), too_many(faces, "faces or more", limits.max_faces));
-            check_corners(static_cast<long>(in.tokens().size()) - 1, faces - 1, in.number(), limits);
+            check_corners(static_cast<long>(in.tokens().size()) - 1, faces - 1, in.number());
         }
     }
 }
@@ -299,7 +297,7 @@ IndexedMesh read_obj(LineReader& in, const MeshLimits& limits) {
         } else if (key == "f") {
             if (face_lines.size() >= static_cast<std::size_t>(limits.max_faces))
                 throw ParseError("too-large", in.number(), too_many(static_cast<long>(face_lines.size()) + 1, "faces or more", limits.max_faces));
-            check_corners(static_cast<long>(t.size()) - 1, static_cast<long>(face_lines.size()), in.number(), limits);
+            check_corners(static_cast<long>(t.size()) - 1, static_cast<long>(face_lines.size()), in.number());
             for (std::size_t i = 1; i < t.size(); ++i) {
                 const std::string_view index = t[i].substr(0, t[i].find('/'));
                 const long v = to_integer(index, in.number(), "a vertex index (i, i/t, i//n or i/t/n)");

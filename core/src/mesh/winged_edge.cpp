@@ -321,7 +321,7 @@ void apply_face_edges(const BuildOptions& options, const std::vector<EdgeRecord>
 namespace detail {
 
 bool face_corners_ok(const int32_t* corners, int32_t n, int32_t V) {
-    if (n < 3) return false;
+    if (n < 3 || n > kMaxFaceCorners) return false;
     for (int32_t i = 0; i < n; ++i)
         if (corners[i] < 0 || corners[i] >= V) return false;
     return corners_distinct(corners, n);

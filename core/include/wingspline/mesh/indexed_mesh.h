@@ -69,4 +69,8 @@ std::string vertex_label(int32_t v);
 std::string face_label(int32_t f);
 std::string edge_label(int32_t e);
 
+// face-too-large, as files and face sets are refused: "F3 has 1001 corners; a face may
+// have at most 1000" (kMaxFaceCorners, limits.h).
+std::string face_too_large_message(int32_t f, int64_t corners);
+
 } // namespace wingspline::mesh
