@@ -876,12 +876,6 @@ template <class R> void WingedEdgeMesh::poke_face_impl(Face f_, R& rec) {
 
 // ------------------------------------------------------------------ the public pairs
 namespace {
-void require_ok(const CheckResult& c) {
-    if (!c.ok) throw Error(c.code, c.message);
-}
-} // namespace
-
-namespace {
 template <class Op> ChangeRecord run_recorded(const char* name, MeshVersion& version, Op op) {
     ChangeRecord change;
     change.op = name;

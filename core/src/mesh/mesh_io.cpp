@@ -192,8 +192,12 @@ std::string too_many(long n, const char* what, long limit) {
     return "the file has " + std::to_string(n) + " " + what + "; a mesh file may have at most " + std::to_string(limit);
 }
 
-std::string face_name(long f) { return "F" + std::to_string(f + 1); }
-std::string vertex_name(long v) { return "v" + std::to_string(v + 1) + " (index " + std::to_string(v) + ")"; }
+std::string face_name(long f) { return face_label(static_cast<int32_t>(f)); }
+// The vertex of an OFF vertex line: its label, and the number the face lines call it by.
+std::string vertex_name(long v) { return vertex_label(static_cast<int32_t>(v)) + " (called " + std::to_string(v) + " in the face lines)"; }
+std::string file_vertices(long n) {
+    return n == 0 ? "the file has no vertices" : n == 1 ? "the file has only v1" : "the file has vertices v1 to " + vertex_label(static_cast<int32_t>(n - 1));
+}
 
 
 IndexedMesh read_off(LineReader& in, std::size_t text_size, const MeshLimits& limits) {
@@ -249,9 +253,9 @@ IndexedMesh read_off(LineReader& in, std::size_t text_size, const MeshLimits& li
         for (long i = 0; i < n; ++i) {
             const long v = to_integer(t[1 + i], in.number(), "a vertex index");
             if (v < 0 || v >= nv)
-                throw ParseError("index-out-of-range", in.number(), face_name(f) + " refers to vertex index " + std::to_string(v) +
-                                 (nv == 0 ? std::string(" but the file has no vertices")
-                                          : " but the file has " + std::to_string(nv) + " vertices (indices 0 to " + std::to_string(nv - 1) + ")"));
+                throw ParseError("index-out-of-range", in.number(), face_name(f) + " refers to vertex " + std::to_string(v) +
+                                 (v >= 0 ? ", that is " + vertex_label(static_cast<int32_t>(v)) + " (an OFF file counts its vertices from 0)" : "") +
+                                 ", but " + file_vertices(nv));
             corners.push_back(static_cast<int32_t>(v));
         }
         m.add_face(corners.data(), static_cast<int32_t>(corners.size()));
@@ -322,8 +326,12 @@ IndexedMesh read_obj(LineReader& in, const MeshLimits& limits) {
             const long r = refs[i];
             const long v = r > 0 ? r - 1 : vertices_before[f] + r;
             if (v < 0 || v >= nv)
-                throw ParseError("index-out-of-range", face_lines[f], "vertex reference " + std::to_string(r) +
-                                 " points outside the " + std::to_string(nv) + " vertices of the file");
+                throw ParseError("index-out-of-range", face_lines[f], face_name(static_cast<long>(f)) + " refers to " +
+                                 (r > 0 ? vertex_label(static_cast<int32_t>(r - 1))
+                                        : "vertex " + std::to_string(r) + ", counting back from " +
+                                              (vertices_before[f] > 0 ? vertex_label(static_cast<int32_t>(vertices_before[f] - 1)) + " (the last vertex before it)"
+                                                                      : std::string("no vertex (none comes before it)"))) +
+                                 ", but " + file_vertices(nv));
             corners.push_back(static_cast<int32_t>(v));
         }
         m.add_face(corners.data(), static_cast<int32_t>(corners.size()));
