@@ -57,6 +57,12 @@ std::string vertex_label(int32_t v) { return "v" + std::to_string(int64_t{v} + 1
 std::string face_label(int32_t f) { return "F" + std::to_string(int64_t{f} + 1); }
 std::string edge_label(int32_t e) { return "e" + std::to_string(int64_t{e} + 1); }
 
+std::string elements_text(std::string (*label)(int32_t), const char* plural, int32_t count) {
+    if (count <= 0) return std::string("no ") + plural;
+    if (count == 1) return "only " + label(0);
+    return plural + (" " + label(0)) + " to " + label(count - 1);
+}
+
 std::string face_too_large_message(int32_t f, int64_t corners) {
     return face_label(f) + " has " + std::to_string(corners) + " corners; a face may have at most " + std::to_string(kMaxFaceCorners);
 }
@@ -153,7 +159,7 @@ ValidationReport validate_indexed(const IndexedMesh& mesh) {
             std::string m = face_label(f) + " refers to ";
             for (std::size_t i = 0; i < bad.size(); ++i)
                 m += (i ? ", " : "") + (bad[i] >= 0 ? vertex_label(bad[i]) + " (index " + std::to_string(bad[i]) + ")" : std::to_string(bad[i]) + ", no vertex");
-            m += V == 0 ? ", but the mesh has no vertices" : V == 1 ? ", but the mesh has only v1" : ", but the mesh has vertices v1 to " + vertex_label(V - 1);
+            m += ", but the mesh has " + elements_text(&vertex_label, "vertices", V);
             out.push_back(make("index-out-of-range", m, {}, {f}));
             continue;
         }

@@ -195,9 +195,7 @@ std::string too_many(long n, const char* what, long limit) {
 std::string face_name(long f) { return face_label(static_cast<int32_t>(f)); }
 // The vertex of an OFF vertex line: its label, and the number the face lines call it by.
 std::string vertex_name(long v) { return vertex_label(static_cast<int32_t>(v)) + " (called " + std::to_string(v) + " in the face lines)"; }
-std::string file_vertices(long n) {
-    return n == 0 ? "the file has no vertices" : n == 1 ? "the file has only v1" : "the file has vertices v1 to " + vertex_label(static_cast<int32_t>(n - 1));
-}
+std::string file_vertices(long n) { return "the file has " + elements_text(&vertex_label, "vertices", static_cast<int32_t>(n)); }
 
 
 IndexedMesh read_off(LineReader& in, std::size_t text_size, const MeshLimits& limits) {

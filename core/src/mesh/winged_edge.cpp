@@ -535,12 +535,11 @@ std::string element_label(MeshTable t, int32_t i) {
 }
 
 std::string missing_element_message(MeshTable t, int32_t index, int32_t count) {
-    const std::string kind = table_name(t), kinds = t == MeshTable::Vertex ? "vertices" : kind + "s";
-    const std::string has = count <= 0   ? "the mesh has no " + kinds
-                            : count == 1 ? "the mesh has only " + element_label(t, 0)
-                                         : "the mesh has " + kinds + " " + element_label(t, 0) + " to " + element_label(t, count - 1);
-    if (index < 0) return std::to_string(index) + " names no " + kind + (index == kNone ? " (it stands for none)" : "") + ": " + has;
-    return "there is no " + element_label(t, index) + ": " + has;
+    const std::string has = t == MeshTable::Vertex ? elements_text(&vertex_label, "vertices", count)
+                            : t == MeshTable::Edge ? elements_text(&edge_label, "edges", count)
+                                                   : elements_text(&face_label, "faces", count);
+    if (index < 0) return std::to_string(index) + " names no " + table_name(t) + (index == kNone ? " (it stands for none)" : "") + ": the mesh has " + has;
+    return "there is no " + element_label(t, index) + ": the mesh has " + has;
 }
 
 std::string removed_element_message(MeshTable t, int32_t index) {

@@ -3,10 +3,9 @@
 // flat arrays of whole numbers (edges: 8 per row, S E L R S:L S:R E:L E:R; the student's row r
 // is their edge e(r+1)); -1 = none, -2 = blank. See docs/api-mesh.md, "Checking a student's
 // winged-edge table".
-import { unwrap, fail, isNumberArray, integerIn } from './errors.js';
+import { unwrap, fail, isNumberArray, integerIn, INT32_MAX } from './errors.js';
 import { facesToCsr } from './mesh-api.js';
 
-const INT32_MAX = 2147483647;
 
 // Cell values with a meaning of their own.
 const ANSWER_CELLS = Object.freeze({ none: -1, blank: -2 });

@@ -2,7 +2,7 @@
 // A built mesh lives in the core's registry; the Mesh object below holds only its integer
 // handle, and mesh.dispose() frees it at once (a FinalizationRegistry is only a safety net
 // for a forgotten dispose, never the mechanism). See docs/api-mesh.md.
-import { WingsplineError, unwrap, fail, integerIn, isNumberArray, elementIndex } from './errors.js';
+import { WingsplineError, unwrap, fail, integerIn, isNumberArray, elementIndex, INT32_MAX } from './errors.js';
 import { elementLabel } from './element-labels.js';
 import { readTable, findDescriptor } from './tables.js';
 
@@ -15,7 +15,6 @@ function vector3(value, what) {
 // Mesh files cross into the module as UTF-8 bytes, copied once (see meshParse).
 const utf8 = new TextEncoder();
 
-const INT32_MAX = 2147483647;
 
 function checkPositions(positions) {
   if (!isNumberArray(positions)) fail('invalid-argument', 'positions must be an array or Float64Array of numbers (x, y, z per vertex)');
