@@ -26,8 +26,9 @@ export type WingsplineErrorCode =
   // loading and arguments (every part)
   | 'core-load-failed' | 'internal-error' | 'invalid-argument' | 'disposed'
   // mesh files
-  | 'parse-error' | 'truncated-file' | 'line-too-long' | 'unknown-format' | 'face-too-large' | 'too-large'
-  | 'index-out-of-range' | 'coordinate-out-of-range'
+  | 'parse-error' | 'truncated-file' | 'line-too-long' | 'unknown-format' | 'index-out-of-range'
+  // the mesh limits (meshLimits), wherever a mesh comes from: a file, a face set or an edit
+  | 'face-too-large' | 'too-large' | 'coordinate-out-of-range'
   // building a mesh (validateMesh problems; buildMesh throws the first)
   | 'empty-mesh' | 'non-finite-coordinate' | 'too-few-vertices' | 'repeated-vertex' | 'non-manifold-edge'
   | 'inconsistent-orientation' | 'duplicate-face' | 'non-manifold-vertex' | 'isolated-vertex'

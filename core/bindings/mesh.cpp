@@ -241,23 +241,11 @@ val validate_indexed_mesh(val positions, val face_offsets, val face_vertices) {
 
 // ------------------------------------------------------------------ the winged edge
 
-// A gap left by an edit (join-faces, collapse-edge) is refused like a missing element.
-const char* const kGap = " was removed by an edit (its number stays a gap until the mesh is compacted)";
-void require_vertex(const WingedEdgeMesh& w, int32_t v) {
-    require(v >= 0 && v < w.vertex_count(), "invalid-element",
-            "vertex index " + std::to_string(v) + " is out of range: the mesh has vertices 0 to " + std::to_string(w.vertex_count() - 1));
-    require(!w.is_deleted(Vertex(v)), "deleted-element", vertex_label(v) + kGap);
-}
-void require_face(const WingedEdgeMesh& w, int32_t f) {
-    require(f >= 0 && f < w.face_count(), "invalid-element",
-            "face index " + std::to_string(f) + " is out of range: the mesh has faces 0 to " + std::to_string(w.face_count() - 1));
-    require(!w.is_deleted(Face(f)), "deleted-element", face_label(f) + kGap);
-}
-void require_edge(const WingedEdgeMesh& w, int32_t e) {
-    require(e >= 0 && e < w.edge_count(), "invalid-element",
-            "edge index " + std::to_string(e) + " is out of range: the mesh has edges 0 to " + std::to_string(w.edge_count() - 1));
-    require(!w.is_deleted(Edge(e)), "deleted-element", edge_label(e) + kGap);
-}
+// A missing element or a gap left by an edit (join-faces, collapse-edge), refused as the
+// mesh's own operations refuse them (WingedEdgeMesh::check_element).
+void require_vertex(const WingedEdgeMesh& w, int32_t v) { require_ok(w.check_element(Vertex(v))); }
+void require_face(const WingedEdgeMesh& w, int32_t f) { require_ok(w.check_element(Face(f))); }
+void require_edge(const WingedEdgeMesh& w, int32_t e) { require_ok(w.check_element(Edge(e))); }
 
 // kind: edges-around-vertex, faces-around-vertex, vertices-around-vertex (v);
 // edges-of-face, vertices-of-face, face-neighbours (f); faces-of-edge (e).
@@ -795,7 +783,7 @@ val mesh_limits() {
     return guarded([] {
         val r = val::object();
         r.set("maxCoordinate", kFileLimits.max_coordinate);
-        r.set("maxFaceCorners", kFileLimits.max_face_corners);
+        r.set("maxFaceCorners", kMaxFaceCorners);
         r.set("maxVertices", kFileLimits.max_vertices);
         r.set("maxFaces", kFileLimits.max_faces);
         return r;

@@ -14,6 +14,7 @@
 // next_in_face(); a boundary side (face kNone) is walked as though the boundary were a
 // face, as the slide defines the wings. Which side of the next edge belongs to the same
 // face is read from its faces (an edge never has one face on both sides).
+#include "wingspline/mesh/limits.h"
 #include "wingspline/mesh/winged_edge.h"
 
 #include <algorithm>
@@ -201,17 +202,51 @@ struct EulerAccess {
         } while (e != first && ++n <= m.edge_count());
         return false;
     }
+    // Every corner of p but a and b is a corner of q.
+    static bool corners_within(const WingedEdgeMesh& m, int32_t p, int32_t q, int32_t a, int32_t b) {
+        const int32_t first = m.face_edge_[p];
+        int32_t x = first, n = 0;
+        do {
+            const EdgeRecord& r = m.edges_[x];
+            const int32_t v = r.left == p ? r.start : r.end; // the corner this side leaves
+            if (v != a && v != b && !face_has_corner(m, q, v)) return false;
+            x = m.next_in_face(x, p);
+        } while (x != first && ++n <= m.edge_count());
+        return true;
+    }
     template <class H> static const char* element(const WingedEdgeMesh& m, H h, int32_t count) {
         if (h.idx < 0 || h.idx >= count) return "invalid-element";
         return m.is_deleted(h) ? "deleted-element" : nullptr;
     }
     static constexpr int32_t kVertexKind = 0, kEdgeKind = 1, kFaceKind = 2; // Verdict x[1] of an element refusal
 
+    // The mesh limits (limits.h): an edit makes nothing a mesh file could not hold, so the
+    // page can always read its own export back. Corners of a side's face, counted up to one
+    // past the limit (a walk of at most kMaxFaceCorners + 1 steps).
+    static int32_t corners(const WingedEdgeMesh& m, Half h) { return loop_size(m, h, kMaxFaceCorners + 1); }
+    // Whether `added` more elements would make more live ones than `limit`: the rows less the
+    // gaps, which are counted only when the rows alone would pass it (O(1) below the limit).
+    static bool over_limit(const std::vector<char>& gaps, int32_t rows, int32_t added, int32_t limit) {
+        if (static_cast<int64_t>(rows) + added <= limit) return false;
+        return rows - std::count(gaps.begin(), gaps.end(), char(1)) + static_cast<int64_t>(added) > limit;
+    }
+    // too-large, before the operation: x = {its element, 0 (vertices) or 1 (faces), how many then}.
+    static Verdict counts_within(const WingedEdgeMesh& m, int32_t element, int32_t new_vertices, int32_t new_faces) {
+        if (over_limit(m.vertex_deleted_, m.vertex_count(), new_vertices, kFileLimits.max_vertices))
+            return refuse("too-large", element, 0, m.counts().vertices + new_vertices);
+        if (over_limit(m.face_deleted_, m.face_count(), new_faces, kFileLimits.max_faces))
+            return refuse("too-large", element, 1, m.counts().faces + new_faces);
+        return {};
+    }
+
     // ------------------------------------------------------------ the checks, without words
     static Verdict split_edge(const WingedEdgeMesh& m, Edge e, double t) {
         if (const char* c = element(m, e, m.edge_count())) return refuse(c, e.idx, kEdgeKind);
         if (!(t > 0.0 && t < 1.0)) return refuse("invalid-parameter", e.idx);
-        return {};
+        // Both faces gain a corner.
+        for (const Half h : {Half{e.idx, true}, Half{e.idx, false}})
+            if (face(m, h) != kNone && corners(m, h) + 1 > kMaxFaceCorners) return refuse("face-too-large", e.idx, face(m, h), kNone, corners(m, h) + 1);
+        return counts_within(m, e.idx, 1, 0);
     }
     static Verdict split_face(const WingedEdgeMesh& m, Face f, Vertex a, Vertex b, FaceSides* sides = nullptr) {
         if (const char* c = element(m, f, m.face_count())) return refuse(c, f.idx, kFaceKind);
@@ -242,6 +277,7 @@ struct EulerAccess {
             const EdgeRecord& r = m.edges_[existing];
             return refuse(r.left == f.idx || r.right == f.idx ? "adjacent-corners" : "edge-exists", a.idx, b.idx, existing, f.idx);
         }
+        if (const Verdict v = counts_within(m, f.idx, 0, 1); !v.ok()) return v;
         if (sides) {
             *sides = found;
             sides->a = a.idx, sides->b = b.idx;
@@ -279,6 +315,9 @@ struct EulerAccess {
             } while (x != start && ++n <= m.edge_count());
         }
         if (one_face) return refuse("would-duplicate-face", e.idx, across, r.left, r.right);
+        // The joined face has the corners of both but the two of e counted twice.
+        const int32_t joined = corners(m, {e.idx, true}) + corners(m, {e.idx, false}) - 2;
+        if (joined > kMaxFaceCorners) return refuse("face-too-large", e.idx, r.left, r.right, joined);
         return {};
     }
     static Verdict flip_edge(const WingedEdgeMesh& m, Edge e) {
@@ -307,11 +346,18 @@ struct EulerAccess {
                 continue;
             }
             if (n > 3) continue;
-            const int32_t c = head(m, next(m, h));
+            // The triangle (S, E, c) goes and its two edges at c become one, between the faces
+            // beyond them: A across c-S, B across E-c. c keeps one edge fewer. With three, all
+            // inside, it keeps two, both between A and B: polygons may (join-faces makes such a
+            // vertex), two triangles would be one triangle twice. (With two, what lies beyond
+            // them is a face holding both S and E, refused by the link condition below, or
+            // the boundary, where S and E are both boundary vertices: refused above.)
+            const Half into_c = next(m, h), out_of_c = next(m, into_c);
+            const int32_t c = head(m, into_c);
             opposite[s] = c;
-            // The two edges at c merge into one: c keeps one edge fewer.
-            const int32_t need = on_boundary(m, c) ? 3 : 4;
-            if (valence(m, c) < need) return refuse("degenerate-vertex", e.idx, c);
+            const Half to_a = twin(out_of_c), to_b = twin(into_c);
+            if (valence(m, c) == 3 && !on_boundary(m, c) && loop_size(m, to_a, 4) == 3 && loop_size(m, to_b, 4) == 3)
+                return refuse("degenerate-vertex", e.idx, c, face(m, to_a), face(m, to_b));
         }
         // The link condition: the vertices joined to both S and E are exactly the opposite
         // corners of the triangles on e.
@@ -332,11 +378,32 @@ struct EulerAccess {
                 return refuse("link-condition-face", e.idx, f, r.start, r.end);
             x = m.next_ccw(x, r.end);
         } while (x != first_e && ++n <= m.edge_count());
+        // No two faces may become the same polygon (validate_indexed's duplicate-face): with
+        // E renamed S, a face at E must not have the corners of another face at S. A face
+        // that goes with its triangle takes no part; L and R keep all their corners but E.
+        const auto goes = [&](int32_t f) { return f == kNone || (f == r.left && opposite[0] != kNone) || (f == r.right && opposite[1] != kNone); };
+        const auto corners_after = [&](int32_t f) { return face_size(m, f) - (f == r.left || f == r.right ? 1 : 0); };
+        for (int32_t p_edge = first_e, i = 0;;) {
+            const int32_t p = m.edges_[p_edge].start == r.end ? m.edges_[p_edge].left : m.edges_[p_edge].right;
+            if (!goes(p)) {
+                const int32_t size = corners_after(p);
+                for (int32_t q_edge = first, j = 0;;) {
+                    const int32_t q = m.edges_[q_edge].start == r.start ? m.edges_[q_edge].left : m.edges_[q_edge].right;
+                    if (q != p && !goes(q) && corners_after(q) == size && corners_within(m, p, q, r.start, r.end))
+                        return refuse("would-duplicate-face", e.idx, p, q);
+                    q_edge = m.next_ccw(q_edge, r.start);
+                    if (q_edge == first || ++j > m.edge_count()) break;
+                }
+            }
+            p_edge = m.next_ccw(p_edge, r.end);
+            if (p_edge == first_e || ++i > m.edge_count()) break;
+        }
         return {};
     }
     static Verdict poke_face(const WingedEdgeMesh& m, Face f) {
         if (const char* c = element(m, f, m.face_count())) return refuse(c, f.idx, kFaceKind);
-        return {};
+        // A new vertex, and an n-gon becomes n triangles (n - 1 new faces).
+        return counts_within(m, f.idx, 1, corners(m, side_of(m, m.face_edge_[f.idx], f.idx)) - 1);
     }
 
     // ------------------------------------------------------------ the checks in words
@@ -375,9 +442,21 @@ struct EulerAccess {
         else if (code == "faces-touch-elsewhere")
             msg = F(x[2]) + " and " + F(x[3]) + " also meet at " + V(x[1]) + ": joining them across " + E(x[0]) +
                   " would make a face that passes " + V(x[1]) + " twice";
+        else if (code == "would-duplicate-face" && opname == "collapse")
+            msg = "collapsing " + E(x[0]) + " would give " + F(x[1]) + " the corners of " + F(x[2]) + ": the same polygon twice";
         else if (code == "would-duplicate-face")
             msg = "joining " + F(x[2]) + " and " + F(x[3]) + " across " + E(x[0]) + " would give a face with the same sides as " + F(x[1]) +
                   ": the same polygon twice";
+        else if (code == "face-too-large" && opname == "join")
+            msg = "joining " + F(x[1]) + " and " + F(x[2]) + " would make a face of " + std::to_string(x[3]) +
+                  " corners; a face may have at most " + std::to_string(kMaxFaceCorners);
+        else if (code == "face-too-large")
+            msg = "splitting " + E(x[0]) + " would give " + F(x[1]) + " " + std::to_string(x[3]) + " corners; a face may have at most " +
+                  std::to_string(kMaxFaceCorners);
+        else if (code == "too-large")
+            msg = (opname == "poke" ? "poking " + F(x[0]) : opname == "split-face" ? "splitting " + F(x[0]) : "splitting " + E(x[0])) +
+                  " would make " + std::to_string(x[2]) + (x[1] == 0 ? " vertices" : " faces") + "; a mesh may have at most " +
+                  std::to_string(x[1] == 0 ? kFileLimits.max_vertices : kFileLimits.max_faces) + ", as many as a mesh file may hold";
         else if (code == "not-triangles")
             msg = "only an edge between two triangles can be flipped, but " + F(x[1]) + " beside " + E(x[0]) + " is not a triangle";
         else if (code == "would-pinch")
@@ -386,7 +465,8 @@ struct EulerAccess {
         else if (code == "hole-too-small")
             msg = "the boundary hole beside " + E(x[0]) + " has only three corners: collapsing " + E(x[0]) + " would close it into two edges with no face between";
         else if (code == "degenerate-vertex")
-            msg = "collapsing " + E(x[0]) + " would leave " + V(x[1]) + " with too few edges: its two remaining faces would share both of them";
+            msg = "collapsing " + E(x[0]) + " would leave " + V(x[1]) + " with two edges, both between the triangles " + F(x[2]) + " and " +
+                  F(x[3]) + ": the same triangle twice";
         else if (code == "link-condition")
             msg = V(x[1]) + " is joined to both " + V(x[2]) + " and " + V(x[3]) + " but not across a triangle on " + E(x[0]) +
                   ": collapsing " + E(x[0]) + " would make two edges between the same vertices (the link condition)";
@@ -795,12 +875,6 @@ template <class R> void WingedEdgeMesh::poke_face_impl(Face f_, R& rec) {
 }
 
 // ------------------------------------------------------------------ the public pairs
-namespace {
-void require_ok(const CheckResult& c) {
-    if (!c.ok) throw Error(c.code, c.message);
-}
-} // namespace
-
 namespace {
 template <class Op> ChangeRecord run_recorded(const char* name, MeshVersion& version, Op op) {
     ChangeRecord change;

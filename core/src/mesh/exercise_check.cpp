@@ -439,12 +439,12 @@ WingedEdgeMesh winged_edge_exercise_mesh(const std::vector<int32_t>& face_offset
     for (std::size_t i = 0; i < answer.edges.size(); ++i)
         require(answer.edges[i] >= kBlank, "invalid-answer",
                 "row " + edge_label(static_cast<int32_t>(i / kCellsPerRow)) + ", " + kFieldName[i % kCellsPerRow] + " holds " +
-                    std::to_string(answer.edges[i]) + "; a cell is a number from 0, -1 (none) or -2 (blank)");
+                    std::to_string(answer.edges[i]) + "; a cell holds an index (0 names v1, e1 or F1), -1 (none) or -2 (blank)");
     for (const auto* table : {&answer.vertex_edges, &answer.face_edges})
         for (std::size_t i = 0; i < table->size(); ++i)
             require((*table)[i] >= kBlank, "invalid-answer",
                     std::string(table == &answer.vertex_edges ? "vertex " + vertex_label(static_cast<int32_t>(i)) : "face " + face_label(static_cast<int32_t>(i))) +
-                        " holds " + std::to_string((*table)[i]) + "; a cell is a number from 0, -1 (none) or -2 (blank)");
+                        " holds " + std::to_string((*table)[i]) + "; a cell holds an index (0 names v1, e1 or F1), -1 (none) or -2 (blank)");
     return exercise_mesh(face_offsets, face_vertices, vertex_count);
 }
 

@@ -40,7 +40,7 @@ void require_list(const ListAnswer& a, int32_t rows, const std::string& what, st
         for (int32_t i = a.offsets[r]; i < a.offsets[r + 1]; ++i)
             require(a.cells[i] >= kBlank, "invalid-answer",
                     what + ", " + row_label(r) + ", item " + std::to_string(i - a.offsets[r] + 1) + " holds " +
-                        std::to_string(a.cells[i]) + "; a cell is a number from 0, -1 (none) or -2 (blank)");
+                        std::to_string(a.cells[i]) + "; a cell holds an index (0 names v1, e1 or F1), -1 (none) or -2 (blank)");
     }
 }
 
@@ -432,7 +432,7 @@ EdgeListTableResult run_edge_list(const std::vector<int32_t>& face_offsets, cons
     for (std::size_t i = 0; i < answer.edges.size(); ++i)
         require(answer.edges[i] >= kBlank, "invalid-answer",
                 "row " + edge_label(static_cast<int32_t>(i / 4)) + ", " + kEdgeListField[i % 4] + " holds " + std::to_string(answer.edges[i]) +
-                    "; a cell is a number from 0, -1 (\u03bb) or -2 (blank)");
+                    "; a cell holds an index (0 names V1 or P1), -1 (\u03bb) or -2 (blank)");
     require_list(answer.polygons, mesh.face_count(), "the polygon table", face_label);
     EdgeListChecker c(mesh, answer);
     c.match_rows();

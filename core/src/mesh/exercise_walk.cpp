@@ -10,8 +10,7 @@ WalkStepCheck check_walk_step(const WingedEdgeMesh& mesh, bool around_face, int3
     const int32_t count = around_face ? mesh.face_count() : mesh.vertex_count();
     const std::string name = element >= 0 && element < count ? (around_face ? face_label(element) : vertex_label(element)) : "";
     require(element >= 0 && element < count, "index-out-of-range",
-            std::string("the mesh has no ") + (around_face ? "face " : "vertex ") + std::to_string(element) + " (it has " +
-                std::to_string(count) + (around_face ? " faces)" : " vertices)"));
+            missing_element_message(around_face ? MeshTable::Face : MeshTable::Vertex, element, count));
     require(around_face || mesh.vertex_edge(element) != kNone, "no-walk",
             name + " belongs to no face: it has no edge to walk around");
     // The walk's edges, and per edge the column the rule reads there and what it says.
@@ -44,8 +43,10 @@ WalkStepCheck check_walk_step(const WingedEdgeMesh& mesh, bool around_face, int3
     const std::string closed = out.done ? "; that is the first edge again, so the walk is closed" : "";
     if (out.correct) out.reason = edge_label(out.expected) + ": " + why + ", " + edge_label(out.expected) + closed;
     else {
-        const std::string wrong = given == -2 ? std::string("no edge given") : given >= 0 && given < mesh.edge_count() ? "not " + edge_label(given)
-                                                                             : "not " + std::to_string(given) + " (the mesh has no such edge)";
+        const std::string wrong = given == -2                                   ? std::string("no edge given")
+                                  : given >= 0 && given < mesh.edge_count() ? "not " + edge_label(given)
+                                  : given >= 0                               ? "not " + edge_label(given) + " (the mesh has no such edge)"
+                                                                             : "not " + std::to_string(given) + " (that names no edge)";
         out.reason = wrong + ": " + why + ", which is " + edge_label(out.expected) + closed;
     }
     return out;

@@ -22,8 +22,8 @@ inline void put_side(BucketSlot* slots, int32_t* bucket_end, int32_t h, int32_t 
     slots[bucket_end[a < b ? a : b]++] = {a < b ? b : a, 2 * h + (a > b ? 1 : 0)};
 }
 
-// A face of n corners the winged edge can hold: n >= 3, each an existing vertex, all
-// distinct (winged_edge.cpp).
+// A face of n corners the winged edge can hold: 3 <= n <= kMaxFaceCorners (limits.h), each
+// an existing vertex, all distinct (winged_edge.cpp).
 bool face_corners_ok(const int32_t* corners, int32_t n, int32_t V);
 
 // Build phase 1 (winged_edge.cpp count_sides) with triangles unrolled.

@@ -52,9 +52,20 @@ std::string first_error_message(const ValidationReport& r) {
 InvalidMesh::InvalidMesh(ValidationReport report)
     : Error(first_error_code(report), first_error_message(report)), report_(std::move(report)) {}
 
-std::string vertex_label(int32_t v) { return "v" + std::to_string(v + 1); }
-std::string face_label(int32_t f) { return "F" + std::to_string(f + 1); }
-std::string edge_label(int32_t e) { return "e" + std::to_string(e + 1); }
+// (int64_t: the largest index a caller may pass, 2^31 - 1, has a label too.)
+std::string vertex_label(int32_t v) { return "v" + std::to_string(int64_t{v} + 1); }
+std::string face_label(int32_t f) { return "F" + std::to_string(int64_t{f} + 1); }
+std::string edge_label(int32_t e) { return "e" + std::to_string(int64_t{e} + 1); }
+
+std::string elements_text(std::string (*label)(int32_t), const char* plural, int32_t count) {
+    if (count <= 0) return std::string("no ") + plural;
+    if (count == 1) return "only " + label(0);
+    return plural + (" " + label(0)) + " to " + label(count - 1);
+}
+
+std::string face_too_large_message(int32_t f, int64_t corners) {
+    return face_label(f) + " has " + std::to_string(corners) + " corners; a face may have at most " + std::to_string(kMaxFaceCorners);
+}
 
 namespace {
 
@@ -135,6 +146,7 @@ ValidationReport validate_indexed(const IndexedMesh& mesh) {
             out.push_back(make("too-few-vertices", face_label(f) + " has " + std::to_string(n) +
                                " vertices; a polygon needs at least 3", {}, {f}));
         }
+        if (n > kMaxFaceCorners) out.push_back(make("face-too-large", face_too_large_message(f, n), {}, {f}));
         std::vector<int32_t> bad;
         for (int32_t i = 0; i < n; ++i) {
             const int32_t v = mesh.corner(f, i);
@@ -142,11 +154,12 @@ ValidationReport validate_indexed(const IndexedMesh& mesh) {
             else used[v] = 1;
         }
         if (!bad.empty()) {
+            // Named as the slides name vertices, with the index as the face list gives it.
             face_ok[f] = 0;
-            std::string m = face_label(f) + " refers to vertex index";
-            m += bad.size() > 1 ? "es " : " ";
-            for (std::size_t i = 0; i < bad.size(); ++i) m += (i ? ", " : "") + std::to_string(bad[i]);
-            m += " (0-based) but the mesh has " + std::to_string(V) + " vertices (indices 0 to " + std::to_string(V - 1) + ")";
+            std::string m = face_label(f) + " refers to ";
+            for (std::size_t i = 0; i < bad.size(); ++i)
+                m += (i ? ", " : "") + (bad[i] >= 0 ? vertex_label(bad[i]) + " (index " + std::to_string(bad[i]) + ")" : std::to_string(bad[i]) + ", no vertex");
+            m += ", but the mesh has " + elements_text(&vertex_label, "vertices", V);
             out.push_back(make("index-out-of-range", m, {}, {f}));
             continue;
         }

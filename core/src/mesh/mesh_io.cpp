@@ -184,18 +184,18 @@ double to_coordinate(std::string_view token, int line, const char* what, const M
     return x;
 }
 
-void check_corners(long n, long face, int line, const MeshLimits& limits) {
-    if (n > limits.max_face_corners)
-        throw ParseError("face-too-large", line, "F" + std::to_string(face + 1) + " has " + std::to_string(n) +
-                         " corners; a face may have at most " + std::to_string(limits.max_face_corners));
+void check_corners(long n, long face, int line) {
+    if (n > kMaxFaceCorners) throw ParseError("face-too-large", line, face_too_large_message(static_cast<int32_t>(face), n));
 }
 
 std::string too_many(long n, const char* what, long limit) {
     return "the file has " + std::to_string(n) + " " + what + "; a mesh file may have at most " + std::to_string(limit);
 }
 
-std::string face_name(long f) { return "F" + std::to_string(f + 1); }
-std::string vertex_name(long v) { return "v" + std::to_string(v + 1) + " (index " + std::to_string(v) + ")"; }
+std::string face_name(long f) { return face_label(static_cast<int32_t>(f)); }
+// The vertex of an OFF vertex line: its label, and the number the face lines call it by.
+std::string vertex_name(long v) { return vertex_label(static_cast<int32_t>(v)) + " (called " + std::to_string(v) + " in the face lines)"; }
+std::string file_vertices(long n) { return "the file has " + elements_text(&vertex_label, "vertices", static_cast<int32_t>(n)); }
 
 
 IndexedMesh read_off(LineReader& in, std::size_t text_size, const MeshLimits& limits) {
@@ -246,14 +246,14 @@ IndexedMesh read_off(LineReader& in, std::size_t text_size, const MeshLimits& li
         if (n < 0 || static_cast<std::size_t>(n) + 1 > t.size())
             throw ParseError("parse-error", in.number(), face_name(f) + " announces " + std::string(t[0]) +
                              " vertex indices but the line has " + std::to_string(t.size() - 1));
-        check_corners(n, f, in.number(), limits);
+        check_corners(n, f, in.number());
         corners.clear();
         for (long i = 0; i < n; ++i) {
             const long v = to_integer(t[1 + i], in.number(), "a vertex index");
             if (v < 0 || v >= nv)
-                throw ParseError("index-out-of-range", in.number(), face_name(f) + " refers to vertex index " + std::to_string(v) +
-                                 (nv == 0 ? std::string(" but the file has no vertices")
-                                          : " but the file has " + std::to_string(nv) + " vertices (indices 0 to " + std::to_string(nv - 1) + ")"));
+                throw ParseError("index-out-of-range", in.number(), face_name(f) + " refers to vertex " + std::to_string(v) +
+                                 (v >= 0 ? ", that is " + vertex_label(static_cast<int32_t>(v)) + " (an OFF file counts its vertices from 0)" : "") +
+                                 ", but " + file_vertices(nv));
             corners.push_back(static_cast<int32_t>(v));
         }
         m.add_face(corners.data(), static_cast<int32_t>(corners.size()));
@@ -272,7 +272,7 @@ void prescan_obj(LineReader& in, const MeshLimits& limits) {
             throw ParseError("too-large", in.number(), too_many(vertices, "vertices or more", limits.max_vertices));
         if (key == "f") {
             if (++faces > limits.max_faces) throw ParseError("too-large", in.number(), too_many(faces, "faces or more", limits.max_faces));
-            check_corners(static_cast<long>(in.tokens().size()) - 1, faces - 1, in.number(), limits);
+            check_corners(static_cast<long>(in.tokens().size()) - 1, faces - 1, in.number());
         }
     }
 }
@@ -299,7 +299,7 @@ IndexedMesh read_obj(LineReader& in, const MeshLimits& limits) {
         } else if (key == "f") {
             if (face_lines.size() >= static_cast<std::size_t>(limits.max_faces))
                 throw ParseError("too-large", in.number(), too_many(static_cast<long>(face_lines.size()) + 1, "faces or more", limits.max_faces));
-            check_corners(static_cast<long>(t.size()) - 1, static_cast<long>(face_lines.size()), in.number(), limits);
+            check_corners(static_cast<long>(t.size()) - 1, static_cast<long>(face_lines.size()), in.number());
             for (std::size_t i = 1; i < t.size(); ++i) {
                 const std::string_view index = t[i].substr(0, t[i].find('/'));
                 const long v = to_integer(index, in.number(), "a vertex index (i, i/t, i//n or i/t/n)");
@@ -324,8 +324,12 @@ IndexedMesh read_obj(LineReader& in, const MeshLimits& limits) {
             const long r = refs[i];
             const long v = r > 0 ? r - 1 : vertices_before[f] + r;
             if (v < 0 || v >= nv)
-                throw ParseError("index-out-of-range", face_lines[f], "vertex reference " + std::to_string(r) +
-                                 " points outside the " + std::to_string(nv) + " vertices of the file");
+                throw ParseError("index-out-of-range", face_lines[f], face_name(static_cast<long>(f)) + " refers to " +
+                                 (r > 0 ? vertex_label(static_cast<int32_t>(r - 1))
+                                        : "vertex " + std::to_string(r) + ", counting back from " +
+                                              (vertices_before[f] > 0 ? vertex_label(static_cast<int32_t>(vertices_before[f] - 1)) + " (the last vertex before it)"
+                                                                      : std::string("no vertex (none comes before it)"))) +
+                                 ", but " + file_vertices(nv));
             corners.push_back(static_cast<int32_t>(v));
         }
         m.add_face(corners.data(), static_cast<int32_t>(corners.size()));

@@ -423,15 +423,7 @@ std::array<QueryAnswer, kRepresentationCount> answer_query(QueryKind kind, int32
                                                            const WingedEdgeMesh& w) {
     const bool of_vertex = kind == QueryKind::FacesAroundVertex || kind == QueryKind::EdgesAroundVertex;
     const bool of_edge = kind == QueryKind::FacesOfEdge;
-    const int32_t count = of_vertex ? w.vertex_count() : of_edge ? w.edge_count() : w.face_count();
-    const std::string what = of_vertex ? "vertex" : of_edge ? "edge" : "face";
-    const std::string whats = of_vertex ? "vertices" : what + "s";
-    require(element >= 0 && element < count, "invalid-element",
-            what + " index " + std::to_string(element) + " is out of range: the mesh has " + whats + " 0 to " +
-                std::to_string(count - 1));
-    const bool gap = of_vertex ? w.is_deleted(Vertex(element)) : of_edge ? w.is_deleted(Edge(element)) : w.is_deleted(Face(element));
-    require(!gap, "deleted-element", (of_vertex ? vertex_label(element) : of_edge ? edge_label(element) : face_label(element)) +
-                                         " was removed by an edit (its number stays a gap until the mesh is compacted)");
+    require_ok(of_vertex ? w.check_element(Vertex(element)) : of_edge ? w.check_element(Edge(element)) : w.check_element(Face(element)));
     return {independent_faces_query(kind, element, reps.independent_faces, reps.corner_edge_names, w),
             vertex_face_tables_query(kind, element, reps.vertex_face_tables, reps.corner_edge_names, w),
             adjacency_lists_query(kind, element, reps.adjacency_lists),

@@ -353,7 +353,7 @@ CheckResult check_subdivide(const WingedEdgeMesh& mesh, Scheme scheme, int32_t s
         find(mesh.deleted_faces(), &face_label);
         return CheckResult::refuse("mesh-has-gaps", "the mesh has elements removed by an edit (" + first +
                                                         " is a gap); compact it first, so that its vertices are numbered "
-                                                        "0 to V-1 and the result's numbering is defined");
+                                                        "v1, v2, ... without gaps and the result's numbering is defined");
     }
     if (scheme == Scheme::Loop) {
         for (int32_t f = 0; f < mesh.face_count(); ++f) {

@@ -31,11 +31,7 @@ BoundingBox bounding_box(const WingedEdgeMesh& mesh) {
 }
 
 glm::dvec3 vertex_normal(const WingedEdgeMesh& mesh, int32_t v) {
-    if (v < 0 || v >= mesh.vertex_count())
-        throw Error("invalid-element", "vertex index " + std::to_string(v) + " is out of range: the mesh has vertices 0 to " +
-                                           std::to_string(mesh.vertex_count() - 1));
-    if (mesh.is_deleted(Vertex(v)))
-        throw Error("deleted-element", vertex_label(v) + " was removed by an edit (its number stays a gap until the mesh is compacted)");
+    require_ok(mesh.check_element(Vertex(v)));
     glm::dvec3 sum(0.0);
     for (int32_t f : mesh.faces_around_vertex(v)) {
         const std::vector<int32_t> c = mesh.vertices_of_face(f);

@@ -140,6 +140,10 @@ void number_edges(const IndexedMesh& mesh, std::vector<int32_t>& edge_of, std::v
     }
 }
 
+// An edge the caller gave, as a message names it: its label, or the number itself when it
+// is negative (-1 = none).
+std::string edge_or_none(int32_t e) { return e >= 0 ? edge_label(e) : std::to_string(e); }
+
 // Phase 4b, the caller's numbering (BuildOptions::edges, e.g. the slide's e1..e7): find
 // each [s, t] in its bucket and renumber and reorient the edge table to match.
 void apply_edge_list(const BuildOptions& options, int32_t V, const std::vector<int32_t>& bucket_end,
@@ -152,8 +156,9 @@ void apply_edge_list(const BuildOptions& options, int32_t V, const std::vector<i
     for (int32_t i = 0; i < E; ++i) {
         const int32_t s = options.edges[i][0], t = options.edges[i][1];
         const std::string label = edge_label(i) + " = [" + std::to_string(s) + ", " + std::to_string(t) + "]";
-        if (s < 0 || t < 0 || s >= V || t >= V || s == t)
-            throw Error("invalid-edge-list", label + " does not name two different vertices of the mesh");
+        for (const int32_t v : {s, t})
+            if (v < 0 || v >= V) throw Error("invalid-edge-list", label + ": " + missing_element_message(MeshTable::Vertex, v, V));
+        if (s == t) throw Error("invalid-edge-list", label + " joins " + vertex_label(s) + " to itself; an edge needs two different vertices");
         const int32_t lo = std::min(s, t), hi = std::max(s, t);
         const BucketSlot* first = slots + (lo == 0 ? 0 : bucket_end[lo - 1]);
         const BucketSlot* last = slots + bucket_end[lo];
@@ -294,8 +299,11 @@ void apply_vertex_edges(const BuildOptions& options, const std::vector<EdgeRecor
         const bool ok = isolated ? e == kNone
                                  : (e >= 0 && e < E && (edges[e].start == v || edges[e].end == v));
         if (!ok)
-            throw Error("invalid-vertex-edge", "vertexEdges gives " + (e >= 0 && e < E ? edge_label(e) : std::to_string(e)) +
-                        " for " + vertex_label(v) + ", but that edge does not touch " + vertex_label(v));
+            throw Error("invalid-vertex-edge", "vertexEdges gives " + edge_or_none(e) + " for " + vertex_label(v) + ", but " +
+                        (isolated    ? vertex_label(v) + " belongs to no face, so it has no edge (-1)"
+                         : e < 0     ? vertex_label(v) + " is a corner of a face, so it stores one of its edges"
+                         : e < E     ? "that edge does not touch " + vertex_label(v)
+                                     : missing_element_message(MeshTable::Edge, e, E)));
         vertex_edge[v] = e;
     }
 }
@@ -310,8 +318,8 @@ void apply_face_edges(const BuildOptions& options, const std::vector<EdgeRecord>
     for (int32_t f = 0; f < F; ++f) {
         const int32_t e = options.face_edges[f];
         if (e < 0 || e >= E || (edges[e].left != f && edges[e].right != f))
-            throw Error("invalid-face-edge", "faceEdges gives " + (e >= 0 && e < E ? edge_label(e) : std::to_string(e)) +
-                        " for " + face_label(f) + ", but that edge is not a side of " + face_label(f));
+            throw Error("invalid-face-edge", "faceEdges gives " + edge_or_none(e) + " for " + face_label(f) + ", but " +
+                        (e >= 0 && e < E ? "that edge is not a side of " + face_label(f) : missing_element_message(MeshTable::Edge, e, E)));
         face_edge[f] = e;
     }
 }
@@ -321,7 +329,7 @@ void apply_face_edges(const BuildOptions& options, const std::vector<EdgeRecord>
 namespace detail {
 
 bool face_corners_ok(const int32_t* corners, int32_t n, int32_t V) {
-    if (n < 3) return false;
+    if (n < 3 || n > kMaxFaceCorners) return false;
     for (int32_t i = 0; i < n; ++i)
         if (corners[i] < 0 || corners[i] >= V) return false;
     return corners_distinct(corners, n);
@@ -522,11 +530,23 @@ const char* table_name(MeshTable t) {
     return "unknown";
 }
 
-namespace {
-std::string range_message(const char* what, int32_t index, int32_t count) {
-    return std::string(what) + " index " + std::to_string(index) + " is out of range: the mesh has " + what + "s 0 to " +
-           std::to_string(count - 1);
+std::string element_label(MeshTable t, int32_t i) {
+    return t == MeshTable::Vertex ? vertex_label(i) : t == MeshTable::Edge ? edge_label(i) : face_label(i);
 }
+
+std::string missing_element_message(MeshTable t, int32_t index, int32_t count) {
+    const std::string has = t == MeshTable::Vertex ? elements_text(&vertex_label, "vertices", count)
+                            : t == MeshTable::Edge ? elements_text(&edge_label, "edges", count)
+                                                   : elements_text(&face_label, "faces", count);
+    if (index < 0) return std::to_string(index) + " names no " + table_name(t) + (index == kNone ? " (it stands for none)" : "") + ": the mesh has " + has;
+    return "there is no " + element_label(t, index) + ": the mesh has " + has;
+}
+
+std::string removed_element_message(MeshTable t, int32_t index) {
+    return element_label(t, index) + " was removed by an edit (its number stays a gap until the mesh is compacted)";
+}
+
+namespace {
 std::string edge_list(const std::vector<int32_t>& edges) {
     std::string out;
     for (int32_t e : edges) out += (out.empty() ? "" : ", ") + edge_label(e);
@@ -535,18 +555,21 @@ std::string edge_list(const std::vector<int32_t>& edges) {
 } // namespace
 
 CheckResult WingedEdgeMesh::check_element(Vertex v) const {
-    if (v.idx < 0 || v.idx >= vertex_count()) return CheckResult::refuse("invalid-element", range_message("vertex", v.idx, vertex_count()));
-    if (is_deleted(v)) return CheckResult::refuse("deleted-element", vertex_label(v.idx) + " has been deleted");
+    if (v.idx < 0 || v.idx >= vertex_count())
+        return CheckResult::refuse("invalid-element", missing_element_message(MeshTable::Vertex, v.idx, vertex_count()));
+    if (is_deleted(v)) return CheckResult::refuse("deleted-element", removed_element_message(MeshTable::Vertex, v.idx));
     return CheckResult::accept();
 }
 CheckResult WingedEdgeMesh::check_element(Edge e) const {
-    if (e.idx < 0 || e.idx >= edge_count()) return CheckResult::refuse("invalid-element", range_message("edge", e.idx, edge_count()));
-    if (is_deleted(e)) return CheckResult::refuse("deleted-element", edge_label(e.idx) + " has been deleted");
+    if (e.idx < 0 || e.idx >= edge_count())
+        return CheckResult::refuse("invalid-element", missing_element_message(MeshTable::Edge, e.idx, edge_count()));
+    if (is_deleted(e)) return CheckResult::refuse("deleted-element", removed_element_message(MeshTable::Edge, e.idx));
     return CheckResult::accept();
 }
 CheckResult WingedEdgeMesh::check_element(Face f) const {
-    if (f.idx < 0 || f.idx >= face_count()) return CheckResult::refuse("invalid-element", range_message("face", f.idx, face_count()));
-    if (is_deleted(f)) return CheckResult::refuse("deleted-element", face_label(f.idx) + " has been deleted");
+    if (f.idx < 0 || f.idx >= face_count())
+        return CheckResult::refuse("invalid-element", missing_element_message(MeshTable::Face, f.idx, face_count()));
+    if (is_deleted(f)) return CheckResult::refuse("deleted-element", removed_element_message(MeshTable::Face, f.idx));
     return CheckResult::accept();
 }
 
@@ -572,12 +595,6 @@ CheckResult WingedEdgeMesh::check_set_face_edge(Face f, Edge e) const {
                                ": the face table stores one of " + face_label(f.idx) + "'s own edges (" +
                                edge_list(edges_of_face(f.idx)) + ")");
 }
-
-namespace {
-void require_ok(const CheckResult& c) {
-    if (!c.ok) throw Error(c.code, c.message);
-}
-} // namespace
 
 ChangeRecord WingedEdgeMesh::set_vertex_edge(Vertex v, Edge e) {
     require_ok(check_set_vertex_edge(v, e));

@@ -219,7 +219,7 @@ TEST_CASE("out-of-range and isolated elements are refused with the element named
     CHECK(w.check_set_vertex_edge(Vertex(-1), Edge(0)).code == "invalid-element");
     CHECK(w.check_set_vertex_edge(Vertex(0), Edge(w.edge_count())).code == "invalid-element");
     CHECK(w.check_set_face_edge(Face(w.face_count()), Edge(0)).code == "invalid-element");
-    CHECK_THAT(w.check_set_face_edge(Face(0), Edge(kNone)).message, Catch::Contains("edge index -1 is out of range"));
+    CHECK_THAT(w.check_set_face_edge(Face(0), Edge(kNone)).message, Catch::Contains("-1 names no edge (it stands for none)"));
     CHECK_THROWS_AS(w.set_face_edge(Face(7), Edge(0)), wingspline::Error);
     CHECK(snapshot(w) == before);
     CHECK_FALSE(w.has_garbage()); // no operation deletes yet

@@ -383,13 +383,13 @@ TEST_CASE("OFF and OBJ readers: forms, comments, negative indices, line-numbered
     } catch (const ParseError& e) {
         CHECK(e.code() == "index-out-of-range");
         CHECK(e.line() == 10);
-        CHECK(std::string(e.what()) == "line 10: F3 refers to vertex index 7 but the file has 5 vertices (indices 0 to 4)");
+        CHECK(std::string(e.what()) == "line 10: F3 refers to vertex 7, that is v8 (an OFF file counts its vertices from 0), but the file has vertices v1 to v5");
     }
     try {
         parse_off("OFF\n0 1 0\n3 0 1 2\n");
         FAIL("accepted a face without vertices");
     } catch (const ParseError& e) {
-        CHECK(std::string(e.what()) == "line 3: F1 refers to vertex index 0 but the file has no vertices");
+        CHECK(std::string(e.what()) == "line 3: F1 refers to vertex 0, that is v1 (an OFF file counts its vertices from 0), but the file has no vertices");
     }
     try {
         parse_off("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
@@ -403,7 +403,7 @@ TEST_CASE("OFF and OBJ readers: forms, comments, negative indices, line-numbered
         parse_off("OFF\n3 1 0\n0 0 0\n1 0\n");
         FAIL("accepted a short vertex line");
     } catch (const ParseError& e) {
-        CHECK(std::string(e.what()) == "line 4: expected x y z of v2 (index 1), found 2 number(s)");
+        CHECK(std::string(e.what()) == "line 4: expected x y z of v2 (called 1 in the face lines), found 2 number(s)");
     }
     // Numbers are read from the token only (a view into the text): a number glued to a
     // comment, a NUL inside a number, and an integer too large for 32 bits.

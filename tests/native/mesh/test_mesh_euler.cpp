@@ -430,8 +430,8 @@ TEST_CASE("refusals on the lecture mesh and the tetrahedron say why and change n
         {"lecture", {SplitFace, 0, 0, 3, 0.5}, "not-a-corner", "v4 is not a corner of F1"},
         {"lecture", {SplitFace, 0, 2, 2, 0.5}, "same-vertex", "both are v3"},
         {"lecture", {SplitEdge, 2, 0, 0, 1.0}, "invalid-parameter", "t = 1 is not strictly between 0 and 1"},
-        {"lecture", {SplitEdge, 7, 0, 0, 0.5}, "invalid-element", "edge index 7 is out of range"},
-        {"lecture", {PokeFace, -1, 0, 0, 0.5}, "invalid-element", "face index -1 is out of range"},
+        {"lecture", {SplitEdge, 7, 0, 0, 0.5}, "invalid-element", "there is no e8: the mesh has edges e1 to e7"},
+        {"lecture", {PokeFace, -1, 0, 0, 0.5}, "invalid-element", "-1 names no face (it stands for none): the mesh has faces F1 to F3"},
         {"tetrahedron", {FlipEdge, 0, 0, 0, 0.5}, "edge-exists", "that already exists"},
         {"tetrahedron", {CollapseEdge, 0, 0, 0, 0.5}, "degenerate-vertex", "would leave"},
     };

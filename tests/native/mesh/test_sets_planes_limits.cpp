@@ -318,9 +318,9 @@ TEST_CASE("file limits: corners per face, coordinates and counts are refused at 
         for (int i = 0; i < n; ++i) s += " " + std::to_string(i);
         return s + "\n";
     };
-    CHECK(parse_off(polygon_off(kFileLimits.max_face_corners, 1)).face_size(0) == kFileLimits.max_face_corners);
+    CHECK(parse_off(polygon_off(kMaxFaceCorners, 1)).face_size(0) == kMaxFaceCorners);
     try {
-        parse_off(polygon_off(kFileLimits.max_face_corners + 1, 1));
+        parse_off(polygon_off(kMaxFaceCorners + 1, 1));
         FAIL("accepted a 1001-corner face");
     } catch (const ParseError& e) {
         CHECK(std::string(e.code()) == "face-too-large");
@@ -399,4 +399,156 @@ TEST_CASE("streamed reading (TextSource) gives the same mesh and the same line n
             CHECK(e.line() == 8);
         }
     }
+}
+
+// ------------------------------------------------------------ what edits make, files hold
+namespace {
+
+//          x (the ear)         A regular n-gon F1 = (v1 ... vn), counter-clockwise, and a
+//         / \ F2               triangle F2 = (v2 v1 x) on its side v1-v2 (e1), outside it.
+//       v1---v2                Joining them across e1 makes a face of n + 1 corners.
+//      /  F1   ...
+IndexedMesh polygon_with_ear(int32_t n) {
+    IndexedMesh m;
+    for (int32_t i = 0; i < n; ++i) m.add_vertex(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), 0);
+    const double mid = M_PI / n; // outside the side v1-v2
+    const int32_t x = m.add_vertex(2 * std::cos(mid), 2 * std::sin(mid), 0);
+    std::vector<int32_t> all(n);
+    for (int32_t i = 0; i < n; ++i) all[i] = i;
+    m.add_face(all.data(), n);
+    m.add_face({1, 0, x});
+    return m;
+}
+
+std::vector<int32_t> edge_table(const WingedEdgeMesh& w) {
+    std::vector<int32_t> t;
+    for (const EdgeRecord& r : w.edges()) t.insert(t.end(), {r.start, r.end, r.left, r.right, r.start_left, r.start_right, r.end_left, r.end_right});
+    return t;
+}
+
+// The mesh's own OFF export, read back and built: the same live counts and face sizes.
+void require_export_reads_back(const WingedEdgeMesh& w) {
+    const IndexedMesh live = w.live_face_set();
+    const IndexedMesh back = parse_off(format_off(live));
+    REQUIRE(validate_indexed(back).ok());
+    const MeshCounts a = w.counts(), b = WingedEdgeMesh::build(back).counts();
+    CHECK((a.vertices == b.vertices && a.edges == b.edges && a.faces == b.faces && a.boundary_loops == b.boundary_loops));
+    CHECK(back.face_vertices == live.face_vertices);
+}
+
+} // namespace
+
+TEST_CASE("join-faces and split-edge make no face over kMaxFaceCorners: at the limit the export reads back, one over is refused",
+          "[mesh][limits][euler][trust]") {
+    REQUIRE(kMaxFaceCorners == 1000);
+    {
+        // A 999-gon and the ear: the joined face has 999 + 3 - 2 = 1000 corners.
+        WingedEdgeMesh w = WingedEdgeMesh::build(polygon_with_ear(kMaxFaceCorners - 1));
+        REQUIRE(w.edge(0).start == 0);
+        REQUIRE(w.edge(0).end == 1);
+        REQUIRE(w.check_join_faces(Edge(0)).ok);
+        w.join_faces(Edge(0));
+        REQUIRE(w.validate().ok());
+        CHECK(w.vertices_of_face(0).size() == 1000u);
+        require_export_reads_back(w);
+    }
+    {
+        // A 1000-gon and the ear: 1001 corners, refused before anything changes.
+        WingedEdgeMesh w = WingedEdgeMesh::build(polygon_with_ear(kMaxFaceCorners));
+        const std::vector<int32_t> before = edge_table(w);
+        const MeshVersion version = w.version();
+        const CheckResult r = w.check_join_faces(Edge(0));
+        CHECK(r.code == "face-too-large");
+        CHECK(r.message == "joining F1 and F2 would make a face of 1001 corners; a face may have at most 1000");
+        CHECK_THROWS_AS(w.join_faces(Edge(0)), wingspline::Error);
+        CHECK(!w.join_faces_unrecorded(Edge(0)));
+        CHECK(edge_table(w) == before);
+        CHECK(w.version() == version);
+        REQUIRE(w.validate().ok());
+        require_export_reads_back(w);
+        // Splitting a side of the 1000-gon would give it 1001 corners too; a side of the ear only
+        // grows the ear.
+        const CheckResult s = w.check_split_edge(Edge(5), 0.5);
+        CHECK(s.code == "face-too-large");
+        CHECK(s.message == "splitting e6 would give F1 1001 corners; a face may have at most 1000");
+        CHECK_THROWS_AS(w.split_edge(Edge(5), 0.5), wingspline::Error);
+        CHECK(edge_table(w) == before);
+        const int32_t ear_side = w.edge_count() - 1; // x -> v2, first met walking F2
+        REQUIRE(w.edge(ear_side).left == 1);
+        REQUIRE(w.edge(ear_side).right == kNone);
+        w.split_edge(Edge(ear_side), 0.5);
+        REQUIRE(w.validate().ok());
+        require_export_reads_back(w);
+    }
+    {
+        // A 999-gon's side split: 1000 corners, allowed.
+        WingedEdgeMesh w = WingedEdgeMesh::build(polygon_with_ear(kMaxFaceCorners - 1));
+        w.split_edge(Edge(5), 0.5);
+        CHECK(w.vertices_of_face(0).size() == 1000u);
+        require_export_reads_back(w);
+    }
+}
+
+TEST_CASE("a face set with a face over kMaxFaceCorners is refused by validation and the build, as by the readers",
+          "[mesh][limits][trust]") {
+    const IndexedMesh ok = polygon_with_ear(kMaxFaceCorners), over = polygon_with_ear(kMaxFaceCorners + 1);
+    CHECK(validate_indexed(ok).ok());
+    CHECK_NOTHROW(WingedEdgeMesh::build(ok));
+    const ValidationReport r = validate_indexed(over);
+    REQUIRE(r.first_error() != nullptr);
+    CHECK(r.first_error()->code == "face-too-large");
+    CHECK(r.first_error()->message == "F1 has 1001 corners; a face may have at most 1000");
+    CHECK(r.first_error()->faces == std::vector<int32_t>{0});
+    try {
+        WingedEdgeMesh::build(over);
+        FAIL("built a 1001-corner face");
+    } catch (const InvalidMesh& e) {
+        CHECK(std::string(e.code()) == "face-too-large");
+    }
+    // The reader says the same words at the face's line.
+    try {
+        parse_off(format_off(over));
+        FAIL("read a 1001-corner face");
+    } catch (const ParseError& e) {
+        CHECK(std::string(e.what()) == "line " + std::to_string(e.line()) + ": F1 has 1001 corners; a face may have at most 1000");
+    }
+}
+
+TEST_CASE("edits keep the element counts within what a mesh file may hold", "[mesh][limits][euler][trust][large]") {
+    // 1000 x 1000 quads, two triangles each: exactly kFileLimits.max_faces faces.
+    WingedEdgeMesh w = WingedEdgeMesh::build(grid(1000, 1000));
+    REQUIRE(w.face_count() == kFileLimits.max_faces);
+    const std::vector<int32_t> before = edge_table(w);
+    // Poking a triangle makes two more faces: refused, nothing changed.
+    const CheckResult poke = w.check_poke_face(Face(7));
+    CHECK(poke.code == "too-large");
+    CHECK(poke.message == "poking F8 would make 2000002 faces; a mesh may have at most 2000000, as many as a mesh file may hold");
+    CHECK_THROWS_AS(w.poke_face(Face(7)), wingspline::Error);
+    CHECK(!w.poke_face_unrecorded(Face(7)));
+    CHECK(edge_table(w) == before);
+    // A split edge adds a vertex, no face: allowed.
+    CHECK(w.check_split_edge(Edge(0), 0.5).ok);
+    // Joining the first quad's two triangles across its diagonal e3 leaves a gap; splitting
+    // the quad again comes back to the limit, with one row more than it.
+    REQUIRE((w.edge(2).left == 0 && w.edge(2).right == 1));
+    const Vertex a(w.edge(2).start), b(w.edge(2).end);
+    w.join_faces(Edge(2));
+    REQUIRE(w.check_split_face(Face(0), a, b).ok);
+    w.split_face(Face(0), a, b);
+    CHECK(w.counts().faces == kFileLimits.max_faces);
+    CHECK(w.face_count() == kFileLimits.max_faces + 1);
+    // The gap is counted out, the live faces are at the limit: poking is refused again.
+    CHECK(w.check_poke_face(Face(7)).code == "too-large");
+    CHECK(w.validate().ok());
+
+    // Vertices: kFileLimits.max_vertices of them (one triangle, the others isolated).
+    IndexedMesh m;
+    m.positions.assign(3 * static_cast<std::size_t>(kFileLimits.max_vertices), 0.0);
+    m.positions[3] = 1, m.positions[7] = 1;
+    m.add_face({0, 1, 2});
+    const WingedEdgeMesh v = WingedEdgeMesh::build(m);
+    const CheckResult split = v.check_split_edge(Edge(0), 0.5);
+    CHECK(split.code == "too-large");
+    CHECK(split.message == "splitting e1 would make 2000001 vertices; a mesh may have at most 2000000, as many as a mesh file may hold");
+    CHECK(v.check_poke_face(Face(0)).code == "too-large");
 }

@@ -46,7 +46,7 @@ test('a refused operation throws its code, names the elements and changes nothin
   assert.throws(() => mesh.setVertexEdge(0, 6), { code: 'edge-not-incident', message: verdict.message });
   // e1 is not a side of F3.
   assert.throws(() => mesh.setFaceEdge(2, 0), { code: 'edge-not-on-face', message: /e1 is not a side of F3/ });
-  assert.throws(() => mesh.setFaceEdge(3, 0), { code: 'invalid-element', message: /face index 3 is out of range/ });
+  assert.throws(() => mesh.setFaceEdge(3, 0), { code: 'invalid-element', message: /there is no F4: the mesh has faces F1 to F3/ });
   assert.throws(() => mesh.setVertexEdge(0, 1.5), { code: 'invalid-argument' });
   assert.throws(() => mesh.apply({ op: 'flip', e: 0 }), { code: 'unknown-operation' });
   const after = mesh.wingedEdgeArrays();

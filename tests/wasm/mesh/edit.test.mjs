@@ -245,3 +245,28 @@ test('apply(op, {rewritten: true}): the entries each representation rewrote for 
     plain.dispose();
   }
 }));
+
+test('collapseEdge on a polygon mesh leaves a vertex of valence 2 between two quads, as joinFaces does', () => {
+  //   v4 (-1,1)      v5 (1,1)      F1 = (v1 v2 v3), F2 = (v3 v2 v5 v4), F3 = (v3 v4 v6 v1). v3 has
+  //        \  F2   /               three edges; collapsing e1 = v1 -> v2 takes F1 and leaves v3 with
+  //   F3    v3 --- v2 (1,0)        two, between the quads (v3 v1 v5 v4) and (v3 v4 v6 v1). Joining
+  //        /  F1 /                 F1 and F2 across e2 (v2 -> v3) leaves v3 with two edges the same way.
+  //   v6 (-1,-1)  v1 (0,-1)
+  const input = { positions: [0, -1, 0, 1, 0, 0, 0, 0, 0, -1, 1, 0, 1, 1, 0, -1, -1, 0], faces: [[0, 1, 2], [2, 1, 4, 3], [2, 3, 5, 0]] };
+  const cycle = (f) => { const i = f.indexOf(Math.min(...f)); return [...f.slice(i), ...f.slice(0, i)]; };
+  withMesh(input, (mesh) => {
+    assert.deepEqual(mesh.check('collapse-edge', 0), { ok: true });
+    mesh.collapseEdge(0);
+    assert.deepEqual(errors(mesh), []);
+    assert.deepEqual(mesh.counts(), { vertices: 5, edges: 6, faces: 2, boundaryEdges: 4, boundaryLoops: 1, isolatedVertices: 0, euler: 1 });
+    // The file holds the live vertices renumbered (v2 is gone): v3 -> 1, v4 -> 2, v5 -> 3, v6 -> 4.
+    const back = api.parseMesh(mesh.format());
+    assert.deepEqual(back.faces.map(cycle), [cycle([1, 0, 3, 2]), cycle([1, 2, 4, 0])]);
+    assert.equal(api.validateMesh(back).ok, true);
+  });
+  withMesh(input, (mesh) => {
+    mesh.joinFaces(1);
+    assert.deepEqual(errors(mesh), []);
+    assert.equal(mesh.edgesAroundVertex(2).length, 2);
+  });
+});

@@ -161,7 +161,7 @@ test('setVertexPosition rewrites the stored copies and the scans find the new po
 test('query errors are coded; representations do not leak across build/dispose', () => {
   withMesh(api.lectureExample(), (mesh) => {
     assert.throws(() => mesh.query('faces-of-vertex', 0), (err) => err.code === 'unknown-query');
-    assert.throws(() => mesh.query('faces-of-edge', 7), (err) => err.code === 'invalid-element' && /edges 0 to 6/.test(err.message));
+    assert.throws(() => mesh.query('faces-of-edge', 7), (err) => err.code === 'invalid-element' && /edges e1 to e7/.test(err.message));
     assert.throws(() => mesh.query('edges-of-face', 1.5), (err) => err.code === 'invalid-argument');
     assert.equal(mesh.query('faces-of-edge', 6)['edge-list'].answer.length, 1); // e7 is on the boundary
   });

@@ -144,3 +144,60 @@ test('the mesh lesson\'s state format keeps exactly what the core imports (api.m
   assert.throws(() => ok(zeros(3 * (L.maxVertices + 1)), [[0, 1, 2]]));
   assert.throws(() => ok(zeros(9), new Array(L.maxFaces + 1).fill([0, 1, 2])));
 });
+
+// A regular n-gon F1 = (v1 ... vn) and a triangle F2 = (v2 v1 x) outside its side e1 = v1-v2:
+// joining them across e1 makes a face of n + 1 corners.
+function polygonWithEar(n) {
+  const positions = [];
+  for (let i = 0; i < n; i += 1) positions.push(Math.cos((2 * Math.PI * i) / n), Math.sin((2 * Math.PI * i) / n), 0);
+  positions.push(2 * Math.cos(Math.PI / n), 2 * Math.sin(Math.PI / n), 0);
+  return { positions, faces: [Array.from({ length: n }, (_, i) => i), [1, 0, n]] };
+}
+
+test('joinFaces makes no face over meshLimits.maxFaceCorners: at the limit the export imports back, one over is refused and changes nothing', () => {
+  const L = api.meshLimits.maxFaceCorners;
+  const atLimit = api.buildMesh(polygonWithEar(L - 1));
+  try {
+    atLimit.joinFaces(0);
+    assert.equal(atLimit.verticesOfFace(0).length, L);
+    for (const format of ['off', 'obj']) {
+      const back = api.parseMesh(atLimit.format({ format }), { format });
+      assert.equal(back.faces[0].length, L);
+      assert.equal(api.validateMesh(back).ok, true);
+      const rebuilt = api.buildMesh(back);
+      try {
+        assert.deepEqual(rebuilt.counts(), atLimit.counts());
+      } finally {
+        rebuilt.dispose();
+      }
+    }
+  } finally {
+    atLimit.dispose();
+  }
+  const over = api.buildMesh(polygonWithEar(L));
+  try {
+    const tables = JSON.stringify(over.wingedEdge());
+    const version = over.version;
+    const verdict = over.check('join-faces', 0);
+    assert.deepEqual(verdict, { ok: false, code: 'face-too-large',
+      message: 'joining F1 and F2 would make a face of 1001 corners; a face may have at most 1000' });
+    assert.throws(() => over.joinFaces(0), (err) => err.code === 'face-too-large' && err.message === verdict.message);
+    assert.throws(() => over.splitEdge(5), (err) => err.code === 'face-too-large' && err.message.includes('F1 1001 corners'));
+    assert.equal(JSON.stringify(over.wingedEdge()), tables);
+    assert.equal(over.version, version);
+    assert.equal(over.validate().ok, true);
+    assert.equal(api.parseMesh(over.format()).faces[0].length, L);
+  } finally {
+    over.dispose();
+  }
+});
+
+test('buildMesh and validateMesh refuse a face over meshLimits.maxFaceCorners, as parseMesh does', () => {
+  const L = api.meshLimits.maxFaceCorners;
+  const input = polygonWithEar(L + 1);
+  const report = api.validateMesh(input);
+  assert.equal(report.ok, false);
+  assert.deepEqual(report.problems.map((p) => [p.code, p.message]), [['face-too-large', 'F1 has 1001 corners; a face may have at most 1000']]);
+  assert.throws(() => api.buildMesh(input), (err) => err.code === 'face-too-large' && err.message === 'F1 has 1001 corners; a face may have at most 1000');
+  assert.throws(() => api.parseMesh(api.formatMesh(input)), (err) => err.code === 'face-too-large' && err.message.endsWith(': F1 has 1001 corners; a face may have at most 1000'));
+});

@@ -49,3 +49,17 @@ export function integerIn(value, what, min, max) {
   }
   return value;
 }
+
+// The largest index the core takes (int32).
+export const INT32_MAX = 2147483647;
+
+// An element's index as the API takes it (0-based: 0 is the first vertex, v1). Any whole
+// number reaches the core, which names the element by its 1-based label and says which
+// ones exist ("there is no F6: the mesh has faces F1 to F4").
+export function elementIndex(value, kind) {
+  if (!Number.isInteger(value)) {
+    fail('invalid-argument', `${kind} must be a whole number, the ${kind}'s index (0 is the first ${kind}), not ${String(value).slice(0, 40)}`);
+  }
+  if (Math.abs(value) > INT32_MAX) fail('invalid-argument', `${kind} ${value} is far beyond any mesh (an index is at most ${INT32_MAX})`);
+  return value;
+}

@@ -3,10 +3,9 @@
 // flat arrays of whole numbers (edges: 8 per row, S E L R S:L S:R E:L E:R; the student's row r
 // is their edge e(r+1)); -1 = none, -2 = blank. See docs/api-mesh.md, "Checking a student's
 // winged-edge table".
-import { unwrap, fail, isNumberArray, integerIn } from './errors.js';
+import { unwrap, fail, isNumberArray, integerIn, INT32_MAX } from './errors.js';
 import { facesToCsr } from './mesh-api.js';
 
-const INT32_MAX = 2147483647;
 
 // Cell values with a meaning of their own.
 const ANSWER_CELLS = Object.freeze({ none: -1, blank: -2 });
@@ -30,13 +29,14 @@ function exerciseMesh(mesh) {
   return [csr.faceOffsets, csr.faceVertices, vertexCount];
 }
 
-function cells(value, what) {
+// `name(i)` says which row and field entry i is, as the tables label them.
+function cells(value, what, name) {
   if (!isNumberArray(value)) fail('invalid-argument', `${what} must be an array of whole numbers (-1 = none, -2 = blank)`);
   const out = new Int32Array(value.length);
   for (let i = 0; i < value.length; i += 1) {
     const x = value[i];
     if (!Number.isInteger(x) || x > INT32_MAX || x < -INT32_MAX) {
-      fail('invalid-argument', `${what} entry ${i} must be a whole number (-1 = none, -2 = blank), not ${String(x).slice(0, 40)}`);
+      fail('invalid-argument', `${name(i)} must be a whole number (-1 = none, -2 = blank), not ${String(x).slice(0, 40)}`);
     }
     out[i] = x;
   }
@@ -45,8 +45,8 @@ function cells(value, what) {
 
 function answerArguments(mesh, answer) {
   if (answer === null || typeof answer !== 'object') fail('invalid-argument', 'expected the answer {edges, vertexEdges, faceEdges}');
-  return [...exerciseMesh(mesh), cells(answer.edges, 'edges'), cells(answer.vertexEdges, 'vertexEdges'),
-    cells(answer.faceEdges, 'faceEdges')];
+  return [...exerciseMesh(mesh), cells(answer.edges, 'edges', WINGED_EDGE_CELLS.edges),
+    cells(answer.vertexEdges, 'vertexEdges', WINGED_EDGE_CELLS.vertexEdges), cells(answer.faceEdges, 'faceEdges', WINGED_EDGE_CELLS.faceEdges)];
 }
 
 // ---- checkMeshTableAnswer and checkWalkStep (exercise kinds 1 and 2; docs/api-mesh.md,
@@ -91,6 +91,12 @@ const COLUMNS_8 = ['start', 'end', 'left', 'right', 'startLeft', 'startRight', '
 const COLUMNS_4 = ['v1', 'v2', 'p1', 'p2'];
 const vertexRow = (v) => (v === null ? 'vertex' : `vertex v${v + 1}`);
 const faceRow = (f) => (f === null ? 'face' : `face F${f + 1}`);
+// The winged-edge answer's cells, each named by its row and field.
+const WINGED_EDGE_CELLS = Object.freeze({
+  edges: (i) => `edges: row e${Math.floor(i / 8) + 1}, ${COLUMNS_8[i % 8]}`,
+  vertexEdges: (i) => `vertexEdges: ${vertexRow(i)}`,
+  faceEdges: (i) => `faceEdges: ${faceRow(i)}`,
+});
 
 function plainFindings(list) {
   return Array.from(list, ({ table, row, field, index, given, expected, code, reason }) => ({
@@ -105,7 +111,7 @@ function walkNumbering(mesh) {
   const pairs = new Int32Array(2 * edges.length);
   edges.forEach((e, i) => {
     if (!isNumberArray(e) || e.length !== 2 || !Number.isInteger(e[0]) || !Number.isInteger(e[1])) {
-      fail('invalid-argument', `the mesh's edges[${i}] must be [S, E], two vertex numbers`);
+      fail('invalid-argument', `the mesh's edges[${i}] (e${i + 1}) must be [S, E], two vertex numbers`);
     }
     pairs[2 * i] = e[0];
     pairs[2 * i + 1] = e[1];
@@ -152,9 +158,9 @@ export function createExerciseApi(raw) {
       const meshArgs = exerciseMesh(mesh);
       if (table === 'winged-edge') {
         const args = [...meshArgs,
-          flatAnswer(answer.edges, 'edges', (i) => `edges: row e${Math.floor(i / 8) + 1}, ${COLUMNS_8[i % 8]}`),
-          flatAnswer(answer.vertexEdges, 'vertexEdges', (i) => `vertexEdges: ${vertexRow(i)}`),
-          flatAnswer(answer.faceEdges, 'faceEdges', (i) => `faceEdges: ${faceRow(i)}`)];
+          flatAnswer(answer.edges, 'edges', WINGED_EDGE_CELLS.edges),
+          flatAnswer(answer.vertexEdges, 'vertexEdges', WINGED_EDGE_CELLS.vertexEdges),
+          flatAnswer(answer.faceEdges, 'faceEdges', WINGED_EDGE_CELLS.faceEdges)];
         const findings = plainFindings(unwrap(raw.exerciseCheckWingedEdge(...args)).findings);
         const w = unwrap(raw.exerciseWorkedWingedEdge(...args));
         return {

@@ -2,7 +2,8 @@
 // A built mesh lives in the core's registry; the Mesh object below holds only its integer
 // handle, and mesh.dispose() frees it at once (a FinalizationRegistry is only a safety net
 // for a forgotten dispose, never the mechanism). See docs/api-mesh.md.
-import { WingsplineError, unwrap, fail, integerIn, isNumberArray } from './errors.js';
+import { WingsplineError, unwrap, fail, integerIn, isNumberArray, elementIndex, INT32_MAX } from './errors.js';
+import { elementLabel } from './element-labels.js';
 import { readTable, findDescriptor } from './tables.js';
 
 // Three numbers [x, y, z] (whether they are finite is the core's check, with its message).
@@ -14,7 +15,6 @@ function vector3(value, what) {
 // Mesh files cross into the module as UTF-8 bytes, copied once (see meshParse).
 const utf8 = new TextEncoder();
 
-const INT32_MAX = 2147483647;
 
 function checkPositions(positions) {
   if (!isNumberArray(positions)) fail('invalid-argument', 'positions must be an array or Float64Array of numbers (x, y, z per vertex)');
@@ -37,7 +37,7 @@ export function facesToCsr(faces) {
   let total = 0;
   faces.forEach((face, f) => {
     if (!Array.isArray(face) && !(ArrayBuffer.isView(face) && !(face instanceof DataView))) {
-      fail('invalid-argument', `faces[${f}] must be an array of vertex indices`);
+      fail('invalid-argument', `faces[${f}] (${elementLabel('face', f)}) must be an array of vertex indices`);
     }
     total += face.length;
     faceOffsets[f + 1] = total;
@@ -45,7 +45,7 @@ export function facesToCsr(faces) {
   const faceVertices = new Int32Array(total);
   let k = 0;
   faces.forEach((face, f) => {
-    for (let i = 0; i < face.length; i += 1) faceVertices[k++] = checkIndex(face[i], `faces[${f}][${i}]`);
+    for (let i = 0; i < face.length; i += 1) faceVertices[k++] = checkIndex(face[i], `faces[${f}][${i}] (corner ${i + 1} of ${elementLabel('face', f)})`);
   });
   return { faceOffsets, faceVertices };
 }
@@ -69,15 +69,20 @@ function indexedInput(input) {
   return { positions, ...facesToCsr(input.faces) };
 }
 
-function optionalInts(value, what, pairs = false) {
+// An optional numbering: one entry per element of `kind` (a [start, end] pair per edge for
+// the edge list), each named by its array position and the element's label.
+function optionalInts(value, what, kind, pairs = false) {
   if (value === undefined || value === null) return new Int32Array(0);
   const flat = pairs && Array.isArray(value) ? value.flatMap((p, i) => {
-    if (!Array.isArray(p) || p.length !== 2) fail('invalid-argument', `${what}[${i}] must be a [start, end] pair`);
+    if (!Array.isArray(p) || p.length !== 2) fail('invalid-argument', `${what}[${i}] (${elementLabel(kind, i)}) must be a [start, end] pair`);
     return p;
   }) : value;
   if (!isNumberArray(flat)) fail('invalid-argument', `${what} must be an array of whole numbers`);
   const out = new Int32Array(flat.length);
-  for (let i = 0; i < flat.length; i += 1) out[i] = checkIndex(flat[i], `${what} entry ${i}`);
+  for (let i = 0; i < flat.length; i += 1) {
+    const at = pairs ? `${what}[${i >> 1}][${i & 1}] (${elementLabel(kind, i >> 1)})` : `${what}[${i}] (${elementLabel(kind, i)})`;
+    out[i] = checkIndex(flat[i], at);
+  }
   return out;
 }
 
@@ -85,8 +90,8 @@ function optionalInts(value, what, pairs = false) {
 // optional numbering (edges as [start, end] pairs, vertex and face edges).
 function buildArguments(input) {
   const { positions, faceOffsets, faceVertices } = indexedInput(input);
-  return [positions, faceOffsets, faceVertices, optionalInts(input.edges, 'edges', true),
-    optionalInts(input.vertexEdges, 'vertexEdges'), optionalInts(input.faceEdges, 'faceEdges')];
+  return [positions, faceOffsets, faceVertices, optionalInts(input.edges, 'edges', 'edge', true),
+    optionalInts(input.vertexEdges, 'vertexEdges', 'vertex'), optionalInts(input.faceEdges, 'faceEdges', 'face')];
 }
 
 function indexedOutput(r, layout) {
@@ -236,7 +241,7 @@ export class Mesh {
   }
 
   #adjacency(kind, element, what) {
-    integerIn(element, what, 0, INT32_MAX);
+    elementIndex(element, what);
     return unwrap(this.#raw.meshAdjacency(this.#live(), kind, element)).indices;
   }
 
@@ -280,7 +285,7 @@ export class Mesh {
   // The CCW walk around v as steps: the lecture's rule reads startLeft when v is the
   // edge's Start, endRight when it is its End.
   traversalSteps(v) {
-    integerIn(v, 'vertex', 0, INT32_MAX);
+    elementIndex(v, 'vertex');
     const r = unwrap(this.#raw.meshTraversalSteps(this.#live(), v));
     return Array.from(r.edges, (edge, i) => ({
       edge,
@@ -293,7 +298,7 @@ export class Mesh {
   // The walk along face f: if f is the edge's Left face the next edge is endLeft,
   // otherwise (f is its Right face) startRight.
   faceEdgeSteps(f) {
-    integerIn(f, 'face', 0, INT32_MAX);
+    elementIndex(f, 'face');
     const r = unwrap(this.#raw.meshFaceEdgeSteps(this.#live(), f));
     return Array.from(r.edges, (edge, i) => ({
       edge,
@@ -371,7 +376,7 @@ export class Mesh {
   // The unit normal at vertex v, [x, y, z]: the faces around v weighted by their area
   // ([0, 0, 0] for an isolated vertex). Its side tells whether the CCW walk is seen from the front.
   vertexNormal(v) {
-    integerIn(v, 'vertex', 0, INT32_MAX);
+    elementIndex(v, 'vertex');
     return Array.from(unwrap(this.#raw.meshVertexNormal(this.#live(), v)).normal);
   }
 
@@ -385,7 +390,7 @@ export class Mesh {
   // Moves vertex v in every representation; {changedEntries: {[representation]: xyz copies
   // rewritten}}: independent faces one per face corner at v, every other one exactly 1.
   setVertexPosition(v, position) {
-    integerIn(v, 'vertex', 0, INT32_MAX);
+    elementIndex(v, 'vertex');
     if (!isNumberArray(position) || position.length !== 3 || !Array.from(position).every(Number.isFinite)) {
       fail('invalid-argument', 'the position must be three finite numbers [x, y, z]');
     }
@@ -401,8 +406,8 @@ export class Mesh {
   // {op, added, removed: {vertices, edges, faces}, rows: [{table, row, fields: [{field,
   // before, after}]}], before, after: {topology, geometry}}.
   #operation(op, element, edge, check) {
-    integerIn(element, OPERATIONS[op], -INT32_MAX, INT32_MAX);
-    integerIn(edge, 'edge', -INT32_MAX, INT32_MAX);
+    elementIndex(element, OPERATIONS[op]);
+    elementIndex(edge, 'edge');
     const r = unwrap(this.#raw.meshOperation(this.#live(), op, element, edge, check));
     if (check) return r.allowed ? { ok: true } : { ok: false, code: r.code, message: r.message };
     this.#setVersion(r.after);
@@ -494,7 +499,7 @@ export class Mesh {
   #edit(edit, args, check, rewritten = false) {
     const values = edit.arguments.map((a, k) => {
       const v = args[k] === undefined && a.optional ? a.default : args[k];
-      if (a.kind) return integerIn(v, a.kind === 'vertex' ? 'vertex' : a.kind, -INT32_MAX, INT32_MAX);
+      if (a.kind) return elementIndex(v, a.kind);
       if (typeof v !== 'number' || !Number.isFinite(v)) fail('invalid-argument', `${a.name} must be a finite number, not ${String(v).slice(0, 40)}`);
       return v;
     });
@@ -530,7 +535,7 @@ export class Mesh {
   // Int32Array, entriesRead}}; entriesRead counts the array entries the algorithm read.
   query(kind, element) {
     if (!QUERY_KINDS.includes(kind)) fail('unknown-query', `unknown query '${String(kind).slice(0, 40)}'; use ${QUERY_KINDS.join(', ')}`);
-    integerIn(element, kind.endsWith('vertex') ? 'vertex' : kind.endsWith('edge') ? 'edge' : 'face', 0, INT32_MAX);
+    elementIndex(element, kind.endsWith('vertex') ? 'vertex' : kind.endsWith('edge') ? 'edge' : 'face');
     const r = unwrap(this.#raw.meshQuery(this.#live(), kind, element));
     return Object.fromEntries(REPRESENTATIONS.map((key) => [key, { answer: r.answers[key].answer, entriesRead: r.answers[key].entriesRead }]));
   }

@@ -6,6 +6,7 @@
 // turns {descriptor, data} into rows by index and cells by column name, for every table
 // alike. See docs/api-mesh.md, "Tables".
 import { WingsplineError } from './errors.js';
+import { elementLabel } from './element-labels.js';
 
 // A table's cell: a number (width 1), an array of `width` numbers, or for a CSR column an
 // array of items (numbers, or arrays of `width` numbers).
@@ -36,9 +37,13 @@ export function readTable(descriptor, { rows, first = 0, arrays }) {
   const lead = descriptor.arrays[0];
   const size = arrays[lead.name].length;
   const count = lead.role === 'offsets' ? Math.max(0, size - 1) : size / lead.stride;
+  // A row is named as the lesson's table labels it (F3 for row 2 of a face table).
+  const label = (i) => elementLabel(descriptor.rows, i);
   const inWindow = (i) => {
     if (!Number.isInteger(i) || i < first || i >= first + count) {
-      throw new WingsplineError('invalid-element', `row ${i} is not among the rows ${first} to ${first + count - 1} of the ${descriptor.representation} ${descriptor.name} table`);
+      const row = Number.isInteger(i) && i >= 0 ? label(i) : `row ${String(i).slice(0, 40)}`;
+      const read = count === 0 ? 'none' : count === 1 ? label(first) : `${label(first)} to ${label(first + count - 1)}`;
+      throw new WingsplineError('invalid-element', `${row} is not among the rows read (${read}) of the ${descriptor.representation} ${descriptor.name} table`);
     }
     return i;
   };

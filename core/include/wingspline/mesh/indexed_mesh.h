@@ -69,4 +69,12 @@ std::string vertex_label(int32_t v);
 std::string face_label(int32_t f);
 std::string edge_label(int32_t e);
 
+// The elements of a table of `count` rows as messages list them: "vertices v1 to v5",
+// "only v1", "no vertices" (label: vertex_label, edge_label or face_label).
+std::string elements_text(std::string (*label)(int32_t), const char* plural, int32_t count);
+
+// face-too-large, as files and face sets are refused: "F3 has 1001 corners; a face may
+// have at most 1000" (kMaxFaceCorners, limits.h).
+std::string face_too_large_message(int32_t f, int64_t corners);
+
 } // namespace wingspline::mesh

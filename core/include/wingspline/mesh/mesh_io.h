@@ -31,7 +31,7 @@ using TextSource = std::function<std::size_t(char* out, std::size_t capacity, st
 // Both readers skip a UTF-8 byte-order mark at the start and accept LF, CRLF and CR line
 // ends. Limits (limits.h), each refused with the line that breaks it: a finite coordinate
 // beyond limits.max_coordinate (coordinate-out-of-range; non-finite ones are read and named
-// by validation), a face with more than max_face_corners corners (face-too-large), more
+// by validation), a face with more than kMaxFaceCorners corners (face-too-large), more
 // vertices or faces than max_vertices / max_faces (too-large; OFF from its header, before
 // anything else is read; OBJ by a pre-scan that stores nothing, at the first statement over). A line over 1 MB: line-too-long.
 IndexedMesh parse_off(std::string_view text, const MeshLimits& limits = kFileLimits);

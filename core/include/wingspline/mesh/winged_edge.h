@@ -118,10 +118,23 @@ struct CheckResult {
     static CheckResult accept() { return {}; }
     static CheckResult refuse(std::string code, std::string message) { return {false, std::move(code), std::move(message)}; }
 };
+// Throws the refusal as Error(code, message); nothing when c accepted.
+inline void require_ok(const CheckResult& c) {
+    if (!c.ok) throw Error(c.code, c.message);
+}
 
 // The three connectivity tables of lecture 000.
 enum class MeshTable { Vertex, Edge, Face };
 const char* table_name(MeshTable t); // "vertex", "edge", "face"
+
+// How every message names a row of table t: the slides' 1-based label (v3, e5, F2), as the
+// lesson tables show it, although indices are 0-based.
+std::string element_label(MeshTable t, int32_t i);
+// invalid-element: index names no row of a table of `count` rows. "there is no F6: the mesh
+// has faces F1 to F4"; "-1 names no edge (it stands for none): the mesh has edges e1 to e7".
+std::string missing_element_message(MeshTable t, int32_t index, int32_t count);
+// deleted-element: "e4 was removed by an edit (its number stays a gap until the mesh is compacted)".
+std::string removed_element_message(MeshTable t, int32_t index);
 
 // One field of one table row, before and after (an edge index, a face index, ...).
 struct FieldChange {
@@ -371,6 +384,12 @@ public:
     std::size_t bytes() const;
     // Every broken connectivity invariant (wings, rings, face loops, table references).
     ValidationReport validate() const;
+    // Whether an index names a live element: invalid-element (no such row) or deleted-element
+    // (a gap), with missing_element_message / removed_element_message; what every call that
+    // takes an element checks first.
+    CheckResult check_element(Vertex v) const;
+    CheckResult check_element(Edge e) const;
+    CheckResult check_element(Face f) const;
 
 private:
     static WingedEdgeMesh build_impl(const IndexedMesh& mesh, const BuildOptions& options,
@@ -399,9 +418,6 @@ private:
     friend struct EulerRows;
     friend struct SubdivisionAccess; // subdivision.cpp builds a result's tables directly
 
-    CheckResult check_element(Vertex v) const;
-    CheckResult check_element(Edge e) const;
-    CheckResult check_element(Face f) const;
     int32_t walk_start_corner(int32_t f) const {
         const EdgeRecord& r = edges_[face_edge_[f]];
         return r.left == f ? r.start : r.end;
