@@ -85,6 +85,8 @@ test('through a point: dragging by pointer gets close, the inspector (keyboard) 
     await page.locator('#stage').focus();
     for (let i = 0; i < 8 && await page.evaluate(() => window.wingspline.selected) !== id; i += 1) await page.keyboard.press(']');
     assert.equal(await page.evaluate(() => window.wingspline.selected), id);
+    // The inspector shows the newly selected point on the next frame (late on a busy machine).
+    await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
     await page.locator('#inspect-y').fill(String(2 + 4 / 3));
     await page.locator('#inspect-y').press('Enter');
   }
