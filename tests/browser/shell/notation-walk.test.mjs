@@ -160,7 +160,8 @@ test('surfaces, continuity, subdivision and mesh: their formulas and headings', 
     const tally = { fixed: 0, stretched: 0 };
     await check(page, name, tally);
     for (const select of await page.$$eval('select', (all) => all.filter((s) => s.getClientRects().length > 0 && s.id).map((s) => s.id))) {
-      for (const value of await page.$$eval(`#${select} option`, (o) => o.map((x) => x.value))) {
+      // (a disabled placeholder such as the continuity lab's "your own points" is no choice)
+      for (const value of await page.$$eval(`#${select} option`, (o) => o.filter((x) => !x.disabled).map((x) => x.value))) {
         if (!(await page.isVisible(`#${select}`)) || !(await page.isEnabled(`#${select}`))) break;
         await page.selectOption(`#${select}`, value);
         await frame(page);
