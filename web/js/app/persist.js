@@ -230,9 +230,12 @@ export function createPersister(lesson, {
     }
   };
 
-  // Keeps `record` (the saved work about to be replaced) in the history.
+  // The history entry of `record` (the saved work about to be replaced).
+  const entryOf = (record, reason) => ({ lesson: lesson.id, reason, summary: record.summary ?? 'saved work', time: record.at ?? Date.now(), ...(record.code !== undefined ? { code: record.code } : { json: record.json }) });
+
+  // Keeps `record` in the history (or, where it cannot be reached now, set aside for it).
   async function keepInHistory(record, reason) {
-    const entry = { lesson: lesson.id, reason, summary: record.summary ?? 'saved work', time: record.at ?? Date.now(), ...(record.code !== undefined ? { code: record.code } : { json: record.json }) };
+    const entry = entryOf(record, reason);
     const id = history ? await history.add(entry, { prune: false }).catch(() => null) : null;
     if (id === null && !setAsideNow(storage, entry)) return false;
     return true;
@@ -258,7 +261,7 @@ export function createPersister(lesson, {
       let written = externalizeKnown(lesson, state);
       // A reference to a mesh this page has not seen stored (IndexedDB refused it) would
       // name nothing on the next visit: such a state is written whole, or not at all.
-      if (JSON.stringify(contentRefsOf(written)) !== JSON.stringify(contentRefsOf(written).filter((h) => contents?.has?.(h)))) written = state;
+      if (contentRefsOf(written).some((h) => !contents?.has?.(h))) written = state;
       const json = stringifyExact(envelope(lesson, written));
       // Only an imported mesh kept inline (no IndexedDB) makes a state this long: never saved.
       if (json.length > PAGEHIDE_MAX_CHARS) return;
@@ -270,7 +273,7 @@ export function createPersister(lesson, {
       if (!write) return;
       const aside = Boolean(now && (clash || (why && now.drawing !== drawing)));
       // What is replaced is kept first; where it cannot be kept, it is not written over.
-      if (aside && !setAsideNow(storage, { lesson: lesson.id, reason: clash ? 'clash' : why, summary: now.summary ?? 'saved work', time: now.at ?? Date.now(), ...(now.code !== undefined ? { code: now.code } : { json: now.json }) })) return;
+      if (aside && !setAsideNow(storage, entryOf(now, clash ? 'clash' : why))) return;
       const rec = writeRecord(storage, lesson.id, { rev: (now?.rev ?? 0) + 1, tab, drawing, summary: summaryOf(state), json, setAside: aside && now?.tab && now.tab !== tab ? { tab: now.tab, rev: now.rev } : null });
       readRev = rec.rev;
       readDrawing = drawing;

@@ -27,7 +27,7 @@ struct MeshLimits {
     int32_t max_faces;     // faces of the file: too-large
 };
 
-// The page's import limits: 2,000,000 vertices and faces (issue 17); edits keep a mesh within
+// The page's import limits: 2,000,000 vertices and faces (the reason below); edits keep a mesh within
 // them (too-large), so its export can be imported again.
 // The largest mesh a school laptop (4 GB RAM, the wasm heap at most 2 GB) holds through the
 // whole import pipeline, about 600 bytes per face at its peak (docs/api-mesh.md, "Import
