@@ -1,4 +1,4 @@
-// npm run bench: every task of ../shared/BENCH.md, native and wasm (and the interaction
+// npm run bench: every task of docs/benchmarks.md, native and wasm (and the interaction
 // tasks in headless Chromium). Each benchmark program prints JSON lines; this script
 // echoes them, then writes bench-results/latest.jsonl and a Markdown table
 // bench-results/latest.md. Timings are never asserted anywhere.
@@ -9,7 +9,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { setup } from './setup.mjs';
-import { build } from './build.mjs';
+import { build, buildWasm } from './build.mjs';
 import { repoRoot, log, capture, quiet } from './lib/run.mjs';
 import { expectedTasks, referenceFor, nativeTwin, missingTasks } from './lib/bench-tasks.mjs';
 
@@ -19,6 +19,7 @@ const outDir = path.join(repoRoot, 'bench-results');
 if (!tableOnly) {
   await setup();
   await build();
+  await buildWasm({ bench: true });
 }
 
 const programs = [];
@@ -70,7 +71,7 @@ const header = [
   `Measured ${meta.when ?? '(unknown time)'} UTC on ${meta.machine ?? 'an unknown machine'}; Node ${meta.node ?? '?'};` +
   ` commit ${meta.commit ?? 'unknown'}; command \`${meta.command ?? 'npm run bench'}\`.`,
   'Figures are per work unit (ns unless the unit says otherwise); min and median over the repetitions.',
-  '"ref" is the other library\'s figure from BENCH.md for the same task and build (orientation only: it was',
+  '"ref" is the other library\'s figure from docs/benchmarks.md for the same task and build (orientation only: it was',
   'measured in another run); "x ref" = min / ref; "wasm / native" = the wasm min over the native min of the',
   'same task and input in this run (`_core` rows: the same work timed inside the module).',
   '',
@@ -85,12 +86,12 @@ const table = ['| task | build | input | n | min | median | unit | ref | x ref |
       `${ref && typeof min === 'number' ? (min / ref.value).toFixed(2) : ''} | ` +
       `${(() => { const twin = nativeTwin(r, rows); const m = twin?.ns_per_unit_min; return m ? (min / m).toFixed(2) : ''; })()} |`;
   })];
-// Every task of BENCH.md must appear; a filter run only checks the tasks it asked for.
+// Every task of docs/benchmarks.md must appear; a filter run only checks the tasks it asked for.
 const wanted = filters.length ? expectedTasks.filter((t) => filters.some((f) => t.task.startsWith(f))) : expectedTasks;
 const missing = missingTasks(rows).filter((m) => wanted.some((w) => w.task === m.task && w.build === m.build));
 const missingText = missing.length
   ? ['', `Missing (no program produced them): ${missing.map((m) => `${m.task} (${m.build})`).join(', ')}.`]
-  : ['', 'Every task of BENCH.md ran.'];
+  : ['', 'Every task of docs/benchmarks.md ran.'];
 fs.writeFileSync(path.join(outDir, 'latest.md'), [...header, ...table, ...missingText].join('\n') + '\n');
 log(`${rows.length} results; table in bench-results/latest.md`);
 if (missing.length) {

@@ -12,14 +12,14 @@ import { exerciseIndex } from './lib/exercise-index.mjs';
 
 const jobs = ['-j', '2'];
 
-async function cmakeBuild(dir, configure) {
+async function cmakeBuild(dir, configure, targets = []) {
   const buildDir = path.join(repoRoot, 'build', dir);
   if (!fs.existsSync(path.join(buildDir, 'CMakeCache.txt'))) {
     log(`configuring build/${dir}`);
     await configure(buildDir);
   }
   log(`building build/${dir}`);
-  await must('cmake', ['--build', buildDir, ...jobs]);
+  await must('cmake', ['--build', buildDir, ...jobs, ...targets.flatMap((t) => ['--target', t])]);
 }
 
 export async function buildNative({ sanitize = false } = {}) {
@@ -29,9 +29,13 @@ export async function buildNative({ sanitize = false } = {}) {
     ...(sanitize ? ['-DWINGSPLINE_SANITIZE=ON'] : [])]));
 }
 
-export async function buildWasm() {
+// The shipped module (wingspline-core: what the site serves); with bench, also the bench
+// module (wingspline-core-bench: the same bindings and flags plus core/bench), which
+// `npm run bench` and the wasm tests of the benchmark's hooks load.
+export async function buildWasm({ bench = false } = {}) {
   await cmakeBuild('wasm', (buildDir) => must('emcmake',
-    ['cmake', '-S', repoRoot, '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release']));
+    ['cmake', '-S', repoRoot, '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release']),
+  ['wingspline-core', ...(bench ? ['wingspline-core-bench'] : [])]);
 }
 
 // Copies src into dst where size or mtime differ; removes what src no longer has.

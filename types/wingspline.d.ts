@@ -19,12 +19,12 @@ export type NumberList = readonly number[] | TypedNumbers;
 export type Vec3 = readonly [number, number, number] | readonly number[] | Float64Array;
 
 /**
- * The stable error codes (`err.code`). Documented with their causes in docs/api-mesh.md
- * ("Problems", "Editing the mesh", "Import limits") and docs/api-curves.md ("Error codes").
+ * The stable error codes (`err.code`): the core's one list (core/include/wingspline/error_codes.h,
+ * `api.errorCodes` with each code's meaning; docs/errors.md). A test compares this union with it.
  */
 export type WingsplineErrorCode =
   // loading and arguments (every part)
-  | 'core-load-failed' | 'internal-error' | 'invalid-argument' | 'disposed'
+  | 'core-load-failed' | 'internal-error' | 'out-of-memory' | 'invalid-argument' | 'disposed'
   // mesh files
   | 'parse-error' | 'truncated-file' | 'line-too-long' | 'unknown-format' | 'index-out-of-range'
   // the mesh limits (meshLimits), wherever a mesh comes from: a file, a face set or an edit
@@ -41,7 +41,7 @@ export type WingsplineErrorCode =
   | 'unknown-query' | 'invalid-element' | 'deleted-element' | 'mismatched-face-set' | 'representations-not-built'
   | 'unknown-representation' | 'unknown-table' | 'unknown-column' | 'unknown-mesh' | 'unknown-task'
   // changing a mesh
-  | 'unknown-operation' | 'invalid-parameter' | 'same-vertex' | 'not-a-corner' | 'adjacent-corners' | 'edge-exists'
+  | 'unknown-operation' | 'invalid-parameter' | 'same-vertex' | 'not-a-corner' | 'not-a-neighbour' | 'adjacent-corners' | 'edge-exists'
   | 'boundary-edge' | 'same-face' | 'faces-touch-elsewhere' | 'would-duplicate-face' | 'not-triangles'
   | 'would-pinch' | 'hole-too-small' | 'degenerate-vertex' | 'link-condition' | 'link-condition-face'
   // subdivision
@@ -55,7 +55,7 @@ export type WingsplineErrorCode =
   | 'invalid-weight' | 'weight-ratio-out-of-range' | 'wrong-tangent-count' | 'wrong-node-count'
   | 'nodes-not-increasing' | 'nodes-too-close' | 'nodes-out-of-range' | 'vandermonde-out-of-range'
   | 'parameter-out-of-range' | 'segment-out-of-range' | 'dimension-mismatch' | 'length-overflow'
-  | 'not-converged' | 'wrong-point-count' | 'singular-matrix' | 'perspective-behind-eye'
+  | 'not-converged' | 'wrong-point-count' | 'singular-matrix' | 'perspective-behind-eye' | 'overflow'
   // curve exercises (kinds 3-5)
   | 'unknown-quantity' | 'unknown-property' | 'degenerate-curve';
 
@@ -270,24 +270,45 @@ export interface ChangeRecord {
   /** With apply(op, {rewritten: true}): stored entries each representation rewrote. */
   rewritten?: Partial<Record<Representation, number>>;
 }
-export type EulerOperationName = 'split-edge' | 'split-face' | 'join-faces' | 'flip-edge' | 'collapse-edge' | 'poke-face';
-export type MeshOperationName = 'set-vertex-edge' | 'set-face-edge' | EulerOperationName;
-/** One operation as a lesson state holds it, its arguments by name. */
+/**
+ * One operation of the core's registry (api.meshOperations) as a lesson state holds it, its
+ * arguments by name. tests/wasm/mesh/edit.test.mjs checks this union against the registry:
+ * the same operations, each with the registry's arguments (optional where it has a default).
+ */
 export type MeshOperation =
-  | { op: 'set-vertex-edge'; v: number; e: number }
-  | { op: 'set-face-edge'; f: number; e: number }
   | { op: 'split-edge'; e: number; t?: number }
-  | { op: 'split-face'; f: number; a: number; b: number }
-  | { op: 'join-faces'; e: number }
   | { op: 'flip-edge'; e: number }
   | { op: 'collapse-edge'; e: number; t?: number }
-  | { op: 'poke-face'; f: number };
+  | { op: 'join-faces'; e: number }
+  | { op: 'split-face'; f: number; a: number; b: number }
+  | { op: 'poke-face'; f: number }
+  | { op: 'split-vertex'; v: number; a: number; b: number; t?: number }
+  | { op: 'set-vertex-edge'; v: number; e: number }
+  | { op: 'set-face-edge'; f: number; e: number };
+export type MeshOperationName = MeshOperation['op'];
+/** The operations that change the counts (every one but the stored-edge choices). */
+export type EulerOperationName = Exclude<MeshOperationName, 'set-vertex-edge' | 'set-face-edge'>;
+
+export type AdjacencyKind = 'edges-around-vertex' | 'faces-around-vertex' | 'vertices-around-vertex' | 'edges-of-face' | 'vertices-of-face'
+  | 'face-neighbours' | 'faces-of-edge';
 
 export interface MeshOperationsDescriptor {
   readonly operations: ReadonlyArray<{
-    readonly name: EulerOperationName;
-    readonly method: string;
-    readonly arguments: ReadonlyArray<{ readonly name: string; readonly kind: ElementKind | null; readonly optional: boolean; readonly default: number }>;
+    readonly name: MeshOperationName;
+    /** "Split edge" */
+    readonly title: string;
+    /** What it does to V, E, F: "V+1, E+1". */
+    readonly counts: string;
+    /** The key the edit panel binds to it; "" for the stored-edge choices (made in the tables). */
+    readonly shortcut: string;
+    /** One line with {argument} placeholders: "split {e} at t = {t}". */
+    readonly describe: string;
+    readonly arguments: ReadonlyArray<{
+      readonly name: string; readonly kind: ElementKind | null; readonly optional: boolean; readonly default: number;
+      /** For an element after the first: the adjacency query of the first that lists its candidates. */
+      readonly choices: AdjacencyKind | null;
+      readonly label: string;
+    }>;
   }>;
   readonly tables: readonly string[];
   readonly fields: readonly string[];
@@ -370,8 +391,14 @@ export interface Mesh {
   flipEdge(e: number): ChangeRecord;
   collapseEdge(e: number, t?: number): ChangeRecord;
   pokeFace(f: number): ChangeRecord;
-  /** Whether an operation may run, changing nothing: check('flip-edge', 4), check('split-face', f, a, b). */
+  /**
+   * Whether an operation may run, changing nothing: check({op: 'flip-edge', e: 4}). The
+   * positional form check('flip-edge', 4) takes the arguments in the registry's order.
+   */
+  check(operation: MeshOperation): CheckResult;
   check(op: MeshOperationName, ...args: number[]): CheckResult;
+  /** One adjacency query by the core's name (the registry's `choices`). */
+  adjacency(kind: AdjacencyKind, element: number): Int32Array;
   /** Removes the gaps; old index -> new (-1 = removed). */
   compact(): { vertices: ArrayLike<number>; edges: ArrayLike<number>; faces: ArrayLike<number> };
   format(options?: { format?: MeshFileFormat }): string;
@@ -683,6 +710,8 @@ export interface WalkStepCheck {
 export interface WingsplineApi {
   readonly version: string;
   memoryUsage(): { linearBytes: number; heapInUse: number };
+  /** Every error code the API can give, with where it comes from and what it means. */
+  readonly errorCodes: ReadonlyArray<{ readonly code: WingsplineErrorCode; readonly group: string; readonly meaning: string }>;
 
   // ---- meshes (docs/api-mesh.md)
   buildMesh(input: MeshBuildInput): Mesh;

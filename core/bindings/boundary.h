@@ -2,7 +2,7 @@
 // The wasm boundary's conventions, shared by every binding translation unit.
 //  * Every exported function returns a plain JS object: {ok:true, ...} or
 //    {ok:false, code, message}. C++ exceptions never cross into JS (in Emscripten 3.1.6
-//    an escaping exception leaks wasm stack on every throw; see TOOLCHAIN.md).
+//    an escaping exception leaks wasm stack on every throw; see docs/toolchain.md).
 //  * Bulk numbers leave as typed arrays copied out of the heap (slice), never as views
 //    that a later allocation could detach.
 #include <emscripten/bind.h>

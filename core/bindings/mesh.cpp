@@ -10,6 +10,7 @@
 #include "wingspline/mesh/indexed_mesh.h"
 #include "wingspline/mesh/limits.h"
 #include "wingspline/mesh/mesh_io.h"
+#include "wingspline/mesh/operations.h"
 #include "wingspline/mesh/planes.h"
 #include "wingspline/mesh/queries.h"
 #include "wingspline/mesh/representations.h"
@@ -521,81 +522,33 @@ val change_value(const ChangeRecord& c) {
     return r;
 }
 
-// One checked operation by name: check = true only asks check_<op> ({ok: true, allowed,
-// code, message}, nothing changed); otherwise runs <op> and returns its change record, or
-// the refusal as {ok: false, code, message} with the mesh unchanged.
-val mesh_operation(int32_t handle, const std::string& op, int32_t element, int32_t edge, bool check) {
-    return guarded([&] {
-        WingedEdgeMesh& w = entry(handle).winged;
-        CheckResult verdict;
-        if (op == "set-vertex-edge")
-            verdict = w.check_set_vertex_edge(Vertex(element), Edge(edge));
-        else if (op == "set-face-edge")
-            verdict = w.check_set_face_edge(Face(element), Edge(edge));
-        else
-            throw Error("unknown-operation", "unknown mesh operation '" + op + "'; use set-vertex-edge or set-face-edge");
-        if (check) {
-            val r = val::object();
-            r.set("allowed", verdict.ok);
-            r.set("code", verdict.code);
-            r.set("message", verdict.message);
-            return r;
-        }
-        if (!verdict.ok) throw Error(verdict.code, verdict.message);
-        return change_value(op == "set-vertex-edge" ? w.set_vertex_edge(Vertex(element), Edge(edge))
-                                                    : w.set_face_edge(Face(element), Edge(edge)));
-    });
-}
-
-// One Euler operation by name (operation_descriptors(), tables.h): args in the descriptor's
-// order (element indices, then the optional number). check = true only asks check_<op>
-// ({allowed, code, message}); otherwise runs <op> and returns its change record, or the
-// refusal as {ok: false, code, message} with the mesh unchanged.
-// cost: also say how many stored entries each representation rewrote (rewritten_entries:
-// both states of all six are derived and compared, O(mesh); the lesson asks it only for
-// the edit a person just made, never while replaying a list).
-val mesh_edit(int32_t handle, const std::string& op, const val& args, bool check, bool cost) {
+// Any operation of the registry (operations.h) by name, its arguments in the entry's order.
+// check = true only asks the check ({allowed, code, message}, nothing changed); otherwise
+// runs the operation and returns its change record, or the refusal as {ok: false, code,
+// message} with the mesh unchanged. cost: also say how many stored entries each
+// representation rewrote (rewritten_entries: the winged edge's from the change record, the
+// others by comparing their derivations before and after, which the cache hands over
+// rather than copies; the lesson asks it only for the edit a person just made).
+val mesh_edit(int32_t handle, const std::string& name, const val& args, bool check, bool cost) {
     return guarded([&] {
         MeshEntry& me = entry(handle);
         WingedEdgeMesh& w = me.winged;
         const std::vector<double> a = to_doubles(args);
-        const OperationDescriptor* d = nullptr;
-        for (const OperationDescriptor& x : operation_descriptors())
-            if (op == x.name) d = &x;
-        if (d == nullptr) throw Error("unknown-operation", "unknown mesh operation '" + op.substr(0, 40) + "'");
-        require(a.size() == d->arguments.size(), "invalid-argument",
-                op + " takes " + std::to_string(d->arguments.size()) + " arguments, not " + std::to_string(a.size()));
-        const auto i = [&](std::size_t k) { return static_cast<int32_t>(a[k]); };
-        CheckResult verdict;
-        if (op == "split-edge") verdict = w.check_split_edge(Edge(i(0)), a[1]);
-        else if (op == "split-face") verdict = w.check_split_face(Face(i(0)), Vertex(i(1)), Vertex(i(2)));
-        else if (op == "join-faces") verdict = w.check_join_faces(Edge(i(0)));
-        else if (op == "flip-edge") verdict = w.check_flip_edge(Edge(i(0)));
-        else if (op == "collapse-edge") verdict = w.check_collapse_edge(Edge(i(0)), a[1]);
-        else verdict = w.check_poke_face(Face(i(0)));
+        const Operation op = operation_from(name, a.data(), a.size());
         if (check) {
+            const CheckResult verdict = w.check(op);
             val r = val::object();
             r.set("allowed", verdict.ok);
             r.set("code", verdict.code);
             r.set("message", verdict.message);
             return r;
         }
-        if (!verdict.ok) throw Error(verdict.code, verdict.message);
-        std::unique_ptr<WingedEdgeMesh> before;
         std::unique_ptr<Representations> before_reps;
-        if (cost) {
-            before = std::make_unique<WingedEdgeMesh>(w);
-            before_reps = std::make_unique<Representations>(me.representations.of(w));
-        }
-        const ChangeRecord c = op == "split-edge"      ? w.split_edge(Edge(i(0)), a[1])
-                               : op == "split-face"    ? w.split_face(Face(i(0)), Vertex(i(1)), Vertex(i(2)))
-                               : op == "join-faces"    ? w.join_faces(Edge(i(0)))
-                               : op == "flip-edge"     ? w.flip_edge(Edge(i(0)))
-                               : op == "collapse-edge" ? w.collapse_edge(Edge(i(0)), a[1])
-                                                       : w.poke_face(Face(i(0)));
+        if (cost && w.check(op).ok) before_reps = me.representations.take(w);
+        const ChangeRecord c = w.apply(op);
         val r = change_value(c);
-        if (cost) {
-            const auto n = rewritten_entries(*before, *before_reps, w, me.representations.of(w));
+        if (before_reps) {
+            const auto n = rewritten_entries(c, *before_reps, w, me.representations.of(w));
             val rewritten = val::object();
             for (int k = 0; k < kRepresentationCount; ++k) rewritten.set(representation_key(static_cast<Representation>(k)), static_cast<double>(n[k]));
             r.set("rewritten", rewritten);
@@ -638,12 +591,13 @@ val mesh_gaps(int32_t handle) {
     });
 }
 
-// Read once by mesh-api.js: {operations: [{name, method, arguments: [{name, kind (null for
-// a number), optional, default}]}], tables, fields, stepStride, positionStride}.
+// Read once by mesh-api.js: {operations: [{name, title, counts, shortcut, describe,
+// arguments: [{name, kind (null for a number), optional, default, choices, label}]}],
+// tables, fields, stepStride, positionStride}: the registry (operations.h) as data.
 val mesh_operation_descriptors() {
     return guarded([] {
         val ops = val::array();
-        const auto& all = operation_descriptors();
+        const auto& all = operations();
         for (std::size_t k = 0; k < all.size(); ++k) {
             val args = val::array();
             for (std::size_t j = 0; j < all[k].arguments.size(); ++j) {
@@ -653,11 +607,16 @@ val mesh_operation_descriptors() {
                 one.set("kind", a.kind == ElementKind::None ? val::null() : val(std::string(element_kind_name(a.kind))));
                 one.set("optional", a.optional);
                 one.set("default", a.default_value);
+                one.set("choices", a.choices == nullptr ? val::null() : val(std::string(a.choices)));
+                one.set("label", std::string(a.label));
                 args.set(j, one);
             }
             val op = val::object();
             op.set("name", std::string(all[k].name));
-            op.set("method", std::string(all[k].method));
+            op.set("title", std::string(all[k].title));
+            op.set("counts", std::string(all[k].counts));
+            op.set("shortcut", std::string(all[k].shortcut));
+            op.set("describe", std::string(all[k].describe));
             op.set("arguments", args);
             ops.set(k, op);
         }
@@ -869,7 +828,6 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshSetVertexPosition", &mesh_set_vertex_position);
     emscripten::function("meshBytes", &mesh_bytes);
     emscripten::function("meshVersion", &mesh_version);
-    emscripten::function("meshOperation", &mesh_operation);
     emscripten::function("meshEdit", &mesh_edit);
     emscripten::function("meshCompact", &mesh_compact);
     emscripten::function("meshExport", &mesh_export);

@@ -6,6 +6,7 @@
 #include <malloc.h>
 
 #include "wingspline/curves/basis_matrix.h"
+#include "wingspline/error_codes.h"
 #include "wingspline/version.h"
 
 namespace wingspline::bindings {
@@ -48,6 +49,23 @@ val memory_usage() {
     });
 }
 
+// [{code, group, meaning}]: every error code the API can give (error_codes.h).
+val error_codes() {
+    return guarded([] {
+        val list = val::array();
+        const auto& all = wingspline::error_codes();
+        for (std::size_t k = 0; k < all.size(); ++k) {
+            val one = val::object();
+            one.set("code", std::string(all[k].code));
+            one.set("group", std::string(all[k].group));
+            one.set("meaning", std::string(all[k].meaning));
+            list.set(k, one);
+        }
+        val r = val::object();
+        r.set("codes", list);
+        return r;
+    });
+}
 } // namespace
 } // namespace wingspline::bindings
 
@@ -56,4 +74,5 @@ EMSCRIPTEN_BINDINGS(wingspline_module) {
     emscripten::function("basisMatrix", &wingspline::bindings::basis_matrix);
     emscripten::function("hermiteFromConstraints", &wingspline::bindings::hermite_from_constraints);
     emscripten::function("memoryUsage", &wingspline::bindings::memory_usage);
+    emscripten::function("errorCodes", &wingspline::bindings::error_codes);
 }

@@ -1,4 +1,4 @@
-// The tasks of ../shared/BENCH.md that `npm run bench` must produce, and the reference
+// The tasks of docs/benchmarks.md that `npm run bench` must produce, and the reference
 // figures of other libraries measured there (for orientation: compare within one run).
 // scripts/bench.mjs checks every (task, build) below appears in the results and lists what
 // is missing in its report instead of silently printing a shorter table.
@@ -15,7 +15,7 @@ export const expectedTasks = [
   { task: 'ui_rotate', build: 'browser' }, // issue 17: tests/bench/browser/rotate.bench.mjs
 ];
 
-// BENCH.md "Reference figures" (min ns per unit; mesh_memory in bytes per face), per build:
+// docs/benchmarks.md "Reference figures" (min ns per unit; mesh_memory in bytes per face), per build:
 // [figure, library]. Mesh figures are native, for the 100,000-face inputs; the wasm mesh
 // goal is a ratio to our own native figure (the "wasm / native" column), not to OpenMesh.
 export const references = {

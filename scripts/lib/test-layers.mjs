@@ -4,7 +4,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { repoRoot, capture } from './run.mjs';
-import { buildNative } from '../build.mjs';
+import { buildNative, buildWasm } from '../build.mjs';
 import { fuzzLayer } from './fuzz.mjs';
 
 // Every *.test.mjs under dir, in its subject folders at any depth (tests/browser/mesh/...),
@@ -111,6 +111,16 @@ async function asanLayer() {
   return catchTests(path.join(repoRoot, 'build', 'native-asan', 'wingspline_tests'), ['~[large]'], env);
 }
 
+async function browserLayer() {
+  const { startSharedSiteAndBrowser } = await import(pathToFileURL(path.join(repoRoot, 'tests', 'helpers', 'browser.mjs')).href);
+  const shared = await startSharedSiteAndBrowser();
+  try {
+    return await nodeTests('tests/browser', { concurrency: 2, extraEnv: shared.env });
+  } finally {
+    await shared.close();
+  }
+}
+
 // The lesson contract (web/js/app/contract.js) checked by TypeScript over the JSDoc types:
 // `tsc --noEmit -p jsconfig.json` over the files that carry `// @ts-check` (the shell, its
 // parts, every lesson.js). One pass per checked file without an error, one failure per
@@ -168,14 +178,17 @@ export const layers = [
   // The project scripts themselves: how a node:test layer is counted (tests/scripts).
   { name: 'scripts', run: () => nodeTests('tests/scripts') },
   { name: 'native', run: () => catchTests(path.join(repoRoot, 'build', 'native', 'wingspline_tests')) },
-  { name: 'wasm', run: () => nodeTests('tests/wasm') },
+  // The wasm layer also loads the bench module (the benchmark's hooks, tested there).
+  { name: 'wasm', run: async () => { await buildWasm({ bench: true }); return nodeTests('tests/wasm'); } },
   { name: 'lessons', run: () => nodeTests('tests/lessons') },
   // Issue 19: npm pack -> install in an empty folder -> import in Node and in a page; the
   // examples/ scripts; npm start's HOST (tests/package).
   { name: 'package', run: () => nodeTests('tests/package') },
   // Two browser files at once: on the 2-core machines the layer takes about half the time
   // (each file waits on its page most of the time); see docs/architecture.md, "Tests".
-  { name: 'browser', run: () => nodeTests('tests/browser', { concurrency: 2 }) },
+  // One site and one Chromium for the whole layer (tests/helpers/browser.mjs): each file
+  // connects to them instead of starting its own.
+  { name: 'browser', run: () => browserLayer() },
   { name: 'asan', run: asanLayer },
   { name: 'fuzz', run: () => fuzzLayer() },
 ];

@@ -13,8 +13,19 @@ export const resultsDir = path.join(repoRoot, 'test-results');
 export const chromiumArgs = ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
   '--disable-background-networking', '--disable-component-update', '--disable-sync'];
 
+// One site and one browser for the whole browser layer: scripts/lib/test-layers.mjs serves
+// dist/ once and starts one Chromium (a playwright browser server) before the files run,
+// and hands both to every file through these variables. A file run on its own (node --test
+// file) starts its own, as before. A file that needs a site of its own (another root, a
+// prefix, overlays) always starts one.
+const SHARED_SITE = process.env.WINGSPLINE_TEST_SITE ?? '';
+const SHARED_BROWSER = process.env.WINGSPLINE_TEST_BROWSER ?? '';
+
 // Options as createStaticServer: { root (default dist/), prefix, overlays }.
 export async function startSite({ root = path.join(repoRoot, 'dist'), ...options } = {}) {
+  if (SHARED_SITE && root === path.join(repoRoot, 'dist') && Object.keys(options).length === 0) {
+    return { url: SHARED_SITE, origin: SHARED_SITE, close: async () => {} };
+  }
   const { server, url } = await listen(createStaticServer(root, options));
   const base = new URL((options.prefix ?? '/').slice(1), url).href;
   return {
@@ -24,8 +35,24 @@ export async function startSite({ root = path.join(repoRoot, 'dist'), ...options
   };
 }
 
+// Connected to the layer's browser when there is one (closing it then only disconnects:
+// the contexts this file opened go with it), else a browser of its own.
 export async function launchBrowser() {
+  if (SHARED_BROWSER) return chromium.connect(SHARED_BROWSER);
   return chromium.launch({ executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium', args: chromiumArgs });
+}
+
+// The layer's site and browser (scripts/lib/test-layers.mjs): {env, close}.
+export async function startSharedSiteAndBrowser() {
+  const site = await startSite();
+  const server = await chromium.launchServer({ executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium', args: chromiumArgs });
+  return {
+    env: { WINGSPLINE_TEST_SITE: site.url, WINGSPLINE_TEST_BROWSER: server.wsEndpoint() },
+    async close() {
+      await server.close();
+      await site.close();
+    },
+  };
 }
 
 // A new page whose console errors and page errors are collected into `page.problems`.

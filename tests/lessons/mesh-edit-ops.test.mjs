@@ -1,8 +1,10 @@
-// The mesh lesson's pure state helpers for edits (issue 15): what a state's operation list
-// becomes when a person edits the mesh or chooses a stored edge. No core and no page needed.
+// The mesh lesson's state helpers for edits: what a state's operation list becomes when a
+// person edits the mesh or chooses a stored edge, and the edit panel's operations as read
+// from the core's registry.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withEdit, checkArgs, EDIT_OPS } from '../../web/js/lessons/mesh/edit-ops.js';
+import { loadWingspline } from 'wingspline';
+import { withEdit, editOps, describeOperation } from '../../web/js/lessons/mesh/edit-ops.js';
 import { withStoredEdge } from '../../web/js/lessons/mesh/stored-edge.js';
 
 const base = { ops: [], moved: [], step: 3, editStep: 5 };
@@ -19,15 +21,26 @@ test('an edit appends its operation; vertices moved before it become move-vertex
   assert.equal(next.ops[0].p[0], 0.5);
 });
 
-test("every edit offered names the arguments the core checks, in the core's order", () => {
+test('every edit offered comes from the registry and makes the record the core takes', async () => {
+  const api = await loadWingspline();
+  const EDIT_OPS = editOps(api.meshOperations);
+  // every operation with a key, in the registry's order; the stored-edge choices are made in the tables
+  assert.deepEqual(EDIT_OPS.map((o) => o.op), api.meshOperations.operations.filter((o) => o.shortcut).map((o) => o.name));
+  assert.ok(EDIT_OPS.some((o) => o.op === 'split-vertex'));
   const made = Object.fromEntries(EDIT_OPS.map((o) => [o.op, o.make(4, { t: 0.25, a: 1, b: 3 })]));
-  assert.deepEqual(checkArgs(made['split-edge']), [4, 0.25]);
-  assert.deepEqual(checkArgs(made['collapse-edge']), [4, 0.25]);
-  assert.deepEqual(checkArgs(made['flip-edge']), [4]);
-  assert.deepEqual(checkArgs(made['join-faces']), [4]);
-  assert.deepEqual(checkArgs(made['split-face']), [4, 1, 3]);
-  assert.deepEqual(checkArgs(made['poke-face']), [4]);
+  assert.deepEqual(made['split-edge'], { op: 'split-edge', e: 4, t: 0.25 });
+  assert.deepEqual(made['collapse-edge'], { op: 'collapse-edge', e: 4, t: 0.25 });
+  assert.deepEqual(made['flip-edge'], { op: 'flip-edge', e: 4 });
+  assert.deepEqual(made['join-faces'], { op: 'join-faces', e: 4 });
+  assert.deepEqual(made['split-face'], { op: 'split-face', f: 4, a: 1, b: 3 });
+  assert.deepEqual(made['poke-face'], { op: 'poke-face', f: 4 });
+  assert.deepEqual(made['split-vertex'], { op: 'split-vertex', v: 4, a: 1, b: 3, t: 0.25 });
   assert.deepEqual(new Set(EDIT_OPS.map((o) => o.key)).size, EDIT_OPS.length, 'one key per operation');
+  // The line describing an edit names elements as the slides do (from 1).
+  const entry = (name) => api.meshOperations.operations.find((o) => o.name === name);
+  assert.equal(describeOperation(entry('split-edge'), made['split-edge']), 'split e5 at t = 0.25');
+  assert.equal(describeOperation(entry('split-face'), made['split-face']), 'split F5 by v2–v4');
+  assert.equal(describeOperation(entry('split-vertex'), made['split-vertex']), 'split v5 between v2 and v4');
 });
 
 test('choosing a stored edge again supersedes the earlier choice only after the last edit', () => {

@@ -13,11 +13,12 @@ import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
 import { random } from '../helpers/seeded-random.mjs';
 import { meshLesson, createMeshView, QUERY_KINDS } from '../../web/js/lessons/mesh/lesson.js';
-import { EDIT_OPS, checkArgs, withEdit } from '../../web/js/lessons/mesh/edit-ops.js';
+import { editOps, withEdit } from '../../web/js/lessons/mesh/edit-ops.js';
 import { queryTarget } from '../../web/js/lessons/mesh/live-elements.js';
 
 const api = await loadWingspline();
 const ctx = { api };
+const EDIT_OPS = editOps(api.meshOperations);
 const KINDS = ['vertex', 'edge', 'face'];
 const QUERY_ELEMENT = { 'faces-around-vertex': 'vertex', 'edges-around-vertex': 'vertex', 'edges-of-face': 'face', 'neighbours-of-face': 'face', 'faces-of-edge': 'edge' };
 
@@ -52,12 +53,14 @@ function anEdit(rnd, model, core) {
     const entry = EDIT_OPS[Math.floor(rnd() * EDIT_OPS.length)];
     const index = Math.floor(rnd() * core.count[entry.needs]);
     let a = 0; let b = 0;
-    if (entry.needs === 'face' && isElement(core, { kind: 'face', index })) {
-      const corners = Array.from(model.mesh.verticesOfFace(index));
-      a = corners[0]; b = corners[Math.min(2, corners.length - 1)];
+    // The two choices (split face: corners of the face; split vertex: its neighbours), from
+    // the registry's query, as the edit panel offers them.
+    if (entry.choices.length === 2 && isElement(core, { kind: entry.needs, index })) {
+      const list = Array.from(model.mesh.adjacency(entry.choices[0].choices, index));
+      a = list[0]; b = list[Math.min(2, list.length - 1)];
     }
     const operation = entry.make(index, { t: 0.5, a, b });
-    if (model.mesh.check(operation.op, ...checkArgs(operation)).ok) return operation;
+    if (model.mesh.check(operation).ok) return operation;
   }
   return null;
 }

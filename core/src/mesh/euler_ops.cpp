@@ -14,7 +14,10 @@
 // next_in_face(); a boundary side (face kNone) is walked as though the boundary were a
 // face, as the slide defines the wings. Which side of the next edge belongs to the same
 // face is read from its faces (an edge never has one face on both sides).
+#include "unrecorded.h"
+
 #include "wingspline/mesh/limits.h"
+#include "wingspline/mesh/operations.h"
 #include "wingspline/mesh/winged_edge.h"
 
 #include <algorithm>
@@ -34,6 +37,16 @@ struct Half {
 struct FaceSides {
     int32_t a = kNone, b = kNone;
     Half into_a, out_of_a, into_b, out_of_b;
+};
+
+// What the split-vertex check finds walking around v once, for the change: the edges to
+// a and b, their sides leaving v, the edges strictly between them (counter-clockwise) that
+// move to the new vertex, and the centre of the neighbours the new vertex takes.
+struct VertexFan {
+    int32_t v = kNone, a = kNone, b = kNone, ea = kNone, eb = kNone;
+    Half out_a, out_b;
+    std::vector<int32_t> moved;
+    glm::dvec3 centre{0.0};
 };
 
 namespace {
@@ -400,6 +413,67 @@ struct EulerAccess {
         }
         return {};
     }
+    // The side of e that leaves v (e touches v).
+    static Half leaving(const WingedEdgeMesh& m, int32_t e, int32_t v) { return {e, m.edges_[e].start == v}; }
+    static Verdict split_vertex(const WingedEdgeMesh& m, Vertex v, Vertex a, Vertex b, double t, VertexFan* fan) {
+        if (const char* c = element(m, v, m.vertex_count())) return refuse(c, v.idx, kVertexKind);
+        if (const char* c = element(m, a, m.vertex_count())) return refuse(c, a.idx, kVertexKind);
+        if (const char* c = element(m, b, m.vertex_count())) return refuse(c, b.idx, kVertexKind);
+        if (!(t > 0.0 && t < 1.0)) return refuse("invalid-parameter", v.idx);
+        if (a == b) return refuse("same-vertex", v.idx, a.idx);
+        // One walk around v (the lecture's rule, next_ccw) finds v-a and v-b.
+        int32_t ea = kNone, eb = kNone;
+        const int32_t first = m.vertex_edge_[v.idx];
+        if (first != kNone) {
+            int32_t x = first, n = 0;
+            do {
+                const int32_t other = m.other_vertex(x, v.idx);
+                if (other == a.idx) ea = x;
+                if (other == b.idx) eb = x;
+                x = m.next_ccw(x, v.idx);
+            } while (x != first && ++n <= m.edge_count());
+        }
+        if (ea == kNone) return refuse("not-a-neighbour", v.idx, a.idx);
+        if (eb == kNone) return refuse("not-a-neighbour", v.idx, b.idx);
+        if (const Verdict c = counts_within(m, v.idx, 1, 2); !c.ok()) return c;
+        if (fan) {
+            fan->v = v.idx, fan->a = a.idx, fan->b = b.idx, fan->ea = ea, fan->eb = eb;
+            fan->out_a = leaving(m, ea, v.idx), fan->out_b = leaving(m, eb, v.idx);
+            fan->moved.clear();
+            glm::dvec3 sum = m.position(a.idx) + m.position(b.idx);
+            for (int32_t x = m.next_ccw(ea, v.idx); x != eb; x = m.next_ccw(x, v.idx)) {
+                fan->moved.push_back(x);
+                sum += m.position(m.other_vertex(x, v.idx));
+            }
+            fan->centre = sum / static_cast<double>(fan->moved.size() + 2);
+        }
+        return {};
+    }
+    // "v1, v4, v7": v's neighbours counter-clockwise, for a refusal.
+    static std::string neighbour_list(const WingedEdgeMesh& m, int32_t v) {
+        std::string out;
+        for (const int32_t u : m.vertices_around_vertex(v)) out += (out.empty() ? "" : ", ") + vertex_label(u);
+        return out.empty() ? "it has none" : out;
+    }
+    static Verdict set_vertex_edge(const WingedEdgeMesh& m, Vertex v, Edge e) {
+        if (const char* c = element(m, v, m.vertex_count())) return refuse(c, v.idx, kVertexKind);
+        if (const char* c = element(m, e, m.edge_count())) return refuse(c, e.idx, kEdgeKind);
+        const EdgeRecord& r = m.edges_[e.idx];
+        if (r.start == v.idx || r.end == v.idx) return {};
+        return refuse("edge-not-incident", e.idx, v.idx);
+    }
+    static Verdict set_face_edge(const WingedEdgeMesh& m, Face f, Edge e) {
+        if (const char* c = element(m, f, m.face_count())) return refuse(c, f.idx, kFaceKind);
+        if (const char* c = element(m, e, m.edge_count())) return refuse(c, e.idx, kEdgeKind);
+        const EdgeRecord& r = m.edges_[e.idx];
+        if (r.left == f.idx || r.right == f.idx) return {};
+        return refuse("edge-not-on-face", e.idx, f.idx);
+    }
+    static std::string edge_list(const std::vector<int32_t>& edges) {
+        std::string out;
+        for (const int32_t e : edges) out += (out.empty() ? "" : ", ") + edge_label(e);
+        return out;
+    }
     static Verdict poke_face(const WingedEdgeMesh& m, Face f) {
         if (const char* c = element(m, f, m.face_count())) return refuse(c, f.idx, kFaceKind);
         // A new vertex, and an n-gon becomes n triangles (n - 1 new faces).
@@ -470,6 +544,14 @@ struct EulerAccess {
         else if (code == "link-condition")
             msg = V(x[1]) + " is joined to both " + V(x[2]) + " and " + V(x[3]) + " but not across a triangle on " + E(x[0]) +
                   ": collapsing " + E(x[0]) + " would make two edges between the same vertices (the link condition)";
+        else if (code == "edge-not-incident" && m.vertex_edge_[x[1]] == kNone)
+            msg = V(x[1]) + " belongs to no face, so it has no edge to store (" + E(x[0]) + " does not touch it)";
+        else if (code == "edge-not-incident")
+            msg = E(x[0]) + " does not touch " + V(x[1]) + ": the vertex table stores one of " + V(x[1]) + "'s own edges (" +
+                  edge_list(m.edges_around_vertex(x[1])) + ")";
+        else if (code == "edge-not-on-face")
+            msg = E(x[0]) + " is not a side of " + F(x[1]) + ": the face table stores one of " + F(x[1]) + "'s own edges (" +
+                  edge_list(m.edges_of_face(x[1])) + ")";
         else if (code == "link-condition-face")
             msg = F(x[1]) + " has both " + V(x[2]) + " and " + V(x[3]) + " as corners: collapsing " + E(x[0]) +
                   " would make it pass the merged vertex twice (the link condition)";
@@ -577,6 +659,30 @@ struct EulerRows {
         rec.step(MeshTable::Face, f, "firstCorner", slot, corner);
         slot = corner;
     }
+    // Every assignment of one operation goes through this editor and its recorder.
+    template <class R> static Editor<R> editor(WingedEdgeMesh& m, R& rec) { return Editor<R>{m, m.edges_, m.vertex_edge_, m.face_edge_, rec}; }
+    // Runs an accepted operation's change through a recorder and moves the versions on
+    // (topology when anything changed, geometry when a position was set).
+    template <class Change> static ChangeRecord run_recorded(WingedEdgeMesh& m, const char* name, Change change_of) {
+        ChangeRecord c;
+        c.op = name;
+        c.before = m.version_;
+        Recording rec{c};
+        change_of(rec);
+        const bool changed = !c.steps.empty() || !c.positions.empty() || !c.added_vertices.empty() || !c.added_edges.empty() ||
+                             !c.added_faces.empty() || !c.removed_vertices.empty() || !c.removed_edges.empty() || !c.removed_faces.empty();
+        if (changed) ++m.version_.topology;
+        if (!c.positions.empty()) ++m.version_.geometry;
+        c.after = m.version_;
+        aggregate_rows(c);
+        return c;
+    }
+    template <class Change> static void run_unrecorded(WingedEdgeMesh& m, Change change_of) {
+        NoRecorder rec;
+        change_of(rec);
+        ++m.version_.topology;
+        if (rec.moved) ++m.version_.geometry;
+    }
     template <class R> static void set_position(WingedEdgeMesh& m, int32_t v, const glm::dvec3& p, R& rec) {
         const glm::dvec3 before = m.position(v);
         if (before == p) return;
@@ -587,26 +693,23 @@ struct EulerRows {
 
 namespace {
 using Rows = EulerRows;
-template <class R> Editor<R> editor_of(WingedEdgeMesh& m, std::vector<EdgeRecord>& e, std::vector<int32_t>& ve,
-                                       std::vector<int32_t>& fe, R& rec) {
-    return Editor<R>{m, e, ve, fe, rec};
-}
 } // namespace
-
+// The changes, each written as the lecture reads (a friend of WingedEdgeMesh).
+struct EulerChanges {
 // ------------------------------------------------------------------ split edge
 // e = S -> E with faces L, R. A new vertex m on e; e now ends at m; a new edge n runs
 // m -> E with the same faces. Only the wings at E change hands: the edge after e in L and
 // the edge before e in R now meet n instead.
-template <class R> void WingedEdgeMesh::split_edge_impl(Edge e_, double t, R& rec) {
-    auto w = editor_of(*this, edges_, vertex_edge_, face_edge_, rec);
+template <class R> static void change_split_edge(WingedEdgeMesh& mesh, Edge e_, double t, R& rec) {
+    auto w = Rows::editor(mesh, rec);
     const int32_t e = e_.idx;
     const Half a{e, true}, b{e, false};
-    const Half after_in_L = A::next(*this, a);  // leaves E along L
-    const Half before_in_R = A::prev(*this, b); // arrives at E along R
-    const int32_t S = edges_[e].start, E = edges_[e].end, L = edges_[e].left, Rf = edges_[e].right;
+    const Half after_in_L = A::next(mesh, a);  // leaves E along L
+    const Half before_in_R = A::prev(mesh, b); // arrives at E along R
+    const int32_t S = mesh.edges_[e].start, E = mesh.edges_[e].end, L = mesh.edges_[e].left, Rf = mesh.edges_[e].right;
     rec.phase("a new vertex m at (1 - t) S + t E and a new edge n; m stores n");
-    const int32_t m = Rows::new_vertex(*this, (1.0 - t) * position(S) + t * position(E), rec);
-    const int32_t n = Rows::new_edge(*this, rec);
+    const int32_t m = Rows::new_vertex(mesh, (1.0 - t) * mesh.position(S) + t * mesh.position(E), rec);
+    const int32_t n = Rows::new_edge(mesh, rec);
     w.set_vertex_edge(m, n);
     rec.phase("the new edge's row: m -> E, the faces L and R of e, its four wings");
     w.start(n, m);
@@ -624,20 +727,20 @@ template <class R> void WingedEdgeMesh::split_edge_impl(Edge e_, double t, R& re
     rec.phase("the neighbours at E that pointed at e now point at n (and E's stored edge)");
     w.set_prev(after_in_L, n);
     w.set_next(before_in_R, n);
-    if (vertex_edge_[E] == e) w.set_vertex_edge(E, n);
+    if (mesh.vertex_edge_[E] == e) w.set_vertex_edge(E, n);
 }
 
 // ------------------------------------------------------------------ split face
 // A new edge n = a -> b inside f. Its left side closes f's corners b ... a, its right side
 // the new face g's corners a ... b.
-template <class R> void WingedEdgeMesh::split_face_impl(Face f_, const FaceSides& sides, R& rec) {
-    auto w = editor_of(*this, edges_, vertex_edge_, face_edge_, rec);
+template <class R> static void change_split_face(WingedEdgeMesh& m, Face f_, const FaceSides& sides, R& rec) {
+    auto w = Rows::editor(m, rec);
     const int32_t f = f_.idx, a = sides.a, b = sides.b;
     // the sides of f at a and b, as the check found them
     const Half into_a = sides.into_a, out_of_a = sides.out_of_a, into_b = sides.into_b, out_of_b = sides.out_of_b;
     rec.phase("a new edge n = a -> b with f on its left and a new face g on its right; its wings");
-    const int32_t n = Rows::new_edge(*this, rec);
-    const int32_t g = Rows::new_face(*this, rec);
+    const int32_t n = Rows::new_edge(m, rec);
+    const int32_t g = Rows::new_face(m, rec);
     w.start(n, a);
     w.end(n, b);
     w.left(n, f);
@@ -655,32 +758,32 @@ template <class R> void WingedEdgeMesh::split_face_impl(Face f_, const FaceSides
     bool face_edge_moved = false;
     for (Half h = out_of_a;;) {
         const bool last = h.e == into_b.e && h.left == into_b.left;
-        const Half following = last ? h : A::next(*this, h);
+        const Half following = last ? h : A::next(m, h);
         w.set_face(h, g);
-        face_edge_moved |= face_edge_[f] == h.e;
+        face_edge_moved |= m.face_edge_[f] == h.e;
         if (last) break;
         h = following;
     }
     w.set_face_edge(g, n);
     if (face_edge_moved) w.set_face_edge(f, n);
-    Rows::keep_first_corner(*this, f, rec);
-    Rows::keep_first_corner(*this, g, rec);
+    Rows::keep_first_corner(m, f, rec);
+    Rows::keep_first_corner(m, g, rec);
 }
 
 // ------------------------------------------------------------------ join faces
 // Removes e = S -> E; the higher-numbered of its faces is merged into the lower one. The
 // edges before and after e on each side now meet each other.
-template <class R> void WingedEdgeMesh::join_faces_impl(Edge e_, R& rec) {
-    auto w = editor_of(*this, edges_, vertex_edge_, face_edge_, rec);
+template <class R> static void change_join_faces(WingedEdgeMesh& m, Edge e_, R& rec) {
+    auto w = Rows::editor(m, rec);
     const int32_t e = e_.idx;
     const Half a{e, true}, b{e, false};
-    const Half pa = A::prev(*this, a), na = A::next(*this, a), pb = A::prev(*this, b), nb = A::next(*this, b);
-    const int32_t S = edges_[e].start, E = edges_[e].end, L = edges_[e].left, Rf = edges_[e].right;
+    const Half pa = A::prev(m, a), na = A::next(m, a), pb = A::prev(m, b), nb = A::next(m, b);
+    const int32_t S = m.edges_[e].start, E = m.edges_[e].end, L = m.edges_[e].left, Rf = m.edges_[e].right;
     const int32_t keep = std::min(L, Rf), gone = std::max(L, Rf);
     rec.phase("every side of the face that goes now belongs to the one kept");
     const Half along_gone = gone == L ? a : b;
-    for (Half x = A::next(*this, along_gone); x.e != e;) {
-        const Half following = A::next(*this, x);
+    for (Half x = A::next(m, along_gone); x.e != e;) {
+        const Half following = A::next(m, x);
         w.set_face(x, keep);
         x = following;
     }
@@ -690,25 +793,25 @@ template <class R> void WingedEdgeMesh::join_faces_impl(Edge e_, R& rec) {
     w.set_next(pb, na.e);
     w.set_prev(na, pb.e);
     rec.phase("S, E and the face kept stop storing e; e and the face that went are removed");
-    if (vertex_edge_[S] == e) w.set_vertex_edge(S, nb.e);
-    if (vertex_edge_[E] == e) w.set_vertex_edge(E, na.e);
-    if (face_edge_[keep] == e) w.set_face_edge(keep, na.e);
-    Rows::remove(*this, Edge(e), rec);
-    Rows::remove(*this, Face(gone), rec);
-    Rows::keep_first_corner(*this, keep, rec);
+    if (m.vertex_edge_[S] == e) w.set_vertex_edge(S, nb.e);
+    if (m.vertex_edge_[E] == e) w.set_vertex_edge(E, na.e);
+    if (m.face_edge_[keep] == e) w.set_face_edge(keep, na.e);
+    Rows::remove(m, Edge(e), rec);
+    Rows::remove(m, Face(gone), rec);
+    Rows::keep_first_corner(m, keep, rec);
 }
 
 // ------------------------------------------------------------------ flip edge
 // e = S -> E between triangles L = (S, E, c) and R = (E, S, d) becomes e = d -> c between
 // L = (c, S, d) and R = (d, E, c): the side S -> d moves into L, E -> c into R.
-template <class R> void WingedEdgeMesh::flip_edge_impl(Edge e_, R& rec) {
-    auto w = editor_of(*this, edges_, vertex_edge_, face_edge_, rec);
+template <class R> static void change_flip_edge(WingedEdgeMesh& m, Edge e_, R& rec) {
+    auto w = Rows::editor(m, rec);
     const int32_t e = e_.idx;
     const Half a{e, true}, b{e, false};
-    const Half a1 = A::next(*this, a), a2 = A::next(*this, a1); // E -> c, c -> S
-    const Half b1 = A::next(*this, b), b2 = A::next(*this, b1); // S -> d, d -> E
-    const int32_t S = edges_[e].start, E = edges_[e].end, L = edges_[e].left, Rf = edges_[e].right;
-    const int32_t c = A::head(*this, a1), d = A::head(*this, b1);
+    const Half a1 = A::next(m, a), a2 = A::next(m, a1); // E -> c, c -> S
+    const Half b1 = A::next(m, b), b2 = A::next(m, b1); // S -> d, d -> E
+    const int32_t S = m.edges_[e].start, E = m.edges_[e].end, L = m.edges_[e].left, Rf = m.edges_[e].right;
+    const int32_t c = A::head(m, a1), d = A::head(m, b1);
     rec.phase("e's row: d -> c; its wings are the two sides at d and the two at c");
     w.start(e, d);
     w.end(e, c);
@@ -729,12 +832,12 @@ template <class R> void WingedEdgeMesh::flip_edge_impl(Edge e_, R& rec) {
     w.set_prev(a1, b2.e);
     w.set_next(a1, e);
     rec.phase("S and E stop storing e; L and R store an edge of their own");
-    if (vertex_edge_[S] == e) w.set_vertex_edge(S, b1.e);
-    if (vertex_edge_[E] == e) w.set_vertex_edge(E, a1.e);
-    if (face_edge_[L] == a1.e) w.set_face_edge(L, e);
-    if (face_edge_[Rf] == b1.e) w.set_face_edge(Rf, e);
-    Rows::keep_first_corner(*this, L, rec);
-    Rows::keep_first_corner(*this, Rf, rec);
+    if (m.vertex_edge_[S] == e) w.set_vertex_edge(S, b1.e);
+    if (m.vertex_edge_[E] == e) w.set_vertex_edge(E, a1.e);
+    if (m.face_edge_[L] == a1.e) w.set_face_edge(L, e);
+    if (m.face_edge_[Rf] == b1.e) w.set_face_edge(Rf, e);
+    Rows::keep_first_corner(m, L, rec);
+    Rows::keep_first_corner(m, Rf, rec);
 }
 
 // ------------------------------------------------------------------ collapse edge
@@ -742,21 +845,21 @@ template <class R> void WingedEdgeMesh::flip_edge_impl(Edge e_, R& rec) {
 // edge at E now ends at S. On a triangle side (S, E, c) the triangle goes and its two
 // edges at c become one: the edge c-S stays and takes over the other side of E-c, which
 // goes. On a longer side (or the boundary) the edges before and after e meet.
-template <class R> void WingedEdgeMesh::collapse_edge_impl(Edge e_, double t, R& rec) {
-    auto w = editor_of(*this, edges_, vertex_edge_, face_edge_, rec);
+template <class R> static void change_collapse_edge(WingedEdgeMesh& m, Edge e_, double t, R& rec) {
+    auto w = Rows::editor(m, rec);
     const int32_t e = e_.idx;
     const Half a{e, true}, b{e, false};
-    const Half pa = A::prev(*this, a), na = A::next(*this, a), pb = A::prev(*this, b), nb = A::next(*this, b);
-    const int32_t S = edges_[e].start, E = edges_[e].end, L = edges_[e].left, Rf = edges_[e].right;
-    const bool tri_L = L != kNone && A::loop_size(*this, a, 4) == 3;
-    const bool tri_R = Rf != kNone && A::loop_size(*this, b, 4) == 3;
+    const Half pa = A::prev(m, a), na = A::next(m, a), pb = A::prev(m, b), nb = A::next(m, b);
+    const int32_t S = m.edges_[e].start, E = m.edges_[e].end, L = m.edges_[e].left, Rf = m.edges_[e].right;
+    const bool tri_L = L != kNone && A::loop_size(m, a, 4) == 3;
+    const bool tri_R = Rf != kNone && A::loop_size(m, b, 4) == 3;
     rec.phase("S moves to (1 - t) S + t E");
-    Rows::set_position(*this, S, (1.0 - t) * position(S) + t * position(E), rec);
+    Rows::set_position(m, S, (1.0 - t) * m.position(S) + t * m.position(E), rec);
     rec.phase("every edge at E (but e and the edges E-c that go) now ends at S");
-    for (int32_t x = next_ccw(e, E); x != e;) {
-        const int32_t following = next_ccw(x, E);
+    for (int32_t x = m.next_ccw(e, E); x != e;) {
+        const int32_t following = m.next_ccw(x, E);
         if (!(tri_L && x == na.e) && !(tri_R && x == pb.e)) {
-            if (edges_[x].start == E)
+            if (m.edges_[x].start == E)
                 w.start(x, S);
             else
                 w.end(x, S);
@@ -770,38 +873,38 @@ template <class R> void WingedEdgeMesh::collapse_edge_impl(Edge e_, double t, R&
         rec.phase(tri_L ? "the triangle L goes: its edge c-S takes over the other side of E-c" : "in L the edge before e meets the edge after it");
         if (tri_L) {
             const Half gone = A::twin(na), kept = pa; // gone: c -> E outside L; kept: c -> S in L
-            const Half before = A::prev(*this, gone), after = A::next(*this, gone);
-            const int32_t outside = A::face(*this, gone), c = A::tail(*this, gone);
+            const Half before = A::prev(m, gone), after = A::next(m, gone);
+            const int32_t outside = A::face(m, gone), c = A::tail(m, gone);
             w.set_face(kept, outside);
             w.set_prev(kept, before.e);
             w.set_next(kept, after.e);
             w.set_next(before, kept.e);
             w.set_prev(after, kept.e);
-            if (outside != kNone && face_edge_[outside] == na.e) w.set_face_edge(outside, kept.e);
-            if (vertex_edge_[c] == na.e) w.set_vertex_edge(c, kept.e);
+            if (outside != kNone && m.face_edge_[outside] == na.e) w.set_face_edge(outside, kept.e);
+            if (m.vertex_edge_[c] == na.e) w.set_vertex_edge(c, kept.e);
         } else {
             w.set_next(pa, na.e);
             w.set_prev(na, pa.e);
-            if (L != kNone && face_edge_[L] == e) w.set_face_edge(L, na.e);
+            if (L != kNone && m.face_edge_[L] == e) w.set_face_edge(L, na.e);
         }
     };
     const auto side_R = [&] {
         rec.phase(tri_R ? "the triangle R goes: its edge S-d takes over the other side of E-d" : "in R the edge before e meets the edge after it");
         if (tri_R) {
             const Half gone = A::twin(pb), kept = nb; // gone: E -> d outside R; kept: S -> d in R
-            const Half before = A::prev(*this, gone), after = A::next(*this, gone);
-            const int32_t outside = A::face(*this, gone), d = A::head(*this, gone);
+            const Half before = A::prev(m, gone), after = A::next(m, gone);
+            const int32_t outside = A::face(m, gone), d = A::head(m, gone);
             w.set_face(kept, outside);
             w.set_prev(kept, before.e);
             w.set_next(kept, after.e);
             w.set_next(before, kept.e);
             w.set_prev(after, kept.e);
-            if (outside != kNone && face_edge_[outside] == pb.e) w.set_face_edge(outside, kept.e);
-            if (vertex_edge_[d] == pb.e) w.set_vertex_edge(d, kept.e);
+            if (outside != kNone && m.face_edge_[outside] == pb.e) w.set_face_edge(outside, kept.e);
+            if (m.vertex_edge_[d] == pb.e) w.set_vertex_edge(d, kept.e);
         } else {
             w.set_next(pb, nb.e);
             w.set_prev(nb, pb.e);
-            if (Rf != kNone && face_edge_[Rf] == e) w.set_face_edge(Rf, nb.e);
+            if (Rf != kNone && m.face_edge_[Rf] == e) w.set_face_edge(Rf, nb.e);
         }
     };
     if (tri_L && !tri_R) {
@@ -812,17 +915,17 @@ template <class R> void WingedEdgeMesh::collapse_edge_impl(Edge e_, double t, R&
         side_R();
     }
     rec.phase("S stops storing e; e, E and the triangles' edges and faces are removed");
-    if (vertex_edge_[S] == e) w.set_vertex_edge(S, pa.e);
-    Rows::remove(*this, Edge(e), rec);
-    Rows::remove(*this, Vertex(E), rec);
-    if (tri_L) Rows::remove(*this, Edge(na.e), rec), Rows::remove(*this, Face(L), rec);
-    if (tri_R) Rows::remove(*this, Edge(pb.e), rec), Rows::remove(*this, Face(Rf), rec);
-    if (!face_first_corner_.empty()) {
-        const int32_t first = vertex_edge_[S];
+    if (m.vertex_edge_[S] == e) w.set_vertex_edge(S, pa.e);
+    Rows::remove(m, Edge(e), rec);
+    Rows::remove(m, Vertex(E), rec);
+    if (tri_L) Rows::remove(m, Edge(na.e), rec), Rows::remove(m, Face(L), rec);
+    if (tri_R) Rows::remove(m, Edge(pb.e), rec), Rows::remove(m, Face(Rf), rec);
+    if (!m.face_first_corner_.empty()) {
+        const int32_t first = m.vertex_edge_[S];
         int32_t x = first;
         do {
-            Rows::keep_first_corner(*this, edges_[x].start == S ? edges_[x].left : edges_[x].right, rec);
-            x = next_ccw(x, S);
+            Rows::keep_first_corner(m, m.edges_[x].start == S ? m.edges_[x].left : m.edges_[x].right, rec);
+            x = m.next_ccw(x, S);
         } while (x != first);
     }
 }
@@ -831,32 +934,32 @@ template <class R> void WingedEdgeMesh::collapse_edge_impl(Edge e_, double t, R&
 // f with sides h0 (its stored edge) ... h(n-1), corners c_i = start of h_i. A new vertex v
 // and edges s_i = v -> c_i; triangle T_i = (c_i, c_(i+1), v) on h_i, T_0 = f (so f keeps
 // its stored edge), T_1 ... T_(n-1) new faces. s_i has T_i on its left, T_(i-1) on its right.
-template <class R> void WingedEdgeMesh::poke_face_impl(Face f_, R& rec) {
-    auto w = editor_of(*this, edges_, vertex_edge_, face_edge_, rec);
+template <class R> static void change_poke_face(WingedEdgeMesh& m, Face f_, R& rec) {
+    auto w = Rows::editor(m, rec);
     const int32_t f = f_.idx;
     std::vector<Half> sides;
     glm::dvec3 centroid(0.0);
-    const Half first = A::side_of(*this, face_edge_[f], f);
+    const Half first = A::side_of(m, m.face_edge_[f], f);
     for (Half h = first;;) {
         sides.push_back(h);
-        centroid += position(A::tail(*this, h));
-        h = A::next(*this, h);
+        centroid += m.position(A::tail(m, h));
+        h = A::next(m, h);
         if (h.e == first.e && h.left == first.left) break;
     }
     const int32_t n = static_cast<int32_t>(sides.size());
     centroid /= static_cast<double>(n);
     rec.phase("a new vertex v at the centroid, n new edges v -> corner, n - 1 new faces");
-    const int32_t v = Rows::new_vertex(*this, centroid, rec);
+    const int32_t v = Rows::new_vertex(m, centroid, rec);
     std::vector<int32_t> spoke(n), tri(n);
-    for (int32_t i = 0; i < n; ++i) spoke[i] = Rows::new_edge(*this, rec);
+    for (int32_t i = 0; i < n; ++i) spoke[i] = Rows::new_edge(m, rec);
     tri[0] = f;
-    for (int32_t i = 1; i < n; ++i) tri[i] = Rows::new_face(*this, rec);
+    for (int32_t i = 1; i < n; ++i) tri[i] = Rows::new_face(m, rec);
     w.set_vertex_edge(v, spoke[0]);
     rec.phase("each spoke's row: v -> its corner, the triangles on its two sides, its wings");
     for (int32_t i = 0; i < n; ++i) {
         const int32_t s = spoke[i], next_i = (i + 1) % n, prev_i = (i + n - 1) % n;
         w.start(s, v);
-        w.end(s, A::tail(*this, sides[i]));
+        w.end(s, A::tail(m, sides[i]));
         w.left(s, tri[i]);
         w.right(s, tri[prev_i]);
         w.start_left(s, spoke[next_i]);
@@ -871,92 +974,287 @@ template <class R> void WingedEdgeMesh::poke_face_impl(Face f_, R& rec) {
         w.set_next(sides[i], spoke[(i + 1) % n]);
         if (i > 0) w.set_face_edge(tri[i], sides[i].e);
     }
-    for (int32_t i = 0; i < n; ++i) Rows::keep_first_corner(*this, tri[i], rec);
+    for (int32_t i = 0; i < n; ++i) Rows::keep_first_corner(m, tri[i], rec);
 }
 
-// ------------------------------------------------------------------ the public pairs
+    // ------------------------------------------------------------------ split vertex
+    // Hoppe's vertex split, the inverse of collapse-edge: v's edges strictly between v-a and
+    // v-b (counter-clockwise around v) move to a new vertex w, joined to v by a new edge
+    // e = v -> w, and two new triangles fill the gap: Ta = (v, a, w) and Tb = (v, w, b). The
+    // face Fa between v-a and the first edge that moves now meets w through a new edge
+    // p = w -> a, the face Fb before v-b through q = w -> b (Fa = Fb when nothing moves).
+    // v stays where it is; w lies at (1 - t) v + t c, c the centre of a, b and the
+    // neighbours whose edges move. collapse-edge on e with t = 0 undoes it. V+1, E+3, F+2.
+    template <class R> static void change_split_vertex(WingedEdgeMesh& m, const VertexFan& fan, double t, R& rec) {
+        auto w = Rows::editor(m, rec);
+        const int32_t v = fan.v, a = fan.a, b = fan.b, ea = fan.ea, eb = fan.eb;
+        const Half out_a = fan.out_a, in_b = A::twin(fan.out_b); // v -> a along Fa; b -> v along Fb
+        const int32_t Fa = A::face(m, out_a), Fb = A::face(m, in_b);
+        const Half after_a = A::next(m, out_a); // leaves a along Fa
+        const Half before_b = A::prev(m, in_b); // arrives at b along Fb
+        // The sides of the first and last edge that move, at v: into v along Fa, out of v along Fb.
+        const Half into_first = fan.moved.empty() ? Half{} : A::twin(A::leaving(m, fan.moved.front(), v));
+        const Half out_of_last = fan.moved.empty() ? Half{} : A::leaving(m, fan.moved.back(), v);
+        rec.phase("a new vertex w between v and the centre of the edges it takes; new edges e = v -> w, p = w -> a, q = w -> b; "
+                  "new triangles Ta = (v, a, w) and Tb = (v, w, b)");
+        const int32_t wv = Rows::new_vertex(m, (1.0 - t) * m.position(v) + t * fan.centre, rec);
+        const int32_t e = Rows::new_edge(m, rec), p = Rows::new_edge(m, rec), q = Rows::new_edge(m, rec);
+        const int32_t Ta = Rows::new_face(m, rec), Tb = Rows::new_face(m, rec);
+        w.set_vertex_edge(wv, e);
+        rec.phase("the edges between v-a and v-b around v now end at w");
+        for (const int32_t x : fan.moved) {
+            if (m.edges_[x].start == v)
+                w.start(x, wv);
+            else
+                w.end(x, wv);
+        }
+        rec.phase("e's row: v -> w with Tb on its left and Ta on its right; its wings v-b and q, v-a and p");
+        w.start(e, v);
+        w.end(e, wv);
+        w.left(e, Tb);
+        w.right(e, Ta);
+        w.start_left(e, eb);
+        w.end_left(e, q);
+        w.start_right(e, ea);
+        w.end_right(e, p);
+        rec.phase("p's row: w -> a with Fa on its left and Ta on its right");
+        w.start(p, wv);
+        w.end(p, a);
+        w.left(p, Fa);
+        w.right(p, Ta);
+        w.start_left(p, fan.moved.empty() ? q : fan.moved.front());
+        w.end_left(p, after_a.e);
+        w.start_right(p, e);
+        w.end_right(p, ea);
+        rec.phase("q's row: w -> b with Tb on its left and Fb on its right");
+        w.start(q, wv);
+        w.end(q, b);
+        w.left(q, Tb);
+        w.right(q, Fb);
+        w.start_left(q, e);
+        w.end_left(q, eb);
+        w.start_right(q, fan.moved.empty() ? p : fan.moved.back());
+        w.end_right(q, before_b.e);
+        rec.phase("v-a's side that faced Fa now borders Ta, v-b's side that faced Fb borders Tb");
+        w.set_face(out_a, Ta);
+        w.set_prev(out_a, e);
+        w.set_next(out_a, p);
+        w.set_face(in_b, Tb);
+        w.set_next(in_b, e);
+        w.set_prev(in_b, q);
+        rec.phase("in Fa and Fb the neighbours that met v-a and v-b now meet p and q");
+        w.set_prev(after_a, p);
+        w.set_next(before_b, q);
+        if (!fan.moved.empty()) {
+            w.set_next(into_first, p);
+            w.set_prev(out_of_last, q);
+        }
+        rec.phase("the stored edges: v stores e if its edge moved to w; Fa and Fb store p and q if they stored v-a and v-b; "
+                  "Ta and Tb store e");
+        if (std::find(fan.moved.begin(), fan.moved.end(), m.vertex_edge_[v]) != fan.moved.end()) w.set_vertex_edge(v, e);
+        if (Fa != kNone && m.face_edge_[Fa] == ea) w.set_face_edge(Fa, p);
+        if (Fb != kNone && m.face_edge_[Fb] == eb) w.set_face_edge(Fb, q);
+        w.set_face_edge(Ta, e);
+        w.set_face_edge(Tb, e);
+        for (const int32_t f : {Fa, Fb, Ta, Tb}) Rows::keep_first_corner(m, f, rec);
+    }
+
+    // ------------------------------------------------------------------ the stored edges
+    // set-vertex-edge / set-face-edge: the vertex table (the face table) stores one incident
+    // edge per vertex (per face); choose another one. The walk around v (along f) then
+    // starts at e. Nothing is created; choosing the edge already stored changes nothing.
+    template <class R> static void change_set_vertex_edge(WingedEdgeMesh& m, Vertex v, Edge e, R& rec) {
+        auto w = Rows::editor(m, rec);
+        rec.phase("v's row in the vertex table stores e");
+        w.set_vertex_edge(v.idx, e.idx);
+    }
+    template <class R> static void change_set_face_edge(WingedEdgeMesh& m, Face f, Edge e, R& rec) {
+        auto w = Rows::editor(m, rec);
+        if (m.face_edge_[f.idx] == e.idx) return;
+        // The face set keeps its listing (face_set() lists a face from its first corner):
+        // until now every face was listed from where its walk starts.
+        if (m.face_first_corner_.empty()) {
+            m.face_first_corner_.resize(m.face_edge_.size());
+            for (int32_t g = 0; g < m.face_count(); ++g) m.face_first_corner_[g] = m.walk_start_corner(g);
+        }
+        rec.phase("f's row in the face table stores e");
+        w.set_face_edge(f.idx, e.idx);
+    }
+};
+
+// ------------------------------------------------------------------ the registry
+// Each operation as one value: its check (without words: a Verdict), the words of its
+// refusals, its change (through any recorder), and a plan the check hands the change (the
+// sides a walk found), so nothing is looked up twice.
 namespace {
-template <class Op> ChangeRecord run_recorded(const char* name, MeshVersion& version, Op op) {
-    ChangeRecord change;
-    change.op = name;
-    change.before = version;
-    Recording rec{change};
-    op(rec);
-    ++version.topology;
-    if (!change.positions.empty()) ++version.geometry;
-    change.after = version;
-    aggregate_rows(change);
-    return change;
+using C = EulerChanges;
+
+struct Args {
+    const std::array<double, 4>& a;
+    int32_t i(int k) const { return static_cast<int32_t>(a[k]); }
+    double x(int k) const { return a[k]; }
+};
+
+struct NoPlan {};
+
+struct SplitEdge {
+    using Plan = NoPlan;
+    static Verdict check(const WingedEdgeMesh& m, Args a, Plan&) { return A::split_edge(m, Edge(a.i(0)), a.x(1)); }
+    static CheckResult words(const WingedEdgeMesh& m, const Verdict& v, Args a) { return A::words(m, "split", v, a.x(1)); }
+    template <class R> static void change(WingedEdgeMesh& m, Args a, const Plan&, R& rec) { C::change_split_edge(m, Edge(a.i(0)), a.x(1), rec); }
+};
+struct SplitFace {
+    using Plan = FaceSides;
+    static Verdict check(const WingedEdgeMesh& m, Args a, Plan& sides) { return A::split_face(m, Face(a.i(0)), Vertex(a.i(1)), Vertex(a.i(2)), &sides); }
+    static CheckResult words(const WingedEdgeMesh& m, const Verdict& v, Args) { return A::words(m, "split-face", v); }
+    template <class R> static void change(WingedEdgeMesh& m, Args a, const Plan& sides, R& rec) { C::change_split_face(m, Face(a.i(0)), sides, rec); }
+};
+struct JoinFaces {
+    using Plan = NoPlan;
+    static Verdict check(const WingedEdgeMesh& m, Args a, Plan&) { return A::join_faces(m, Edge(a.i(0))); }
+    static CheckResult words(const WingedEdgeMesh& m, const Verdict& v, Args) { return A::words(m, "join", v); }
+    template <class R> static void change(WingedEdgeMesh& m, Args a, const Plan&, R& rec) { C::change_join_faces(m, Edge(a.i(0)), rec); }
+};
+struct FlipEdge {
+    using Plan = NoPlan;
+    static Verdict check(const WingedEdgeMesh& m, Args a, Plan&) { return A::flip_edge(m, Edge(a.i(0))); }
+    static CheckResult words(const WingedEdgeMesh& m, const Verdict& v, Args) { return A::words(m, "flip", v); }
+    template <class R> static void change(WingedEdgeMesh& m, Args a, const Plan&, R& rec) { C::change_flip_edge(m, Edge(a.i(0)), rec); }
+};
+struct CollapseEdge {
+    using Plan = NoPlan;
+    static Verdict check(const WingedEdgeMesh& m, Args a, Plan&) { return A::collapse_edge(m, Edge(a.i(0)), a.x(1)); }
+    static CheckResult words(const WingedEdgeMesh& m, const Verdict& v, Args a) { return A::words(m, "collapse", v, a.x(1)); }
+    template <class R> static void change(WingedEdgeMesh& m, Args a, const Plan&, R& rec) { C::change_collapse_edge(m, Edge(a.i(0)), a.x(1), rec); }
+};
+struct PokeFace {
+    using Plan = NoPlan;
+    static Verdict check(const WingedEdgeMesh& m, Args a, Plan&) { return A::poke_face(m, Face(a.i(0))); }
+    static CheckResult words(const WingedEdgeMesh& m, const Verdict& v, Args) { return A::words(m, "poke", v); }
+    template <class R> static void change(WingedEdgeMesh& m, Args a, const Plan&, R& rec) { C::change_poke_face(m, Face(a.i(0)), rec); }
+};
+struct SplitVertex {
+    using Plan = VertexFan;
+    static Verdict check(const WingedEdgeMesh& m, Args a, Plan& fan) { return A::split_vertex(m, Vertex(a.i(0)), Vertex(a.i(1)), Vertex(a.i(2)), a.x(3), &fan); }
+    static CheckResult words(const WingedEdgeMesh& m, const Verdict& v, Args a) {
+        if (v.ok()) return CheckResult::accept();
+        const std::string code = v.code;
+        const auto V = [](int32_t i) { return vertex_label(i); };
+        if (code == "invalid-parameter")
+            return CheckResult::refuse(code, "t = " + number(a.x(3)) + " is not strictly between 0 and 1: the new vertex must lie between " + V(v.x[0]) +
+                                                 " and the centre of the edges it takes");
+        if (code == "same-vertex")
+            return CheckResult::refuse(code, "the new vertex takes the edges between two different neighbours of " + V(v.x[0]) + ", but both are " + V(v.x[1]));
+        if (code == "not-a-neighbour")
+            return CheckResult::refuse(code, V(v.x[1]) + " is not joined to " + V(v.x[0]) + ": choose two of " + V(v.x[0]) + "'s neighbours (" +
+                                                 A::neighbour_list(m, v.x[0]) + ")");
+        if (code == "too-large")
+            return CheckResult::refuse(code, "splitting " + V(v.x[0]) + " would make " + std::to_string(v.x[2]) + (v.x[1] == 0 ? " vertices" : " faces") +
+                                                 "; a mesh may have at most " + std::to_string(v.x[1] == 0 ? kFileLimits.max_vertices : kFileLimits.max_faces) +
+                                                 ", as many as a mesh file may hold");
+        return A::words(m, "split-vertex", v);
+    }
+    template <class R> static void change(WingedEdgeMesh& m, Args a, const Plan& fan, R& rec) { C::change_split_vertex(m, fan, a.x(3), rec); }
+};
+struct SetVertexEdge {
+    using Plan = NoPlan;
+    static Verdict check(const WingedEdgeMesh& m, Args a, Plan&) { return A::set_vertex_edge(m, Vertex(a.i(0)), Edge(a.i(1))); }
+    static CheckResult words(const WingedEdgeMesh& m, const Verdict& v, Args) { return A::words(m, "set-vertex-edge", v); }
+    template <class R> static void change(WingedEdgeMesh& m, Args a, const Plan&, R& rec) { C::change_set_vertex_edge(m, Vertex(a.i(0)), Edge(a.i(1)), rec); }
+};
+struct SetFaceEdge {
+    using Plan = NoPlan;
+    static Verdict check(const WingedEdgeMesh& m, Args a, Plan&) { return A::set_face_edge(m, Face(a.i(0)), Edge(a.i(1))); }
+    static CheckResult words(const WingedEdgeMesh& m, const Verdict& v, Args) { return A::words(m, "set-face-edge", v); }
+    template <class R> static void change(WingedEdgeMesh& m, Args a, const Plan&, R& rec) { C::change_set_face_edge(m, Face(a.i(0)), Edge(a.i(1)), rec); }
+};
+
+} // namespace
+
+struct OperationImpl {
+    CheckResult (*check)(const WingedEdgeMesh&, const Operation&);
+    ChangeRecord (*apply)(WingedEdgeMesh&, const Operation&);
+    bool (*apply_unrecorded)(WingedEdgeMesh&, const Operation&);
+};
+
+namespace {
+template <class Op> CheckResult check_op(const WingedEdgeMesh& m, const Operation& op) {
+    typename Op::Plan plan;
+    return Op::words(m, Op::check(m, Args{op.args}, plan), Args{op.args});
 }
-template <class Op> bool run_unrecorded(const Verdict& verdict, MeshVersion& version, Op op) {
-    if (!verdict.ok()) return false;
-    NoRecorder rec;
-    op(rec);
-    ++version.topology;
-    if (rec.moved) ++version.geometry;
+template <class Op> ChangeRecord apply_op(WingedEdgeMesh& m, const Operation& op) {
+    typename Op::Plan plan;
+    const Args args{op.args};
+    const Verdict v = Op::check(m, args, plan);
+    if (!v.ok()) require_ok(Op::words(m, v, args));
+    return Rows::run_recorded(m, op.entry->name, [&](Recording& r) { Op::change(m, args, plan, r); });
+}
+template <class Op> bool apply_op_unrecorded(WingedEdgeMesh& m, const Operation& op) {
+    typename Op::Plan plan;
+    const Args args{op.args};
+    if (!Op::check(m, args, plan).ok()) return false;
+    Rows::run_unrecorded(m, [&](NoRecorder& r) { Op::change(m, args, plan, r); });
     return true;
+}
+template <class Op> const OperationImpl* impl_of() {
+    static const OperationImpl impl{&check_op<Op>, &apply_op<Op>, &apply_op_unrecorded<Op>};
+    return &impl;
 }
 } // namespace
 
-CheckResult WingedEdgeMesh::check_split_edge(Edge e, double t) const { return A::words(*this, "split", A::split_edge(*this, e, t), t); }
-ChangeRecord WingedEdgeMesh::split_edge(Edge e, double t) {
-    require_ok(check_split_edge(e, t));
-    return run_recorded("split-edge", version_, [&](Recording& r) { split_edge_impl(e, t, r); });
-}
-bool WingedEdgeMesh::split_edge_unrecorded(Edge e, double t) {
-    return run_unrecorded(A::split_edge(*this, e, t), version_, [&](NoRecorder& r) { split_edge_impl(e, t, r); });
-}
-
-CheckResult WingedEdgeMesh::check_split_face(Face f, Vertex a, Vertex b) const {
-    return A::words(*this, "split-face", A::split_face(*this, f, a, b));
-}
-ChangeRecord WingedEdgeMesh::split_face(Face f, Vertex a, Vertex b) {
-    FaceSides sides;
-    require_ok(A::words(*this, "split-face", A::split_face(*this, f, a, b, &sides)));
-    return run_recorded("split-face", version_, [&](Recording& r) { split_face_impl(f, sides, r); });
-}
-bool WingedEdgeMesh::split_face_unrecorded(Face f, Vertex a, Vertex b) {
-    FaceSides sides;
-    return run_unrecorded(A::split_face(*this, f, a, b, &sides), version_, [&](NoRecorder& r) { split_face_impl(f, sides, r); });
-}
-
-CheckResult WingedEdgeMesh::check_join_faces(Edge e) const { return A::words(*this, "join", A::join_faces(*this, e)); }
-ChangeRecord WingedEdgeMesh::join_faces(Edge e) {
-    require_ok(check_join_faces(e));
-    return run_recorded("join-faces", version_, [&](Recording& r) { join_faces_impl(e, r); });
-}
-bool WingedEdgeMesh::join_faces_unrecorded(Edge e) {
-    return run_unrecorded(A::join_faces(*this, e), version_, [&](NoRecorder& r) { join_faces_impl(e, r); });
+const std::vector<OperationEntry>& operations() {
+    using K = ElementKind;
+    static const std::vector<OperationEntry> all = {
+        {"split-edge", "Split edge", "V+1, E+1", "s", "split {e} at t = {t}",
+         {{"e", K::Edge}, {"t", K::None, 0.5, true, nullptr, "where the new vertex lies along the edge"}}, impl_of<SplitEdge>()},
+        {"flip-edge", "Flip edge", "V, E, F unchanged", "f", "flip {e}", {{"e", K::Edge}}, impl_of<FlipEdge>()},
+        {"collapse-edge", "Collapse edge", "V−1, E−1 (−1 more per triangle side)", "c", "collapse {e} at t = {t}",
+         {{"e", K::Edge}, {"t", K::None, 0.5, true, nullptr, "where the merged vertex lies along the edge"}}, impl_of<CollapseEdge>()},
+        {"join-faces", "Join faces", "E−1, F−1", "j", "join the faces of {e}", {{"e", K::Edge}}, impl_of<JoinFaces>()},
+        {"split-face", "Split face", "E+1, F+1", "d", "split {f} by {a}–{b}",
+         {{"f", K::Face}, {"a", K::Vertex, 0, false, "vertices-of-face", "first corner of the new edge"},
+          {"b", K::Vertex, 0, false, "vertices-of-face", "second corner of the new edge"}}, impl_of<SplitFace>()},
+        {"poke-face", "Poke face", "V+1, E+n, F+n−1", "k", "poke {f}", {{"f", K::Face}}, impl_of<PokeFace>()},
+        {"split-vertex", "Split vertex", "V+1, E+3, F+2", "v", "split {v} between {a} and {b}",
+         {{"v", K::Vertex}, {"a", K::Vertex, 0, false, "vertices-around-vertex", "neighbour where the moved edges begin"},
+          {"b", K::Vertex, 0, false, "vertices-around-vertex", "neighbour where they end"},
+          {"t", K::None, 0.5, true, nullptr, "where the new vertex lies, from v towards the edges it takes"}}, impl_of<SplitVertex>()},
+        {"set-vertex-edge", "Store another edge for a vertex", "V, E, F unchanged", "", "store {e} for {v}",
+         {{"v", K::Vertex}, {"e", K::Edge, 0, false, "edges-around-vertex", "the edge to store"}}, impl_of<SetVertexEdge>()},
+        {"set-face-edge", "Store another edge for a face", "V, E, F unchanged", "", "store {e} for {f}",
+         {{"f", K::Face}, {"e", K::Edge, 0, false, "edges-of-face", "the edge to store"}}, impl_of<SetFaceEdge>()},
+    };
+    return all;
 }
 
-CheckResult WingedEdgeMesh::check_flip_edge(Edge e) const { return A::words(*this, "flip", A::flip_edge(*this, e)); }
-ChangeRecord WingedEdgeMesh::flip_edge(Edge e) {
-    require_ok(check_flip_edge(e));
-    return run_recorded("flip-edge", version_, [&](Recording& r) { flip_edge_impl(e, r); });
-}
-bool WingedEdgeMesh::flip_edge_unrecorded(Edge e) {
-    return run_unrecorded(A::flip_edge(*this, e), version_, [&](NoRecorder& r) { flip_edge_impl(e, r); });
+const OperationEntry* find_operation(std::string_view name) {
+    for (const OperationEntry& e : operations())
+        if (name == e.name) return &e;
+    return nullptr;
 }
 
-CheckResult WingedEdgeMesh::check_collapse_edge(Edge e, double t) const {
-    return A::words(*this, "collapse", A::collapse_edge(*this, e, t), t);
-}
-ChangeRecord WingedEdgeMesh::collapse_edge(Edge e, double t) {
-    require_ok(check_collapse_edge(e, t));
-    return run_recorded("collapse-edge", version_, [&](Recording& r) { collapse_edge_impl(e, t, r); });
-}
-bool WingedEdgeMesh::collapse_edge_unrecorded(Edge e, double t) {
-    return run_unrecorded(A::collapse_edge(*this, e, t), version_, [&](NoRecorder& r) { collapse_edge_impl(e, t, r); });
+Operation operation_from(std::string_view name, const double* args, std::size_t count) {
+    const OperationEntry* entry = find_operation(name);
+    if (entry == nullptr) throw Error("unknown-operation", "unknown mesh operation '" + std::string(name.substr(0, 40)) + "'");
+    if (count > entry->arguments.size())
+        throw Error("invalid-argument", std::string(entry->name) + " takes " + std::to_string(entry->arguments.size()) + " arguments, not " +
+                                            std::to_string(count));
+    Operation op{entry, {}};
+    std::size_t k = 0;
+    for (; k < count; ++k) op.args[k] = args[k];
+    for (; k < entry->arguments.size(); ++k) op.args[k] = entry->arguments[k].kind == ElementKind::None ? entry->arguments[k].default_value : kNone;
+    return op;
 }
 
-CheckResult WingedEdgeMesh::check_poke_face(Face f) const { return A::words(*this, "poke", A::poke_face(*this, f)); }
-ChangeRecord WingedEdgeMesh::poke_face(Face f) {
-    require_ok(check_poke_face(f));
-    return run_recorded("poke-face", version_, [&](Recording& r) { poke_face_impl(f, r); });
+CheckResult WingedEdgeMesh::check(const Operation& op) const {
+    if (op.entry == nullptr) throw Error("unknown-operation", "an operation needs a name (operations.h)");
+    return op.entry->impl->check(*this, op);
 }
-bool WingedEdgeMesh::poke_face_unrecorded(Face f) {
-    return run_unrecorded(A::poke_face(*this, f), version_, [&](NoRecorder& r) { poke_face_impl(f, r); });
+ChangeRecord WingedEdgeMesh::apply(const Operation& op) {
+    if (op.entry == nullptr) throw Error("unknown-operation", "an operation needs a name (operations.h)");
+    return op.entry->impl->apply(*this, op);
 }
+bool apply_unrecorded(WingedEdgeMesh& mesh, const Operation& op) { return op.entry->impl->apply_unrecorded(mesh, op); }
 
 void WingedEdgeMesh::reserve(int32_t vertices, int32_t edges, int32_t faces) {
     positions_.reserve(3 * static_cast<std::size_t>(vertices));
@@ -965,29 +1263,22 @@ void WingedEdgeMesh::reserve(int32_t vertices, int32_t edges, int32_t faces) {
     face_edge_.reserve(faces);
 }
 
-int32_t flip_every_third_edge(WingedEdgeMesh& mesh) {
-    int32_t flips = 0;
-    for (int32_t e = 0; e < mesh.edge_count(); e += 3) flips += mesh.flip_edge_unrecorded(Edge(e));
-    return flips;
+const std::vector<const char*>& change_tables() {
+    static const std::vector<const char*> all = {"vertex", "edge", "face"};
+    return all;
 }
 
-int32_t split_every_edge(WingedEdgeMesh& mesh) {
-    const int32_t E = mesh.edge_count();
-    mesh.reserve(mesh.vertex_count() + E, 4 * E, mesh.face_count() + 2 * E);
-    int32_t splits = 0;
-    for (int32_t e = 0; e < E; ++e) {
-        const EdgeRecord& r = mesh.edge(e);
-        // the corners opposite e in its two faces, if they are triangles (read before the split)
-        const int32_t E_ = r.end, L = r.left, R = r.right;
-        const int32_t c = L != kNone && mesh.next_in_face(r.end_left, L) == r.start_left ? mesh.other_vertex(r.end_left, E_) : kNone;
-        const int32_t d = R != kNone && mesh.next_in_face(r.start_right, R) == r.end_right ? mesh.other_vertex(r.end_right, E_) : kNone;
-        if (!mesh.split_edge_unrecorded(Edge(e), 0.5)) continue;
-        ++splits;
-        const Vertex m(mesh.vertex_count() - 1);
-        if (c != kNone) mesh.split_face_unrecorded(Face(L), m, Vertex(c));
-        if (d != kNone) mesh.split_face_unrecorded(Face(R), m, Vertex(d));
-    }
-    return splits;
+const std::vector<const char*>& change_fields() {
+    static const std::vector<const char*> all = {"edge", "start", "end", "left", "right", "startLeft", "startRight",
+                                                 "endLeft", "endRight", "firstCorner"};
+    return all;
+}
+
+int change_field_index(const std::string& field) {
+    const auto& all = change_fields();
+    for (std::size_t i = 0; i < all.size(); ++i)
+        if (field == all[i]) return static_cast<int>(i);
+    return -1;
 }
 
 } // namespace wingspline::mesh

@@ -79,7 +79,7 @@ RingWalkTotals WingedEdgeMesh::walk_every_ring() const {
 void newell_normals(const WingedEdgeMesh& mesh, double* normals) {
     // Walk each face's edges by the lecture's rule (L: the next edge is the end-left wing,
     // R: the start-right wing) and sum Newell's term of each side a -> b the face walks.
-    // Measured alternatives (BENCH.md mesh_normals, three runs each, wasm / native):
+    // Measured alternatives (docs/benchmarks.md mesh_normals, three runs each, wasm / native):
     //  * one pass over the edge table, adding each edge's term to L and subtracting it
     //    from R: fastest natively, but up to 2.0x in wasm at 1M faces;
     //  * loading only b and carrying it over as the next side's a: up to 1.9x at 1M;

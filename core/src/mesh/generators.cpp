@@ -8,7 +8,7 @@ namespace wingspline::mesh {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-// BENCH.md: "vertex coordinates written/used with 6 decimals".
+// docs/benchmarks.md: "vertex coordinates written/used with 6 decimals".
 double six_decimals(double x) { return std::round(x * 1e6) / 1e6; }
 
 void require_range(int32_t value, int32_t lo, int32_t hi, const char* what) {

@@ -272,6 +272,11 @@ const Representations& RepresentationCache::of(const WingedEdgeMesh& winged) {
     return *reps_;
 }
 
+std::unique_ptr<Representations> RepresentationCache::take(const WingedEdgeMesh& winged) {
+    of(winged);
+    return std::move(reps_);
+}
+
 std::array<int32_t, kRepresentationCount - 1> RepresentationCache::follow_position(const WingedEdgeMesh& winged, int32_t v,
                                                                                    const glm::dvec3& p) {
     // Current in everything but this vertex's position: follow it in place. Otherwise (first

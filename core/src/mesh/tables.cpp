@@ -121,37 +121,6 @@ const char* element_kind_name(ElementKind k) {
     return "";
 }
 
-const std::vector<OperationDescriptor>& operation_descriptors() {
-    using K = ElementKind;
-    static const std::vector<OperationDescriptor> all = {
-        {"split-edge", "splitEdge", {{"e", K::Edge}, {"t", K::None, 0.5, true}}},
-        {"split-face", "splitFace", {{"f", K::Face}, {"a", K::Vertex}, {"b", K::Vertex}}},
-        {"join-faces", "joinFaces", {{"e", K::Edge}}},
-        {"flip-edge", "flipEdge", {{"e", K::Edge}}},
-        {"collapse-edge", "collapseEdge", {{"e", K::Edge}, {"t", K::None, 0.5, true}}},
-        {"poke-face", "pokeFace", {{"f", K::Face}}},
-    };
-    return all;
-}
-
-const std::vector<const char*>& change_tables() {
-    static const std::vector<const char*> all = {"vertex", "edge", "face"};
-    return all;
-}
-
-const std::vector<const char*>& change_fields() {
-    static const std::vector<const char*> all = {"edge", "start", "end", "left", "right", "startLeft", "startRight",
-                                                 "endLeft", "endRight", "firstCorner"};
-    return all;
-}
-
-int change_field_index(const std::string& field) {
-    const auto& all = change_fields();
-    for (std::size_t i = 0; i < all.size(); ++i)
-        if (field == all[i]) return static_cast<int>(i);
-    return -1;
-}
-
 const ArrayDescriptor& TableDescriptor::array(const std::string& wanted) const {
     for (const ArrayDescriptor& a : arrays)
         if (wanted == a.name) return a;
@@ -332,6 +301,39 @@ std::array<int64_t, kRepresentationCount> rewritten_entries(const WingedEdgeMesh
         const std::vector<TableData> b = representation_tables(rep, &after_reps, after);
         for (std::size_t t = 0; t < a.size(); ++t)
             for (const ColumnDescriptor& c : a[t].descriptor->columns) out[r] += column_differences(*a[t].descriptor, c, a[t], b[t]);
+    }
+    return out;
+}
+
+std::array<int64_t, kRepresentationCount> rewritten_entries(const ChangeRecord& change, const Representations& before_reps,
+                                                            const WingedEdgeMesh& after, const Representations& after_reps) {
+    std::array<int64_t, kRepresentationCount> out{};
+    for (int r = 0; r < kRepresentationCount; ++r) {
+        const auto rep = static_cast<Representation>(r);
+        if (rep == R::WingedEdge) continue;
+        const std::vector<TableData> a = representation_tables(rep, &before_reps, after);
+        const std::vector<TableData> b = representation_tables(rep, &after_reps, after);
+        for (std::size_t t = 0; t < a.size(); ++t)
+            for (const ColumnDescriptor& c : a[t].descriptor->columns) out[r] += column_differences(*a[t].descriptor, c, a[t], b[t]);
+    }
+    // The winged edge: a row added holds all its entries (a vertex: x, y, z and its edge; an
+    // edge: S, E, L, R and four wings; a face: its edge); an existing row the fields its
+    // assignments left different (the face table's first corner is not one of the slide's
+    // entries) and the coordinates a move changed.
+    int64_t& winged = out[static_cast<int>(R::WingedEdge)];
+    winged += 4 * static_cast<int64_t>(change.added_vertices.size()) + 8 * static_cast<int64_t>(change.added_edges.size()) +
+              static_cast<int64_t>(change.added_faces.size());
+    const auto added = [&](MeshTable t, int32_t row) {
+        const auto has = [row](const auto& list) { return std::any_of(list.begin(), list.end(), [row](auto h) { return h.idx == row; }); };
+        return t == MeshTable::Vertex ? has(change.added_vertices) : t == MeshTable::Edge ? has(change.added_edges) : has(change.added_faces);
+    };
+    for (const RowChange& row : change.rows) {
+        if (added(row.table, row.row)) continue;
+        for (const FieldChange& f : row.fields) winged += f.field != "firstCorner" && f.before != f.after;
+    }
+    for (const PositionChange& p : change.positions) {
+        if (added(MeshTable::Vertex, p.vertex)) continue;
+        for (int k = 0; k < 3; ++k) winged += p.before[k] != p.after[k];
     }
     return out;
 }

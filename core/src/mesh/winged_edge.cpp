@@ -546,13 +546,6 @@ std::string removed_element_message(MeshTable t, int32_t index) {
     return element_label(t, index) + " was removed by an edit (its number stays a gap until the mesh is compacted)";
 }
 
-namespace {
-std::string edge_list(const std::vector<int32_t>& edges) {
-    std::string out;
-    for (int32_t e : edges) out += (out.empty() ? "" : ", ") + edge_label(e);
-    return out;
-}
-} // namespace
 
 CheckResult WingedEdgeMesh::check_element(Vertex v) const {
     if (v.idx < 0 || v.idx >= vertex_count())
@@ -571,64 +564,6 @@ CheckResult WingedEdgeMesh::check_element(Face f) const {
         return CheckResult::refuse("invalid-element", missing_element_message(MeshTable::Face, f.idx, face_count()));
     if (is_deleted(f)) return CheckResult::refuse("deleted-element", removed_element_message(MeshTable::Face, f.idx));
     return CheckResult::accept();
-}
-
-CheckResult WingedEdgeMesh::check_set_vertex_edge(Vertex v, Edge e) const {
-    for (const CheckResult& c : {check_element(v), check_element(e)})
-        if (!c.ok) return c;
-    const EdgeRecord& r = edges_[e.idx];
-    if (r.start == v.idx || r.end == v.idx) return CheckResult::accept();
-    if (vertex_edge_[v.idx] == kNone)
-        return CheckResult::refuse("edge-not-incident", vertex_label(v.idx) + " belongs to no face, so it has no edge to store (" +
-                                   edge_label(e.idx) + " does not touch it)");
-    return CheckResult::refuse("edge-not-incident", edge_label(e.idx) + " does not touch " + vertex_label(v.idx) +
-                               ": the vertex table stores one of " + vertex_label(v.idx) + "'s own edges (" +
-                               edge_list(edges_around_vertex(v.idx)) + ")");
-}
-
-CheckResult WingedEdgeMesh::check_set_face_edge(Face f, Edge e) const {
-    for (const CheckResult& c : {check_element(f), check_element(e)})
-        if (!c.ok) return c;
-    const EdgeRecord& r = edges_[e.idx];
-    if (r.left == f.idx || r.right == f.idx) return CheckResult::accept();
-    return CheckResult::refuse("edge-not-on-face", edge_label(e.idx) + " is not a side of " + face_label(f.idx) +
-                               ": the face table stores one of " + face_label(f.idx) + "'s own edges (" +
-                               edge_list(edges_of_face(f.idx)) + ")");
-}
-
-ChangeRecord WingedEdgeMesh::set_vertex_edge(Vertex v, Edge e) {
-    require_ok(check_set_vertex_edge(v, e));
-    ChangeRecord change;
-    change.op = "set-vertex-edge";
-    change.before = version_;
-    const int32_t before = vertex_edge_[v.idx];
-    if (before != e.idx) {
-        vertex_edge_[v.idx] = e.idx;
-        ++version_.topology;
-        change.rows.push_back({MeshTable::Vertex, v.idx, {{"edge", before, e.idx}}});
-    }
-    change.after = version_;
-    return change;
-}
-
-ChangeRecord WingedEdgeMesh::set_face_edge(Face f, Edge e) {
-    require_ok(check_set_face_edge(f, e));
-    ChangeRecord change;
-    change.op = "set-face-edge";
-    change.before = version_;
-    const int32_t before = face_edge_[f.idx];
-    if (before != e.idx) {
-        // Keep the face set's listing: until now every face was listed from its walk start.
-        if (face_first_corner_.empty()) {
-            face_first_corner_.resize(face_edge_.size());
-            for (int32_t g = 0; g < face_count(); ++g) face_first_corner_[g] = walk_start_corner(g);
-        }
-        face_edge_[f.idx] = e.idx;
-        ++version_.topology;
-        change.rows.push_back({MeshTable::Face, f.idx, {{"edge", before, e.idx}}});
-    }
-    change.after = version_;
-    return change;
 }
 
 Renumbering WingedEdgeMesh::compact() {

@@ -1,4 +1,4 @@
-// BENCH.md `ui_drag`: recompute + redraw per pointer move while dragging a control point on
+// docs/benchmarks.md `ui_drag`: recompute + redraw per pointer move while dragging a control point on
 // the curve lesson (1,000 samples per curve, blending plot and matrix panel visible), in
 // headless Chromium, with real mouse events. Timed inside the page (see below), so the
 // figure is the page's own work, not the DevTools protocol's round trip.

@@ -1,8 +1,8 @@
-// ui_import (../shared/BENCH.md): a sphere OFF chosen through the mesh lesson's file input,
+// ui_import (docs/benchmarks.md): a sphere OFF chosen through the mesh lesson's file input,
 // from the choice to the model having all its faces and a frame drawn, in ms; and the
 // longest main-thread task meanwhile: PerformanceObserver 'longtask' entries (tasks over
 // 50 ms) and, as a second opinion, the largest gap between animation frames. Inputs:
-// BENCH.md's sphere_1000000 (1000 slices x 501 stacks) and sphere_150000 (300 x 251, the
+// docs/benchmarks.md's sphere_1000000 (1000 slices x 501 stacks) and sphere_150000 (300 x 251, the
 // size the former import limit allowed, for comparison), generated with the core into a
 // temporary folder, never committed. Never run by npm test; nothing is asserted.
 import fs from 'node:fs';

@@ -1,4 +1,4 @@
-// ui_load (../shared/BENCH.md): time from navigation to the first lesson drawn and
+// ui_load (docs/benchmarks.md): time from navigation to the first lesson drawn and
 // interactive (the shell's performance mark 'wingspline-ready'; until a lesson is marked
 // ready in the registry, the test-only fixture lesson of tests/fixtures/site, which costs
 // the whole skeleton and the core but no lesson code), and the bytes transferred: raw, and gzip -9 of each

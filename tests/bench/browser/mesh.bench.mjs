@@ -1,5 +1,5 @@
-// ui_traversal_step (../shared/BENCH.md): one step of the winged-edge walk on a 10,000-face
-// mesh in headless Chromium, in ms per step. Input: BENCH.md's sphere_10000 (100 slices x
+// ui_traversal_step (docs/benchmarks.md): one step of the winged-edge walk on a 10,000-face
+// mesh in headless Chromium, in ms per step. Input: docs/benchmarks.md's sphere_10000 (100 slices x
 // 51 stacks), the walk around vertex 0 (the north pole, valence 100). A step is the key
 // press (state change, recompute) plus the page's render callback that redraws the canvas
 // and updates the panels (the browser's own paint is not included). Never run by npm test.

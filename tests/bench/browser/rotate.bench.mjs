@@ -1,4 +1,4 @@
-// ui_rotate (../shared/BENCH.md): ms per pointer move rotating sphere_100000 and
+// ui_rotate (docs/benchmarks.md): ms per pointer move rotating sphere_100000 and
 // sphere_1000000 in the mesh lesson's 3D view by pointer drag, 200 moves; median and p95.
 // A move is the pointer event's handlers (state change, recompute) plus the page's render
 // callback, plus the time until the picture is really drawn: one pixel read back from each

@@ -1,5 +1,5 @@
-// ui_tab_switch (../shared/BENCH.md): ms to show each table tab of the mesh lesson with
-// sphere_100000 loaded (BENCH.md: 250 slices x 201 stacks), in headless Chromium. A switch
+// ui_tab_switch (docs/benchmarks.md): ms to show each table tab of the mesh lesson with
+// sphere_100000 loaded (docs/benchmarks.md: 250 slices x 201 stacks), in headless Chromium. A switch
 // is the tab button's click (state change, recompute) plus the page's render callback that
 // updates the panels and redraws the canvas, and the style and layout that leaves (forced
 // and timed; the browser's paint is not included), bracketed by animation frames as in mesh.bench.mjs. `panels_ms` is the part
@@ -31,7 +31,7 @@ function sites() {
   });
 }
 
-// sphere: BENCH.md's sphere_100000; otherwise the lecture mesh the page opens with (the
+// sphere: docs/benchmarks.md's sphere_100000; otherwise the lecture mesh the page opens with (the
 // issue's yardstick: a switch on any mesh costs what it costs there).
 async function measure(root, sphere) {
   const site = await startSite({ root });

@@ -1,5 +1,5 @@
 #pragma once
-// Native benchmark harness (../shared/BENCH.md): each task runs R >= 5 repetitions and
+// Native benchmark harness (docs/benchmarks.md): each task runs R >= 5 repetitions and
 // prints one JSON line with the minimum and median time per work unit and a checksum.
 // Benchmark files register themselves with WINGSPLINE_BENCH(name) { ... }.
 #include <algorithm>

@@ -1,5 +1,5 @@
 #pragma once
-// BENCH.md's B-spline, used by the curve benchmarks and by the native curve tests
+// docs/benchmarks.md's B-spline, used by the curve benchmarks and by the native curve tests
 // (tests/native/curves/curves_fixtures.h): K = 64, p = 3, breakpoints u_i = i + 0.25 sin(i),
 // clamped; NURBS weights 1 + 0.5 sin^2(0.7 i).
 #include "wingspline/curves/curve.h"

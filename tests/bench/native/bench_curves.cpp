@@ -1,4 +1,4 @@
-// Curve tasks of ../shared/BENCH.md on the native build: one batch call per repetition over
+// Curve tasks of docs/benchmarks.md on the native build: one batch call per repetition over
 // N = 10^6 parameters; checksum = sum of x + y + z of every evaluated point.
 #include "bench.h"
 #include "bench_curve.h"

@@ -1,7 +1,8 @@
-// BENCH.md mesh tasks, native: mesh_build, mesh_ring, mesh_normals, mesh_memory on
+// docs/benchmarks.md mesh tasks, native: mesh_build, mesh_ring, mesh_normals, mesh_memory on
 // sphere_F and grid_F for F = 10k, 100k, 1M; mesh_edit_flip and mesh_edit_split on the
 // 10k and 100k inputs (issue 15).
 #include "bench.h"
+#include "edit_tasks.h"
 
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/planes.h"
@@ -99,8 +100,8 @@ WINGSPLINE_BENCH(mesh_edit) {
             }
             report(task, in.name, n, seconds, checksum);
         };
-        if (ctx.wants("mesh_edit_flip")) run("mesh_edit_flip", &flip_every_third_edge, (built.edge_count() + 2) / 3);
-        if (ctx.wants("mesh_edit_split")) run("mesh_edit_split", &split_every_edge, built.edge_count());
+        if (ctx.wants("mesh_edit_flip")) run("mesh_edit_flip", &wingspline::bench::flip_every_third_edge, (built.edge_count() + 2) / 3);
+        if (ctx.wants("mesh_edit_split")) run("mesh_edit_split", &wingspline::bench::split_every_edge, built.edge_count());
     }
 }
 

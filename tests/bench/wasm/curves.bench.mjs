@@ -1,4 +1,4 @@
-// Curve tasks of ../shared/BENCH.md on the wasm build, through the public JS batch API (one
+// Curve tasks of docs/benchmarks.md on the wasm build, through the public JS batch API (one
 // call per repetition over N = 10^6 parameters, validation and both copies across the
 // boundary included); checksum = sum of x + y + z of every evaluated point, folded after
 // each timed call.

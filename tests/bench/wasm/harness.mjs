@@ -1,4 +1,4 @@
-// Wasm benchmark harness (../shared/BENCH.md), the twin of tests/bench/native/bench.h:
+// Wasm benchmark harness (docs/benchmarks.md), the twin of tests/bench/native/bench.h:
 // R >= 5 repetitions, one JSON line per task with min and median ns per work unit.
 import { performance } from 'node:perf_hooks';
 

@@ -1,11 +1,10 @@
-// BENCH.md mesh tasks in wasm under Node, through the public API (one call per mesh); the
+// docs/benchmarks.md mesh tasks in wasm under Node, through the public API (one call per mesh); the
 // in-module timers and the ring walk through the bench hooks (not part of the student API).
-import { loadWingspline } from 'wingspline';
-import { benchHooks } from 'wingspline/bench-hooks';
+import { loadBenchCore } from './bench-core.mjs';
 import { wants, timeRuns, report } from './harness.mjs';
 
-const api = await loadWingspline();
-const hooks = benchHooks(api);
+// The API over the bench module: the shipped module's bindings and flags, plus its hooks.
+const { api, hooks } = await loadBenchCore();
 // Repetitions: 7, or 31 for the 10k-face inputs (well under a millisecond each, so more
 // repetitions keep the minimum out of the noise); the same rule as the native benchmark.
 const repetitionsFor = (faces) => (faces <= 10000 ? 31 : 7);

@@ -7,7 +7,7 @@ import { useSiteAndBrowser, openLesson as openLessonIn } from '../../helpers/bro
 import { decodePng } from '../../helpers/png.mjs';
 
 const env = useSiteAndBrowser();
-const SPHERE = { slices: 250, stacks: 201 }; // BENCH.md's sphere_100000
+const SPHERE = { slices: 250, stacks: 201 }; // docs/benchmarks.md's sphere_100000
 
 // A lesson page (the mesh lesson unless `path` names another); `webgl2: false` gives the page a browser without WebGL2 (getContext('webgl2')
 // answers null, as it does where the GPU or the driver is missing).

@@ -246,3 +246,42 @@ test('every edit has a key of its own: with F1 picked, k pokes it (p stays the p
     assert.equal(keys.findIndex((b) => b.keys.includes(k)), keys.findIndex((b) => b.group === 'Edit' && b.keys.includes(k)), `key ${k} is the edit's`);
   }
 });
+
+test('split vertex, from the registry: pick v3, choose two neighbours, split it with its key, step it, undo it', async () => {
+  const page = await openLesson();
+  await page.selectOption('#edit-kind', 'vertex');
+  await page.fill('#edit-element', '3');
+  await page.press('#edit-element', 'Enter');
+  await page.waitForFunction(() => document.querySelector('#edit-picked')?.textContent === 'Picked: v3');
+  // The two choices are v3's neighbours (the registry's query), each named by what it is.
+  const options = await page.$$eval('#edit-corner-a option', (o) => o.map((x) => x.textContent));
+  const neighbours = await page.evaluate(() => Array.from(window.wingspline.model.mesh.verticesAroundVertex(2), (v) => `v${v + 1}`));
+  assert.deepEqual(options, neighbours);
+  assert.match(await page.getAttribute('#edit-corner-a', 'aria-label'), /^Split vertex: neighbour/);
+  await page.selectOption('#edit-corner-a', { label: 'v1' });
+  await page.selectOption('#edit-corner-b', { label: 'v4' });
+  assert.equal(await page.isEnabled('button[data-op="split-vertex"]'), true);
+  await page.evaluate(() => document.activeElement?.blur());
+  await page.keyboard.press('v');
+  // V + 1, E + 3, F + 2: 6 − 10 + 5 = 1, as before the edit.
+  await page.waitForFunction(() => /before the last edit 5 − 7 \+ 3 = 1; after it 6 − 10 \+ 5 = 1/.test(document.querySelector('#edit-euler')?.textContent ?? ''));
+  await page.waitForFunction(() => window.wingspline.message().startsWith('Done: split v3 between v1 and v4'));
+  // The new vertex v6 is joined to v3, v1 and v4 (the new triangles (v3, v1, v6) and (v3, v6, v4)).
+  const aroundNew = await page.evaluate(() => Array.from(window.wingspline.model.mesh.verticesAroundVertex(5)).sort());
+  for (const v of [0, 2, 3]) assert.ok(aroundNew.includes(v), `v6 is joined to v${v + 1}: ${aroundNew}`);
+  await page.waitForFunction(() => document.querySelectorAll('#we-edge-table tbody tr[data-row]').length === 10);
+  // The player steps the assignments from the first.
+  const total = Number((await page.textContent('#edit-step')).split(' of ')[1]);
+  assert.ok(total >= 24, `three new edge rows alone are 24 assignments: ${total}`);
+  await page.click('#edit-restart');
+  await page.waitForFunction(() => document.querySelector('#edit-step')?.textContent.startsWith('0 of'));
+  await page.click('#edit-next');
+  await page.waitForFunction(() => document.querySelector('#edit-step')?.textContent.startsWith('1 of'));
+  assert.match(await page.textContent('#edit-steps li.is-current'), /vertex table, v6 · edge: — → e8/);
+  // Undo takes it back.
+  await page.focus('body');
+  await page.keyboard.press('Control+z');
+  await page.waitForFunction(() => document.querySelectorAll('#we-edge-table tbody tr[data-row]').length === 7);
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

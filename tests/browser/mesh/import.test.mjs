@@ -2,7 +2,7 @@
 // progress bar naming the stage and a Cancel button; cancelling (pointer or Escape) leaves
 // the previous mesh, its drawing and tables; a file over the limits is refused with the figure
 // and the limit, and the saved work is kept; a 200,000-face import survives a reload. The
-// files are generated here with the core (UV spheres, BENCH.md's construction), never
+// files are generated here with the core (UV spheres, docs/benchmarks.md's construction), never
 // committed. The page is asked for its state and counts, the maths stays in the core.
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';

@@ -286,14 +286,14 @@ test('a 10,000-face sphere keeps its tables virtual and walks around the pole', 
   assert.ok(drawnRows < 200, `only the rows in view are in the DOM (${drawnRows})`);
   const notes = await page.$$eval('.table-note:not([hidden])', (n) => n.map((x) => x.textContent));
   assert.ok(notes.some((t) => /15,000 rows/.test(t)), `the edge table says it is virtual: ${notes}`);
-  // BENCH.md's sphere: vertex 0 is the north pole, of valence `slices`.
+  // docs/benchmarks.md's sphere: vertex 0 is the north pole, of valence `slices`.
   await page.click('#walk-title');
   await press(page, 'End');
   const found = await page.evaluate(() => window.wingspline.model.frame.foundCount);
   assert.equal(found, 100);
   await screenshot(page, 'mesh-sphere-10k');
   // Every row of the other representations is reachable: scroll the face table of the
-  // vertex and face tables to its end with the mouse wheel. BENCH.md's sphere closes with
+  // vertex and face tables to its end with the mouse wheel. docs/benchmarks.md's sphere closes with
   // the south cap, so the last face is (ring 50, slice 99), south pole, (ring 50, slice 0):
   // vertices 1 + 49*100 + 99 = 5000, 5001 and 4901, labelled v5001, v5002, v4902.
   await click(page, '#tab-vertex-face');

@@ -9,7 +9,7 @@ import assert from 'node:assert/strict';
 import { useSiteAndBrowser } from '../../helpers/browser.mjs';
 import { chooseSphere } from '../../helpers/mesh-page.mjs';
 
-// BENCH.md's sphere kind: 100 slices x 101 stacks = 2 * 100 * 100 = 20,000 triangles,
+// docs/benchmarks.md's sphere kind: 100 slices x 101 stacks = 2 * 100 * 100 = 20,000 triangles,
 // V = 100 * 100 + 2 = 10,002, E = 30,000: enough to show windowing.
 const SLICES = 100;
 const STACKS = 101;
@@ -187,7 +187,7 @@ test('End on a focused table scrolls it (not the walk) to the last row, which sh
 test('walking around the south pole of the big sphere keeps the highlighted edge row in view at every step', async () => {
   const page = await openSphere();
   await showTab(page, 'winged');
-  // The south pole is the last vertex (BENCH.md's sphere), of valence SLICES: its edges are
+  // The south pole is the last vertex (docs/benchmarks.md's sphere), of valence SLICES: its edges are
   // the last ones of the edge table.
   const V = SLICES * (STACKS - 1) + 2;
   await page.fill('#walk-element', String(V));

@@ -94,7 +94,7 @@ test(`${MOVES} control-point moves on the curve explorer do not grow memory`, as
 
 test(`${STEPS} traversal steps on a 10,000-face sphere do not grow memory`, async () => {
   const page = await env.openLesson(new URL('mesh.html', env.site.url).href);
-  // BENCH.md sphere_10000: 100 slices x 51 stacks.
+  // docs/benchmarks.md sphere_10000: 100 slices x 51 stacks.
   await page.evaluate(() => {
     const { ctx } = window.wingspline;
     ctx.commit({ ...ctx.state, meshKind: 'sphere', sphere: { slices: 100, stacks: 51 }, walk: 'vertex', vertex: 0, step: 0 });

@@ -6,7 +6,7 @@
 
 #include "wingspline/error.h"
 
-#include "../../bench/native/bench_curve.h" // bench_bspline: BENCH.md's B-spline, shared with the benchmark
+#include "../../bench/native/bench_curve.h" // bench_bspline: docs/benchmarks.md's B-spline, shared with the benchmark
 
 #include <catch2/catch.hpp>
 
@@ -65,7 +65,7 @@ inline Mat4 scaled(Mat4 m, double s) {
 }
 
 // ---- curves
-// BENCH.md's cubic Bezier: P0=(0,0,0), P1=(1,2,0.5), P2=(3,2,1), P3=(4,0,1.5).
+// docs/benchmarks.md's cubic Bezier: P0=(0,0,0), P1=(1,2,0.5), P2=(3,2,1), P3=(4,0,1.5).
 inline Curve bench_bezier() {
     Curve c;
     c.kind = CurveKind::Bezier;

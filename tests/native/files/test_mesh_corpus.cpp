@@ -96,7 +96,7 @@ void check_case(const MeshCase& c) {
     }
 }
 
-// A valid OFF of at least `bytes` bytes: a BENCH.md-style height-field grid written with
+// A valid OFF of at least `bytes` bytes: a docs/benchmarks.md-style height-field grid written with
 // full precision, so parsing has real work on every line.
 std::string large_off(std::size_t bytes, int32_t& nx_out, int32_t& ny_out) {
     // About 60 bytes per vertex line and 14 per face line, 2 faces per vertex.

@@ -4,6 +4,7 @@
 // from the current winged edge equal to the ones built from scratch.
 #include <catch2/catch.hpp>
 
+#include "wingspline/mesh/operations.h"
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/representations.h"
 #include "wingspline/mesh/winged_edge.h"
@@ -113,20 +114,20 @@ TEST_CASE("set-vertex-edge: accepted exactly for incident edges, refused ones ch
                 INFO("v" << v + 1 << " e" << e + 1);
                 const bool incident = side_of_faces_at(fx.mesh, w.edge(e), v);
                 const Snapshot before = snapshot(w);
-                const CheckResult check = w.check_set_vertex_edge(Vertex(v), Edge(e));
+                const CheckResult check = w.check(operation("set-vertex-edge", Vertex(v), Edge(e)));
                 REQUIRE(snapshot(w) == before); // the check changes nothing
                 REQUIRE(check.ok == incident);
                 if (!incident) {
                     ++refused;
                     CHECK(check.code == "edge-not-incident");
                     CHECK_THAT(check.message, Catch::Contains(edge_label(e)) && Catch::Contains(vertex_label(v)));
-                    CHECK_THROWS_WITH(w.set_vertex_edge(Vertex(v), Edge(e)), check.message);
+                    CHECK_THROWS_WITH(w.apply(operation("set-vertex-edge", Vertex(v), Edge(e))), check.message);
                     CHECK(snapshot(w) == before);
                     continue;
                 }
                 ++accepted;
                 const std::vector<int32_t> ring = w.edges_around_vertex(v);
-                const ChangeRecord change = w.set_vertex_edge(Vertex(v), Edge(e));
+                const ChangeRecord change = w.apply(operation("set-vertex-edge", Vertex(v), Edge(e)));
                 require_valid(w);
                 CHECK(w.counts().euler() == euler);
                 CHECK(w.vertex_edge(v) == e);
@@ -175,19 +176,19 @@ TEST_CASE("set-face-edge: accepted exactly for the face's sides; the face set st
                     side |= std::minmax(fx.mesh.corner(f, i), fx.mesh.corner(f, (i + 1) % fx.mesh.face_size(f))) ==
                             std::minmax(w.edge(e).start, w.edge(e).end);
                 const Snapshot before = snapshot(w);
-                const CheckResult check = w.check_set_face_edge(Face(f), Edge(e));
+                const CheckResult check = w.check(operation("set-face-edge", Face(f), Edge(e)));
                 REQUIRE(snapshot(w) == before);
                 REQUIRE(check.ok == side);
                 if (!side) {
                     ++refused;
                     CHECK(check.code == "edge-not-on-face");
-                    CHECK_THROWS_WITH(w.set_face_edge(Face(f), Edge(e)), check.message);
+                    CHECK_THROWS_WITH(w.apply(operation("set-face-edge", Face(f), Edge(e))), check.message);
                     CHECK(snapshot(w) == before);
                     continue;
                 }
                 ++accepted;
                 const std::vector<int32_t> loop = w.edges_of_face(f);
-                const ChangeRecord change = w.set_face_edge(Face(f), Edge(e));
+                const ChangeRecord change = w.apply(operation("set-face-edge", Face(f), Edge(e)));
                 require_valid(w);
                 CHECK(w.face_edge(f) == e);
                 CHECK(is_rotation_from(loop, w.edges_of_face(f), e));
@@ -213,14 +214,14 @@ TEST_CASE("out-of-range and isolated elements are refused with the element named
     WingedEdgeMesh w = WingedEdgeMesh::build(m);
     const Snapshot before = snapshot(w);
     const int32_t isolated = w.vertex_count() - 1;
-    const CheckResult lonely = w.check_set_vertex_edge(Vertex(isolated), Edge(0));
+    const CheckResult lonely = w.check(operation("set-vertex-edge", Vertex(isolated), Edge(0)));
     CHECK(lonely.code == "edge-not-incident");
     CHECK_THAT(lonely.message, Catch::Contains(vertex_label(isolated) + " belongs to no face"));
-    CHECK(w.check_set_vertex_edge(Vertex(-1), Edge(0)).code == "invalid-element");
-    CHECK(w.check_set_vertex_edge(Vertex(0), Edge(w.edge_count())).code == "invalid-element");
-    CHECK(w.check_set_face_edge(Face(w.face_count()), Edge(0)).code == "invalid-element");
-    CHECK_THAT(w.check_set_face_edge(Face(0), Edge(kNone)).message, Catch::Contains("-1 names no edge (it stands for none)"));
-    CHECK_THROWS_AS(w.set_face_edge(Face(7), Edge(0)), wingspline::Error);
+    CHECK(w.check(operation("set-vertex-edge", Vertex(-1), Edge(0))).code == "invalid-element");
+    CHECK(w.check(operation("set-vertex-edge", Vertex(0), Edge(w.edge_count()))).code == "invalid-element");
+    CHECK(w.check(operation("set-face-edge", Face(w.face_count()), Edge(0))).code == "invalid-element");
+    CHECK_THAT(w.check(operation("set-face-edge", Face(0), Edge(kNone))).message, Catch::Contains("-1 names no edge (it stands for none)"));
+    CHECK_THROWS_AS(w.apply(operation("set-face-edge", Face(7), Edge(0))), wingspline::Error);
     CHECK(snapshot(w) == before);
     CHECK_FALSE(w.has_garbage()); // no operation deletes yet
 }
@@ -230,16 +231,16 @@ TEST_CASE("lecture 000: v2 stores e3 instead of e6 and its walk starts there", "
     WingedEdgeMesh w = WingedEdgeMesh::build(ex.mesh, ex.options);
     // Slide: v2's edge is e6; CCW around v2 is e6, e5, e3, e2.
     REQUIRE(w.vertex_edge(1) == 5);
-    const ChangeRecord c = w.set_vertex_edge(Vertex(1), Edge(2));
+    const ChangeRecord c = w.apply(operation("set-vertex-edge", Vertex(1), Edge(2)));
     CHECK(w.edges_around_vertex(1) == std::vector<int32_t>{2, 1, 5, 4}); // e3, e2, e6, e5
     CHECK(c.rows.size() == 1);
     CHECK(w.version() == MeshVersion{1, 0});
     // F2's edge is e3 on the slide; its sides are e3, e4, e5 (CCW: e3, e5, e4).
-    w.set_face_edge(Face(1), Edge(4));
+    w.apply(operation("set-face-edge", Face(1), Edge(4)));
     CHECK(w.edges_of_face(1) == std::vector<int32_t>{4, 3, 2});
     CHECK(w.version() == MeshVersion{2, 0});
     // Choosing again what is stored changes nothing, not even the version.
-    CHECK_FALSE(w.set_face_edge(Face(1), Edge(4)).changed());
+    CHECK_FALSE(w.apply(operation("set-face-edge", Face(1), Edge(4))).changed());
     CHECK(w.version() == MeshVersion{2, 0});
 }
 
@@ -266,11 +267,11 @@ TEST_CASE("derived representations after random operations equal those built fro
             if (rng() % 2 == 0) {
                 const int32_t v = static_cast<int32_t>(rng() % w.vertex_count());
                 const std::vector<int32_t> ring = w.edges_around_vertex(v);
-                if (!ring.empty()) w.set_vertex_edge(Vertex(v), Edge(ring[rng() % ring.size()]));
+                if (!ring.empty()) w.apply(operation("set-vertex-edge", Vertex(v), Edge(ring[rng() % ring.size()])));
             } else {
                 const int32_t f = static_cast<int32_t>(rng() % w.face_count());
                 const std::vector<int32_t> loop = w.edges_of_face(f);
-                w.set_face_edge(Face(f), Edge(loop[rng() % loop.size()]));
+                w.apply(operation("set-face-edge", Face(f), Edge(loop[rng() % loop.size()])));
             }
             if (round % 3 == 0) {
                 const int32_t v = static_cast<int32_t>(rng() % w.vertex_count());
@@ -282,7 +283,7 @@ TEST_CASE("derived representations after random operations equal those built fro
             CHECK(w.counts().euler() == WingedEdgeMesh::build(fx.mesh, fx.options).counts().euler());
         }
         // One more change of the topology after the last followed move: derived exactly once.
-        w.set_face_edge(Face(0), Edge(w.edges_of_face(0)[1]));
+        w.apply(operation("set-face-edge", Face(0), Edge(w.edges_of_face(0)[1])));
         const int32_t derived_before = cache.derivations();
         const Representations& now = cache.of(w);
         CHECK(cache.version() == w.version());
@@ -321,7 +322,7 @@ TEST_CASE("the cache follows one move in place and derives again when the topolo
     cache.follow_position(w, 1, {1, 0.25, 0});
     CHECK(cache.derivations() == 1); // followed in place
     CHECK(cache.of(w).vertex_face_tables.positions[4] == 0.25);
-    w.set_vertex_edge(Vertex(0), Edge(1));
+    w.apply(operation("set-vertex-edge", Vertex(0), Edge(1)));
     w.set_position(1, {1, 0, 0});
     cache.follow_position(w, 1, {1, 0, 0});
     CHECK(cache.derivations() == 2);

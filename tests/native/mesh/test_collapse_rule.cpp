@@ -7,6 +7,8 @@
 // accept exactly the legal collapses, and an accepted collapse must leave that face list.
 #include <catch2/catch.hpp>
 
+#include "mesh/unrecorded.h"
+#include "wingspline/mesh/operations.h"
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/winged_edge.h"
 
@@ -136,20 +138,20 @@ void random_edits(WingedEdgeMesh& w, std::mt19937& rng, int count) {
     const auto pick = [&](int32_t n) { return static_cast<int32_t>(rng() % static_cast<uint32_t>(n)); };
     for (int i = 0; i < count; ++i) {
         switch (rng() % 6) {
-        case 0: w.split_edge_unrecorded(Edge(pick(w.edge_count())), 0.25 + 0.5 * (rng() % 3) / 2.0); break;
+        case 0: apply_unrecorded(w, operation("split-edge", Edge(pick(w.edge_count())), 0.25 + 0.5 * (rng() % 3) / 2.0)); break;
         case 1: {
             const int32_t f = pick(w.face_count());
             if (w.is_deleted(Face(f))) break;
             const std::vector<int32_t> c = w.vertices_of_face(f);
-            w.split_face_unrecorded(Face(f), Vertex(c[pick(static_cast<int32_t>(c.size()))]), Vertex(c[pick(static_cast<int32_t>(c.size()))]));
+            apply_unrecorded(w, operation("split-face", Face(f), Vertex(c[pick(static_cast<int32_t>(c.size()))]), Vertex(c[pick(static_cast<int32_t>(c.size()))])));
             break;
         }
         case 2:
-        case 3: w.join_faces_unrecorded(Edge(pick(w.edge_count()))); break;
-        case 4: w.flip_edge_unrecorded(Edge(pick(w.edge_count()))); break;
+        case 3: apply_unrecorded(w, operation("join-faces", Edge(pick(w.edge_count())))); break;
+        case 4: apply_unrecorded(w, operation("flip-edge", Edge(pick(w.edge_count())))); break;
         default:
-            if (rng() % 3 == 0) w.poke_face_unrecorded(Face(pick(w.face_count())));
-            else w.collapse_edge_unrecorded(Edge(pick(w.edge_count())), 0.5);
+            if (rng() % 3 == 0) apply_unrecorded(w, operation("poke-face", Face(pick(w.face_count()))));
+            else apply_unrecorded(w, operation("collapse-edge", Edge(pick(w.edge_count())), 0.5));
         }
     }
     if (rng() % 2 == 0) w.compact();
@@ -178,7 +180,7 @@ TEST_CASE("collapse-edge is refused exactly when the result would be invalid or 
         for (int32_t e = 0; e < w.edge_count(); ++e) {
             if (w.is_deleted(Edge(e))) continue;
             const Expected want = expected_collapse(w, e);
-            const CheckResult verdict = w.check_collapse_edge(Edge(e), 0.5);
+            const CheckResult verdict = w.check(operation("collapse-edge", Edge(e), 0.5));
             INFO("seed " << seed << " collapse " << edge_label(e) << ": " << verdict.code << " " << verdict.message << " / "
                          << (want.legal ? "legal" : want.why));
             REQUIRE(verdict.ok == want.legal);
@@ -188,7 +190,7 @@ TEST_CASE("collapse-edge is refused exactly when the result would be invalid or 
             }
             ++legal;
             WingedEdgeMesh after = w;
-            after.collapse_edge(Edge(e), 0.5);
+            after.apply(operation("collapse-edge", Edge(e), 0.5));
             const ValidationReport rep = after.validate();
             INFO((rep.first_error() ? rep.first_error()->message : std::string()));
             REQUIRE(rep.ok());
@@ -234,10 +236,10 @@ TEST_CASE("collapse-edge keeps a vertex of valence 2 between two polygons, as jo
     WingedEdgeMesh w = WingedEdgeMesh::build(m);
     REQUIRE(w.edge(0).start == 0);
     REQUIRE(w.edge(0).end == 1);
-    const CheckResult verdict = w.check_collapse_edge(Edge(0), 0.5);
+    const CheckResult verdict = w.check(operation("collapse-edge", Edge(0), 0.5));
     INFO(verdict.code << " " << verdict.message);
     REQUIRE(verdict.ok);
-    w.collapse_edge(Edge(0), 0.5);
+    w.apply(operation("collapse-edge", Edge(0), 0.5));
     REQUIRE(w.validate().ok());
     const IndexedMesh got = w.live_face_set();
     REQUIRE(got.face_count() == 2);

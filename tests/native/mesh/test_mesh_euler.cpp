@@ -7,6 +7,8 @@
 // to replay (steps) and to undo (rows), recorded and unrecorded paths identical, compact().
 #include <catch2/catch.hpp>
 
+#include "mesh/unrecorded.h"
+#include "wingspline/mesh/operations.h"
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/representations.h"
 #include "wingspline/mesh/view_geometry.h"
@@ -178,69 +180,97 @@ Tables undo(Tables t, const ChangeRecord& c) {
 }
 
 // ---------------------------------------------------------------- random operations
-enum Op { SplitEdge, SplitFace, JoinFaces, FlipEdge, CollapseEdge, PokeFace, kOps };
-const char* kOpNames[kOps] = {"split-edge", "split-face", "join-faces", "flip-edge", "collapse-edge", "poke-face"};
+// Drawn from the registry (operations.h), so every operation with an entry is exercised
+// here: each argument by its kind, an element argument after the first mostly among its
+// `choices` (the corners of the face, the neighbours of the vertex), sometimes any element.
+const int kOps = static_cast<int>(operations().size());
+enum Op { SplitEdge, FlipEdge, CollapseEdge, JoinFaces, SplitFace, PokeFace }; // the registry's order (checked below)
 
 struct Call {
-    Op op;
-    int32_t a, b, c;
-    double t;
+    int op;
+    int32_t a, b, c; // the element arguments in order
+    double t;        // the number argument, if any
 };
+const char* op_name(int op) { return operations()[op].name; }
+
+Operation operation_of(const Call& c) {
+    const OperationEntry& entry = operations()[c.op];
+    Operation op{&entry, {}};
+    const int32_t elements[3] = {c.a, c.b, c.c};
+    int next = 0;
+    for (std::size_t k = 0; k < entry.arguments.size(); ++k)
+        op.args[k] = entry.arguments[k].kind == ElementKind::None ? c.t : elements[next++];
+    return op;
+}
+
+std::vector<int32_t> choices_of(const WingedEdgeMesh& w, const char* query, int32_t first) {
+    const std::string q = query;
+    if (q == "vertices-of-face") return w.vertices_of_face(first);
+    if (q == "vertices-around-vertex") return w.vertices_around_vertex(first);
+    if (q == "edges-around-vertex") return w.edges_around_vertex(first);
+    if (q == "edges-of-face") return w.edges_of_face(first);
+    return {};
+}
+
+int32_t count_of(const WingedEdgeMesh& w, ElementKind k) {
+    return k == ElementKind::Vertex ? w.vertex_count() : k == ElementKind::Edge ? w.edge_count() : w.face_count();
+}
+
+bool is_live(const WingedEdgeMesh& w, ElementKind k, int32_t i) {
+    if (i < 0 || i >= count_of(w, k)) return false;
+    return k == ElementKind::Vertex ? !w.is_deleted(Vertex(i)) : k == ElementKind::Edge ? !w.is_deleted(Edge(i)) : !w.is_deleted(Face(i));
+}
 
 Call random_call(const WingedEdgeMesh& w, std::mt19937& rng) {
     const auto pick = [&](int32_t n) { return static_cast<int32_t>(rng() % static_cast<uint32_t>(std::max(n, 1))); };
-    Call c{static_cast<Op>(rng() % kOps), 0, 0, 0, 0.5};
+    Call c{static_cast<int>(rng() % static_cast<uint32_t>(kOps)), 0, 0, 0, 0.5};
     const double ts[] = {0.5, 0.25, 0.0, 1.0, 0.9, -0.5, 1.5};
     c.t = ts[rng() % 7];
-    switch (c.op) {
-    case SplitFace: {
-        c.a = pick(w.face_count());
-        // mostly corners of the face (some adjacent, some not), sometimes any vertex
-        if (!w.is_deleted(Face(c.a)) && rng() % 5 != 0) {
-            const std::vector<int32_t> corners = w.vertices_of_face(c.a);
-            c.b = corners[pick(static_cast<int32_t>(corners.size()))];
-            c.c = corners[pick(static_cast<int32_t>(corners.size()))];
+    const OperationEntry& entry = operations()[c.op];
+    int32_t* slots[3] = {&c.a, &c.b, &c.c};
+    int next = 0;
+    for (const OperationArgument& arg : entry.arguments) {
+        if (arg.kind == ElementKind::None) continue;
+        int32_t& slot = *slots[next++];
+        const int32_t n = count_of(w, arg.kind);
+        if (arg.choices == nullptr) {
+            // now and then one past the end or -1 (refused as invalid-element)
+            slot = pick(n) - (rng() % 50 == 0 ? n + 1 : 0);
+        } else if (is_live(w, entry.arguments[0].kind, c.a) && rng() % 5 != 0) {
+            const std::vector<int32_t> options = choices_of(w, arg.choices, c.a);
+            slot = options.empty() ? pick(n) : options[pick(static_cast<int32_t>(options.size()))];
         } else {
-            c.b = pick(w.vertex_count());
-            c.c = pick(w.vertex_count());
+            slot = pick(n);
         }
-        break;
-    }
-    case PokeFace: c.a = pick(w.face_count()); break;
-    default: c.a = pick(w.edge_count()) - (rng() % 50 == 0 ? w.edge_count() + 1 : 0); break;
     }
     return c;
 }
 
-CheckResult check(const WingedEdgeMesh& w, const Call& c) {
-    switch (c.op) {
-    case SplitEdge: return w.check_split_edge(Edge(c.a), c.t);
-    case SplitFace: return w.check_split_face(Face(c.a), Vertex(c.b), Vertex(c.c));
-    case JoinFaces: return w.check_join_faces(Edge(c.a));
-    case FlipEdge: return w.check_flip_edge(Edge(c.a));
-    case CollapseEdge: return w.check_collapse_edge(Edge(c.a), c.t);
-    default: return w.check_poke_face(Face(c.a));
+CheckResult check(const WingedEdgeMesh& w, const Call& c) { return w.check(operation_of(c)); }
+ChangeRecord run(WingedEdgeMesh& w, const Call& c) { return w.apply(operation_of(c)); }
+bool run_unrecorded(WingedEdgeMesh& w, const Call& c) { return apply_unrecorded(w, operation_of(c)); }
+
+TEST_CASE("the registry lists every operation once, with its arguments", "[mesh][euler]") {
+    const char* expected[] = {"split-edge", "flip-edge", "collapse-edge", "join-faces", "split-face", "poke-face", "split-vertex",
+                              "set-vertex-edge", "set-face-edge"};
+    REQUIRE(operations().size() == std::size(expected));
+    for (std::size_t k = 0; k < std::size(expected); ++k) {
+        const OperationEntry& e = operations()[k];
+        CHECK(std::string(e.name) == expected[k]);
+        CHECK(find_operation(e.name) == &e);
+        REQUIRE(!e.arguments.empty());
+        CHECK(e.arguments[0].kind != ElementKind::None); // every operation starts from an element
+        CHECK(e.arguments[0].choices == nullptr);
+        CHECK(e.arguments.size() <= 4);
     }
-}
-ChangeRecord run(WingedEdgeMesh& w, const Call& c) {
-    switch (c.op) {
-    case SplitEdge: return w.split_edge(Edge(c.a), c.t);
-    case SplitFace: return w.split_face(Face(c.a), Vertex(c.b), Vertex(c.c));
-    case JoinFaces: return w.join_faces(Edge(c.a));
-    case FlipEdge: return w.flip_edge(Edge(c.a));
-    case CollapseEdge: return w.collapse_edge(Edge(c.a), c.t);
-    default: return w.poke_face(Face(c.a));
-    }
-}
-bool run_unrecorded(WingedEdgeMesh& w, const Call& c) {
-    switch (c.op) {
-    case SplitEdge: return w.split_edge_unrecorded(Edge(c.a), c.t);
-    case SplitFace: return w.split_face_unrecorded(Face(c.a), Vertex(c.b), Vertex(c.c));
-    case JoinFaces: return w.join_faces_unrecorded(Edge(c.a));
-    case FlipEdge: return w.flip_edge_unrecorded(Edge(c.a));
-    case CollapseEdge: return w.collapse_edge_unrecorded(Edge(c.a), c.t);
-    default: return w.poke_face_unrecorded(Face(c.a));
-    }
+    CHECK(find_operation("explode") == nullptr);
+    CHECK_THROWS_AS(operation("explode", Edge(0)), wingspline::Error);
+    CHECK_THROWS_AS(operation("flip-edge", Edge(0), Edge(1)), wingspline::Error);
+    // defaults: a number left out takes the entry's default, an element left out is none
+    const Operation split = operation("split-edge", Edge(2));
+    CHECK(split.args[0] == 2);
+    CHECK(split.args[1] == 0.5);
+    CHECK(operation("split-face", Face(1)).args[2] == kNone);
 }
 
 // The live part of the face set, gaps dropped and vertices renumbered, built again from
@@ -309,7 +339,7 @@ std::vector<Fixture> fixtures() {
 
 TEST_CASE("split-edge e3 of the lecture mesh: hand-worked tables and the steps in order", "[mesh][euler]") {
     WingedEdgeMesh w = lecture();
-    const ChangeRecord c = w.split_edge(Edge(label("e3")), 0.5);
+    const ChangeRecord c = w.apply(operation("split-edge", Edge(label("e3")), 0.5));
     // New v6 at the midpoint of v2 (1,0) and v3 (1,2); new e8 = v6 -> v3 with e3's faces.
     require_tables(w, {{"e1: v1 v3 - F1 e2 e2 e4 e8", kSlide[1], "e3: v2 v6 F1 F2 e2 e5 e8 e8", "e4: v3 v4 - F2 e1 e8 e7 e5", kSlide[4],
                         kSlide[5], kSlide[6], "e8: v6 v3 F1 F2 e3 e3 e1 e4"},
@@ -343,7 +373,7 @@ TEST_CASE("split-edge e3 of the lecture mesh: hand-worked tables and the steps i
 
 TEST_CASE("flip-edge e3 of the lecture mesh: e3 becomes v4 -> v1", "[mesh][euler]") {
     WingedEdgeMesh w = lecture();
-    w.flip_edge(Edge(label("e3")));
+    w.apply(operation("flip-edge", Edge(label("e3"))));
     // F1 = (v1 v2 v4), F2 = (v4 v3 v1). v3 loses e3 and stores the edge after it along F1's
     // old walk (e1); F1's stored e1 left F1, so F1 stores e3.
     require_tables(w, {{"e1: v1 v3 - F2 e2 e3 e4 e4", "e2: v1 v2 F1 - e3 e1 e5 e6", "e3: v4 v1 F1 F2 e5 e4 e2 e1",
@@ -354,7 +384,7 @@ TEST_CASE("flip-edge e3 of the lecture mesh: e3 becomes v4 -> v1", "[mesh][euler
     // and back: e3 = v4 -> v1 flips to v3 -> v2; its left face F1 becomes (c S d) = (v2 v4 v3)
     // (listed from its walk start v3, as F1 lost v1) and F2 = (v3 v1 v2) (listed from v1):
     // the lecture's two triangles again, with their numbers exchanged.
-    w.flip_edge(Edge(label("e3")));
+    w.apply(operation("flip-edge", Edge(label("e3"))));
     const IndexedMesh fs = w.face_set();
     CHECK(fs.face_vertices == std::vector<int32_t>{2, 1, 3, 0, 1, 2, 1, 4, 3});
     CHECK(row_text(w, 2) == "e3: v3 v2 F1 F2 e4 e1 e5 e2");
@@ -362,7 +392,7 @@ TEST_CASE("flip-edge e3 of the lecture mesh: e3 becomes v4 -> v1", "[mesh][euler
 
 TEST_CASE("join-faces e3 of the lecture mesh, then split-face F1 v2-v3 puts the edge back as e8", "[mesh][euler]") {
     WingedEdgeMesh w = lecture();
-    const ChangeRecord j = w.join_faces(Edge(label("e3")));
+    const ChangeRecord j = w.apply(operation("join-faces", Edge(label("e3"))));
     // F1 = (v1 v2 v4 v3); F2 and e3 are gaps; v3 stored e3 and now stores e1 (after e3 in F1).
     require_tables(w, {{"e1: v1 v3 - F1 e2 e2 e4 e4", "e2: v1 v2 F1 - e1 e1 e5 e6", "e3: deleted", "e4: v3 v4 - F1 e1 e1 e7 e5",
                         "e5: v2 v4 F1 F3 e2 e6 e4 e7", kSlide[5], kSlide[6]},
@@ -374,7 +404,7 @@ TEST_CASE("join-faces e3 of the lecture mesh, then split-face F1 v2-v3 puts the 
     const MeshCounts k = w.counts();
     CHECK((k.vertices == 5 && k.edges == 6 && k.faces == 2 && k.euler() == 1));
 
-    w.split_face(Face(0), Vertex(1), Vertex(2));
+    w.apply(operation("split-face", Face(0), Vertex(1), Vertex(2)));
     // e8 = v2 -> v3 with F1 (v3 v1 v2) on its left, the new F4 (v2 v4 v3) on its right:
     // e3's old row with F4 for F2.
     require_tables(w, {{"e1: v1 v3 - F1 e2 e2 e4 e8", "e2: v1 v2 F1 - e1 e1 e8 e6", "e3: deleted", "e4: v3 v4 - F4 e1 e8 e7 e5",
@@ -386,7 +416,7 @@ TEST_CASE("join-faces e3 of the lecture mesh, then split-face F1 v2-v3 puts the 
 
 TEST_CASE("collapse-edge e4 of the lecture mesh: v4 merges into v3, F2 goes", "[mesh][euler]") {
     WingedEdgeMesh w = lecture();
-    const ChangeRecord c = w.collapse_edge(Edge(label("e4")), 0.5);
+    const ChangeRecord c = w.apply(operation("collapse-edge", Edge(label("e4")), 0.5));
     // v3 moves to the midpoint of (1,2) and (2,1). F2 = (v2 v4 v3) is the triangle on e4's
     // right: it goes with e5 (its edge at v4); e3 (v2-v3) takes e5's place in F3 = (v2 v5 v3).
     require_tables(w, {{"e1: v1 v3 - F1 e2 e2 e7 e3", kSlide[1], "e3: v2 v3 F1 F3 e2 e6 e1 e7", "e4: deleted", "e5: deleted",
@@ -403,7 +433,7 @@ TEST_CASE("collapse-edge e4 of the lecture mesh: v4 merges into v3, F2 goes", "[
 
 TEST_CASE("poke-face F1 of the lecture mesh: three triangles around the centroid", "[mesh][euler]") {
     WingedEdgeMesh w = lecture();
-    w.poke_face(Face(0));
+    w.apply(operation("poke-face", Face(0)));
     // F1's stored edge e1 runs v3 -> v1 along F1, so the corners are v3, v1, v2; spokes
     // e8 = v6->v3, e9 = v6->v1, e10 = v6->v2; F1 = (v3 v1 v6), F4 = (v1 v2 v6), F5 = (v2 v3 v6).
     require_tables(w, {{"e1: v1 v3 - F1 e2 e9 e4 e8", "e2: v1 v2 F4 - e9 e1 e10 e6", "e3: v2 v3 F5 F2 e10 e5 e8 e4", kSlide[3],
@@ -459,7 +489,7 @@ TEST_CASE("refusals on the lecture mesh and the tetrahedron say why and change n
     // (v1 v2 v3) and (v2 v1 v4) would become v4 - v3, which is an edge already.
     WingedEdgeMesh t = WingedEdgeMesh::build(tetrahedron());
     const EdgeRecord& r0 = t.edge(0);
-    const std::string msg = t.check_flip_edge(Edge(0)).message;
+    const std::string msg = t.check(operation("flip-edge", Edge(0))).message;
     CHECK(msg.rfind("flipping e1 would create an edge ", 0) == 0);
     const int32_t c = t.vertices_of_face(r0.left)[0] + t.vertices_of_face(r0.left)[1] + t.vertices_of_face(r0.left)[2] - r0.start - r0.end;
     CHECK(msg.find(vertex_label(c)) != std::string::npos);
@@ -468,7 +498,7 @@ TEST_CASE("refusals on the lecture mesh and the tetrahedron say why and change n
 // ====================================================================== random sequences
 
 TEST_CASE("random seeded operation sequences: valid, Euler, rebuild, refusals, record, unrecorded twin", "[mesh][euler]") {
-    int accepted[kOps] = {}, refused[kOps] = {};
+    std::vector<int> accepted(kOps), refused(kOps);
     std::map<std::string, std::set<int>> accepted_on; // fixture -> operations accepted there
     // 1200 sequences of 40 operations (300 in the sanitizer build, see CMakeLists.txt).
 #ifdef WINGSPLINE_SANITIZED
@@ -485,7 +515,7 @@ TEST_CASE("random seeded operation sequences: valid, Euler, rebuild, refusals, r
         const int32_t euler = w.counts().euler();
         for (int step = 0; step < 40; ++step) {
             const Call call = random_call(w, rng);
-            INFO(fx.name << " seed " << seed << " step " << step << " " << kOpNames[call.op] << " " << call.a << " " << call.b << " "
+            INFO(fx.name << " seed " << seed << " step " << step << " " << op_name(call.op) << " " << call.a << " " << call.b << " "
                          << call.c << " t=" << call.t);
             const Snapshot before = snapshot(w);
             const Tables tables_before = tables(w);
@@ -550,11 +580,11 @@ TEST_CASE("random seeded operation sequences: valid, Euler, rebuild, refusals, r
     for (const char* name : {"sphere", "tetrahedron", "grid", "lecture", "fan", "cube", "hexagons"})
         for (int op = 0; op < kOps; ++op) {
             if (op == FlipEdge && (std::string(name) == "cube" || std::string(name) == "hexagons")) continue;
-            INFO(name << " " << kOpNames[op]);
+            INFO(name << " " << op_name(op));
             CHECK(accepted_on[name].count(op) == 1);
         }
     for (int op = 0; op < kOps; ++op) {
-        INFO(kOpNames[op] << " accepted " << accepted[op] << " refused " << refused[op]);
+        INFO(op_name(op) << " accepted " << accepted[op] << " refused " << refused[op]);
         CHECK(accepted[op] >= 20);
         CHECK(refused[op] >= 5);
     }
@@ -562,7 +592,7 @@ TEST_CASE("random seeded operation sequences: valid, Euler, rebuild, refusals, r
 
 TEST_CASE("the other representations follow an edited mesh with gaps, numbered as the winged edge", "[mesh][euler]") {
     WingedEdgeMesh w = lecture();
-    w.collapse_edge(Edge(label("e4")), 0.5); // gaps: v4, e4, e5, F2
+    w.apply(operation("collapse-edge", Edge(label("e4")), 0.5)); // gaps: v4, e4, e5, F2
     RepresentationCache cache;
     const Representations& r = cache.of(w);
     // F2 is a gap: no corners in the vertex and face tables; F3 keeps its number.
@@ -582,7 +612,7 @@ TEST_CASE("the other representations follow an edited mesh with gaps, numbered a
 
 TEST_CASE("the bounding box leaves out a removed vertex", "[mesh][euler]") {
     WingedEdgeMesh w = lecture();
-    w.collapse_edge(Edge(label("e7")), 0.0); // v5 = (2, -1), the only vertex below y = 0, merges into v4
+    w.apply(operation("collapse-edge", Edge(label("e7")), 0.0)); // v5 = (2, -1), the only vertex below y = 0, merges into v4
     REQUIRE(w.is_deleted(Vertex(4)));
     const BoundingBox box = bounding_box(w);
     CHECK(box.min == glm::dvec3(0, 0, 0));
@@ -602,10 +632,10 @@ TEST_CASE("join-faces refuses to leave a dangling edge at a vertex of valence 2"
         if (std::minmax(w.edge(i).start, w.edge(i).end) == std::minmax(2, 3)) e = i;
     REQUIRE(e != kNone);
     const Snapshot before = snapshot(w);
-    const CheckResult r = w.check_join_faces(Edge(e));
+    const CheckResult r = w.check(operation("join-faces", Edge(e)));
     CHECK(r.code == "faces-touch-elsewhere");
     CHECK(r.message == "F1 and F2 also meet at v1: joining them across " + edge_label(e) + " would make a face that passes v1 twice");
-    CHECK_THROWS(w.join_faces(Edge(e)));
+    CHECK_THROWS(w.apply(operation("join-faces", Edge(e))));
     CHECK(snapshot(w) == before);
 }
 
@@ -615,9 +645,11 @@ TEST_CASE("what a split of e3 makes each representation rewrite, counted by hand
     // Nothing changed: nothing rewritten.
     CHECK(rewritten_entries(before, reps_before, before, reps_before) == std::array<int64_t, kRepresentationCount>{});
     WingedEdgeMesh after = before;
-    after.split_edge(Edge(label("e3")), 0.5);
+    const ChangeRecord change = after.apply(operation("split-edge", Edge(label("e3")), 0.5));
     const Representations reps_after = build_representations(after.face_set(), after);
     const auto n = rewritten_entries(before, reps_before, after, reps_after);
+    // The same from the change record alone (what the binding computes, with no copy of the mesh).
+    CHECK(rewritten_entries(change, reps_before, after, reps_after) == n);
     // Winged edge: v6's row (x, y, z, edge) and v3's edge: 5; e8's row (8), e3's E, E:L, E:R,
     // e1's E:R and e4's S:R: 13; the face table is unchanged. 18 = the 15 assignments + v6's xyz.
     CHECK(n[static_cast<int>(Representation::WingedEdge)] == 18);
@@ -627,4 +659,155 @@ TEST_CASE("what a split of e3 makes each representation rewrite, counted by hand
     // Vertex and face tables: v6's xyz (3); F1's list from its third reference on (2), F2's new
     // fourth reference (1).
     CHECK(n[static_cast<int>(Representation::VertexFaceTables)] == 6);
+}
+
+TEST_CASE("an edit's cost from its change record equals the comparison of the two states, on random edits", "[mesh][euler]") {
+    // The binding counts the winged edge's rewritten entries from the change record instead
+    // of copying the mesh; the comparison of both states (rewritten_entries over two meshes)
+    // is the independent recomputation.
+    int compared = 0;
+    for (const Fixture& fx : fixtures()) {
+        for (uint32_t seed = 1; seed <= 12; ++seed) {
+            std::mt19937 rng(seed);
+            WingedEdgeMesh w = fx.mesh;
+            for (int step = 0; step < 12; ++step) {
+                const Call call = random_call(w, rng);
+                if (!check(w, call).ok) continue;
+                const WingedEdgeMesh before = w;
+                const Representations reps_before = build_representations(before.face_set(), before);
+                const ChangeRecord change = run(w, call);
+                const Representations reps_after = build_representations(w.face_set(), w);
+                INFO(fx.name << " seed " << seed << " step " << step << " " << op_name(call.op));
+                CHECK(rewritten_entries(change, reps_before, w, reps_after) == rewritten_entries(before, reps_before, w, reps_after));
+                ++compared;
+            }
+        }
+    }
+    CHECK(compared > 300);
+}
+
+// ====================================================================== split vertex
+
+namespace {
+// Each live face as its corners from the lowest-numbered one, so that two listings of one
+// face compare equal wherever they start; sorted, gaps left out.
+std::vector<std::vector<int32_t>> canonical_faces(const WingedEdgeMesh& w) {
+    std::vector<std::vector<int32_t>> out;
+    for (int32_t f = 0; f < w.face_count(); ++f) {
+        if (w.is_deleted(Face(f))) continue;
+        std::vector<int32_t> c = w.vertices_of_face(f);
+        std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+        out.push_back(c);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+} // namespace
+
+TEST_CASE("split-vertex: the fan between a and b moves to a new vertex; V+1, E+3, F+2; collapse with t = 0 undoes it",
+          "[mesh][euler][split-vertex]") {
+    // Every (v, a, b) of every fixture with a few values of t: each split that the check
+    // accepts is a valid mesh with the counts and positions of the definition, and
+    // collapsing the new edge with t = 0 gives the face set and positions back.
+    int splits = 0;
+    for (const Fixture& fx : fixtures()) {
+        for (int32_t v = 0; v < fx.mesh.vertex_count(); ++v) {
+            const std::vector<int32_t> ring = fx.mesh.vertices_around_vertex(v);
+            for (const int32_t a : ring)
+                for (const int32_t b : ring) {
+                    WingedEdgeMesh w = fx.mesh;
+                    const double t = 0.25 + 0.25 * ((a + b) % 3);
+                    INFO(fx.name << " v" << v + 1 << " a v" << a + 1 << " b v" << b + 1 << " t " << t);
+                    const CheckResult c = w.check(operation("split-vertex", Vertex(v), Vertex(a), Vertex(b), t));
+                    if (a == b) {
+                        CHECK(c.code == "same-vertex");
+                        continue;
+                    }
+                    REQUIRE(c.ok);
+                    const MeshCounts before = w.counts();
+                    const auto faces_before = canonical_faces(w);
+                    const glm::dvec3 pv = w.position(v);
+                    // The neighbours that move: strictly between a and b counter-clockwise.
+                    std::vector<int32_t> moved;
+                    const std::size_t ia = std::find(ring.begin(), ring.end(), a) - ring.begin();
+                    for (std::size_t k = (ia + 1) % ring.size(); ring[k] != b; k = (k + 1) % ring.size()) moved.push_back(ring[k]);
+                    glm::dvec3 centre = w.position(a) + w.position(b);
+                    for (const int32_t u : moved) centre += w.position(u);
+                    centre /= static_cast<double>(moved.size() + 2);
+
+                    const ChangeRecord r = w.apply(operation("split-vertex", Vertex(v), Vertex(a), Vertex(b), t));
+                    const ValidationReport rep = w.validate();
+                    INFO((rep.first_error() ? rep.first_error()->message : std::string()));
+                    REQUIRE(rep.ok());
+                    const MeshCounts after = w.counts();
+                    CHECK(after.vertices == before.vertices + 1);
+                    CHECK(after.edges == before.edges + 3);
+                    CHECK(after.faces == before.faces + 2);
+                    CHECK(after.euler() == before.euler());
+                    REQUIRE(r.added_vertices.size() == 1);
+                    REQUIRE(r.added_edges.size() == 3);
+                    REQUIRE(r.added_faces.size() == 2);
+                    const int32_t nw = r.added_vertices[0].idx, ne = r.added_edges[0].idx;
+                    // Positions: v stays, w = (1 - t) v + t c (relative to the mesh's size).
+                    CHECK(w.position(v) == pv);
+                    const glm::dvec3 expected = (1.0 - t) * pv + t * centre;
+                    for (int k = 0; k < 3; ++k) CHECK(w.position(nw)[k] == Approx(expected[k]).margin(1e-12 * (1 + std::abs(expected[k]))));
+                    // w's neighbours: v, a, b and the moved ones; v keeps the others.
+                    std::vector<int32_t> around_w = w.vertices_around_vertex(nw);
+                    std::sort(around_w.begin(), around_w.end());
+                    std::vector<int32_t> want = moved;
+                    want.insert(want.end(), {v, a, b});
+                    std::sort(want.begin(), want.end());
+                    CHECK(around_w == want);
+                    // The new triangles are (v, a, w) and (v, w, b).
+                    const auto has_face = [&](std::vector<int32_t> f) {
+                        std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+                        const auto all = canonical_faces(w);
+                        return std::find(all.begin(), all.end(), f) != all.end();
+                    };
+                    CHECK(has_face({v, a, nw}));
+                    CHECK(has_face({v, nw, b}));
+                    // The inverse: collapse e = v -> w keeping v where it is.
+                    REQUIRE(w.edge(ne).start == v);
+                    REQUIRE(w.edge(ne).end == nw);
+                    const CheckResult back = w.check(operation("collapse-edge", Edge(ne), 0.0));
+                    INFO(back.message);
+                    REQUIRE(back.ok);
+                    w.apply(operation("collapse-edge", Edge(ne), 0.0));
+                    REQUIRE(w.validate().ok());
+                    CHECK(canonical_faces(w) == faces_before);
+                    CHECK(w.position(v) == pv);
+                    ++splits;
+                }
+        }
+    }
+    CHECK(splits > 500);
+}
+
+TEST_CASE("split-vertex refusals say why and change nothing", "[mesh][euler][split-vertex]") {
+    WingedEdgeMesh w = lecture();
+    const Snapshot before = snapshot(w);
+    struct Case {
+        Operation op;
+        std::string code, text;
+    };
+    // v3 (index 2) is joined to v1, v2, v4, v5 on the slide's mesh; v6 (index 5) is not.
+    const std::vector<Case> cases = {
+        {operation("split-vertex", Vertex(2), Vertex(0), Vertex(0)), "same-vertex", "both are v1"},
+        {operation("split-vertex", Vertex(2), Vertex(0), Vertex(2)), "not-a-neighbour", "v3 is not joined to v3"},
+        {operation("split-vertex", Vertex(0), Vertex(1), Vertex(3)), "not-a-neighbour", "v4 is not joined to v1: choose two of v1's neighbours"},
+        {operation("split-vertex", Vertex(2), Vertex(0), Vertex(1), 1.0), "invalid-parameter", "t = 1 is not strictly between 0 and 1"},
+        {operation("split-vertex", Vertex(9), Vertex(0), Vertex(1)), "invalid-element", "there is no v10"},
+        {operation("split-vertex", Vertex(2), Vertex(0)), "invalid-element", "-1 names no vertex"},
+    };
+    for (const Case& k : cases) {
+        const CheckResult r = w.check(k.op);
+        INFO(k.code << ": " << r.message);
+        CHECK(!r.ok);
+        CHECK(r.code == k.code);
+        CHECK(r.message.find(k.text) != std::string::npos);
+        CHECK_THROWS_AS(w.apply(k.op), wingspline::Error);
+        CHECK(!apply_unrecorded(w, k.op));
+        CHECK(snapshot(w) == before);
+    }
 }

@@ -13,6 +13,7 @@
 #include "wingspline/curves/bspline_ops.h"
 #include "wingspline/curves/curve.h"
 #include "wingspline/curves/subdivision.h"
+#include "wingspline/mesh/operations.h"
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/subdivision.h"
 #include "wingspline/mesh/winged_edge.h"
@@ -193,10 +194,10 @@ WingedEdgeMesh random_mesh(std::mt19937& rng, bool triangles) {
         const int32_t e = std::uniform_int_distribution<int32_t>(0, m.edge_count() - 1)(rng);
         if (m.is_deleted(Edge(e))) continue;
         const int op = pick(rng);
-        if (!triangles && op == 0 && m.check_join_faces(Edge(e)).ok) m.join_faces(Edge(e));
-        else if (op == 1 && m.check_flip_edge(Edge(e)).ok) m.flip_edge(Edge(e));
-        else if (op == 2 && m.check_collapse_edge(Edge(e)).ok) m.collapse_edge(Edge(e));
-        else if (!triangles && op == 3 && m.check_split_edge(Edge(e)).ok) m.split_edge(Edge(e));
+        if (!triangles && op == 0 && m.check(operation("join-faces", Edge(e))).ok) m.apply(operation("join-faces", Edge(e)));
+        else if (op == 1 && m.check(operation("flip-edge", Edge(e))).ok) m.apply(operation("flip-edge", Edge(e)));
+        else if (op == 2 && m.check(operation("collapse-edge", Edge(e))).ok) m.apply(operation("collapse-edge", Edge(e)));
+        else if (!triangles && op == 3 && m.check(operation("split-edge", Edge(e))).ok) m.apply(operation("split-edge", Edge(e)));
     }
     m.compact();
     std::uniform_real_distribution<double> jitter(-0.05, 0.05);
@@ -324,7 +325,7 @@ TEST_CASE("Refusals: gaps, polygons for Loop, steps, limits", "[subdivision]") {
     CHECK(quads.message.find("F1") != std::string::npos);
     CHECK_THROWS_AS(subdivide(cb, Scheme::Loop, 1), wingspline::Error);
     WingedEdgeMesh gaps = built(uv_sphere(6, 4));
-    gaps.collapse_edge(Edge(3));
+    gaps.apply(operation("collapse-edge", Edge(3)));
     CHECK(check_subdivide(gaps, Scheme::Loop, 1).code == "mesh-has-gaps");
     CHECK(check_subdivide(cb, Scheme::CatmullClark, -1).code == "invalid-argument");
     CHECK(check_subdivide(cb, Scheme::CatmullClark, 17).code == "invalid-argument");

@@ -185,7 +185,7 @@ TEST_CASE("every query agrees across all six representations", "[mesh][represent
 }
 
 TEST_CASE("walks read in proportion to the answer, scans in proportion to the mesh", "[mesh][representations][queries]") {
-    // The same interior grid vertex (valence 6 in BENCH.md's split) on a small and a 4x
+    // The same interior grid vertex (valence 6 in docs/benchmarks.md's split) on a small and a 4x
     // larger grid: the winged edge and the adjacency lists read the same number of
     // entries; the scans of the face table, the coordinates and the edge list read more,
     // and in proportion to the corners / edges.

@@ -3,6 +3,8 @@
 // and one set of mesh limits enforced where values enter (22, 20).
 #include <catch2/catch.hpp>
 
+#include "mesh/unrecorded.h"
+#include "wingspline/mesh/operations.h"
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/limits.h"
 #include "wingspline/mesh/mesh_io.h"
@@ -446,8 +448,8 @@ TEST_CASE("join-faces and split-edge make no face over kMaxFaceCorners: at the l
         WingedEdgeMesh w = WingedEdgeMesh::build(polygon_with_ear(kMaxFaceCorners - 1));
         REQUIRE(w.edge(0).start == 0);
         REQUIRE(w.edge(0).end == 1);
-        REQUIRE(w.check_join_faces(Edge(0)).ok);
-        w.join_faces(Edge(0));
+        REQUIRE(w.check(operation("join-faces", Edge(0))).ok);
+        w.apply(operation("join-faces", Edge(0)));
         REQUIRE(w.validate().ok());
         CHECK(w.vertices_of_face(0).size() == 1000u);
         require_export_reads_back(w);
@@ -457,33 +459,33 @@ TEST_CASE("join-faces and split-edge make no face over kMaxFaceCorners: at the l
         WingedEdgeMesh w = WingedEdgeMesh::build(polygon_with_ear(kMaxFaceCorners));
         const std::vector<int32_t> before = edge_table(w);
         const MeshVersion version = w.version();
-        const CheckResult r = w.check_join_faces(Edge(0));
+        const CheckResult r = w.check(operation("join-faces", Edge(0)));
         CHECK(r.code == "face-too-large");
         CHECK(r.message == "joining F1 and F2 would make a face of 1001 corners; a face may have at most 1000");
-        CHECK_THROWS_AS(w.join_faces(Edge(0)), wingspline::Error);
-        CHECK(!w.join_faces_unrecorded(Edge(0)));
+        CHECK_THROWS_AS(w.apply(operation("join-faces", Edge(0))), wingspline::Error);
+        CHECK(!apply_unrecorded(w, operation("join-faces", Edge(0))));
         CHECK(edge_table(w) == before);
         CHECK(w.version() == version);
         REQUIRE(w.validate().ok());
         require_export_reads_back(w);
         // Splitting a side of the 1000-gon would give it 1001 corners too; a side of the ear only
         // grows the ear.
-        const CheckResult s = w.check_split_edge(Edge(5), 0.5);
+        const CheckResult s = w.check(operation("split-edge", Edge(5), 0.5));
         CHECK(s.code == "face-too-large");
         CHECK(s.message == "splitting e6 would give F1 1001 corners; a face may have at most 1000");
-        CHECK_THROWS_AS(w.split_edge(Edge(5), 0.5), wingspline::Error);
+        CHECK_THROWS_AS(w.apply(operation("split-edge", Edge(5), 0.5)), wingspline::Error);
         CHECK(edge_table(w) == before);
         const int32_t ear_side = w.edge_count() - 1; // x -> v2, first met walking F2
         REQUIRE(w.edge(ear_side).left == 1);
         REQUIRE(w.edge(ear_side).right == kNone);
-        w.split_edge(Edge(ear_side), 0.5);
+        w.apply(operation("split-edge", Edge(ear_side), 0.5));
         REQUIRE(w.validate().ok());
         require_export_reads_back(w);
     }
     {
         // A 999-gon's side split: 1000 corners, allowed.
         WingedEdgeMesh w = WingedEdgeMesh::build(polygon_with_ear(kMaxFaceCorners - 1));
-        w.split_edge(Edge(5), 0.5);
+        w.apply(operation("split-edge", Edge(5), 0.5));
         CHECK(w.vertices_of_face(0).size() == 1000u);
         require_export_reads_back(w);
     }
@@ -520,25 +522,25 @@ TEST_CASE("edits keep the element counts within what a mesh file may hold", "[me
     REQUIRE(w.face_count() == kFileLimits.max_faces);
     const std::vector<int32_t> before = edge_table(w);
     // Poking a triangle makes two more faces: refused, nothing changed.
-    const CheckResult poke = w.check_poke_face(Face(7));
+    const CheckResult poke = w.check(operation("poke-face", Face(7)));
     CHECK(poke.code == "too-large");
     CHECK(poke.message == "poking F8 would make 2000002 faces; a mesh may have at most 2000000, as many as a mesh file may hold");
-    CHECK_THROWS_AS(w.poke_face(Face(7)), wingspline::Error);
-    CHECK(!w.poke_face_unrecorded(Face(7)));
+    CHECK_THROWS_AS(w.apply(operation("poke-face", Face(7))), wingspline::Error);
+    CHECK(!apply_unrecorded(w, operation("poke-face", Face(7))));
     CHECK(edge_table(w) == before);
     // A split edge adds a vertex, no face: allowed.
-    CHECK(w.check_split_edge(Edge(0), 0.5).ok);
+    CHECK(w.check(operation("split-edge", Edge(0), 0.5)).ok);
     // Joining the first quad's two triangles across its diagonal e3 leaves a gap; splitting
     // the quad again comes back to the limit, with one row more than it.
     REQUIRE((w.edge(2).left == 0 && w.edge(2).right == 1));
     const Vertex a(w.edge(2).start), b(w.edge(2).end);
-    w.join_faces(Edge(2));
-    REQUIRE(w.check_split_face(Face(0), a, b).ok);
-    w.split_face(Face(0), a, b);
+    w.apply(operation("join-faces", Edge(2)));
+    REQUIRE(w.check(operation("split-face", Face(0), a, b)).ok);
+    w.apply(operation("split-face", Face(0), a, b));
     CHECK(w.counts().faces == kFileLimits.max_faces);
     CHECK(w.face_count() == kFileLimits.max_faces + 1);
     // The gap is counted out, the live faces are at the limit: poking is refused again.
-    CHECK(w.check_poke_face(Face(7)).code == "too-large");
+    CHECK(w.check(operation("poke-face", Face(7))).code == "too-large");
     CHECK(w.validate().ok());
 
     // Vertices: kFileLimits.max_vertices of them (one triangle, the others isolated).
@@ -547,8 +549,8 @@ TEST_CASE("edits keep the element counts within what a mesh file may hold", "[me
     m.positions[3] = 1, m.positions[7] = 1;
     m.add_face({0, 1, 2});
     const WingedEdgeMesh v = WingedEdgeMesh::build(m);
-    const CheckResult split = v.check_split_edge(Edge(0), 0.5);
+    const CheckResult split = v.check(operation("split-edge", Edge(0), 0.5));
     CHECK(split.code == "too-large");
     CHECK(split.message == "splitting e1 would make 2000001 vertices; a mesh may have at most 2000000, as many as a mesh file may hold");
-    CHECK(v.check_poke_face(Face(0)).code == "too-large");
+    CHECK(v.check(operation("poke-face", Face(0))).code == "too-large");
 }

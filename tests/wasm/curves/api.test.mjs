@@ -10,7 +10,7 @@ const api = await loadWingspline();
 const EXACT = 1e-14; // small rational matrix entries
 const SAME_CURVE = 1e-12; // one curve evaluated by two routes (model units)
 
-// BENCH.md's cubic Bezier.
+// docs/benchmarks.md's cubic Bezier.
 const benchBezier = { kind: 'bezier', dim: 3, points: [0, 0, 0, 1, 2, 0.5, 3, 2, 1, 4, 0, 1.5] };
 // A zig-zag polygon P_i = (i, (-1)^i (1 + i/4)).
 const zigzag = (n) => Array.from({ length: n }, (_, i) => [i, (i % 2 ? -1 : 1) * (1 + i / 4)]).flat();

@@ -8,7 +8,7 @@ import { loadWingspline } from 'wingspline';
 const api = await loadWingspline();
 const L = api.meshLimits;
 
-test('the import limit holds a sphere of a million faces (BENCH.md sphere_1000000: 500,002 vertices)', () => {
+test('the import limit holds a sphere of a million faces (docs/benchmarks.md sphere_1000000: 500,002 vertices)', () => {
   assert.ok(L.maxFaces >= 1000000, `maxFaces ${L.maxFaces}`);
   assert.ok(L.maxVertices >= 500002, `maxVertices ${L.maxVertices}`);
   // The header alone of sphere_1000000: within the limits, so the core reads on and finds

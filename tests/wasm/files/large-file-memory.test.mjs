@@ -8,7 +8,7 @@ import { loadWingspline } from 'wingspline';
 
 const api = await loadWingspline();
 
-// An n x n grid of quads, two triangles each, written as OFF with 6 decimals (BENCH.md style).
+// An n x n grid of quads, two triangles each, written as OFF with 6 decimals (docs/benchmarks.md style).
 function gridOff(n) {
   const lines = ['OFF', `${(n + 1) ** 2} ${2 * n * n} 0`];
   for (let j = 0; j <= n; j += 1) {

@@ -4,6 +4,7 @@
 // out by hand from lecture 000's conventions (the same as tests/native/test_mesh_euler.cpp).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import fs from 'node:fs';
 import { loadWingspline } from 'wingspline';
 import { random } from '../../helpers/seeded-random.mjs';
 
@@ -40,12 +41,34 @@ function snapshot(mesh) {
 
 test('the operations and the change record are described once by the core', () => {
   const names = api.meshOperations.operations.map((o) => o.name);
-  assert.deepEqual(names, ['split-edge', 'split-face', 'join-faces', 'flip-edge', 'collapse-edge', 'poke-face']);
+  assert.deepEqual(names, ['split-edge', 'flip-edge', 'collapse-edge', 'join-faces', 'split-face', 'poke-face', 'split-vertex',
+    'set-vertex-edge', 'set-face-edge']);
   const split = api.meshOperations.operations[0];
   assert.deepEqual(split.arguments.map((a) => [a.name, a.kind, a.optional]), [['e', 'edge', false], ['t', null, true]]);
   assert.equal(split.arguments[1].default, 0.5);
+  // one key per operation the edit panel offers; the stored-edge choices have none
+  const keys = api.meshOperations.operations.map((o) => o.shortcut).filter(Boolean);
+  assert.equal(new Set(keys).size, keys.length);
+  assert.deepEqual(api.meshOperations.operations.filter((o) => !o.shortcut).map((o) => o.name), ['set-vertex-edge', 'set-face-edge']);
+  // every argument after the first that names an element says where its candidates come
+  // from: a query of the first element's kind that the mesh answers
+  withLecture((mesh0) => {
+    for (const o of api.meshOperations.operations) {
+      assert.ok(o.arguments[0].kind, o.name);
+      for (const a of o.arguments.slice(1)) if (a.kind) assert.ok(mesh0.adjacency(a.choices, 0).length > 0, `${o.name}.${a.name}`);
+    }
+  });
   assert.deepEqual(api.meshOperations.tables, ['vertex', 'edge', 'face']);
   assert.ok(Object.isFrozen(api.meshOperations));
+});
+
+test('the declarations name the same operations as the registry, with its arguments', () => {
+  const text = fs.readFileSync(new URL('../../../types/wingspline.d.ts', import.meta.url), 'utf8');
+  const union = text.slice(text.indexOf('export type MeshOperation ='), text.indexOf('export type MeshOperationName'));
+  const declared = [...union.matchAll(/\{ op: '([a-z-]+)';([^}]*)\}/g)].map((m) => [m[1],
+    [...m[2].matchAll(/(\w+)(\?)?: number/g)].map((a) => `${a[1]}${a[2] ?? ''}`)]);
+  const registry = api.meshOperations.operations.map((o) => [o.name, o.arguments.map((a) => `${a.name}${a.optional ? '?' : ''}`)]);
+  assert.deepEqual(declared, registry);
 });
 
 test('splitEdge(e3): hand-worked tables, every assignment in order, v6 at the midpoint', () => withLecture((mesh) => {
@@ -208,10 +231,12 @@ test('random seeded operation sequences: valid, Euler, rebuilt from the file, re
   assert.ok(accepted > 1000 && refused > 300, `accepted ${accepted}, refused ${refused}`);
 });
 
-test('the benchmark hook flips what the public API flips (BENCH.md mesh_edit_flip) and leaves the mesh alone', async () => {
-  const { benchHooks } = await import('wingspline/bench-hooks');
-  const hooks = benchHooks(api);
-  withMesh(api.generateMesh('sphere', { slices: 12, stacks: 7 }), (mesh) => {
+test('the benchmark hook flips what the public API flips (docs/benchmarks.md mesh_edit_flip) and leaves the mesh alone', async () => {
+  const { loadBenchCore } = await import('../../bench/wasm/bench-core.mjs');
+  const bench = await loadBenchCore();
+  const { hooks } = bench;
+  const mesh = bench.api.buildMesh(api.generateMesh('sphere', { slices: 12, stacks: 7 }));
+  try {
     const before = snapshot(mesh);
     const r = hooks.timeEditInCore(mesh, 'mesh_edit_flip', 2);
     assert.equal(snapshot(mesh), before);
@@ -225,7 +250,9 @@ test('the benchmark hook flips what the public API flips (BENCH.md mesh_edit_fli
       }
     }
     assert.equal(r.checksum, flips + E + mesh.wingedEdge().edges[E - 1].start);
-  });
+  } finally {
+    mesh.dispose();
+  }
 });
 
 test('apply(op, {rewritten: true}): the entries each representation rewrote for a split of e3 (counted by hand)', () => withLecture((mesh) => {

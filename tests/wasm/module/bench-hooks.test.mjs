@@ -1,16 +1,20 @@
-// The benchmark and leak-test hooks live in their own entry (web/js/core/bench-hooks.js,
-// 'wingspline/bench-hooks'), outside the student API (issue 14, part 4): nothing reachable
-// from the module's exports, the api object, a built mesh or the values they return names
-// them. The hooks themselves still work, checked against independent recomputation.
+// The benchmark's entry points live in a module of their own (build/wasm/wingspline-core-bench,
+// core/bench/ + the bindings; its hooks in tests/bench/wasm/bench-core.mjs), outside the
+// shipped module and the student API: the shipped wasm holds none of their names, and
+// nothing reachable from the package's exports, the api object or a built mesh names them.
+// The hooks themselves still work, checked against independent recomputation.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as wingspline from 'wingspline';
 import { loadWingspline } from 'wingspline';
-import { benchHooks } from 'wingspline/bench-hooks';
+import fs from 'node:fs';
+import { loadBenchCore } from '../../bench/wasm/bench-core.mjs';
 
 const api = await loadWingspline();
 const HOOK_NAMES = ['benchBuildInCore', 'benchNormalsInCore', 'benchRingWalk', 'meshRingWalk', 'ringWalk',
-  'timeBuildInCore', 'timeNormalsInCore', 'benchHooks', 'benchAccess', 'benchEditInCore', 'timeEditInCore'];
+  'timeBuildInCore', 'timeNormalsInCore', 'benchHooks', 'benchAccess', 'meshInternals', 'benchEditInCore', 'timeEditInCore',
+  'benchSubdivideInCore', 'timeSubdivideInCore'];
+const bench = await loadBenchCore();
 
 // Every property name reachable from `root` through own properties and prototypes
 // (functions are not called; a mesh is inspected as an object).
@@ -46,8 +50,20 @@ test('the student API exposes no benchmark or leak-test hook', () => {
   }
 });
 
+test('the shipped module holds no benchmark entry point; the bench module holds them all', () => {
+  const shipped = fs.readFileSync(new URL('../../../dist/wasm/wingspline-core.wasm', import.meta.url)).toString('latin1');
+  const benchWasm = fs.readFileSync(new URL('../../../build/wasm/wingspline-core-bench.wasm', import.meta.url)).toString('latin1');
+  for (const name of ['benchBuildInCore', 'benchNormalsInCore', 'benchRingWalk', 'benchEditInCore', 'benchSubdivideInCore']) {
+    assert.ok(!shipped.includes(name), `the shipped module names ${name}`);
+    assert.ok(benchWasm.includes(name), `the bench module lacks ${name}`);
+  }
+  // the package exports the API only
+  const pkg = JSON.parse(fs.readFileSync(new URL('../../../package.json', import.meta.url), 'utf8'));
+  assert.deepEqual(Object.keys(pkg.exports), ['.']);
+});
+
 test('bench hooks: the ring walk visits 2E edges and sums the neighbours, counted from the edge table', () => {
-  const hooks = benchHooks(api);
+  const { api, hooks } = bench;
   for (const input of [api.generateMesh('sphere', { slices: 9, stacks: 5 }), api.generateMesh('grid', { nx: 4, ny: 3 })]) {
     const mesh = api.buildMesh(input);
     try {
@@ -65,7 +81,7 @@ test('bench hooks: the ring walk visits 2E edges and sums the neighbours, counte
 });
 
 test('bench hooks: the in-core timers time R repetitions and refuse what the API refuses', () => {
-  const hooks = benchHooks(api);
+  const { api, hooks } = bench;
   const cube = api.generateMesh('cube');
   const build = hooks.timeBuildInCore(cube, 3);
   assert.equal(build.seconds.length, 3);

@@ -27,11 +27,11 @@
 // the 50 cases would take well over ten minutes on these shared 2-core machines).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { loadWingspline } from 'wingspline';
-import { benchHooks } from 'wingspline/bench-hooks';
+import { loadBenchCore } from '../../bench/wasm/bench-core.mjs';
 
-const api = await loadWingspline();
-const hooks = benchHooks(api);
+// The bench module: the shipped module's bindings, compiled with the same flags, plus the
+// benchmark's hooks (two of the calls below); a leak in a binding shows in either.
+const { api, hooks } = await loadBenchCore();
 const FULL = 100000;
 const REDUCED = 5000;
 const WARM_UP = 200;

@@ -166,17 +166,13 @@ function readChange(r, descriptor) {
   };
 }
 
-// For bench-hooks.js only (benchAccess below): a live mesh's handle, read through the class's
-// private field, and the raw module of an api object (keyed on its buildMesh function,
-// which the api object shares with the object createMeshApi returns).
+// A live mesh's handle, read through the class's private field (subdivision below, and the
+// benchmark's hooks through meshInternals).
 let handleOfMesh;
-const rawOfBuildMesh = new WeakMap();
 
-// The mesh operations (docs/api-mesh.md, "Changing a mesh"): the op name the core knows
-// and the element kind each one names.
-const OPERATIONS = Object.freeze({
-  'set-vertex-edge': 'vertex',
-  'set-face-edge': 'face',
+const ADJACENCY_KINDS = Object.freeze({
+  'edges-around-vertex': 'vertex', 'faces-around-vertex': 'vertex', 'vertices-around-vertex': 'vertex',
+  'edges-of-face': 'face', 'vertices-of-face': 'face', 'face-neighbours': 'face', 'faces-of-edge': 'edge',
 });
 
 export class Mesh {
@@ -194,7 +190,7 @@ export class Mesh {
   #faces = { topology: -1, count: 0 }; // F, for the topology it was read at
 
   #descriptors; // every table's descriptor (the core's, read once per API)
-  #edits; // the Euler operations' descriptor (the core's, read once per API): see #edit
+  #edits; // the core's registry of operations (read once per API): see apply
 
   constructor(raw, handle, descriptors = [], edits = null) {
     this.#raw = raw;
@@ -269,6 +265,15 @@ export class Mesh {
     integerIn(offset, 'offset', 0, INT32_MAX);
     const r = unwrap(this.#raw.meshTables(this.#live(), representation, offset, limit));
     return Object.fromEntries(r.tables.map((data) => [data.name, readTable(findDescriptor(this.#descriptors, representation, data.name), data)]));
+  }
+
+  // One adjacency query by the core's name: 'edges-around-vertex', 'vertices-around-vertex',
+  // 'faces-around-vertex' (v); 'edges-of-face', 'vertices-of-face', 'face-neighbours' (f);
+  // 'faces-of-edge' (e). The registry names these as an argument's choices.
+  adjacency(kind, element) {
+    const what = ADJACENCY_KINDS[kind];
+    if (!what) fail('unknown-query', `unknown adjacency query ${JSON.stringify(String(kind)).slice(0, 40)}; use ${Object.keys(ADJACENCY_KINDS).join(', ')}`);
+    return this.#adjacency(kind, element, what);
   }
 
   edgesAroundVertex(v) { return this.#adjacency('edges-around-vertex', v, 'vertex'); }
@@ -400,73 +405,81 @@ export class Mesh {
   }
 
   // ---------------------------------------------------------------- changing the mesh
-  // Checked operations (docs/api-mesh.md, "Changing a mesh"): check<Op> changes nothing and
-  // returns {ok: true} or {ok: false, code, message}; <op> refuses the same way (throws a
-  // WingsplineError with that code, the mesh unchanged) or returns its change record
-  // {op, added, removed: {vertices, edges, faces}, rows: [{table, row, fields: [{field,
-  // before, after}]}], before, after: {topology, geometry}}.
-  #operation(op, element, edge, check) {
-    elementIndex(element, OPERATIONS[op]);
-    elementIndex(edge, 'edge');
-    const r = unwrap(this.#raw.meshOperation(this.#live(), op, element, edge, check));
-    if (check) return r.allowed ? { ok: true } : { ok: false, code: r.code, message: r.message };
-    this.#setVersion(r.after);
-    return {
-      op: r.op,
-      added: r.added,
-      removed: r.removed,
-      rows: r.rows,
-      before: { ...r.before },
-      after: { ...r.after },
-    };
-  }
-
-  // The vertex table stores one incident edge per vertex; store edge e for vertex v instead
-  // (e must touch v). The walk around v then starts at e.
-  checkSetVertexEdge(v, e) { return this.#operation('set-vertex-edge', v, e, true); }
-  setVertexEdge(v, e) { return this.#operation('set-vertex-edge', v, e, false); }
-  // The same for the face table: e must be a side of f; the walk along f starts at e.
-  checkSetFaceEdge(f, e) { return this.#operation('set-face-edge', f, e, true); }
-  setFaceEdge(f, e) { return this.#operation('set-face-edge', f, e, false); }
-
-  // One operation as the lesson state holds it: {op: 'set-vertex-edge', v, e},
-  // {op: 'set-face-edge', f, e}, or an Euler operation with its arguments by name
-  // ({op: 'split-edge', e, t}, {op: 'split-face', f, a, b}, ...: meshOperations()).
-  // Returns its change record.
-  // With {rewritten: true} an Euler operation's record also says how many stored entries
-  // each representation rewrote ({[representation]: entries}; O(mesh): both states of
-  // every representation are compared, so ask it for one edit, not for a replayed list).
-  apply(operation, { rewritten = false } = {}) {
-    const edit = operation !== null && typeof operation === 'object' ? this.#editNamed(operation.op, false) : null;
-    if (edit) return this.#edit(edit, edit.arguments.map((a) => operation[a.name]), false, rewritten);
-    if (operation === null || typeof operation !== 'object' || !Object.hasOwn(OPERATIONS, operation.op)) {
-      const names = [...Object.keys(OPERATIONS), ...this.#edits.operations.map((o) => o.name)];
-      fail('unknown-operation', `unknown mesh operation ${JSON.stringify(String(operation?.op)).slice(0, 60)}; use ${names.join(', ')}`);
-    }
-    return operation.op === 'set-vertex-edge' ? this.setVertexEdge(operation.v, operation.e) : this.setFaceEdge(operation.f, operation.e);
-  }
-
-  // ---------------------------------------------------------------- Euler operations
-  // Issue 15 (docs/api-mesh.md, "Editing the mesh"). Each returns its change record
-  // {op, added, removed: {vertices, edges, faces}, steps: [{table, row, field, before,
-  // after}] (every assignment in the algorithm's order), rows: [{table, row, fields:
+  // Every operation of the core's registry (meshOperations(), docs/api-mesh.md "Changing a
+  // mesh"), as the lesson state stores it: {op: 'flip-edge', e: 4}, {op: 'split-face', f, a,
+  // b}, {op: 'set-vertex-edge', v, e}, ... check(op) changes nothing and returns {ok: true}
+  // or {ok: false, code, message}; apply(op) refuses the same way (throws a WingsplineError
+  // with that code, the mesh unchanged) or returns its change record {op, added, removed:
+  // {vertices, edges, faces}, steps: [{table, row, field, before, after, phase}] (every
+  // assignment in the algorithm's order), phases (its lines), rows: [{table, row, fields:
   // [{field, before, after}]}] (per changed row), positions: [{vertex, before, after,
-  // step}], before, after: {topology, geometry}}, or throws the refusal (code, message),
-  // the mesh unchanged. New elements take the next numbers; removed ones stay as gaps
-  // (gaps()) until compact().
-  splitEdge(e, t = 0.5) { return this.#editByName('split-edge', [e, t]); }
-  splitFace(f, a, b) { return this.#editByName('split-face', [f, a, b]); }
-  joinFaces(e) { return this.#editByName('join-faces', [e]); }
-  flipEdge(e) { return this.#editByName('flip-edge', [e]); }
-  collapseEdge(e, t = 0.5) { return this.#editByName('collapse-edge', [e, t]); }
-  pokeFace(f) { return this.#editByName('poke-face', [f]); }
-
-  // Whether an operation may run, changing nothing: {ok: true} or {ok: false, code,
-  // message}. check('flip-edge', 4), check('split-face', f, a, b), check('set-vertex-edge', v, e).
-  check(op, ...args) {
-    if (Object.hasOwn(OPERATIONS, op)) return this.#operation(op, args[0], args[1], true);
-    return this.#edit(this.#editNamed(op, true), args, true);
+  // step}], before, after: {topology, geometry}}. New elements take the next numbers;
+  // removed ones stay as gaps (gaps()) until compact().
+  // With {rewritten: true} the record also says how many stored entries each
+  // representation rewrote ({[representation]: entries}; the others are compared whole,
+  // O(mesh), so ask it for one edit, not for a replayed list).
+  apply(operation, { rewritten = false } = {}) {
+    const [edit, values] = this.#operationValues(operation);
+    const r = unwrap(this.#raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), false, Boolean(rewritten)));
+    this.#setVersion(r.after);
+    return readChange(r, this.#edits);
   }
+
+  // check({op: 'flip-edge', e: 4}); the positional form check('flip-edge', 4) takes the
+  // arguments in the registry's order (check('split-face', f, a, b)).
+  check(operation, ...args) {
+    const [edit, values] = this.#operationValues(typeof operation === 'string' ? this.#positional(operation, args) : operation);
+    const r = unwrap(this.#raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), true, false));
+    return r.allowed ? { ok: true } : { ok: false, code: r.code, message: r.message };
+  }
+
+  #editNamed(name) {
+    const edit = this.#edits?.operations.find((o) => o.name === name);
+    if (!edit) {
+      const names = (this.#edits?.operations ?? []).map((o) => o.name);
+      fail('unknown-operation', `unknown mesh operation ${JSON.stringify(String(name)).slice(0, 60)}; use ${names.join(', ')}`);
+    }
+    return edit;
+  }
+
+  #positional(name, args) {
+    const edit = this.#editNamed(name);
+    return Object.fromEntries([['op', name], ...edit.arguments.map((a, k) => [a.name, args[k]]).filter(([, v]) => v !== undefined)]);
+  }
+
+  // The entry of an {op, ...} record and its arguments in the entry's order: an element
+  // index, or a finite number (its default when left out). Keys the entry does not take
+  // are refused, so a misspelt argument never goes unnoticed.
+  #operationValues(operation) {
+    if (operation === null || typeof operation !== 'object') fail('invalid-argument', 'an operation is an object such as {op: \'flip-edge\', e: 4}');
+    const edit = this.#editNamed(operation.op);
+    const names = edit.arguments.map((a) => a.name);
+    for (const key of Object.keys(operation)) {
+      if (key !== 'op' && !names.includes(key)) fail('invalid-argument', `${edit.name} takes ${names.join(', ')}; ${String(key).slice(0, 20)} is not one of them`);
+    }
+    const values = edit.arguments.map((a) => {
+      const v = operation[a.name] === undefined && a.optional ? a.default : operation[a.name];
+      if (v === undefined) fail('invalid-argument', `${edit.name} needs ${a.name}${a.label ? ` (${a.label})` : a.kind ? ` (a ${a.kind})` : ''}`);
+      if (a.kind) return elementIndex(v, a.kind);
+      if (typeof v !== 'number' || !Number.isFinite(v)) fail('invalid-argument', `${a.name} must be a finite number, not ${String(v).slice(0, 40)}`);
+      return v;
+    });
+    return [edit, values];
+  }
+
+  // Named methods for the operations that had them before every operation became a value
+  // of the registry: each is apply (or check) with the arguments in the registry's order.
+  // Operations added since (split-vertex, ...) are reached through apply({op, ...}) only.
+  setVertexEdge(v, e) { return this.apply({ op: 'set-vertex-edge', v, e }); }
+  checkSetVertexEdge(v, e) { return this.check({ op: 'set-vertex-edge', v, e }); }
+  setFaceEdge(f, e) { return this.apply({ op: 'set-face-edge', f, e }); }
+  checkSetFaceEdge(f, e) { return this.check({ op: 'set-face-edge', f, e }); }
+  splitEdge(e, t = 0.5) { return this.apply({ op: 'split-edge', e, t }); }
+  splitFace(f, a, b) { return this.apply({ op: 'split-face', f, a, b }); }
+  joinFaces(e) { return this.apply({ op: 'join-faces', e }); }
+  flipEdge(e) { return this.apply({ op: 'flip-edge', e }); }
+  collapseEdge(e, t = 0.5) { return this.apply({ op: 'collapse-edge', e, t }); }
+  pokeFace(f) { return this.apply({ op: 'poke-face', f }); }
 
   // Removes the gaps left by join-faces and collapse-edge: every table renumbered keeping
   // the order of what remains. Returns {vertices, edges, faces}: old index -> new (-1 = removed).
@@ -482,32 +495,6 @@ export class Mesh {
 
   // The gaps: {vertices, edges, faces}, the removed indices (Int32Array, increasing).
   gaps() { return unwrap(this.#raw.meshGaps(this.#live())); }
-
-  #editNamed(name, required) {
-    const edit = this.#edits?.operations.find((o) => o.name === name) ?? null;
-    if (!edit && required) {
-      const names = [...Object.keys(OPERATIONS), ...(this.#edits?.operations ?? []).map((o) => o.name)];
-      fail('unknown-operation', `unknown mesh operation ${JSON.stringify(String(name)).slice(0, 60)}; use ${names.join(', ')}`);
-    }
-    return edit;
-  }
-
-  #editByName(name, args) { return this.#edit(this.#editNamed(name, true), args, false); }
-
-  // Any Euler operation, read from its descriptor: the arguments in order (an element
-  // index, or a number with its default), then the core's check or operation.
-  #edit(edit, args, check, rewritten = false) {
-    const values = edit.arguments.map((a, k) => {
-      const v = args[k] === undefined && a.optional ? a.default : args[k];
-      if (a.kind) return elementIndex(v, a.kind);
-      if (typeof v !== 'number' || !Number.isFinite(v)) fail('invalid-argument', `${a.name} must be a finite number, not ${String(v).slice(0, 40)}`);
-      return v;
-    });
-    const r = unwrap(this.#raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), check, Boolean(rewritten)));
-    if (check) return r.allowed ? { ok: true } : { ok: false, code: r.code, message: r.message };
-    this.#setVersion(r.after);
-    return readChange(r, this.#edits);
-  }
 
   // Storage of each representation, from its real arrays: {[representation]: {entries,
   // bytes, arrays: [{name, entries, bytesPerEntry, bytes}]}}; an entry is one array element
@@ -550,14 +537,10 @@ export class Mesh {
   }
 }
 
-// The benchmark hooks' way in (web/js/core/bench-hooks.js); wingspline.js does not export
-// it and nothing on the api object reaches it.
-export const benchAccess = Object.freeze({
-  rawOf(api) {
-    const raw = rawOfBuildMesh.get(api?.buildMesh);
-    if (!raw) fail('invalid-argument', 'benchHooks needs the object loadWingspline() resolves to');
-    return raw;
-  },
+// For the benchmark's hooks (tests/bench/wasm/bench-core.mjs), which call the bench module's
+// own entry points on meshes this API built; wingspline.js does not export it and nothing
+// on the api object reaches it.
+export const meshInternals = Object.freeze({
   handleOf(mesh) {
     if (!(mesh instanceof Mesh)) fail('invalid-argument', 'expected a mesh built by buildMesh()');
     return handleOfMesh(mesh);
@@ -582,7 +565,7 @@ export function createMeshApi(raw) {
   const meshLimits = Object.freeze({ maxCoordinate, maxFaceCorners, maxVertices, maxFaces });
   // Every table's descriptor (core/src/mesh/tables.cpp), read once: see tables.js.
   const tableDescriptors = deepFreeze(unwrap(raw.meshTableDescriptors()).tables);
-  // The Euler operations and the change record's wire form (core/src/mesh/tables.cpp), read once.
+  // The operations' registry and the change record's wire form (core/src/mesh/euler_ops.cpp), read once.
   const ops = unwrap(raw.meshOperationDescriptors());
   const meshOperations = deepFreeze({
     operations: ops.operations, tables: ops.tables, fields: ops.fields, stepStride: ops.stepStride, positionStride: ops.positionStride,
@@ -655,9 +638,10 @@ export function createMeshApi(raw) {
     // The descriptors of every representation's tables (frozen): {representation, name,
     // title, rows: 'vertex'|'edge'|'face', arrays, columns}; read a table with tables.js.
     tableDescriptors,
-    // The Euler operations (frozen): {operations: [{name, method, arguments: [{name, kind:
-    // 'vertex'|'edge'|'face'|null (a number), optional, default}]}], tables, fields,
-    // stepStride, positionStride}: what mesh.apply({op, ...arguments}) accepts.
+    // The core's registry of operations (frozen): {operations: [{name, title, counts,
+    // shortcut, describe, arguments: [{name, kind: 'vertex'|'edge'|'face'|null (a number),
+    // optional, default, choices, label}]}], tables, fields, stepStride, positionStride}:
+    // what mesh.check(op) and mesh.apply(op) accept, one entry per operation.
     meshOperations,
     // Text -> {positions, faces}. Errors: 'parse-error', 'truncated-file',
     // 'index-out-of-range', 'coordinate-out-of-range', 'face-too-large', 'too-large' (more
@@ -735,6 +719,5 @@ export function createMeshApi(raw) {
     const { handle, scheme } = subdivisionArgs(mesh, options, 'limitPositions');
     return unwrap(raw.meshLimitPositions(handle, scheme)).positions;
   };
-  rawOfBuildMesh.set(meshApi.buildMesh, raw);
   return meshApi;
 }

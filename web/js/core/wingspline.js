@@ -3,11 +3,8 @@
 // page. It loads the wasm module once and returns a plain API object; the raw embind
 // names stay private to this folder.
 import createWingsplineCore from '../../wasm/wingspline-core.js';
-import { unwrap, WingsplineError } from './errors.js';
-import { createMeshApi } from './mesh-api.js';
-import { createCurvesApi } from './curves-api.js';
-import { createExerciseApi } from './exercise-api.js';
-import { createExerciseCurvesApi } from './exercise-curves-api.js';
+import { WingsplineError } from './errors.js';
+import { createApi } from './api.js';
 
 export { WingsplineError } from './errors.js';
 
@@ -74,23 +71,6 @@ async function instantiate() {
   // Emscripten 3.1.6's glue would call Node's fetch() on a file path; hand it the bytes.
   const { readFile } = await import('node:fs/promises');
   return createWingsplineCore({ wasmBinary: await readFile(WASM_URL) });
-}
-
-function createApi(raw) {
-  const version = raw.version();
-  return Object.freeze({
-    version,
-    // {linearBytes: size of the wasm memory, heapInUse: bytes malloc has handed out}; the
-    // leak tests of both cores watch heapInUse across thousands of calls.
-    memoryUsage() {
-      const { linearBytes, heapInUse } = unwrap(raw.memoryUsage());
-      return { linearBytes, heapInUse };
-    },
-    ...createMeshApi(raw),
-    ...createCurvesApi(raw),
-    ...createExerciseApi(raw),
-    ...createExerciseCurvesApi(raw),
-  });
 }
 
 // Resolves to the API object; every call after the first returns the same object.

@@ -143,6 +143,9 @@ public:
     // After winged.set_position(v, p): writes p into every stored copy (building first if
     // needed) and returns set_vertex_position's counts. The cache is then current again.
     std::array<int32_t, kRepresentationCount - 1> follow_position(const WingedEdgeMesh& winged, int32_t v, const glm::dvec3& p);
+    // The representations of `winged` as it is now, handed over: the cache is empty after it
+    // (an edit's cost compares them with the ones derived after the edit, without a copy).
+    std::unique_ptr<Representations> take(const WingedEdgeMesh& winged);
     bool built() const { return reps_ != nullptr; }
     // The version they were derived for (meaningful only when built()).
     MeshVersion version() const { return version_; }

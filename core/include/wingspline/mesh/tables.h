@@ -64,29 +64,6 @@ struct TableDescriptor {
 // lesson shows them (vertices, edges, faces).
 const std::vector<TableDescriptor>& table_descriptors();
 
-// ------------------------------------------------------------------ the Euler operations
-// Described once, like the tables (issue 15): each operation's name and arguments, and the
-// wire form of a change record's steps, so that JS checks, applies and reads every
-// operation by one generic path (web/js/core/mesh-api.js).
-struct OperationArgument {
-    const char* name;   // the key in an operation record, e.g. "e", "t"
-    ElementKind kind;   // the element it names; None: a number
-    double default_value = 0; // for an optional number
-    bool optional = false;
-};
-struct OperationDescriptor {
-    const char* name;   // "split-edge", ...
-    const char* method; // the JS method, "splitEdge", ...
-    std::vector<OperationArgument> arguments;
-};
-const std::vector<OperationDescriptor>& operation_descriptors();
-// A step crosses as five int32 [table, row, field, before, after]: table indexes
-// change_tables() ("vertex", "edge", "face"), field indexes change_fields() (the tables'
-// column names, plus "firstCorner": the corner face_set() lists a face from).
-const std::vector<const char*>& change_tables();
-const std::vector<const char*>& change_fields();
-int change_field_index(const std::string& field); // -1 if unknown
-
 // One array's live data (a view: valid until the mesh or its representations change).
 struct ArrayData {
     const double* f64 = nullptr;
@@ -117,6 +94,13 @@ std::vector<std::string> table_layout_problems(const TableData& table, int32_t v
 // entries only one state has, and a row only one state has counts whole. A removed
 // element's row keeps its old contents (a gap), so removing it rewrites nothing there.
 std::array<int64_t, kRepresentationCount> rewritten_entries(const WingedEdgeMesh& before, const Representations& before_reps,
+                                                            const WingedEdgeMesh& after, const Representations& after_reps);
+
+// The same for one operation, without the state before it: the winged edge's count read
+// from the operation's change record (the fields it rewrote, the coordinates it moved, the
+// whole rows it added; a removed row keeps its contents), the others compared as above
+// between their derivations before and after (O(mesh): they hold no change record).
+std::array<int64_t, kRepresentationCount> rewritten_entries(const ChangeRecord& change, const Representations& before_reps,
                                                             const WingedEdgeMesh& after, const Representations& after_reps);
 
 } // namespace wingspline::mesh

@@ -65,7 +65,7 @@ struct TraversalStep {
     int32_t next = kNone;  // read from start_left (at_start) or end_right
 };
 
-// Every vertex's ring walked once (BENCH.md mesh_ring): edges visited (2E on a mesh
+// Every vertex's ring walked once (docs/benchmarks.md mesh_ring): edges visited (2E on a mesh
 // without isolated vertices) and the sum of the neighbour indices met.
 static_assert(sizeof(EdgeRecord) == 8 * sizeof(int32_t), "the edge table crosses the boundary as 8 int32 per edge");
 
@@ -195,6 +195,14 @@ void keep_first_appearance(std::vector<int32_t>& v);
 
 class WingedEdgeMesh;
 
+// An operation as a value (operations.h): which entry of the registry, and its arguments in
+// the entry's order (element indices as numbers, then a parameter such as t).
+struct OperationEntry;
+struct Operation {
+    const OperationEntry* entry = nullptr;
+    std::array<double, 4> args{kNone, kNone, kNone, kNone};
+};
+
 // Building in steps (issue 17): exactly the phases of WingedEdgeMesh::build (which runs them
 // through this class in one go), one phase per step(), so a page can build a million-face
 // mesh without holding its main thread for the whole build (about 110 ms in wasm here).
@@ -259,63 +267,16 @@ public:
     // Which state of the mesh this is (see MeshVersion); a freshly built mesh is {0, 0}.
     MeshVersion version() const { return version_; }
 
-    // Checked mutators, in pmp-library's manner (is_flip_ok before flip): check_<op>()
-    // changes nothing and says whether <op> may run; <op>() calls it first and, if refused,
-    // throws Error(code, message) with the structure bit-identical. A successful <op>()
-    // returns its ChangeRecord and leaves validate() clean; docs/architecture.md, "The
-    // mesh's change model", lists the files an operation touches.
-    //
-    // set-vertex-edge: the vertex table stores one incident edge per vertex (lecture 000);
-    // choose another one. e must touch v. Reuses every element, creates none; changes one
-    // vertex-table row (field "edge"); the walk around v then starts at e. Choosing the
-    // edge already stored is accepted and changes nothing (no version change).
-    CheckResult check_set_vertex_edge(Vertex v, Edge e) const;
-    ChangeRecord set_vertex_edge(Vertex v, Edge e);
-    // set-face-edge: the same for the face table; e must be a side of f. The face set is
-    // unchanged (face_set() still lists f from the same first corner); the walk along f
-    // starts at e.
-    CheckResult check_set_face_edge(Face f, Edge e) const;
-    ChangeRecord set_face_edge(Face f, Edge e);
-
-    // ------------------------------------------------------- Euler operations (issue 15)
-    // euler_ops.cpp. Each check_<op> changes nothing; each <op> calls it and throws
-    // Error(code, message) with the structure bit-identical when it refuses, else returns
-    // the ChangeRecord with every assignment in order (steps), per-row before/after (rows),
-    // the elements added (next free numbers) and removed (left as marked gaps), and moves
-    // version().topology on by one (geometry too when a position was set). The
-    // <op>_unrecorded twins run the same code without recording (no strings, no
-    // allocations beyond the tables' own growth) and return false where <op> would refuse:
-    // the benchmarks use them. docs/api-mesh.md, "Changing a mesh", lists the refusals.
-    //
-    // split-edge: a new vertex on e at (1-t) S + t E (0 < t < 1); e keeps S -> new vertex,
-    // a new edge runs new vertex -> E; both faces gain a corner. V+1, E+1.
-    CheckResult check_split_edge(Edge e, double t = 0.5) const;
-    ChangeRecord split_edge(Edge e, double t = 0.5);
-    bool split_edge_unrecorded(Edge e, double t = 0.5);
-    // split-face: a new edge a -> b across f (a, b non-adjacent corners of f). f keeps the
-    // corners from b round to a, the new face (next number) those from a round to b. E+1, F+1.
-    CheckResult check_split_face(Face f, Vertex a, Vertex b) const;
-    ChangeRecord split_face(Face f, Vertex a, Vertex b);
-    bool split_face_unrecorded(Face f, Vertex a, Vertex b);
-    // join-faces: removes e and merges its two faces into the lower-numbered one. E-1, F-1.
-    CheckResult check_join_faces(Edge e) const;
-    ChangeRecord join_faces(Edge e);
-    bool join_faces_unrecorded(Edge e);
-    // flip-edge: e, shared by two triangles (S, E, c) and (E, S, d), becomes d -> c.
-    CheckResult check_flip_edge(Edge e) const;
-    ChangeRecord flip_edge(Edge e);
-    bool flip_edge_unrecorded(Edge e);
-    // collapse-edge: E is merged into S, which moves to (1-t) S + t E (0 <= t <= 1). A
-    // triangle on either side disappears with its edge at E. Removes e, E, and per triangle
-    // side one face and one edge. Refused unless the link condition holds.
-    CheckResult check_collapse_edge(Edge e, double t = 0.5) const;
-    ChangeRecord collapse_edge(Edge e, double t = 0.5);
-    bool collapse_edge_unrecorded(Edge e, double t = 0.5);
-    // poke-face: a new vertex at the centroid of f's corners, joined to each corner. f keeps
-    // the triangle on its stored edge; V+1, E+n, F+n-1 for an n-gon.
-    CheckResult check_poke_face(Face f) const;
-    ChangeRecord poke_face(Face f);
-    bool poke_face_unrecorded(Face f);
+    // Checked operations, in pmp-library's manner (is_flip_ok before flip), one generic
+    // pair for every operation of the registry (operations.h): check(op) changes nothing and
+    // says whether op may run; apply(op) calls it first and, if refused, throws
+    // Error(code, message) with the structure bit-identical. A successful apply returns the
+    // ChangeRecord (every assignment in order, per-row before/after, the elements added at
+    // the next free numbers and removed as marked gaps) and leaves validate() clean; the
+    // topology version moves on by one when anything changed (geometry too when a position
+    // was set). docs/api-mesh.md, "Changing a mesh", lists the operations and refusals.
+    CheckResult check(const Operation& op) const;
+    ChangeRecord apply(const Operation& op);
 
     // Room for this many elements in all, so that a run of operations does not reallocate.
     void reserve(int32_t vertices, int32_t edges, int32_t faces);
@@ -407,15 +368,10 @@ private:
     MeshVersion version_;
     std::vector<char> vertex_deleted_, edge_deleted_, face_deleted_; // see is_deleted()
 
-    template <class Recorder> void split_edge_impl(Edge e, double t, Recorder& rec);
-    template <class Recorder> void split_face_impl(Face f, const struct FaceSides& sides, Recorder& rec);
-    template <class Recorder> void join_faces_impl(Edge e, Recorder& rec);
-    template <class Recorder> void flip_edge_impl(Edge e, Recorder& rec);
-    template <class Recorder> void collapse_edge_impl(Edge e, double t, Recorder& rec);
-    template <class Recorder> void poke_face_impl(Face f, Recorder& rec);
     friend class WingedEdgeBuild;
-    friend struct EulerAccess;
-    friend struct EulerRows;
+    friend struct EulerAccess;  // euler_ops.cpp: the operations' checks,
+    friend struct EulerChanges; // their changes,
+    friend struct EulerRows;    // and the bookkeeping they share
     friend struct SubdivisionAccess; // subdivision.cpp builds a result's tables directly
 
     int32_t walk_start_corner(int32_t f) const {
@@ -423,13 +379,5 @@ private:
         return r.left == f ? r.start : r.end;
     }
 };
-
-// BENCH.md mesh_edit_flip: for every edge e with e % 3 == 0, in increasing order, flip it if
-// the check allows. Returns the number of flips made. Unrecorded (the benchmark path).
-int32_t flip_every_third_edge(WingedEdgeMesh& mesh);
-// BENCH.md mesh_edit_split: split every edge of the mesh as built (0 .. E-1, in order) at its
-// midpoint and split each triangle beside it from the new vertex to the opposite corner (as
-// OpenMesh's TriMesh split). Returns the number of edges split. Unrecorded.
-int32_t split_every_edge(WingedEdgeMesh& mesh);
 
 } // namespace wingspline::mesh

@@ -86,7 +86,7 @@ export function curveSpec(state) {
   }
 }
 
-// Default scenes. The Bezier cubic is BENCH.md's P0..P3 (z dropped).
+// Default scenes. The Bezier cubic is docs/benchmarks.md's P0..P3 (z dropped).
 export const defaultPoints = {
   hermite: [[0, 0], [2, 1.5], [4, 0]],
   bezier: [[0, 0], [1, 2], [3, 2], [4, 0]],

@@ -5,7 +5,7 @@
 // Edits go into state.ops (edit-ops.js withEdit), so undo, links and reload keep them.
 import { h } from '../../app/dom.js';
 import { createPlayer } from '../../app/player.js';
-import { EDIT_OPS, EDIT_OP, checkArgs, withEdit } from './edit-ops.js';
+import { editOps, withEdit } from './edit-ops.js';
 import { visibleSteps, stepText } from './edit-playback.js';
 import { vLabel, eLabel, fLabel } from './labels.js';
 import { exists, whyNot, goneNote, keptCorner } from './live-elements.js';
@@ -23,6 +23,9 @@ const REPRESENTATION_NAMES = {
 // selection: the view's {hover, pick}; pick({kind, index}) makes an element the picked one.
 export function createEditPanel(ctx, selection, { pick }) {
   const state = () => ctx.state;
+  // The operations of the core's registry that the panel offers, one button and key each.
+  const EDIT_OPS = editOps(ctx.api.meshOperations);
+  const EDIT_OP = Object.fromEntries(EDIT_OPS.map((o) => [o.op, o]));
   const kindSelect = h('select', { id: 'edit-kind', 'aria-label': 'Kind of element to edit' },
     h('option', { value: 'vertex' }, 'vertex'), h('option', { value: 'edge' }, 'edge'), h('option', { value: 'face' }, 'face'));
   const number = h('input', { type: 'number', id: 'edit-element', min: 1, step: 1, 'aria-label': 'Element number (1-based, as in the tables)' });
@@ -43,11 +46,14 @@ export function createEditPanel(ctx, selection, { pick }) {
   kindSelect.addEventListener('change', choose);
   number.addEventListener('change', choose);
 
-  const tInput = h('input', { type: 'range', id: 'edit-t', min: 0.1, max: 0.9, step: 0.05, 'aria-label': 'Parameter t along the edge (split and collapse)' });
+  const tInput = h('input', { type: 'range', id: 'edit-t', min: 0.1, max: 0.9, step: 0.05, 'aria-label': 'Parameter t (where a new or merged vertex lies)' });
   const tValue = h('output', { for: 'edit-t', id: 'edit-t-value' });
   tInput.addEventListener('input', () => ctx.commit({ ...state(), editT: Number(tInput.value) }, { history: false, recompute: false }));
-  const cornerA = h('select', { id: 'edit-corner-a', 'aria-label': 'First corner of the new edge' });
-  const cornerB = h('select', { id: 'edit-corner-b', 'aria-label': 'Second corner of the new edge' });
+  // The two elements an operation needs besides the picked one (split face: two corners of
+  // the face; split vertex: two neighbours of the vertex), offered from the registry's
+  // `choices` query of the picked element.
+  const cornerA = h('select', { id: 'edit-corner-a', 'aria-label': 'First choice' });
+  const cornerB = h('select', { id: 'edit-corner-b', 'aria-label': 'Second choice' });
   const corners = h('span', { class: 'edit-corners' }, h('label', {}, 'from ', cornerA), ' ', h('label', {}, 'to ', cornerB));
   for (const s of [cornerA, cornerB]) s.addEventListener('change', () => refreshButtons());
 
@@ -115,7 +121,7 @@ export function createEditPanel(ctx, selection, { pick }) {
     const operation = operationFor(op);
     const entry = EDIT_OP[op];
     if (!operation) return { ok: false, message: `pick ${entry.needs === 'edge' ? 'an edge' : `a ${entry.needs}`} first` };
-    return ctx.model.mesh.check(op, ...checkArgs(operation));
+    return ctx.model.mesh.check(operation);
   }
 
   function run(op) {
@@ -140,18 +146,21 @@ export function createEditPanel(ctx, selection, { pick }) {
       action: () => run(entry.op), when: () => selection.pick?.kind === entry.needs });
   }
 
-  // The corners of the picked face, read again when the mesh or the pick changes; a corner
-  // the person chose stays chosen while the face still has it.
+  // The choices for the picked element (the registry's query: the corners of a face, the
+  // neighbours of a vertex), read again when the mesh or the pick changes; a choice the
+  // person made stays while the element still offers it.
   let lastCornersKey = null;
   function refreshCorners(model) {
     const p = selection.pick;
-    const face = p?.kind === 'face' && exists(model, p);
-    corners.hidden = !face;
-    if (!face) { lastCornersKey = null; return; }
-    const key = `${model.topology}:${p.index}`;
+    const chooser = p && exists(model, p) ? EDIT_OPS.find((o) => o.needs === p.kind && o.choices.length === 2) : null;
+    corners.hidden = !chooser;
+    if (!chooser) { lastCornersKey = null; return; }
+    const key = `${model.topology}:${p.kind}:${p.index}`;
     if (key === lastCornersKey) return;
     lastCornersKey = key;
-    const list = Array.from(model.mesh.verticesOfFace(p.index));
+    cornerA.setAttribute('aria-label', `${chooser.label}: ${chooser.choices[0].label}`);
+    cornerB.setAttribute('aria-label', `${chooser.label}: ${chooser.choices[1].label}`);
+    const list = Array.from(model.mesh.adjacency(chooser.choices[0].choices, p.index));
     const options = () => list.map((v) => h('option', { value: String(v) }, vLabel(v)));
     const [a, b] = [Number(cornerA.value), Number(cornerB.value)];
     cornerA.replaceChildren(...options());

@@ -3,7 +3,7 @@
 // live, the winged-edge walks around a vertex and along a face animated as the slide tells
 // them, the representations' query costs and storage, and plane equations and normals.
 // The state is plain JSON (schema below); the model is what the core returned for it.
-import { number, integer, boolean, oneOf, text, list, object, nullable, viewSchema } from '../../app/schema.js';
+import { number, integer, boolean, oneOf, text, list, object, nullable, viewSchema, SchemaError } from '../../app/schema.js';
 import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
 import { importedMesh } from '../../app/imported-mesh.js';
 import { createMeshSource, cacheKeys, faceCsr, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
@@ -30,31 +30,37 @@ const MAX_IMPORT_FACES = MAX_MESH_FACES;
 const MAX_OPS = 1000;
 const elementIndex = integer({ min: 0, max: 10000000 });
 const opName = text({ maxLength: 40 });
-const parameter = number({ min: 0, max: 1 });
-const OP_SHAPES = {
-  'set-vertex-edge': object({ op: opName, v: elementIndex, e: elementIndex }),
-  'set-face-edge': object({ op: opName, f: elementIndex, e: elementIndex }),
-  // The Euler operations of issue 15 (edit-ops.js), with their arguments as the core names them.
-  'split-edge': object({ op: opName, e: elementIndex, t: parameter }),
-  'split-face': object({ op: opName, f: elementIndex, a: elementIndex, b: elementIndex }),
-  'join-faces': object({ op: opName, e: elementIndex }),
-  'flip-edge': object({ op: opName, e: elementIndex }),
-  'collapse-edge': object({ op: opName, e: elementIndex, t: parameter }),
-  'poke-face': object({ op: opName, f: elementIndex }),
+// An operation of the core's registry ({op: 'flip-edge', e: 4}, {op: 'split-face', f, a, b},
+// ...) is checked here for shape only: a name and up to four arguments, each a number.
+// Which names and values an operation takes is the core's (its registry and its check,
+// when the state is replayed; a refusal names the operation), so a new operation of the
+// core needs nothing here. The lesson's own steps have their shapes below.
+const argument = number({ min: 0, max: 10000000 });
+const coreOperation = (v, path) => {
+  if (v === null || typeof v !== 'object' || Array.isArray(v)) throw new SchemaError(path, 'must be an object such as {"op": "flip-edge", "e": 3}');
+  const keys = Object.keys(v);
+  if (keys.length > 5) throw new SchemaError(path, 'has more than four arguments');
+  /** @type {Record<string, any>} */
+  const out = { op: opName(v.op, `${path}.op`) };
+  for (const k of keys) {
+    if (k === 'op') continue;
+    if (!/^[a-z][A-Za-z]{0,15}$/.test(k)) throw new SchemaError(`${path}`, `has an argument named "${k.slice(0, 20)}", which no operation takes`);
+    out[k] = argument(v[k], `${path}.${k}`);
+  }
+  return out;
+};
+const LESSON_STEPS = {
   // A vertex moved before a later edit (edit-ops.js withEdit), and the renumbering step.
   'move-vertex': object({ op: opName, v: elementIndex, p: list(number(), { min: 3, max: 3 }) }),
   compact: object({ op: opName }),
 };
-const operation = (v, path) => {
-  const op = oneOf(...Object.keys(OP_SHAPES))(v?.op, `${path}.op`);
-  return OP_SHAPES[op](v, path);
-};
+const operation = (v, path) => (Object.hasOwn(LESSON_STEPS, v?.op) ? LESSON_STEPS[v.op](v, path) : coreOperation(v, path));
 
 const schema = {
   meshKind: oneOf(...MESH_KINDS.map((k) => k.id)),
   fanSize: integer({ min: 1, max: 64 }),
   grid: object({ nx: integer({ min: 1, max: 400 }), ny: integer({ min: 1, max: 400 }) }),
-  // Up to BENCH.md's sphere_1000000 (1000 x 501) and a little more: the GPU draws it (issue 17).
+  // Up to docs/benchmarks.md's sphere_1000000 (1000 x 501) and a little more: the GPU draws it (issue 17).
   sphere: object({ slices: integer({ min: 3, max: 1000 }), stacks: integer({ min: 3, max: 600 }) }),
   // Either form of app/imported-mesh.js (flat since issue 17; faces: older states and links).
   imported: nullable(importedMesh({ maxVertices: MAX_IMPORT_VERTICES, maxFaces: MAX_IMPORT_FACES, maxCorners: MAX_FACE_CORNERS })),

@@ -4,6 +4,7 @@
 // like for like. Reached only through web/js/core/bench-hooks.js, never from the student
 // API (tests/wasm/module/bench-hooks.test.mjs).
 #include "boundary.h"
+#include "edit_tasks.h"
 #include "mesh_access.h"
 
 #include "wingspline/mesh/indexed_mesh.h"
@@ -55,7 +56,7 @@ val bench_normals_in_core(int32_t handle, int32_t repetitions) {
     });
 }
 
-// Walks every vertex ring (BENCH.md mesh_ring): {visited, checksum}.
+// Walks every vertex ring (docs/benchmarks.md mesh_ring): {visited, checksum}.
 val bench_ring_walk(int32_t handle) {
     return guarded([&] {
         const RingWalkTotals totals = winged_of_handle(handle).walk_every_ring();
@@ -66,14 +67,14 @@ val bench_ring_walk(int32_t handle) {
     });
 }
 
-// BENCH.md mesh_edit_flip / mesh_edit_split inside the module: each repetition edits a fresh
+// docs/benchmarks.md mesh_edit_flip / mesh_edit_split inside the module: each repetition edits a fresh
 // copy of the built mesh (the copy is not timed), as the native benchmark does.
 val bench_edit_in_core(int32_t handle, const std::string& task, int32_t repetitions) {
     return guarded([&] {
         const WingedEdgeMesh& built = winged_of_handle(handle);
         if (task != "mesh_edit_flip" && task != "mesh_edit_split")
             throw Error("unknown-task", "benchEditInCore times mesh_edit_flip or mesh_edit_split");
-        int32_t (*edit)(WingedEdgeMesh&) = task == "mesh_edit_flip" ? &flip_every_third_edge : &split_every_edge;
+        int32_t (*edit)(WingedEdgeMesh&) = task == "mesh_edit_flip" ? &bench::flip_every_third_edge : &bench::split_every_edge;
         std::vector<double> seconds;
         double checksum = 0;
         for (int32_t i = 0; i < repetitions; ++i) {
@@ -91,7 +92,7 @@ val bench_edit_in_core(int32_t handle, const std::string& task, int32_t repetiti
     });
 }
 
-// BENCH.md mesh_subdivide_loop / mesh_subdivide_cc inside the module (issue 16): one step
+// docs/benchmarks.md mesh_subdivide_loop / mesh_subdivide_cc inside the module (issue 16): one step
 // from the built mesh to the new winged edge with positions, R times; the bench limits
 // (kUnlimitedCounts), not the page's. Also the result's own bytes and the heap growth while
 // one result is held (malloc's count, as api.memoryUsage().heapInUse).
