@@ -1,3 +1,4 @@
+// @ts-check
 // A classic (non-module) script: it still runs from file://, where Chrome refuses module
 // scripts, so the page can say how to serve the site instead of hanging at "loading".
 (function () {

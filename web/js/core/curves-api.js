@@ -1,3 +1,4 @@
+// @ts-check
 // Curves part of the API (issue 5); documented in docs/api-curves.md.
 // Plain values in, typed arrays out, one wasm call per curve batch (never per point).
 // Every curve is a plain object:
@@ -161,15 +162,18 @@ export function createCurvesApi(raw) {
     // Points of the curve: Float64Array, values[dim*j + k] for params[j].
     // options.out: a Float64Array of length dim * params.length to fill instead of
     // allocating a new one (a lesson redrawing on every pointer move reuses its buffer).
+    /** @param {object} curve @param {ArrayLike<number>} params @param {{ out?: Float64Array }} [options] */
     evaluateCurve(curve, params, { out } = {}) {
       return evaluate(curve, params, 0, false, out);
     },
     // The derivative of `order` (1 = tangent vector P'(u), 2 = P''(u)); same layout and options.
+    /** @param {object} curve @param {ArrayLike<number>} params @param {number} [order] @param {{ out?: Float64Array }} [options] */
     evaluateDerivative(curve, params, order = 1, { out } = {}) {
       return evaluate(curve, params, derivativeOrder(order), false, out);
     },
     // Point and derivatives 1..maxOrder in one pass:
     // values[(maxOrder+1)*dim*j + dim*k + c] is component c of the k-th derivative at params[j].
+    /** @param {object} curve @param {ArrayLike<number>} params @param {number} [maxOrder] @param {{ out?: Float64Array }} [options] */
     evaluateWithDerivatives(curve, params, maxOrder = 1, { out } = {}) {
       return evaluate(curve, params, derivativeOrder(maxOrder), true, out);
     },
@@ -353,6 +357,7 @@ export function createCurvesApi(raw) {
     },
     // The conic arc from p0 to p2 with tangents towards p1 and middle weight w:
     // { curve, conicType: 'ellipse' (w < 1) | 'parabola' (w = 1) | 'hyperbola' (w > 1) }.
+    /** @param {{ p0?: ArrayLike<number>, p1?: ArrayLike<number>, p2?: ArrayLike<number>, weight?: number, dim?: number }} [options] */
     nurbsConic({ p0, p1, p2, weight = Math.SQRT1_2, dim = p0?.length } = {}) {
       const r = unwrap(raw.nurbsPreset('conic', numbers(p0, 'p0'), numbers(p1, 'p1'), numbers(p2, 'p2'), dimension(dim),
         Float64Array.of(finiteNumber(weight, 'weight'))));
@@ -444,6 +449,7 @@ export function createCurvesApi(raw) {
     // tangent vector; maps[s] is segment s's 4 x slots matrix (row-major: weight of slot j in
     // geometry row r at maps[s][slots*r + j]). -> {parametric, geometric, joints, interpolated}:
     // the weakest C^k / G^k over the joints and the slots every curve passes through.
+    /** @param {{ basis?: string, slots?: number, maps?: ArrayLike<number>[], isPoint?: ArrayLike<boolean> }} [options] */
     chainGuarantees({ basis, slots, maps, isPoint } = {}) {
       cubicBasis(basis, 'basis');
       wholeNumber(slots, 'slots', 1, 4096);
@@ -455,17 +461,19 @@ export function createCurvesApi(raw) {
         flat.set(rows, 4 * slots * s);
       });
       if (!Array.isArray(isPoint) || isPoint.length !== slots) fail('invalid-argument', `isPoint needs one true/false per slot (${slots})`);
-      return guaranteesOut(unwrap(raw.chainGuarantees(basis, slots, flat, Int32Array.from(isPoint, Boolean))));
+      return guaranteesOut(unwrap(raw.chainGuarantees(basis, slots, flat, Int32Array.from(isPoint, (v) => (v ? 1 : 0)))));
     },
     // A B-spline's guarantees from its knots: C^k at the weakest interior knot (p - m for a knot
     // of multiplicity m, computed from the basis functions' derivatives) and the control points
     // whose basis function reaches 1 (interpolated for every polygon).
+    /** @param {{ knots?: ArrayLike<number>, degree?: number, count?: number }} [options] */
     bsplineGuarantees({ knots, degree = 3, count } = {}) {
       wholeNumber(degree, 'degree', 1, 20);
       wholeNumber(count, 'count', 1, 1_000_000);
       return guaranteesOut(unwrap(raw.bsplineGuarantees(numbers(knots, 'knots'), degree, count)));
     },
 
+    /** @param {{ kind?: string, points?: ArrayLike<number>, nu?: number, nv?: number }} [options] */
     samplePatch({ kind, points, nu = 16, nv = 16 } = {}) {
       patchKind(kind);
       wholeNumber(nu, 'nu', 2, 4096);
@@ -541,12 +549,14 @@ export function createCurvesApi(raw) {
     },
     // Bicubic patches (samplePatch's nets): the corners p(0,0), p(0,1), p(1,0), p(1,1) against
     // the net entries holding them: { corners: [{ entry, distance, interpolated }], tolerance }.
+    /** @param {{ kind?: string, points?: ArrayLike<number> }} [options] */
     patchCornerCheck({ kind, points } = {}) {
       const r = unwrap(raw.patchCornerCheck(patchKind(kind), numbers(points, 'points')));
       return { corners: Array.from(r.corners, (c) => ({ entry: c.entry, distance: c.distance, interpolated: c.interpolated })), tolerance: r.tolerance };
     },
     // Patch a's u = 1 edge against patch b's u = 0 edge at `samples` values of v:
     // { positionGap, duGap, c0, c1, tolerance }.
+    /** @param {{ kind?: string, a?: ArrayLike<number>, b?: ArrayLike<number>, samples?: number }} [options] */
     patchJoinCheck({ kind, a, b, samples = 17 } = {}) {
       return pick(unwrap(raw.patchJoinCheck(patchKind(kind), numbers(a, 'a'), numbers(b, 'b'), sampleCount(samples))),
         ['positionGap', 'duGap', 'c0', 'c1', 'tolerance']);
@@ -576,6 +586,7 @@ export function createCurvesApi(raw) {
   // Subdivision of a control polygon (issue 16, docs/api-curves.md "Subdivision"): 'chaikin'
   // (corner cutting -> the uniform quadratic B-spline) or 'cubic-bspline' (Lane-Riesenfeld
   // -> the uniform cubic B-spline), open or closed, `steps` times: Float64Array, dim per point.
+  /** @param {ArrayLike<number>} points @param {number} dim @param {{ scheme?: string, closed?: boolean, steps?: number }} [options] */
   api.subdivideCurve = (points, dim, { scheme, closed = false, steps = 1 } = {}) => {
     if (typeof scheme !== 'string') fail('unknown-scheme', "subdivideCurve needs a scheme: 'chaikin' or 'cubic-bspline'");
     if (typeof closed !== 'boolean') fail('invalid-argument', 'closed must be true or false');

@@ -1,3 +1,4 @@
+// @ts-check
 // Errors from the core arrive as plain {ok:false, code, message} values; this module turns
 // them into Error objects with a stable `code`, and checks arguments before they reach
 // embind (which would silently turn a string into NaN).

@@ -1,3 +1,4 @@
+// @ts-check
 // Exercise part of the API for curves (issue 19, kinds 3, 4 and 5; docs/api-curves.md,
 // "Exercises: joints, values, properties"): classify a joint and say why, compute a value by
 // hand, move points until a property holds. This module checks types and names the field;

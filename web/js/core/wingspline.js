@@ -1,7 +1,10 @@
+// @ts-check
+/// <reference types="node" />
 // The one JavaScript entry to the Wingspline core: `import { loadWingspline } from
 // 'wingspline'` in Node, `import { loadWingspline } from './js/core/wingspline.js'` in a
 // page. It loads the wasm module once and returns a plain API object; the raw embind
-// names stay private to this folder.
+// names stay private to this folder. It runs in Node too (the reference above declares
+// `process` and `node:fs/promises` for the type check).
 import createWingsplineCore from '../../wasm/wingspline-core.js';
 import { WingsplineError } from './errors.js';
 import { createApi } from './api.js';

@@ -1,3 +1,4 @@
+// @ts-check
 // The landing page: the lesson list (from the registry) and a live check of the core.
 import { lessons } from '../lessons/registry.js';
 import { loadWingspline } from '../core/wingspline.js';
@@ -36,7 +37,7 @@ function showLessons() {
 }
 
 async function showCore() {
-  const status = document.querySelector('[data-core-status]');
+  const status = /** @type {HTMLElement} */ (document.querySelector('[data-core-status]'));
   const proof = document.getElementById('core-proof');
   try {
     const api = await loadWingspline();

@@ -1,3 +1,4 @@
+// @ts-check
 // The blending functions (lectures 000, 001: B = M T; lecture 002: Cox-de Boor N_i,p) of
 // a curve, plotted over its parameter domain, each in the colour of its control point and
 // labelled, with the same u cursor as the curve. Reusable: the continuity, comparison and
@@ -51,6 +52,7 @@ export function createBlendingPlot(container, { label = 'Blending functions', he
     const g = surface.begin(colors.background);
     const { height: hgt } = surface.size;
     const scale = data.present ? 1.5 : 1;
+    /** @type {import('./plot-canvas.js').PlotLabels} */
     const labels = plotLabels(g, surface.canvas, surface.size.width, hgt);
     PAD = padFor(plotFontPx());
     const [lo, hi] = range();

@@ -1,3 +1,4 @@
+// @ts-check
 // Curve drawing pieces for any painter (canvas or SVG, web/js/app/painter.js): the curve,
 // the curve tinted by one control point's influence, the control polygon, convex hulls,
 // derivative vectors, the curvature comb, knot and joint marks, sample points, and the

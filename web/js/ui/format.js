@@ -1,3 +1,4 @@
+// @ts-check
 // Number formats shared by the lesson panels and plots (on top of mathml.js formatNumber).
 import { formatNumber } from './mathml.js';
 

@@ -1,3 +1,4 @@
+// @ts-check
 // MathML built with DOM calls (never from strings), so numbers and names are always text.
 const NS = 'http://www.w3.org/1998/Math/MathML';
 

@@ -1,3 +1,4 @@
+// @ts-check
 // Issue 18: the three ways the lectures write a basis matrix, as a choice a lesson offers
 // (state field `form`) and the words for it. The matrices themselves come from the core
 // (api.segmentMatrices(curve, i, { form }).shown, api.basisMatrixRational(kind, form)).

@@ -1,3 +1,4 @@
+// @ts-check
 // The matrix form of one curve segment as MathML, with the numbers the core multiplies
 // with (STYLE.md 12: the matrix shown is the matrix used), in the form a lecture writes it
 // (issue 18; the core gives M, G, C in that form, segmentMatrices(..., { form }).shown):

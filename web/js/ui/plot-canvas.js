@@ -1,3 +1,4 @@
+// @ts-check
 // A small helper canvas for the curve lessons' secondary plots (blending functions, knot
 // strip, homogeneous inset): device-pixel sizing, a redraw on resize, and the pointer
 // position in CSS pixels. Drawing stays with the owner; this only manages the surface.
@@ -39,6 +40,17 @@ export function createPlotCanvas(container, { className, label, height, tabIndex
     },
   };
 }
+
+/**
+ * A side plot's labels (app/label-layout.js `plotLabels`): text() asks for a label at (x, y)
+ * in CSS pixels, draw() places and paints them all after the plot's lines. A plot declares
+ * its labels with this type: the style's `fill` (the text colour) is read by plotLabels but
+ * not visible in the type inferred from its destructured options.
+ * @typedef {{ px: number,
+ *   text(string: string, x: number, y: number, style?: { fill?: string, align?: string, baseline?: string,
+ *     dx?: number, dy?: number, weight?: number, priority?: number, fixed?: boolean, halo?: string, px?: number }): void,
+ *   draw(): unknown[] }} PlotLabels
+ */
 
 // Dash patterns so that curves differ by more than colour (index i -> a pattern).
 export const DASHES = [[], [8, 4], [2, 3], [10, 3, 2, 3], [5, 5], [1, 4], [12, 2], [6, 2, 1, 2]];

@@ -1,3 +1,4 @@
+// @ts-check
 // A small function plot for the side panels: one or more series over a shared parameter
 // axis, drawn piece by piece so a jump at a joint stays a visible gap (a smooth-looking
 // polyline across the joint would hide exactly what the continuity lesson teaches).
@@ -60,6 +61,7 @@ export function drawSeriesPlot(canvas, { series, marks = [], cursor = null, yLab
   [vMin, vMax] = niceRange(Math.min(vMin, 0), vMax);
   if (nonNegative) { vMin = 0; vMax = Math.max(vMax, 1e-12); }
   const PAD = padFor(plotFontPx());
+  /** @type {import('./plot-canvas.js').PlotLabels} */
   const labels = plotLabels(g, canvas, width, height);
   const plotW = width - PAD.left - PAD.right;
   const plotH = height - PAD.top - PAD.bottom;

@@ -1,3 +1,4 @@
+// @ts-check
 // A table that stays fast for 100,000 rows: up to FULL_ROWS rows it is an ordinary table;
 // beyond that only the rows in the scrolled window (plus a margin) exist in the DOM, with
 // spacer rows above and below so the scroll bar is true to the whole table. Cells are

@@ -1,3 +1,4 @@
+// @ts-check
 // The comparison tables of lectures 001 and 003. A cell states a guarantee of the
 // representation, so it is checked for EVERY polygon (issue 13 item 8): the core's
 // structural argument on the family's construction (continuity and interpolation from the

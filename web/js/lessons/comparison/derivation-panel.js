@@ -1,3 +1,4 @@
+// @ts-check
 // Issue 18: the derivation of each cubic family's matrix, computed by the core in exact
 // fractions (api.cubicDerivation), with live numbers from the first segment P0..P3 of the
 // lab's polygon (the lecture's P1..P4): Hermite's constraints and M_H = C^-1; Bezier from

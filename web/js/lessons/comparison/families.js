@@ -1,3 +1,4 @@
+// @ts-check
 // The four families of lecture 003's table built on one control polygon P0..P(K-1), as
 // curve objects of the core API. Only control data is arranged here; every point on every
 // curve comes from the core.

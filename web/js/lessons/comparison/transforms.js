@@ -1,3 +1,4 @@
+// @ts-check
 // Basis conversion (lecture 002: q = M^-1 M_B P) and invariance (lecture 001 "Invariance")
 // on the current polygon. The maps applied to points are the experiment's input; the
 // curves before and after are evaluated, mapped and compared by the core.

@@ -1,3 +1,4 @@
+// @ts-check
 // Constraint modes while dragging (lecture 001 "Achieving Continuity", lecture 002 "C^n and
 // G^n"). The piecewise curve is stored as 4 entries per segment: Bezier P0..P3, or Hermite
 // p0, p1 and the tangent vectors t0, t1. The core moves the points (api.dragWithConstraint,

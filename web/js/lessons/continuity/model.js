@@ -1,3 +1,4 @@
+// @ts-check
 // Everything the continuity lab computes, through the core: the segments as curve objects,
 // samples with first and second derivatives and curvature along the whole curve, and the
 // core's classification of every joint (api.jointContinuity) with its evidence.

@@ -1,3 +1,4 @@
+// @ts-check
 import { runLesson } from '../../app/shell.js';
 import { lesson } from './lesson.js';
 

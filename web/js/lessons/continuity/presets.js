@@ -1,3 +1,4 @@
+// @ts-check
 // Named starting pictures, each built so the lecture predicts the answer at its joint
 // (lecture 001 "Geometric/Parametric Continuity", lecture 004's Q1-Q2 / Q1-Q3 figure).
 // Bezier and Hermite: 4 entries per segment. B-spline and Catmull-Rom: shared points.

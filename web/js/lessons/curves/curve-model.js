@@ -1,3 +1,4 @@
+// @ts-check
 // compute(): every number the curve explorer shows comes from the wasm core through this
 // module (the lesson's `compute`). The result is a plain model the drawing and the panels
 // read; nothing here draws. One core call per curve and purpose (batch API): the samples,

@@ -1,3 +1,4 @@
+// @ts-check
 // The curve families of lectures 000-004 as the lesson's state knows them, and the
 // bookkeeping that keeps a state consistent when the family, the degree or the number of
 // points changes (knot count K + p + 1, one weight and one tangent per point). No curve

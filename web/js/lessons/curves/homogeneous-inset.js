@@ -1,3 +1,4 @@
+// @ts-check
 // The homogeneous view of a NURBS (lectures 001, 002): the control points lifted to
 // (w x, w y, w), the polynomial B-spline through them in 3D, and its central projection
 // to the plane w = 1, which is the rational curve. A small oblique view: x to the right,
@@ -26,6 +27,7 @@ export function createHomogeneousInset(container) {
     const { width, height } = surface.size;
     // Fit: all lifted points, projected points and the origin.
     const all = [[0, 0, 0], ...data.lifted, ...data.projected.map(([x, y]) => [x, y, 1])];
+    /** @type {(p: number[]) => number[]} the oblique drawing of (x, y, w) before the fit */
     const raw = ([x, y, w]) => [x + DEPTH[0] * y, -(w * wScale) + DEPTH[1] * y];
     let span = 0;
     for (const [x, y] of data.projected) span = Math.max(span, Math.abs(x), Math.abs(y));
@@ -36,6 +38,7 @@ export function createHomogeneousInset(container) {
       minX = Math.min(minX, sx); maxX = Math.max(maxX, sx); minY = Math.min(minY, sy); maxY = Math.max(maxY, sy);
     }
     const zoom = Math.min((width - 30) / (maxX - minX || 1), (height - 30) / (maxY - minY || 1));
+    /** @type {(p: number[]) => [number, number]} the screen point of a lifted (x, y, w) */
     const S = (p) => { const [sx, sy] = raw(p); return [15 + (sx - minX) * zoom, 15 + (sy - minY) * zoom]; };
     const line = (a, b, style) => {
       const [x0, y0] = S(a); const [x1, y1] = S(b);
@@ -57,6 +60,7 @@ export function createHomogeneousInset(container) {
     line([0, 0, 0], [ext, 0, 0], { stroke: colors.muted });
     line([0, 0, 0], [0, ext, 0], { stroke: colors.muted });
     line([0, 0, 0], [0, 0, 1.6], { stroke: colors.muted });
+    /** @type {import('../../ui/plot-canvas.js').PlotLabels} */
     const labels = plotLabels(g, surface.canvas, width, height);
     labels.text('w', ...S([0, 0, 1.65]), { fill: colors.muted, priority: 1, halo: colors.background });
     labels.text('w = 1', ...S([-0.1 * ext, 0, 1]), { fill: colors.muted, halo: colors.background });

@@ -1,3 +1,4 @@
+// @ts-check
 // The knot strip of a B-spline (lecture 002: knots, multiplicity, open/clamped vectors):
 // every knot t_j as a marker on a line, repeated knots stacked with "×m", the continuity
 // C^(p-m) written above each distinct knot, the domain [t_p, t_K] shaded, the u cursor.
@@ -20,6 +21,11 @@ const axisFor = (height) => Math.round(height - plotFontPx() * 1.25 - 16);
 const STACK_PX = 11;
 const HIT_PX = 12;
 
+/**
+ * @param {HTMLElement} container
+ * @param {{ onChange?: (knots: number[] | null, change: { final: boolean }) => void, label?: string }} [options]
+ *   knots: the whole knot vector after a move, null when a drag ends
+ */
 export function createKnotStrip(container, { onChange, label = 'Knot strip' } = {}) {
   const surface = createPlotCanvas(container, { className: 'knot-strip', label, height: 96, tabIndex: 0, role: 'application' });
   let AXIS_Y = axisFor(96); // set from the strip's height at every draw
@@ -58,6 +64,7 @@ export function createKnotStrip(container, { onChange, label = 'Knot strip' } = 
     const g = surface.begin(colors.background);
     const w = surface.size.width;
     AXIS_Y = axisFor(surface.size.height);
+    /** @type {import('../../ui/plot-canvas.js').PlotLabels} */
     const labels = plotLabels(g, surface.canvas, w, surface.size.height);
     // domain
     g.fillStyle = colors.grid;

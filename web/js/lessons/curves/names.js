@@ -1,3 +1,4 @@
+// @ts-check
 // What the curve explorer calls things: its overlays and constructions, and the names of
 // the blending functions (shared by the drawing, the panels and the CSV export).
 import { isSpline } from './families.js';

@@ -1,3 +1,4 @@
+// @ts-check
 // The curve explorer's controls and panels: family, degree, tension, the u slider with
 // play, the blending plot and knot strip under the drawing; the matrix panel, the
 // constructions, overlays, the numeric inspector, knots, weights and the homogeneous view

@@ -1,3 +1,4 @@
+// @ts-check
 // The geometry of the patches (lecture 002) as the lesson stores it, and where its handles
 // sit. A net is 16 entries [x, y, z], entry 4i + j = row i, column j of the 4x4 geometry
 // matrix P of p(u, v) = u^T M P M^T v:

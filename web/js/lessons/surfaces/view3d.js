@@ -1,3 +1,4 @@
+// @ts-check
 // The camera of the surface lesson: a turntable view of a z-up scene (yaw about z, then a
 // pitch towards looking down), orthographic or with a simple perspective divide. It maps
 // 3D points the core returned to the 2D world of the stage, and a 2D drag back to a move
