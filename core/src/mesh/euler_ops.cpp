@@ -46,6 +46,7 @@ struct VertexFan {
     int32_t v = kNone, a = kNone, b = kNone, ea = kNone, eb = kNone;
     Half out_a, out_b;
     std::vector<int32_t> moved;
+    std::vector<int32_t> faces; // the faces (kNone: the boundary) between v-a and v-b, which get w for v
     glm::dvec3 centre{0.0};
 };
 
@@ -53,16 +54,17 @@ namespace {
 
 // Records nothing: every call is empty and inlined away (the benchmark path).
 struct NoRecorder {
-    bool moved = false; // a position was set (the geometry version moves on)
-    void step(MeshTable, int32_t, const char*, int32_t, int32_t) {}
+    bool moved = false;   // a position was set (the geometry version moves on)
+    bool changed = false; // anything was (the topology version moves on)
+    void step(MeshTable, int32_t, const char*, int32_t, int32_t) { changed = true; }
     void phase(const char*) {}
-    void position(int32_t, const glm::dvec3&, const glm::dvec3&) { moved = true; }
-    void added(Vertex) {}
-    void added(Edge) {}
-    void added(Face) {}
-    void removed(Vertex) {}
-    void removed(Edge) {}
-    void removed(Face) {}
+    void position(int32_t, const glm::dvec3&, const glm::dvec3&) { moved = changed = true; }
+    void added(Vertex) { changed = true; }
+    void added(Edge) { changed = true; }
+    void added(Face) { changed = true; }
+    void removed(Vertex) { changed = true; }
+    void removed(Edge) { changed = true; }
+    void removed(Face) { changed = true; }
 };
 
 // Writes every assignment, position and element into a ChangeRecord.
@@ -440,9 +442,11 @@ struct EulerAccess {
             fan->v = v.idx, fan->a = a.idx, fan->b = b.idx, fan->ea = ea, fan->eb = eb;
             fan->out_a = leaving(m, ea, v.idx), fan->out_b = leaving(m, eb, v.idx);
             fan->moved.clear();
+            fan->faces.assign(1, face(m, fan->out_a));
             glm::dvec3 sum = m.position(a.idx) + m.position(b.idx);
             for (int32_t x = m.next_ccw(ea, v.idx); x != eb; x = m.next_ccw(x, v.idx)) {
                 fan->moved.push_back(x);
+                fan->faces.push_back(face(m, leaving(m, x, v.idx)));
                 sum += m.position(m.other_vertex(x, v.idx));
             }
             fan->centre = sum / static_cast<double>(fan->moved.size() + 2);
@@ -680,7 +684,7 @@ struct EulerRows {
     template <class Change> static void run_unrecorded(WingedEdgeMesh& m, Change change_of) {
         NoRecorder rec;
         change_of(rec);
-        ++m.version_.topology;
+        if (rec.changed) ++m.version_.topology;
         if (rec.moved) ++m.version_.geometry;
     }
     template <class R> static void set_position(WingedEdgeMesh& m, int32_t v, const glm::dvec3& p, R& rec) {
@@ -1056,7 +1060,8 @@ template <class R> static void change_poke_face(WingedEdgeMesh& m, Face f_, R& r
         if (Fb != kNone && m.face_edge_[Fb] == eb) w.set_face_edge(Fb, q);
         w.set_face_edge(Ta, e);
         w.set_face_edge(Tb, e);
-        for (const int32_t f : {Fa, Fb, Ta, Tb}) Rows::keep_first_corner(m, f, rec);
+        for (const int32_t f : fan.faces) Rows::keep_first_corner(m, f, rec);
+        for (const int32_t f : {Ta, Tb}) Rows::keep_first_corner(m, f, rec);
     }
 
     // ------------------------------------------------------------------ the stored edges
