@@ -1,4 +1,4 @@
-// Issue 13, item 23: the walk's animation frames (web/js/lessons/mesh/walk.js, DOM-free)
+// Issue 13, item 23: the walk's animation frames (web/js/ui/mesh/walk.js, DOM-free)
 // must store the "found so far" list once, not once per frame: memory linear in the
 // number of steps. Measured structurally: every list (Array or typed array) a frame holds
 // is counted once by identity, and the total number of stored entries over all frames of
@@ -7,7 +7,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
-import { walkFrames, normaliseSteps, foundEdges } from '../../../web/js/lessons/mesh/walk.js';
+import { walkFrames, normaliseSteps, foundEdges } from '../../../web/js/ui/mesh/walk.js';
 
 const api = await loadWingspline();
 

@@ -4,7 +4,7 @@
 // the 2D painter would draw as batched paths (the face fills and, on a big mesh, the plain
 // edges); labels, arrows and the walk's highlights stay on the 2D canvas above it, and the
 // SVG export still goes through the painter. No geometry of the mesh is computed here:
-// the positions, faces and edges are the core's, the rotation is the view's (ui/mesh-view.js).
+// the positions, faces and edges are the core's, the rotation is the view's (ui/mesh/view.js).
 //
 // Buffers follow the mesh: `setMesh` uploads once per (mesh id, version) key; a rotation or
 // a pan only changes uniforms. Positions are uploaded as float32 relative to the view's

@@ -5,14 +5,15 @@
 // compute() through the core (curve-model.js); draw() only draws; the panels show the
 // numbers the core returned.
 import { number, integer, boolean, oneOf, list, object, viewSchema } from '../../app/schema.js';
-import { FAMILY_IDS, familyInfo, usesKnots, isSpline, defaultPoints, defaultTangents, DEFAULT_KNOTS } from './families.js';
-import { OVERLAYS, CONSTRUCTIONS, DEFAULT_OVERLAYS, blendingLabels } from './names.js';
+import { FAMILY_IDS, familyInfo, usesKnots, isSpline } from './families.js';
+import { OVERLAYS, CONSTRUCTIONS, blendingLabels } from './names.js';
 import { computeCurveModel, constructionsFor } from './curve-model.js';
 import { drawCurve, drawInfluence, drawPolygon, drawHull, drawVector, drawComb, drawMarks, drawSamples, drawLevels, drawLegend, arrowScale } from '../../ui/curve-overlays.js';
 import { createPanels, updatePanels, drawPlots } from './panels.js';
 import { formatNumber } from '../../ui/mathml.js';
 import { MATRIX_FORMS, migrateTransposed } from '../../ui/matrix-forms.js';
 import { curvesExercise } from './exercise.js';
+import { defaultCurveState } from './state.js';
 
 const pair = list(number(), { min: 2, max: 2 });
 // Parse bound of the per-point lists of a share link or file; each family's own limit is
@@ -52,25 +53,7 @@ export const lesson = {
     view: viewSchema(),
   },
 
-  defaultState() {
-    const points = defaultPoints.bezier.map((p) => p.slice());
-    return {
-      family: 'bezier',
-      points,
-      tangents: defaultTangents(points),
-      knots: DEFAULT_KNOTS.slice(),
-      weights: points.map(() => 1),
-      degree: 3,
-      tension: 0,
-      u: 0.35,
-      construction: { kind: 'none', step: 0 },
-      overlays: { ...DEFAULT_OVERLAYS },
-      form: 'descending',
-      notation: 'decimal',
-      compare: true,
-      view: { cx: 2, cy: 1, zoom: 120 },
-    };
-  },
+  defaultState: defaultCurveState,
 
   // Cross-field rules (share links, files): the per-point lists and the knot count.
   checkState(s) {

@@ -3,7 +3,7 @@
 // drawn (kind 1) and predict the CCW walk (kind 2). The subject is the mesh as loaded, with
 // the slide's numbering where it has one (lecture 000's edges e1..e9), so the drawing's labels
 // and the checks agree.
-import { sourceOf } from './mesh-source.js';
+import { sourceOf } from '../../ui/mesh/mesh-choice.js';
 import { refuseEdited } from '../../exercise/subjects.js';
 
 /** @type {import('../../app/contract.js').ExerciseSupport} */

@@ -6,11 +6,14 @@
 import { number, integer, boolean, oneOf, text, list, object, nullable, viewSchema, SchemaError } from '../../app/schema.js';
 import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
 import { importedMesh } from '../../app/imported-mesh.js';
-import { createMeshSource, cacheKeys, faceCsr, MESH_KINDS, IMPORTED_CONTENT } from './mesh-source.js';
+import { createMeshSource, cacheKeys } from '../../ui/mesh/mesh-source.js';
+import { faceCsr } from '../../ui/mesh/mesh-choice.js';
+import { MESH_KINDS, MESH_SIZES, IMPORTED_CONTENT } from './choices.js';
 import { arraysAtStep, visibleSteps } from './edit-playback.js';
-import { normaliseSteps, walkFrames } from './walk.js';
-import { drawMesh, createBaseCache, LABEL_LIMIT } from './draw.js';
-import { viewRotation, projectAll, unprojectDelta, facesAway } from '../../ui/mesh-view.js';
+import { normaliseSteps, walkFrames } from '../../ui/mesh/walk.js';
+import { drawMesh, createBaseCache } from '../../ui/mesh/draw.js';
+import { LABEL_LIMIT } from '../../ui/mesh/label-plan.js';
+import { viewRotation, projectAll, unprojectDelta, facesAway, fitProjected } from '../../ui/mesh/view.js';
 import { setupPanels } from './panels.js';
 import { meshExports } from './exports.js';
 import { vLabel, fLabel, eLabel } from './labels.js';
@@ -56,12 +59,14 @@ const LESSON_STEPS = {
 };
 const operation = (v, path) => (Object.hasOwn(LESSON_STEPS, v?.op) ? LESSON_STEPS[v.op](v, path) : coreOperation(v, path));
 
+const size = (bounds) => integer({ min: bounds[0], max: bounds[1] });
 const schema = {
   meshKind: oneOf(...MESH_KINDS.map((k) => k.id)),
-  fanSize: integer({ min: 1, max: 64 }),
-  grid: object({ nx: integer({ min: 1, max: 400 }), ny: integer({ min: 1, max: 400 }) }),
-  // Up to docs/benchmarks.md's sphere_1000000 (1000 x 501) and a little more: the GPU draws it (issue 17).
-  sphere: object({ slices: integer({ min: 3, max: 1000 }), stacks: integer({ min: 3, max: 600 }) }),
+  // The sizes' bounds are the chooser's (choices.js MESH_SIZES): up to the benchmarks'
+  // sphere_1000000 (1000 x 501) and a little more, which the GPU draws.
+  fanSize: size(MESH_SIZES.fan[0]),
+  grid: object({ nx: size(MESH_SIZES.grid[0]), ny: size(MESH_SIZES.grid[1]) }),
+  sphere: object({ slices: size(MESH_SIZES.sphere[0]), stacks: size(MESH_SIZES.sphere[1]) }),
   // Either form of app/imported-mesh.js (flat since issue 17; faces: older states and links).
   imported: nullable(importedMesh({ maxVertices: MAX_IMPORT_VERTICES, maxFaces: MAX_IMPORT_FACES, maxCorners: MAX_FACE_CORNERS })),
   moved: list(object({ v: integer({ min: 0, max: 10000000 }), p: list(number(), { min: 3, max: 3 }) }), { max: 100000 }),
@@ -159,7 +164,7 @@ function compute(view, state, ctx) {
   if (changes.length) derived.lastChange = changes[changes.length - 1];
   // After an edit the faces are the mesh's own (a removed face is a gap: no corners).
   const edited = entry.ops.length > 0;
-  // Faces as CSR (mesh-source.js faceCsr); a removed face has no corners.
+  // Faces as CSR (ui/mesh/mesh-choice.js faceCsr); a removed face has no corners.
   const csr = edited ? (derived.faces ??= faceCsr(entry.mesh.tables('vertex-face-tables').faces.arrays)) : entry.csr;
   derived.gaps ??= edited ? entry.mesh.gaps() : { vertices: [], edges: [], faces: [] };
   const gaps = derived.gaps.vertices.length + derived.gaps.edges.length + derived.gaps.faces.length;
@@ -264,16 +269,8 @@ function faceNormal(derived, mesh, f) {
   return [n[3 * f], n[3 * f + 1], n[3 * f + 2]];
 }
 
-function fitView(view, model, stage) {
-  if (!model) return defaultState().view;
-  const P = model.projected;
-  let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
-  for (let i = 0; i < P.length; i += 3) {
-    minX = Math.min(minX, P[i]); maxX = Math.max(maxX, P[i]);
-    minY = Math.min(minY, P[i + 1]); maxY = Math.max(maxY, P[i + 1]);
-  }
-  return stage.fit(minX, minY, maxX, maxY, 0.18); // margin: room for the labels beside the vertices
-}
+// margin: room for the labels beside the vertices
+const fitView = (view, model, stage) => (model ? fitProjected(model.projected, stage, 0.18) : defaultState().view);
 
 // The walk on a big mesh (issue 17): when the walk's element changes (or the walk starts
 // on a new mesh) and the ring it walks would be a speck (under WALK_MIN_PX across) or off

@@ -6,28 +6,18 @@
 import { h, revealInBoxes } from '../../app/dom.js';
 import { createGrowthPlot, growthSeries } from './growth.js';
 import { createVirtualTable, headRows } from '../../ui/virtual-table.js';
-import { num } from './labels.js';
 import { createStoredEdgeControl } from './stored-edge.js';
-import { readTable, findDescriptor } from '../../core/tables.js';
-import { VERTEX_EDGE_COLUMN, FACE_EDGE_COLUMN } from './walk.js';
+import { findDescriptor } from '../../core/tables.js';
+import { VERTEX_EDGE_COLUMN, FACE_EDGE_COLUMN } from '../../ui/mesh/walk.js';
+import { num, sub, NOTATION, headOf, rowCells, describedTable, createWingedTables } from '../../ui/mesh/tables.js';
 import { visibleSteps, rowsNotYetWritten, EDGE_FIELDS } from './edit-playback.js';
 import { queryTarget, whyNot } from './live-elements.js';
 
-// A label as the slides write it (F with a subscript 1): a text and one <sub> element, no
-// wrapper, so a 250-item adjacency list lays out as few boxes as it can (issue 17).
-const sub = (letter, i, before = '') => (i >= 0 ? [before + letter, h('sub', {}, String(i + 1))] : '');
 const F = (i) => sub('F', i);
-const triple = (p) => `(${num(p[0])}, ${num(p[1])}, ${num(p[2])})`;
 // Representation tables longer than this show their first rows and say so (the winged-edge
 // tables, read as typed arrays, are never cut).
 export const REPRESENTATION_ROWS = 3000;
 const REPRESENTATION_BLOCKS_KEPT = 8;
-const listOf = (indices, label) => {
-  const items = Array.from(indices).filter((i) => i >= 0);
-  const out = [];
-  items.forEach((i, k) => out.push(label(i, k ? ' ' : '')));
-  return out.length ? out : '—';
-};
 
 // Lectures 000 (✓/✗ bullets) and 003 (polygon list / vertex list / edge list), quoted.
 export const PROS_CONS = {
@@ -42,48 +32,6 @@ export const PROS_CONS = {
   'winged-edge': { title: 'Winged edge', pros: ['all adjacencies in O(1) time', 'little extra storage', 'fixed-size records', 'supports polygonal faces'],
     cons: ['mesh needs to be oriented'] },
 };
-
-// The letters each representation names its elements with (Foley: V, E, P; λ = no polygon).
-const NOTATION = {
-  default: { vertex: 'v', edge: 'e', face: 'F', none: '' },
-  'edge-list': { vertex: 'V', edge: 'E', face: 'P', none: 'λ' },
-};
-
-// Header rows from a descriptor: the labels, and above them the groups (the winged edge's
-// wings: L R under S, L R under E) when any column has one.
-function headOf(d) {
-  const labels = ['', ...d.columns.map((c) => c.label)];
-  if (!d.columns.some((c) => c.group)) return [labels];
-  const groups = [{ text: '', colspan: 1 }];
-  for (const c of d.columns) {
-    const last = groups[groups.length - 1];
-    if (last.text === c.group) last.colspan += 1;
-    else groups.push({ text: c.group, colspan: 1 });
-  }
-  return [groups, labels];
-}
-
-// The cells of one row from what each column holds: coordinates as numbers or (x, y, z),
-// references as the slide's labels, lists of references in one cell. A table whose only
-// column is a list shows one cell per item, as the slides' face tables do (F₁ V₁ V₂ V₃).
-function rowCells(d, row, letters) {
-  const coordinate = (x) => (Array.isArray(x) ? triple(x) : num(x));
-  const spread = d.columns.length === 1 && d.columns[0].layout === 'csr';
-  const cells = [];
-  for (const c of d.columns) {
-    const value = row[c.name];
-    if (c.refers === null) {
-      if (spread) cells.push(...value.map(coordinate));
-      else cells.push(coordinate(value));
-      continue;
-    }
-    const label = (i, before) => sub(letters[c.refers], i, before);
-    if (spread) cells.push(...value.map((i) => label(i)));
-    else if (Array.isArray(value)) cells.push(listOf(value, label));
-    else cells.push(value >= 0 ? label(value) : letters.none);
-  }
-  return cells;
-}
 
 const SHORT_NAMES = {
   'vertex-face-tables': 'vertex and face tables', 'adjacency-lists': 'adjacency lists', 'partial-adjacency-lists': 'partial adjacency lists',
@@ -115,24 +63,15 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   const root = h('section', { class: 'mesh-representations', id: 'tables-panel', 'aria-label': 'Representations' }, tablist, ...Object.values(panels));
 
   let model = null;
-  // Every representation table is drawn from its descriptor (web/js/core/tables.js): the
-  // caption, the headers (the slide's S E L R and the wings under S and E), one row per
-  // element of its kind, each cell by what its column holds. The winged edge's tables are
-  // read from the lesson's own copy of its arrays (model.we, never cut); the others are
+  // Every representation table is drawn from its descriptor (ui/mesh/tables.js). The winged
+  // edge's tables are read from the lesson's own copy of its arrays (model.we, never cut); the others are
   // fetched from the core in blocks of REPRESENTATION_ROWS rows (every table of one
   // representation at once) and kept until the mesh changes, so scrolling a 100k-row table
   // fetches only the block in view.
-  const wingedTables = new WeakMap(); // model.weShown -> {name: Table}
+  const wingedTables = createWingedTables(ctx.api);
   const tableAt = (representation, name, i) => {
-    if (representation === 'winged-edge') {
-      // weShown: the tables as the edit player shows them (model.we once the edit is done).
-      const arrays = model.weShown;
-      if (!wingedTables.has(arrays)) {
-        const read = (n) => readTable(findDescriptor(ctx.api.tableDescriptors, 'winged-edge', n), { rows: model[n === 'vertices' ? 'V' : n === 'edges' ? 'E' : 'F'], arrays });
-        wingedTables.set(arrays, { vertices: read('vertices'), edges: read('edges'), faces: read('faces') });
-      }
-      return wingedTables.get(arrays)[name];
-    }
+    // weShown: the tables as the edit player shows them (model.we once the edit is done).
+    if (representation === 'winged-edge') return wingedTables(model.weShown, { vertices: model.V, edges: model.E, faces: model.F })[name];
     const block = Math.floor(i / REPRESENTATION_ROWS) * REPRESENTATION_ROWS;
     const key = `${representation}:${block}`;
     model.derived.reps ??= new Map();
@@ -152,8 +91,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   const described = (representation, name, id) => {
     const d = findDescriptor(ctx.api.tableDescriptors, representation, name);
     const letters = NOTATION[representation] ?? NOTATION.default;
-    return table({ id, kind: d.rows, caption: d.title, head: headOf(d), rowLabel: (i) => sub(letters[d.rows], i),
-      row: (i) => rowCells(d, tableAt(representation, name, i).row(i), letters) });
+    return table({ id, kind: d.rows, ...describedTable(d, letters, (i) => tableAt(representation, name, i)) });
   };
 
   const tables = {

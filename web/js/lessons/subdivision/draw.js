@@ -5,6 +5,7 @@
 // compute; the shade of a face is a dot product of the core's normal with the light).
 import { CanvasPainter } from '../../app/painter.js';
 import { parseColour } from '../../ui/gl-mesh.js';
+import { faceXY, facesViewer } from '../../ui/mesh/faces.js';
 import { formatWeight } from './format-weight.js';
 import { PHASES, label } from './source.js';
 
@@ -97,24 +98,6 @@ function drawFacesGpu(gl, model, ctx) {
     },
   );
   if (drawn === 'more') ctx.render(); // a big level drawn over frames (gl-mesh.js)
-}
-
-function faceXY(model, P, f) {
-  const a = model.faceOffsets[f]; const b = model.faceOffsets[f + 1];
-  const xy = new Float64Array(2 * (b - a));
-  for (let k = a; k < b; k += 1) { const v = model.faceVertices[k]; xy[2 * (k - a)] = P[3 * v]; xy[2 * (k - a) + 1] = P[3 * v + 1]; }
-  return xy;
-}
-
-// Whether face f's projected corners run counter-clockwise (faces are CCW seen from outside).
-function facesViewer(model, P, f) {
-  const a = model.faceOffsets[f]; const b = model.faceOffsets[f + 1];
-  let area = 0;
-  for (let k = a, j = b - 1; k < b; j = k, k += 1) {
-    const p = model.faceVertices[j]; const q = model.faceVertices[k];
-    area += P[3 * p] * P[3 * q + 1] - P[3 * q] * P[3 * p + 1];
-  }
-  return area >= 0;
 }
 
 function drawFaces(painter, model, colors) {

@@ -10,8 +10,9 @@ import { number, integer, boolean, oneOf, text, list, object, nullable, viewSche
 import { MAX_MESH_VERTICES, MAX_MESH_FACES, MAX_FACE_CORNERS } from '../../app/limits.js';
 import { importedMesh, importedCsr } from '../../app/imported-mesh.js';
 import { importedArrays } from '../../app/mesh-import.js';
-import { viewRotation, projectAll, unprojectDelta } from '../../ui/mesh-view.js';
-import { SOURCES, IMPORTED_FIELD, PHASES, MAX_LEVEL, sourceKey, meshInput, hashNumbers, label } from './source.js';
+import { viewRotation, projectAll, unprojectDelta, fitProjected } from '../../ui/mesh/view.js';
+import { sourceKey, createImportedKeys, hashNumbers } from '../../ui/mesh/mesh-choice.js';
+import { SOURCES, SIZES, IMPORTED_FIELD, PHASES, MAX_LEVEL, meshInput, label } from './source.js';
 import { setupPanels } from './panels.js';
 import { drawScene, pointAt } from './draw.js';
 import { subdivisionExercise } from './exercise.js';
@@ -30,10 +31,11 @@ const CURVE_MAX_POINTS = 32;
 // limit shrinks about 4x per step (docs/api-curves.md), far below a pixel.
 const CLOSED_LIMIT_STEPS = 8;
 
+const size = (bounds) => integer({ min: bounds[0], max: bounds[1] });
 const schema = {
   meshKind: oneOf(...SOURCES.map((s) => s.id)),
-  sphere: object({ slices: integer({ min: 3, max: 100 }), stacks: integer({ min: 3, max: 50 }) }),
-  grid: object({ nx: integer({ min: 1, max: 64 }), ny: integer({ min: 1, max: 64 }) }),
+  sphere: object({ slices: size(SIZES.sphere[0]), stacks: size(SIZES.sphere[1]) }),
+  grid: object({ nx: size(SIZES.grid[0]), ny: size(SIZES.grid[1]) }),
   // Either form of app/imported-mesh.js (flat since issue 17; faces: older states and links).
   imported: nullable(importedMesh({ maxVertices: MAX_MESH_VERTICES, maxFaces: MAX_MESH_FACES, maxCorners: MAX_FACE_CORNERS })),
   // Control vertices (level 0) the person moved: where they are now.
@@ -154,7 +156,7 @@ function shadingOf(d, shading) {
 
 function compute(view, state, ctx) {
   const api = ctx.api;
-  const base = sourceKey(state, view.importedKeys);
+  const base = sourceKey(state, view.importedKey);
   const key = `${base}|${hashNumbers(state.moved.flatMap((m) => [m.v, ...m.p]))}|${state.scheme}`;
   const fresh = view.chain?.key !== key;
   const chain = fresh ? emptyChain(key) : view.chain;
@@ -293,16 +295,7 @@ function moveHandle(view, state, id, x, y, model) {
   return { ...state, moved: state.moved.filter((m) => m.v !== v).concat([{ v, p }]) };
 }
 
-function fitView(view, model, stage) {
-  if (!model) return defaultState().view;
-  const P = model.projected;
-  let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
-  for (let i = 0; i < P.length; i += 3) {
-    minX = Math.min(minX, P[i]); maxX = Math.max(maxX, P[i]);
-    minY = Math.min(minY, P[i + 1]); maxY = Math.max(maxY, P[i + 1]);
-  }
-  return stage.fit(minX, minY, maxX, maxY, 0.2);
-}
+const fitView = (view, model, stage) => (model ? fitProjected(model.projected, stage, 0.2) : defaultState().view);
 
 const SCHEME_NAMES = { loop: 'Loop', 'catmull-clark': 'Catmull-Clark' };
 
@@ -367,7 +360,7 @@ export const subdivisionLesson = {
   contentFields: IMPORTED_FIELD,
   inspector: false,
   setup(ctx) {
-    const view = { chain: null, centre: null, importedKeys: new WeakMap(), lastRefusal: null, rotating: null, panels: null };
+    const view = { chain: null, centre: null, importedKey: createImportedKeys(), lastRefusal: null, rotating: null, panels: null };
     view.panels = setupPanels(ctx, view);
     return view;
   },

@@ -3,12 +3,14 @@
 // gave them), the counts, the winged-edge tables of what is shown and the curve beside it.
 // Everything shown comes from the model; the person's choices go back through ctx.commit.
 import { h } from '../../app/dom.js';
-import { readTable, findDescriptor, columnHeading } from '../../core/tables.js';
+import { findDescriptor, columnHeading } from '../../core/tables.js';
 import { createVirtualTable } from '../../ui/virtual-table.js';
 import { createCurvePlot } from './curve-plot.js';
 import { createExplorerLink } from './explorer-link.js';
 import { formatNumber } from '../../ui/mathml.js';
-import { SOURCES, PHASES, MAX_LEVEL, label } from './source.js';
+import { SOURCES, SIZES, PHASES, MAX_LEVEL, label } from './source.js';
+import { createMeshChooser } from '../../ui/mesh/chooser.js';
+import { createWingedTables } from '../../ui/mesh/tables.js';
 import { formatWeight } from './format-weight.js';
 import { createTurnControls, MAX_TILT } from '../../ui/turn-controls.js';
 
@@ -32,16 +34,7 @@ export function setupPanels(ctx, view) {
   const stage = ctx.stage.canvas;
 
   // ------------------------------------------------------------ mesh, scheme, level, phase
-  const meshSelect = h('select', { id: 'mesh-kind', 'aria-label': 'Mesh' }, SOURCES.map((s) => h('option', { value: s.id }, s.label)));
-  const sizeInput = (id, text, min, max) => h('input', { type: 'number', id, min, max, step: 1, 'aria-label': text });
-  const sphereS = sizeInput('sphere-slices', 'Sphere slices', 3, 100);
-  const sphereT = sizeInput('sphere-stacks', 'Sphere stacks', 3, 50);
-  const gridX = sizeInput('grid-nx', 'Grid quads across', 1, 64);
-  const gridY = sizeInput('grid-ny', 'Grid quads down', 1, 64);
-  const sizeGroups = {
-    sphere: h('span', { class: 'size-group' }, labelled('slices', sphereS), labelled('stacks', sphereT)),
-    grid: h('span', { class: 'size-group' }, labelled('nx', gridX), labelled('ny', gridY)),
-  };
+  const chooser = createMeshChooser(ctx, { kinds: SOURCES, sizes: SIZES, choose, importClass: 'tool advanced' });
   const schemeSelect = h('select', { id: 'scheme', 'aria-label': 'Scheme' },
     h('option', { value: 'loop' }, 'Loop (triangles)'), h('option', { value: 'catmull-clark' }, 'Catmull-Clark (any polygons)'));
   const button = (text, action, title, id) => h('button', { type: 'button', class: 'tool', title, 'aria-label': title, id, onclick: action }, text);
@@ -49,13 +42,12 @@ export function setupPanels(ctx, view) {
   const phaseLabel = h('span', { class: 'phase-label', id: 'phase-label', 'aria-live': 'polite' });
   const limitBox = h('input', { type: 'checkbox', id: 'limit-positions' });
   const shadingSelect = h('select', { id: 'shading', 'aria-label': 'Shading' }, h('option', { value: 'flat' }, 'flat'), h('option', { value: 'smooth' }, 'smooth'));
-  const importButton = h('button', { type: 'button', class: 'tool advanced', onclick: () => document.getElementById('import-file')?.click() }, 'Open OFF/OBJ…');
 
   const commit = (patch, options) => ctx.commit({ ...state(), ...patch }, options);
   const turnControls = createTurnControls((rotation) => commit({ rotation }, { coalesce: 'rotate' }), { onEnd: () => ctx.endGesture() });
 
   ctx.controls.replaceChildren(
-    labelled('Mesh', meshSelect), ...Object.values(sizeGroups), importButton,
+    ...chooser.elements,
     labelled('Scheme', schemeSelect),
     h('span', { class: 'level-group', role: 'group', 'aria-label': 'Level' },
       button('−', () => levelTo(state().level - 1), 'Level down (< or ↓)', 'level-down'), levelLabel,
@@ -86,28 +78,7 @@ export function setupPanels(ctx, view) {
       });
     }
   }
-  meshSelect.addEventListener('change', () => {
-    if (meshSelect.value === 'file' && !state().imported) {
-      syncControls();
-      document.getElementById('import-file')?.click();
-      return;
-    }
-    choose({ meshKind: meshSelect.value });
-  });
   schemeSelect.addEventListener('change', () => choose({ scheme: schemeSelect.value }));
-  const sizeChange = (input, make) => input.addEventListener('change', () => {
-    const n = Number(input.value);
-    if (!Number.isInteger(n) || n < Number(input.min) || n > Number(input.max)) {
-      ctx.message.error(`${input.getAttribute('aria-label')} must be a whole number from ${input.min} to ${input.max}`, 'invalid-size');
-      syncControls();
-      return;
-    }
-    choose(make(n));
-  });
-  sizeChange(sphereS, (n) => ({ sphere: { ...state().sphere, slices: n } }));
-  sizeChange(sphereT, (n) => ({ sphere: { ...state().sphere, stacks: n } }));
-  sizeChange(gridX, (n) => ({ grid: { ...state().grid, nx: n } }));
-  sizeChange(gridY, (n) => ({ grid: { ...state().grid, ny: n } }));
   limitBox.addEventListener('change', () => commit({ limit: limitBox.checked }));
   shadingSelect.addEventListener('change', () => commit({ shading: shadingSelect.value }));
 
@@ -213,15 +184,8 @@ export function setupPanels(ctx, view) {
 
   // ------------------------------------------------------------ winged-edge tables
   const descriptor = (name) => findDescriptor(ctx.api.tableDescriptors, 'winged-edge', name);
-  const readers = new WeakMap(); // model.we -> {name: Table}
-  const tableOf = (name) => {
-    const model = ctx.model;
-    if (!readers.has(model.we)) readers.set(model.we, {});
-    const cache = readers.get(model.we);
-    const rows = { vertices: model.counts.vertices, edges: model.counts.edges, faces: model.counts.faces }[name];
-    cache[name] ??= readTable(descriptor(name), { rows, arrays: model.we });
-    return cache[name];
-  };
+  const wingedTables = createWingedTables(ctx.api);
+  const tableOf = (name) => wingedTables(ctx.model.we, ctx.model.counts)[name];
   const cell = (column, value) => {
     if (column.refers) return label(column.refers, value);
     return Array.isArray(value) ? value.map((x) => formatNumber(x, 4)).join(', ') : formatNumber(value, 4);
@@ -242,9 +206,7 @@ export function setupPanels(ctx, view) {
 
   function syncControls() {
     const s = state();
-    meshSelect.value = s.meshKind;
-    for (const [kind, group] of Object.entries(sizeGroups)) group.hidden = s.meshKind !== kind;
-    sphereS.value = s.sphere.slices; sphereT.value = s.sphere.stacks; gridX.value = s.grid.nx; gridY.value = s.grid.ny;
+    chooser.sync(s);
     schemeSelect.value = s.scheme;
     limitBox.checked = s.limit;
     shadingSelect.value = s.shading;

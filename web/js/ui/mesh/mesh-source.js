@@ -1,3 +1,4 @@
+// @ts-check
 // From the lesson state to a live winged-edge mesh in the core. The mesh handle is kept
 // between computes (a traversal step, a hover or a view change must not rebuild a
 // 10,000-face structure); it is rebuilt only when the mesh choice changes, and the old one
@@ -8,104 +9,13 @@
 // the built mesh in order; a list that is not the applied list plus new operations at its
 // end (undo, a link) rebuilds the mesh and replays it. Nothing here counts versions: the
 // mesh does (mesh.id, mesh.version), and every cache is keyed on them (cacheKeys below).
+// Offers: createMeshSource() -> { sync(state, api) -> {entry, changes}, live }, cacheKeys(entry).
+// Needs: a state with a mesh choice (mesh-choice.js), `moved: [{v, p}]` and `ops` (the
+//   lesson's checked operations, {op, ...}); the JS API (api.buildMesh, mesh.apply,
+//   setVertexPosition, compact).
+import { takeImportedMesh } from '../../app/mesh-import.js';
+import { sourceKey, sourceOf, faceCsr, createImportedKeys } from './mesh-choice.js';
 
-import { importedArrays, takeImportedMesh } from '../../app/mesh-import.js';
-import { importedCsr, importedFaceCount } from '../../app/imported-mesh.js';
-import { contentHashOf } from '../../app/share-link.js';
-
-export const MESH_KINDS = [
-  { id: 'lecture', label: 'Lecture example (v1..v5, lecture 000)' },
-  { id: 'foley', label: 'Foley example (V1..V4, lecture 001)' },
-  { id: 'tetrahedron', label: 'Tetrahedron' },
-  { id: 'cube', label: 'Cube (quads)' },
-  { id: 'fan', label: 'Open fan' },
-  { id: 'grid', label: 'Grid' },
-  { id: 'sphere', label: 'UV sphere' },
-  { id: 'file', label: 'Your file (OFF/OBJ)' },
-];
-
-// The imported mesh (state.imported = { name, positions, faces }) is the one large field of
-// the lesson's state: links and local storage hold it by content hash, the mesh itself in
-// IndexedDB, unless it is small enough to travel inline (share-link.js, `contentFields`;
-// docs/state-format.md, "Large fields"). A link that only refers to it tells the person to
-// send the OFF file with it, and offers the export.
-export const IMPORTED_CONTENT = {
-  imported: { what: 'an imported mesh', file: 'the OFF file', export: 'mesh.off', label: (imported) => imported.name },
-};
-
-// The key that identifies one topology + base geometry: equal keys share one core mesh.
-// importedKey: the key of an imported mesh (a mesh source memoises it, createImportedKeys).
-export function sourceKey(state, importedKey) {
-  switch (state.meshKind) {
-    case 'fan': return `fan:${state.fanSize}`;
-    case 'grid': return `grid:${state.grid.nx}x${state.grid.ny}`;
-    case 'sphere': return `sphere:${state.sphere.slices}x${state.sphere.stacks}`;
-    case 'file': return state.imported ? importedKey(state.imported) : 'file:none';
-    default: return state.meshKind;
-  }
-}
-
-// The imported mesh rides along unchanged from state to state (spread copies share it), so
-// its key is hashed once per object, not on every walk step; one memo per mesh source.
-// A mesh the import worker hashed (SHA-256 of its text, issue 17) is keyed by that hash.
-function createImportedKeys() {
-  const keys = new WeakMap();
-  return (imported) => {
-    if (!keys.has(imported)) keys.set(imported, `file:${imported.name}:${importedFaceCount(imported)}:${contentHashOf(imported) ?? hashPositions(imported)}`);
-    return keys.get(imported);
-  };
-}
-
-// The positions, then each face's size and corners (either form of imported-mesh.js).
-function hashPositions(imported) {
-  let h = 2166136261;
-  const mix = (x) => { h = Math.imul(h ^ (Math.round(x * 1e6) | 0), 16777619); };
-  for (const x of imported.positions) mix(x);
-  const { faceOffsets, faceVertices } = importedCsr(imported);
-  for (let f = 0; f + 1 < faceOffsets.length; f += 1) {
-    mix(faceOffsets[f + 1] - faceOffsets[f]);
-    for (let i = faceOffsets[f]; i < faceOffsets[f + 1]; i += 1) mix(faceVertices[i]);
-  }
-  return (h >>> 0).toString(36);
-}
-
-// Faces as offsets and corners (CSR: face f is vertices[offsets[f] .. offsets[f + 1])),
-// whatever container the core or the state used: the one form the lesson keeps (issue 17:
-// a million faces as a million small arrays cost a tenth of a second and much memory).
-export function faceCsr(data) {
-  if (data.faceOffsets) return { offsets: data.faceOffsets, vertices: data.faceVertices };
-  const faces = data.faces;
-  const offsets = new Int32Array(faces.length + 1);
-  for (let f = 0; f < faces.length; f += 1) offsets[f + 1] = offsets[f] + faces[f].length;
-  const vertices = new Int32Array(offsets[faces.length]);
-  for (let f = 0; f < faces.length; f += 1) vertices.set(faces[f], offsets[f]);
-  return { offsets, vertices };
-}
-
-// The indexed face set (and, for the slides' meshes, the slide's numbering) of a state.
-export function sourceOf(state, api) {
-  switch (state.meshKind) {
-    case 'lecture': return api.lectureExample();
-    case 'foley': return api.foleyExample();
-    case 'tetrahedron': return api.generateMesh('tetrahedron');
-    case 'cube': return api.generateMesh('cube');
-    case 'fan': return api.generateMesh('fan', { n: state.fanSize, layout: 'csr' });
-    case 'grid': return api.generateMesh('grid', { nx: state.grid.nx, ny: state.grid.ny, layout: 'csr' });
-    case 'sphere': return api.generateMesh('sphere', { slices: state.sphere.slices, stacks: state.sphere.stacks, layout: 'csr' });
-    case 'file': {
-      if (!state.imported) {
-        const err = new Error('No file has been imported yet: use Import (or drop an .off or .obj file on the page).');
-        err.code = 'no-file';
-        throw err;
-      }
-      // Freshly imported: the worker's flat arrays, built in bulk (issue 17).
-      const flat = importedArrays(state.imported);
-      if (flat) return { positions: flat.positions, faceOffsets: flat.faceOffsets, faceVertices: flat.faceVertices };
-      return importedCsr(state.imported);
-    }
-    default: throw Object.assign(new Error(`unknown mesh ${state.meshKind}`), { code: 'unknown-mesh' });
-  }
-}
 
 const POSITION_EPS = 0; // positions are compared exactly: the state holds the doubles the core got
 
@@ -188,7 +98,7 @@ export function createMeshSource() {
   // difference rebuilds the mesh and replays them all. Operations run on the positions the
   // operations before them left (state.moved is applied after all of them, so a lesson
   // that changes the topology first turns its pending moves into move-vertex operations:
-  // see edit.js). A refused operation changed nothing in the core (checked mutators) and
+  // see the mesh lesson's edit-ops.js withEdit). A refused operation changed nothing in the core (checked mutators) and
   // its error names it; live.ops stays what was applied.
   function applyOps(state, api) {
     const ops = state.ops ?? [];

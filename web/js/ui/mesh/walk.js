@@ -1,10 +1,14 @@
+// @ts-check
 // The two winged-edge walks of lecture 000 as animation frames: the CCW edges around a
 // vertex ("Initialize: choose the vertex's edge. Do: if v is the Start, the next CCW edge is
 // on the Left of e, coming out of the Start; otherwise on the Right of e, coming out of the
 // End. While: haven't cycled back to the start edge") and, the same way, the edges of a
 // face. The steps (edge, which side was met, the edge read) come from the core; this file
 // only says which pseudocode line, table row and column each frame shows.
-import { vLabel, eLabel, fLabel } from './labels.js';
+// Offers: walkFrames(kind, element, steps), normaliseSteps(raw, kind), foundEdges(frame, last),
+//   PSEUDOCODE, EDGE_COLUMNS, VERTEX_EDGE_COLUMN, FACE_EDGE_COLUMN. No DOM.
+// Needs: the core's steps (mesh.traversalSteps(v) or mesh.faceEdgeSteps(f)).
+import { vLabel, eLabel, fLabel } from '../element-labels.js';
 
 // Column positions in the rendered tables (0 is the row header).
 export const EDGE_COLUMNS = { S: 1, E: 2, L: 3, R: 4, SL: 5, SR: 6, EL: 7, ER: 8 };
@@ -53,7 +57,7 @@ export function foundEdges(frame, last = Infinity) {
 // is reported (found) and the next edge is known. Frame n+1: the While test sees e₀ again.
 // "Found so far" is one list for the whole walk (`order`, every frame holds the same
 // array) and a count per frame: a copy per frame made memory grow with the square of the
-// steps, and a 40,000-triangle fan's walk crashed the tab (issue 13).
+// steps, and a 40,000-triangle fan's walk crashed the tab.
 export function walkFrames(kind, element, steps) {
   const frames = [];
   const order = steps.map((s) => s.edge);
