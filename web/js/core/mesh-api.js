@@ -170,6 +170,13 @@ function readChange(r, descriptor) {
 // benchmark's hooks through meshInternals).
 let handleOfMesh;
 
+// One walk as the core sends it (edges, a 1/0 flag per step, next) read into one record per
+// step: {edge, [key]: which way the rule met the edge, column: the wing it read, next}.
+function walkSteps(r, flagOf, key, [yes, no], [yesColumn, noColumn]) {
+  const flags = flagOf(r);
+  return Array.from(r.edges, (edge, i) => ({ edge, [key]: flags[i] ? yes : no, column: flags[i] ? yesColumn : noColumn, next: r.next[i] }));
+}
+
 const ADJACENCY_KINDS = Object.freeze({
   'edges-around-vertex': 'vertex', 'faces-around-vertex': 'vertex', 'vertices-around-vertex': 'vertex',
   'edges-of-face': 'face', 'vertices-of-face': 'face', 'face-neighbours': 'face', 'faces-of-edge': 'edge',
@@ -291,26 +298,14 @@ export class Mesh {
   // edge's Start, endRight when it is its End.
   traversalSteps(v) {
     elementIndex(v, 'vertex');
-    const r = unwrap(this.#raw.meshTraversalSteps(this.#live(), v));
-    return Array.from(r.edges, (edge, i) => ({
-      edge,
-      role: r.atStart[i] ? 'start' : 'end',
-      column: r.atStart[i] ? 'startLeft' : 'endRight',
-      next: r.next[i],
-    }));
+    return walkSteps(unwrap(this.#raw.meshTraversalSteps(this.#live(), v)), (r) => r.atStart, 'role', ['start', 'end'], ['startLeft', 'endRight']);
   }
 
   // The walk along face f: if f is the edge's Left face the next edge is endLeft,
   // otherwise (f is its Right face) startRight.
   faceEdgeSteps(f) {
     elementIndex(f, 'face');
-    const r = unwrap(this.#raw.meshFaceEdgeSteps(this.#live(), f));
-    return Array.from(r.edges, (edge, i) => ({
-      edge,
-      side: r.faceIsLeft[i] ? 'left' : 'right',
-      column: r.faceIsLeft[i] ? 'endLeft' : 'startRight',
-      next: r.next[i],
-    }));
+    return walkSteps(unwrap(this.#raw.meshFaceEdgeSteps(this.#live(), f)), (r) => r.faceIsLeft, 'side', ['left', 'right'], ['endLeft', 'startRight']);
   }
 
   // {vertices, edges, faces, boundaryEdges, boundaryLoops, isolatedVertices, euler}

@@ -1,0 +1,205 @@
+// Changing a mesh: every operation of the core's registry through one binding (meshEdit), its
+// change record as flat arrays, the registry itself as data, compact() and the gaps.
+#include "boundary.h"
+#include "mesh_entry.h"
+
+#include "wingspline/mesh/operations.h"
+#include "wingspline/mesh/representations.h"
+#include "wingspline/mesh/tables.h"
+#include "wingspline/mesh/winged_edge.h"
+
+#include <memory>
+
+namespace wingspline::bindings {
+namespace {
+
+using namespace wingspline::mesh;
+
+// {topology, geometry}: which state of the mesh this is (winged_edge.h, MeshVersion).
+val mesh_version(int32_t handle) {
+    return guarded([&] { return version_value(entry(handle).winged.version()); });
+}
+
+val element_list(const std::vector<Vertex>& vs, const std::vector<Edge>& es, const std::vector<Face>& fs) {
+    const auto ints = [](const auto& hs) {
+        std::vector<int32_t> out;
+        for (const auto& h : hs) out.push_back(h.idx);
+        return int_array(out);
+    };
+    val r = val::object();
+    r.set("vertices", ints(vs));
+    r.set("edges", ints(es));
+    r.set("faces", ints(fs));
+    return r;
+}
+
+// {op, added, removed: {vertices, edges, faces}, rows: [{table, row, fields: [{field,
+// before, after}]}], before, after: {topology, geometry}}
+val change_value(const ChangeRecord& c) {
+    val rows = val::array();
+    for (std::size_t i = 0; i < c.rows.size(); ++i) {
+        val fields = val::array();
+        for (std::size_t k = 0; k < c.rows[i].fields.size(); ++k) {
+            val field = val::object();
+            field.set("field", c.rows[i].fields[k].field);
+            field.set("before", c.rows[i].fields[k].before);
+            field.set("after", c.rows[i].fields[k].after);
+            fields.set(k, field);
+        }
+        val row = val::object();
+        row.set("table", std::string(table_name(c.rows[i].table)));
+        row.set("row", c.rows[i].row);
+        row.set("fields", fields);
+        rows.set(i, row);
+    }
+    // Euler operations: every assignment in order, six int32 per step [table, row, field,
+    // before, after, phase] (indices into meshOperationDescriptors().tables / .fields, and
+    // into this record's phases), and the positions set, eight numbers each [vertex, before
+    // xyz, after xyz, step].
+    std::vector<int32_t> steps;
+    steps.reserve(6 * c.steps.size());
+    for (const AssignmentStep& s : c.steps)
+        steps.insert(steps.end(), {static_cast<int32_t>(s.table), s.row, change_field_index(s.field), s.before, s.after, s.phase});
+    val phases = val::array();
+    for (std::size_t k = 0; k < c.phases.size(); ++k) phases.set(k, c.phases[k]);
+    std::vector<double> positions;
+    for (const PositionChange& p : c.positions)
+        positions.insert(positions.end(), {static_cast<double>(p.vertex), p.before.x, p.before.y, p.before.z, p.after.x, p.after.y,
+                                           p.after.z, static_cast<double>(p.step)});
+    val r = val::object();
+    r.set("op", c.op);
+    r.set("steps", to_typed_array(steps));
+    r.set("phases", phases);
+    r.set("positions", to_typed_array(positions));
+    r.set("added", element_list(c.added_vertices, c.added_edges, c.added_faces));
+    r.set("removed", element_list(c.removed_vertices, c.removed_edges, c.removed_faces));
+    r.set("rows", rows);
+    r.set("before", version_value(c.before));
+    r.set("after", version_value(c.after));
+    return r;
+}
+
+// Any operation of the registry (operations.h) by name, its arguments in the entry's order.
+// check = true only asks the check ({allowed, code, message}, nothing changed); otherwise
+// runs the operation and returns its change record, or the refusal as {ok: false, code,
+// message} with the mesh unchanged. cost: also say how many stored entries each
+// representation rewrote (rewritten_entries: the winged edge's from the change record, the
+// others by comparing their derivations before and after, which the cache hands over
+// rather than copies; the lesson asks it only for the edit a person just made).
+val mesh_edit(int32_t handle, const std::string& name, const val& args, bool check, bool cost) {
+    return guarded([&] {
+        MeshEntry& me = entry(handle);
+        WingedEdgeMesh& w = me.winged;
+        const std::vector<double> a = to_doubles(args);
+        const Operation op = operation_from(name, a.data(), a.size());
+        if (check) {
+            const CheckResult verdict = w.check(op);
+            val r = val::object();
+            r.set("allowed", verdict.ok);
+            r.set("code", verdict.code);
+            r.set("message", verdict.message);
+            return r;
+        }
+        std::unique_ptr<Representations> before_reps;
+        if (cost && w.check(op).ok) before_reps = me.representations.take(w);
+        const ChangeRecord c = w.apply(op);
+        val r = change_value(c);
+        if (before_reps) {
+            const auto n = rewritten_entries(c, *before_reps, w, me.representations.of(w));
+            val rewritten = val::object();
+            for (int k = 0; k < kRepresentationCount; ++k) rewritten.set(representation_key(static_cast<Representation>(k)), static_cast<double>(n[k]));
+            r.set("rewritten", rewritten);
+        }
+        return r;
+    });
+}
+
+// {renumbering: {vertices, edges, faces} (old -> new, -1 = removed), version}
+val mesh_compact(int32_t handle) {
+    return guarded([&] {
+        WingedEdgeMesh& w = entry(handle).winged;
+        const Renumbering map = w.compact();
+        val renumbering = val::object();
+        renumbering.set("vertices", int_array(map.vertices));
+        renumbering.set("edges", int_array(map.edges));
+        renumbering.set("faces", int_array(map.faces));
+        val r = val::object();
+        r.set("renumbering", renumbering);
+        r.set("version", version_value(w.version()));
+        return r;
+    });
+}
+
+// The gaps: {vertices, edges, faces}, each the removed indices in increasing order.
+val mesh_gaps(int32_t handle) {
+    return guarded([&] {
+        const WingedEdgeMesh& w = entry(handle).winged;
+        const auto marked = [](const std::vector<char>& marks) {
+            std::vector<int32_t> out;
+            for (std::size_t i = 0; i < marks.size(); ++i)
+                if (marks[i]) out.push_back(static_cast<int32_t>(i));
+            return int_array(out);
+        };
+        val r = val::object();
+        r.set("vertices", marked(w.deleted_vertices()));
+        r.set("edges", marked(w.deleted_edges()));
+        r.set("faces", marked(w.deleted_faces()));
+        return r;
+    });
+}
+
+// Read once by mesh-api.js: {operations: [{name, title, counts, shortcut, describe,
+// arguments: [{name, kind (null for a number), optional, default, choices, label}]}],
+// tables, fields, stepStride, positionStride}: the registry (operations.h) as data.
+val mesh_operation_descriptors() {
+    return guarded([] {
+        val ops = val::array();
+        const auto& all = operations();
+        for (std::size_t k = 0; k < all.size(); ++k) {
+            val args = val::array();
+            for (std::size_t j = 0; j < all[k].arguments.size(); ++j) {
+                const OperationArgument& a = all[k].arguments[j];
+                val one = val::object();
+                one.set("name", std::string(a.name));
+                one.set("kind", a.kind == ElementKind::None ? val::null() : val(std::string(element_kind_name(a.kind))));
+                one.set("optional", a.optional);
+                one.set("default", a.default_value);
+                one.set("choices", a.choices == nullptr ? val::null() : val(std::string(a.choices)));
+                one.set("label", std::string(a.label));
+                args.set(j, one);
+            }
+            val op = val::object();
+            op.set("name", std::string(all[k].name));
+            op.set("title", std::string(all[k].title));
+            op.set("counts", std::string(all[k].counts));
+            op.set("shortcut", std::string(all[k].shortcut));
+            op.set("describe", std::string(all[k].describe));
+            op.set("arguments", args);
+            ops.set(k, op);
+        }
+        const auto names = [](const std::vector<const char*>& v) {
+            val out = val::array();
+            for (std::size_t k = 0; k < v.size(); ++k) out.set(k, std::string(v[k]));
+            return out;
+        };
+        val r = val::object();
+        r.set("operations", ops);
+        r.set("tables", names(change_tables()));
+        r.set("fields", names(change_fields()));
+        r.set("stepStride", 6);
+        r.set("positionStride", 8);
+        return r;
+    });
+}
+
+} // namespace
+} // namespace wingspline::bindings
+
+EMSCRIPTEN_BINDINGS(wingspline_mesh_edit) {
+    using namespace wingspline::bindings;
+    emscripten::function("meshVersion", &mesh_version);
+    emscripten::function("meshEdit", &mesh_edit);
+    emscripten::function("meshCompact", &mesh_compact);
+    emscripten::function("meshGaps", &mesh_gaps);
+    emscripten::function("meshOperationDescriptors", &mesh_operation_descriptors);
+}

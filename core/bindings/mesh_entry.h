@@ -1,0 +1,37 @@
+#pragma once
+// What the mesh bindings share (mesh.cpp defines it): the registry entry of a live mesh (its
+// winged edge and the cache of the other representations), the handle lookup, and the small
+// value builders every mesh binding uses.
+#include "boundary.h"
+
+#include "wingspline/mesh/indexed_mesh.h"
+#include "wingspline/mesh/representations.h"
+#include "wingspline/mesh/winged_edge.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace wingspline::bindings {
+
+// The winged edge is built with the mesh; the other representations are its cache
+// (RepresentationCache): derived from the winged edge's current face set on first use and
+// again whenever the mesh's version moved on, so a mesh's wasm memory is the winged edge's
+// own until a lesson asks for the others, and no operation leaves a stale copy.
+struct MeshEntry {
+    mesh::WingedEdgeMesh winged;
+    mesh::RepresentationCache representations;
+};
+
+// The entry of a live handle; throws Error("disposed") for a disposed or unknown one.
+MeshEntry& entry(int32_t handle);
+const mesh::Representations& representations_of(MeshEntry& m);
+val version_value(const mesh::MeshVersion& v);
+val int_array(const std::vector<int32_t>& v);
+val report_value(const mesh::ValidationReport& report);
+// A missing element or a gap left by an edit, refused as the mesh's own operations refuse
+// them (WingedEdgeMesh::check_element).
+void require_vertex(const mesh::WingedEdgeMesh& w, int32_t v);
+void require_face(const mesh::WingedEdgeMesh& w, int32_t f);
+void require_edge(const mesh::WingedEdgeMesh& w, int32_t e);
+
+} // namespace wingspline::bindings
