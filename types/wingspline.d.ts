@@ -51,7 +51,7 @@ export type WingsplineErrorCode =
   // curves
   | 'unknown-curve-kind' | 'unknown-basis' | 'unknown-form' | 'unsupported-curve-kind' | 'invalid-dimension' | 'invalid-points'
   | 'non-finite-input' | 'non-finite-result' | 'too-few-points' | 'degree-out-of-range' | 'wrong-knot-count'
-  | 'decreasing-knots' | 'invalid-knots' | 'knot-multiplicity-exceeded' | 'empty-domain' | 'wrong-weight-count'
+  | 'decreasing-knots' | 'knot-multiplicity-exceeded' | 'empty-domain' | 'wrong-weight-count'
   | 'invalid-weight' | 'weight-ratio-out-of-range' | 'wrong-tangent-count' | 'wrong-node-count'
   | 'nodes-not-increasing' | 'nodes-too-close' | 'nodes-out-of-range' | 'vandermonde-out-of-range'
   | 'parameter-out-of-range' | 'segment-out-of-range' | 'dimension-mismatch' | 'length-overflow'

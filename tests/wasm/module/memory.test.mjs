@@ -109,6 +109,8 @@ const cases = [
   ['evaluateCurve', REDUCED, () => api.evaluateCurve(nurbs, params), [['decreasing-knots', () => api.evaluateCurve(decreasing, params)]]],
   ['evaluateDerivative', REDUCED, () => api.evaluateDerivative(bezier, params, 1), [['invalid-weight', () => api.evaluateDerivative(zeroWeight, params, 1)]]],
   ['mesh.edgesAroundVertex', FULL, () => lecture.edgesAroundVertex(1), [['invalid-element', () => lecture.edgesAroundVertex(V_MISSING)]]],
+  ['mesh.adjacency', REDUCED, () => lecture.adjacency('vertices-of-face', 1),
+    [['invalid-element', () => lecture.adjacency('vertices-around-vertex', V_MISSING)], ['unknown-query', () => lecture.adjacency('corners', 1)]]],
   ['parseMesh (OBJ)', REDUCED, () => api.parseMesh(objText, { format: 'obj' }), [['index-out-of-range', () => api.parseMesh('v 0 0 0\nf 1 2 3\n', { format: 'obj' })]]],
   ['formatMesh', REDUCED, () => api.formatMesh(tetra, { format: 'obj' }), [['unknown-format', () => api.formatMesh(tetra, { format: 'ply' })]]],
   ['generateMesh', REDUCED, () => api.generateMesh('sphere', { slices: 8, stacks: 4 }), [['unknown-mesh', () => api.generateMesh('torus')]]],

@@ -40,7 +40,8 @@ Guarantees chain_guarantees(BasisKind basis, int32_t slots, const std::vector<st
 // A B-spline of the given degree on `knots` (count + degree + 1 of them) with `count` control
 // points: the joints are the distinct interior knots of the domain [t_p, t_count]; a_d, b_d
 // are the basis functions' d-th derivatives there from the left and from the right span.
-// Throws Error("invalid-knots") / Error("invalid-argument") as the B-spline evaluation does.
+// Throws what the B-spline evaluation throws for its knots (wrong-knot-count, decreasing-knots,
+// knot-multiplicity-exceeded, empty-domain) and Error("invalid-argument").
 Guarantees bspline_guarantees(const std::vector<double>& knots, int degree, int32_t count);
 
 } // namespace wingspline::curves
