@@ -602,7 +602,7 @@ export interface PatchInput {
   points: NumberList;
 }
 
-// ------------------------------------------------------------------ exercises (issue 19)
+// ------------------------------------------------------------------ exercises
 
 /** The mesh of a winged-edge exercise: its faces (vertex and face numbers fixed) and vertex count (or positions). */
 export type ExerciseMesh = ({ faces: ReadonlyArray<NumberList> } | { faceOffsets: Int32Array; faceVertices: Int32Array })
@@ -857,7 +857,7 @@ export interface WingsplineApi {
   checkCurveProperty(subject: { curve: Curve }, property: PassesThroughProperty): PassesThroughPropertyCheck;
 }
 
-// ------------------------------------------------------------------ curve exercises (issue 19, kinds 3-5)
+// ------------------------------------------------------------------ curve exercises (kinds 3-5)
 
 export type JointReasonId = 'meet' | 'equal-first' | 'same-direction' | 'equal-second' | 'equal-curvature';
 export type JointClassK = -1 | 0 | 1 | 2;

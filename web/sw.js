@@ -18,7 +18,7 @@ const scopePath = new URL(self.registration.scope).pathname;
 const CACHE_PREFIX = `wingspline:${scopePath}:`;
 const CACHE = `${CACHE_PREFIX}${manifest.version}`;
 const VERSION = /^[0-9a-f]{16}$/;
-// Before issue 13 caches were named `wingspline-<version>` whatever the scope.
+// Older workers named their caches `wingspline-<version>` whatever the scope.
 const LEGACY = /^wingspline-[0-9a-f]{16}$/;
 
 // The file of the manifest a request names ('./' and 'folder/' name their index.html), or null.

@@ -92,7 +92,7 @@ val bench_edit_in_core(int32_t handle, const std::string& task, int32_t repetiti
     });
 }
 
-// docs/benchmarks.md mesh_subdivide_loop / mesh_subdivide_cc inside the module (issue 16): one step
+// docs/benchmarks.md mesh_subdivide_loop / mesh_subdivide_cc inside the module: one step
 // from the built mesh to the new winged edge with positions, R times; the bench limits
 // (kUnlimitedCounts), not the page's. Also the result's own bytes and the heap growth while
 // one result is held (malloc's count, as api.memoryUsage().heapInUse).

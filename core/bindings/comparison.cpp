@@ -1,4 +1,4 @@
-// Bindings of the lessons' measurements (issue 14 item 5): the comparison measurements and
+// Bindings of the lessons' measurements: the comparison measurements and
 // the convex hull (core/include/wingspline/curves/comparison.h), the curve explorer's
 // overlays (overlays.h). Same conventions as curves.cpp: plain values
 // in (checked and normalised by web/js/core/curves-api.js), {ok, ...} or {ok:false, code,

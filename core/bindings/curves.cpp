@@ -1,4 +1,4 @@
-// Curve bindings (issue 5). Every function takes plain values (the JS layer in
+// Curve bindings. Every function takes plain values (the JS layer in
 // web/js/core/curves-api.js has already normalised and type-checked them: every curve spec
 // arrives with all fields, arrays as Float64Array) and returns {ok:true, ...} or
 // {ok:false, code, message} through guarded(); bulk results leave as copied typed arrays.
@@ -110,7 +110,7 @@ val curve_segment(const val& spec, int index, const std::string& form_name) {
         r.set("degree", s.degree);
         r.set("columns", s.columns);
         r.set("M", to_typed_array(s.M));
-        r.set("rational", rational_value(s.M)); // issue 18: M as the slide writes it, or null
+        r.set("rational", rational_value(s.M)); // M as the slide writes it, or null
         r.set("G", to_typed_array(s.G));
         r.set("C", to_typed_array(s.C));
         r.set("controlIndices", ints(s.control_indices));
@@ -122,7 +122,7 @@ val curve_segment(const val& spec, int index, const std::string& form_name) {
         r.set("localParameter", s.local_parameter);
         r.set("homogeneous", s.homogeneous);
         r.set("basis", s.basis);
-        // Issue 18: M, G, C as the chosen lecture writes them (segment_in_form).
+        // M, G, C as the chosen lecture writes them (segment_in_form).
         const SegmentForm f = segment_in_form(s, form);
         val shown = val::object();
         shown.set("form", std::string(matrix_form_name(f.form)));
@@ -168,7 +168,7 @@ val bezier_subdivision_matrix_pair(int degree, double t) {
         val r = val::object();
         r.set("left", to_typed_array(SL));
         r.set("right", to_typed_array(SR));
-        // Issue 18: as lecture 002 writes them, 1/8 [integers] at t = 1/2 (null if none).
+        // As lecture 002 writes them, 1/8 [integers] at t = 1/2 (null if none).
         r.set("leftRational", rational_value(SL));
         r.set("rightRational", rational_value(SR));
         return r;
@@ -275,7 +275,7 @@ val bspline_knot_multiplicities(const val& spec) {
     });
 }
 
-// Issue 14 (maths out of the lessons): the segment holding a parameter, knot vector presets,
+// The maths out of the lessons: the segment holding a parameter, knot vector presets,
 // and the continuity constraints of a piecewise curve while it is dragged.
 val curve_segment_at(const val& spec, double t) {
     return guarded([&] {
@@ -307,7 +307,7 @@ val knots_clamped(const val& knots, int degree) {
         val r = val::object();
         const auto t = to_doubles(knots);
         r.set("clamped", is_clamped(t, degree));
-        r.set("bezier", is_bezier_in_disguise(t, degree)); // issue 18
+        r.set("bezier", is_bezier_in_disguise(t, degree));
         return r;
     });
 }
@@ -379,7 +379,7 @@ val curve_arc_length_params(const val& spec, int n) {
     });
 }
 
-// Issue 18: a rational matrix as { rows, cols, num, den } (numerators and denominators as
+// A rational matrix as { rows, cols, num, den } (numerators and denominators as
 // Float64Arrays; every entry of these derivations is far below 2^53, so exact in a double).
 val fraction_matrix(const std::vector<Rational>& m, int rows, int cols) {
     std::vector<double> num, den;
@@ -425,7 +425,7 @@ val curve_joint_continuity(const val& a, const val& b, double tolerance) {
         ev.set("d2Gap", e.d2_gap);
         ev.set("ratio", e.ratio);
         ev.set("tangentAngle", e.tangent_angle);
-        // A side whose P' is zero has no curvature: null, never 0 (issue 13, item 4).
+        // A side whose P' is zero has no curvature: null, never 0.
         ev.set("curvatureA", e.zero_tangent_a ? val::null() : val(e.curvature_a));
         ev.set("curvatureB", e.zero_tangent_b ? val::null() : val(e.curvature_b));
         ev.set("zeroTangentA", e.zero_tangent_a);
@@ -455,7 +455,7 @@ val curve_joint_continuity(const val& a, const val& b, double tolerance) {
     });
 }
 
-// Issue 13 item 8: what a representation guarantees for every control polygon.
+// What a representation guarantees for every control polygon.
 // {parametric, geometric, joints, interpolated: Int32Array of slots}.
 val guarantees_value(const Guarantees& g) {
     val r = val::object();
@@ -515,7 +515,7 @@ val interpolation_system(const val& spec) {
     });
 }
 
-// The core's limits a lesson must respect (issue 13.1: the lesson reads them, no copy).
+// The core's limits a lesson must respect (the lesson reads them, no copy).
 val curve_limits() {
     return guarded([&] {
         val r = val::object();

@@ -1,4 +1,4 @@
-// Exercise bindings (issue 19): checking a student's winged-edge table. The mesh crosses as
+// Exercise bindings: checking a student's winged-edge table. The mesh crosses as
 // CSR (faceOffsets: F + 1 entries, faceVertices) with its vertex count; the answer as flat
 // Int32 arrays: edges[8*r + k] (k: S E L R S:L S:R E:L E:R of the student's row r),
 // vertexEdges[v], faceEdges[f]; -1 = none, -2 = blank. Findings leave as plain objects.

@@ -1,4 +1,4 @@
-// Exercise bindings for curves (issue 19, kinds 3, 4 and 5): joints, values, properties.
+// Exercise bindings for curves (kinds 3, 4 and 5): joints, values, properties.
 // Curves cross as curve_spec.h's normalised specs; the JS layer
 // (web/js/core/exercise-curves-api.js) has checked every type, so optional fields arrive as
 // a flag plus a value. Results leave as plain objects (boundary.h).

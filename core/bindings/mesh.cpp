@@ -162,7 +162,7 @@ val mesh_build(val positions, val face_offsets, val face_vertices, val edges, va
     });
 }
 
-// Building in steps (issue 17, winged_edge.h WingedEdgeBuild): meshBuildStart reads the
+// Building in steps (winged_edge.h WingedEdgeBuild): meshBuildStart reads the
 // face set and options as meshBuild does and returns {job}; each meshBuildStep runs one
 // phase and returns {done, phase} and, once done, {handle} of the new live mesh. A refused
 // step ends the job (its error is meshBuild's); meshBuildCancel ends one early.
@@ -239,7 +239,7 @@ val validate_indexed_mesh(val positions, val face_offsets, val face_vertices) {
 // The text arrives as UTF-8 bytes (a Uint8Array the JS layer encoded) and is pulled into
 // the module in 64 KB pieces as the reader asks for them (TextSource): a file over the
 // limits is refused from its first pieces, never copied whole into the wasm memory, which
-// could then never shrink again (issue 13: a refused 55 MB file used to keep it grown).
+// could then never shrink again (a refused 55 MB file used to keep it grown).
 // check_counts = false lifts the vertex and face counts (benchmarks, large-file tests).
 val mesh_parse(val utf8, const std::string& format, bool check_counts) {
     try {

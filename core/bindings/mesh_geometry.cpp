@@ -20,7 +20,7 @@ using namespace wingspline::mesh;
 // with the default face edges is the same face set.
 val mesh_planes(int32_t handle) {
     return guarded([&] {
-        // The faces as given: face_set() lists each face from its first corner (issue 14).
+        // The faces as given: face_set() lists each face from its first corner.
         const auto planes = face_planes(entry(handle).winged);
         std::vector<double> cross, newell, residual;
         std::vector<int32_t> corners;
@@ -62,7 +62,7 @@ val mesh_normals(int32_t handle, val into) {
     });
 }
 
-// {min, max, centre: Float64Array(3) each}: the bounding box a 3D view turns about (issue 13).
+// {min, max, centre: Float64Array(3) each}: the bounding box a 3D view turns about.
 val mesh_bounding_box(int32_t handle) {
     return guarded([&] {
         const BoundingBox b = bounding_box(entry(handle).winged);
@@ -76,7 +76,7 @@ val mesh_bounding_box(int32_t handle) {
 }
 
 // {face, near: Int32Array, distance: Float64Array}: the faces seen along `towards` through
-// `point` (issue 17, view_geometry.h pick_faces): the nearest hit face (-1: none) and the
+// `point` (view_geometry.h pick_faces): the nearest hit face (-1: none) and the
 // faces within `radius` of the line of sight, the hit face first.
 val mesh_pick(int32_t handle, double px, double py, double pz, double tx, double ty, double tz, double radius, int32_t max_near) {
     return guarded([&] {

@@ -15,8 +15,8 @@ namespace {
 val core_version() { return val(std::string(wingspline::version())); }
 
 // basis_matrix(kind) -> {ok, matrix: Float64Array(16) row-major, rational: the slide's
-// fraction and integers (issue 18)}
-// form: 'descending' (000, 003), 'ascending' (002) or 'transposed' (001), issue 18.
+// fraction and integers}
+// form: 'descending' (000, 003), 'ascending' (002) or 'transposed' (001).
 val basis_matrix(const std::string& kind, const std::string& form) {
     return guarded([&] {
         const auto m = curves::basis_matrix(curves::parse_basis_kind(kind), curves::parse_matrix_form(form));

@@ -1,5 +1,5 @@
 #pragma once
-// Issue 18, the lectures' notation: a matrix's rational form (basis_matrix.h) for JS as
+// The lectures' notation: a matrix's rational form (basis_matrix.h) for JS as
 // {denominator, numerators: Float64Array of integers}, or null when the matrix has none.
 #include "boundary.h"
 

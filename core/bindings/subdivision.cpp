@@ -1,4 +1,4 @@
-// Subdivision bindings (issue 16): Loop and Catmull-Clark steps, their masks and limit
+// Subdivision bindings: Loop and Catmull-Clark steps, their masks and limit
 // positions, and curve subdivision. Kept in their own file (the registry is reached through
 // mesh_access.h). Results cross as flat typed arrays; a mask table is CSR: maskOffsets
 // (one more entry than there are new points), maskVertices, maskWeights.

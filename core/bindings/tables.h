@@ -1,5 +1,5 @@
 #pragma once
-// The one generic binding of the mesh tables (issue 14): any described table (tables.h)
+// The one generic binding of the mesh tables: any described table (tables.h)
 // becomes a plain JS value, so no table is written out field by field here or in JS.
 #include "boundary.h"
 

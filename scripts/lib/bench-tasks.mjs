@@ -10,9 +10,9 @@ export const expectedTasks = [
   ...['curve_bezier3_eval', 'curve_bspline_eval', 'curve_bspline_eval_d1', 'curve_nurbs_eval', 'curve_nurbs_eval_d1']
     .flatMap((task) => ['native', 'wasm'].map((build) => ({ task, build }))),
   ...['ui_load', 'ui_drag', 'ui_traversal_step'].map((task) => ({ task, build: 'browser' })),
-  { task: 'ui_tab_switch', build: 'browser' }, // issue 17: tests/bench/browser/tabs.bench.mjs
-  { task: 'ui_import', build: 'browser' }, // issue 17: tests/bench/browser/import.bench.mjs
-  { task: 'ui_rotate', build: 'browser' }, // issue 17: tests/bench/browser/rotate.bench.mjs
+  { task: 'ui_tab_switch', build: 'browser' }, // tests/bench/browser/tabs.bench.mjs
+  { task: 'ui_import', build: 'browser' }, // tests/bench/browser/import.bench.mjs
+  { task: 'ui_rotate', build: 'browser' }, // tests/bench/browser/rotate.bench.mjs
 ];
 
 // docs/benchmarks.md "Reference figures" (min ns per unit; mesh_memory in bytes per face), per build:

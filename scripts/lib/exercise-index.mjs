@@ -1,4 +1,4 @@
-// The exercise gallery's index (issue 19): dist/exercises/index.json lists every exercise
+// The exercise gallery's index: dist/exercises/index.json lists every exercise
 // shipped in web/exercises/ (id, title, lesson, kind, source), each read by the same reader
 // the pages use (web/js/exercise/format.js). A file that does not read stops the build with
 // its name and the field: a broken exercise never reaches the site.

@@ -1,4 +1,4 @@
-// The libFuzzer layer (issue 9): build/fuzz holds one executable per tests/fuzz/fuzz_<name>.cpp,
+// The libFuzzer layer: build/fuzz holds one executable per tests/fuzz/fuzz_<name>.cpp,
 // compiled with Debian's clang++-14 and -fsanitize=fuzzer,address,undefined (a separate
 // CMake project, tests/fuzz/CMakeLists.txt, because the main build uses g++).
 //

@@ -1,6 +1,6 @@
 // The service worker's precache list (dist/sw-manifest.js): every file of dist/ with the SHA-256
-// of its bytes. The worker checks each file against it when caching and when serving
-// (issue 13, item 25), and the version (a hash of the list and of sw.js) names the cache,
+// of its bytes. The worker checks each file against it when caching and when serving,
+// and the version (a hash of the list and of sw.js) names the cache,
 // so a new deployment (any changed byte) installs a new cache and an unchanged one costs nothing.
 import crypto from 'node:crypto';
 import fs from 'node:fs';

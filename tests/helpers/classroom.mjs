@@ -1,4 +1,4 @@
-// Shared pieces of the classroom tests (issue 8): which lesson pages to test (every lesson
+// Shared pieces of the classroom tests: which lesson pages to test (every lesson
 // marked ready in the registry, plus the test-only fixture lesson under tests/fixtures/site),
 // share links built the way the page builds them, bit patterns of numbers, and a trap that
 // records any script a tampered link or file might manage to run.

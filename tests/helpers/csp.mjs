@@ -1,4 +1,4 @@
-// The Content Security Policy every page must carry (issue 9), as a checker shared by the
+// The Content Security Policy every page must carry, as a checker shared by the
 // source test (tests/wasm/security/source.test.mjs) and the browser test
 // (tests/browser/security/csp.test.mjs): scripts only from the site ('self'), WebAssembly
 // compilation allowed ('wasm-unsafe-eval', which permits nothing else), no

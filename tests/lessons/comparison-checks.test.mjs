@@ -1,6 +1,6 @@
 // The comparison lesson's table and invariance experiment (web/js/lessons/comparison) as a
 // person reads them: every verdict must be the same when the whole polygon is scaled, moved
-// or rotated (issue 14 item 5: the measurements live in the core, with tolerances relative to
+// or rotated (the measurements live in the core, with tolerances relative to
 // the polygon's size), and a perspective map that sends a control point behind the eye says
 // which point.
 import { test } from 'node:test';
@@ -58,7 +58,7 @@ test('a perspective map that sends a control point behind the eye is refused, na
   });
 });
 
-// Issue 18, item 5: the default view shows five different curves. Hermite has its own
+// The default view shows five different curves. Hermite has its own
 // tangents (state), so its curve is not Catmull-Rom's; Catmull-Rom inside Hermite stays an
 // explicit choice. Distances by the core (maxDistance over the same parameters per
 // segment), relative to the polygon's bounding-box diagonal (unitless).

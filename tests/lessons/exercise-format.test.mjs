@@ -1,4 +1,4 @@
-// The exercise file (issue 19, docs/exercises.md) as the pages read it: every exercise the
+// The exercise file (docs/exercises.md) as the pages read it: every exercise the
 // gallery ships reads, with its lesson state; the gallery has at least two per lesson; a
 // damaged file is refused with one sentence naming the field (never a partial exercise); an
 // exercise packed into a link comes back exactly.

@@ -1,4 +1,4 @@
-// The gallery's exercises asked of their lessons' subjects (issue 19), in Node over the real
+// The gallery's exercises asked of their lessons' subjects, in Node over the real
 // core: each lesson's `exercise.subject` hands the check what the drawing shows, and the
 // answers a student would work out from the lectures are the right ones. Expected values are
 // computed here from the lectures' formulas (Bernstein polynomials, the Hermite matrix,

@@ -1,4 +1,4 @@
-// Issue 19: types/wingspline.d.ts declares the whole public API. tsc checks the declarations
+// types/wingspline.d.ts declares the whole public API. tsc checks the declarations
 // against examples/ and deliberate misuses (the `types` layer); this file checks them against
 // the running module, so they cannot drift from it: every function and method the API object
 // and a Mesh carry is declared, nothing declared is missing at run time, and every error code

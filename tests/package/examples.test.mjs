@@ -1,4 +1,4 @@
-// Issue 19: the homework scripts in examples/ run as a student runs them (`node
+// The homework scripts in examples/ run as a student runs them (`node
 // examples/<name>.mjs`, importing 'wingspline' by name) and print what the lectures say.
 // Every expected value is recomputed here from the lectures' rules, never copied from a run.
 import { test } from 'node:test';

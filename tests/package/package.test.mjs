@@ -1,4 +1,4 @@
-// Issue 19, "Package and scripts": `npm pack` gives a tarball a student installs in an empty
+// Package and scripts: `npm pack` gives a tarball a student installs in an empty
 // folder; `import { loadWingspline } from 'wingspline'` then works in Node, and the same
 // installed files work from a page without a bundler. Packed once and installed once
 // (offline: the package has no runtime dependencies) for the whole file.

@@ -1,4 +1,4 @@
-// Issue 19: `npm start` can listen on another host (HOST) so a classroom network can use it,
+// `npm start` can listen on another host (HOST) so a classroom network can use it,
 // and says what it serves (the folder and every URL it answers on). Runs scripts/start.mjs
 // as `npm start` does, on a free port (PORT=0).
 import { test } from 'node:test';

@@ -32,7 +32,7 @@ double cross_norm(const double* a, const double* b, int d) {
     return 0;
 }
 
-// ---- scale first (issue 13, items 2, 4, 15)
+// ---- scale first
 // Every computation below works on a copy of the curve divided by a power of two near its
 // largest coordinate: the copy's coordinates lie in [-1, 1], so P', P'', |P'|^3 and the
 // Gauss-Legendre sums can neither overflow nor underflow, and the division by 2^e is exact
@@ -180,7 +180,7 @@ double scaled_length(double normalised_length, int exponent) {
 } // namespace
 
 CurvatureValues curvature(const Curve& curve, const std::vector<double>& params) {
-    // Computed on the normalised copy (issue 13, item 4): kappa = kappa' / 2^e, speed 2^e |P'|.
+    // Computed on the normalised copy: kappa = kappa' / 2^e, speed 2^e |P'|.
     const Normalised n = normalised(curve);
     const CurveEvaluator ev(n.curve);
     const auto u = ev.checked_params(params.data(), params.size());
@@ -318,7 +318,7 @@ double direction_gap(const double* x, const double* y, int d, double sign = 1) {
     return std::sqrt(s);
 }
 
-// The two lecture wordings of G^n read literally (issue 13, item 3), next to the core's.
+// The two lecture wordings of G^n read literally, next to the core's.
 void add_wordings(JointContinuity& r, const double* A, const double* B, int d, double tolerance, double floor2, bool c2) {
     const JointEvidence& e = r.evidence;
     const bool g1 = r.geometric >= 1;
@@ -376,8 +376,8 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
             "curve a has dim " + std::to_string(a.dim) + " but curve b has dim " + std::to_string(b.dim));
     validate(a);
     validate(b);
-    // Everything is decided on the normalised pair (one power-of-two scale for both, issue 13
-    // item 2), so the verdict does not depend on where the drawing is, how it
+    // Everything is decided on the normalised pair (one power-of-two scale for both),
+    // so the verdict does not depend on where the drawing is, how it
     // is turned or how large it is; the evidence is scaled back to the caller's units.
     const int ex = common_exponent({&a, &b});
     const Normalised na = normalised(a, ex), nb = normalised(b, ex);
@@ -390,7 +390,7 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
     const double* A = jet_a.data();
     const double* B = jet_b.data();
     // The size of the configuration: twice the largest distance of a control point of either
-    // curve from the centroid of all of them (no rotation or shift changes it; issue 18).
+    // curve from the centroid of all of them (no rotation or shift changes it).
     const double size = spread(na.curve, nb.curve);
     // Rounding floors per side (a zero tangent is judged on its own side) and for a difference.
     double floor_a[3], floor_b[3], floor_k[3];
@@ -419,7 +419,7 @@ JointContinuity joint_continuity(const Curve& a, const Curve& b, double toleranc
     // Equal: the difference is at most `tolerance` of the larger of the two (positions: of the
     // configuration's size), or below the rounding floor of that order.
     auto same = [&](double g, double scale, int order) { return g <= std::max(tolerance * scale, floor_k[order]); };
-    // Each statement on its own (issue 19: a student judges them one by one), then the
+    // Each statement on its own (a student judges them one by one), then the
     // verdict from them: C^k needs every equality up to order k.
     const bool eq0 = same(gap0, size, 0);
     const bool eq1 = same(gap1, std::max(na1, nb1), 1);

@@ -236,7 +236,7 @@ CurveEvaluator::CurveEvaluator(const Curve& curve) : curve_(curve) {
         else knots_ = curve_.knots.empty() ? uniform_knots(K, degree_) : curve_.knots;
         const int hd = rational_ ? d + 1 : d;
         homogeneous_.resize(static_cast<std::size_t>(K * hd));
-        const int shift = weight_shift(curve_.weights); // weights at any scale (issue 13.5)
+        const int shift = weight_shift(curve_.weights); // weights at any scale
         for (int i = 0; i < K; ++i) {
             const double w = rational_ && !curve_.weights.empty() ? std::ldexp(curve_.weights[i], shift) : 1.0;
             for (int k = 0; k < d; ++k) homogeneous_[i * hd + k] = w * curve_.points[i * d + k];

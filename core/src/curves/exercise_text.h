@@ -1,6 +1,6 @@
 #pragma once
 // How the exercise checkers write numbers, vectors and indices in their worked lines and
-// feedback (issue 19): short numbers (6 significant digits, what a student writes down) and
+// feedback: short numbers (6 significant digits, what a student writes down) and
 // unicode sub/superscripts (B₁,₃, u³), so the lines read like the slides.
 #include <cstdio>
 #include <string>

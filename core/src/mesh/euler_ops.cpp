@@ -1,4 +1,4 @@
-// The Euler operations of issue 15 on Baumgart's winged edge (lecture 000): split an edge,
+// The Euler operations on Baumgart's winged edge (lecture 000): split an edge,
 // split a face, join two faces, flip an edge, collapse an edge, poke a face.
 //
 // Each operation is written once, as the lecture reads: every pointer of the slide's

@@ -1,4 +1,4 @@
-// Checking a student's winged-edge table (exercise kind 1, issue 19). The expected table is
+// Checking a student's winged-edge table (exercise kind 1). The expected table is
 // the core's own winged edge of the faces (whose every entry the tests hold against lecture
 // 000's slide); the student's rows are matched to its edges by their S-E vertex pairs, and
 // each cell is then compared with the definition's value in the student's orientation.

@@ -1,4 +1,4 @@
-// Checking a student's face table, edge list and adjacency lists (exercise kind 1, issue 19;
+// Checking a student's face table, edge list and adjacency lists (exercise kind 1;
 // exercise_tables.h for what is right). The expected values come from the core's winged edge of
 // the faces: a face's corners as given (counter-clockwise), an edge's two faces (L, R), a
 // vertex's neighbours (the other ends of its edges).

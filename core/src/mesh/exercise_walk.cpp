@@ -1,4 +1,4 @@
-// Checking a predicted step of the counter-clockwise walk (exercise kind 2, issue 19): the
+// Checking a predicted step of the counter-clockwise walk (exercise kind 2): the
 // expected edge is the core's own walk's, and the reason spells out the lecture's rule for it.
 #include "wingspline/mesh/exercise_walk.h"
 

@@ -1,4 +1,4 @@
-// Validation of an indexed face set: every problem, not only the first (issue 3).
+// Validation of an indexed face set: every problem, not only the first.
 #include "wingspline/mesh/indexed_mesh.h"
 
 #include <algorithm>

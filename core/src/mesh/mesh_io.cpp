@@ -22,7 +22,7 @@ namespace {
 //
 // Streamed (a TextSource), the reader holds one piece plus the unfinished line carried
 // over: a file is read in bounded memory and a file over the limits is refused before the
-// rest of it is ever copied (issue 13: an over-limit 55 MB file grew the wasm memory).
+// rest of it is ever copied (an over-limit 55 MB file grew the wasm memory).
 class LineReader {
 public:
     explicit LineReader(std::string_view text) : text_(text), at_end_(true) { skip_bom(); }
@@ -211,7 +211,7 @@ IndexedMesh read_off(LineReader& in, std::size_t text_size, const MeshLimits& li
     const long nv = to_integer(header[0], count_line, "the number of vertices");
     const long nf = to_integer(header[1], count_line, "the number of faces");
     if (nv < 0 || nf < 0) throw ParseError("parse-error", count_line, "the counts must not be negative");
-    // Refused from the header, before anything is reserved or read (issue 13).
+    // Refused from the header, before anything is reserved or read.
     if (nv > limits.max_vertices) throw ParseError("too-large", count_line, too_many(nv, "vertices", limits.max_vertices));
     if (nf > limits.max_faces) throw ParseError("too-large", count_line, too_many(nf, "faces", limits.max_faces));
     // Room for what the header announces, but never more than the text can hold (a vertex

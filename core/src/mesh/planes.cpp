@@ -30,7 +30,7 @@ std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh, const std::vector
         const int32_t n = face_offsets[f + 1] - face_offsets[f];
         if (n == 0 && mesh.is_deleted(Face(f))) continue; // a gap left by an edit: a zero plane
         // The message is built only when it is needed (built for every face it cost most of
-        // the time of planes() on a 100,000-face mesh: issue 17's planes tab).
+        // the time of planes() on a 100,000-face mesh, as the planes tab asks for).
         if (n < 3) require(false, "mismatched-face-set", "face " + face_label(f) + " of the face set has fewer than three corners");
         const glm::dvec3 p1 = mesh.position(c[0]), p2 = mesh.position(c[1]), p3 = mesh.position(c[2]);
         const glm::dvec3 cross = glm::cross(p2 - p1, p3 - p1);

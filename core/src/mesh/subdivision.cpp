@@ -1,4 +1,4 @@
-// Loop and Catmull-Clark subdivision on the winged edge (issue 16); header: subdivision.h.
+// Loop and Catmull-Clark subdivision on the winged edge; header: subdivision.h.
 //
 // Two paths, as the rest of the mesh core (docs/architecture.md, "Teaching path and fast
 // kernels"):

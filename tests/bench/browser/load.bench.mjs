@@ -2,7 +2,7 @@
 // interactive (the shell's performance mark 'wingspline-ready'; until a lesson is marked
 // ready in the registry, the test-only fixture lesson of tests/fixtures/site, which costs
 // the whole skeleton and the core but no lesson code), and the bytes transferred: raw, and gzip -9 of each
-// response (the 300 KB budget of issue 8 is for gzip), plus the gzip size of all of dist/.
+// response (the 300 KB budget is for gzip), plus the gzip size of all of dist/.
 // Each repetition is a cold load in a fresh browser context (empty caches, no worker).
 import fs from 'node:fs';
 import path from 'node:path';

@@ -1,6 +1,6 @@
 // docs/benchmarks.md mesh tasks, native: mesh_build, mesh_ring, mesh_normals, mesh_memory on
 // sphere_F and grid_F for F = 10k, 100k, 1M; mesh_edit_flip and mesh_edit_split on the
-// 10k and 100k inputs (issue 15).
+// 10k and 100k inputs.
 #include "bench.h"
 #include "edit_tasks.h"
 
@@ -105,7 +105,7 @@ WINGSPLINE_BENCH(mesh_edit) {
     }
 }
 
-// Issue 16: one subdivision step from the built mesh (not timed) to the complete new winged
+// One subdivision step from the built mesh (not timed) to the complete new winged
 // edge with positions, on the 10k and 100k inputs. Memory: the result's own bytes and the
 // resident growth across one step (the step holds the result and nothing else at the end;
 // the peak inside it is the result plus the face walk's few corners).

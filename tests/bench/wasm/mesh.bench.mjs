@@ -62,7 +62,7 @@ if (['mesh_memory', 'mesh_build', 'mesh_ring', 'mesh_normals'].some(wants)) {
   }
 }
 
-// Issue 15: the editing tasks, inside the module (each repetition on a fresh copy of the
+// The editing tasks, inside the module (each repetition on a fresh copy of the
 // built mesh, the copy untimed, as natively); the 10k and 100k inputs.
 for (const task of ['mesh_edit_flip', 'mesh_edit_split'].filter(wants)) {
   for (const [name, kind, options] of inputs.filter(([n]) => !n.endsWith('_1000000'))) {
@@ -76,7 +76,7 @@ for (const task of ['mesh_edit_flip', 'mesh_edit_split'].filter(wants)) {
   }
 }
 
-// Issue 16: one subdivision step inside the module on the 10k and 100k inputs; memory: the
+// One subdivision step inside the module on the 10k and 100k inputs; memory: the
 // result's own bytes and the heap growth while one result is held, per input face.
 for (const task of ['mesh_subdivide_loop', 'mesh_subdivide_cc'].filter(wants)) {
   for (const [name, kind, options] of inputs.filter(([n]) => !n.endsWith('_1000000'))) {

@@ -132,7 +132,7 @@ test('invariance: affine maps commute with every family; perspective only with t
   assert.deepEqual(page.problems, []);
 });
 
-// Issue 13 item 9: every choice of the conversion panel reads as words and numbers.
+// Every choice of the conversion panel reads as words and numbers.
 test('basis conversion: the panel never prints null, undefined or NaN', async () => {
   const page = await openLab();
   await page.selectOption('#scene', 'conversion');
@@ -152,7 +152,7 @@ test('basis conversion: the panel never prints null, undefined or NaN', async ()
   assert.deepEqual(page.problems, []);
 });
 
-// Issue 13 item 8: a cell of the lecture's table is a guarantee for every polygon; what this
+// A cell of the lecture's table is a guarantee for every polygon; what this
 // polygon happens to do is shown beside it and never turns the lecture red.
 async function typePoint(page, id, [x, y]) {
   const hd = (await page.evaluate(() => window.wingspline.handles())).find((k) => k.id === id);

@@ -1,4 +1,4 @@
-// Issue 18: the derivation panel of the comparison lab, driven like a student: open it, read
+// The derivation panel of the comparison lab, driven like a student: open it, read
 // the matrices (lecture 000's M_H and C, S and M_B, lecture 003's 1/6 M_BS as the page shows
 // them), then drag P1 with the mouse and nudge it with the keyboard and see R1 = 3(P2 - P1)
 // follow with the new numbers (the lecture's P1, P2 are the lab's P0, P1).

@@ -1,4 +1,4 @@
-// Issue 18, item 5 in the page: Hermite has its own tangents by default (the arrow tips
+// In the page: Hermite has its own tangents by default (the arrow tips
 // drag them, one undo step per drag), Catmull-Rom's tangents are an explicit choice with
 // its note, and the choice is state (links). The distances themselves are tested in the
 // lessons layer (tests/lessons/comparison-checks.test.mjs), not here.

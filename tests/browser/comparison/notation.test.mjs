@@ -1,4 +1,4 @@
-// Issue 18, the lectures' notation in the comparison lab's conversion panels: f and the
+// The lectures' notation in the comparison lab's conversion panels: f and the
 // checkbox switch M between decimals and lecture 003's exact form; the switch is state (undo,
 // links). Expected integers typed from lecture 003 (003_55ddbc47c7ee2ef3.txt).
 import { test } from 'node:test';

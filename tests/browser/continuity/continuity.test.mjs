@@ -244,7 +244,7 @@ test('Hermite joints: C1 shares the tangent, C2 also matches P\'\' from the Herm
   assert.deepEqual(page.problems, []);
 });
 
-// Issue 13, item 21: typing 1e300 into the inspector (as a person would: click the point,
+// Typing 1e300 into the inspector (as a person would: click the point,
 // type, Enter) must never put Infinity or NaN in the joint table; either the lab shows a
 // finite (or plainly undefined) curvature, or it refuses the value with a clear message.
 test('typing x = 1e300 for P1 in the inspector: the joint table shows no Infinity (or the value is refused clearly)', async () => {
@@ -272,7 +272,7 @@ test('typing x = 1e300 for P1 in the inspector: the joint table shows no Infinit
   assert.deepEqual(page.problems, []);
 });
 
-// Items 3 and 4: the zero-tangent preset's curvature is "undefined" in the table and in the
+// The zero-tangent preset's curvature is "undefined" in the table and in the
 // curvature plot's note (the same rule in the core for both), and every joint card shows what
 // lectures 001/004 and 003 would say.
 test('zero tangents: curvature "undefined" in the table and the plot agree; the lecture wordings are shown', async () => {
@@ -294,7 +294,7 @@ test('zero tangents: curvature "undefined" in the table and the plot agree; the 
 });
 
 // A state whose preset has no note (a name from a JSON file or a link, which the schema
-// accepts as text) once printed the literal word "null" under the rule (issue 13, item 9's
+// accepts as text) once printed the literal word "null" under the rule (a known
 // pattern: replaceChildren writes a null child as text).
 test('a preset without a note prints no "null" in the rule panel', async () => {
   const page = await openLab();
@@ -306,7 +306,7 @@ test('a preset without a note prints no "null" in the rule panel', async () => {
   assert.deepEqual(page.problems, []);
 });
 
-// Issue 18: C^-1 as lecture 004 says it ("the joint is discontinuous, V1(1) != V2(0)"), the gap
+// C^-1 as lecture 004 says it ("the joint is discontinuous, V1(1) != V2(0)"), the gap
 // relative to the size of the two segments: 2 max |Q - c| over their 8 control points, c the
 // centroid (docs/api-curves.md), recomputed here from the page's state.
 function expectedGap(points) {
@@ -337,7 +337,7 @@ function checkGap(s, { j, text, verdict }) {
   assert.ok(Math.abs(shown / (100 * want.relative) - 1) < 5e-3, `shown ${shown}%, expected ${100 * want.relative}%`);
 }
 
-test('issue 18: in free mode a dragged end leaves a gap, and the lab says C-1 in the lecture\'s words', async () => {
+test('in free mode a dragged end leaves a gap, and the lab says C-1 in the lecture\'s words', async () => {
   const page = await openLab();
   await page.selectOption('#constraint', 'free');
   await page.waitForFunction(() => window.wingspline.state.constraint === 'free');
@@ -348,7 +348,7 @@ test('issue 18: in free mode a dragged end leaves a gap, and the lab says C-1 in
   assert.deepEqual(page.problems, []);
 });
 
-test('issue 18: the keyboard makes a gap too: ] to the start of Q2, arrows to move it', async () => {
+test('the keyboard makes a gap too: ] to the start of Q2, arrows to move it', async () => {
   const page = await openLab();
   await page.selectOption('#constraint', 'free');
   await page.waitForFunction(() => window.wingspline.state.constraint === 'free');
@@ -364,7 +364,7 @@ test('issue 18: the keyboard makes a gap too: ] to the start of Q2, arrows to mo
   checkGap(s, await gapCard(page));
 });
 
-test('issue 18: the gap preset starts at C-1', async () => {
+test('the gap preset starts at C-1', async () => {
   const page = await openLab();
   await choosePreset(page, 'gap');
   const s = await state(page);

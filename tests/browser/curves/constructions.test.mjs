@@ -198,7 +198,7 @@ test('the curvature comb of the exact circle: curvature 1/r, teeth towards the c
     assert.ok(Math.hypot(x + radius * radius * kx, y + radius * radius * ky) < 1e-9, `tooth ${j} points at the centre`);
   }
   // Drawn: a pixel on the line of the teeth's tips (inside the circle) has the comb colour.
-  // The first tooth whose tip no label covers (labels sit on top of the drawing, issue 18;
+  // The first tooth whose tip no label covers (labels sit on top of the drawing;
   // the app reports where: labelRects).
   const tip = await page.evaluate(() => {
     const { model, ctx } = window.wingspline;

@@ -9,7 +9,7 @@ import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
 import { openCurves, frame, chooseFamily, circlePreset } from '../../helpers/curves-page.mjs';
 
 const COORD_TOL = 1e-9;          // world units: a stored coordinate vs its expected value
-const CIRCLE_TOL = 1e-12;        // world units: NURBS circle points vs the radius (issue 5)
+const CIRCLE_TOL = 1e-12;        // world units: NURBS circle points vs the radius
 const DARK_SUM = 200;            // r+g+b below this is curve ink (light theme), not grid
 const env = useSiteAndBrowser();
 const openLesson = () => openCurves(env);
@@ -289,7 +289,7 @@ test('CSV exports of the samples and the blending functions', async () => {
   assert.deepEqual(page.problems, []);
 });
 
-// Issue 13 item 10. The canvas's box on the page and the handles' page positions, as the app reports them.
+// The canvas's box on the page and the handles' page positions, as the app reports them.
 const canvasBox = (page) => page.$eval('#stage', (c) => { const r = c.getBoundingClientRect(); return { left: r.left, top: r.top, right: r.right, bottom: r.bottom }; });
 const CLICK_TOL_PX = 1; // page px: a stored point is rounded to 1e-4 world units, far below a pixel at the default zoom
 

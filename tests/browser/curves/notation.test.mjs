@@ -1,4 +1,4 @@
-// Issue 18, the lectures' notation in the curve explorer: the matrix panel switches between
+// The lectures' notation in the curve explorer: the matrix panel switches between
 // decimals and the slides' exact form (1/6 [integers] for the uniform B-spline, 1/2 [...] for
 // Catmull-Rom) by keyboard and by pointer; the switch is state (undo, share links). The
 // expected integers are typed from lecture 003, never read from the page's own code.

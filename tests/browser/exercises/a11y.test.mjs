@@ -1,4 +1,4 @@
-// The exercise pages for everyone (issue 19): axe finds no serious or critical violation on the
+// The exercise pages for everyone: axe finds no serious or critical violation on the
 // gallery, on a lesson page playing an exercise of each kind (after a wrong check, with its
 // feedback and marked cells, and with the worked answer shown), and in the authoring dialog,
 // in the light and dark themes; every answer control has a name.

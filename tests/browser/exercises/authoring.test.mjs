@@ -1,4 +1,4 @@
-// "Make an exercise from this view" in every lesson (issue 19): for each kind a lesson offers,
+// "Make an exercise from this view" in every lesson: for each kind a lesson offers,
 // the dialog's suggestion, exported as a link, opens as a playable exercise of that kind with
 // no warning; a check that cannot be asked of the drawing is said in the dialog and nothing
 // is exported.

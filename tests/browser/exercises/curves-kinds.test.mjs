@@ -1,4 +1,4 @@
-// Exercise kinds 3, 4 and 5 (issue 19) in their lessons, answered right and wrong by pointer
+// Exercise kinds 3, 4 and 5 in their lessons, answered right and wrong by pointer
 // and keyboard: classify a joint and say why (continuity lab), compute a value by hand
 // (curve explorer: B₁,₃(1/2) = 3·(1/2)·(1/2)² = 3/8; P(1/2) of P0..P3 = (0,0), (1,2), (3,2),
 // (4,0) is (P0 + 3P1 + 3P2 + P3)/8 = (2, 1.5)), and shape a curve until it passes through a

@@ -1,4 +1,4 @@
-// Exercises in and out (issue 19): the gallery lists the site's exercises by lesson with the
+// Exercises in and out: the gallery lists the site's exercises by lesson with the
 // progress of this browser; an exercise made in a lesson ("Make an exercise") round-trips
 // through its JSON file (opened from the gallery) and through its link; a damaged file or
 // link is refused in one sentence naming the field, and the person's saved work is kept.

@@ -1,4 +1,4 @@
-// Exercises that go wrong (issue 19, review findings): nothing the person saved is lost or
+// Exercises that go wrong (review findings): nothing the person saved is lost or
 // hidden, nothing gives the answer away, and the page says what happened.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';

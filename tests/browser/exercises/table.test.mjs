@@ -1,4 +1,4 @@
-// Exercise kind 1 (issue 19): the slide's winged-edge tables, filled in by a student. A right
+// Exercise kind 1: the slide's winged-edge tables, filled in by a student. A right
 // answer in ANOTHER numbering (the slide's edges renumbered backwards, e5 walked the other
 // way) typed cell by cell from the keyboard is accepted; one wrong cell is named with its
 // row and column and marked; the worked answer is shown on request. The answers are built

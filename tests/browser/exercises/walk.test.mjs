@@ -1,4 +1,4 @@
-// Exercise kind 2 (issue 19): predicting the CCW walk, step after step, in the mesh lesson,
+// Exercise kind 2: predicting the CCW walk, step after step, in the mesh lesson,
 // by keyboard and by pointer. The expected walks are read off lecture 000's printed tables by
 // the lecture's own rule (tests/helpers/lecture-slide.mjs), not from the app.
 import { test } from 'node:test';

@@ -1,4 +1,4 @@
-// Export and import (issue 8), for every ready lesson and the fixture lesson: the JSON file
+// Export and import, for every ready lesson and the fixture lesson: the JSON file
 // is the documented envelope (docs/state-format.md) and imports back to the identical state,
 // numbers bit for bit; SVG and PNG figures and the lesson's own exports download; JSON is
 // imported by the file picker and by drag and drop; a hostile file name and contents are
@@ -117,7 +117,7 @@ describe('Classroom fixture: lesson exports', () => {
   });
 });
 
-// Issue 13, item 12: an imported mesh of 20,000 vertices or more used to make the link and
+// An imported mesh of 20,000 vertices or more used to make the link and
 // the saved state too long to read back, and the lecture mesh was saved over it. Imported
 // meshes are now kept in IndexedDB by content hash and the state refers to them.
 // A grid of nx x ny vertices as OFF text, coordinates with many digits (so the file does
@@ -148,7 +148,7 @@ const meshSummary = (page) => page.evaluate(() => ({
   V: window.wingspline.model.V, F: window.wingspline.model.F,
 }));
 
-describe('Mesh: imported meshes are kept (issue 13, item 12)', () => {
+describe('Mesh: imported meshes are kept', () => {
   const meshUrl = () => new URL('mesh.html', env.site.url).href;
 
   test('a 25,600-vertex OFF imported with the file chooser is still there after a reload', async () => {

@@ -1,4 +1,4 @@
-// The mesh file import path against script-bearing input (issue 9, "no HTML is ever built
+// The mesh file import path against script-bearing input ("no HTML is ever built
 // from URL, file or user text"). The classroom tests cover hostile names of JSON state
 // files and tampered share links on every lesson; this file covers what only the mesh
 // lesson has: OFF/OBJ files whose name, tokens and validation report carry markup, shown
@@ -81,7 +81,7 @@ test('markup inside an OFF or OBJ file reaches the message only as quoted text',
   await assertNothingRan(page);
 });
 
-// Issue 13, item 23: a valid 40,000-triangle fan (1.7 MB OFF) whose hub is vertex 1 (the
+// A valid 40,000-triangle fan (1.7 MB OFF) whose hub is vertex 1 (the
 // walk's vertex after an import): its walk has 40,003 frames. Each frame used to copy the
 // "found so far" list (memory quadratic in the steps), which crashed the tab. Imported
 // through the file input and stepped with the keyboard as a person would.

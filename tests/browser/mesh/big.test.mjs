@@ -1,4 +1,4 @@
-// Big meshes in the page (issue 17): the WebGL2 picture equals the 2D canvas's on the slides'
+// Big meshes in the page: the WebGL2 picture equals the 2D canvas's on the slides'
 // mesh, picking stays exact on a 100,000-face sphere, the walk on it zooms to its vertex,
 // and a browser without WebGL2 gets the 2D canvas and a note that says so.
 import { test } from 'node:test';

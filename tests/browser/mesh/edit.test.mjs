@@ -1,4 +1,4 @@
-// Editing the winged edge in the mesh lesson (issue 15), driven as a student would: pick an
+// Editing the winged edge in the mesh lesson, driven as a student would: pick an
 // edge on the canvas with the pointer, split it, step through the pointer assignments, undo
 // and redo, reload from the share link; flip an edge and flip it back. The expected tables
 // are worked out by hand from lecture 000's conventions (tests/native has the same cases for

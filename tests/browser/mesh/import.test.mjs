@@ -1,4 +1,4 @@
-// Issue 17, import: a mesh file is read, parsed and checked off the page (a worker) with a
+// Import: a mesh file is read, parsed and checked off the page (a worker) with a
 // progress bar naming the stage and a Cancel button; cancelling (pointer or Escape) leaves
 // the previous mesh, its drawing and tables; a file over the limits is refused with the figure
 // and the limit, and the saved work is kept; a 200,000-face import survives a reload. The

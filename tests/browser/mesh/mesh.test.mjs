@@ -239,7 +239,7 @@ test('a 15 x 15 grid: every vertex has its disc; labels only where they fit, non
   await page.press('#grid-ny', 'Enter');
   await page.waitForFunction(() => window.wingspline.model.F === 450);
   // The figure as SVG (the same drawing code as the canvas): V = 16 x 16 vertex discs. Over
-  // LABEL_LIMIT = 400 faces: labelled by screen density (issue 17), so some labels of each
+  // LABEL_LIMIT = 400 faces: labelled by screen density, so some labels of each
   // kind but not all, and no two labels placed by density overlapping (boxes 10 px per
   // character plus 6 px wide, 18 px high, around the label's anchor). The walk's vertex and
   // its current edge are labelled whatever the density.
@@ -432,7 +432,7 @@ test('presentation mode, dark theme and a 1280 x 720 projector keep the page who
   assert.deepEqual(page.problems, []);
 });
 
-// Issue 13 item 11: the 3D view turns about the mesh's centre, and says when the walk is seen
+// The 3D view turns about the mesh's centre, and says when the walk is seen
 // from behind (its CCW order then looks clockwise on screen).
 const YAW_PER_PX = 0.01; // radians per CSS pixel of a rotating drag (panels.js)
 async function dragEmptyCanvas(page, dx) {
@@ -487,7 +487,7 @@ test('3D view: a half turn by dragging keeps the mesh in the canvas and says it 
   assert.deepEqual(page.problems, []);
 });
 
-// Issue 14: the vertex table stores one of v2's edges (the slide: e6); a person chooses e3
+// The vertex table stores one of v2's edges (the slide: e6); a person chooses e3
 // in the winged-edge tab. The row changes, the walk starts there (CCW from e3: e3, e2, e6,
 // e5), undo restores e6, and a reload and a share link keep the choice.
 test('choosing another stored edge for v2 changes its table row and the walk; undo, reload and a link keep it', async () => {
@@ -550,7 +550,7 @@ test('choosing the stored edge of a face: F2 stores e5, its walk starts there', 
   assert.deepEqual(page.problems, []);
 });
 
-// Issue 18: dragging a vertex moves it and leaves the walk where it was; a click (press and
+// Dragging a vertex moves it and leaves the walk where it was; a click (press and
 // release without moving) makes the vertex the walk's.
 test('dragging v3 moves it without changing the walk\'s vertex; clicking v3 makes it the walk\'s vertex', async () => {
   const page = await openLesson();
@@ -572,7 +572,7 @@ test('dragging v3 moves it without changing the walk\'s vertex; clicking v3 make
   assert.deepEqual(page.problems, []);
 });
 
-// Issue 18: a message goes when it goes stale. A refusal stays while nothing else changed
+// A message goes when it goes stale. A refusal stays while nothing else changed
 // and is cleared by the next accepted change; a message shown for that change stays.
 test('a refusal goes once a later change is accepted, not before', async () => {
   const page = await openLesson();

@@ -1,4 +1,4 @@
-// The winged-edge walk on a 390x844 phone, stepped with a finger (issue 18). The tables are
+// The winged-edge walk on a 390x844 phone, stepped with a finger. The tables are
 // far below the walk's buttons there, so the row the walk reads is shown under the
 // narration: at every step of both walks it is on screen, it is the same row as the edge,
 // vertex or face table's highlighted one (same cells, same cell read), and stepping moves

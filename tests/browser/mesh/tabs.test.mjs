@@ -1,4 +1,4 @@
-// Every table tab of the mesh lesson on a big mesh (issue 17): each table is windowed (a
+// Every table tab of the mesh lesson on a big mesh: each table is windowed (a
 // bounded number of rows in the DOM whatever the mesh), tells assistive technology how many
 // rows the whole table has and where each drawn row sits in it, can be scrolled to its end
 // from the keyboard, and its last rows then show what the core's own tables hold (read here
@@ -221,7 +221,7 @@ test('walking around the south pole of the big sphere keeps the highlighted edge
   assert.deepEqual(page.problems, []);
 });
 
-// Issue 18: query cost and storage against mesh size, as a picture and as numbers; the
+// Query cost and storage against mesh size, as a picture and as numbers; the
 // lecture mesh's default query says where the winged edge reads more than the small tables.
 test('the queries and storage tabs plot the core\'s figures against mesh size; the small mesh\'s exception is said', async () => {
   const page = await env.openLesson(`${env.site.url}mesh.html`);

@@ -1,9 +1,9 @@
-// Offline and hosting (issue 8): after the first visit dist/ works offline (the service
+// Offline and hosting: after the first visit dist/ works offline (the service
 // worker precaches every file, the wasm included), from any sub-path of a static host, and
 // a new build (the manifest's hash changes) replaces the cache.
-// Trust (issue 13): two deployments on one origin keep their own caches (item 13); every
+// Trust: two deployments on one origin keep their own caches; every
 // cached file is checked against the SHA-256 in the manifest at install and when served,
-// and pages come from the network first (item 25).
+// and pages come from the network first.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import crypto from 'node:crypto';
@@ -128,7 +128,7 @@ test('a new build replaces the offline cache', async () => {
     const { context, page } = await openControlled(site.url);
     const first = writeServiceWorkerManifest(root).version;
     assert.deepEqual(await page.evaluate(() => caches.keys()), [`wingspline:/:${first}`]);
-    // Caches of the worker before issue 13 were named by version only: the one holding this
+    // Caches of older workers were named by version only: the one holding this
     // scope's start page is this site's and goes with the update, any other stays.
     await page.evaluate(async () => {
       const mine = await caches.open('wingspline-0123456789abcdef');

@@ -1,4 +1,4 @@
-// Every page, live in Chromium (issue 9): the CSP meta is present and strict, the page
+// Every page, live in Chromium: the CSP meta is present and strict, the page
 // runs under it without a single violation (so the wasm core needs no 'unsafe-eval'), no
 // inline script exists in the live DOM, and the policy is really enforced: an inline
 // script, an inline handler and eval injected into the page do not run.

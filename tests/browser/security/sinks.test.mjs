@@ -1,4 +1,4 @@
-// Security of the site's sources (issue 8): no innerHTML/outerHTML/insertAdjacentHTML/
+// Security of the site's sources: no innerHTML/outerHTML/insertAdjacentHTML/
 // document.write anywhere in web/ (markup from links and files could otherwise run), and
 // every page carries the strict CSP: no inline script or style, no remote origins, no
 // 'unsafe-eval' (embind is built with -sDYNAMIC_EXECUTION=0).

@@ -1,4 +1,4 @@
-// Accessible and secure (issue 8): axe-core finds no serious or critical violation on any
+// Accessible and secure: axe-core finds no serious or critical violation on any
 // page (landing, every ready lesson, the fixture; light, dark and presentation mode); the
 // keyboard alone reaches a control point, moves it, and types exact coordinates, and a
 // screen reader hears where it is; the key map opens with ?; presentation mode hides the
@@ -115,7 +115,7 @@ for (const lesson of lessonsUnderTest) {
       const visible = await page.$$eval('.advanced', (els) => els.filter((e) => e.getClientRects().length > 0).length);
       assert.equal(visible, 0, 'advanced controls are hidden');
       for (const action of ['undo', 'present', 'keys']) assert.ok(await page.isVisible(`[data-action=${action}]`), `${action} stays`);
-      // The type follows the screen's height (site.css, issue 18): 8 px + 1.3% of the rows,
+      // The type follows the screen's height (site.css): 8 px + 1.3% of the rows,
       // at least 18 and at most 24 px; 18.4 px on this 800-row window (17 px when not presenting).
       const size = await page.evaluate(() => parseFloat(getComputedStyle(document.documentElement).fontSize));
       assert.ok(Math.abs(size - Math.min(24, Math.max(18, 8 + 0.013 * 800))) < 0.1, `large type (${size}px)`);

@@ -1,4 +1,4 @@
-// Booting a page (issue 13, item 14): while the geometry core loads, the page says so in an
+// Booting a page: while the geometry core loads, the page says so in an
 // accessible status line; when the wasm file cannot be loaded (missing, not WebAssembly) the
 // page says what is wrong and what to check, never Emscripten's raw "Aborted(...)" text.
 // The wasm request is answered by playwright's page.route; the service worker is blocked so

@@ -1,4 +1,4 @@
-// The embed mode (issue 19, "Embed"), from a SECOND origin: a host page on another port of
+// The embed mode, from a SECOND origin: a host page on another port of
 // 127.0.0.1 (cross-origin, and the same site, so the frame shares the full app's local
 // storage: an embed that wrote its state would write over the person's saved work, which is
 // what this file checks it never does) holds the lesson in an 800 x 500 iframe.

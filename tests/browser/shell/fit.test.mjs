@@ -1,4 +1,4 @@
-// The Fit button on every lesson's canvas (issue 18, "a phone"): one button of the page
+// The Fit button on every lesson's canvas (for a phone): one button of the page
 // skeleton, on the canvas's corner, named for assistive technology, 44 x 44 CSS px or more on
 // a phone; a tap (phone), a click or the keyboard (desktop) brings every handle back inside
 // the canvas after the view was moved away. Where the handles are is asked of the app.

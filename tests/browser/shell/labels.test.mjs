@@ -1,4 +1,4 @@
-// Labels on every canvas of every lesson (issue 18, projector section), at 1920x1080 and
+// Labels on every canvas of every lesson (readable on a projector), at 1920x1080 and
 // 1280x720 in presentation mode and on a 390x844 touch phone, in the default state and in
 // crowded ones: the app reports every label it drew in the last frame (client px boxes with
 // their text and font size, window.wingspline.labelRects) and its legends

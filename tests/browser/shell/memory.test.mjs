@@ -1,4 +1,4 @@
-// Memory over time in the browser (issue 9): dragging a control point for 10,000 moves on
+// Memory over time in the browser: dragging a control point for 10,000 moves on
 // the curve explorer, and 1,000 steps of the winged-edge traversal on a 10,000-face mesh,
 // leave the wasm heap, the wasm memory, the DOM and the JavaScript heap where they were.
 //

@@ -1,4 +1,4 @@
-// New points appear inside the view (issue 18, "a phone"): whenever a person adds points
+// New points appear inside the view (for a phone): whenever a person adds points
 // (continuity "Add segment", comparison "Add a segment", the curve explorer's "Add point",
 // the surfaces' second patch), every handle is on the canvas afterwards, on a 390 x 844
 // phone (a narrow view) and at 1280 x 720; also when the person had zoomed in on part of the

@@ -1,5 +1,5 @@
-// Issue 18, items "parentheses in P(u) no taller than a row" and "no internal ids in
-// headings": every lesson is walked as a person would (each family chosen in turn, each
+// Parentheses in P(u) no taller than a row, and no internal ids in
+// headings: every lesson is walked as a person would (each family chosen in turn, each
 // matrix form, each scene), and at every stop
 //  - the brackets of a function application, P(u), Q(t), p(u, v), and of a row vector are
 //    at most 1.5 x the line height of their formula (a non-stretchy bracket is about one

@@ -1,5 +1,5 @@
 // Every lesson on a phone: it loads, draws, keeps every control reachable without
-// horizontal scrolling of the page, and logs nothing (issue 18: the mesh lesson was 405 px
+// horizontal scrolling of the page, and logs nothing (the mesh lesson was 405 px
 // wide at 390, its one-column grid grown by its widest content).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';

@@ -1,4 +1,4 @@
-// Every lesson on a projector (issue 18): presentation mode at 1920x1080 and 1280x720.
+// Every lesson on a projector: presentation mode at 1920x1080 and 1280x720.
 // The page is exactly the screen (nothing below the fold, nothing to the right), the type
 // follows the screen's height (22 CSS px at 1080 rows, 18 at 720), the drawing is whole on
 // screen, and no table, matrix or formula in the side column is cut off, with every panel

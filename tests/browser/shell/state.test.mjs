@@ -1,4 +1,4 @@
-// Share and keep (issue 8), for every ready lesson and the fixture lesson: the state
+// Share and keep, for every ready lesson and the fixture lesson: the state
 // survives a reload exactly, a link reproduces it in a fresh browser context, and the back
 // button leaves the page instead of undoing edits. Tampered links: shell/tampered-links.test.mjs
 // (its own file so the two run side by side).
@@ -96,7 +96,7 @@ for (const lesson of lessonsUnderTest) {
       assert.deepEqual(await stateBits(page), edited, 'forward comes back to the edited state');
     });
 
-    // Issue 13, item 18: opening a link must not throw the saved work away.
+    // Opening a link must not throw the saved work away.
     test('opening a share link keeps the previous work: undo and "Restore" bring it back', async () => {
       const { link, linked } = await linkFromAnotherBrowser(lesson);
       const other = await newContext();
@@ -143,7 +143,7 @@ for (const lesson of lessonsUnderTest) {
       assert.deepEqual(await stateBits(page), mine, 'and it is still the saved work');
     });
 
-    // Issue 13, item 24: a link pasted into the address bar of a tab showing the lesson.
+    // A link pasted into the address bar of a tab showing the lesson.
     test('a link pasted into an open tab is followed, and undo returns to the work before it', async () => {
       const { link, linked } = await linkFromAnotherBrowser(lesson);
       const page = await env.openLesson(new URL(lesson.page, env.site.url).href);
@@ -206,7 +206,7 @@ describe('Classroom fixture: older links', () => {
   });
 });
 
-// Issue 13, item 19: local storage full (another page of the origin, a big import).
+// Local storage full (another page of the origin, a big import).
 describe('Classroom fixture: storage full', () => {
   test('edits that can no longer be saved locally are said once, and the link keeps them', async () => {
     const context = await newContext();
@@ -249,7 +249,7 @@ describe('Classroom fixture: storage full', () => {
   });
 });
 
-// Issue 13, item 22: a value the state format would refuse on reload is refused where it
+// A value the state format would refuse on reload is refused where it
 // is typed, with a message, and the old value stays.
 describe('Values are checked where they enter with the limits of the state format', () => {
   test('the point inspector refuses x = 5e9 and keeps the old value; 1e9 is accepted', async () => {

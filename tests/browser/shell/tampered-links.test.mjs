@@ -1,4 +1,4 @@
-// Tampered share links (issue 8), for every ready lesson and the fixture lesson: each gives
+// Tampered share links, for every ready lesson and the fixture lesson: each gives
 // one line of message, a working page at the default (or the valid part), and nothing
 // executed. Split from shell/state.test.mjs so the two files run side by side.
 import { test, describe, before } from 'node:test';

@@ -1,4 +1,4 @@
-// Fingers on the drawing of every lesson, on a 390 x 844 phone (issue 18, "a phone"): one
+// Fingers on the drawing of every lesson, on a 390 x 844 phone: one
 // finger scrolls the page unless it starts on a handle; a finger on a handle drags it and
 // the page stays; two fingers pan (their midpoint) and zoom (their distance) the drawing
 // about their midpoint, and the page stays. Real touch sequences through the browser's input
@@ -154,7 +154,7 @@ for (const { id, page: file } of lessons.filter((l) => l.ready)) {
   });
 }
 
-// Issue 18: dragging must not silently change the walk's vertex. A pinch whose first finger
+// Dragging must not silently change the walk's vertex. A pinch whose first finger
 // lands on a mesh vertex is a gesture on the view: the walk keeps its vertex. Failed before:
 // the vertex under the first finger became the walk's vertex when the fingers lifted.
 test('mesh: a pinch that starts on a vertex zooms and leaves the walk\'s vertex alone', async () => {

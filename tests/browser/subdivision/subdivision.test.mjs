@@ -1,4 +1,4 @@
-// The subdivision lesson (issue 16), driven as a student would: one Loop step of the
+// The subdivision lesson, driven as a student would: one Loop step of the
 // tetrahedron phase by phase with the keyboard, the pointer and the presenter keys; a level
 // the core refuses; the share link. Expected values are worked out by hand from Loop's rules
 // (lecture notes; docs/api-mesh.md "Subdivision"), never read from the page's own output:
@@ -318,7 +318,7 @@ test('the OFF export of a level reads back as that level\'s mesh', async () => {
 });
 
 
-// A finger on the canvas scrolls the page (issue 18), so a phone turns the mesh with the
+// A finger on the canvas scrolls the page, so a phone turns the mesh with the
 // turn and tilt sliders (arrow keys too). Failed before: there were no sliders.
 test('phone: the mesh turns with the turn and tilt sliders', async () => {
   const page = await env.openLesson(`${env.site.url}subdivision.html`, { viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true });

@@ -1,4 +1,4 @@
-// Issue 18: the surfaces lesson names the matrix it shows correctly. The formula writes
+// The surfaces lesson names the matrix it shows correctly. The formula writes
 // u^T = [u^3 u^2 u 1] (descending powers, lectures 000 and 003), so the M it shows must be
 // that convention's matrix; lecture 002 derives M_B and M_H for u = (1, u, u^2, u^3), i.e.
 // the same matrices with the rows in the opposite order. The expected matrices are computed

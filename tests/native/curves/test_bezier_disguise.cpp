@@ -1,4 +1,4 @@
-// Issue 18, item 5: lecture 002, "cubic b-spline -> cubic Bezier curve {0,0,0,0,1,1,1,1}".
+// Lecture 002, "cubic b-spline -> cubic Bezier curve {0,0,0,0,1,1,1,1}".
 // is_bezier_in_disguise says when a B-spline is exactly the Bezier curve of its control
 // points; checked against the evaluator (the B-spline and the Bezier curve on the same
 // points, at the same relative parameters), never against the function itself.

@@ -1,4 +1,4 @@
-// Issue 13 ("Trust"), items 2, 3, 4 and 15: joint continuity that does not depend on the
+// Trust: joint continuity that does not depend on the
 // scale, position or orientation of the drawing; what each lecture's wording of G^n says;
 // curvature that is undefined (not 0) where P' = 0 and right at any scale; arc length that
 // terminates on any finite input.
@@ -404,7 +404,7 @@ TEST_CASE("arc length terminates and is right near 1e308, 1e-308, for subnormals
     }
 }
 
-// Issue 18: C^-1 (lecture 004: "the joint is discontinuous, V1(1) != V2(0)") with the gap
+// C^-1 (lecture 004: "the joint is discontinuous, V1(1) != V2(0)") with the gap
 // measured relative to the size of the curves: twice the largest distance of a control point
 // of either curve from the centroid of all of them, which no rotation or shift changes and a
 // scaling multiplies.

@@ -1,4 +1,4 @@
-// The comparison lesson's measurements in the core (issue 14 item 5): convex hull, maps of the
+// The comparison lesson's measurements in the core: convex hull, maps of the
 // plane, distances, and the table's checks. Expected values are analytic (lecture formulas)
 // or recomputed independently here (brute-force hulls in exact integer arithmetic, the map's
 // matrix multiplied out by hand); thousands of seeded random cases for the general rules,

@@ -1,4 +1,4 @@
-// The curve explorer's overlays in the core (issue 14 item 5): the curvature comb against a
+// The curve explorer's overlays in the core: the curvature comb against a
 // circle's analytic curvature vector, and the homogeneous lift of a NURBS's control points.
 #include "curves_fixtures.h"
 

@@ -1,4 +1,4 @@
-// Issue 18: the derivations of the cubic families in exact rational arithmetic, checked
+// The derivations of the cubic families in exact rational arithmetic, checked
 // against the lectures' matrices (000/003: M_H, M_B, M_BS) and by independent recomputation.
 #include <catch2/catch.hpp>
 

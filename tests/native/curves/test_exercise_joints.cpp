@@ -1,4 +1,4 @@
-// Issue 19, exercise kinds 3 and 5 (joints): thousands of joints built from the definitions
+// Exercise kinds 3 and 5 (joints): thousands of joints built from the definitions
 // (lectures 000, 002, 004) with every statement of jointReasons() decided by the
 // construction; the checker's verdict and 'why' must match it, every wrong class or tick is
 // refused with its own field, and nothing changes when the drawing is scaled, turned or moved.

@@ -1,4 +1,4 @@
-// Issue 19, exercise kind 5, "make the curve pass through a point": the closest point of a
+// Exercise kind 5, "make the curve pass through a point": the closest point of a
 // curve against analytic distances (a circle: | |X - c| - r |; a line segment: the distance to
 // the segment), the verdict relative to the control polygon's size, and its invariance
 // under scaling, rotation and translation.

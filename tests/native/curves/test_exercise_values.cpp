@@ -1,4 +1,4 @@
-// Issue 19, exercise kind 4 (compute a value by hand): the expected values against the
+// Exercise kind 4 (compute a value by hand): the expected values against the
 // lectures' formulas (Bernstein polynomials, the uniform cubic B-spline's 1/6 (1, 4, 1), the
 // slide's Bezier matrix, Boehm's rule recomputed in exact rational arithmetic), the worked
 // lines, the verdict within the stated tolerance, and the errors.

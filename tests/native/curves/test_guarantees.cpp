@@ -1,4 +1,4 @@
-// What each representation guarantees for every control polygon (issue 13 item 8), against
+// What each representation guarantees for every control polygon, against
 // the comparison tables of lecture 003 (Hermite, Bezier, B-spline, Catmull-Rom) and lecture
 // 001 (non-uniform B-spline), and against the joint classifier on random polygons: a
 // generic polygon has exactly the guaranteed continuity, never less.

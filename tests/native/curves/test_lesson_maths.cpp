@@ -1,4 +1,4 @@
-// Issue 14 item 5: the mathematics that lived in the curve lessons' JavaScript, now in the
+// The mathematics that lived in the curve lessons' JavaScript, now in the
 // core: knot vector presets (lecture 002, open/clamped and uniform knots), the segment that
 // holds a parameter, and the continuity constraints kept while a control point is dragged
 // (lecture 001 "Achieving Continuity", lecture 002 "C^n and G^n"). Checked against the

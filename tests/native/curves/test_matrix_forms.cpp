@@ -1,4 +1,4 @@
-// Issue 18, the lectures' notation: the three ways the lectures write one cubic basis matrix.
+// The lectures' notation: the three ways the lectures write one cubic basis matrix.
 //   descending (000, 003): P(u) = [u^3 u^2 u 1] M G
 //   ascending  (002):      p(u) = u^T C, u = (1, u, u^2, u^3), C = M g
 //   transposed (001):      Q(t) = G M T, T = [t^3 t^2 t 1]^T a column

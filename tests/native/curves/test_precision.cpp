@@ -1,4 +1,4 @@
-// Issue 13 ("Trust"), items 1, 5 and 16: polynomial interpolation at any offset and scale,
+// Trust: polynomial interpolation at any offset and scale,
 // NURBS weights at any scale, and a linear-time conversion of B-splines to Bezier segments.
 // Every expected value is recomputed independently here (de Casteljau in the test, the
 // a-priori rounding bound of the monomial form, the weights' invariance under scaling).
@@ -85,9 +85,9 @@ std::vector<double> random_values(std::mt19937_64& rng, int count, int dim) {
 
 } // namespace
 
-// ------------------------------------------------------------------ item 1: interpolation
+// ------------------------------------------------------------------ interpolation
 
-TEST_CASE("interpolation: any distinct nodes have an interpolant (issue 13.1)", "[curves][interpolation][trust]") {
+TEST_CASE("interpolation: any distinct nodes have an interpolant", "[curves][interpolation][trust]") {
     const std::vector<double> pts = {0, 1, 1, 3, 2, 0, 3, 2};
     SECTION("nodes 300..303 and 0, 1e-6, 2e-6, 3e-6 are accepted and interpolated") {
         for (const std::vector<double>& nodes : {std::vector<double>{300, 301, 302, 303}, std::vector<double>{0, 1e-6, 2e-6, 3e-6}}) {
@@ -121,7 +121,7 @@ TEST_CASE("interpolation: any distinct nodes have an interpolant (issue 13.1)", 
     }
 }
 
-TEST_CASE("interpolation passes through its data at random offsets and scales (property, issue 13.1)",
+TEST_CASE("interpolation passes through its data at random offsets and scales (property)",
           "[curves][interpolation][trust]") {
     std::mt19937_64 rng(20240613);
     std::uniform_int_distribution<int> count(2, kMaxInterpolationPoints);
@@ -183,7 +183,7 @@ TEST_CASE("interpolation: segmentMatrices' C agrees with evaluation to the round
     }
 }
 
-// ------------------------------------------------------------------ item 5: NURBS weights
+// ------------------------------------------------------------------ NURBS weights
 
 namespace {
 
@@ -207,7 +207,7 @@ Curve random_nurbs(std::mt19937_64& rng, bool bezier) {
 
 } // namespace
 
-TEST_CASE("NURBS: weights w and c w give the same curve for c from 1e-320 to 1e300 (issue 13.5)",
+TEST_CASE("NURBS: weights w and c w give the same curve for c from 1e-320 to 1e300",
           "[curves][nurbs][trust]") {
     // c = 2^e, e in [-1074, 1019], weights integers 1..16: c w is exact (subnormal too), so
     // the two curves are the same curve and must agree to rounding (kSameCurve, relative to
@@ -260,7 +260,7 @@ TEST_CASE("NURBS: weights w and c w give the same curve for c from 1e-320 to 1e3
     }
 }
 
-TEST_CASE("NURBS: a uniform weight cancels at every magnitude (issue 13.5)", "[curves][nurbs][trust]") {
+TEST_CASE("NURBS: a uniform weight cancels at every magnitude", "[curves][nurbs][trust]") {
     const Curve plain = clamped_with_double_knot();
     const std::vector<double> u = linspace(0, 5, 41);
     const std::vector<double> expected = evaluate_curve_all(plain, u, 2);
@@ -278,7 +278,7 @@ TEST_CASE("NURBS: a uniform weight cancels at every magnitude (issue 13.5)", "[c
     }
 }
 
-TEST_CASE("NURBS: weights whose ratio leaves the range of double are refused (issue 13.5)", "[curves][nurbs][trust]") {
+TEST_CASE("NURBS: weights whose ratio leaves the range of double are refused", "[curves][nurbs][trust]") {
     Curve c = clamped_with_double_knot();
     c.kind = CurveKind::Nurbs;
     c.weights = {1, 1, 1e300, 1, 1, 1, 1e-10, 1};
@@ -289,7 +289,7 @@ TEST_CASE("NURBS: weights whose ratio leaves the range of double are refused (is
     for (double v : evaluate_curve(c, linspace(0, 5, 21))) CHECK(std::isfinite(v));
 }
 
-// ------------------------------------------------------------------ item 16: B-spline -> Bezier
+// ------------------------------------------------------------------ B-spline -> Bezier
 
 namespace {
 
@@ -343,7 +343,7 @@ Curve random_spline(std::mt19937_64& rng) {
 
 } // namespace
 
-TEST_CASE("bsplineToBezier: every segment is the B-spline on its span (property, issue 13.16)", "[curves][bspline][trust]") {
+TEST_CASE("bsplineToBezier: every segment is the B-spline on its span (property)", "[curves][bspline][trust]") {
     std::mt19937_64 rng(16);
     for (int trial = 0; trial < 1500; ++trial) {
         const Curve c = random_spline(rng);
@@ -375,7 +375,7 @@ TEST_CASE("bsplineToBezier: every segment is the B-spline on its span (property,
     }
 }
 
-TEST_CASE("bsplineToBezier does work linear in the number of control points (issue 13.16)", "[curves][bspline][trust]") {
+TEST_CASE("bsplineToBezier does work linear in the number of control points", "[curves][bspline][trust]") {
     // The work counter counts control-point values copied or combined. Each span is
     // converted from its own p + 1 points and 2p knots, so the work per segment must not
     // grow with K (it did: every knot insertion copied the whole polygon).

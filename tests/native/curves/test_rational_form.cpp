@@ -1,4 +1,4 @@
-// Issue 18, the lectures' notation: a basis matrix written as the slides write it, one
+// The lectures' notation: a basis matrix written as the slides write it, one
 // fraction in front of a matrix of integers (1/6 [...] for the uniform B-spline, 1/2 [...]
 // for Catmull-Rom). The expected integer matrices are typed from the lecture text
 // (003_55ddbc47c7ee2ef3.txt and 002_5284cf65dc3cb6f3.txt), not from the code.

@@ -1,5 +1,5 @@
 #pragma once
-// Reading the malformed-input corpus of tests/corpus/ (issue 9) for the native hardening
+// Reading the malformed-input corpus of tests/corpus/ for the native hardening
 // tests. The wasm tests read the same files, so both layers check the same expectations.
 #include <fstream>
 #include <map>

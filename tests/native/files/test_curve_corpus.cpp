@@ -1,4 +1,4 @@
-// The malformed-curve corpus (issue 9), natively: every tests/corpus/curves/*.curve file
+// The malformed-curve corpus, natively: every tests/corpus/curves/*.curve file
 // gives its `expect` code with a message naming its `names` (the knot, point or degree it
 // blames), or, for `expect ok`, evaluates to finite values. The same files go through wasm
 // in tests/wasm/files/curve-corpus.test.mjs.

@@ -1,4 +1,4 @@
-// The malformed-mesh corpus (issue 9), natively: every file of tests/corpus/mesh/ gives
+// The malformed-mesh corpus, natively: every file of tests/corpus/mesh/ gives
 // exactly the outcome tests/corpus/mesh/expected.txt names (code, severity, and a message
 // naming the line or the elements), and nothing crashes or builds half a mesh. The same
 // files go through wasm in tests/wasm/files/mesh-corpus.test.mjs. Also here: a 50 MB file

@@ -1,4 +1,4 @@
-// Building in steps (issue 17): WingedEdgeBuild runs build()'s phases one per step(); the
+// Building in steps: WingedEdgeBuild runs build()'s phases one per step(); the
 // mesh it gives is build()'s, table for table, and a face set build() refuses is refused by
 // a step with the same report, after which the build is over.
 #include <catch2/catch.hpp>

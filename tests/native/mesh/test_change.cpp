@@ -1,4 +1,4 @@
-// The mesh's change model (issue 14): checked mutators (check_<op> changes nothing, <op>
+// The mesh's change model: checked mutators (check_<op> changes nothing, <op>
 // refuses what its check refuses and leaves the structure bit-identical), versions that move
 // exactly when something changed, change records, and the other representations derived
 // from the current winged edge equal to the ones built from scratch.

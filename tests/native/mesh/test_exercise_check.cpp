@@ -1,4 +1,4 @@
-// Exercise kind 1 (issue 19): the winged-edge table checker against lecture 000's own table and
+// Exercise kind 1: the winged-edge table checker against lecture 000's own table and
 // against correct tables made here, independently of the core, from the faces alone.
 #include <catch2/catch.hpp>
 
@@ -469,7 +469,7 @@ TEST_CASE("S and E written the other way round, the rest right: one finding says
     CHECK(worked_winged_edge_answer(f.offsets, f.corners, f.vertices, a).edges == slide_answer().edges);
 }
 
-// Review findings (issue 19): feedback never contradicts itself or the worked answer.
+// Review findings: feedback never contradicts itself or the worked answer.
 TEST_CASE("a row that is no edge, with an edge elsewhere missing: the reason claims only what was looked at", "[mesh][exercise]") {
     // Row e7 (v4-v5) replaced by v1-v2, which is e2's pair: every edge at v1 and v2 has its
     // row, but v4-v5 has none. Before, the reason said "every edge of the mesh already has its

@@ -1,4 +1,4 @@
-// Issue 15: the Euler operations on the winged edge (split edge, split face, join faces,
+// The Euler operations on the winged edge (split edge, split face, join faces,
 // flip, collapse, poke). The lecture example's tables after each operation are worked out
 // by hand below from lecture 000's conventions (L traverses S -> E; wing X-Y = the other
 // edge at X of the face on side Y, the boundary walked as a face), not read from the code.

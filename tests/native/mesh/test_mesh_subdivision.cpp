@@ -1,4 +1,4 @@
-// Issue 16: Loop and Catmull-Clark subdivision on the winged edge, and curve subdivision.
+// Loop and Catmull-Clark subdivision on the winged edge, and curve subdivision.
 // Expected values come from the formulas worked by hand (tetrahedron, cube: fractions
 // below), from an independent recomputation on the indexed face set (neighbours and faces
 // found by plain loops over the faces, not by the winged edge's walks), and from

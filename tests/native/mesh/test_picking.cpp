@@ -1,4 +1,4 @@
-// Picking and the display proxy of a big mesh (issue 17), against analytic answers: the face
+// Picking and the display proxy of a big mesh, against analytic answers: the face
 // of a unit-square grid under a point is floor(x) + nx floor(y); the nearest face of a sphere
 // seen along n is the one around the direction n; and both answers stay the same when the
 // mesh, the point and the radius are moved, turned and scaled together.

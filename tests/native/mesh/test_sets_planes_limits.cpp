@@ -1,6 +1,6 @@
-// Issue 13 (trust), mesh items: neighbours are a set in every representation (6), the cross
-// product plane uses the face's own first three corners (7), BOM and CRLF files read (17),
-// and one set of mesh limits enforced where values enter (22, 20).
+// Trust, for meshes: neighbours are a set in every representation, the cross product
+// plane uses the face's own first three corners, BOM and CRLF files read, and one set of
+// mesh limits enforced where values enter.
 #include <catch2/catch.hpp>
 
 #include "mesh/unrecorded.h"
@@ -219,7 +219,8 @@ TEST_CASE("property: on random meshes every representation answers every query w
         const IndexedMesh m = random_mesh(rng);
         REQUIRE(validate_indexed(m).ok());
         ++meshes;
-        // Count meshes where some pair of faces shares two or more edges (the case of item 6).
+        // Count meshes where some pair of faces shares two or more edges (where a list of
+        // neighbours would name a face twice).
         const WingedEdgeMesh w = WingedEdgeMesh::build(m);
         bool doubled = false;
         for (int32_t f = 0; f < w.face_count() && !doubled; ++f) {

@@ -1,4 +1,4 @@
-// The table descriptors (issue 14): every table's data is consistent with its description,
+// The table descriptors: every table's data is consistent with its description,
 // and read only through the descriptors (a small reader below that knows no table), the
 // lecture mesh gives lecture 000's tables entry for entry (the slide's text, copied from
 // /work/shared/lectures/000_*.txt into the strings below) and lecture 001's edge list.

@@ -1,4 +1,4 @@
-// What the 3D view asks the core (issue 13 item 11): the bounding box it turns about and the
+// What the 3D view asks the core: the bounding box it turns about and the
 // vertex normal that tells which side of the CCW walk is seen, against analytic values.
 #include <catch2/catch.hpp>
 

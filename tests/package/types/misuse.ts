@@ -1,4 +1,4 @@
-// Issue 19: the declarations (types/wingspline.d.ts) flag misuse as an editor would. Every
+// The declarations (types/wingspline.d.ts) flag misuse as an editor would. Every
 // line marked @ts-expect-error MUST be a type error: if a declaration grew so loose that the
 // misuse type-checks, tsc reports the unused directive and the `types` layer fails. The
 // correct uses beside them must type-check. Checked, never run (tsc --noEmit -p
@@ -87,7 +87,7 @@ export async function misuse(): Promise<void> {
   api.parseMesh({ file: 'mesh.obj' });
   // @ts-expect-error the csr layout has no faces list
   api.parseMesh('', { layout: 'csr' }).faces;
-  // Issue 19: checking a winged-edge table.
+  // Checking a winged-edge table.
   const slide = api.lectureExample();
   const check = api.checkWingedEdgeAnswer({ faces: slide.faces, vertexCount: 5 }, { edges: [], vertexEdges: [], faceEdges: [] });
   const firstField: string = check.findings[0]?.field ?? '';
@@ -97,7 +97,7 @@ export async function misuse(): Promise<void> {
   api.checkWingedEdgeAnswer({ faces: slide.faces, vertexCount: 5 }, { edges: [], vertexEdges: [] });
   // @ts-expect-error findings have a row, not an edge
   void check.findings[0].edge;
-  // Issue 19: the other tables and the walk.
+  // The other tables and the walk.
   const faces = api.checkMeshTableAnswer({ faces: slide.faces, vertexCount: 5 }, 'faces', { faces: [[0, 1, 2], [1, 3, 2], [1, 4, 3]] });
   const workedFaces: number[][] = faces.worked.faces;
   const list = api.checkMeshTableAnswer({ faces: slide.faces, vertexCount: 5 }, 'edge-list', { edges: [0, 1, 0, -1], polygons: [[0], [], []] });

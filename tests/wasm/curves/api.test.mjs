@@ -1,5 +1,5 @@
 // The JS contract of the curves API: shapes, strides, defaults, the lecture's matrices
-// through the public API, and errors as data (issue 5, docs/api-curves.md).
+// through the public API, and errors as data (docs/api-curves.md).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';

@@ -1,4 +1,4 @@
-// Issue 14 item 5 through the JS API: the comparison lesson's measurements and the convex
+// Through the JS API: the comparison lesson's measurements and the convex
 // hull, now in the core. Checked against independent recomputation here (brute-force
 // extreme points, the plane map written out), analytic values, and seeded random cases for
 // the general rules, including invariance under scaling, translation and rotation. Errors

@@ -1,4 +1,4 @@
-// Issue 13 ("Trust"), items 2, 3, 4, 15, 21 at the JS boundary: jointContinuity and curvature
+// Trust at the JS boundary: jointContinuity and curvature
 // at any scale, the lecture wordings of G^n, undefined curvature reported as such, and arc
 // length that returns on coordinates near 1e308 (docs/api-curves.md).
 import { test } from 'node:test';
@@ -13,7 +13,7 @@ const scaled = (points, s) => points.map((x) => x * s);
 const A = [0, 0, 1, 1, 2, 1, 3, 0];
 const KAPPA_A = 18 / 18 ** 1.5;
 
-test('item 21: a joint moved to 1e300 (as typed into the inspector) has a finite curvature', () => {
+test('a joint moved to 1e300 (as typed into the inspector) has a finite curvature', () => {
   for (const s of [1e300, 1e-300]) {
     const j = api.jointContinuity(bez(scaled(A, s)), bez(scaled([3, 0, 4, -1, 5, -3, 6, 0], s)));
     assert.ok(Number.isFinite(j.evidence.curvatureA), `scale ${s}: ${j.evidence.curvatureA}`);
@@ -34,7 +34,7 @@ test('item 21: a joint moved to 1e300 (as typed into the inspector) has a finite
   assert.deepEqual([j.parametric, j.geometric], [1, 1]);
 });
 
-test('item 2: the verdict does not change with the scale of the drawing', () => {
+test('the verdict does not change with the scale of the drawing', () => {
   for (const s of [1e-8, 1e-6, 1, 1e6, 1e8]) {
     const gap = api.jointContinuity(bez(scaled(A, s)), bez(scaled([3, 1e-4, 4, -1, 5, 0, 6, 1], s)));
     assert.equal(gap.parametric, -1, `a 1e-4 gap at scale ${s}`);
@@ -43,7 +43,7 @@ test('item 2: the verdict does not change with the scale of the drawing', () => 
   }
 });
 
-test('item 3: the lecture wordings of G^n come with the verdict', () => {
+test('the lecture wordings of G^n come with the verdict', () => {
   // B1 = A1, B2 = 2 A2: P'' in the same direction, the curvature doubles.
   const j = api.jointContinuity(bez(A), bez([3, 0, 4, -1, 5, -4, 6, 0]));
   const byId = Object.fromEntries(j.wordings.map((w) => [w.id, w]));
@@ -57,7 +57,7 @@ test('item 3: the lecture wordings of G^n come with the verdict', () => {
   for (const w of j.wordings) assert.ok(w.reason.length > 20 && w.wording.length > 10);
 });
 
-test('item 4: the curvature on a side with P\' = 0 is undefined (null), never 0', () => {
+test('the curvature on a side with P\' = 0 is undefined (null), never 0', () => {
   const j = api.jointContinuity(bez([0, 0, 1, 1, 3, 0, 3, 0]), bez([3, 0, 4, 1, 4, 2, 6, 1]));
   assert.equal(j.evidence.zeroTangentA, true);
   assert.equal(j.evidence.zeroTangentB, false);
@@ -70,7 +70,7 @@ test('item 4: the curvature on a side with P\' = 0 is undefined (null), never 0'
   assert.ok(Math.abs(p.curvature[0] / 2e150 - 1) < CURVATURE_REL);
 });
 
-test('item 15: arcLength returns (and is right) for coordinates near 1e308', () => {
+test('arcLength returns (and is right) for coordinates near 1e308', () => {
   const big = 1.5e308;
   const start = Date.now();
   const L = api.arcLength(bez([0, 0, big / 3, 0, 2 * (big / 3), 0, big, 0]));
@@ -79,9 +79,9 @@ test('item 15: arcLength returns (and is right) for coordinates near 1e308', () 
   assert.ok(Date.now() - start < 2000);
 });
 
-// Issue 18: C^-1 with the gap relative to the size of the pair (docs/api-curves.md): size =
+// C^-1 with the gap relative to the size of the pair (docs/api-curves.md): size =
 // 2 max |Q - c| over all control points, c their centroid, recomputed here from the points.
-test('issue 18: a gap is C-1 with its relative size, the same after scaling, turning and shifting', () => {
+test('a gap is C-1 with its relative size, the same after scaling, turning and shifting', () => {
   const a = [0, 0, 1, 1, 2, 1, 3, 0];
   const b = [3, 0.06, 4, -1, 5, 0, 6, 1];
   // centroid (3, 0.2575); the farthest point (6, 1); gap 0.06

@@ -1,4 +1,4 @@
-// Issue 18: api.cubicDerivation(family) over the real wasm module: the exact matrices of the
+// api.cubicDerivation(family) over the real wasm module: the exact matrices of the
 // derivation panel (docs/api-curves.md, "Derivations"), checked against the lectures' matrices
 // and by recomputation here in exact integer arithmetic (BigInt fractions).
 import { test } from 'node:test';

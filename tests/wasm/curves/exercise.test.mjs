@@ -1,4 +1,4 @@
-// Issue 19, exercise kinds 3, 4 and 5 at the JS boundary over the real module: the shapes the
+// Exercise kinds 3, 4 and 5 at the JS boundary over the real module: the shapes the
 // exercise player reads, values against the lectures' formulas, and every error code.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';

@@ -1,4 +1,4 @@
-// Guarantees of each representation for every control polygon (issue 13 item 8) through the
+// Guarantees of each representation for every control polygon through the
 // JS API, against the comparison tables of lecture 003 and lecture 001 (typed from the notes).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';

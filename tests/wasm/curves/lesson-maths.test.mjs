@@ -1,4 +1,4 @@
-// Issue 14 item 5 through the JS API: the segment holding a parameter, the knot vector
+// Through the JS API: the segment holding a parameter, the knot vector
 // presets and the continuity constraints that used to be computed in the curve lessons'
 // JavaScript. Checked against segmentMatrices' ranges, exact fractions, and the core's joint
 // classifier (jointContinuity) on random seeded chains.

@@ -1,4 +1,4 @@
-// Issue 18, the lectures' notation through the public API: the basis matrices as the slides
+// The lectures' notation through the public API: the basis matrices as the slides
 // write them (one fraction, integer entries), typed from lecture 003, and the segment
 // matrix's form (null when the matrix has no small common denominator).
 import { test } from 'node:test';
@@ -51,7 +51,7 @@ test('bezierSubdivisionMatrices at t = 1/2 carry lecture 002\'s G_B^L and G_B^R 
   assert.equal(api.bezierSubdivisionMatrices(3, Math.SQRT1_2).leftRational, null);
 });
 
-// Issue 18, item 1: lecture 002's ascending form (b(u) = M^T u with u = (1, u, u^2, u^3);
+// Lecture 002's ascending form (b(u) = M^T u with u = (1, u, u^2, u^3);
 // 002 prints M_s and the blending functions, typed here) and lecture 001's transposed one.
 const LECTURE_002 = {
   // columns: 002's b(u) = (2u^3 - 3u^2 + 1, -2u^3 + 3u^2, u^3 - 2u^2 + u, u^3 - u^2) expanded

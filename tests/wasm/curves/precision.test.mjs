@@ -1,4 +1,4 @@
-// Issue 13, items 1, 5 and 16 through the JS API: the interpolating polynomial and lecture
+// Through the JS API: the interpolating polynomial and lecture
 // 000's V^-1 against exact rational arithmetic (BigInt) at random offsets and scales, the
 // core's limits as the curve explorer reads them, NURBS weights at any magnitude, and the
 // Bezier segments of a long B-spline.

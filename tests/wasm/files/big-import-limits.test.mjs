@@ -1,4 +1,4 @@
-// Issue 17 (import): the import limit is raised to the largest mesh a school laptop holds
+// Import: the import limit is raised to the largest mesh a school laptop holds
 // (docs/api-mesh.md, "Import limits and memory": 2,000,000 faces and vertices), and a file
 // over it is refused from its OFF header, before the body is read.
 import { test } from 'node:test';

@@ -1,4 +1,4 @@
-// The malformed-curve corpus through wasm (issue 9): every tests/corpus/curves/*.curve file
+// The malformed-curve corpus through wasm: every tests/corpus/curves/*.curve file
 // gives its `expect` code from evaluateCurve (and evaluateDerivative), with a message naming
 // its `names`; the module keeps working after any number of them. The same files are checked
 // natively in tests/native/files/test_curve_corpus.cpp.

@@ -1,4 +1,4 @@
-// The malformed-mesh corpus through wasm (issue 9): every file of tests/corpus/mesh/ gives
+// The malformed-mesh corpus through wasm: every file of tests/corpus/mesh/ gives
 // the outcome tests/corpus/mesh/expected.txt names, through the public API (parseMesh,
 // validateMesh, buildMesh), with the code, the line or the elements in the message; the
 // module keeps working afterwards and no mesh is left alive. The same files are checked

@@ -1,4 +1,4 @@
-// Issue 17: the import worker's job (web/js/app/mesh-import-job.js) under Node, over the real
+// The import worker's job (web/js/app/mesh-import-job.js) under Node, over the real
 // core: a file over the byte limit is refused from its size without being read; an OFF file
 // whose header is over the limits is refused from its first piece, the body left unread; a
 // good file comes back as flat arrays equal to the core's own parse, with its imported value's

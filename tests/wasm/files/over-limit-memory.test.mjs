@@ -1,4 +1,4 @@
-// Issue 13, items 20 and 26: a file over the import limits is refused before it is copied
+// A file over the import limits is refused before it is copied
 // into the wasm memory, so refusing it neither takes seconds nor leaves hundreds of MB
 // allocated (wasm memory never shrinks). Its own file: node --test runs each file in its
 // own process, so the memory figures are this test's alone. The measure is the work done,

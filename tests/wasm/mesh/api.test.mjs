@@ -1,4 +1,4 @@
-// The mesh JS API contract (issue 3): shapes, typed arrays, 0-based indices, -1 = none,
+// The mesh JS API contract: shapes, typed arrays, 0-based indices, -1 = none,
 // errors with codes, disposal. Expected values come from lecture 000's slide tables.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -121,7 +121,7 @@ test('normals({into}) fills the caller\'s array with the same unit normals; a wr
   });
 });
 
-// Issue 17: buildMeshInSteps gives buildMesh's mesh, one phase of the core's build per step.
+// buildMeshInSteps gives buildMesh's mesh, one phase of the core's build per step.
 test('buildMeshInSteps: the phases in order, then the same tables as buildMesh; a refusal ends the build', () => {
   const live = api.liveMeshCount();
   const input = api.generateMesh('sphere', { slices: 12, stacks: 7, layout: 'csr' });

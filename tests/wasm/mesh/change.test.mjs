@@ -1,4 +1,4 @@
-// The mesh's change model through the JS API (issue 14): checked operations, change
+// The mesh's change model through the JS API: checked operations, change
 // records, mesh.version, and caches keyed on it (representations() after an operation
 // reflect it). Expected values come from lecture 000's slide tables.
 import { test } from 'node:test';

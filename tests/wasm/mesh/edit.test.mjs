@@ -1,4 +1,4 @@
-// Issue 15 through the JS API: the Euler operations (splitEdge, splitFace, joinFaces,
+// Through the JS API: the Euler operations (splitEdge, splitFace, joinFaces,
 // flipEdge, collapseEdge, pokeFace), mesh.check, change records read by their descriptor,
 // gaps and compact(), the exported file. Expected tables of the lecture example are worked
 // out by hand from lecture 000's conventions (the same as tests/native/test_mesh_euler.cpp).

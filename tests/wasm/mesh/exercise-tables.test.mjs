@@ -1,4 +1,4 @@
-// Issue 19, exercise kinds 1 and 2 over the real module: api.checkMeshTableAnswer for the face
+// Exercise kinds 1 and 2 over the real module: api.checkMeshTableAnswer for the face
 // table, the edge list and the adjacency lists (and the winged edge through the same entry
 // point), api.checkWalkStep for the CCW walk. The lectures' tables are written here as the
 // slides print them; other correct answers (renumbered, rotated, reversed) are made here from

@@ -1,4 +1,4 @@
-// Issue 19, exercise kind 1 over the real module: a student's winged-edge table for lecture
+// Exercise kind 1 over the real module: a student's winged-edge table for lecture
 // 000's mesh, checked by api.checkWingedEdgeAnswer. The slide's table is written here as the
 // slide prints it; renumbered and flipped copies are made here (a correct table in another
 // numbering), and the expected value of a corrupted cell is the slide's own

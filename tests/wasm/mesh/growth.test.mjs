@@ -1,4 +1,4 @@
-// Query cost and storage against mesh size (issue 18; web/js/lessons/mesh/growth.js): the
+// Query cost and storage against mesh size (web/js/lessons/mesh/growth.js): the
 // series the mesh lesson plots, from the core. Lecture 000's claim as a property of them: on
 // grids of growing size, the winged edge answers "faces around a vertex" of an interior
 // vertex (valence 6) reading the same number of entries at every size, while the independent

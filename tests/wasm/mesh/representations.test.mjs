@@ -1,5 +1,5 @@
-// The JS contract of the representation tables, storage and per-representation queries
-// (issue 3). Expected values come from lecture 000's and 001's tables and from counting.
+// The JS contract of the representation tables, storage and per-representation queries.
+// Expected values come from lecture 000's and 001's tables and from counting.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
@@ -12,7 +12,7 @@ const KINDS = ['faces-around-vertex', 'edges-around-vertex', 'edges-of-face', 'f
 const withMesh = (input, body) => withValidMesh(api, input, body);
 
 const sortedList = (a) => Array.from(a).sort((x, y) => x - y);
-// Rows are objects keyed by the descriptors' column names (issue 14): one column of them.
+// Rows are objects keyed by the descriptors' column names: one column of them.
 const column = (rows, name) => rows.map((row) => row[name]);
 const xyz = (rows) => rows.map(({ x, y, z }) => [x, y, z]);
 

@@ -1,7 +1,7 @@
-// Issue 13 (trust), mesh items through the JS API: neighbours are a set in every
-// representation (6), planes() uses the face's own first three corners and says which (7),
-// BOM and CRLF files read (17), and one set of limits (api.meshLimits) enforced where a
-// value enters (22). Over-limit files are refused without growing the wasm memory: in
+// Trust, for meshes, through the JS API: neighbours are a set in every
+// representation, planes() uses the face's own first three corners and says which,
+// BOM and CRLF files read, and one set of limits (api.meshLimits) enforced where a
+// value enters. Over-limit files are refused without growing the wasm memory: in
 // files/over-limit-memory.test.mjs (its own process, so the memory figures are its own).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -46,7 +46,7 @@ test('planes(): cross product from the face\'s own first three corners, reported
   }
 });
 
-test('planeArrays(): the planes as flat arrays, per face equal to planes() (issue 17: the planes table reads rows by window)', () => {
+test('planeArrays(): the planes as flat arrays, per face equal to planes() (the planes table reads rows by window)', () => {
   // The non-planar quad above: cross (0, -1, 1, 0) from P1 P2 P3; Newell (lecture 003, with
   // the 1/2) computed here: A = 1/2 sum (z_i + z_i+1)(y_i - y_i+1) = -1/2, B = -1/2, C = 1.
   const quad = api.buildMesh({ positions: [0, 0, 0, 1, 0, 0, 1, 1, 1, 0, 1, 0], faces: [[0, 1, 2, 3]] });

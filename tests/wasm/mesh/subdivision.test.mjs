@@ -1,4 +1,4 @@
-// Issue 16 through the JS API: api.subdivide, api.subdivisionSteps, api.limitPositions,
+// Through the JS API: api.subdivide, api.subdivisionSteps, api.limitPositions,
 // api.subdivideCurve. Expected values: the formulas worked by hand (tetrahedron, cube), an
 // independent recomputation from the face lists in this file (not the winged edge's
 // walks), invariants (counts, chi, validate, symmetry, similarity transforms, masks summing

@@ -1,4 +1,4 @@
-// The tables described once (issue 14): every representation read through the one generic
+// The tables described once: every representation read through the one generic
 // reader (mesh.tables + web/js/core/tables.js) gives the rows an independent recomputation
 // from the face list gives, here in the test (half-edges, boundary loops, the documented
 // orders); docs/api-mesh.md lists every descriptor's columns.

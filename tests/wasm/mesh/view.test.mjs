@@ -1,4 +1,4 @@
-// The 3D view's questions to the core through the JS API (issue 13 item 11): the bounding box
+// The 3D view's questions to the core through the JS API: the bounding box
 // it turns about and the vertex normal that tells which side of the CCW walk is seen.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -45,7 +45,7 @@ test('boundingBox and vertexNormal of a moved, scaled box', () => {
   }
 });
 
-// Issue 17: the face under the pointer, asked through the API (argument order, the near list,
+// The face under the pointer, asked through the API (argument order, the near list,
 // errors). A grid of unit squares built here, face j nx + i = [i, i+1] x [j, j+1] in z = 0.
 function squares(nx, ny) {
   const positions = [];

@@ -1,4 +1,4 @@
-// Issue 13, item 23: the walk's animation frames (web/js/ui/mesh/walk.js, DOM-free)
+// The walk's animation frames (web/js/ui/mesh/walk.js, DOM-free)
 // must store the "found so far" list once, not once per frame: memory linear in the
 // number of steps. Measured structurally: every list (Array or typed array) a frame holds
 // is counted once by identity, and the total number of stored entries over all frames of

@@ -1,4 +1,4 @@
-// Memory over time (issue 9): every API function is called many times succeeding and many
+// Memory over time: every API function is called many times succeeding and many
 // times failing (the failures reach the core and come back as {ok:false}), meshes are
 // built and disposed, and the wasm heap must not grow. Each failing call calls the
 // function its case names and must be refused with that function's documented code
@@ -64,7 +64,7 @@ const patch = Array.from({ length: 16 }, (_, c) => [Math.floor(c / 4), c % 4, ((
 const lecture = api.buildMesh(api.lectureExample());
 const V_MISSING = 1000; // the lecture mesh has 5 vertices, 7 edges and 3 faces
 
-// Issue 19: the lecture mesh's own tables as a student's answer (a wrong wing, so the check
+// The lecture mesh's own tables as a student's answer (a wrong wing, so the check
 // has a finding to report), and the same with a row cut short (malformed: 'invalid-answer').
 const exerciseMesh = { faces: api.lectureExample().faces, vertexCount: 5 };
 const exerciseAnswer = (() => {
@@ -91,7 +91,7 @@ const NO_FAILING_INPUT = ['memoryUsage', 'liveMeshCount', 'lectureExample', 'fol
 // (validateMesh, check_ operations), returned as { ok: false } carrying the code.
 const cases = [
   ['buildMesh + dispose', FULL, () => api.buildMesh(tetra).dispose(), [['non-manifold-edge', () => api.buildMesh(nonManifold)]]],
-  // Issue 17: the same build in steps; a refused step ends the core's job (no job is left
+  // The same build in steps; a refused step ends the core's job (no job is left
   // behind), and so does a cancel.
   ['buildMeshInSteps + dispose', REDUCED, () => { const job = api.buildMeshInSteps(tetra); while (!job.step()); job.mesh.dispose(); api.buildMeshInSteps(tetra).cancel(); },
     [['non-manifold-edge', () => { const job = api.buildMeshInSteps(nonManifold); while (!job.step()); }]]],
@@ -144,7 +144,7 @@ const cases = [
   ['mesh.setVertexPosition', REDUCED, () => lecture.setVertexPosition(4, [2, -1, 0]),
     [['invalid-element', () => lecture.setVertexPosition(V_MISSING, [0, 0, 0])], ['invalid-argument', () => lecture.setVertexPosition(1, [NaN, 0, 0])]]],
   ['hooks.timeBuildInCore', REDUCED, () => hooks.timeBuildInCore(tetra, 1), [['non-manifold-edge', () => hooks.timeBuildInCore(nonManifold, 1)]]],
-  // Issue 14: each succeeding round chooses another stored edge and back (the version moves
+  // Each succeeding round chooses another stored edge and back (the version moves
   // on, so the representations are derived again: the old ones must be freed). e7 (index 6)
   // touches neither v1 nor F1.
   ['mesh operations', REDUCED, () => {
@@ -178,7 +178,7 @@ const cases = [
   ['arcLength', REDUCED, () => api.arcLength(nurbs), [['decreasing-knots', () => api.arcLength(decreasing)]]],
   ['arcLengthParams', REDUCED, () => api.arcLengthParams(nurbs, 10), [['decreasing-knots', () => api.arcLengthParams(decreasing, 10)]]],
   ['jointContinuity', REDUCED, () => api.jointContinuity(bezier, following, { tolerance: 1e-9 }), [['decreasing-knots', () => api.jointContinuity(bezier, decreasing)]]],
-  // Issue 19, curve exercises (kinds 3-5).
+  // Curve exercises (kinds 3-5).
   ['checkJointAnswer + jointReasons + jointClasses', REDUCED,
     () => { api.jointReasons(); api.jointClasses(); api.checkJointAnswer(bezier, following, { parametric: 1, geometric: 1, why: ['meet'] }); },
     [['invalid-argument', () => api.checkJointAnswer(bezier, following, { why: ['tangent'] })],
@@ -207,13 +207,13 @@ const cases = [
     [['invalid-argument', () => lecture.tables('edge-list', { offset: -1 })], ['unknown-representation', () => lecture.tables('wingededge')]]],
   ['mesh.boundingBox / vertexNormal', REDUCED, () => { lecture.boundingBox(); lecture.vertexNormal(1); },
     [['disposed', () => gone.boundingBox()], ['invalid-element', () => lecture.vertexNormal(V_MISSING)]]],
-  // Issue 17: picking and the display proxy of a big mesh.
+  // Picking and the display proxy of a big mesh.
   ['mesh.pick / displayProxy', REDUCED, () => { lecture.pick([1, 0.5, 0], [0, 0, 1], { radius: 0.1 }); lecture.displayProxy(2); },
     [['invalid-argument', () => lecture.pick([1, 0.5, 0], [0, 0, 0])], ['invalid-argument', () => lecture.displayProxy(0)]]],
   ['mesh.query', REDUCED, () => lecture.query('faces-around-vertex', 1),
     [['invalid-element', () => lecture.query('faces-around-vertex', V_MISSING)], ['unknown-query', () => lecture.query('faces-of-vertex', 1)]]],
   ['hooks.timeNormalsInCore', REDUCED, () => hooks.timeNormalsInCore(lecture, 1), [['invalid-argument', () => hooks.timeNormalsInCore(lecture, 0)]]],
-  // Issue 14 item 5: the measurements the lessons ask the core for.
+  // The measurements the lessons ask the core for.
   ['convexHull / mapPoints / maxDistance', REDUCED, () => { api.convexHull(geometry, 2); api.mapPoints(geometry, 2, { kind: 'perspective', px: 0.01 }); api.maxDistance(geometry, geometry, 2); },
     [['non-finite-input', () => api.convexHull([0, 0, NaN, 1], 2)], ['perspective-behind-eye', () => api.mapPoints(geometry, 2, { kind: 'perspective', px: -10 })],
       ['invalid-argument', () => api.maxDistance(geometry, geometry.slice(2), 2)]]],
@@ -226,7 +226,7 @@ const cases = [
     [['invalid-weight', () => api.curvatureComb(zeroWeight, params)], ['wrong-weight-count', () => api.homogeneousLift(geometry, 2, [1, 2])]]],
   ['patchCornerCheck / patchJoinCheck', REDUCED, () => { api.patchCornerCheck({ kind: 'bezier', points: patch }); api.patchJoinCheck({ kind: 'bezier', a: patch, b: patch, samples: 4 }); },
     [['wrong-point-count', () => api.patchCornerCheck({ kind: 'bezier', points: patch.slice(3) })], ['wrong-point-count', () => api.patchJoinCheck({ kind: 'bezier', a: patch, b: patch.slice(3) })]]],
-  // Issue 15: the Euler operations (a fresh lecture mesh per call: the edits grow it).
+  // The Euler operations (a fresh lecture mesh per call: the edits grow it).
   ['mesh editing', REDUCED, () => {
     const lecture = api.buildMesh(api.lectureExample());
     try {
@@ -239,7 +239,7 @@ const cases = [
     ['adjacent-corners', () => lecture.splitFace(0, 0, 1)], ['boundary-edge', () => lecture.joinFaces(0)], ['invalid-element', () => lecture.pokeFace(V_MISSING)],
     ['invalid-element', () => lecture.collapseEdge(V_MISSING)], ['disposed', () => gone.compact()], ['disposed', () => gone.gaps()],
     ['unknown-format', () => lecture.format({ format: 'stl' })]]],
-  // Issue 16: subdivision of meshes and curves.
+  // Subdivision of meshes and curves.
   ['subdivide + dispose / subdivisionSteps / limitPositions', REDUCED, () => {
     api.subdivide(lecture, { scheme: 'catmull-clark', steps: 2 }).dispose();
     api.subdivisionSteps(lecture, { scheme: 'catmull-clark' });

@@ -1,4 +1,4 @@
-// Security of a static site, on the source (issue 9), complementing
+// Security of a static site, on the source, complementing
 // tests/browser/security/sinks.test.mjs (which bans the HTML sinks and eval/new
 // Function in web/ and the glue, and checks each page's CSP directives). Here, what that
 // file does not cover:

@@ -1,4 +1,4 @@
-// The embed parameters of a link (issue 19, docs/embed.md) and the iframe snippet, in Node
+// The embed parameters of a link (docs/embed.md) and the iframe snippet, in Node
 // over the real module (web/js/app/share-link.js). Property: for thousands of seeded
 // fragments of random parameters and values (hostile text included), readEmbedOptions
 // either says "not an embed" (no embed key) or returns only known values (theme light,

@@ -1,4 +1,4 @@
-// The imported mesh of a lesson state (web/js/app/imported-mesh.js, issue 17): the flat form
+// The imported mesh of a lesson state (web/js/app/imported-mesh.js): the flat form
 // an import writes and the faces form older states hold are both read, checked field by
 // field with messages naming the entry, and give the same face set to the core.
 import { test } from 'node:test';

@@ -1,4 +1,4 @@
-// Issue 17: checking the imported mesh of a state (a million faces) must not copy it. A list
+// Checking the imported mesh of a state (a million faces) must not copy it. A list
 // whose entries are all clean comes back as itself (nothing allocated per face), a list with
 // an entry that cleans to something else is copied, and a refusal still names the entry's
 // full path.

@@ -1,4 +1,4 @@
-// Issue 13, item 26: a compressed bomb in a share link (a short link that inflates to
+// A compressed bomb in a share link (a short link that inflates to
 // hundreds of MB) is refused while it is being decompressed, once MAX_STATE_BYTES have come
 // out, instead of being inflated whole and then parsed. The decoder is JavaScript
 // (web/js/app/share-link.js), run here in Node 20 as in the browser.

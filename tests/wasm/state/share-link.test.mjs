@@ -1,4 +1,4 @@
-// Property test of the share-link decoder (issue 9, "fuzzing ... the share-link decoder").
+// Property test of the share-link decoder ("fuzzing ... the share-link decoder").
 //
 // Why not libFuzzer: the decoder is JavaScript (web/js/app/share-link.js: base64url ->
 // deflate-raw -> UTF-8 -> JSON -> envelope -> migrations -> schema). libFuzzer drives C/C++
@@ -237,7 +237,7 @@ test('an older link is migrated, and a migration that meets a malformed old stat
   }
 });
 
-// Issue 13, item 12: a large field (an imported mesh) travels by reference. The link holds
+// A large field (an imported mesh) travels by reference. The link holds
 // {"$content": "sha256-<hex>", "label"} and the text lives in a content store (IndexedDB in
 // the page; a Map here). What is checked: the link stays small, the reference resolves to
 // the identical state, the store is keyed by the SHA-256 of the text (computed here with

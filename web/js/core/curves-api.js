@@ -1,5 +1,5 @@
 // @ts-check
-// Curves part of the API (issue 5); documented in docs/api-curves.md.
+// Curves part of the API; documented in docs/api-curves.md.
 // Plain values in, typed arrays out, one wasm call per curve batch (never per point).
 // Every curve is a plain object:
 //   { kind, dim, points, degree?, knots?, weights?, tangents?, tension?, nodes? }
@@ -146,7 +146,7 @@ export function createCurvesApi(raw) {
     basisMatrix(kind, form = 'descending') {
       return unwrap(raw.basisMatrix(String(kind), String(form))).matrix;
     },
-    // Issue 18: the same matrix as on the slide, {denominator, numerators} (1/6 [...] for the
+    // The same matrix as on the slide, {denominator, numerators} (1/6 [...] for the
     // uniform B-spline, 1/2 [...] for Catmull-Rom). form: 'descending' (lectures 000, 003),
     // 'ascending' (002: u = (1, u, u^2, u^3), C = M g, the rows reversed) or 'transposed'
     // (001: Q(t) = G M T); an unknown form throws 'unknown-form'.
@@ -203,7 +203,7 @@ export function createCurvesApi(raw) {
     // The matrix form of one polynomial piece: P(u) = [u^p .. u 1] M G, C = M G; MT = M^T
     // for lecture 001's Q(t) = G M^T T. Matrices row-major; G and C have `columns` numbers
     // per row (dim, or dim+1 homogeneous for rational curves).
-    // options.form (issue 18): `shown` holds M, G, C as that lecture writes them
+    // options.form: `shown` holds M, G, C as that lecture writes them
     // ({form, M, G, C, size, geometryRows, geometryColumns, rational}); default 'descending'.
     segmentMatrices(curve, segmentIndex = 0, { form = 'descending' } = {}) {
       wholeNumber(segmentIndex, 'segmentIndex', 0, 2 ** 31 - 1, 'segment-out-of-range');
@@ -216,7 +216,7 @@ export function createCurvesApi(raw) {
         basis: r.basis,
         M: r.M,
         MT: transpose(r.M, n),
-        // Issue 18: M as the slides write it, (1/denominator) . numerators (row-major
+        // M as the slides write it, (1/denominator) . numerators (row-major
         // integers), from the core; null when M has no small common denominator.
         rational: r.rational,
         G: r.G,
@@ -259,7 +259,7 @@ export function createCurvesApi(raw) {
     bezierSubdivisionMatrices(degree = 3, t = 0.5) {
       wholeNumber(degree, 'degree', 1, 20, 'degree-out-of-range');
       const r = unwrap(raw.bezierSubdivisionMatrices(degree, finiteNumber(t, 't')));
-      // leftRational / rightRational (issue 18): {denominator, numerators} as the slide writes
+      // leftRational / rightRational: {denominator, numerators} as the slide writes
       // them (1/8 [integers] for lecture 002), or null for a t without a small denominator.
       return { left: r.left, right: r.right, size: degree + 1, leftRational: r.leftRational, rightRational: r.rightRational };
     },
@@ -324,8 +324,8 @@ export function createCurvesApi(raw) {
     isClampedKnots(knots, degree) {
       return unwrap(raw.knotsClamped(numbers(knots, 'knots'), wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'))).clamped;
     },
-    // Issue 18 (lecture 002: {0,0,0,0,1,1,1,1} makes the cubic B-spline a cubic Bezier):
-    // true when the B-spline on these knots is exactly the Bezier curve of its points.
+    // Lecture 002: {0,0,0,0,1,1,1,1} makes the cubic B-spline a cubic Bezier. True
+    // when the B-spline on these knots is exactly the Bezier curve of its points.
     isBezierInDisguise(knots, degree) {
       return unwrap(raw.knotsClamped(numbers(knots, 'knots'), wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'))).bezier;
     },
@@ -413,7 +413,7 @@ export function createCurvesApi(raw) {
       };
     },
 
-    // ---- issue 18: the derivation of a cubic family's matrix, exact: { family, size,
+    // ---- The derivation of a cubic family's matrix, exact: { family, size,
     // constraint, inverse, basis, rhs (B-spline) | null, substitution (Bezier) | null,
     // conditions (one line per constraint row) }; each matrix { rows, cols, num, den }.
     cubicDerivation(family) {
@@ -444,7 +444,7 @@ export function createCurvesApi(raw) {
     // docs/api-curves.md for the Hermite layout). Returns { nu, nv, positions, normals, du,
     // dv (all [3*(nv*i + j) + k] at u = i/(nu-1), v = j/(nv-1)), twists (p_uv at the corners
     // (0,0), (0,1), (1,0), (1,1): [3*c + k]) }.
-    // ---- Guarantees (issue 13 item 8): what holds for EVERY control polygon, from the basis.
+    // ---- Guarantees: what holds for EVERY control polygon, from the basis.
     // A chain of cubic segments of one basis: slot j is a control point (isPoint[j] true) or a
     // tangent vector; maps[s] is segment s's 4 x slots matrix (row-major: weight of slot j in
     // geometry row r at maps[s][slots*r + j]). -> {parametric, geometric, joints, interpolated}:
@@ -482,7 +482,7 @@ export function createCurvesApi(raw) {
       return { nu: r.nu, nv: r.nv, positions: r.positions, normals: r.normals, du: r.du, dv: r.dv, twists: r.twists };
     },
 
-    // ---- comparison measurements (issue 14 item 5; docs/api-curves.md "Comparison
+    // ---- comparison measurements (docs/api-curves.md "Comparison
     // measurements"): the numbers behind the comparison lesson's cells, with tolerances
     // relative to the size of what is compared.
     // The convex hull of plane points (flat, dim 2): { indices (Int32Array into the points,
@@ -583,7 +583,7 @@ export function createCurvesApi(raw) {
       return out;
     },
   };
-  // Subdivision of a control polygon (issue 16, docs/api-curves.md "Subdivision"): 'chaikin'
+  // Subdivision of a control polygon (docs/api-curves.md "Subdivision"): 'chaikin'
   // (corner cutting -> the uniform quadratic B-spline) or 'cubic-bspline' (Lane-Riesenfeld
   // -> the uniform cubic B-spline), open or closed, `steps` times: Float64Array, dim per point.
   /** @param {ArrayLike<number>} points @param {number} dim @param {{ scheme?: string, closed?: boolean, steps?: number }} [options] */

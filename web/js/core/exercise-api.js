@@ -1,4 +1,4 @@
-// Exercise part of the API (issue 19): checking a student's winged-edge table (exercise kind
+// Exercise part of the API: checking a student's winged-edge table (exercise kind
 // 1). Plain values in and out: the mesh as faces (or CSR) with its vertex count, the answer as
 // flat arrays of whole numbers (edges: 8 per row, S E L R S:L S:R E:L E:R; the student's row r
 // is their edge e(r+1)); -1 = none, -2 = blank. See docs/api-mesh.md, "Checking a student's

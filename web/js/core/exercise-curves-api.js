@@ -1,5 +1,5 @@
 // @ts-check
-// Exercise part of the API for curves (issue 19, kinds 3, 4 and 5; docs/api-curves.md,
+// Exercise part of the API for curves (kinds 3, 4 and 5; docs/api-curves.md,
 // "Exercises: joints, values, properties"): classify a joint and say why, compute a value by
 // hand, move points until a property holds. This module checks types and names the field;
 // the core decides and writes the feedback.

@@ -1,4 +1,4 @@
-// Mesh part of the API (issue 3): plain values, 0-based indices, -1 = none.
+// Mesh part of the API: plain values, 0-based indices, -1 = none.
 // A built mesh lives in the core's registry; the Mesh object below holds only its integer
 // handle, and mesh.dispose() frees it at once (a FinalizationRegistry is only a safety net
 // for a forgotten dispose, never the mechanism). See docs/api-mesh.md.
@@ -329,7 +329,7 @@ export class Mesh {
 
   // The same planes as flat typed arrays, nothing converted per face: {cross, newell
   // (Float64Array, 4 per face: A B C D), crossCorners (Int32Array, 3 per face), residual
-  // (Float64Array, 1 per face)}; a table reads only the rows it shows (issue 17).
+  // (Float64Array, 1 per face)}; a table reads only the rows it shows.
   planeArrays() {
     const { cross, crossCorners, newell, residual } = unwrap(this.#raw.meshPlanes(this.#live()));
     return { cross, crossCorners, newell, residual };
@@ -345,13 +345,13 @@ export class Mesh {
   }
 
   // The axis-aligned bounding box {min, max, centre} ([x, y, z] each): a 3D view turns
-  // about its centre (issue 13 item 11).
+  // about its centre.
   boundingBox() {
     const r = unwrap(this.#raw.meshBoundingBox(this.#live()));
     return { min: Array.from(r.min), max: Array.from(r.max), centre: Array.from(r.centre) };
   }
 
-  // Picking in an orthographic view (issue 17): the faces seen along `towards` (from the
+  // Picking in an orthographic view: the faces seen along `towards` (from the
   // mesh to the viewer) on the line through `point`. {face: the nearest face the line passes
   // through (-1: none), near: [{face, distance}]: faces within `radius` (world units in the
   // view plane) of the line, the hit face first, then faces turned towards the viewer by
@@ -543,7 +543,7 @@ export const meshInternals = Object.freeze({
   indexedInput,
 });
 
-// Subdivision (issue 16, docs/api-mesh.md "Subdivision"): the scheme and step count as the
+// Subdivision (docs/api-mesh.md "Subdivision"): the scheme and step count as the
 // core takes them; the mesh's handle through the class's private field.
 const SUBDIVISION_SCHEMES = Object.freeze(['loop', 'catmull-clark']);
 function subdivisionArgs(mesh, options, what) {
@@ -588,7 +588,7 @@ export function createMeshApi(raw) {
       const r = unwrap(raw.meshBuild(...buildArguments(input)));
       return new Mesh(raw, r.handle, tableDescriptors, meshOperations);
     },
-    // The same build in steps (issue 17): {phase, step(), cancel(), mesh}. step() runs one
+    // The same build in steps: {phase, step(), cancel(), mesh}. step() runs one
     // phase of the core's build (about an eighth of it) and returns true when the mesh is
     // built; `mesh` is then the Mesh (owned by the caller, as buildMesh's). A page builds a
     // million faces this way with a task of its own per phase. A refusal is thrown by the

@@ -1,5 +1,5 @@
 // @ts-check
-// The one generic reader of the mesh tables (issue 14). The core describes every table
+// The one generic reader of the mesh tables. The core describes every table
 // once (core/src/mesh/tables.cpp: name, element kind of its rows, columns with labels and
 // the element kind each refers to, each array's layout: `stride` numbers per row, or a
 // list cut into rows by CSR offsets); the binding sends those descriptors once

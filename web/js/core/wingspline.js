@@ -15,7 +15,7 @@ let loading = null;
 
 const isNode = typeof process !== 'undefined' && !!process.versions?.node && typeof window === 'undefined';
 
-// Where the site serves the core, as a person would look for it (issue 13, item 14).
+// Where the site serves the core, as a person would look for it.
 const WASM_FILE = 'wasm/wingspline-core.wasm';
 const WASM_URL = new URL('../../wasm/wingspline-core.wasm', import.meta.url);
 

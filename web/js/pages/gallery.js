@@ -1,5 +1,5 @@
 // @ts-check
-// The exercise gallery (issue 19): the exercises shipped with the site (exercises/index.json,
+// The exercise gallery: the exercises shipped with the site (exercises/index.json,
 // made by the build from web/exercises/), by lesson in course order, each with its status in
 // this browser; and an exercise file from disk, read and checked here, then opened in its
 // lesson by a link that carries it (#x=...). A file that cannot be read is named with its

@@ -129,7 +129,7 @@ export function createBlendingPlot(container, { label = 'Blending functions', he
     canvas: surface.canvas,
     update(next) {
       data = next;
-      // A caption is text, or a node (typeset names, issue 18) put in once while it stays.
+      // A caption is text, or a node (typeset names) put in once while it stays.
       const c = next.caption ?? label;
       if (typeof c === 'string') { if (caption.textContent !== c || caption.firstElementChild) caption.textContent = c; } else if (caption.firstChild !== c) caption.replaceChildren(c);
       draw();

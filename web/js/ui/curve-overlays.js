@@ -112,7 +112,7 @@ const sup = (k) => String(k).split('').map((d) => SUP[Number(d)]).join('');
 
 // The legend of the drawing: entries [color, words, dash?] go to painter.legend(), which
 // shows them next to the canvas (HTML, app/canvas-legend.js) or under the SVG figure; never
-// over the drawing (issue 18).
+// over the drawing.
 export function drawLegend(painter, entries) {
   painter.legend(entries);
 }

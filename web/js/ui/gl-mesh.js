@@ -1,5 +1,5 @@
 // @ts-check
-// The GPU picture of a mesh (issue 17): one small WebGL2 renderer on the plain API, drawing
+// The GPU picture of a mesh: one small WebGL2 renderer on the plain API, drawing
 // into the canvas the stage keeps under the 2D one (app/stage.js `underlay`). It draws what
 // the 2D painter would draw as batched paths (the face fills and, on a big mesh, the plain
 // edges); labels, arrows and the walk's highlights stay on the 2D canvas above it, and the

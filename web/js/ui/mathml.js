@@ -13,7 +13,7 @@ export function el(tag, ...children) {
 export const mi = (text) => el('mi', text);
 export const mo = (text) => el('mo', text);
 export const mn = (text) => el('mn', text);
-// A bracket that keeps the height of a row (issue 18: the parentheses of P(u) and of a row
+// A bracket that keeps the height of a row (the parentheses of P(u) and of a row
 // vector must not stretch to the height of a matrix beside them; matrix brackets still do).
 export const fixedMo = (text) => {
   const node = mo(text);
@@ -43,7 +43,7 @@ export function matrix(rows, { digits = 4 } = {}) {
 }
 
 // [table] with brackets that stretch for a column or a matrix and keep the height of a row
-// for a row vector (issue 18: a one-row matrix's brackets no taller than a row).
+// for a row vector (a one-row matrix's brackets no taller than a row).
 export function bracketed(table, rowCount, open = '[', close = ']') {
   const b = rowCount === 1 ? fixedMo : mo;
   return el('mrow', b(open), table, b(close));

@@ -1,5 +1,5 @@
 // @ts-check
-// Issue 18: the three ways the lectures write a basis matrix, as a choice a lesson offers
+// The three ways the lectures write a basis matrix, as a choice a lesson offers
 // (state field `form`) and the words for it. The matrices themselves come from the core
 // (api.segmentMatrices(curve, i, { form }).shown, api.basisMatrixRational(kind, form)).
 import { h } from '../app/dom.js';
@@ -32,7 +32,7 @@ export function createFormSelect(id, onPick) {
 // The key that steps through the forms.
 export const nextForm = (form) => MATRIX_FORMS[(MATRIX_FORMS.indexOf(form) + 1) % MATRIX_FORMS.length];
 
-// Each form's own names for the cubic families (issue 18), typed from the lectures:
+// Each form's own names for the cubic families, typed from the lectures:
 //   003: C = M_h G_h, G_h = [P1 P4 R1 R4]; C = M_b G_b; C_i = 1/6 [...] [P_i-1 .. P_i+2];
 //        000: P_k(u) = H0(u) p_k + H1(u) p_k+1 + H2(u) t_k + H3(u) t_k+1
 //   002: C = M_H g, g = (p_0, p_3, p'_0, p'_3), b(u) = M_H^T u; C = M_B P; M_s with

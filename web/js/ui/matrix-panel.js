@@ -1,7 +1,7 @@
 // @ts-check
 // The matrix form of one curve segment as MathML, with the numbers the core multiplies
 // with (STYLE.md 12: the matrix shown is the matrix used), in the form a lecture writes it
-// (issue 18; the core gives M, G, C in that form, segmentMatrices(..., { form }).shown):
+// (the core gives M, G, C in that form, segmentMatrices(..., { form }).shown):
 //   'descending' (lectures 000, 003, 004): P(u) = [u^3 u^2 u 1] . M . G, C = M . G
 //   'ascending'  (lecture 002):            p(u) = u^T M g, u = (1, u, u^2, u^3), C = M g
 //   'transposed' (lecture 001):            Q(t) = G . M . T, G a row of points, T a column
@@ -10,7 +10,7 @@
 //
 //   const panel = createMatrixPanel(container);
 //   panel.update({ segment, u, point, form, title, notation });
-// notation 'fraction' (issue 18) writes M as the slides do, (1/d) . [integers], with the
+// notation 'fraction' writes M as the slides do, (1/d) . [integers], with the
 // fraction and the integers the core gives (shown.rational); 'decimal' (the default) writes
 // the entries as decimals. A matrix without a small common denominator stays in decimals
 // and the note says so.
@@ -97,7 +97,7 @@ export function createMatrixPanel(container) {
     const named = names ? lectureLine(names, form, name, powerRow) : null;
     const geometry = math(el('mrow', mi(geo), mo('='), tag(labelMatrix(transposed ? transpose(labelColumn) : labelColumn, ascending), 'G-labels'), mo('='), numbers('G', gr, gc, 'G')));
     // The product in three pieces that wrap (site.css .formula-pieces): a degree-3 product in
-    // decimals is 650 px wide, more than a projector's side column (issue 18).
+    // decimals is 650 px wide, more than a projector's side column.
     const product = document.createElement('div');
     product.className = 'formula-pieces matrix-product';
     product.append(...(transposed
@@ -177,7 +177,7 @@ function labelMatrix(cells, round = false) {
   return round ? bracketed(table, cells.length, '(', ')') : bracketed(table, cells.length);
 }
 
-// The form's formula in its lecture's names (issue 18): 003 C = M_h G_h, G_h = [P_1 ..]
+// The form's formula in its lecture's names: 003 C = M_h G_h, G_h = [P_1 ..]
 // and 000's H_0..H_3; 002 C = M_H g, g = (p_0, ..), b(u) = M_H^T u; 001 Q(t) = G_H M_H T.
 function lectureLine(names, form, name, powerRow) {
   const sub = (text) => labelNode(text);

@@ -1,6 +1,6 @@
 // @ts-check
 // Turn and tilt sliders for a lesson's 3D view (mesh and subdivision lessons). A finger on
-// the canvas scrolls the page (issue 18, app/stage.js), so a phone turns the view with
+// the canvas scrolls the page (app/stage.js), so a phone turns the view with
 // these; a mouse may still drag empty space, and the sliders take arrow keys.
 import { h } from '../app/dom.js';
 

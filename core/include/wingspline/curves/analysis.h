@@ -46,7 +46,7 @@ struct JointEvidence {
     bool zero_tangent = false;         // a' or b' is the zero vector: G^1 is undefined
     bool zero_tangent_a = false, zero_tangent_b = false; // per side: that side's curvature is undefined
     std::vector<std::string> notes;
-    // The statements that decide the verdict (issue 19, exercise kind 3), each judged on its
+    // The statements that decide the verdict (exercise kind 3), each judged on its
     // own (a pair that does not meet can still have equal derivatives):
     //   C^0 = meet, C^1 = C^0 and equal_first, C^2 = C^1 and equal_second;
     //   G^1 = meet and same_direction, G^2 = G^1 and equal_curvature.
@@ -56,7 +56,7 @@ struct JointEvidence {
     bool equal_second = false;    // P''(1) = Q''(0)
     bool equal_curvature = false; // both tangents non-zero, same curvature vector kappa N
 };
-// What one reading of "G^n" says for this joint (issue 13, item 3). The lectures word it in
+// What one reading of "G^n" says for this joint. The lectures word it in
 // two ways; the core's verdict is the third (reparametrisation-invariant) one.
 struct LectureWording {
     std::string id;      // 'curvature-vector' | 'proportional' | 'direction'

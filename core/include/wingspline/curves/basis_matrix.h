@@ -30,7 +30,7 @@ Mat4 cardinal_matrix(double tension);
 // derivatives [3u^2 2u 1 0] at u = 0 and u = 1. M_Hermite is the inverse of this matrix.
 Mat4 hermite_constraint_matrix();
 
-// Issue 18, the lectures' notation: a matrix as the slides write it, one fraction in front
+// The lectures' notation: a matrix as the slides write it, one fraction in front
 // of integers, values[i] = numerators[i] / denominator (1/6 [...] for the uniform B-spline,
 // 1/2 [...] for Catmull-Rom). The denominator is the smallest one up to max_denominator
 // for which every entry times it is an integer within kRationalTolerance relative to
@@ -45,7 +45,7 @@ constexpr int kMaxNotationDenominator = 1000;
 std::optional<RationalForm> rational_form(const std::vector<double>& values,
                                           int max_denominator = kMaxNotationDenominator);
 
-// Issue 18: the three ways the lectures write a basis matrix M of P(u) = [u^p .. u 1] M G.
+// The three ways the lectures write a basis matrix M of P(u) = [u^p .. u 1] M G.
 //   Descending (000, 003, 004): M itself, rows multiply u^p .. u 1.
 //   Ascending  (002): p(u) = u^T C, u = (1, u, .., u^p), C = M g: M's rows in reverse order.
 //   Transposed (001): Q(t) = G M T, T = [t^p .. t 1]^T a column: M^T.

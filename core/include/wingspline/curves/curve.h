@@ -2,7 +2,7 @@
 // One description for every curve family of the course (lectures 000-004), and one batch
 // evaluator for all of them.
 //
-// Conventions (issue 5):
+// Conventions:
 //  * Points are flat arrays with a stated dimension: points[dim*i + k], dim 2 or 3.
 //  * Knot vectors have K + p + 1 entries for K control points of degree p; the domain is
 //    [t_p, t_K]; a parameter u lies in the span t_l <= u < t_{l+1}, and u = t_K belongs to
@@ -139,7 +139,7 @@ private:
 std::vector<double> evaluate_curve(const Curve& curve, const std::vector<double>& params, int order = 0);
 std::vector<double> evaluate_curve_all(const Curve& curve, const std::vector<double>& params, int max_order);
 
-// Weights at any scale (issue 13.5): a uniform factor cancels in a rational curve, so every
+// Weights at any scale: a uniform factor cancels in a rational curve, so every
 // rational computation first multiplies the weights by 2^weight_shift(weights), which puts
 // the largest in [0.5, 1) exactly (a power of two), and reports weights scaled back.
 // validate() refuses weights whose ratio exceeds kMaxWeightRatio, so the smallest scaled

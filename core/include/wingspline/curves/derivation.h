@@ -1,5 +1,5 @@
 #pragma once
-// The derivations of the cubic families (issue 18), in exact rational arithmetic, so the panel
+// The derivations of the cubic families, in exact rational arithmetic, so the panel
 // can show the slides' fractions and the tests can compare without a tolerance:
 //   Hermite (lecture 000): the constraint matrix C (rows [u^3 u^2 u 1] at u = 0, 1 and
 //     [3u^2 2u 1 0] at u = 0, 1), M_H = C^-1.

@@ -1,5 +1,5 @@
 #pragma once
-// Exercises on curves that check themselves (issue 19, kinds 3, 4 and 5):
+// Exercises on curves that check themselves (kinds 3, 4 and 5):
 //  3. classify a joint (C^k and G^k, lectures 000, 001, 002, 004) and say why, from a fixed
 //     list of statements, exactly those that decide the core's verdict (joint_continuity);
 //  4. compute a value by hand (a blending function, a point, an entry of M G, a point made by

@@ -1,5 +1,5 @@
 #pragma once
-// What a representation guarantees for EVERY control polygon (issue 13 item 8; the comparison
+// What a representation guarantees for EVERY control polygon (the comparison
 // tables of lectures 001 and 003), as opposed to what one polygon happens to do.
 //
 // The structural argument: at a joint, the d-th derivative from the left and from the right

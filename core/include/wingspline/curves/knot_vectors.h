@@ -24,7 +24,7 @@ std::vector<double> unclamped_knots(const std::vector<double>& knots, int degree
 // True when the first p+1 knots are equal and the last p+1 knots are equal.
 bool is_clamped(const std::vector<double>& knots, int degree);
 
-// Issue 18 (lecture 002: "cubic b-spline -> cubic Bezier curve, {0,0,0,0,1,1,1,1}"): true
+// Lecture 002: "cubic b-spline -> cubic Bezier curve, {0,0,0,0,1,1,1,1}". True
 // when the B-spline of degree p on these knots is exactly the Bezier curve of its p+1
 // control points: 2p+2 knots, t_1 = .. = t_p < t_p+1 = .. = t_2p (clamped, except that the
 // outermost knot on each side is free: it acts on no span of the domain, so a degree-1

@@ -1,6 +1,6 @@
 #pragma once
 // Quantities the curve explorer draws over a curve (lectures 001, 002, 004), computed in the
-// core so the lesson only draws them (issue 14 item 5): the curvature comb and the
+// core so the lesson only draws them: the curvature comb and the
 // homogeneous lift of a NURBS's control points.
 #include "wingspline/curves/curve.h"
 

@@ -40,7 +40,7 @@ int segment_at(const Curve& curve, double t);
 // Throws 'segment-out-of-range' naming the valid indices.
 SegmentMatrices segment_matrices(const Curve& curve, int segment);
 
-// Issue 18: a segment's M, G and C as a lecture writes them (basis_matrix.h, MatrixForm):
+// A segment's M, G and C as a lecture writes them (basis_matrix.h, MatrixForm):
 // descending M, G, C as above; ascending (002) M and C with their rows reversed, G as is
 // (p(u) = u^T C, C = M g); transposed (001) M^T, G^T (a row of points) and C^T = G^T M^T.
 struct SegmentForm {

@@ -1,5 +1,5 @@
 #pragma once
-// Subdivision of a control polygon (issue 16): the curve side of the mesh's Loop and
+// Subdivision of a control polygon: the curve side of the mesh's Loop and
 // Catmull-Clark rules.
 //  * Chaikin's corner cutting: every leg P_i P_(i+1) gives 3/4 P_i + 1/4 P_(i+1) and
 //    1/4 P_i + 3/4 P_(i+1). Converges to the uniform quadratic B-spline of the polygon.

@@ -1,5 +1,5 @@
 #pragma once
-// Exercise kind 1 (issue 19): checking a winged-edge table a student filled in by hand for a
+// Exercise kind 1: checking a winged-edge table a student filled in by hand for a
 // given mesh (lecture 000: per edge S, E, L, R and the wings S:L, S:R, E:L, E:R; per vertex one
 // incident edge; per face one edge).
 //

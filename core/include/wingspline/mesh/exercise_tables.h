@@ -1,5 +1,5 @@
 #pragma once
-// Exercise kind 1 (issue 19) for the tables other than the winged edge: a student fills in, by
+// Exercise kind 1 for the tables other than the winged edge: a student fills in, by
 // hand, a table the lessons show for a given mesh, and the check says what is wrong, against
 // the table's definition (never against a copy of one numbering):
 //

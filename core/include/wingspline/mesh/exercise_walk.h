@@ -1,5 +1,5 @@
 #pragma once
-// Exercise kind 2 (issue 19): predicting the next edge of lecture 000's counter-clockwise walk
+// Exercise kind 2: predicting the next edge of lecture 000's counter-clockwise walk
 // around a vertex, or along a face, step after step. The walk is the core's own
 // (WingedEdgeMesh::traversal_steps / face_edge_steps): it starts at the edge the vertex (face)
 // table stores and reads, from each edge, the column the lecture's rule names:

@@ -1,5 +1,5 @@
 #pragma once
-// The mesh limits, one set (issue 13): the core enforces them where a value enters (reading
+// The mesh limits, one set: the core enforces them where a value enters (reading
 // a file, building, moving a vertex) and the JS API exposes them (api.meshLimits), so the
 // page and the state format read these numbers instead of copying them.
 #include <cstdint>

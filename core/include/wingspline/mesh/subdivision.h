@@ -1,5 +1,5 @@
 #pragma once
-// Subdivision surfaces on the winged edge (issue 16): Loop's scheme (triangle meshes) and
+// Subdivision surfaces on the winged edge: Loop's scheme (triangle meshes) and
 // Catmull-Clark's (any polygons), one step built directly as a new winged edge by index
 // arithmetic (no search, no hash map): the point of lecture 000's "aim for efficiency in
 // implementing subdivision rules". Boundaries follow the cubic B-spline curve rules.

@@ -1,5 +1,5 @@
 #pragma once
-// Every table of the six representations (lectures 000 and 001), described once (issue 14).
+// Every table of the six representations (lectures 000 and 001), described once.
 //
 // A table has one row per vertex, edge or face. Its data are flat arrays; its columns say
 // where in those arrays each cell lies:
@@ -87,7 +87,7 @@ std::vector<TableData> representation_tables(Representation r, const Representat
 // of width * (last offset) numbers, columns inside their array's stride, references in range.
 std::vector<std::string> table_layout_problems(const TableData& table, int32_t vertices, int32_t edges, int32_t faces);
 
-// What an edit made each representation rewrite (issue 15; lecture 000's cost argument): the
+// What an edit made each representation rewrite (lecture 000's cost argument): the
 // stored entries (one number: a coordinate or an index) that differ between two states of a
 // mesh, in Representation order. Every table is compared row by row by element number and
 // column by column as its descriptor lays it out; a list that grew or shrank counts the

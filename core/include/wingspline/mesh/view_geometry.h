@@ -1,5 +1,5 @@
 #pragma once
-// What a 3D view of a mesh needs from the core (issue 13 item 11): the axis-aligned
+// What a 3D view of a mesh needs from the core: the axis-aligned
 // bounding box, whose centre the view turns about, and a vertex's normal, which tells
 // whether the counter-clockwise walk around the vertex is seen from its front or its back.
 #include "wingspline/mesh/winged_edge.h"
@@ -22,7 +22,7 @@ BoundingBox bounding_box(const WingedEdgeMesh& mesh);
 // whose vectors cancel. Throws Error("invalid-element") for v out of range.
 glm::dvec3 vertex_normal(const WingedEdgeMesh& mesh, int32_t v);
 
-// Picking in an orthographic view (issue 17): the faces seen along the view direction.
+// Picking in an orthographic view: the faces seen along the view direction.
 // `towards` points from the mesh to the viewer (any length > 0); `point` is any point on the
 // line of sight through the pointer. A face is hit where the line passes inside its outline
 // projected on the view plane (the crossing-number test, half-open so a point on a side
@@ -46,7 +46,7 @@ struct PickResult {
 PickResult pick_faces(const WingedEdgeMesh& mesh, const glm::dvec3& point, const glm::dvec3& towards, double radius,
                       int32_t max_near);
 
-// A lighter picture of a big mesh for drawing while the view moves (issue 17): vertex
+// A lighter picture of a big mesh for drawing while the view moves: vertex
 // clustering (Rossignac and Borrel 1993). The bounding box is cut into cubic cells of side
 // `cell`; each occupied cell becomes one vertex at the mean of its vertices; each fan
 // triangle of each face becomes a triangle of cells, dropped when two corners share a cell.

@@ -203,7 +203,7 @@ struct Operation {
     std::array<double, 4> args{kNone, kNone, kNone, kNone};
 };
 
-// Building in steps (issue 17): exactly the phases of WingedEdgeMesh::build (which runs them
+// Building in steps: exactly the phases of WingedEdgeMesh::build (which runs them
 // through this class in one go), one phase per step(), so a page can build a million-face
 // mesh without holding its main thread for the whole build (about 110 ms in wasm here).
 class WingedEdgeBuild {

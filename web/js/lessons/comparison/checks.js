@@ -1,6 +1,6 @@
 // @ts-check
 // The comparison tables of lectures 001 and 003. A cell states a guarantee of the
-// representation, so it is checked for EVERY polygon (issue 13 item 8): the core's
+// representation, so it is checked for EVERY polygon: the core's
 // structural argument on the family's construction (continuity and interpolation from the
 // basis matrices or knots, api.chainGuarantees / api.bsplineGuarantees) and the blending
 // weights (convex hull, the same for every polygon). Beside each cell, what THIS polygon

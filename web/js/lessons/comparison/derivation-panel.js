@@ -1,5 +1,5 @@
 // @ts-check
-// Issue 18: the derivation of each cubic family's matrix, computed by the core in exact
+// The derivation of each cubic family's matrix, computed by the core in exact
 // fractions (api.cubicDerivation), with live numbers from the first segment P0..P3 of the
 // lab's polygon (the lecture's P1..P4): Hermite's constraints and M_H = C^-1; Bezier from
 // Hermite with R1 = 3(P2 - P1), R4 = 3(P4 - P3); the uniform B-spline from its C2 conditions.

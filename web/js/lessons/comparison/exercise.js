@@ -1,5 +1,5 @@
 // @ts-check
-// The comparison lab's exercises (issue 19): compute a value by hand (kind 4) of one family
+// The comparison lab's exercises: compute a value by hand (kind 4) of one family
 // drawn on the polygon: the exercise names the family; the curve asked of is that family's
 // first segment (P0..P3 for Bezier, P0, P1 with their tangents for Hermite), or the whole
 // non-uniform B-spline.

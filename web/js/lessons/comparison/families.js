@@ -84,7 +84,7 @@ export function easySegments(api, family, points) {
   return familySegments(api, family, points);
 }
 
-// Each family's construction as the core's guarantee check reads it (issue 13 item 8):
+// Each family's construction as the core's guarantee check reads it:
 // which control data each segment's geometry rows are, for ANY polygon of `count` points.
 // Slots 0..count-1 are P0..P(count-1); Hermite adds tangent-vector slots after them.
 // maps[s][slots*r + j] = weight of slot j in geometry row r of segment s. `easy` is lecture

@@ -32,7 +32,7 @@ const pair = list(number(), { min: 2, max: 2 });
 // joint is accidentally smoother than its family guarantees.
 const DEFAULT_POINTS = [[-3.2, -1.2], [-2.4, 1.3], [-0.9, 1.6], [-0.2, -0.4], [1.1, -1.5], [2.3, 0.2], [3.3, 1.4]];
 
-// Hermite's own tangents T_i for the default polygon (issue 18: not Catmull-Rom's
+// Hermite's own tangents T_i for the default polygon (not Catmull-Rom's
 // (P_i+1 - P_i-1)/2, so the two curves differ visibly; dragging the arrow tips edits them).
 // A new segment's points get NEW_TANGENT. Plain data, in the points' units.
 const DEFAULT_TANGENTS = [[0, 4], [3, 0], [2, -3], [1.5, -3], [3, 0], [1.5, 3], [3, 0]];
@@ -82,10 +82,10 @@ export const lesson = {
   title: 'Comparison lab',
   stateVersion: 4,
   exercise: comparisonExercise,
-  // Version 2 (issue 18): the notation of the matrix panels; older links show decimals.
-  // Version 3 (issue 18): the matrix form of the panels (MATRIX_FORMS); older links show
+  // Version 2: the notation of the matrix panels; older links show decimals.
+  // Version 3: the matrix form of the panels (MATRIX_FORMS); older links show
   // lectures 000/003's form, as they did.
-  // Version 4 (issue 18): Hermite's tangents (own, or Catmull-Rom's). Older links drew
+  // Version 4: Hermite's tangents (own, or Catmull-Rom's). Older links drew
   // Hermite with Catmull-Rom's tangents: they open that way, with own tangents in reserve.
   migrations: {
     1: (old) => ({ ...old, notation: 'decimal' }),
@@ -174,7 +174,7 @@ export const lesson = {
     };
     const addButton = h('button', { type: 'button', class: 'tool', id: 'add-segment', onclick: addSegment }, 'Add a segment');
     const removeButton = h('button', { type: 'button', class: 'tool', id: 'remove-segment', onclick: removeSegment }, 'Remove the last segment');
-    // Issue 18: Hermite's tangents, its own (default) or Catmull-Rom's (the comparison of
+    // Hermite's tangents, its own (default) or Catmull-Rom's (the comparison of
     // lecture 002's Catmull-Rom conditions inside Hermite), with a note saying which.
     const hermiteTangents = h('select', { id: 'hermite-tangents', onchange: () => ctx.commit({ ...ctx.state, hermite: { ...ctx.state.hermite, tangents: hermiteTangents.value } }) },
       h('option', { value: 'own' }, 'its own (drag the tips)'),
@@ -204,10 +204,10 @@ export const lesson = {
       start: h('input', { type: 'number', id: 'conv-start', min: 0, step: 1, onchange: () => setConversion({ start: Number(conv.start.value) }) }),
       out: h('div', { class: 'conversion-out' }),
       matrices: h('div', { class: 'conversion-matrices' }),
-      // Issue 18: M in exact fractions as on the slides (1/6 [...], 1/2 [...]) or decimals.
+      // M in exact fractions as on the slides (1/6 [...], 1/2 [...]) or decimals.
       fractions: h('input', { type: 'checkbox', id: 'conv-fractions', onchange: (e) => ctx.commit({ ...ctx.state, notation: e.target.checked ? 'fraction' : 'decimal' }) }),
     };
-    // Issue 18: the form of a lecture for the two matrix panels (000/003, 002, 001).
+    // The form of a lecture for the two matrix panels (000/003, 002, 001).
     ({ select: conv.form, row: conv.formRow } = createFormSelect('conv-form', (form) => ctx.commit({ ...ctx.state, form })));
     convBody.append(h('div', { class: 'form-row' },
       h('label', { for: 'conv-mode' }, 'Mode ', conv.mode), h('label', { for: 'conv-from' }, 'P read as ', conv.from),
@@ -277,7 +277,7 @@ export const lesson = {
     const name = (k) => FAMILY_NAMES[k];
     ui.conv.fractions.checked = state.notation === 'fraction';
     ui.conv.form.value = state.form;
-    // The four bases here are the lectures' cubics: each form's own names (issue 18).
+    // The four bases here are the lectures' cubics: each form's own names.
     ui.conv.fromPanel.update({ segment: m.segmentFrom, u: 0.5, point: m.midFrom, notation: state.notation, form: state.form,
       names: lectureNames(state.form, m.segmentFrom.basis), title: `${name(m.from)}: the segment as drawn (P)` });
     ui.conv.toPanel.update({ segment: m.segmentTo, u: 0.5, point: m.midTo, notation: state.notation, form: state.form,
@@ -399,7 +399,7 @@ function updateTable(body, tbl) {
       : measured ? h('span', { class: agrees ? 'lecture agrees' : 'lecture differs' }, `lecture: ${expected} ${agrees ? '✓' : '≠'}`)
         : h('span', { class: 'lecture' }, `lecture: ${expected} (at a joint)`);
     // One column per family (the guarantee, then what this polygon does under it): five
-    // families fit a projector's side column without a sideways scroll (issue 18).
+    // families fit a projector's side column without a sideways scroll.
     return [h('div', { class: 'family-cell' },
       h('div', { class: 'live-cell', 'data-row': row, 'data-family': f, 'data-answer': cell.answer, 'data-agrees': cell.quoted ? null : String(agrees), 'data-quoted': cell.quoted ? 'true' : null },
         h('strong', {}, cell.answer), h('span', { class: 'evidence' }, cell.evidence), verdict),

@@ -1,5 +1,5 @@
 // @ts-check
-// The continuity lab's exercises (issue 19): classify a joint, C^k and G^k, and say why
+// The continuity lab's exercises: classify a joint, C^k and G^k, and say why
 // (kind 3); move control points until a joint is exactly of a class, e.g. C^1 but not C^2
 // (kind 5). The joints are the lab's own: consecutive segments, in order.
 

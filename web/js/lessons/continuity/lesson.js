@@ -216,7 +216,7 @@ export const lesson = {
     } });
     // The view: the panels' elements, the travelling point's player, and the core (the
     // constraint modes move points through it while a handle is dragged).
-    // While a "classify this joint" exercise is answered, the verdicts are not shown (issue 19).
+    // While a "classify this joint" exercise is answered, the verdicts are not shown.
     return { ui, player, api: ctx.api, verdictsHidden: () => ctx.ui.exercise === 'joint' };
   },
 
@@ -389,7 +389,7 @@ function curvatureCell(side, u, sign) {
   return formatNumber(side.curvature, 4);
 }
 
-// What each lecture's wording of G^n says for this joint, as the core computed it (issue 13).
+// What each lecture's wording of G^n says for this joint, as the core computed it.
 function wordingsTable(joint) {
   if (!joint.wordings?.length) return null;
   return h('details', { class: 'wordings', 'data-joint': joint.index },

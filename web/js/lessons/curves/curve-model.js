@@ -99,7 +99,7 @@ export function computeCurveModel(api, state, cache) {
 
   if (isSpline(state.family)) {
     model.knots = knotModel(api, spec, domain);
-    // Issue 18: lecture 002's {0,0,0,0,1,1,1,1}: this B-spline is its points' Bezier curve.
+    // Lecture 002's {0,0,0,0,1,1,1,1}: this B-spline is its points' Bezier curve.
     model.bezierInDisguise = usesKnots(state.family) && api.isBezierInDisguise(Float64Array.from(state.knots), state.degree);
   } else {
     // Segment joints: the curve at the segment boundaries of the piecewise families.
@@ -195,7 +195,7 @@ function construction(api, state, spec, u, degree) {
 }
 
 // Which construction kinds a family offers (those the loaded core provides: the page
-// follows the core's API as it grows, issue 5).
+// follows the core's API as it grows).
 const CONSTRUCTION_CALLS = { 'de-casteljau': 'deCasteljau', subdivide: 'subdivideBezier', elevate: 'elevateDegree', 'de-boor': 'deBoor', 'insert-knot': 'insertKnot' };
 export function constructionsFor(family, api) {
   let kinds = [];

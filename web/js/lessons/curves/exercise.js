@@ -1,5 +1,5 @@
 // @ts-check
-// The curve explorer's exercises (issue 19): compute a value by hand (kind 4: a blending
+// The curve explorer's exercises: compute a value by hand (kind 4: a blending
 // function, a point, an entry of M G, Boehm's new control point) and move control points
 // until the curve passes through a point (kind 5).
 import { curveSpec } from './families.js';

@@ -61,7 +61,7 @@ export function knotsLike(api, previous, count, degree, previousDegree = degree)
   return Array.from(uniform ? api.uniformKnots(count, p) : api.clampedKnots(count, p));
 }
 
-// The description of the curve the core reads (issue 5: {kind, dim, points, degree?,
+// The description of the curve the core reads ({kind, dim, points, degree?,
 // knots?, weights?, tangents?, tension?}). Points flat, points[2*i + k].
 export function curveSpec(state) {
   const points = flat(state.points);

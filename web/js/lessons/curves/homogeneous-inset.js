@@ -81,7 +81,7 @@ export function createHomogeneousInset(container) {
     const [ax, ay] = S(data.at);
     g.fillStyle = colors.highlight; g.beginPath(); g.arc(ax, ay, 5, 0, Math.PI * 2); g.fill();
     labels.draw();
-    // The legend under the inset, never over its drawing (issue 18).
+    // The legend under the inset, never over its drawing.
     showLegend(surface.canvas, [[colors.ink, '3D polynomial curve', []], [colors.accent, 'its projection on w = 1 (the NURBS)', []]]);
   }
   surface.onRedraw(draw);

@@ -1,5 +1,5 @@
 // @ts-check
-// The curve explorer (issue 6; lectures 000-004): one page for every curve family of the
+// The curve explorer (lectures 000-004): one page for every curve family of the
 // course. State: the family, points, tangents, knots, weights, degree, tension, u, the
 // construction and its step, the overlays, the matrix form, the view. All mathematics in
 // compute() through the core (curve-model.js); draw() only draws; the panels show the
@@ -29,8 +29,8 @@ export const lesson = {
   title: 'Curve explorer',
   stateVersion: 3,
   exercise: curvesExercise,
-  // Version 2 (issue 18): the notation of the matrix panel; older links show decimals.
-  // Version 3 (issue 18): the matrix form (MATRIX_FORMS) replaces the lecture-001 checkbox
+  // Version 2: the notation of the matrix panel; older links show decimals.
+  // Version 3: the matrix form (MATRIX_FORMS) replaces the lecture-001 checkbox
   // `transposed`; an old link opens in the form it showed.
   migrations: {
     1: (old) => ({ ...old, notation: 'decimal' }),

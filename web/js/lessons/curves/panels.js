@@ -133,14 +133,14 @@ export function createPanels(ctx) {
 
   // ---------------------------------------------------------------- side panels
   const matrixBody = panel(ctx.panels, { id: 'panel-matrix', title: 'Matrix form of the current segment' });
-  // Issue 18: the form of a lecture (descending 000/003, ascending 002, transposed 001).
+  // The form of a lecture (descending 000/003, ascending 002, transposed 001).
   const { select: formSelect, row: formRow } = createFormSelect('matrix-form', (form) => commit({ ...state(), form }));
   matrixBody.append(formRow);
-  // Issue 18: M in exact fractions as on the slides (1/6 [...], 1/2 [...]) or in decimals.
+  // M in exact fractions as on the slides (1/6 [...], 1/2 [...]) or in decimals.
   const fractions = h('input', { type: 'checkbox', id: 'matrix-fractions', onchange: (e) => commit({ ...state(), notation: e.target.checked ? 'fraction' : 'decimal' }) });
   matrixBody.append(h('label', { class: 'check' }, fractions, ' Exact fractions as on the slides (1/6 [integers])'));
   const matrix = createMatrixPanel(matrixBody);
-  // Issue 18: where the lecture notes disagree about the form shown, a short note says so and
+  // Where the lecture notes disagree about the form shown, a short note says so and
   // which form the app computes (quoted in docs/lesson-curves.md).
   const notationNote = h('p', { class: 'hint lecture-note', id: 'notation-note', 'aria-live': 'polite' });
   matrixBody.append(notationNote);
@@ -187,7 +187,7 @@ export function createPanels(ctx) {
     overlayBoxes[key] = h('input', { type: 'checkbox', id: `overlay-${key}`, 'data-overlay': key,
       onchange: (e) => commit({ ...state(), overlays: { ...state().overlays, [key]: e.target.checked } }, { recompute: key === 'comb' }) });
     const row = h('label', { class: 'check' }, overlayBoxes[key], ` ${text}`);
-    // The comb needs the core's curvature (issue 5); without it the option is not offered.
+    // The comb needs the core's curvature; without it the option is not offered.
     row.hidden = key === 'comb' && typeof ctx.api.curvature !== 'function';
     overlayBody.append(row);
   }
@@ -267,7 +267,7 @@ export function createPanels(ctx) {
   const knotTable = h('div', { class: 'knot-table' });
   const removalNote = h('p', { class: 'hint', id: 'knot-removal-note' },
     'Raising m inserts the knot again (Boehm): the curve does not move. Lowering m is knot removal, which moves the curve unless it already has the higher continuity there; take a raise back with Undo, which is exact.');
-  // Issue 18: when the knots make this B-spline a Bezier curve (decided by the core).
+  // When the knots make this B-spline a Bezier curve (decided by the core).
   const bezierNote = h('p', { class: 'hint lecture-note', id: 'bezier-disguise-note', 'aria-live': 'polite', hidden: true });
   knotsBody.append(presets, knotTable, bezierNote, removalNote);
   // A preset keeps u, moved onto the new knots' domain [t_p, t_K] (the core's curveDomain).
@@ -491,7 +491,7 @@ function raiseMultiplicity(value, ctx) {
 // Lowering a multiplicity (knot removal) is offered only as the exact operation: taking back
 // a raise with Undo. Removing a knot from an arbitrary curve changes the curve unless it is
 // already C^(p-m+1) there, and the core has no knot removal to judge or minimise the change;
-// a button that silently moved the curve would teach the wrong thing (issue 6 decision).
+// a button that silently moved the curve would teach the wrong thing (a decision of docs/lesson-curves.md).
 
 function weightRow(els, w, j, ctx) {
   const id = `weight-${j}`;
@@ -538,7 +538,7 @@ export function drawPlots(els, model, state, ctx, hoveredItem) {
   }
 }
 
-// The blending plot's caption with its names typeset (issue 18: no raw "N_i,3"), built
+// The blending plot's caption with its names typeset (no raw "N_i,3"), built
 // once per family and degree. B-splines are B_i,d with d the degree, as lecture 002 writes
 // B_id (the plot's own labels follow: B0,3 ...).
 function cachedCaption(els, state) {
@@ -566,7 +566,7 @@ function captionFor(state) {
   }
 }
 
-// The lectures' slips and disagreements that concern the matrix shown (issue 18).
+// The lectures' slips and disagreements that concern the matrix shown.
 function notationNotes(state) {
   const notes = [];
   if (state.family === 'catmull-rom' && state.tension === 0) {
@@ -584,7 +584,7 @@ function notationNotes(state) {
   return notes;
 }
 
-// The heading of the matrix panel in the lectures' words (issue 18: never a state or basis
+// The heading of the matrix panel in the lectures' words (never a state or basis
 // id): the family, and the basis when it is not the family's own name.
 const BASIS_NAMES = { hermite: 'Hermite', bezier: 'Bezier (Bernstein)', bspline: 'B-spline', 'catmull-rom': 'Catmull-Rom',
   cardinal: 'cardinal spline', interpolation: 'Lagrange interpolation', nurbs: 'NURBS' };

@@ -1,6 +1,6 @@
 // @ts-check
 // Lecture 002's Bezier subdivision matrices G_B^L and G_B^R, shown beside the matrix form of a
-// cubic Bezier curve (issue 18). The fraction and the integers come from the core
+// cubic Bezier curve. The fraction and the integers come from the core
 // (bezierSubdivisionMatrices(3, 1/2): the de Casteljau split at u = 1/2 written as matrices);
 // this module only typesets them.
 import { h } from '../../app/dom.js';

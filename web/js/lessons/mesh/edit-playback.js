@@ -1,4 +1,4 @@
-// Playing an edit back one pointer assignment at a time (issue 15). The core's change record
+// Playing an edit back one pointer assignment at a time. The core's change record
 // lists every assignment in the order its algorithm made them ({table, row, field, before,
 // after}); this file turns them into frames and into the winged-edge tables as they stood
 // after frame k (the final tables with the later assignments taken back). No geometry and

@@ -1,5 +1,5 @@
 // @ts-check
-// The mesh lesson's exercises (issue 19, docs/exercises.md): fill in a table for the mesh
+// The mesh lesson's exercises (docs/exercises.md): fill in a table for the mesh
 // drawn (kind 1) and predict the CCW walk (kind 2). The subject is the mesh as loaded, with
 // the slide's numbering where it has one (lecture 000's edges e1..e9), so the drawing's labels
 // and the checks agree.

@@ -1,4 +1,4 @@
-// Query cost and storage against mesh size (issue 18): lecture 000's point that the winged
+// Query cost and storage against mesh size: lecture 000's point that the winged
 // edge answers "faces around a vertex" in time proportional to the answer while a table
 // without adjacency scans the mesh, as a picture. The core answers every number: generated
 // grids of growing size (GROWTH_SIZES quads across, so F = 2 n^2 triangles), each asked the

@@ -1,5 +1,5 @@
 // @ts-check
-// The mesh lesson (issue 4; lectures 000, 001, 003): one mesh, every representation of it
+// The mesh lesson (lectures 000, 001, 003): one mesh, every representation of it
 // live, the winged-edge walks around a vertex and along a face animated as the slide tells
 // them, the representations' query costs and storage, and plane equations and normals.
 // The state is plain JSON (schema below); the model is what the core returned for it.
@@ -27,7 +27,7 @@ export const QUERY_KINDS = ['faces-around-vertex', 'edges-around-vertex', 'edges
 const MAX_IMPORT_VERTICES = MAX_MESH_VERTICES;
 const MAX_IMPORT_FACES = MAX_MESH_FACES;
 
-// The mesh operations a state may hold, replayed in order on the built mesh (issue 14).
+// The mesh operations a state may hold, replayed in order on the built mesh.
 // Each is checked for shape here; whether it fits the mesh (an edge of that vertex or face)
 // is the core's check when it is replayed, which names the operation if it refuses.
 const MAX_OPS = 1000;
@@ -67,7 +67,7 @@ const schema = {
   fanSize: size(MESH_SIZES.fan[0]),
   grid: object({ nx: size(MESH_SIZES.grid[0]), ny: size(MESH_SIZES.grid[1]) }),
   sphere: object({ slices: size(MESH_SIZES.sphere[0]), stacks: size(MESH_SIZES.sphere[1]) }),
-  // Either form of app/imported-mesh.js (flat since issue 17; faces: older states and links).
+  // Either form of app/imported-mesh.js (flat in the current format; faces: older states and links).
   imported: nullable(importedMesh({ maxVertices: MAX_IMPORT_VERTICES, maxFaces: MAX_IMPORT_FACES, maxCorners: MAX_FACE_CORNERS })),
   moved: list(object({ v: integer({ min: 0, max: 10000000 }), p: list(number(), { min: 3, max: 3 }) }), { max: 100000 }),
   ops: list(operation, { max: MAX_OPS }),
@@ -272,7 +272,7 @@ function faceNormal(derived, mesh, f) {
 // margin: room for the labels beside the vertices
 const fitView = (view, model, stage) => (model ? fitProjected(model.projected, stage, 0.18) : defaultState().view);
 
-// The walk on a big mesh (issue 17): when the walk's element changes (or the walk starts
+// The walk on a big mesh: when the walk's element changes (or the walk starts
 // on a new mesh) and the ring it walks would be a speck (under WALK_MIN_PX across) or off
 // the canvas, the view centres on it at WALK_ZOOM_FRACTION of the canvas. Once per element:
 // a person who then zooms out or pans keeps their view while the walk steps. The first
@@ -352,8 +352,8 @@ export const meshLesson = {
   title: 'Mesh representations',
   stateVersion: 3,
   exercise: meshExercise,
-  // Version 2 (issue 14) holds the mesh operations; a version 1 state had none. Version 3
-  // (issue 15) adds the edit panel's t and playback step.
+  // Version 2 holds the mesh operations; a version 1 state had none. Version 3
+  // adds the edit panel's t and playback step.
   migrations: { 1: (old) => ({ ...old, ops: [] }), 2: (old) => ({ ...old, editT: 0.5, editStep: -1 }) },
   schema,
   defaultState,
@@ -390,7 +390,7 @@ export const meshLesson = {
   },
   fitView,
   // A vertex pressed with the pointer becomes the walk's vertex when it is released without
-  // being dragged (issue 18: dragging a vertex must not silently change the walk's vertex);
+  // being dragged (dragging a vertex must not silently change the walk's vertex);
   // chosen with [ and ] it is only selected, for the arrow keys.
   onSelect(view, id, ctx) {
     if (id === null) return;

@@ -1,4 +1,4 @@
-// The mesh lesson page (issue 4): the skeleton runs the lesson object.
+// The mesh lesson page: the skeleton runs the lesson object.
 import { runLesson } from '../../app/shell.js';
 import { meshLesson } from './lesson.js';
 

@@ -9,7 +9,7 @@ import { vLabel, fLabel, eLabel } from './labels.js';
 
 // The operations of the state after choosing edge e for the element: an earlier choice
 // for the same row is superseded, so choosing back and forth does not grow the list. Only
-// a choice after the last edit of the mesh (issue 15) is: set-*-edge operations commute
+// a choice after the last edit of the mesh is: set-*-edge operations commute
 // with each other, not with an edit, whose result can depend on the edge a row stores.
 export function withStoredEdge(ops, kind, element, e) {
   const op = kind === 'vertex' ? { op: 'set-vertex-edge', v: element, e } : { op: 'set-face-edge', f: element, e };

@@ -180,7 +180,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
 
   // The row the walk reads at this step, with its table's head, right under the walk's
   // narration (panels.js): on a phone the tables are far below the walk's buttons, so the
-  // row is shown where the student is looking (issue 18; web/css/mesh.css shows it on
+  // row is shown where the student is looking (web/css/mesh.css shows it on
   // narrow screens only). Built from the same descriptor as the table (headOf, rowCells).
   const walkRow = h('div', { class: 'walk-row', id: 'walk-row', 'aria-live': 'off' });
   let walkRowKey = '';
@@ -239,7 +239,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
           revealed[name] = key;
           const row = tables[name].reveal(frame.row);
           // The walk's row is also brought into the side column's view (never the page's),
-          // so it is on screen at every step (issue 18, projector). Not the edit player's:
+          // so it is on screen at every step (on a projector too). Not the edit player's:
           // its buttons sit below the tables and would move away from the pointer.
           const table = row?.closest('table') ?? null;
           if (!inEdit) revealInBoxes(row, { context: table, inset: table?.tHead?.offsetHeight ?? 0 });

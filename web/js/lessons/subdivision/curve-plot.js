@@ -1,5 +1,5 @@
 // @ts-check
-// The curve beside the mesh (issue 16): its control polygon, the polygon after as many
+// The curve beside the mesh: its control polygon, the polygon after as many
 // subdivision steps as the mesh's level and the B-spline they approach, on a plot canvas of
 // its own. The control points are dragged with the pointer (mouse, pen, touch); the plot's
 // frame fits the polygon and stays still while a point is dragged, so the point stays under
@@ -114,7 +114,7 @@ export function createCurvePlot(container, ctx) {
       path(refined, { stroke: colors.series[0], width: 1.5 }, closed);
       if (refined.length <= 400) dots(refined, 2.5, colors.series[0]);
       g.setLineDash([]);
-      // The legend under the plot, never over the curves (issue 18).
+      // The legend under the plot, never over the curves.
       showLegend(plot.canvas, [[colors.muted, 'control polygon', [5, 4]], [colors.series[0], `after ${steps} step${steps === 1 ? '' : 's'}`, []],
         [colors.series[1], 'B-spline (limit)', []]]);
     },

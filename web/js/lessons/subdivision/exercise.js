@@ -1,5 +1,5 @@
 // @ts-check
-// The subdivision lesson's exercises (issue 19): fill in a table of the mesh at the level
+// The subdivision lesson's exercises: fill in a table of the mesh at the level
 // shown (kind 1), e.g. the face table after one Loop step. The numbering of vertices and
 // faces is the core's subdivision numbering, shown in the drawing; edges are numbered freely.
 import { meshSubjectOf } from '../../exercise/subjects.js';

@@ -1,5 +1,5 @@
 // @ts-check
-// The subdivision lesson (issue 16; lecture 000's "how to refine the mesh"): one Loop or
+// The subdivision lesson (lecture 000's "how to refine the mesh"): one Loop or
 // Catmull-Clark step at a time, phase by phase (face points, edge points, vertex points,
 // reconnection), each new point with its mask drawn on the old mesh; levels 0..5, limit
 // positions, flat or smooth shading; beside it the same averaging on a control polygon
@@ -36,7 +36,7 @@ const schema = {
   meshKind: oneOf(...SOURCES.map((s) => s.id)),
   sphere: object({ slices: size(SIZES.sphere[0]), stacks: size(SIZES.sphere[1]) }),
   grid: object({ nx: size(SIZES.grid[0]), ny: size(SIZES.grid[1]) }),
-  // Either form of app/imported-mesh.js (flat since issue 17; faces: older states and links).
+  // Either form of app/imported-mesh.js (flat in the current format; faces: older states and links).
   imported: nullable(importedMesh({ maxVertices: MAX_MESH_VERTICES, maxFaces: MAX_MESH_FACES, maxCorners: MAX_FACE_CORNERS })),
   // Control vertices (level 0) the person moved: where they are now.
   moved: list(object({ v: integer({ min: 0, max: 10000000 }), p: list(number(), { min: 3, max: 3 }) }), { max: 100000 }),

@@ -1,4 +1,4 @@
-// The subdivision lesson page (issue 16): the skeleton runs the lesson object.
+// The subdivision lesson page: the skeleton runs the lesson object.
 import { runLesson } from '../../app/shell.js';
 import { subdivisionLesson } from './lesson.js';
 

@@ -1,5 +1,5 @@
 // @ts-check
-// The surface patches' exercises (issue 19): compute a point p(u, v) of patch A by hand
+// The surface patches' exercises: compute a point p(u, v) of patch A by hand
 // (kind 4), from its 16 control entries (lecture 002: p(u, v) = uᵀ M P Mᵀ v).
 
 /** @type {import('../../app/contract.js').ExerciseSupport} */

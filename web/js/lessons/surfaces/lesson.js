@@ -254,7 +254,7 @@ export const lesson = {
         math(el('msub', mi('P'), mi(axis)), mo('='), matrix(Pcells.map((row) => row.map((p) => p[k]))))))),
       h('div', { class: 'formula' }, math(el('msup', mi('u'), mi('T')), mo('='), matrix(powers(u)), mo(','), el('msup', mi('v'), mi('T')), mo('='), matrix(powers(v)))),
       h('p', { id: 'marker-value', 'data-u': u, 'data-v': v }, `p(${fmt(u)}, ${fmt(v)}) = ${fmt3(value)} (patch A, sampled by the core).`),
-      // Issue 18: u^T here is [u^3 u^2 u 1] (descending, lectures 000 and 003), so M is the
+      // u^T here is [u^3 u^2 u 1] (descending, lectures 000 and 003), so M is the
       // matrix of those lectures; lecture 002 writes u = (1, u, u^2, u^3) and its M_B, M_H are
       // this M with the rows in the opposite order.
       h('p', { class: 'hint lecture-note', id: 'surface-matrix-name' }, state.kind === 'bezier'
