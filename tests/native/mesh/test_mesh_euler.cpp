@@ -546,7 +546,11 @@ TEST_CASE("random seeded operation sequences: valid, Euler, rebuild, refusals, r
             INFO((rep.first_error() ? rep.first_error()->message : std::string()));
             REQUIRE(rep.ok());
             CHECK(w.counts().euler() == euler);
-            CHECK(w.version().topology == before.version.topology + 1);
+            // Every accepted operation changes the tables, but storing the edge already stored
+            // (set-vertex-edge, set-face-edge), which changes nothing and keeps the version.
+            const bool nothing = c.steps.empty() && c.positions.empty();
+            if (nothing) CHECK(std::string(op_name(call.op)).rfind("set-", 0) == 0);
+            CHECK(w.version().topology == before.version.topology + (nothing ? 0 : 1));
             CHECK(c.before == before.version);
             CHECK(c.after == w.version());
             require_rebuild_agrees(w);
