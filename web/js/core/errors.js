@@ -30,20 +30,6 @@ export function isNumberArray(value) {
     : Array.isArray(value) && value.every((x) => typeof x === 'number');
 }
 
-// A Float64Array copy of `value` (an array of numbers or a typed array), with every entry
-// finite; otherwise throws `code` naming the first bad entry.
-export function finiteArray(value, what, { code = 'invalid-argument', stride = 1 } = {}) {
-  if (!isNumberArray(value)) fail('invalid-argument', `${what} must be an array of numbers`);
-  const out = Float64Array.from(value);
-  for (let i = 0; i < out.length; i += 1) {
-    if (!Number.isFinite(out[i])) {
-      const where = stride > 1 ? `entry ${i} (item ${Math.floor(i / stride)}, component ${i % stride})` : `entry ${i}`;
-      fail(code, `${what} has a value that is not a finite number at ${where}: ${out[i]}`);
-    }
-  }
-  return out;
-}
-
 export function integerIn(value, what, min, max) {
   if (!Number.isInteger(value) || value < min || value > max) {
     fail('invalid-argument', `${what} must be a whole number from ${min} to ${max}, not ${String(value).slice(0, 40)}`);

@@ -56,26 +56,6 @@ template <int P> inline void basis_functions_fixed(int span, double u, const dou
     basis_functions_upto<P>(span, u, P, t, N);
 }
 
-// N[r] as above and dN[r] = d/du N_{span-p+r,p}(u), from the degree p-1 functions:
-// N'_i,p = p (N_i,p-1 / (t_i+p - t_i) - N_i+1,p-1 / (t_i+p+1 - t_i+1)).
-template <int P> inline void basis_functions_d1_fixed(int span, double u, const double* t, double* N, double* dN) {
-    double left[P + 1];
-    double right[P + 1];
-    N[0] = 1.0;
-    for (int j = 1; j <= P; ++j) {
-        if (j == P) {
-            // N holds the P functions of degree P-1: N_{span-P+1+q, P-1}, q = 0..P-1.
-            for (int r = 0; r <= P; ++r) {
-                double d = 0.0;
-                if (r >= 1) d += N[r - 1] / (t[span + r] - t[span - P + r]);
-                if (r <= P - 1) d -= N[r] / (t[span + r + 1] - t[span - P + r + 1]);
-                dN[r] = P * d;
-            }
-        }
-        raise_basis_degree(span, u, j, t, left, right, N);
-    }
-}
-
 void basis_functions(int span, double u, int degree, const double* knots, double* N);
 
 // ders[k*(p+1) + r] = d^k/du^k N_{span-p+r, p}(u), k = 0..n (A2.3). Orders above p are 0.

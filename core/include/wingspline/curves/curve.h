@@ -100,9 +100,6 @@ public:
     // out[(max_order+1)*dim*j + dim*k + c]: orders k = 0..max_order at params[j].
     void evaluate_all(const double* params, std::size_t n, int max_order, double* out) const;
 
-    // The power coefficients of the polynomial segments (hermite, catmull-rom, cardinal,
-    // interpolation): coefficients_[segment][(degree+1)*dim], row r multiplies u^(degree-r).
-    int polynomial_segment_count() const { return static_cast<int>(segment_coefficients_.size()); }
 
 private:
     void evaluate_polynomial(const double* params, std::size_t n, int max_order, bool all, double* out) const;
