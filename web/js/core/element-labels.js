@@ -1,3 +1,4 @@
+// @ts-check
 // The slides' names of mesh elements: 1-based (v1, e1, F1) although the API's indices are
 // 0-based; -1 (none) has no name. Every message names elements this way, as the core's do
 // (vertex_label, edge_label, face_label) and as the lesson tables show them; the pages take

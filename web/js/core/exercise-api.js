@@ -1,3 +1,4 @@
+// @ts-check
 // Exercise part of the API: checking a student's winged-edge table (exercise kind
 // 1). Plain values in and out: the mesh as faces (or CSR) with its vertex count, the answer as
 // flat arrays of whole numbers (edges: 8 per row, S E L R S:L S:R E:L E:R; the student's row r

@@ -1,3 +1,4 @@
+// @ts-check
 // Mesh part of the API: plain values, 0-based indices, -1 = none.
 // A built mesh lives in the core's registry; the Mesh object below holds only its integer
 // handle, and mesh.dispose() frees it at once (a FinalizationRegistry is only a safety net
@@ -643,11 +644,13 @@ export function createMeshApi(raw) {
     // vertices or faces than meshLimits; checkCounts: false lifts that) with error.line
     // (1-based) and the line in the message. A file over the limits is refused before it
     // is copied into the module's memory.
+    /** @param {string} text @param {{ format?: string, layout?: 'faces' | 'csr', checkCounts?: boolean }} [options] */
     parseMesh(text, { format = 'off', layout, checkCounts = true } = {}) {
       if (typeof text !== 'string') fail('invalid-argument', 'parseMesh needs the file contents as a string');
       const r = raw.meshParse(utf8.encode(text), String(format), checkCounts !== false);
       if (!r.ok) {
-        const err = new WingsplineError(r.code, r.message);
+        // WingsplineError declares no `line`: only parseMesh's errors carry one.
+        const err = /** @type {WingsplineError & { line?: number }} */ (new WingsplineError(r.code, r.message));
         if (r.line !== undefined) err.line = r.line;
         throw err;
       }

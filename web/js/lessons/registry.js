@@ -1,3 +1,4 @@
+// @ts-check
 // The lesson registry: every lesson page the site has, in course order. The landing page
 // lists them; a lesson whose page is not built yet is shown as "coming".
 export const lessons = [

@@ -1,3 +1,4 @@
+// @ts-check
 // The slides' names of mesh elements: 1-based on screen (v1, e1, F1) although the core's
 // indices are 0-based; -1 (none) has no name. One place for every page (the mesh and
 // subdivision lessons and the exercises' tables) and for the API's own messages: defined

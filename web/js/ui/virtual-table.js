@@ -23,6 +23,14 @@ export function headRows(head) {
 
 // rowAttributes(i): extra attributes of row i's <tr> (e.g. data-representation);
 // cellClasses[k]: the class of every row's k-th <td>; className: the <table>'s classes.
+// onRowEnter, onRowLeave and onRowClick are optional (a table nobody picks from has none).
+/**
+ * @param {{ id: string, caption: string,
+ *   head: Array<Array<string | { text: string, colspan?: number, rowspan?: number, scope?: string, class?: string }>>,
+ *   row: (i: number) => unknown[], rowLabel: (i: number) => unknown,
+ *   onRowEnter?: (i: number) => void, onRowLeave?: () => void, onRowClick?: (i: number) => void,
+ *   rowAttributes?: ((i: number) => Record<string, unknown>) | null, cellClasses?: string[], className?: string }} spec
+ */
 export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnter, onRowLeave, onRowClick,
   rowAttributes = null, cellClasses = [], className = 'data-table mesh-table' }) {
   // Header rows are rows 1..head.length of the whole table for assistive technology; data

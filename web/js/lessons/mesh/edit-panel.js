@@ -1,3 +1,4 @@
+// @ts-check
 // "Edit the mesh": the picked vertex, edge or face (canvas, table row, touch or
 // the number fields here), the operations that apply to it (each enabled or saying why
 // not, from mesh.check), the last edit played back one pointer assignment at a time, the

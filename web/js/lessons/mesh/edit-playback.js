@@ -1,3 +1,4 @@
+// @ts-check
 // Playing an edit back one pointer assignment at a time. The core's change record
 // lists every assignment in the order its algorithm made them ({table, row, field, before,
 // after}); this file turns them into frames and into the winged-edge tables as they stood

@@ -1,3 +1,4 @@
+// @ts-check
 // Exports of the mesh lesson: the winged-edge tables as CSV, Markdown and LaTeX (with the
 // slide's two-level header), and the mesh itself as OFF or OBJ, written by the core.
 import { toCsv } from '../../app/file-io.js';

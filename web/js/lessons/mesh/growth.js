@@ -1,3 +1,4 @@
+// @ts-check
 // Query cost and storage against mesh size: lecture 000's point that the winged
 // edge answers "faces around a vertex" in time proportional to the answer while a table
 // without adjacency scans the mesh, as a picture. The core answers every number: generated
@@ -56,6 +57,7 @@ function drawGrowth(canvas, { sizes, series }, { colors, names, yLabel }) {
   const y0 = Math.floor(Math.log10(Math.min(...values))); const y1 = Math.ceil(Math.log10(Math.max(...values)));
   const X = (x) => PAD.left + ((x - x0) / Math.max(1, x1 - x0)) * (width - PAD.left - PAD.right);
   const Y = (y) => PAD.top + (1 - (y - y0) / Math.max(1, y1 - y0)) * (height - PAD.top - PAD.bottom);
+  /** @type {import('../../ui/plot-canvas.js').PlotLabels} */
   const labels = plotLabels(g, canvas, width, height);
   g.strokeStyle = colors.grid; g.lineWidth = 1;
   for (let k = y0; k <= y1; k += 1) {

@@ -1,3 +1,4 @@
+// @ts-check
 // Which elements of the mesh on screen exist, and what becomes of the lesson's references
 // to elements when the mesh changes (another mesh chosen, undo, redo, an import, a link, an
 // edit that removes an element). The hovered and picked element live in the lesson view

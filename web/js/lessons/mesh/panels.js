@@ -1,3 +1,4 @@
+// @ts-check
 // The controls and panels of the mesh lesson: mesh choice, the walk player with its
 // pseudocode, and the tabs of representations, queries, storage and planes. Everything
 // shown comes from the model (what the core returned); the panels only lay it out and

@@ -1,3 +1,4 @@
+// @ts-check
 // "Which edge does the table store?" (lecture 000: the vertex table and the face table hold
 // one incident edge each, and the walk starts there). A small control in the winged-edge
 // tab: a select of the walked vertex's (or face's) own edges; choosing one appends the

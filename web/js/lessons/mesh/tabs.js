@@ -1,3 +1,4 @@
+// @ts-check
 // The representations of one mesh as live tables (lecture 000: independent faces, vertex
 // and face tables, adjacency lists, winged edge; lecture 001: pointers to an edge list), the
 // queries compared, storage with the lectures' pros and cons, and plane equations. Tables

@@ -1,3 +1,4 @@
+// @ts-check
 // Drawing the subdivision lesson: the mesh shown (shaded by the core's normals, far faces
 // first), the new points of the phases shown, the chosen point's mask as lines to the old
 // vertices it averages with their weights, the extraordinary vertices ringed (the side plot

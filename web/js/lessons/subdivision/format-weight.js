@@ -1,3 +1,4 @@
+// @ts-check
 // How a mask's weight is written on screen.
 import { formatNumber } from '../../ui/mathml.js';
 

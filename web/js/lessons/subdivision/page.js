@@ -1,3 +1,4 @@
+// @ts-check
 // The subdivision lesson page: the skeleton runs the lesson object.
 import { runLesson } from '../../app/shell.js';
 import { subdivisionLesson } from './lesson.js';

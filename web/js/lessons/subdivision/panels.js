@@ -1,3 +1,4 @@
+// @ts-check
 // The controls and panels of the subdivision lesson: the mesh and scheme, the level and the
 // phase player, the mask of the chosen new point (its old vertices and weights as the core
 // gave them), the counts, the winged-edge tables of what is shown and the curve beside it.

@@ -1,3 +1,4 @@
+// @ts-check
 // Where the subdivision lesson's mesh comes from: a mesh of the core (tetrahedron, cube,
 // lecture 000's example, a generated sphere or grid) or an imported OFF/OBJ file. The core
 // builds and checks every one of them; this file only names them (ui/mesh/mesh-choice.js
