@@ -1,5 +1,5 @@
 // The mesh lesson page (issue 4): the skeleton runs the lesson object.
-import { runLesson } from '../../app/shell.js';
+import { runLessonPage } from '../../pages/lesson-page.js';
 import { meshLesson } from './lesson.js';
 
-runLesson(meshLesson);
+runLessonPage(meshLesson);

@@ -1,5 +1,5 @@
 // The subdivision lesson page (issue 16): the skeleton runs the lesson object.
-import { runLesson } from '../../app/shell.js';
+import { runLessonPage } from '../../pages/lesson-page.js';
 import { subdivisionLesson } from './lesson.js';
 
-runLesson(subdivisionLesson);
+runLessonPage(subdivisionLesson);

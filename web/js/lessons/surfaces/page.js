@@ -1,4 +1,4 @@
-import { runLesson } from '../../app/shell.js';
+import { runLessonPage } from '../../pages/lesson-page.js';
 import { lesson } from './lesson.js';
 
-runLesson(lesson);
+runLessonPage(lesson);
