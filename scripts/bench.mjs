@@ -9,7 +9,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { setup } from './setup.mjs';
-import { build } from './build.mjs';
+import { build, buildNative } from './build.mjs';
 import { repoRoot, log, capture, quiet } from './lib/run.mjs';
 import { expectedTasks, referenceFor, nativeTwin, missingTasks } from './lib/bench-tasks.mjs';
 
@@ -19,6 +19,7 @@ const outDir = path.join(repoRoot, 'bench-results');
 if (!tableOnly) {
   await setup();
   await build();
+  await buildNative(); // the native benchmark (build() makes only what serving needs)
 }
 
 const programs = [];
