@@ -3,10 +3,11 @@
 // (web/templates/lesson.html). The lesson contract (the Lesson, Ctx and Painter types, what
 // each hook receives and when it runs) is written once, in app/contract.js.
 //
-// This file is the page's lifecycle (start-up, ready), the one compute path and the render
-// loop; its parts live beside it: handles.js (the lesson's handles on the canvas),
-// saved-work.js (the person's saved work, other tabs, the History menu), follow-address.js
-// (a link pasted into the open tab), toolbar.js (buttons, export menu, share, theme,
+// This file is the page's lifecycle (start-up, ready) and the one compute path; its parts
+// live beside it: render-loop.js (frames on demand, panels when the state changed),
+// handles.js (the lesson's handles on the canvas), saved-work.js (the person's saved work,
+// other tabs, the History menu), follow-address.js (a link pasted into the open tab),
+// embed.js (a page embedded in another), toolbar.js (buttons, export menu, share, theme,
 // presentation, reset), inspector.js (exact coordinates of the selected handle),
 // import-export.js (files in and out), presenter.js (presenter-remote keys), message-line.js
 // (messages and announcements). What sits above the skeleton (the exercise wiring, the
@@ -25,19 +26,18 @@
 import { loadWingspline } from '../core/wingspline.js';
 import { createStore } from './store.js';
 import { isFramed } from './persist.js';
-import { readEmbedOptions, embedProblemsText } from './share-link.js';
+import { applyEmbed, showEmbedPanels } from './embed.js';
 import { openWorkStores, readOwnWork, createSavedWork } from './saved-work.js';
 import { createAddressFollower } from './follow-address.js';
 import { createHandles } from './handles.js';
+import { createRenderLoop } from './render-loop.js';
 import { checkChange } from './schema.js';
 import { createStage } from './stage.js';
-import { CanvasPainter, SvgPainter } from './painter.js';
 import { labelRects } from './label-layout.js';
 import { legendRects, withLegendBand } from './canvas-legend.js';
 import { createKeymap } from './keymap.js';
-import { applyStoredTheme, setTheme, showPresenting, isPresenting, drawingColors } from './theme.js';
+import { applyStoredTheme, isPresenting } from './theme.js';
 import { registerServiceWorker } from './sw-register.js';
-import { watchScrollRegions } from './dom.js';
 import { createMessageLine, createAnnouncer, errorText } from './message-line.js';
 import { createPresenter } from './presenter.js';
 import { createInspector } from './inspector.js';
@@ -57,17 +57,9 @@ const REPLACING = ['link', 'reset', 'import', 'restore', 'exercise'];
  * @returns {Promise<Ctx | null>}
  */
 export async function runLesson(lesson, { exercises = null, gpuRenderer = null } = {}) {
-  // An embed (#embed=1&..., docs/embed.md): the canvas and its few controls, fitted to the
-  // frame; its theme and presentation mode come from the link and are not remembered; it
-  // reads and writes nothing of the person's saved work.
-  const embed = readEmbedOptions(window.location.hash);
   applyStoredTheme();
-  if (embed) {
-    document.documentElement.dataset.embed = '';
-    if (embed.controls) document.documentElement.dataset.embedControls = '';
-    if (embed.theme) setTheme(embed.theme, { remember: false });
-    showPresenting(embed.present);
-  }
+  // An embed (embed.js) shows the canvas and its few controls, fitted to the frame.
+  const embed = applyEmbed(window.location.hash);
   registerServiceWorker();
   const byId = (id) => /** @type {HTMLElement} */ (document.getElementById(id));
   const els = {
@@ -119,8 +111,6 @@ export async function runLesson(lesson, { exercises = null, gpuRenderer = null }
   /** @type {import('./contract.js').ExercisePlayer | null} */
   let player = null; // the exercise player, when the page shows an exercise
   let autoFit = false; // the default view follows the canvas size until the person pans or zooms
-  let frame = 0;
-  let colors = drawingColors();
 
   /** @type {Ctx} */
   const ctx = {
@@ -130,14 +120,14 @@ export async function runLesson(lesson, { exercises = null, gpuRenderer = null }
     commit,
     setView,
     fitView,
-    render: scheduleRender,
-    refresh,
+    render: () => frames.scheduleRender(),
+    refresh: () => frames.refresh(),
     message,
     keymap,
     ui,
     panels: els.panels,
     controls: els.controls,
-    get colors() { return colors; },
+    get colors() { return frames.colors; },
     stage: /** @type {any} */ (null),
     setPresenter: createPresenter(keymap),
     endGesture: () => store.endGesture(),
@@ -205,60 +195,21 @@ export async function runLesson(lesson, { exercises = null, gpuRenderer = null }
   });
   const { persister } = saved;
 
-  let needsPanelUpdate = true;
+  const frames = createRenderLoop({
+    lesson, ctx, view: () => view, model: () => model, panels: els.panels, description: els.description,
+    player: () => player, toolbar: () => toolbar, inspector: () => inspector,
+  });
+  const { refresh, scheduleRender, renderNow, svgFigure, recolor } = frames;
+
   store.subscribe((state, reason) => {
     // Undo and redo bring back a state without a model; everything else computed first.
     if (reason !== 'view' && state !== modelState) recompute(state);
-    if (reason !== 'view') needsPanelUpdate = true;
+    if (reason !== 'view') refresh(); // (the panels follow the state, not the view)
     // A whole new state from outside replaces the saved work: that goes into the history.
     persister.save(state, { replacing: REPLACING.includes(reason) ? reason : null });
     if (reason !== 'view') player?.stateChanged();
     scheduleRender();
   });
-
-  // ---------------------------------------------------------------- drawing
-  function refresh() {
-    needsPanelUpdate = true;
-    scheduleRender();
-  }
-
-  function scheduleRender() {
-    if (frame) return;
-    frame = requestAnimationFrame(renderNow);
-  }
-
-  function renderNow() {
-    frame = 0;
-    const state = store.state;
-    if (needsPanelUpdate) {
-      needsPanelUpdate = false;
-      lesson.update?.(view, model, state, ctx);
-      watchScrollRegions(els.panels?.parentElement ?? document);
-      const text = player?.description ?? lesson.describe?.(view, model, state);
-      if (text && els.description && els.description.textContent !== text) els.description.textContent = text;
-      toolbar.update();
-    }
-    inspector?.update();
-    const g = ctx.stage.beginFrame();
-    const painter = new CanvasPainter(g, ctx.stage.transform(), { scale: ui.present ? 1.6 : 1, background: colors.background });
-    painter.clear();
-    lesson.draw(view, painter, model, state, ctx);
-    player?.draw(painter, colors);
-    painter.finish(); // the labels, placed together (app/label-layout.js), and the legend
-    lesson.afterFrame?.(view, model, state, ctx);
-  }
-
-  function svgFigure() {
-    const painter = new SvgPainter(ctx.stage.transform(), { scale: ui.present ? 1.6 : 1, background: colors.background });
-    painter.clear();
-    lesson.draw(view, painter, model, store.state, ctx);
-    return painter.toString();
-  }
-
-  function recolor({ now = false } = {}) {
-    colors = drawingColors();
-    if (now) renderNow(); else refresh();
-  }
 
   // ---------------------------------------------------------------- stage
   const handles = createHandles({
@@ -285,7 +236,7 @@ export async function runLesson(lesson, { exercises = null, gpuRenderer = null }
 
   // ---------------------------------------------------------------- files and toolbar
   const files = createImportExport({
-    lesson, contents, pngFigure: async () => withLegendBand(ctx.stage.canvas, await ctx.stage.png(), { ink: colors.ink, background: colors.background }), svgFigure, accept, message,
+    lesson, contents, pngFigure: async () => withLegendBand(ctx.stage.canvas, await ctx.stage.png(), { ink: frames.colors.ink, background: frames.colors.background }), svgFigure, accept, message,
     hookArgs: () => [view, model, store.state, ctx],
     announceStatus: announcer.status,
   });
@@ -352,7 +303,7 @@ export async function runLesson(lesson, { exercises = null, gpuRenderer = null }
   }
   if (restored.previous) address.offerPrevious(restored.previous, restored.problem);
   else if (restored.problem) message.warn(restored.problem);
-  const embedProblem = embed ? embedProblemsText([...embed.problems, ...showEmbedPanels(embed.panels)]) : null;
+  const embedProblem = embed ? showEmbedPanels(embed, els.panels) : null;
   if (embedProblem) message.warn(restored.problem ? `${embedProblem} ${restored.problem}` : embedProblem, { code: 'embed-setting-refused' });
   autoFit = restored.source === 'default' || Boolean(embed) || restored.source === 'exercise';
   if ((restored.source === 'default' || embed || restored.source === 'exercise') && lesson.fitView) {
@@ -374,17 +325,6 @@ export async function runLesson(lesson, { exercises = null, gpuRenderer = null }
   // link that replaced saved work puts that work into the history.
   persister.save(store.state, { replacing: restored.previous ? 'link' : null });
   if (framed && !message.text) message.info('This lesson is shown inside another page: your saved work is neither read nor changed here. Open the lesson in its own tab to work on it.', { code: 'framed' });
-
-  // An embed's side panels: only those its link lists (panels=a,b), by their ids; the names
-  // that are no panel of this lesson come back as sentences.
-  function showEmbedPanels(ids) {
-    const found = [];
-    for (const el of /** @type {HTMLElement[]} */ ([...(els.panels?.children ?? [])])) {
-      if (el.id && ids.includes(el.id)) { el.dataset.embedShown = ''; found.push(el.id); }
-    }
-    if (found.length) document.documentElement.dataset.embedPanels = '';
-    return ids.filter((id) => !found.includes(id)).map((id) => `panels lists "${id}", which is not a panel of this lesson`);
-  }
 
   // What tests and students' scripts may ask the page (never used by the page itself).
   // `hooks` is the lesson object, for benchmarks that time its hooks (read when called).
