@@ -9,7 +9,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { setup } from './setup.mjs';
-import { build, buildWasm } from './build.mjs';
+import { build, buildNative, buildWasm } from './build.mjs';
 import { repoRoot, log, capture, quiet } from './lib/run.mjs';
 import { expectedTasks, referenceFor, nativeTwin, missingTasks } from './lib/bench-tasks.mjs';
 
@@ -19,7 +19,8 @@ const outDir = path.join(repoRoot, 'bench-results');
 if (!tableOnly) {
   await setup();
   await build();
-  await buildWasm({ bench: true });
+  await buildNative(); // the native benchmark (build() makes only what serving needs)
+  await buildWasm({ bench: true }); // the bench module: the shipped bindings plus core/bench
 }
 
 const programs = [];

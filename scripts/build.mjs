@@ -1,25 +1,32 @@
-// Builds everything incrementally (CMake decides what is stale):
-//   build/native  the core + Catch2 tests + native benchmark (g++)
+// Builds what serving the site needs, incrementally (CMake decides what is stale):
 //   build/wasm    the core + bindings -> wingspline-core.{js,wasm} (em++)
 //   dist/         the static site: web/ plus the wasm module under dist/wasm/
+// `npm start` and `npm test` run build(). The native build (build/native: the core, the
+// Catch2 tests and the native benchmark, g++) is buildNative(), run by what needs it: the
+// native test layer (scripts/lib/test-layers.mjs) and `npm run bench`; the sanitizer and
+// fuzz builds are their layers' own. Each CMake build and the site assembly holds its lock
+// (scripts/lib/build-lock.mjs), so two project commands at once never write one folder.
 import fs from 'node:fs';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { repoRoot, log, must } from './lib/run.mjs';
+import { withBuildLock } from './lib/build-lock.mjs';
 import { writeServiceWorkerManifest } from './lib/site-manifest.mjs';
 import { lessonPage } from './lib/lesson-page.mjs';
 import { exerciseIndex } from './lib/exercise-index.mjs';
 
 const jobs = ['-j', '2'];
 
-async function cmakeBuild(dir, configure, targets = []) {
+function cmakeBuild(dir, configure, targets = []) {
   const buildDir = path.join(repoRoot, 'build', dir);
-  if (!fs.existsSync(path.join(buildDir, 'CMakeCache.txt'))) {
-    log(`configuring build/${dir}`);
-    await configure(buildDir);
-  }
-  log(`building build/${dir}`);
-  await must('cmake', ['--build', buildDir, ...jobs, ...targets.flatMap((t) => ['--target', t])]);
+  return withBuildLock(dir, async () => {
+    if (!fs.existsSync(path.join(buildDir, 'CMakeCache.txt'))) {
+      log(`configuring build/${dir}`);
+      await configure(buildDir);
+    }
+    log(`building build/${dir}`);
+    await must('cmake', ['--build', buildDir, ...jobs, ...targets.flatMap((t) => ['--target', t])]);
+  });
 }
 
 export async function buildNative({ sanitize = false } = {}) {
@@ -68,7 +75,11 @@ async function lessonPages() {
   return lessons.map((lesson) => ({ file: lesson.page, html: lessonPage(lesson) }));
 }
 
-export async function assembleSite() {
+export function assembleSite() {
+  return withBuildLock('dist', assembleSiteNow);
+}
+
+async function assembleSiteNow() {
   const dist = path.join(repoRoot, 'dist');
   const pages = await lessonPages();
   mirror(path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.js', ...pages.map((p) => p.file)]), new Set(['templates']));
@@ -92,7 +103,6 @@ export async function assembleSite() {
 }
 
 export async function build() {
-  await buildNative();
   await buildWasm();
   await assembleSite();
   log('site assembled in dist/');

@@ -3,7 +3,7 @@
 //            lesson contract (web/js/app/contract.js); tsc -p tsconfig.examples.json: the
 //            package's declarations (types/) against examples/ and deliberate misuses
 //   scripts  node --test tests/scripts (how these layers count node:test results)
-//   native   Catch2 through CTest (build/native)
+//   native   Catch2 (build/native, built by the layer: build() makes only the wasm module and dist/)
 //   wasm     node --test tests/wasm   (the JS API over the wasm module)
 //   lessons  node --test tests/lessons (the DOM-free lesson modules over the real core)
 //   package  node --test tests/package (npm pack + install + import, examples/, npm start)

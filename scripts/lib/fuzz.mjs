@@ -13,6 +13,7 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { repoRoot, log, must, capture } from './run.mjs';
+import { withBuildLock } from './build-lock.mjs';
 
 export const fuzzSource = path.join(repoRoot, 'tests', 'fuzz');
 export const fuzzBuild = path.join(repoRoot, 'build', 'fuzz');
@@ -28,14 +29,16 @@ export function fuzzTargets() {
     .sort();
 }
 
-export async function buildFuzz() {
-  if (!fs.existsSync(path.join(fuzzBuild, 'CMakeCache.txt'))) {
-    log('configuring build/fuzz (clang++-14, libFuzzer + ASan + UBSan)');
-    await must('cmake', ['-S', fuzzSource, '-B', fuzzBuild, '-DCMAKE_CXX_COMPILER=clang++-14',
-      '-DCMAKE_BUILD_TYPE=RelWithDebInfo']);
-  }
-  log('building build/fuzz');
-  await must('cmake', ['--build', fuzzBuild, '-j', '2']);
+export function buildFuzz() {
+  return withBuildLock('fuzz', async () => {
+    if (!fs.existsSync(path.join(fuzzBuild, 'CMakeCache.txt'))) {
+      log('configuring build/fuzz (clang++-14, libFuzzer + ASan + UBSan)');
+      await must('cmake', ['-S', fuzzSource, '-B', fuzzBuild, '-DCMAKE_CXX_COMPILER=clang++-14',
+        '-DCMAKE_BUILD_TYPE=RelWithDebInfo']);
+    }
+    log('building build/fuzz');
+    await must('cmake', ['--build', fuzzBuild, '-j', '2']);
+  });
 }
 
 // Runs one target; resolves to { name, ok, runs, output }.

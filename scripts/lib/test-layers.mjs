@@ -88,6 +88,18 @@ export async function catchTests(binary, args = [], env = process.env) {
   return { code: r.code || 1, pass: 0, fail: 1, skip: 0 };
 }
 
+// The Catch2 suite (build/native), built here, not by build(): `npm start` needs only the
+// wasm module and the site, and the native tests are most of a fresh build's time.
+async function nativeLayer() {
+  try {
+    await buildNative();
+  } catch (err) {
+    process.stderr.write(`[wingspline] the native build failed: ${err.message}\n`);
+    return { code: 1, pass: 0, fail: 1, skip: 0 };
+  }
+  return catchTests(path.join(repoRoot, 'build', 'native', 'wingspline_tests'));
+}
+
 // The native suite again under AddressSanitizer + UndefinedBehaviorSanitizer (issue 9):
 // build/native-asan (Debug, -fsanitize=address,undefined, -fno-sanitize-recover=all) is
 // built here, not up front, so `node scripts/test.mjs native wasm` stays quick. Any report
@@ -177,7 +189,7 @@ export const layers = [
   { name: 'types', run: typesLayer },
   // The project scripts themselves: how a node:test layer is counted (tests/scripts).
   { name: 'scripts', run: () => nodeTests('tests/scripts') },
-  { name: 'native', run: () => catchTests(path.join(repoRoot, 'build', 'native', 'wingspline_tests')) },
+  { name: 'native', run: nativeLayer },
   // The wasm layer also loads the bench module (the benchmark's hooks, tested there).
   { name: 'wasm', run: async () => { await buildWasm({ bench: true }); return nodeTests('tests/wasm'); } },
   { name: 'lessons', run: () => nodeTests('tests/lessons') },

@@ -45,6 +45,10 @@ test('HOST=127.0.0.1 PORT=0: the printed line names the folder and the URL, and 
     assert.equal(urls.length, 1, server.lines.join('\n'));
     assert.match(urls[0], /^http:\/\/127\.0\.0\.1:\d+\/$/);
     assert.ok(server.lines.some((l) => l.includes(path.join(repoRoot, 'dist'))), `the folder served is named:\n${server.lines.join('\n')}`);
+    // npm start builds what serving needs (the wasm module and the site), never the native
+    // tests or benchmark (the native test layer and npm run bench build those).
+    assert.ok(server.lines.some((l) => /building build\/wasm/.test(l)), `the wasm module is built:\n${server.lines.join('\n')}`);
+    assert.ok(!server.lines.some((l) => /build\/native/.test(l)), `nothing native is built:\n${server.lines.join('\n')}`);
     await landingPage(urls[0]);
   } finally {
     await server.stop();

@@ -240,4 +240,70 @@
  * state (app/mesh-import.js: progress, Cancel; issue 17).
  */
 
+/**
+ * What a page entry may hand the shell beside the lesson (runLesson(lesson, options)). The
+ * skeleton imports nothing above it (docs/architecture.md, "Layers"): what a lesson page
+ * needs from higher up is composed by the page entry (web/js/pages/lesson-page.js) and
+ * passed in here. `exercises`: the exercise wiring (exercise/lesson-wiring.js); without it
+ * a page opens no exercise link and offers no "Make an exercise". `gpuRenderer`: makes the
+ * WebGL2 renderer the stage keeps under the canvas (ui/gl-mesh.js `createGlMesh`; it returns
+ * null or throws where the browser has no WebGL2); without it `ctx.stage.gl()` is null and
+ * lessons draw with the 2D painter.
+ * @typedef {{ exercises?: ExerciseWiring, gpuRenderer?: (canvas: HTMLCanvasElement) => any }} ShellOptions
+ */
+
+/**
+ * The exercise wiring, as the shell meets it at four points: `open` before the lesson
+ * starts (null: the address names no exercise); the opening's `start` once the lesson's
+ * panels are built; `named` when the address changes (a page given an exercise link opens
+ * afresh); `author` behind "Make an exercise from this view".
+ * @typedef {{
+ *   open(lesson: Lesson): Promise<ExerciseOpening | null>,
+ *   named(hash: string): boolean,
+ *   author(parts: { ctx: Ctx, lesson: Lesson, view: View, message: MessageLine }): void,
+ * }} ExerciseWiring
+ */
+
+/**
+ * An exercise link read before the lesson starts. `ready`: its state can be shown (then
+ * `restored` is what the page starts on, and the person's own work is neither read nor
+ * written meanwhile); `shownOnStart`: the page started on it, so if it cannot be played
+ * after all the shell shows the person's own work instead; `refuse(text)`: the core
+ * refused its drawing; `start(parts)` says why it cannot be played, or mounts the player.
+ * @typedef {{
+ *   ready: boolean,
+ *   shownOnStart?: boolean,
+ *   restored?: any,
+ *   refuse(text: string): void,
+ *   start(parts: ExerciseParts): ExercisePlayer | null,
+ * }} ExerciseOpening
+ */
+
+/**
+ * What the shell hands a starting exercise: `accept(state, reason)` shows a whole new state
+ * as one undoable step (false: refused, nothing changed); `keepInHistory(state, summary)`
+ * puts a drawing into the history of replaced work (nothing where the page keeps no work).
+ * @typedef {{
+ *   ctx: Ctx,
+ *   lesson: Lesson,
+ *   view: () => View,
+ *   panels: HTMLElement,
+ *   message: MessageLine,
+ *   accept(state: State, reason: string): boolean,
+ *   keepInHistory(state: State, summary: string): void,
+ * }} ExerciseParts
+ */
+
+/**
+ * A mounted exercise: the drawing's description while it is answered (null: the lesson's
+ * own), what it draws over the lesson's drawing, what it does when the state changes, and
+ * the page's Reset (back to the exercise's starting drawing).
+ * @typedef {{
+ *   description: string | null,
+ *   draw(painter: Painter, colors: Ctx['colors']): void,
+ *   stateChanged(): void,
+ *   reset(): void,
+ * }} ExercisePlayer
+ */
+
 export {};

@@ -1,48 +1,48 @@
 // @ts-check
-// The lesson skeleton: runLesson(lesson) wires one lesson object to the page frame
+// The lesson skeleton: runLesson(lesson, options) wires one lesson object to the page frame
 // (web/templates/lesson.html). The lesson contract (the Lesson, Ctx and Painter types, what
 // each hook receives and when it runs) is written once, in app/contract.js.
 //
-// This file wires the store, the stage, the render loop and the lesson's hooks; its parts
-// live beside it: toolbar.js (buttons, export menu, share, theme, presentation, reset),
-// inspector.js (exact coordinates of the selected handle), import-export.js (files in and
-// out), presenter.js (presenter-remote keys), message-line.js (messages and announcements).
+// This file is the page's lifecycle (start-up, ready) and the one compute path; its parts
+// live beside it: render-loop.js (frames on demand, panels when the state changed),
+// handles.js (the lesson's handles on the canvas), saved-work.js (the person's saved work,
+// other tabs, the History menu), follow-address.js (a link pasted into the open tab),
+// embed.js (a page embedded in another), toolbar.js (buttons, export menu, share, theme,
+// presentation, reset), inspector.js (exact coordinates of the selected handle),
+// import-export.js (files in and out), presenter.js (presenter-remote keys), message-line.js
+// (messages and announcements). What sits above the skeleton (the exercise wiring, the
+// WebGL2 renderer) comes in through `options` (contract.js, ShellOptions), composed by the
+// page entry (web/js/pages/lesson-page.js).
 //
 // Changing state: every change is computed before it is accepted (accept/commit below, the
 // one place lesson.compute runs); if the core refuses the new state (bad knots, a zero
 // weight...) the message line says why and the old state stays.
 //
-// Classroom features every lesson gets from the shell (issue 8): the state in the link and
-// local storage, undo, JSON/SVG/PNG export and JSON import (file picker and drop), the
-// handle inspector, live announcements of handle positions, presentation mode (class
-// .advanced hides a control there), themes, print, offline. Markup from files and links is
-// only ever set as text.
+// Classroom features every lesson gets from the shell: the state in the link and local
+// storage, undo, JSON/SVG/PNG export and JSON import (file picker and drop), the handle
+// inspector, live announcements of handle positions, presentation mode (class .advanced
+// hides a control there), themes, print, offline. Markup from files and links is only ever
+// set as text.
 import { loadWingspline } from '../core/wingspline.js';
 import { createStore } from './store.js';
-import { restoreState, restoreLinkOnly, createPersister, readHashCode, readLink, isFramed } from './persist.js';
-import { readEmbedOptions, embedProblemsText } from './share-link.js';
-import { createContentStore } from './content-store.js';
-import { createDatabase } from './idb.js';
-import { createWorkHistory, BUDGET_CHARS } from './work-history.js';
-import { decodeRecord } from './saved-record.js';
-import { createHistoryMenu } from './history-menu.js';
+import { isFramed } from './persist.js';
+import { applyEmbed, showEmbedPanels } from './embed.js';
+import { openWorkStores, readOwnWork, createSavedWork } from './saved-work.js';
+import { createAddressFollower } from './follow-address.js';
+import { createHandles } from './handles.js';
+import { createRenderLoop } from './render-loop.js';
 import { checkChange } from './schema.js';
 import { createStage } from './stage.js';
-import { CanvasPainter, SvgPainter } from './painter.js';
 import { labelRects } from './label-layout.js';
 import { legendRects, withLegendBand } from './canvas-legend.js';
 import { createKeymap } from './keymap.js';
-import { applyStoredTheme, setTheme, showPresenting, isPresenting, drawingColors } from './theme.js';
+import { applyStoredTheme, isPresenting } from './theme.js';
 import { registerServiceWorker } from './sw-register.js';
-import { watchScrollRegions } from './dom.js';
-import { createMessageLine, createAnnouncer, errorText, coordinate } from './message-line.js';
+import { createMessageLine, createAnnouncer, errorText } from './message-line.js';
 import { createPresenter } from './presenter.js';
 import { createInspector } from './inspector.js';
 import { createImportExport } from './import-export.js';
 import { createToolbar, createEmbedToolbar } from './toolbar.js';
-import { openExercise, startExercise } from '../exercise/session.js';
-import { readExerciseLink } from '../exercise/link.js';
-import { openAuthorDialog } from '../exercise/author.js';
 
 // Reasons of a whole new state that replaces the saved work (the replaced work goes into the
 // history): a link, Reset, an import, a restore, an exercise's Start again.
@@ -53,20 +53,13 @@ const REPLACING = ['link', 'reset', 'import', 'restore', 'exercise'];
  * @typedef {import('./contract.js').State} State
  * @typedef {import('./contract.js').Ctx} Ctx
  * @param {Lesson} lesson
+ * @param {import('./contract.js').ShellOptions} [options]
  * @returns {Promise<Ctx | null>}
  */
-export async function runLesson(lesson) {
-  // An embed (#embed=1&..., docs/embed.md): the canvas and its few controls, fitted to the
-  // frame; its theme and presentation mode come from the link and are not remembered; it
-  // reads and writes nothing of the person's saved work.
-  const embed = readEmbedOptions(window.location.hash);
+export async function runLesson(lesson, { exercises = null, gpuRenderer = null } = {}) {
   applyStoredTheme();
-  if (embed) {
-    document.documentElement.dataset.embed = '';
-    if (embed.controls) document.documentElement.dataset.embedControls = '';
-    if (embed.theme) setTheme(embed.theme, { remember: false });
-    showPresenting(embed.present);
-  }
+  // An embed (embed.js) shows the canvas and its few controls, fitted to the frame.
+  const embed = applyEmbed(window.location.hash);
   registerServiceWorker();
   const byId = (id) => /** @type {HTMLElement} */ (document.getElementById(id));
   const els = {
@@ -84,7 +77,7 @@ export async function runLesson(lesson) {
   try {
     api = await loadWingspline();
   } catch (err) {
-    // A 'core-load-failed' error says what is wrong and what to check (issue 13, item 14).
+    // A 'core-load-failed' error says what is wrong and what to check.
     message.error(errorText(err), err?.code);
     document.body.dataset.ready = 'failed';
     return null;
@@ -98,30 +91,15 @@ export async function runLesson(lesson) {
   // offers would be invisible (docs/embed.md).
   const framed = !embed && isFramed();
   const keepsWork = !embed && !framed;
-  // Large fields (an imported mesh) live in IndexedDB by content hash; the link refers to
-  // them. The history of the person's work lives beside them (work-history.js); the content
-  // store never drops a mesh that saved work or the history refers to.
-  const database = createDatabase();
-  /** @type {any} */
-  let history = null;
-  const contents = createContentStore({ db: database, referenced: keepsWork ? () => history.referenced() : null, budgetChars: BUDGET_CHARS });
-  if (keepsWork) history = createWorkHistory({ db: database, contents });
+  const { contents, history } = openWorkStores({ keepsWork });
   // An exercise link (#exercise=<id> or #x=<code>, docs/exercises.md) opens the lesson on the
   // exercise's state; the person's own saved work is neither read nor written meanwhile. A
   // link that cannot be used is said, and the saved work is shown as without it.
-  const exercise = embed ? null : await openExercise(lesson);
-  const restored = exercise?.ready ? exercise.restored
-    : keepsWork ? await restoreState(lesson, { contents }) : await restoreLinkOnly(lesson, { contents });
+  const exercise = embed || !exercises ? null : await exercises.open(lesson);
+  const restored = exercise?.ready ? exercise.restored : await readOwnWork(lesson, { keepsWork, contents });
   // A link that replaced saved work is one undoable step: Undo brings the work back.
   const store = createStore(restored.previous ?? restored.state);
   if (restored.previous) store.replace(restored.state, 'link');
-  const persister = createPersister(lesson, {
-    contents, history, notify: (kind) => sayKept(kind), keep: keepsWork && !exercise?.ready && !restored.hold,
-    base: restored.base, saved: restored.source === 'storage' && !restored.problem ? restored.state : null, summarize: (state) => summaryOf(state), otherTab: (record, info) => takeOtherTab(record, info),
-  });
-  // Work set aside while a page went away, and unreadable entries of earlier versions, into
-  // the history (not awaited: the lesson starts meanwhile).
-  history?.sweep().catch(() => {});
   // ui.exercise: the kind of the exercise the page shows (a lesson hides what would answer it).
   const ui = { selected: null, hover: null, hoverPoint: null, present: isPresenting(), exercise: null };
   /** The lesson's view: what its setup returned, handed back to every later hook. */
@@ -130,11 +108,9 @@ export async function runLesson(lesson) {
   let modelState = null; // the state `model` was computed from
   /** @type {{ update(): void } | null} */
   let inspector = null; // built after the lesson's own controls
-  /** @type {any} */
+  /** @type {import('./contract.js').ExercisePlayer | null} */
   let player = null; // the exercise player, when the page shows an exercise
   let autoFit = false; // the default view follows the canvas size until the person pans or zooms
-  let frame = 0;
-  let colors = drawingColors();
 
   /** @type {Ctx} */
   const ctx = {
@@ -144,14 +120,14 @@ export async function runLesson(lesson) {
     commit,
     setView,
     fitView,
-    render: scheduleRender,
-    refresh,
+    render: () => frames.scheduleRender(),
+    refresh: () => frames.refresh(),
     message,
     keymap,
     ui,
     panels: els.panels,
     controls: els.controls,
-    get colors() { return colors; },
+    get colors() { return frames.colors; },
     stage: /** @type {any} */ (null),
     setPresenter: createPresenter(keymap),
     endGesture: () => store.endGesture(),
@@ -213,123 +189,39 @@ export async function runLesson(lesson) {
     if (fitted) setView(fitted);
   }
 
-  let needsPanelUpdate = true;
+  const saved = createSavedWork({
+    lesson, store, keepsWork, keep: keepsWork && !exercise?.ready && !restored.hold, contents, history, restored,
+    message, recompute, accept, fitView, files: () => files,
+  });
+  const { persister } = saved;
+
+  const frames = createRenderLoop({
+    lesson, ctx, view: () => view, model: () => model, panels: els.panels, description: els.description,
+    player: () => player, toolbar: () => toolbar, inspector: () => inspector,
+  });
+  const { refresh, scheduleRender, renderNow, svgFigure, recolor } = frames;
+
   store.subscribe((state, reason) => {
     // Undo and redo bring back a state without a model; everything else computed first.
     if (reason !== 'view' && state !== modelState) recompute(state);
-    if (reason !== 'view') needsPanelUpdate = true;
+    if (reason !== 'view') refresh(); // (the panels follow the state, not the view)
     // A whole new state from outside replaces the saved work: that goes into the history.
     persister.save(state, { replacing: REPLACING.includes(reason) ? reason : null });
     if (reason !== 'view') player?.stateChanged();
     scheduleRender();
   });
 
-  // ---------------------------------------------------------------- drawing
-  function refresh() {
-    needsPanelUpdate = true;
-    scheduleRender();
-  }
-
-  function scheduleRender() {
-    if (frame) return;
-    frame = requestAnimationFrame(renderNow);
-  }
-
-  function renderNow() {
-    frame = 0;
-    const state = store.state;
-    if (needsPanelUpdate) {
-      needsPanelUpdate = false;
-      lesson.update?.(view, model, state, ctx);
-      watchScrollRegions(els.panels?.parentElement ?? document);
-      const text = player?.description ?? lesson.describe?.(view, model, state);
-      if (text && els.description && els.description.textContent !== text) els.description.textContent = text;
-      toolbar.update();
-    }
-    inspector?.update();
-    const g = ctx.stage.beginFrame();
-    const painter = new CanvasPainter(g, ctx.stage.transform(), { scale: ui.present ? 1.6 : 1, background: colors.background });
-    painter.clear();
-    lesson.draw(view, painter, model, state, ctx);
-    player?.draw(painter, colors);
-    painter.finish(); // the labels, placed together (app/label-layout.js), and the legend
-    lesson.afterFrame?.(view, model, state, ctx);
-  }
-
-  function svgFigure() {
-    const painter = new SvgPainter(ctx.stage.transform(), { scale: ui.present ? 1.6 : 1, background: colors.background });
-    painter.clear();
-    lesson.draw(view, painter, model, store.state, ctx);
-    return painter.toString();
-  }
-
-  function recolor({ now = false } = {}) {
-    colors = drawingColors();
-    if (now) renderNow(); else refresh();
-  }
-
   // ---------------------------------------------------------------- stage
-  const handleCache = { state: null, model: null, list: [] };
-  function handles() {
-    if (handleCache.state !== store.state || handleCache.model !== model) {
-      handleCache.list = lesson.handles ? lesson.handles(view, model, store.state) : [];
-      handleCache.state = store.state;
-      handleCache.model = model;
-    }
-    return handleCache.list;
-  }
-  const selectedHandle = () => handles().find((x) => x.id === ui.selected);
-
-  // A handle typed into the inspector moves like a drag: moveHandle, then commit.
-  function moveTo(handle, x, y) {
-    const next = lesson.moveHandle?.(view, store.state, handle.id, x, y, model);
-    if (!next || !commit(next)) return false;
-    store.endGesture();
-    announcer.handle(handles().find((other) => other.id === handle.id) ?? handle);
-    return true;
-  }
-
-  let dragId = null;
+  const handles = createHandles({
+    lesson, store, ctx, view: () => view, model: () => model, message, announcer,
+    // An embed keeps fitting to its frame until the person pans or zooms.
+    dragStarted: () => { if (!embed) autoFit = false; },
+  });
   ctx.stage = createStage(els.canvas, {
+    ...handles.stageHooks,
     getView: () => store.state.view,
     // A pan or zoom by the person ends the automatic fitting of the default view.
     setView(next) { autoFit = false; setView(next); },
-    getHandles: handles,
-    getSelected: () => ui.selected,
-    handleScale: () => (ui.present ? 1.6 : 1),
-    select(id) {
-      ui.selected = id;
-      const handle = selectedHandle();
-      if (handle) {
-        message.info(`${handle.label} selected at (${coordinate(handle.x)}, ${coordinate(handle.y)}); arrows move it`);
-        announcer.handle(handle);
-      }
-      lesson.onSelect?.(view, id, ctx);
-      refresh();
-    },
-    hover(id, x, y) {
-      const changed = ui.hover !== id;
-      ui.hover = id;
-      ui.hoverPoint = x === undefined ? null : [x, y];
-      // Lessons that tint by the point under the mouse redraw on every move; others only
-      // when the hovered handle changes.
-      if (changed || lesson.usesHoverPoint) scheduleRender();
-    },
-    dragStart(id) {
-      // An embed keeps fitting to its frame until the person pans or zooms.
-      if (!embed) autoFit = false;
-      dragId = id;
-    },
-    drag(id, x, y) {
-      const next = lesson.moveHandle?.(view, store.state, id, x, y, model);
-      if (next) commit(next, { coalesce: `drag:${id}:${dragId}` });
-    },
-    dragEnd() {
-      dragId = null;
-      store.endGesture();
-      announcer.handle(selectedHandle());
-    },
-    click: (x, y, event) => (lesson.click ? lesson.click(view, x, y, ctx, event) : false),
     fitView: lesson.fitView ? () => fitView() : null, // the Fit button on the canvas (none without lesson.fitView)
     // Resizing clears the canvas: redraw at once, so no frame (or screenshot) shows it blank.
     onResize: () => {
@@ -339,11 +231,12 @@ export async function runLesson(lesson) {
       if (fitted) store.set({ ...store.state, view: fitted }, { history: false, reason: 'view' });
       if (model && ctx.stage) renderNow(); else scheduleRender();
     },
+    gpuRenderer,
   });
 
   // ---------------------------------------------------------------- files and toolbar
   const files = createImportExport({
-    lesson, contents, pngFigure: async () => withLegendBand(ctx.stage.canvas, await ctx.stage.png(), { ink: colors.ink, background: colors.background }), svgFigure, accept, message,
+    lesson, contents, pngFigure: async () => withLegendBand(ctx.stage.canvas, await ctx.stage.png(), { ink: frames.colors.ink, background: frames.colors.background }), svgFigure, accept, message,
     hookArgs: () => [view, model, store.state, ctx],
     announceStatus: announcer.status,
   });
@@ -352,11 +245,7 @@ export async function runLesson(lesson) {
   let prepared = null;
   function reset() {
     if (player) {
-      const drawing = store.state;
-      if (!accept(player.initialState, 'exercise')) return;
-      keepExerciseDrawing(drawing);
-      fitView();
-      message.info('Back to the exercise\'s starting drawing (Undo brings your changes back).');
+      player.reset();
       return;
     }
     if (embed && prepared) {
@@ -376,157 +265,18 @@ export async function runLesson(lesson) {
     : createToolbar({
       header: els.header, lesson, store, persister, keymap, message, ui, files, recolor, reset, fitView,
       announceStatus: announcer.status,
-      makeExercise: lesson.exercise ? () => openAuthorDialog({ ctx, lesson, view, message }) : null,
-      openHistory: history ? createHistoryMenu({ lesson, history, restore: restoreEntry, forget: forgetEverything }) : null,
+      makeExercise: lesson.exercise && exercises ? () => exercises.author({ ctx, lesson, view, message }) : null,
+      openHistory: saved.openHistory,
     });
 
-  // ---------------------------------------------------------------- kept work and links
-  // What the persister could not keep, said once (issue 13, item 19).
-  function sayKept(kind) {
-    if (kind === 'storage-full') {
-      message.warn('This browser\'s storage for this site is full, so your changes are not saved in this browser any more; they are kept in the link in the address bar (bookmark or copy it).', { code: 'storage-full' });
-    } else if (kind === 'content-not-stored') {
-      message.warn('The imported file could not be stored in this browser (its storage is full or disabled); keep the file: it may not come back after a reload.', { code: 'content-not-stored' });
-    } else if (kind === 'too-long') {
-      // An imported mesh kept inline (no IndexedDB here): the reader would refuse it on the
-      // next visit, so it is not saved; the earlier work stays saved.
-      const field = Object.entries(lesson.contentFields ?? {}).find(([key]) => store.state?.[key]);
-      const item = field && files.exportItems.find((x) => x.filename === field[1].export);
-      const name = field ? field[1].label?.(store.state[field[0]]) : null;
-      message.warn(`${name ? `"${name}"` : 'This state'} is too large to keep in this browser here (it has no IndexedDB: a private window?), so it will be gone after a reload; your earlier saved work is kept. Keep ${field?.[1].file ?? 'the file'} to open it again.`, {
-        code: 'too-long-to-keep',
-        action: item ? { id: 'export', label: `Export ${field?.[1].file ?? 'the file'}`, run: () => files.runExport(item) } : null,
-      });
-    }
-  }
-
-  // ---------------------------------------------------------------- the history
-  // One line of what a state holds, for the History list (the lesson's own words if it has them).
-  function summaryOf(state) {
-    const own = lesson.summarize?.(state);
-    return typeof own === 'string' && own ? own : lesson.title;
-  }
-
-  // Another tab saved later work of this lesson and this tab has nothing of its own waiting:
-  // this tab shows it (one undoable step). When this tab's work was the one set aside (two
-  // tabs edited the same work), it is in the history, and one click brings it back here.
-  let taking = 0;
-  async function takeOtherTab(record, { setAside }) {
-    const asked = ++taking;
-    const mine = store.state;
-    let read;
-    try {
-      read = await decodeRecord(lesson, record, { contents });
-    } catch {
-      return; // unreadable here (a newer Wingspline in the other tab): this tab keeps its own
-    }
-    // An edit made meanwhile, or a later notice, decides instead.
-    if (asked !== taking || store.state !== mine || read.problems.length) return;
-    if (!accept(read.state, 'other-tab')) return;
-    persister.took(record, read.state); // (before the save accept scheduled runs)
-    if (setAside) {
-      message.warn('Another tab saved later work of this lesson, so the work shown here before is set aside in the History.', {
-        code: 'work-set-aside',
-        action: { id: 'bring-back', label: 'Bring my work back', run: () => { if (accept(mine, 'restore')) message.info('Your work is back (the other tab\'s is in the History).'); } },
-      });
-    } else if (byId('message').dataset.code !== 'work-set-aside') {
-      // (an offer to bring this tab's work back stays until it is taken or dismissed)
-      message.info('Updated to the work saved in another tab (Undo shows what this tab had).');
-    }
-  }
-
-  async function restoreEntry(entry) {
-    try {
-      const read = await decodeRecord(lesson, entry, { contents });
-      if (!accept(read.state, 'restore')) return false;
-      fitView();
-      const when = new Date(entry.time).toLocaleString(undefined, { dateStyle: 'medium', timeStyle: 'short' });
-      message.info(`Restored your work of ${when}${read.problems.length ? ` (part of it was reset: ${read.problems[0]})` : ''}. The work it replaced is in the History.`);
-      return true;
-    } catch (err) {
-      message.warn(`That entry of the History could not be restored: ${err.message}.`, { code: 'history-refused' });
-      return false;
-    }
-  }
-
-  // An exercise's drawing before Start again / Reset: into the history.
-  function keepExerciseDrawing(drawing) {
-    if (!history || !exercise?.exercise) return;
-    persister.shareLink(drawing).then(({ url }) => history.add({
-      lesson: lesson.id, reason: 'exercise', summary: `your drawing in the exercise "${exercise.exercise.title}"`,
-      code: new URLSearchParams(new URL(url).hash.slice(1)).get('s'),
-    })).catch(() => {});
-  }
-
-  // Forget my work on this computer (a shared lab laptop): everything kept for this site in
-  // this browser but the theme; the page then starts afresh, with nothing left to write.
-  async function forgetEverything() {
-    await persister.stop();
-    try {
-      await history.forgetAll();
-    } catch (err) {
-      message.error(`Not everything could be forgotten: ${err.message}.`);
-      return;
-    }
-    try { window.sessionStorage.clear(); } catch { /* storage disabled */ }
-    window.location.replace(window.location.href.split('#')[0]);
-  }
-
-  // A link replaced the work shown before it: say so, offer it back (issue 13, item 18).
-  function offerPrevious(previous, problem) {
-    const text = `${problem ? `${problem} ` : 'Opened the shared link. '}Your previous work is kept: Undo brings it back.`;
-    message[problem ? 'warn' : 'info'](text, {
-      code: 'previous-work-kept',
-      action: { id: 'restore', label: 'Restore your previous work', run: () => restorePrevious(previous) },
-    });
-  }
-  function restorePrevious(previous) {
-    if (accept(previous, 'restore')) message.info('Your previous work is back (Undo shows the link again; it is in the History too).');
-  }
-
-  // A link pasted into the address bar of this open tab (or back/forward between links):
-  // loaded like a link opened in a new tab, as one undoable step (issue 13, item 24).
-  let following = null;
-  async function followAddress() {
-    const code = readHashCode();
-    if (code === null || code === persister.lastCode || code === following) return;
-    following = code;
-    const refuse = (err) => {
-      message.warn(`This share link could not be used: ${err.message}. Your work is unchanged.`, { code: 'link-refused' });
-      persister.rewrite(store.state);
-    };
-    try {
-      let read;
-      try {
-        read = await readLink(lesson, code, { contents });
-      } catch (err) {
-        refuse(err);
-        return;
-      }
-      if (readHashCode() !== code) return; // another address came meanwhile
-      const previous = store.state;
-      if (accept(read.state, 'link', refuse)) offerPrevious(previous, read.problem);
-    } finally {
-      following = null;
-    }
-  }
+  // ---------------------------------------------------------------- the address
   // (An embed shows the link it was given; its address is the host page's business.) An
-  // exercise's page, and any page given an exercise link, opens afresh: the exercise's
-  // progress is kept, and the lesson's own saved work is read as the page starts.
-  // (Edits not yet written are written first, the reload must not drop them; writing puts the
-  // state's link in the address bar, so the address that came is put back before reloading.)
-  const reloadKeeping = () => {
-    const target = window.location.href;
-    persister.flushNow().finally(() => {
-      window.history.replaceState(window.history.state, '', target);
-      window.location.reload();
-    });
-  };
-  if (!embed) {
-    const follow = () => (player || readExerciseLink(window.location.hash) ? reloadKeeping() : followAddress());
-    window.addEventListener('hashchange', follow);
-    window.addEventListener('popstate', follow);
-  }
+  // exercise's page, and any page given an exercise link, opens afresh.
+  const address = createAddressFollower({
+    lesson, store, persister, contents, message, accept,
+    opensAfresh: () => Boolean(player) || Boolean(exercises?.named(window.location.hash)),
+  });
+  if (!embed) address.listen();
 
   // ---------------------------------------------------------------- start
   // The lesson builds its panels first; its view is handed to every later hook.
@@ -549,11 +299,11 @@ export async function runLesson(lesson) {
     restored.problem = null;
   }
   if (lesson.inspector !== false && els.controls && lesson.moveHandle) {
-    inspector = createInspector({ controls: els.controls, selectedHandle, moveTo, message });
+    inspector = createInspector({ controls: els.controls, selectedHandle: handles.selected, moveTo: handles.moveTo, message });
   }
-  if (restored.previous) offerPrevious(restored.previous, restored.problem);
+  if (restored.previous) address.offerPrevious(restored.previous, restored.problem);
   else if (restored.problem) message.warn(restored.problem);
-  const embedProblem = embed ? embedProblemsText([...embed.problems, ...showEmbedPanels(embed.panels)]) : null;
+  const embedProblem = embed ? showEmbedPanels(embed, els.panels) : null;
   if (embedProblem) message.warn(restored.problem ? `${embedProblem} ${restored.problem}` : embedProblem, { code: 'embed-setting-refused' });
   autoFit = restored.source === 'default' || Boolean(embed) || restored.source === 'exercise';
   if ((restored.source === 'default' || embed || restored.source === 'exercise') && lesson.fitView) {
@@ -563,10 +313,10 @@ export async function runLesson(lesson) {
     if (fitted) store.set({ ...store.state, view: fitted }, { history: false, reason: 'view' });
   }
   if (exercise) {
-    player = startExercise(exercise, { ctx, lesson, view: () => view, panels: els.panels, message, reset });
+    player = exercise.start({ ctx, lesson, view: () => view, panels: els.panels, message, accept, keepInHistory: saved.keepInHistory });
     // An exercise that cannot be played after all (its check does not fit its drawing, the
     // core refused its drawing): the person's own work is shown, and kept again from now on.
-    if (!player && exercise.shownOnStart) await returnToOwnWork();
+    if (!player && exercise.shownOnStart) autoFit = await saved.returnToOwnWork();
   }
   refresh();
   renderNow();
@@ -575,38 +325,6 @@ export async function runLesson(lesson) {
   // link that replaced saved work puts that work into the history.
   persister.save(store.state, { replacing: restored.previous ? 'link' : null });
   if (framed && !message.text) message.info('This lesson is shown inside another page: your saved work is neither read nor changed here. Open the lesson in its own tab to work on it.', { code: 'framed' });
-
-  // The person's own work, as a plain lesson page would show it (with what it would say
-  // about it), after an exercise that could not be played; saving resumes. A saved state
-  // the core refuses is kept aside first, as at the start, never written over.
-  async function returnToOwnWork() {
-    // (a framed page reads nothing of the person's work, and keeps nothing)
-    const own = keepsWork ? await restoreState(lesson, { contents }) : await restoreLinkOnly(lesson, { contents });
-    if (keepsWork && !own.hold) persister.resume(own.base, own.source === 'storage' && !own.problem ? own.state : null);
-    let { state } = own;
-    let problem = own.problem;
-    if (!recompute(state)) {
-      if (own.source === 'storage') persister.keepSavedAside('this version could not show it');
-      problem = 'Your saved work could not be shown by this version of Wingspline; it is kept in the History as it was, and the lesson starts fresh.';
-      state = lesson.defaultState();
-      recompute(state);
-    }
-    store.set(state, { history: false, reason: 'own-work' });
-    if (problem) message.warn(`${message.text} ${problem}`);
-    autoFit = own.source === 'default' || state !== own.state;
-    if (autoFit) fitView();
-  }
-
-  // An embed's side panels: only those its link lists (panels=a,b), by their ids; the names
-  // that are no panel of this lesson come back as sentences.
-  function showEmbedPanels(ids) {
-    const found = [];
-    for (const el of /** @type {HTMLElement[]} */ ([...(els.panels?.children ?? [])])) {
-      if (el.id && ids.includes(el.id)) { el.dataset.embedShown = ''; found.push(el.id); }
-    }
-    if (found.length) document.documentElement.dataset.embedPanels = '';
-    return ids.filter((id) => !found.includes(id)).map((id) => `panels lists "${id}", which is not a panel of this lesson`);
-  }
 
   // What tests and students' scripts may ask the page (never used by the page itself).
   // `hooks` is the lesson object, for benchmarks that time its hooks (read when called).
@@ -620,7 +338,7 @@ export async function runLesson(lesson) {
     // The lesson's view (what setup returned), for tests that ask what a lesson shows.
     get view() { return view; },
     // x, y: page (client) position to drag with page.mouse; world: the handle's coordinates.
-    handles: () => handles().map((x) => ({ id: x.id, label: x.label, world: { x: x.x, y: x.y }, draggable: x.draggable !== false, ...ctx.stage.toClient(x.x, x.y) })),
+    handles: () => handles.list().map((x) => ({ id: x.id, label: x.label, world: { x: x.x, y: x.y }, draggable: x.draggable !== false, ...ctx.stage.toClient(x.x, x.y) })),
     toClient: (x, y) => ctx.stage.toClient(x, y),
     shareUrl: () => persister.shareUrl(store.state),
     // This lesson's entries of the history, newest first (work-history.js).
@@ -629,7 +347,7 @@ export async function runLesson(lesson) {
     message: () => message.text,
     svg: svgFigure,
     ctx,
-    // Every label of the last frame on every canvas, and the legends (issue 18).
+    // Every label of the last frame on every canvas, and the legends.
     labelRects,
     legendRects,
   };

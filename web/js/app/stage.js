@@ -1,14 +1,40 @@
+// @ts-check
 // The lesson canvas: size (device pixels), the world-to-screen transform from the state's
 // view {cx, cy, zoom}, its Fit button, and the interaction a person expects: drag a handle
 // (mouse, touch, pen), drag empty space to pan (mouse, pen; one finger scrolls the page),
 // wheel or two fingers to pan and zoom, and the keyboard: [ and ] select
 // the previous/next handle, arrows nudge it (Shift: finer), Escape deselects, + and -
 // zoom. Handles come from the lesson; the stage only finds the nearest one.
+//
+// The WebGL2 canvas under this one is made by the caller's `hooks.gpuRenderer` (the page
+// entry hands ui/gl-mesh.js's createGlMesh to the shell): the skeleton imports nothing
+// above app/, and a page without a renderer draws everything with the 2D painter.
 import { Transform } from './painter.js';
-import { createGlMesh } from '../ui/gl-mesh.js';
 
 const HIT_RADIUS_PX = 14;
 
+/**
+ * What the stage asks and tells its owner (the shell, and handles.js for the handles).
+ * `gpuRenderer`: makes the WebGL2 renderer drawn under the canvas (null: none).
+ * @typedef {{
+ *   getView(): import('./contract.js').CameraView,
+ *   setView(view: import('./contract.js').CameraView): void,
+ *   getHandles(): import('./contract.js').Handle[],
+ *   getSelected(): string | null,
+ *   handleScale(): number,
+ *   select(id: string | null): void,
+ *   hover(id: string | null, x?: number, y?: number): void,
+ *   dragStart(id: string): void,
+ *   drag(id: string, x: number, y: number): void,
+ *   dragEnd(id?: string): void,
+ *   click(...xyEvent: any[]): boolean,
+ *   fitView: (() => void) | null,
+ *   onResize(): void,
+ *   gpuRenderer: ((canvas: HTMLCanvasElement) => any) | null,
+ * }} StageHooks
+ * @param {HTMLCanvasElement} canvas
+ * @param {StageHooks} hooks
+ */
 export function createStage(canvas, hooks) {
   const g = canvas.getContext('2d');
   let cssWidth = 300;
@@ -22,9 +48,10 @@ export function createStage(canvas, hooks) {
     return new Transform({ cx: v.cx, cy: v.cy, zoom: v.zoom, width: cssWidth, height: cssHeight });
   }
 
-  // The WebGL2 canvas under this one (issue 17), made on a lesson's first request:
-  // { canvas, renderer } once made, false where the browser has no WebGL2 (or lost it).
-  let underlay = null;
+  // The WebGL2 canvas under this one, made on a lesson's first request: { canvas, renderer }
+  // once made, false where the browser has no WebGL2 (or lost it), or the page has no renderer.
+  /** @type {{ canvas: HTMLCanvasElement, renderer: any } | null | false} */
+  let underlay = hooks.gpuRenderer ? null : false;
   function placeUnderlay() {
     if (!underlay) return;
     const style = underlay.canvas.style;
@@ -49,7 +76,7 @@ export function createStage(canvas, hooks) {
     glCanvas.setAttribute('aria-hidden', 'true');
     let renderer = null;
     try {
-      renderer = createGlMesh(glCanvas);
+      renderer = hooks.gpuRenderer(glCanvas);
     } catch (err) {
       renderer = null;
       console.warn(err);
@@ -67,7 +94,7 @@ export function createStage(canvas, hooks) {
     placeUnderlay();
   }
 
-  // The Fit button (issue 18): one per page, on the canvas's bottom-right corner (the legends
+  // The Fit button: one per page, on the canvas's bottom-right corner (the legends
   // are at the top left, the WebGL note at the top); after the canvas in the tab order; its
   // key is the page's 0 (toolbar.js). site.css sizes it (44 x 44 CSS px on a phone).
   let fitButton = null;
@@ -129,7 +156,7 @@ export function createStage(canvas, hooks) {
     hooks.setView({ cx, cy, zoom });
   }
 
-  // Fingers (issue 18, "a phone"): one finger scrolls the page unless it starts on a
+  // Fingers (a phone): one finger scrolls the page unless it starts on a
   // handle, which it then drags; a one-finger tap picks as a click does; two fingers pan
   // (their midpoint) and zoom (their distance) the view about their midpoint. The canvas's
   // CSS (touch-action: pan-x pan-y) lets the browser scroll the page with one finger and
@@ -288,8 +315,9 @@ export function createStage(canvas, hooks) {
       const [sx, sy] = transform().toScreen(x, y);
       return { x: rect.left + sx, y: rect.top + sy };
     },
-    // The WebGL2 mesh renderer under the canvas (ui/gl-mesh.js), or null where the browser
-    // has none: the lesson then draws with the 2D painter, and a note under the canvas says so.
+    // The WebGL2 mesh renderer under the canvas (hooks.gpuRenderer), or null where the
+    // browser has none (the lesson then draws with the 2D painter, and a note under the canvas
+    // says so) or the page gave no renderer.
     gl() {
       if (underlay === null) makeUnderlay(); // placed when made and on every resize
       return underlay ? underlay.renderer : null;

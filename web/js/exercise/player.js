@@ -193,6 +193,7 @@ export function mountExercise({ ctx, lesson, view, exercise, key, loaded, panels
       }
     },
     draw(painter, colors) { kind.draw?.(painter, colors); },
+    reset,
     check: runCheck,
   };
 }

@@ -1,9 +1,10 @@
 // @ts-check
-// An exercise in a lesson page, from the link to the player (the shell calls these two):
-// openExercise reads the link, the exercise and its lesson state before the lesson starts;
-// startExercise hides the panels the exercise hides and mounts the player once the lesson's
-// panels are built. Whatever cannot be used is said in one sentence naming the field, and
-// the page carries on as a plain lesson with the person's own work (nothing is lost).
+// An exercise in a lesson page, from the link to the player (through lesson-wiring.js, the
+// shell's `options.exercises`): openExercise reads the link, the exercise and its lesson
+// state before the lesson starts; the opening's start (startExercise) hides the panels the
+// exercise hides and mounts the player once the lesson's panels are built. Whatever cannot
+// be used is said in one sentence naming the field, and the page carries on as a plain
+// lesson with the person's own work (nothing is lost).
 import { lessons } from '../lessons/registry.js';
 import { readExerciseLink, loadLinkedExercise } from './link.js';
 import { progressKey, readProgress } from './progress.js';
@@ -13,16 +14,19 @@ import { readEnvelope } from '../app/share-link.js';
 const lessonIds = lessons.map((l) => l.id);
 
 /**
+ * @typedef {import('../app/contract.js').ExerciseOpening & { problem: string | null, exercise?: any, key?: string, loaded?: any, initialState?: any }} Session
  * @param {import('../app/contract.js').Lesson} lesson
- * @returns {Promise<null | { ready: boolean, shownOnStart?: boolean, problem: string | null, restored?: any, exercise?: any, key?: string, loaded?: any, initialState?: any, refuse(text: string): void }>}
+ * @returns {Promise<Session | null>}
  */
 export async function openExercise(lesson) {
   const link = readExerciseLink(window.location.hash);
   if (!link) return null;
+  /** @type {Session} */
   const session = {
     ready: false,
-    problem: /** @type {string | null} */ (null),
+    problem: null,
     refuse(text) { session.ready = false; session.problem = `This exercise could not be opened: ${text}. Showing your own work instead.`; },
+    start: (parts) => startExercise(session, parts),
   };
   if ('problem' in link) {
     session.refuse(link.problem);
@@ -53,15 +57,25 @@ export async function openExercise(lesson) {
 }
 
 /**
- * @param {any} session what openExercise returned
- * @param {{ ctx: any, lesson: any, view: () => any, panels: HTMLElement, message: any, reset: () => void }} parts
+ * @param {Session} session what openExercise returned
+ * @param {import('../app/contract.js').ExerciseParts} parts
+ * @returns {import('../app/contract.js').ExercisePlayer | null}
  */
-export function startExercise(session, { ctx, lesson, view, panels, message, reset }) {
+export function startExercise(session, { ctx, lesson, view, panels, message, accept, keepInHistory }) {
   if (!session.ready) {
     if (session.problem) message.warn(session.problem, { code: 'exercise-refused' });
     return null;
   }
   const { exercise, key, initialState, loaded } = session;
+  // The page's Reset, and the panel's "Back to the exercise's drawing": the exercise's
+  // starting drawing as one undoable step; the drawing it replaces goes into the history.
+  const reset = () => {
+    const drawing = ctx.state;
+    if (!accept(initialState, 'exercise')) return;
+    keepInHistory(drawing, `your drawing in the exercise "${exercise.title}"`);
+    ctx.fitView();
+    message.info('Back to the exercise\'s starting drawing (Undo brings your changes back).');
+  };
   const missing = [];
   for (const id of exercise.hide ?? []) {
     const el = document.getElementById(id);

@@ -1,5 +1,5 @@
 // @ts-check
-import { runLesson } from '../../app/shell.js';
+import { runLessonPage } from '../../pages/lesson-page.js';
 import { lesson } from './lesson.js';
 
-runLesson(lesson);
+runLessonPage(lesson);

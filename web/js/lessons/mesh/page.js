@@ -1,6 +1,6 @@
 // @ts-check
 // The mesh lesson page: the skeleton runs the lesson object.
-import { runLesson } from '../../app/shell.js';
+import { runLessonPage } from '../../pages/lesson-page.js';
 import { meshLesson } from './lesson.js';
 
-runLesson(meshLesson);
+runLessonPage(meshLesson);

@@ -1,6 +1,6 @@
 // @ts-check
 // The subdivision lesson page: the skeleton runs the lesson object.
-import { runLesson } from '../../app/shell.js';
+import { runLessonPage } from '../../pages/lesson-page.js';
 import { subdivisionLesson } from './lesson.js';
 
-runLesson(subdivisionLesson);
+runLessonPage(subdivisionLesson);
