@@ -1,3 +1,4 @@
+// @ts-check
 // Reshaping control data between the lessons' state (arrays of [x, y] pairs, readable in a
 // share link) and the core's flat layout (Float64Array, points[2*i + k]), and the parameter
 // lists the lessons sample a curve at. Data plumbing only: no curve mathematics here.

@@ -1,3 +1,4 @@
+// @ts-check
 // Large parts of a lesson state (an imported mesh) kept in IndexedDB by the SHA-256 of
 // their text, so the link and local storage only hold a reference to them
 // (docs/state-format.md, "Large fields"). share-link.js decides what is stored here and

@@ -1,3 +1,4 @@
+// @ts-check
 // A tiny DOM builder. Children that are strings become text nodes, so nothing from a
 // file, a link or the user is ever parsed as HTML.
 //   h('button', { class: 'x', onclick: fn, 'aria-label': 'Undo' }, 'Undo')

@@ -1,3 +1,4 @@
+// @ts-check
 // Downloads and uploads. Export: any text or Blob to a named file. Import: a file picker
 // and drag-and-drop on the page; files are read as text and handed to the shell, which
 // validates them before anything changes.

@@ -1,3 +1,4 @@
+// @ts-check
 // The browser's IndexedDB database of Wingspline, one per origin: `wingspline-content`.
 //   version 1  `content` { hash, text, used } (index `used`): large fields of a state by the
 //              SHA-256 of their text (content-store.js)

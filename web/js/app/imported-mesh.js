@@ -1,3 +1,4 @@
+// @ts-check
 // The imported mesh of a lesson state, described once (the mesh and subdivision lessons,
 // the import worker, the mesh sources). Two forms are read:
 //   flat  {name, positions: number[], faceSizes: number[], faceVertices: number[]}: face f's

@@ -1,3 +1,4 @@
+// @ts-check
 // Keyboard map of a page: the lesson and the shell register actions; one listener runs
 // them; `?` opens a dialog that lists them (built from the same registry, so the list is
 // always right). Keys typed into a form field are left to the field.
@@ -65,6 +66,7 @@ export function createKeymap() {
     const title = document.createElement('h2');
     title.id = 'keymap-title';
     title.textContent = 'Keyboard';
+    /** @type {HTMLElement[]} */
     const content = [title];
     for (const [group, list] of groups) {
       const h3 = document.createElement('h3');

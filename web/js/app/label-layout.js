@@ -1,3 +1,4 @@
+// @ts-check
 // Label layout (issue 18): screen layout, no mathematics. Every text a painter or a side
 // plot draws on a canvas is a label: it asks for an anchor (screen px) and a preferred
 // offset; the layout measures its box (the text's measured width, 1.25 x its font size
@@ -187,6 +188,12 @@ export function plotLabels(g, canvas, width, height) {
   const layout = new LabelLayout(width, height);
   return {
     px: plotFontPx(),
+    /**
+     * @param {string} string
+     * @param {number} x
+     * @param {number} y
+     * @param {{fill?: string, align?: string, baseline?: string, dx?: number, dy?: number, weight?: number, priority?: number, fixed?: boolean, halo?: any, px?: number|null}} [style]
+     */
     text(string, x, y, { fill, align = 'center', baseline = 'middle', dx = 0, dy = 0, weight = 500, priority = 0, fixed = false, halo = null, px = null } = {}) {
       layout.ask(string, x, y, { px: Math.max(px ?? plotFontPx(), plotFontPx()), weight, align, baseline, dx, dy, priority, fixed, fill, halo });
     },

@@ -1,3 +1,4 @@
+// @ts-check
 // The limits of what a lesson state may hold: one set, used where a value enters (the
 // inspector, a lesson's entries, imported files: ctx.commit checks every change against the
 // lesson's schema) and where it is read back (share links, local storage, state files:

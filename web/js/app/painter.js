@@ -1,3 +1,4 @@
+// @ts-check
 // Drawing without mathematics: a painter draws what the core computed, in world
 // coordinates, through a view transform. Two painters share one interface, so a lesson's
 // draw() makes both the canvas picture and the exported SVG figure:

@@ -1,3 +1,4 @@
+// @ts-check
 // Keeps a lesson's state in the page URL (#s=...) and in local storage, and restores it.
 // The URL is updated with replaceState, so the back button undoes navigation, not edits.
 // Large fields (an imported mesh) are kept in IndexedDB by content hash and the link refers
@@ -101,6 +102,10 @@ function keepAside(lesson, storage, record, why) {
 // Resolves to { state, source: 'link'|'storage'|'default', problem, previous, base }.
 // `previous`: the saved work a link replaced (undo returns to it), or null. `base`: the
 // revision read, for the persister.
+/**
+ * @param {any} lesson
+ * @param {{contents?: any}} [options] the content store that resolves mesh references
+ */
 export async function restoreState(lesson, { contents } = {}) {
   const code = readHashCode();
   const storage = localStore();
@@ -157,6 +162,10 @@ export async function restoreState(lesson, { contents } = {}) {
 // An embed (docs/embed.md), or a page framed by another page, shows its link's state, or
 // the lesson's starting point when the link cannot be used, and reads nothing of the
 // person's saved work (nor moves anything aside): it never touches that work.
+/**
+ * @param {any} lesson
+ * @param {{contents?: any}} [options]
+ */
 export async function restoreLinkOnly(lesson, { contents } = {}) {
   const code = readHashCode();
   const base = { rev: 0, drawing: null };
@@ -171,6 +180,11 @@ export async function restoreLinkOnly(lesson, { contents } = {}) {
 
 // Decodes a link pasted into the address bar of the open page (hashchange): resolves to
 // { state, problem } or rejects with an Error of one sentence.
+/**
+ * @param {any} lesson
+ * @param {string} code
+ * @param {{contents?: any}} [options]
+ */
 export async function readLink(lesson, code, { contents } = {}) {
   const { state, problems } = await decodeState(lesson, code, { contents });
   return { state, problem: problems.length ? `Part of this link was not usable (${problems[0]}); that part was reset.` : null };

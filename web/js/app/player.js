@@ -1,3 +1,4 @@
+// @ts-check
 // Plays a sequence of steps (a traversal, a construction): play, pause, step forward and
 // back, restart, speed. It runs a timer only while playing (nothing runs for a still
 // picture) and reports the step through onStep; the lesson keeps the step in its state.

@@ -1,3 +1,4 @@
+// @ts-check
 // The person's saved work of one lesson, in local storage under `wingspline:<lesson>:state`
 // (docs/state-format.md, "Saved work and its revision"):
 //
@@ -64,6 +65,11 @@ export function parseRecord(raw) {
 }
 
 /** Writes a record (throws when storage refuses it: full, disabled). */
+/**
+ * @param {Storage} storage
+ * @param {string} lessonId
+ * @param {{rev: number, tab: string, drawing: string, summary: string, code?: string, json?: string, setAside?: {tab: string, rev: number}|null}} record
+ */
 export function writeRecord(storage, lessonId, { rev, tab, drawing, summary, code, json, setAside = null }) {
   const record = { v: RECORD_VERSION, rev, tab, at: Date.now(), drawing, summary, ...(code !== undefined ? { code } : { json }), ...(setAside ? { setAside } : {}) };
   const raw = JSON.stringify(record);
@@ -72,6 +78,11 @@ export function writeRecord(storage, lessonId, { rev, tab, drawing, summary, cod
 }
 
 /** The state a record holds: { state, problems }, or throws an Error of one sentence. */
+/**
+ * @param {any} lesson
+ * @param {any} record
+ * @param {{contents?: any}} [options]
+ */
 export async function decodeRecord(lesson, record, { contents } = {}) {
   if (record.code !== undefined) return decodeState(lesson, record.code, { contents });
   if (record.json.length > MAX_STATE_BYTES) throw new Error('it is far longer than any lesson state');

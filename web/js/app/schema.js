@@ -1,3 +1,4 @@
+// @ts-check
 // Validators for lesson state read from a share link, local storage or an imported file.
 // Each validator takes (value, path) and returns the clean value or throws a SchemaError
 // naming the path ("points[3].x is not a number"). Nothing from outside is used unchecked.

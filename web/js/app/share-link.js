@@ -1,3 +1,4 @@
+// @ts-check
 // The lesson state as text: a versioned envelope {format, lesson, version, state}, written
 // as JSON (numbers round-trip exactly: JSON keeps the shortest text that reads back to the
 // same double), compressed with deflate-raw and base64url-encoded into the URL fragment
@@ -245,10 +246,20 @@ async function internalize(lesson, data, contents) {
 
 // The envelope of a parsed link, storage entry or file, references resolved, then checked
 // as readEnvelope does.
+/**
+ * @param {any} lesson
+ * @param {any} data
+ * @param {{contents?: any}} [options]
+ */
 export async function readEnvelopeResolved(lesson, data, { contents } = {}) {
   return readEnvelope(lesson, await internalize(lesson, data, contents));
 }
 
+/**
+ * @param {any} lesson
+ * @param {any} state
+ * @param {{contents?: any}} [options]
+ */
 export async function encodeState(lesson, state, { contents } = {}) {
   const { state: written } = await externalize(lesson, state, contents);
   return compressEnvelope(lesson, written);
@@ -302,6 +313,11 @@ export function readEnvelope(lesson, data) {
   return result;
 }
 
+/**
+ * @param {any} lesson
+ * @param {string} text
+ * @param {{contents?: any}} [options]
+ */
 export async function decodeState(lesson, text, { contents } = {}) {
   if (typeof text !== 'string' || text.length === 0) throw new Error('it is empty');
   if (text.length > MAX_LINK_CHARS) throw new Error('it is far longer than any lesson state');

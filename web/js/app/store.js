@@ -1,3 +1,4 @@
+// @ts-check
 // One state object per lesson. The store keeps it, an undo/redo history of edits (view
 // changes such as pan and zoom are not edits), and tells subscribers when it changes.
 // It knows nothing about the DOM, the URL or the core: the shell wires those.

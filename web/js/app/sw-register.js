@@ -1,3 +1,4 @@
+// @ts-check
 // Registers the service worker (dist/sw.js) relative to the page, so the site works
 // offline after the first visit from whatever sub-path it is hosted at.
 export function registerServiceWorker() {

@@ -1,3 +1,4 @@
+// @ts-check
 // Theme (system, light, dark), remembered in local storage, and presentation mode (for this page only).
 const THEME_KEY = 'wingspline:theme';
 const themes = ['system', 'light', 'dark'];

@@ -1,3 +1,4 @@
+// @ts-check
 // The history of the person's saved work, per lesson (docs/state-format.md, "The history"):
 // every time saved work is replaced (a link opened, Reset, an import, an exercise's Start
 // again, a restore from the history, another tab's later save) the work it replaced is kept
@@ -62,6 +63,11 @@ export function setAsideNow(storage, entry) {
   }
 }
 
+/**
+ * An entry as kept: its lesson, time, reason, summary, title, and one of code, json or raw.
+ * @param {any} e
+ * @returns {{lesson: string, time: number, reason: string, summary: string, title?: string, code?: string, json?: string, raw?: string} | null}
+ */
 function cleanEntry(e) {
   if (!e || typeof e !== 'object' || typeof e.lesson !== 'string' || !/^[a-z][a-z0-9-]{0,39}$/.test(e.lesson)) return null;
   const text = ['code', 'json', 'raw'].find((k) => typeof e[k] === 'string');
