@@ -100,7 +100,7 @@ async function nativeLayer() {
   return catchTests(path.join(repoRoot, 'build', 'native', 'wingspline_tests'));
 }
 
-// The native suite again under AddressSanitizer + UndefinedBehaviorSanitizer (issue 9):
+// The native suite again under AddressSanitizer + UndefinedBehaviorSanitizer:
 // build/native-asan (Debug, -fsanitize=address,undefined, -fno-sanitize-recover=all) is
 // built here, not up front, so `node scripts/test.mjs native wasm` stays quick. Any report
 // (out-of-bounds access, use after free, leak, signed overflow, bad shift...) aborts the
@@ -154,7 +154,7 @@ export async function typesLayer() {
   const withErrors = new Set([...r.stdout.matchAll(/^(\S[^(\n]*)\(\d+,\d+\): error/gm)].map((m) => m[1]));
   const fail = withErrors.size + unchecked.length + (r.code !== 0 && withErrors.size === 0 ? 1 : 0);
   const pass = checked.filter((f) => !withErrors.has(f)).length;
-  // Issue 19: the package's declarations (types/wingspline.d.ts) against examples/ and a
+  // The package's declarations (types/wingspline.d.ts) against examples/ and a
   // file of deliberate misuses, each marked @ts-expect-error (an unused one is an error).
   const examples = await declarationsCheck(tsc);
   return { code: fail + examples.fail ? 1 : 0, pass: pass + examples.pass, fail: fail + examples.fail, skip: 0 };
@@ -193,7 +193,7 @@ export const layers = [
   // The wasm layer also loads the bench module (the benchmark's hooks, tested there).
   { name: 'wasm', run: async () => { await buildWasm({ bench: true }); return nodeTests('tests/wasm'); } },
   { name: 'lessons', run: () => nodeTests('tests/lessons') },
-  // Issue 19: npm pack -> install in an empty folder -> import in Node and in a page; the
+  // Npm pack -> install in an empty folder -> import in Node and in a page; the
   // examples/ scripts; npm start's HOST (tests/package).
   { name: 'package', run: () => nodeTests('tests/package') },
   // Two browser files at once: on the 2-core machines the layer takes about half the time

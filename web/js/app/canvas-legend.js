@@ -1,5 +1,5 @@
 // @ts-check
-// A canvas's legend as HTML under the canvas (issue 18): real text at the page's size,
+// A canvas's legend as HTML under the canvas: real text at the page's size,
 // which can never cover the drawing. Entries [color, words, dash?] as a lesson gives them to
 // painter.legend(); each row leads with a short line sample in the entry's colour and dash
 // (the same dash the drawing uses), so the key differs by more than colour. An empty list

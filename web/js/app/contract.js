@@ -180,7 +180,7 @@
  */
 
 /**
- * What a lesson offers exercises (issue 19, docs/exercises.md; web/js/exercise/). `kinds`:
+ * What a lesson offers exercises (docs/exercises.md; web/js/exercise/). `kinds`:
  * the kinds of check its drawing gives (exercise/format.js KINDS); `subject`: what a check
  * is asked of, from the lesson's model (exercise/subjects.js lists the shapes); `keepsState`:
  * the kinds whose answer is the drawing itself (kept with the exercise's progress);
@@ -237,7 +237,7 @@
  * every pointer move, not only when the hovered handle changes. `inspector: false`: no shell
  * inspector (the lesson has its own inputs). `importers[ext]` turns a file into a state.
  * `meshImporters[ext]` turns a mesh file the import worker read, parsed and checked into a
- * state (app/mesh-import.js: progress, Cancel; issue 17).
+ * state (app/mesh-import.js: progress, Cancel).
  */
 
 /**

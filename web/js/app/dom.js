@@ -19,7 +19,7 @@ export function h(tag, attrs = {}, ...children) {
 }
 
 // node.replaceChildren(...) with h()'s rules: DOM's own replaceChildren turns a null or
-// undefined child into the text "null" / "undefined" (issue 13 item 9), this skips them.
+// undefined child into the text "null" / "undefined", this skips them.
 export function setChildren(node, ...children) {
   node.replaceChildren();
   append(node, children);
@@ -61,7 +61,7 @@ export function table({ caption, head = [], rows = [], className = 'data-table' 
 // already watched are skipped.
 const SCROLL_BOXES = '.panel-body, .formula, .table-scroll, .formula-out, math[display=block]';
 const watched = new WeakSet();
-// Presentation mode (issue 18, projector): a formula a little wider than its column is set
+// Presentation mode (projector): a formula a little wider than its column is set
 // smaller until it fits, never below FORMULA_FLOOR_PX (nor 80% of its size); wider ones
 // still scroll, with the edge shadows. Outside presentation mode formulas keep their size.
 const FORMULA_FLOOR_PX = 15;
@@ -77,7 +77,7 @@ function fitFormula(target) {
 }
 
 // Marks one box: a focusable, labelled region while its content overflows, and
-// data-scrolls-x while it scrolls sideways (issue 18: site.css then shows edge shadows; a
+// data-scrolls-x while it scrolls sideways (site.css then shows edge shadows; a
 // phone hides the scroll bar).
 function markOverflow(target) {
   fitFormula(target);
@@ -132,7 +132,7 @@ export function watchScrollRegions(root = document) {
 
 // Scrolls the boxes between `el` and the page (a table's scroller, the side column), never
 // the page itself, so that `el` is in view: a walk's row stays on screen at every step
-// (issue 18, projector) and a phone's page is not pulled away from the drawing. `context`
+// (projector) and a phone's page is not pulled away from the drawing. `context`
 // (a table's caption and head) is brought into view with it when both fit in the box.
 // `inset`: pixels at the top of a box covered by a sticky table head.
 /** @param {Element | null | undefined} el @param {{ context?: Element | null, margin?: number, inset?: number }} [options] */

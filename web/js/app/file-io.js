@@ -18,8 +18,8 @@ export function download(filename, content, type = 'text/plain') {
 export const MAX_IMPORT_BYTES = 64 * 1024 * 1024;
 
 // Calls onFile({ name, text }) for a chosen or dropped file; onError(message) otherwise.
-// A file that onRawFile(file) takes (returns true: a mesh file, read by the import worker,
-// issue 17) is not read here.
+// A file that onRawFile(file) takes (returns true: a mesh file, read by the import worker)
+// is not read here.
 export function installImport({ input, dropTarget, onFile, onError, onRawFile = (file) => false }) {
   async function read(file) {
     if (!file) return;

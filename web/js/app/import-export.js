@@ -101,7 +101,7 @@ export function createImportExport({ lesson, contents, hookArgs, svgFigure, pngF
     acceptImport(name, next, refused);
   }
 
-  // Mesh files (issue 17): read, parsed and checked by the import worker, with progress and
+  // Mesh files: read, parsed and checked by the import worker, with progress and
   // Cancel; the lesson turns the result into a state, checked as any import is.
   const meshImport = meshTypes.length ? createMeshImport({ message, contents, announceStatus, api: () => hookArgs()[3].api }) : null;
   async function importMeshFile(file, ext) {
@@ -114,8 +114,8 @@ export function createImportExport({ lesson, contents, hookArgs, svgFigure, pngF
       const next = lesson.meshImporters[ext](view, result, current, name, ctx);
       const outside = checkChange(lesson.schema, next, state(), lesson.checkState);
       if (outside) throw new WingsplineError('import-error', outside);
-      // The check of a million faces and the lesson's compute are a task each (issue 17:
-      // no task of an import over 50 ms).
+      // The check of a million faces and the lesson's compute are a task each (no task
+      // of an import over 50 ms).
       await new Promise((resolve) => { setTimeout(resolve, 0); });
       acceptImport(name, next, refused);
     } catch (err) {

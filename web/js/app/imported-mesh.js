@@ -3,11 +3,11 @@
 // the import worker, the mesh sources). Two forms are read:
 //   flat  {name, positions: number[], faceSizes: number[], faceVertices: number[]}: face f's
 //         corners are faceVertices[s_f .. s_f + faceSizes[f]) with s_f the sum of the sizes
-//         before it. What an import writes since issue 17: a million faces are three plain
+//         before it. What an import writes now: a million faces are three plain
 //         arrays of numbers, not a million small arrays (which cost the page 50-70 ms pauses
 //         of the garbage collector and 50 ms to build).
 //   faces {name, positions: number[], faces: number[][]}: what states, links and files saved
-//         before issue 17 hold; still read, never written by an import.
+//         before the flat form hold; still read, never written by an import.
 // docs/state-format.md, "The imported mesh".
 import { SchemaError, text, list, number } from './schema.js';
 

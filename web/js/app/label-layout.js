@@ -1,5 +1,5 @@
 // @ts-check
-// Label layout (issue 18): screen layout, no mathematics. Every text a painter or a side
+// Label layout: screen layout, no mathematics. Every text a painter or a side
 // plot draws on a canvas is a label: it asks for an anchor (screen px) and a preferred
 // offset; the layout measures its box (the text's measured width, 1.25 x its font size
 // high, plus LABEL_MARGIN_PX on every side) and puts it at the first candidate whose box

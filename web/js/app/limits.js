@@ -3,7 +3,7 @@
 // inspector, a lesson's entries, imported files: ctx.commit checks every change against the
 // lesson's schema) and where it is read back (share links, local storage, state files:
 // share-link.js validates with the same schema). A value the page accepts is therefore one
-// its own state format reads back on the next visit (issue 13, item 22).
+// its own state format reads back on the next visit.
 //
 // The mesh limits are the core's (core/include/wingspline/mesh/limits.h, exposed as
 // api.meshLimits). Schemas are built when a lesson module loads, before the core does, so
@@ -14,7 +14,7 @@
 export const COORDINATE_BOUND = 1e9;
 // Corners of one face of an imported mesh.
 export const MAX_FACE_CORNERS = 1000;
-// Vertices and faces of an imported mesh (the import limit; issue 17: the largest mesh a
+// Vertices and faces of an imported mesh (the import limit: the largest mesh a
 // school laptop holds, docs/api-mesh.md "Import limits and memory").
 export const MAX_MESH_VERTICES = 2000000;
 export const MAX_MESH_FACES = 2000000;

@@ -1,5 +1,5 @@
 // @ts-check
-// One mesh file import, as the import worker runs it (mesh-import-worker.js; issue 17): read
+// One mesh file import, as the import worker runs it (mesh-import-worker.js): read
 // the File with byte progress, refuse it as early as possible when it is too large (its size,
 // then the OFF header's counts, which the core reads from the first piece before the body is
 // there), parse it with the core, check it (validateMesh: every problem), and hand back flat

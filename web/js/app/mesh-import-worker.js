@@ -1,5 +1,5 @@
 // @ts-check
-// The import worker (issue 17): a module worker that loads its own copy of the core, runs one
+// The import worker: a module worker that loads its own copy of the core, runs one
 // mesh file import (mesh-import-job.js) and posts back progress, then the result as flat typed
 // arrays (transferred, not copied) or the error. The imported value's JSON text is put into
 // the content store (IndexedDB) from here, so the page only learns its hash and length. The

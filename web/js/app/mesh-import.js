@@ -1,5 +1,5 @@
 // @ts-check
-// The page's side of a mesh file import (issue 17): starts the import worker
+// The page's side of a mesh file import: starts the import worker
 // (mesh-import-worker.js) for one File, shows its progress (a <progress> with a label naming
 // the stage: reading, parsing, checking, building) and a Cancel button (Escape cancels too),
 // and turns the worker's flat arrays into the imported value of a lesson state in pieces, so

@@ -23,7 +23,7 @@ export function errorText(err) {
 /** @returns {import('./contract.js').MessageLine} */
 export function createMessageLine(el) {
   let timer = null;
-  // Issue 18: a message goes when it goes stale. Every message shown gets the next serial
+  // A message goes when it goes stale. Every message shown gets the next serial
   // number; epoch() is the serial of the next one, and clearIfBefore(e) clears a message
   // shown before e (a refusal or a warning about a state that a later accepted change
   // replaced), never one shown since (a warning about the change just accepted).

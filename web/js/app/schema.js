@@ -57,7 +57,7 @@ export const list = (item, { min = 0, max = 10000 } = {}) => (v, path) => {
   if (v.length < min || v.length > max) throw new SchemaError(path, `must have ${min} to ${max} entries, not ${v.length}`);
   // A list whose entries all come back as they are is returned itself, not copied, and an
   // entry's path is written only for its error message (the failing entry is checked again
-  // with it; validators are pure): checking a million faces allocates nothing (issue 17).
+  // with it; validators are pure): checking a million faces allocates nothing.
   let out = null;
   for (let i = 0; i < v.length; i += 1) {
     let clean;
@@ -77,7 +77,7 @@ export const object = (shape, { optional = [] } = {}) => (v, path) => {
   if (v === null || typeof v !== 'object' || Array.isArray(v)) throw new SchemaError(path, `must be an object, not ${describe(v)}`);
   const out = {};
   // An object with no other keys whose fields all come back as they are is returned itself
-  // (issue 17: a mesh read back stays the object whose text and hash share-link.js knows).
+  // (a mesh read back stays the object whose text and hash share-link.js knows).
   let same = true;
   let present = 0;
   for (const [key, check] of Object.entries(shape)) {

@@ -16,7 +16,7 @@ export const FORMAT = 'wingspline';
 export const MAX_LINK_CHARS = 200000;
 // The most a link may unpack to. A real state compresses well under 10:1, so a link of
 // MAX_LINK_CHARS (about 150 KB of deflate) unpacks to under 1.5 MB; a compressed bomb
-// (deflate reaches about 1000:1) is stopped here while it inflates (issue 13).
+// (deflate reaches about 1000:1) is stopped here while it inflates.
 export const MAX_STATE_BYTES = 16 * 2 ** 20;
 
 // Inflates deflate-raw bytes, refusing once more than `cap` bytes have come out.
@@ -331,7 +331,7 @@ export async function decodeState(lesson, text, { contents } = {}) {
   return readEnvelopeResolved(lesson, data, { contents });
 }
 
-// ------------------------------------------------------------------ embed (issue 19)
+// ------------------------------------------------------------------ embed
 // The embed parameters of a link's fragment, beside the state (docs/embed.md):
 //   lesson.html#embed=1&s=<code>[&panels=<id>,<id>][&theme=light|dark][&present=1][&controls=1]
 // `embed` present: the page is an embed (a value other than 1 is said, and the page is still

@@ -140,7 +140,7 @@ export function createToolbar({ header, lesson, store, persister, keymap, messag
     toolButton('share', 'Share link', share, undefined, { advanced: true }),
     exportMenu,
     toolButton('import', 'Import', () => fileInput.click(), 'Import a state (JSON) or a lesson file; dropping a file on the page works too', { advanced: true }),
-    // "Make an exercise from this view" (issue 19, exercise/author.js).
+    // "Make an exercise from this view" (exercise/author.js).
     makeExercise ? toolButton('make-exercise', 'Make an exercise', makeExercise, 'Make an exercise from this view: choose what to hide, write the question, export the JSON and a link', { advanced: true }) : '',
     fileInput,
     // The work links, Reset, imports and other tabs replaced, and Forget (app/history-menu.js).

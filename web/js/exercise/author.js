@@ -1,5 +1,5 @@
 // @ts-check
-// "Make an exercise from this view" (issue 19): the lesson's state as shown becomes an
+// "Make an exercise from this view": the lesson's state as shown becomes an
 // exercise. The dialog starts from the lesson's suggestion for a kind (its `exercise.suggest`),
 // lets the author choose what is checked, what is hidden and the question, reads the result
 // back exactly as a student's page will (format.js, the lesson's state schema, the kind's

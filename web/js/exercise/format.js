@@ -1,5 +1,5 @@
 // @ts-check
-// The exercise file (issue 19), described once: every field, what it may hold, and the
+// The exercise file, described once: every field, what it may hold, and the
 // sentence a person reads when it holds something else. docs/exercises.md explains each
 // field with examples; this file is what reads them. The player (player.js), the authoring
 // dialog (author.js), the gallery (pages/gallery.js) and the tests all read exercises here.

@@ -1,5 +1,5 @@
 // @ts-check
-// The exercise player (issue 19): in a lesson page opened with an exercise link
+// The exercise player: in a lesson page opened with an exercise link
 // (exercise/link.js), a panel at the top of the side column holds the question, the answer
 // for its kind (kinds/), Check (or Enter in the answer), the feedback that names what is
 // wrong, the worked answer on request, and the progress kept in this browser

@@ -1,5 +1,5 @@
 // @ts-check
-// Progress kept in this browser (issue 19): per exercise, whether it was solved, how many
+// Progress kept in this browser: per exercise, whether it was solved, how many
 // checks it took, the answer as last typed and, for the kinds where the drawing is the answer,
 // the lesson state. Keyed by the exercise: a shipped one by its id, any other by a hash of
 // its text, so two different exercises never share an entry. An entry this page cannot read

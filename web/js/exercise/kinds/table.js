@@ -1,5 +1,5 @@
 // @ts-check
-// Kind 1: fill in a table for the mesh in the drawing (issue 19). The grids below are the
+// Kind 1: fill in a table for the mesh in the drawing. The grids below are the
 // lecture's tables with inputs for cells; the student writes labels as the slides do (v3, e5,
 // F2, "none" or λ for no face), may number the edges their own way and walk each edge either
 // way: the core's checker (api.checkMeshTableAnswer) checks the structure the answer
