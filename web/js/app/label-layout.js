@@ -176,12 +176,6 @@ export function labelRects() {
   return out;
 }
 
-export function droppedLabels() {
-  let n = 0;
-  for (const [canvas, frame] of frames) if (canvas.isConnected) n += frame.dropped;
-  return n;
-}
-
 // A side plot's labels: ask with text(), then draw() places and paints them all with the
 // 2D context g (after the plot's lines, so labels sit on top) and records them.
 export function plotLabels(g, canvas, width, height) {

@@ -231,4 +231,3 @@ export function createTableKind({ api, check, subject }) {
   }
 }
 
-export const TABLE_LABELS = Object.fromEntries(Object.entries(TABLES).map(([k, v]) => [k, v.label]));
