@@ -5,5 +5,18 @@
 #include "wingspline/mesh/operations.h"
 
 namespace wingspline::mesh {
+
+// An entry's check, change and wording (the registry's `impl`, euler_ops.cpp).
+struct OperationImpl {
+    CheckResult (*check)(const WingedEdgeMesh&, const Operation&);
+    ChangeRecord (*apply)(WingedEdgeMesh&, const Operation&);
+    bool (*apply_unrecorded)(WingedEdgeMesh&, const Operation&);
+};
+
 bool apply_unrecorded(WingedEdgeMesh& mesh, const Operation& op);
+// The unrecorded run of one entry, for a loop that runs it many times (the benchmark's tasks):
+// the entry's function itself, so each run is one call.
+using UnrecordedRun = bool (*)(WingedEdgeMesh&, const Operation&);
+UnrecordedRun unrecorded_run(const OperationEntry& entry);
+
 } // namespace wingspline::mesh
