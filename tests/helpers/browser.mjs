@@ -71,6 +71,14 @@ async function collectProblemsAndGo(page, url) {
   return page;
 }
 
+// The bytes of a playwright download, read through its stream (download.path() is not
+// available when the browser is the layer's shared one, reached over a connection).
+export async function downloadedBytes(download) {
+  const chunks = [];
+  for await (const chunk of await download.createReadStream()) chunks.push(chunk);
+  return Buffer.concat(chunks);
+}
+
 export async function waitReady(page) {
   await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
 }

@@ -4,8 +4,7 @@
 // core asked directly (a point on the curve), never from the page's own drawing code.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
-import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { screenshot, useSiteAndBrowser, downloadedBytes } from '../../helpers/browser.mjs';
 import { openCurves, frame, chooseFamily, circlePreset } from '../../helpers/curves-page.mjs';
 
 const COORD_TOL = 1e-9;          // world units: a stored coordinate vs its expected value
@@ -272,7 +271,7 @@ test('CSV exports of the samples and the blending functions', async () => {
   const csv = async (name) => {
     await page.click('.menu > summary');
     const [download] = await Promise.all([page.waitForEvent('download'), page.click(`[data-export="${name}"]`)]);
-    return fs.readFileSync(await download.path(), 'utf8').trim().split('\n');
+    return (await downloadedBytes(download)).toString('utf8').trim().split('\n');
   };
   const samples = await csv('curve-samples.csv');
   assert.equal(samples[0], 'u,x,y');

@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { useSiteAndBrowser, downloadedBytes } from '../../helpers/browser.mjs';
 import { readyLessons, payloads, nothingExecuted, linkCode } from '../../helpers/classroom.mjs';
 
 const env = useSiteAndBrowser();
@@ -49,8 +49,7 @@ test('an exercise made from the view round-trips through its JSON file and throu
   await page.locator('#author-question').fill(`Which edges, in turn? ${payloads.img}`);
   assert.equal(await page.locator('#author-hide-walk-panel').isChecked(), true);
   const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#author-export-json').click()]);
-  const file = await download.path();
-  const exercise = JSON.parse(fs.readFileSync(file, 'utf8'));
+  const exercise = JSON.parse((await downloadedBytes(download)).toString('utf8'));
   assert.equal(exercise.format, 'wingspline-exercise');
   assert.deepEqual(exercise.check, { kind: 'walk', around: 'vertex', element: 4 });
   assert.ok(exercise.hide.includes('walk-panel'));

@@ -5,8 +5,7 @@
 // shown as text and nothing runs.
 import { test, describe } from 'node:test';
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
-import { useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { useSiteAndBrowser, downloadedBytes } from '../../helpers/browser.mjs';
 import {
   lessonsUnderTest, startClassroomSite, openLesson, waitReady, nothingExecuted, payloads, stateBits, bitsOf,
   awkwardView, tinyView, setView
@@ -17,8 +16,7 @@ const env = useSiteAndBrowser(startClassroomSite);
 async function exportFile(page, key) {
   await page.click('details.menu > summary');
   const [download] = await Promise.all([page.waitForEvent('download'), page.click(`[data-export="${key}"]`)]);
-  const file = await download.path();
-  return { name: download.suggestedFilename(), bytes: fs.readFileSync(file) };
+  return { name: download.suggestedFilename(), bytes: await downloadedBytes(download) };
 }
 
 async function importByPicker(page, name, text) {
@@ -176,7 +174,7 @@ describe('Mesh: imported meshes are kept', () => {
     assert.match(await page.evaluate(() => window.wingspline.message()), /share the OFF file/i);
     const [download] = await Promise.all([page.waitForEvent('download'), page.click('#message [data-message-action]')]);
     assert.equal(download.suggestedFilename(), 'mesh.off');
-    const off = fs.readFileSync(await download.path(), 'utf8');
+    const off = (await downloadedBytes(download)).toString('utf8');
     assert.match(off, new RegExp(`^OFF\\s+${BIG.nx * BIG.ny}\\s+${2 * (BIG.nx - 1) * (BIG.ny - 1)}\\s`));
     const link = page.url();
     await context.close();

@@ -8,9 +8,8 @@
 // drawn; the continuity lab's plots of |P'| and kappa start at 0.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
 import { decodePng } from '../../helpers/png.mjs';
-import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { screenshot, useSiteAndBrowser, downloadedBytes } from '../../helpers/browser.mjs';
 import { random as seededRandom } from '../../helpers/seeded-random.mjs';
 import { lessons } from '../../../web/js/lessons/registry.js';
 
@@ -215,7 +214,7 @@ test('continuity: the exported SVG and PNG figures carry the legend under the dr
   const exportFile = async (key) => {
     await page.click('details.menu > summary');
     const [download] = await Promise.all([page.waitForEvent('download'), page.click(`[data-export="${key}"]`)]);
-    return fs.readFileSync(await download.path());
+    return downloadedBytes(download);
   };
   const canvas = await page.$eval('#stage', (c) => ({ cssHeight: c.getBoundingClientRect().height, height: c.height }));
   const svg = (await exportFile('continuity.svg')).toString('utf8');

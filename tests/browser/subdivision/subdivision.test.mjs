@@ -7,10 +7,9 @@
 //   = 3/16 per neighbour, the vertex keeps 1 - 3 beta = 7/16;
 //   counts of one step: V' = V + E = 10, E' = 2E + 3F = 24, F' = 4F = 16 from V, E, F = 4, 6, 4.
 // The numbers themselves are tested in tests/native and tests/wasm; here the page must show them.
-import fs from 'node:fs';
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { useSiteAndBrowser, screenshot } from '../../helpers/browser.mjs';
+import { useSiteAndBrowser, screenshot, downloadedBytes } from '../../helpers/browser.mjs';
 
 const env = useSiteAndBrowser();
 const url = () => `${env.site.url}subdivision.html`;
@@ -304,7 +303,7 @@ test('the OFF export of a level reads back as that level\'s mesh', async () => {
   await page.click('details.menu > summary');
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('[data-export="Mesh of this level (OFF)"]')]);
   assert.equal(download.suggestedFilename(), 'subdivision-level1.off');
-  const off = fs.readFileSync(await download.path(), 'utf8');
+  const off = (await downloadedBytes(download)).toString('utf8');
   // OFF's counts line: V F E; one Loop step of the tetrahedron by hand: 10 vertices, 16 faces.
   const header = off.split('\n').map((line) => line.trim()).filter((line) => line && !line.startsWith('#'))[1].split(/\s+/).map(Number);
   assert.deepEqual(header.slice(0, 2), [10, 16]);
