@@ -49,7 +49,8 @@ test('an exercise made from the view round-trips through its JSON file and throu
   await page.locator('#author-question').fill(`Which edges, in turn? ${payloads.img}`);
   assert.equal(await page.locator('#author-hide-walk-panel').isChecked(), true);
   const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#author-export-json').click()]);
-  const exercise = JSON.parse((await downloadedBytes(download)).toString('utf8'));
+  const bytes = await downloadedBytes(download);
+  const exercise = JSON.parse(bytes.toString('utf8'));
   assert.equal(exercise.format, 'wingspline-exercise');
   assert.deepEqual(exercise.check, { kind: 'walk', around: 'vertex', element: 4 });
   assert.ok(exercise.hide.includes('walk-panel'));
@@ -74,7 +75,7 @@ test('an exercise made from the view round-trips through its JSON file and throu
   const gallery = await context.newPage();
   await gallery.goto(`${env.site.url}exercises.html`);
   await gallery.waitForSelector('body[data-ready="true"]');
-  await Promise.all([gallery.waitForURL(/mesh\.html#x=/), gallery.locator('#exercise-file').setInputFiles(file)]);
+  await Promise.all([gallery.waitForURL(/mesh\.html#x=/), gallery.locator('#exercise-file').setInputFiles({ name: download.suggestedFilename(), mimeType: 'application/json', buffer: bytes })]);
   await gallery.waitForSelector('#exercise-panel');
   assert.equal(await gallery.locator('#exercise-title').innerText(), 'Around v4 <b>by hand</b>');
   assert.equal(await gallery.evaluate(() => window.wingspline.state.vertex), 3);
