@@ -505,8 +505,12 @@ struct EulerAccess {
         else if (code == "not-a-corner")
             msg = V(x[0]) + " is not a corner of " + F(x[1]);
         else if (code == "adjacent-corners")
-            msg = V(x[0]) + " and " + V(x[1]) + " are already joined by " + E(x[2]) + ", a side of " + F(x[3]) +
-                  ": choose two corners that are not neighbours";
+            // A triangle has no two corners that are not neighbours: say that, not "choose others".
+            msg = corners(m, side_of(m, m.face_edge_[x[3]], x[3])) == 3
+                      ? F(x[3]) + " is a triangle: every two of its corners are joined by a side (" + V(x[0]) + " and " + V(x[1]) +
+                            " by " + E(x[2]) + "), so no new edge can split it; split a face with four or more corners"
+                      : V(x[0]) + " and " + V(x[1]) + " are already joined by " + E(x[2]) + ", a side of " + F(x[3]) +
+                            ": choose two corners that are not neighbours";
         else if (code == "edge-exists" && opname == "flip")
             msg = "flipping " + E(x[0]) + " would create an edge " + V(x[1]) + "-" + V(x[2]) + " that already exists (" + E(x[3]) + ")";
         else if (code == "edge-exists")

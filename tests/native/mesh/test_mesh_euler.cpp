@@ -456,7 +456,7 @@ TEST_CASE("refusals on the lecture mesh and the tetrahedron say why and change n
         {"lecture", {FlipEdge, 0, 0, 0, 0.5}, "boundary-edge", "e1 is on the boundary"},
         {"lecture", {JoinFaces, 1, 0, 0, 0.5}, "boundary-edge", "e2 is on the boundary"},
         {"lecture", {CollapseEdge, 2, 0, 0, 0.5}, "would-pinch", "v2 and v3 are both on the boundary but e3 is not"},
-        {"lecture", {SplitFace, 0, 0, 1, 0.5}, "adjacent-corners", "v1 and v2 are already joined by e2, a side of F1"},
+        {"lecture", {SplitFace, 0, 0, 1, 0.5}, "adjacent-corners", "F1 is a triangle: every two of its corners are joined by a side (v1 and v2 by e2)"},
         {"lecture", {SplitFace, 0, 0, 3, 0.5}, "not-a-corner", "v4 is not a corner of F1"},
         {"lecture", {SplitFace, 0, 2, 2, 0.5}, "same-vertex", "both are v3"},
         {"lecture", {SplitEdge, 2, 0, 0, 1.0}, "invalid-parameter", "t = 1 is not strictly between 0 and 1"},

@@ -184,12 +184,16 @@
  * the kinds of check its drawing gives (exercise/format.js KINDS); `subject`: what a check
  * is asked of, from the lesson's model (exercise/subjects.js lists the shapes); `keepsState`:
  * the kinds whose answer is the drawing itself (kept with the exercise's progress);
+ * `usesModel`: `subject` reads the model, so a caller without a page (the grader, in Node)
+ * computes it first with `lesson.compute({}, state, { api })`; without it `subject` gets
+ * `view = {}` and `model = null` there and works from the state;
  * `showWalk`: the drawing follows a walk being predicted; `suggest`: the authoring dialog's
  * starting check, hidden panels and question for a kind, from the view shown.
  * @typedef {{
  *   kinds: string[],
  *   subject(view: View, model: Model, state: State, ctx: Ctx): { mesh?: any, curve?: any, curves?: Object<string, any>, joints?: Array<{ a: any, b: any }>, patch?: any },
  *   keepsState?: string[],
+ *   usesModel?: boolean,
  *   showWalk?: (ctx: Ctx, around: string, element: number) => void,
  *   suggest?: (kind: string, state: State, asked: { api: any, subject: any }) => { check: any, hide: string[], question: string },
  * }} ExerciseSupport

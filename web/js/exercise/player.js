@@ -43,9 +43,9 @@ export function readExerciseState(lesson, exercise) {
 }
 
 /**
- * @param {{ ctx: any, lesson: any, view: () => any, exercise: any, key: string, loaded: { progress: any, problem: string | null, stuck?: boolean }, panels: HTMLElement, reset: () => void, initialState: any }} parts
+ * @param {{ ctx: any, lesson: any, view: () => any, exercise: any, key: string, hash?: string | null, loaded: { progress: any, problem: string | null, stuck?: boolean }, panels: HTMLElement, reset: () => void, initialState: any }} parts
  */
-export function mountExercise({ ctx, lesson, view, exercise, key, loaded, panels, reset, initialState }) {
+export function mountExercise({ ctx, lesson, view, exercise, key, hash = null, loaded, panels, reset, initialState }) {
   const support = lesson.exercise;
   const { check } = exercise;
   // What the check is asked of. A question is about the exercise's drawing: its subject is
@@ -103,7 +103,9 @@ export function mountExercise({ ctx, lesson, view, exercise, key, loaded, panels
     window.clearTimeout(saveTimer);
     saveTimer = 0;
     if (leaving) return;
-    progress = { ...progress, answer: kind.answer(), state: keepsState ? ctx.state : null };
+    // Which exercise this is, for a submission file (submission.js): the content hash tells
+    // the version answered from the lecturer's copy.
+    progress = { ...progress, id: exercise.id ?? null, hash, kind: check.kind, answer: kind.answer(), state: keepsState ? ctx.state : null };
     const kept = writeProgress(key, progress);
     if (kept === unsaved) { unsaved = !kept; showStatus(); }
   }

@@ -28,7 +28,10 @@ export async function progressKey(exercise, { shipped }) {
 }
 
 /**
- * @typedef {{ version: number, status: 'started' | 'solved', checks: number, answer: any, state: any, solvedAt: string | null, title: string, lesson: string }} Progress
+ * What a page records of an attempt. `id`, `hash` (the exercise's content hash) and `kind` say
+ * which exercise it was, for a submission file; entries saved before they existed lack them.
+ * @typedef {{ version: number, status: 'started' | 'solved', checks: number, answer: any, state: any, solvedAt: string | null, title: string, lesson: string,
+ *   id?: string | null, hash?: string | null, kind?: string, feedback?: string, sawWorked?: boolean, hintsShown?: number }} Progress
  */
 
 function parse(raw) {
@@ -131,4 +134,29 @@ export function siteStatuses(ids) {
     if (status) out[id] = status;
   }
   return out;
+}
+
+/**
+ * Every exercise's progress kept in this browser, for a submission file (submission.js):
+ * [{ key, progress }] in key order, entries that cannot be read left out (and left alone).
+ * @returns {Array<{ key: string, progress: Progress }>}
+ */
+export function listProgress() {
+  const store = storage();
+  if (!store) return [];
+  const out = [];
+  try {
+    for (let i = 0; i < store.length; i += 1) {
+      const name = store.key(i);
+      if (!name?.startsWith(PREFIX)) continue;
+      try {
+        out.push({ key: name.slice(PREFIX.length), progress: parse(store.getItem(name) ?? '') });
+      } catch {
+        // unreadable: the exercise's page sets it aside when it is opened
+      }
+    }
+  } catch {
+    return [];
+  }
+  return out.sort((a, b) => a.key.localeCompare(b.key));
 }

@@ -10,11 +10,12 @@ import { readExerciseLink, loadLinkedExercise } from './link.js';
 import { progressKey, readProgress } from './progress.js';
 import { readExerciseState, mountExercise } from './player.js';
 import { readEnvelope } from '../app/share-link.js';
+import { exerciseHash } from './submission.js';
 
 const lessonIds = lessons.map((l) => l.id);
 
 /**
- * @typedef {import('../app/contract.js').ExerciseOpening & { problem: string | null, exercise?: any, key?: string, loaded?: any, initialState?: any }} Session
+ * @typedef {import('../app/contract.js').ExerciseOpening & { problem: string | null, exercise?: any, key?: string, hash?: string, loaded?: any, initialState?: any }} Session
  * @param {import('../app/contract.js').Lesson} lesson
  * @returns {Promise<Session | null>}
  */
@@ -36,6 +37,7 @@ export async function openExercise(lesson) {
     const exercise = await loadLinkedExercise(link, { lessonIds });
     const initialState = readExerciseState(lesson, exercise);
     const key = await progressKey(exercise, { shipped: 'id' in link });
+    const hash = await exerciseHash(exercise);
     // The drawing as the student left it, for the kinds where the drawing is the answer.
     let state = initialState;
     // Read once: an unreadable entry is moved aside here, and the player says so.
@@ -49,7 +51,7 @@ export async function openExercise(lesson) {
         // the kept drawing is not usable: the exercise's own is shown
       }
     }
-    Object.assign(session, { ready: true, shownOnStart: true, exercise, key, loaded, initialState, restored: { state, source: 'exercise', problem: null, previous: null } });
+    Object.assign(session, { ready: true, shownOnStart: true, exercise, key, hash, loaded, initialState, restored: { state, source: 'exercise', problem: null, previous: null } });
   } catch (err) {
     session.refuse(err.message);
   }
@@ -66,7 +68,7 @@ export function startExercise(session, { ctx, lesson, view, panels, message, acc
     if (session.problem) message.warn(session.problem, { code: 'exercise-refused' });
     return null;
   }
-  const { exercise, key, initialState, loaded } = session;
+  const { exercise, key, hash, initialState, loaded } = session;
   // The page's Reset, and the panel's "Back to the exercise's drawing": the exercise's
   // starting drawing as one undoable step; the drawing it replaces goes into the history.
   const reset = () => {
@@ -87,7 +89,7 @@ export function startExercise(session, { ctx, lesson, view, panels, message, acc
   ctx.ui.exercise = exercise.check.kind;
   let player;
   try {
-    player = mountExercise({ ctx, lesson, view, exercise, key, loaded, panels, reset, initialState });
+    player = mountExercise({ ctx, lesson, view, exercise, key, hash, loaded, panels, reset, initialState });
   } catch (err) {
     delete document.documentElement.dataset.exercise;
     ctx.ui.exercise = null;

@@ -3,14 +3,19 @@
 // made by the build from web/exercises/), by lesson in course order, each with its status in
 // this browser; and an exercise file from disk, read and checked here, then opened in its
 // lesson by a link that carries it (#x=...). A file that cannot be read is named with its
-// field, and nothing is opened.
+// field, and nothing is opened. And the hand-in: every exercise answered in this browser, in
+// one submission file with the name or ID the student types (exercise/submission.js), for an
+// assignment upload; the lecturer grades it with `wingspline grade`.
 import { h, setChildren } from '../app/dom.js';
 import { lessons } from '../lessons/registry.js';
 import { applyStoredTheme } from '../app/theme.js';
 import { registerServiceWorker } from '../app/sw-register.js';
 import { KINDS, parseExercise, MAX_EXERCISE_CHARS } from '../exercise/format.js';
 import { exerciseUrl } from '../exercise/link.js';
-import { siteStatuses } from '../exercise/progress.js';
+import { siteStatuses, listProgress } from '../exercise/progress.js';
+import { makeSubmission } from '../exercise/submission.js';
+import { download } from '../app/file-io.js';
+import { stringifyExact } from '../app/share-link.js';
 
 const lessonIds = lessons.map((l) => l.id);
 const message = /** @type {HTMLElement} */ (document.getElementById('message'));
@@ -64,6 +69,60 @@ async function openFile(file) {
   window.location.assign(await exerciseUrl(exercise, lesson?.page ?? `${exercise.lesson}.html`));
 }
 
+// The hand-in panel: the attempts kept in this browser, each ticked, a name, one file.
+function showHandIn() {
+  const box = /** @type {HTMLElement} */ (document.getElementById('hand-in'));
+  const attempts = listProgress();
+  if (!attempts.length) {
+    setChildren(box, h('p', { id: 'hand-in-empty' }, 'Nothing to hand in yet: the exercises you answer in this browser are listed here.'));
+    return;
+  }
+  const name = /** @type {HTMLInputElement} */ (h('input', { type: 'text', id: 'hand-in-name', autocomplete: 'name', maxlength: '200', 'aria-describedby': 'hand-in-name-hint' }));
+  const boxes = attempts.map(({ key, progress }, i) => {
+    const input = /** @type {HTMLInputElement} */ (h('input', { type: 'checkbox', id: `hand-in-${i}`, checked: true, 'data-key': key }));
+    const status = progress.status === 'solved' ? (progress.sawWorked ? 'solved after the worked answer' : 'solved') : 'started';
+    return { key, progress, input, item: h('li', {}, input, ' ', h('label', { for: `hand-in-${i}` }, progress.title || key, ` (${status}, ${progress.checks} check${progress.checks === 1 ? '' : 's'})`)) };
+  });
+  const result = h('p', { id: 'hand-in-result', role: 'status', 'aria-live': 'polite' });
+  const button = h('button', { type: 'button', class: 'primary', id: 'hand-in-export', onclick: () => exportSubmission() }, 'Export the submission file');
+  setChildren(box,
+    h('p', {}, h('label', { for: 'hand-in-name' }, 'Your name or student ID'), ' ', name),
+    h('p', { class: 'hint', id: 'hand-in-name-hint' }, 'Written into the file as you type it; your lecturer\'s gradebook shows it next to the file\'s name.'),
+    h('fieldset', {}, h('legend', {}, 'The exercises to hand in'), h('ul', { class: 'hand-in-list' }, boxes.map((b) => b.item))),
+    h('p', {}, button), result);
+
+  async function exportSubmission() {
+    const student = name.value.trim();
+    const chosen = boxes.filter((b) => b.input.checked);
+    if (!student) {
+      result.dataset.kind = 'error';
+      result.textContent = 'Type your name or student ID first: the file is graded under it.';
+      name.focus();
+      return;
+    }
+    if (!chosen.length) {
+      result.dataset.kind = 'error';
+      result.textContent = 'Tick at least one exercise to hand in.';
+      return;
+    }
+    let app = 'unknown';
+    try {
+      const { loadWingspline } = await import('../core/wingspline.js');
+      app = (await loadWingspline()).version;
+    } catch {
+      // (the version is a courtesy: the grader checks every answer itself)
+    }
+    const submission = await makeSubmission({
+      student, app,
+      entries: chosen.map(({ key, progress }) => ({ id: key.startsWith('site:') ? key.slice(5) : (progress.id ?? null), hash: progress.hash ?? null, progress })),
+    });
+    const slug = student.toLowerCase().normalize('NFKD').replace(/[^a-z0-9]+/g, '-').replace(/^-|-$/g, '').slice(0, 40) || 'student';
+    download(`wingspline-submission-${slug}.json`, stringifyExact(submission, 2) + '\n', 'application/json');
+    result.dataset.kind = 'info';
+    result.textContent = `The submission file (${chosen.length} exercise${chosen.length === 1 ? '' : 's'}) is downloaded: upload it to your course's assignment.`;
+  }
+}
+
 applyStoredTheme();
 registerServiceWorker();
 if (window.location.protocol === 'file:') /** @type {HTMLElement} */ (document.getElementById('file-warning')).hidden = false;
@@ -74,3 +133,4 @@ input.addEventListener('change', () => {
   if (file) openFile(file);
 });
 showGallery();
+showHandIn();

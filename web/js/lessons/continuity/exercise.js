@@ -7,6 +7,7 @@
 export const continuityExercise = {
   kinds: ['joint', 'property'],
   keepsState: ['property'],
+  usesModel: true,
   subject(view, model) {
     return { joints: model.segments.slice(1).map((b, i) => ({ a: model.segments[i].curve, b: b.curve })) };
   },

@@ -32,10 +32,12 @@ export function createEditPanel(ctx, selection, { pick }) {
   const number = h('input', { type: 'number', id: 'edit-element', min: 1, step: 1, 'aria-label': 'Element number (1-based, as in the tables)' });
   const choose = () => {
     const kind = kindSelect.value;
+    // Changing the kind before a number is typed is not a mistake: nothing to choose yet.
+    if (number.value.trim() === '') return;
     const n = Number(number.value) - 1;
     const limit = { vertex: ctx.model.V, edge: ctx.model.E, face: ctx.model.F }[kind];
     if (!Number.isInteger(n) || n < 0 || n >= limit) {
-      ctx.message.error(`Choose a ${kind} number from 1 to ${limit}`, 'invalid-element');
+      ctx.message.error(`Choose ${kind === 'edge' ? 'an' : 'a'} ${kind} number from 1 to ${limit}`, 'invalid-element');
       return;
     }
     if (!exists(ctx.model, { kind, index: n })) {

@@ -7,6 +7,7 @@ import { meshSubjectOf } from '../../exercise/subjects.js';
 /** @type {import('../../app/contract.js').ExerciseSupport} */
 export const subdivisionExercise = {
   kinds: ['table'],
+  usesModel: true,
   subject(view, model) {
     return { mesh: meshSubjectOf(model.mesh) };
   },
