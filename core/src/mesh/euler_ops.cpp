@@ -266,6 +266,8 @@ struct EulerAccess {
         if (const char* c = element(m, f, m.face_count())) return refuse(c, f.idx, kFaceKind);
         if (const char* c = element(m, a, m.vertex_count())) return refuse(c, a.idx, kVertexKind);
         if (const char* c = element(m, b, m.vertex_count())) return refuse(c, b.idx, kVertexKind);
+        // A triangle's corners are all neighbours: whichever two are chosen, that is the reason.
+        if (corners(m, side_of(m, m.face_edge_[f.idx], f.idx)) == 3) return refuse("adjacent-corners", a.idx, b.idx, kNone, f.idx);
         if (a == b) return refuse("same-vertex", a.idx);
         // One walk along f (the lecture's rule, next_in_face) finds the sides at a and b.
         // The side leaving a corner follows the one arriving there.
@@ -506,9 +508,9 @@ struct EulerAccess {
             msg = V(x[0]) + " is not a corner of " + F(x[1]);
         else if (code == "adjacent-corners")
             // A triangle has no two corners that are not neighbours: say that, not "choose others".
-            msg = corners(m, side_of(m, m.face_edge_[x[3]], x[3])) == 3
-                      ? F(x[3]) + " is a triangle: every two of its corners are joined by a side (" + V(x[0]) + " and " + V(x[1]) +
-                            " by " + E(x[2]) + "), so no new edge can split it; split a face with four or more corners"
+            msg = x[2] == kNone
+                      ? F(x[3]) + " is a triangle: every two of its corners are joined by a side, so no new edge can split it;"
+                                  " split a face with four or more corners"
                       : V(x[0]) + " and " + V(x[1]) + " are already joined by " + E(x[2]) + ", a side of " + F(x[3]) +
                             ": choose two corners that are not neighbours";
         else if (code == "edge-exists" && opname == "flip")

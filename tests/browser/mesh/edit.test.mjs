@@ -285,3 +285,36 @@ test('split vertex, from the registry: pick v3, choose two neighbours, split it 
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+test('the panel\'s words: a kind changed before a number says nothing; a triangle cannot be split between corners, and says why; a picked vertex lists its operations', async () => {
+  const page = await openLesson();
+  // Choosing "edge" with no number typed is not a mistake: no error line.
+  await page.selectOption('#edit-kind', 'edge');
+  await settle(page);
+  assert.equal(await page.evaluate(() => window.wingspline.message()), '', 'no message before a number is typed');
+  // A number out of range: the sentence says "an edge" and the range (the lecture mesh has e1..e7).
+  await page.fill('#edit-element', '9');
+  await page.press('#edit-element', 'Enter');
+  await page.waitForFunction(() => window.wingspline.message().startsWith('Choose an edge number from 1 to 7'));
+  // F1 is a triangle (v1 v2 v3): split face between any two corners is refused with the reason
+  // that a triangle's corners are all neighbours, not "choose two that are not".
+  await page.selectOption('#edit-kind', 'face');
+  await page.fill('#edit-element', '1');
+  await page.press('#edit-element', 'Enter');
+  await page.waitForFunction(() => document.querySelector('#edit-picked')?.textContent === 'Picked: F1');
+  const reason = await page.textContent('#edit-reasons li[data-op="split-face"]');
+  assert.match(reason, /F1 is a triangle: every two of its corners are joined by a side/);
+  assert.doesNotMatch(reason, /choose two corners/);
+  // A picked vertex shows the operations on a vertex (split vertex), enabled or with its reason.
+  await page.selectOption('#edit-kind', 'vertex');
+  await page.fill('#edit-element', '2');
+  await page.press('#edit-element', 'Enter');
+  await page.waitForFunction(() => document.querySelector('#edit-picked')?.textContent === 'Picked: v2');
+  const shown = await page.$$eval('.edit-buttons button[data-op]', (bs) => bs.filter((b) => !b.hidden).map((b) => b.dataset.op));
+  assert.deepEqual(shown, ['split-vertex']);
+  const enabled = await page.isEnabled('button[data-op="split-vertex"]');
+  const why = await page.$$eval('#edit-reasons li[data-op="split-vertex"]', (l) => l.map((x) => x.textContent));
+  assert.ok(enabled || why.length === 1, 'either it applies, or the panel says why not');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

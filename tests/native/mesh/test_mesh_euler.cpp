@@ -456,9 +456,9 @@ TEST_CASE("refusals on the lecture mesh and the tetrahedron say why and change n
         {"lecture", {FlipEdge, 0, 0, 0, 0.5}, "boundary-edge", "e1 is on the boundary"},
         {"lecture", {JoinFaces, 1, 0, 0, 0.5}, "boundary-edge", "e2 is on the boundary"},
         {"lecture", {CollapseEdge, 2, 0, 0, 0.5}, "would-pinch", "v2 and v3 are both on the boundary but e3 is not"},
-        {"lecture", {SplitFace, 0, 0, 1, 0.5}, "adjacent-corners", "F1 is a triangle: every two of its corners are joined by a side (v1 and v2 by e2)"},
+        {"lecture", {SplitFace, 0, 0, 1, 0.5}, "adjacent-corners", "F1 is a triangle: every two of its corners are joined by a side"},
         {"lecture", {SplitFace, 0, 0, 3, 0.5}, "not-a-corner", "v4 is not a corner of F1"},
-        {"lecture", {SplitFace, 0, 2, 2, 0.5}, "same-vertex", "both are v3"},
+        {"lecture", {SplitFace, 0, 2, 2, 0.5}, "adjacent-corners", "so no new edge can split it"}, // (a triangle, whatever the corners)
         {"lecture", {SplitEdge, 2, 0, 0, 1.0}, "invalid-parameter", "t = 1 is not strictly between 0 and 1"},
         {"lecture", {SplitEdge, 7, 0, 0, 0.5}, "invalid-element", "there is no e8: the mesh has edges e1 to e7"},
         {"lecture", {PokeFace, -1, 0, 0, 0.5}, "invalid-element", "-1 names no face (it stands for none): the mesh has faces F1 to F3"},

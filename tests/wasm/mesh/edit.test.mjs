@@ -155,7 +155,8 @@ test('refusals: a reason naming the elements, the same from check and from the o
   withLecture((mesh) => {
     const before = snapshot(mesh);
     assert.deepEqual(mesh.check('join-faces', 0).code, 'boundary-edge');
-    assert.match(mesh.check('split-face', 0, 0, 1).message, /v1 and v2 are already joined by e2, a side of F1/);
+    // F1 is a triangle (lecture 000: v1 v2 v3): no two corners that are not neighbours, whichever are chosen.
+    assert.match(mesh.check('split-face', 0, 0, 1).message, /^F1 is a triangle: every two of its corners are joined by a side/);
     assert.deepEqual(mesh.check('split-edge', 2, 1.5).code, 'invalid-parameter');
     assert.throws(() => mesh.splitEdge(2, Number.NaN), (e) => e.code === 'invalid-argument');
     assert.throws(() => mesh.splitEdge(1.5), (e) => e.code === 'invalid-argument');
