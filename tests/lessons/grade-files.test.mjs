@@ -1,7 +1,7 @@
 // The submission file and the gradebook's files, in Node: what a damaged, edited or hostile
 // file becomes (a named row or a named refusal, never a crash), and that the CSV a spreadsheet
-// opens runs nothing and reads back as written (parsed here by an RFC 4180 reader of the test's
-// own). The grading of answers by the core, kind by kind, is tests/lessons/grade-answers.test.mjs
+// opens runs nothing and reads back as written (parsed by the tests' own RFC 4180 reader,
+// tests/helpers/csv.mjs). The grading of answers by the core, kind by kind, is tests/lessons/grade-answers.test.mjs
 // and, from the packed tarball, tests/package/grade-cli.test.mjs.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -13,31 +13,12 @@ import { gradeFiles, gradebookCsv, gradebookMarkdown, csvCell, markdownCell, COL
 import { LESSON_OBJECTS } from '../../web/js/lessons/all.js';
 import { parseExercise } from '../../web/js/exercise/format.js';
 import fs from 'node:fs';
+import { parseCsv } from '../helpers/csv.mjs';
 
 const api = await loadWingspline();
 const lessonIds = Object.keys(LESSON_OBJECTS);
 const galleryText = (id) => fs.readFileSync(new URL(`../../web/exercises/${id}.json`, import.meta.url), 'utf8');
 const file = (name, text) => ({ name, size: Buffer.byteLength(text), read: () => text });
-
-// RFC 4180, written here: quoted fields, "" for a quote inside one, CRLF between records.
-function parseCsv(text) {
-  const records = [];
-  let field = '';
-  let record = [];
-  let quoted = false;
-  for (let i = 0; i < text.length; i += 1) {
-    const c = text[i];
-    if (quoted) {
-      if (c === '"' && text[i + 1] === '"') { field += '"'; i += 1; } else if (c === '"') quoted = false;
-      else field += c;
-    } else if (c === '"') quoted = true;
-    else if (c === ',') { record.push(field); field = ''; } else if (c === '\r' && text[i + 1] === '\n') {
-      record.push(field); records.push(record); record = []; field = ''; i += 1;
-    } else field += c;
-  }
-  assert.equal(field, '', 'the file ends with CRLF');
-  return records;
-}
 
 test('a cell a spreadsheet would run starts with an apostrophe; commas, quotes and line breaks are quoted', () => {
   for (const danger of ['=HYPERLINK("http://x","y")', '+1+1', '-2+3', '@SUM(A1)', '\tx', '\rx']) {

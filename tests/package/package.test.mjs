@@ -8,7 +8,10 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { execFileSync, spawnSync } from 'node:child_process';
+import { createHash } from 'node:crypto';
 import { repoRoot, startSite, launchBrowser } from '../helpers/browser.mjs';
+import { csvObjects } from '../helpers/csv.mjs';
+import { slideWalk } from '../helpers/lecture-slide.mjs';
 
 const pageDir = path.join(repoRoot, 'tests', 'package', 'page');
 let tmp;
@@ -66,10 +69,11 @@ test('npm pack builds first (prepack) and the tarball holds the built module, th
   assert.match(packLog, /prepack/, 'npm ran the prepack script');
   assert.match(packLog, /\[wingspline\] site assembled in dist\//, 'the prepack script built the site');
   for (const file of ['package.json', 'README.md', 'LICENSE', 'dist/js/core/wingspline.js', 'dist/js/core/mesh-api.js',
-    'dist/wasm/wingspline-core.js', 'dist/wasm/wingspline-core.wasm', 'dist/index.html', 'types/wingspline.d.ts']) {
+    'dist/wasm/wingspline-core.js', 'dist/wasm/wingspline-core.wasm', 'dist/index.html', 'types/wingspline.d.ts', 'scripts/wingspline.mjs']) {
     assert.ok(packed.includes(file), `${file} is in the tarball (it holds ${packed.length} files)`);
   }
-  const stray = packed.filter((f) => /^(tests|build|node_modules|core|scripts|web)\//.test(f) || f.endsWith('.tgz'));
+  // (scripts/wingspline.mjs is the package's command, `npx wingspline grade`; no other script ships)
+  const stray = packed.filter((f) => (/^(tests|build|node_modules|core|scripts|web)\//.test(f) && f !== 'scripts/wingspline.mjs') || f.endsWith('.tgz'));
   assert.deepEqual(stray, [], 'no tests, build output, sources or dependencies in the tarball');
   const manifest = JSON.parse(fs.readFileSync(path.join(installed, 'package.json'), 'utf8'));
   assert.deepEqual(Object.keys(manifest.dependencies ?? {}), [], 'no runtime dependencies: it installs offline');
@@ -123,4 +127,94 @@ test('the installed dist/ served as it is works from a page without a bundler (h
     await browser.close();
     await site.close();
   }
+});
+
+// ---- `npx wingspline grade`, from the installed package in its empty folder. The lecturer's
+// exercise files are the gallery's; the submissions are written here by hand in the documented
+// format (docs/exercises.md), with the hashes and digests computed here with node:crypto (the
+// SHA-256 of the JSON text), and right answers worked out from the lectures.
+const sha = (text) => `sha256-${createHash('sha256').update(text).digest('hex')}`;
+const galleryFile = (id) => fs.readFileSync(path.join(repoRoot, 'web', 'exercises', `${id}.json`), 'utf8');
+const exerciseSha = (id) => sha(JSON.stringify(JSON.parse(galleryFile(id))));
+function submissionText({ student, exercises, tamper }) {
+  const body = { format: 'wingspline-submission', version: 1, app: '0.1.0', student, madeAt: '2026-11-27T21:00:00.000Z', exercises };
+  const file = { ...body, digest: sha(JSON.stringify(body)) };
+  if (tamper) tamper(file);
+  return JSON.stringify(file, null, 2);
+}
+const entry = (id, answer, extra = {}) => ({ id, hash: exerciseSha(id), title: id, lesson: id.split('-')[0], kind: '', feedback: 'check', status: 'started', checks: 2, hintsShown: 0, sawWorked: false, answer, ...extra });
+
+// Lecture 003's Hermite matrix times the geometry [P0 P1 R0 R1] (x), first row: 2 -2 1 1.
+function hermiteMgFirstEntry() {
+  const { state } = JSON.parse(galleryFile('comparison-hermite-mg'));
+  const [p0, p1] = state.points;
+  const [r0, r1] = state.hermite.own;
+  return 2 * p0[0] - 2 * p1[0] + r0[0] + r1[0];
+}
+
+test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damaged, oversized and other-version files each get their row; the CSV runs nothing', () => {
+  const app = path.dirname(path.dirname(installed));
+  const work = path.join(app, 'course');
+  const exercises = path.join(work, 'homework-3');
+  const uploads = path.join(work, 'uploads');
+  for (const dir of [exercises, path.join(uploads, 'ada'), path.join(uploads, 'bob'), path.join(uploads, 'eve'), path.join(uploads, 'zed')]) fs.mkdirSync(dir, { recursive: true });
+  const ids = ['comparison-hermite-mg', 'mesh-walk-along-f1'];
+  for (const id of ids) fs.writeFileSync(path.join(exercises, `${id}.json`), galleryFile(id));
+  const mg = hermiteMgFirstEntry();
+  assert.ok(Math.abs(mg - 1.4) < 1e-12, `the M G entry of the lecture's formula: ${mg}`);
+  // The walk along F1 as the slide's tables give it, predicted from its second edge on, then
+  // back to the first (the walk closes).
+  const walk = slideWalk('face', 1).map((e) => Number(e.slice(1)) - 1);
+  const picks = [...walk.slice(1), walk[0]];
+  fs.writeFileSync(path.join(uploads, 'ada', 'wingspline-submission-ada.json'), submissionText({ student: 'Ada Lovelace', exercises: [
+    entry('comparison-hermite-mg', String(mg)), entry('mesh-walk-along-f1', { picks }, { status: 'solved' })] }));
+  fs.writeFileSync(path.join(uploads, 'bob', 'wingspline-submission-bob.json'), submissionText({ student: 'Bob', exercises: [entry('comparison-hermite-mg', '3')] }));
+  // Eve's file: edited after export (her wrong answer marked solved), a name made to run in a spreadsheet.
+  fs.writeFileSync(path.join(uploads, 'eve', 'wingspline-submission-eve.json'), submissionText({
+    student: '=HYPERLINK("http://example.invalid","x")', exercises: [entry('comparison-hermite-mg', '3'), entry('mesh-walk-along-f1', { picks: [walk[0]] })],
+    tamper: (f) => { f.exercises[0].status = 'solved'; f.exercises[0].checks = 1; } }));
+  // Zed: an answer to another version of the M G exercise; a damaged file; a file far too large.
+  fs.writeFileSync(path.join(uploads, 'zed', 'a-other-version.json'), submissionText({ student: 'Zed', exercises: [
+    entry('comparison-hermite-mg', String(mg), { hash: sha('an older version') })] }));
+  fs.writeFileSync(path.join(uploads, 'zed', 'b-cut.json'), submissionText({ student: 'Zed', exercises: [] }).slice(0, 60));
+  fs.writeFileSync(path.join(uploads, 'zed', 'c-huge.json'), ' '.repeat(5 * 1024 * 1024));
+
+  const out = path.join(work, 'grades');
+  const r = spawnSync('npx', ['--offline', 'wingspline', 'grade', 'homework-3', 'uploads', '--out', out], { cwd: work, encoding: 'utf8' });
+  assert.equal(r.status, 0, r.stderr);
+  assert.match(r.stdout, /Graded 6 submission files against 2 exercises: 2 of 10 answers right/);
+  const rows = csvObjects(fs.readFileSync(path.join(out, 'gradebook.csv'), 'utf8'));
+  const at = (file, exercise) => rows.find((x) => x['submission file'].endsWith(file) && x.exercise === exercise);
+  const ada = at('ada.json', 'comparison-hermite-mg');
+  assert.equal(ada.result, 'right');
+  assert.equal(ada.score, '1');
+  assert.match(ada.note, /name as typed in the file .*ada\.json; not verified/);
+  assert.equal(at('ada.json', 'mesh-walk-along-f1').result, 'right');
+  const bob = at('bob.json', 'comparison-hermite-mg');
+  assert.equal(bob.result, 'wrong');
+  assert.equal(bob.score, '0');
+  assert.ok(bob.reason.length > 0, 'a wrong answer has its reason');
+  assert.ok(!bob.reason.includes('1.4'), `the reason does not give the value: ${bob.reason}`);
+  assert.equal(at('bob.json', 'mesh-walk-along-f1').result, 'not handed in');
+  const eve = at('eve.json', 'comparison-hermite-mg');
+  assert.equal(eve.result, 'wrong');
+  assert.match(eve.note, /changed after it was exported/);
+  assert.match(eve.note, /the file says solved; the check says not/);
+  assert.equal(eve['student (as typed, unverified)'], '\'=HYPERLINK("http://example.invalid","x")', 'the name is text, not a formula');
+  assert.equal(at('eve.json', 'mesh-walk-along-f1').result, 'wrong', 'a walk stopped after one edge is not the walk');
+  assert.equal(at('a-other-version.json', 'comparison-hermite-mg').result, 'answered a different version');
+  assert.equal(rows.filter((x) => x['submission file'].endsWith('b-cut.json'))[0].result, 'damaged file');
+  assert.match(rows.filter((x) => x['submission file'].endsWith('c-huge.json'))[0].reason, /5\.0 MB; a submission is at most 4\.0 MB/);
+  // No cell of the CSV starts with a character a spreadsheet would run.
+  for (const row of rows) for (const [k, v] of Object.entries(row)) assert.ok(!/^[=+\-@]/.test(v), `${k}: ${v}`);
+  const md = fs.readFileSync(path.join(out, 'gradebook.md'), 'utf8');
+  assert.match(md, /^# Gradebook/);
+  assert.match(md, /\| ada\\\.json \| Ada Lovelace \| 2 \| 2 \||wingspline\\-submission\\-ada\\\.json \| Ada Lovelace \| 2 \| 2 \|/);
+
+  // Without the exercise files: told, and a non-zero exit.
+  const none = spawnSync('npx', ['--offline', 'wingspline', 'grade', 'uploads/bob'], { cwd: work, encoding: 'utf8' });
+  assert.equal(none.status, 1);
+  assert.match(none.stderr, /no exercise file could be used/);
+  const help = spawnSync('npx', ['--offline', 'wingspline', '--help'], { cwd: work, encoding: 'utf8' });
+  assert.match(help.stdout, /Usage: wingspline grade/);
 });

@@ -266,9 +266,6 @@ struct EulerAccess {
         if (const char* c = element(m, f, m.face_count())) return refuse(c, f.idx, kFaceKind);
         if (const char* c = element(m, a, m.vertex_count())) return refuse(c, a.idx, kVertexKind);
         if (const char* c = element(m, b, m.vertex_count())) return refuse(c, b.idx, kVertexKind);
-        // A triangle's corners are all neighbours: whichever two are chosen, that is the reason.
-        if (corners(m, side_of(m, m.face_edge_[f.idx], f.idx)) == 3) return refuse("adjacent-corners", a.idx, b.idx, kNone, f.idx);
-        if (a == b) return refuse("same-vertex", a.idx);
         // One walk along f (the lecture's rule, next_in_face) finds the sides at a and b.
         // The side leaving a corner follows the one arriving there.
         FaceSides found;
@@ -286,6 +283,9 @@ struct EulerAccess {
         } while (x != first && ++n <= m.edge_count());
         if (found.out_of_a.e == kNone) return refuse("not-a-corner", a.idx, f.idx);
         if (found.out_of_b.e == kNone) return refuse("not-a-corner", b.idx, f.idx);
+        // A triangle's corners are all neighbours: whichever two are chosen, that is the reason.
+        if (corners(m, side_of(m, first, f.idx)) == 3) return refuse("adjacent-corners", a.idx, b.idx, kNone, f.idx);
+        if (a == b) return refuse("same-vertex", a.idx);
         if (found.into_a.e == kNone) found.into_a = before; // a starts the walk: the last side arrives there
         if (found.into_b.e == kNone) found.into_b = before;
         const int32_t existing = edge_between(m, a.idx, b.idx);
