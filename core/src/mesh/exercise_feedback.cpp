@@ -130,11 +130,11 @@ Words edge_list_words(const AnswerFinding& f) {
     const bool ends = f.field == "v1" || f.field == "v2";
     const std::string head = f.field == "v1" ? "V1" : f.field == "v2" ? "V2" : f.field == "p1" ? "P1" : f.field == "p2" ? "P2" : f.field;
     if (ends)
-        return {row + ", column " + head + ": " + what_is_wrong(f.code) + ". Re-read: V1 and V2 are the edge's two ends; together they "
-                    "must be an edge of the mesh, one row per edge.",
+        return {row + ", column " + head + ": " + what_is_wrong(f.code) + ". Re-read: the first two columns are the edge's two ends; "
+                    "together they must be an edge of the mesh, one row per edge.",
                 "Pick two corners next to each other on a polygon, an edge no other row describes."};
-    return {row + ", column " + head + ": " + what_is_wrong(f.code) + ". Re-read: P1 and P2 are the two polygons on the edge's sides, "
-                "in either order; λ where no polygon lies on a side.",
+    return {row + ", column " + head + ": " + what_is_wrong(f.code) + ". Re-read: the last two columns hold the two polygons on the "
+                "edge's sides, in either order; λ where no polygon lies on a side.",
             "Look at the edge in the drawing: which polygons touch it along its length?"};
 }
 
