@@ -242,9 +242,13 @@ export function createTableKind({ api, check, subject }) {
         return h('td', {}, input);
       })));
     }
-    // Wide grids scroll inside their own box (a phone), with a cue that says so.
-    root.append(h('div', { class: 'exercise-grid-box', tabindex: '-1' },
-      h('table', { class: 'data-table exercise-grid' }, h('caption', {}, grid.title), h('thead', {}, head), h('tbody', {}, body))));
+    // A grid wider than its column (a phone, a narrow window) scrolls in its own box, and a
+    // cue above it says so while it does.
+    const cue = h('p', { class: 'exercise-scroll-cue hint', id: `exercise-cue-${grid.table}`, hidden: true }, `${grid.title} is wider than this column: scroll it sideways for every column →`);
+    const box = h('div', { class: 'exercise-grid-box' },
+      h('table', { class: 'data-table exercise-grid' }, h('caption', {}, grid.title), h('thead', {}, head), h('tbody', {}, body)));
+    root.append(cue, box);
+    if (typeof ResizeObserver === 'function') new ResizeObserver(() => { cue.hidden = box.scrollWidth <= box.clientWidth + 1; }).observe(box);
   }
   const workedBox = h('div', { class: 'exercise-worked', hidden: true });
   root.append(workedBox);
