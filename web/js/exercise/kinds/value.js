@@ -15,7 +15,7 @@ export function readNumbers(raw) {
   const out = [];
   for (const p of parts) {
     const m = /^([+-]?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?)(?:\/([+-]?(?:\d+\.?\d*|\.\d+)))?$/i.exec(p);
-    if (!m) return { problem: `"${p.slice(0, 20)}" is not a number (write 0.375, 3/8 or a point as 1.5, 2).` };
+    if (!m) return { problem: `"${p.slice(0, 20)}" is not a number (write a decimal such as d.ddd, a fraction p/q, or a point as x, y).` };
     const x = Number(m[1]) / (m[2] === undefined ? 1 : Number(m[2]));
     if (!Number.isFinite(x)) return { problem: `"${p.slice(0, 20)}" is not a finite number.` };
     out.push(x);
@@ -79,7 +79,8 @@ export function createValueKind({ api, check, subject }) {
   const input = /** @type {HTMLInputElement} */ (h('input', { type: 'text', class: 'exercise-value', id: 'exercise-value', inputmode: 'text', autocomplete: 'off', spellcheck: 'false' }));
   const root = h('div', { class: 'exercise-value-box' },
     h('label', { for: 'exercise-value' }, 'Your answer'), input,
-    h('p', { class: 'hint' }, `A number, a fraction such as 3/8, or a point such as 1.5, 2. Within ${check.tolerance} of the exact value counts as right.`));
+    // The format in letters: an example number could be this exercise's answer (3/8 was B₁,₃(½)'s).
+    h('p', { class: 'hint' }, `A decimal (d.ddd), a fraction (p/q), or a point (x, y). Within ${check.tolerance} of the exact value counts as right.`));
   return {
     root,
     answer: () => input.value,
