@@ -3,6 +3,7 @@
 // the lecture's own rule (tests/helpers/lecture-slide.mjs), not from the app.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import fs from 'node:fs';
 import { useSiteAndBrowser } from '../../helpers/browser.mjs';
 import { slideWalk } from '../../helpers/lecture-slide.mjs';
 import { exerciseAt } from '../../helpers/exercise-levels.mjs';
@@ -78,4 +79,21 @@ test('along F1 by pointer (level worked, hints after one wrong check): click the
   await page.waitForSelector('body[data-ready="true"]');
   assert.equal(await status(page), 'started');
   assert.match(await page.locator('.exercise-walk-path').innerText(), new RegExp(`${walk[0]} → \\?`));
+});
+
+test('progress kept before the walk recorded its picks ({known}, the fixture) opens where it was, and is saved as picks', async () => {
+  const fixture = JSON.parse(fs.readFileSync(new URL('../../fixtures/exercise-progress/walk-known-v1.json', import.meta.url), 'utf8'));
+  const page = await env.openLesson(`${env.site.url}mesh.html`);
+  await page.evaluate(({ key, entry }) => localStorage.setItem(key, JSON.stringify(entry)), fixture);
+  await page.goto(`${env.site.url}mesh.html#exercise=mesh-walk-around-v2`);
+  await page.waitForSelector('body[data-ready="true"]');
+  const walk = slideWalk('vertex', 'v2');
+  // known = 3: e6, e5, e3 shown; the next step is the fourth edge.
+  assert.match(await page.locator('.exercise-walk-path').innerText(), new RegExp(`${walk.slice(0, 3).join(' → ')} → \\?`));
+  assert.match(await page.locator('#exercise-status').innerText(), /4 checks/);
+  await page.locator(`label[for="exercise-edge-${walk[3].slice(1)}"]`).click();
+  await page.locator('#exercise-check').click();
+  assert.match(await feedback(page), new RegExp(`Right: .*${walk[3]}`));
+  const saved = await page.evaluate((key) => JSON.parse(localStorage.getItem(key)), fixture.key);
+  assert.deepEqual(saved.answer, { picks: [...walk.slice(1, 4)].map((e) => Number(e.slice(1))) });
 });
