@@ -223,6 +223,7 @@ export function createTableKind({ api, check, subject }) {
   const model = tableModel(api, check, subject());
   const { grids, names } = model;
   const inputs = new Map(); // key -> input
+  const cellByKey = new Map(model.cells.map((x) => [x.key, x]));
   const root = h('div', { class: 'exercise-tables' });
   for (const grid of grids) {
     const head = h('tr', {}, h('th', { scope: 'col' }, grid.rowRef), grid.columns.map((c) => h('th', { scope: 'col' }, c.head)));
@@ -230,7 +231,7 @@ export function createTableKind({ api, check, subject }) {
     for (let r = 0; r < grid.rows; r += 1) {
       const rowName = grid.rowName(r);
       body.push(h('tr', {}, h('th', { scope: 'row' }, rowName), grid.columns.map((c) => {
-        const x = model.cells.find((y) => y.key === `${grid.table}:${r}:${c.field}`);
+        const x = cellByKey.get(`${grid.table}:${r}:${c.field}`);
         const value = x.given;
         const input = /** @type {HTMLInputElement} */ (h('input', {
           type: 'text', class: c.list ? 'cell list' : 'cell', spellcheck: 'false', autocomplete: 'off', autocapitalize: 'off',
