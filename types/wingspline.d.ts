@@ -630,8 +630,12 @@ export interface WingedEdgeFinding {
   given: number;
   expected: number;
   code: WingedEdgeFindingCode;
-  /** Names the row and column and says why, from the definition (lecture 000). */
+  /** Names the row and column and says why, from the definition (lecture 000), with the values (the worked answer's words). */
   reason: string;
+  /** Value-free (feedback levels check and hint): where, as the question's grid counts (row e3, column S:L), and the rule to re-read; never the right value. */
+  message: string;
+  /** A value-free nudge, shown at feedback level hint after the author's number of tries. */
+  hint: string;
 }
 export interface WingedEdgeCheck {
   correct: boolean;
@@ -681,6 +685,10 @@ export interface MeshTableFinding {
   expected: number;
   code: MeshTableFindingCode;
   reason: string;
+  /** Value-free (feedback levels check and hint): where, as the question's grid counts (row e3, column S:L), and the rule to re-read; never the right value. */
+  message: string;
+  /** A value-free nudge, shown at feedback level hint after the author's number of tries. */
+  hint: string;
 }
 export interface MeshTableCheck<T extends MeshExerciseTable> {
   correct: boolean;
@@ -704,6 +712,10 @@ export interface WalkStepCheck {
   done: boolean;
   /** The rule applied to this step, e.g. "e5: v2 is the Start of e6, so the CCW walk around v2 reads its S:L column, e5". */
   reason: string;
+  /** Value-free, '' for a right step: the step, the edge it starts from and the rule; never the expected edge. */
+  message: string;
+  /** Value-free nudge: which column of the current edge the rule reads. */
+  hint: string;
 }
 
 /** The object loadWingspline() resolves to. */
@@ -879,8 +891,8 @@ export interface JointAnswer {
   why?: readonly string[];
 }
 export type JointAnswerFinding =
-  | { field: 'parametric' | 'geometric'; given: number; expected: number; reason: string }
-  | { field: JointReasonId; given: boolean; expected: boolean; reason: string };
+  | { field: 'parametric' | 'geometric'; given: number; expected: number; reason: string; message: string; hint: string }
+  | { field: JointReasonId; given: boolean; expected: boolean; reason: string; message: string; hint: string };
 export interface JointAnswerCheck {
   correct: boolean;
   findings: JointAnswerFinding[];
@@ -903,8 +915,14 @@ export interface ValueAnswerCheck extends WorkedValue {
   correct: boolean;
   /** Euclidean distance of the answer from the expected value. */
   distance: number;
-  /** Why the answer is wrong; '' when it is right. */
+  /** Why the answer is wrong, with the value; '' when it is right. */
   reason: string;
+  /** '' when right; 'not-within' the tolerance; 'wrong-count': not as many numbers as the value has (distance Infinity). */
+  code: '' | 'not-within' | 'wrong-count';
+  /** Value-free: what was asked in the question's terms (first row, first column; u) and the formula; a plain sentence for a wrong count. */
+  message: string;
+  /** Value-free nudge. */
+  hint: string;
 }
 export interface JointClassProperty {
   kind: 'joint-class';

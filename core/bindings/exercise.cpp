@@ -25,7 +25,7 @@ ExerciseInput exercise_input(const val& face_offsets, const val& face_vertices, 
     return {to_ints(face_offsets), to_ints(face_vertices), vertex_count, {to_ints(edges), to_ints(vertex_edges), to_ints(face_edges)}};
 }
 
-// Findings as plain objects {table, row, field, index, given, expected, code, reason}.
+// Findings as plain objects {table, row, field, index, given, expected, code, reason, message, hint}.
 val findings_value(const std::vector<AnswerFinding>& list) {
     val findings = val::array();
     for (std::size_t i = 0; i < list.size(); ++i) {
@@ -39,6 +39,8 @@ val findings_value(const std::vector<AnswerFinding>& list) {
         o.set("expected", f.expected);
         o.set("code", f.code);
         o.set("reason", f.reason);
+        o.set("message", f.message);
+        o.set("hint", f.hint);
         findings.set(i, o);
     }
     return findings;
@@ -123,6 +125,8 @@ val check_walk(const val& face_offsets, const val& face_vertices, int32_t vertex
         r.set("expected", c.expected);
         r.set("done", c.done);
         r.set("reason", c.reason);
+        r.set("message", c.message);
+        r.set("hint", c.hint);
         return r;
     });
 }

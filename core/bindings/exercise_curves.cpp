@@ -82,6 +82,8 @@ val check_joint(const val& a, const val& b, double tolerance, bool has_p, int p,
                 o.set("expected", f.expected);
             }
             o.set("reason", f.reason);
+            o.set("message", f.message);
+            o.set("hint", f.hint);
             findings.set(i, o);
         }
         val worked = val::object();
@@ -151,6 +153,9 @@ val check_value(const val& subject, const val& ask, const val& given, double tol
         r.set("correct", c.correct);
         r.set("distance", c.distance);
         r.set("reason", c.reason);
+        r.set("code", c.code);
+        r.set("message", c.message);
+        r.set("hint", c.hint);
         return r;
     });
 }

@@ -29,6 +29,29 @@ const ReasonForms kForms[] = {
     {"P''(1) = Q''(0)", "P''(1) ≠ Q''(0)"},
     {"the curvature vectors κN are equal", "the curvature vectors κN differ"},
 };
+// What a student reads at feedback levels "check" and "hint" (no class, no truth, no evidence).
+struct ValueFreeWords {
+    const char* message;
+    const char* hint;
+};
+const ValueFreeWords kParametricWords = {
+    "The parametric class (Cᵏ) is not right. Re-read the definition (lecture 000): a joint is Cᵏ when the segments agree at it in "
+    "position and in every derivative up to order k: P(1) = Q(0), then P'(1) = Q'(0), then P''(1) = Q''(0).",
+    "Go up one order at a time and stop at the first equation that fails: the class is the order before it (no order holds: "
+    "the segments do not meet)."};
+const ValueFreeWords kGeometricWords = {
+    "The geometric class (Gᵏ) is not right. Re-read the definition (lectures 002, 004): Gᵏ asks what Cᵏ asks, up to a change "
+    "of parameter: the segments meet, then the tangents point the same way (their lengths may differ), then the curvature "
+    "vectors κN agree (one osculating circle).",
+    "A joint is at least as smooth geometrically as parametrically; compare the tangents' directions, not their lengths."};
+// Per statement (joint_reasons() order): how to work it out.
+const char* const kStatementHints[] = {
+    "Evaluate the first segment at u = 1 and the second at u = 0: for Bézier segments, the last and the first control points.",
+    "Compare the two tangent vectors themselves, length included: for cubic Bézier segments 3 (P₃ − P₂) and 3 (Q₁ − Q₀).",
+    "Compare the directions only: is one tangent a positive multiple of the other?",
+    "Compare the second derivatives: for cubic Bézier segments 6 (P₃ − 2 P₂ + P₁) and 6 (Q₂ − 2 Q₁ + Q₀).",
+    "Compare how sharply and which way each segment bends at the joint: κ = |P' × P''| / |P'|³ and the side it turns to.",
+};
 // The evidence line (worked_joint's explanation) that speaks about each statement.
 constexpr int kEvidenceLine[] = {0, 1, 1, 2, 3};
 
@@ -189,17 +212,22 @@ JointCheck check_joint_answer(const Curve& a, const Curve& b, const JointAnswer&
     const std::vector<bool> truths = joint_reason_truths(j.evidence);
     if (answer.parametric && *answer.parametric != j.parametric)
         c.findings.push_back({"parametric", false, *answer.parametric, j.parametric,
-                              class_reason('C', *answer.parametric, j.parametric, c.worked)});
+                              class_reason('C', *answer.parametric, j.parametric, c.worked), kParametricWords.message,
+                              kParametricWords.hint});
     if (answer.geometric && *answer.geometric != j.geometric)
         c.findings.push_back({"geometric", false, *answer.geometric, j.geometric,
-                              class_reason('G', *answer.geometric, j.geometric, c.worked)});
+                              class_reason('G', *answer.geometric, j.geometric, c.worked), kGeometricWords.message,
+                              kGeometricWords.hint});
     if (answer.why) {
         for (std::size_t r = 0; r < truths.size(); ++r) {
             if (ticked[r] == truths[r]) continue;
             const std::string& statement = joint_reasons()[r].statement;
             c.findings.push_back({joint_reasons()[r].id, true, ticked[r] ? 1 : 0, truths[r] ? 1 : 0,
                                   "\"" + statement + "\" is " + (truths[r] ? "true" : "false") + " here: " +
-                                      c.worked.explanation[kEvidenceLine[r]]});
+                                      c.worked.explanation[kEvidenceLine[r]],
+                                  "The statement \"" + statement + "\" is not judged right. Re-read it and work out both sides at "
+                                  "the joint from the drawing's points (P is the first segment at its end, Q the second at its start).",
+                                  kStatementHints[r]});
         }
     }
     c.correct = c.findings.empty();

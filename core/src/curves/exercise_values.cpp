@@ -11,6 +11,7 @@
 #include "wingspline/error.h"
 
 #include <cmath>
+#include <limits>
 
 namespace wingspline::curves {
 
@@ -284,6 +285,76 @@ WorkedValue patch_point(const ValueSubject& subject, const ValueAsk& ask) {
     return w;
 }
 
+// What was asked, in the question's words (indices of rows, columns and segments from
+// "first", the parameter u), the formula to re-read and a nudge: no value, no distance.
+struct AskedWords {
+    std::string what, rule, hint;
+};
+
+std::string first_words(int index0) {
+    static const char* const kWords[] = {"first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth", "tenth"};
+    return index0 >= 0 && index0 < 10 ? kWords[index0] : "number " + std::to_string(index0 + 1);
+}
+
+AskedWords asked_words(const ValueSubject& subject, const ValueAsk& ask) {
+    const std::string& q = ask.quantity;
+    const std::string u = ask.u ? fmt(*ask.u) : "u";
+    if (q == "patch-point")
+        return {"p(u, v) at u = " + u + ", v = " + (ask.v ? fmt(*ask.v) : "v"),
+                "p(u, v) = [u³ u² u 1] M P Mᵀ [v³ v² v 1]ᵀ (lecture 002): the row [u³ u² u 1] M weighs the rows of P, the column Mᵀ [v³ v² v 1]ᵀ its columns",
+                "First work out the four numbers [u³ u² u 1] M, then the four Mᵀ [v³ v² v 1]ᵀ; each point Pᵢⱼ weighs their product."};
+    const Curve& c = subject.curve;
+    if (q == "mg") {
+        const int row = ask.row.value_or(0), col = ask.col.value_or(0), segment = ask.segment.value_or(0);
+        const std::string axis = col == 0 ? " (x)" : col == 1 ? " (y)" : col == 2 ? " (z)" : "";
+        return {"the " + first_words(row) + " row, " + first_words(col) + " column" + axis + " of M G for the " + first_words(segment) + " segment",
+                "P(u) = [u³ u² u 1] M G (lectures 000, 003); the entry in row r, column c of M G is row r of M times column c of G, "
+                "term by term, and G's rows are the segment's points (and tangents) in order, column c holding their coordinate c",
+                "Write out that row of M and that column of G side by side, multiply each pair and add; the first row multiplies u³."};
+    }
+    if (q == "boehm")
+        return {"Q" + sub(ask.index.value_or(0)) + " after inserting the knot u = " + u,
+                "find the knot span [uₖ, uₖ₊₁) that holds u; then Qᵢ = Pᵢ for i ≤ k − p, Qᵢ = Pᵢ₋₁ for i ≥ k + 1, and between them "
+                "Qᵢ = (1 − aᵢ) Pᵢ₋₁ + aᵢ Pᵢ with aᵢ = (u − uᵢ) / (uᵢ₊ₚ − uᵢ) (Boehm)",
+                "Find k first (the span of u in the knot vector), then decide whether this Q is kept, shifted or blended."};
+    if (q == "point")
+        return {"P(u) at u = " + u,
+                std::string("P(u) = Σᵢ bᵢ(u) · (control item i): each blending function at u times its control point") +
+                    (c.kind == CurveKind::Hermite ? " or tangent" : ""),
+                "Work out every blending function at u first (for a Bézier or B-spline curve they add up to 1), then weigh the points and add."};
+    // blend
+    const int i = ask.i.value_or(0);
+    const int p = curve_degree(c);
+    if (is_rational(c))
+        return {"R" + sub(i) + "," + sub(p) + "(u) at u = " + u, "Rᵢ,ₚ(u) = wᵢ Bᵢ,ₚ(u) / Σⱼ wⱼ Bⱼ,ₚ(u): the weighted basis function over the sum of them all (lecture 001, NURBS)",
+                "Work out every basis function at u, weigh each by its wᵢ, then divide this one by their sum."};
+    if (c.kind == CurveKind::Bezier)
+        return {"B" + sub(i) + "," + sub(p) + "(u) at u = " + u, "Bᵢ,ₙ(u) = C(n, i) uⁱ (1 − u)ⁿ⁻ⁱ, the Bernstein polynomial (lecture 001)",
+                "Check the binomial coefficient C(n, i) and each power of u and of 1 − u separately."};
+    if (c.kind == CurveKind::BSpline)
+        return {"N" + sub(i) + "," + sub(p) + "(u) at u = " + u,
+                "Nᵢ,ₚ(u) by the Cox–de Boor recursion over the knots: Nᵢ,₀ is 1 on [uᵢ, uᵢ₊₁), and each degree blends two of the degree below",
+                "Build the triangle of Nᵢ,ⱼ from degree 0 up, only over the knot spans around u."};
+    return {"the weight of " + item_name(c, i) + " in P(u) at u = " + u,
+            "the weight of a control item is its entry of the row [u³ u² u 1] M (the basis matrix form, lecture 003), with u the segment's own parameter",
+            "Find the segment u lies in and its local parameter, then multiply the row of powers by the column of M that belongs to this item."};
+}
+
+std::string count_words(std::size_t n) {
+    static const char* const kWords[] = {"no numbers", "one number", "two numbers", "three numbers", "four numbers", "five numbers"};
+    return n < 6 ? kWords[n] : std::to_string(n) + " numbers";
+}
+
+// A wrong count of numbers, said plainly: "The answer is a single number; you typed two numbers."
+std::string count_sentence(const ValueSubject& subject, const ValueAsk& ask, std::size_t wanted, std::size_t typed) {
+    const std::string you = "you typed " + count_words(typed) + ".";
+    if (wanted == 1) return "The answer is a single number; " + you;
+    const std::string name = ask.quantity == "patch-point" ? "p(u, v)" : ask.quantity == "boehm" ? "Q" + sub(ask.index.value_or(0)) : "P(u)";
+    (void)subject;
+    const std::string coords = wanted == 2 ? "its x and y" : wanted == 3 ? "its x, y and z" : "its " + std::to_string(wanted) + " coordinates";
+    return name + " is a point: type " + coords + " (" + you.substr(0, you.size() - 1) + ").";
+}
+
 } // namespace
 
 WorkedValue worked_value(const ValueSubject& subject, const ValueAsk& ask) {
@@ -309,8 +380,14 @@ ValueCheck check_value_answer(const ValueSubject& subject, const ValueAsk& ask, 
     ValueCheck c;
     c.worked = worked_value(subject, ask);
     const std::vector<double>& e = c.worked.expected;
-    require(given.size() == e.size(), "invalid-argument",
-            "given has " + std::to_string(given.size()) + " number(s), but " + c.worked.label + " has " + std::to_string(e.size()));
+    if (given.size() != e.size()) {
+        c.code = "wrong-count";
+        c.message = count_sentence(subject, ask, e.size(), given.size());
+        c.hint = asked_words(subject, ask).hint;
+        c.reason = c.message;
+        c.distance = std::numeric_limits<double>::infinity();
+        return c;
+    }
     double s = 0;
     for (std::size_t k = 0; k < e.size(); ++k) {
         require(std::isfinite(given[k]), "non-finite-input", "given[" + std::to_string(k) + "] is not a finite number");
@@ -322,6 +399,10 @@ ValueCheck check_value_answer(const ValueSubject& subject, const ValueAsk& ask, 
         const std::string g = e.size() == 1 ? fmt(given[0]) : vec(given.data(), static_cast<int>(given.size()));
         const std::string x = e.size() == 1 ? fmt(e[0]) : vec(e.data(), static_cast<int>(e.size()));
         c.reason = g + " is " + fmt(c.distance) + " from " + c.worked.label + " = " + x + "; the tolerance is " + fmt(tolerance);
+        const AskedWords a = asked_words(subject, ask);
+        c.code = "not-within";
+        c.message = "Your answer is not within the tolerance of " + a.what + ". Re-read: " + a.rule + ".";
+        c.hint = a.hint;
     }
     return c;
 }

@@ -4,6 +4,8 @@
 // each cell is then compared with the definition's value in the student's orientation.
 #include "wingspline/mesh/exercise_check.h"
 
+#include "wingspline/mesh/exercise_feedback.h"
+
 #include "wingspline/mesh/limits.h"
 
 #include <algorithm>
@@ -491,6 +493,7 @@ AnswerCheck check_winged_edge_answer(const std::vector<int32_t>& face_offsets, c
     };
     for (int32_t v = 0; v < mesh.vertex_count(); ++v) add(MeshTable::Vertex, v, answer.vertex_edges[v], check_vertex_cell(c, v, answer.vertex_edges[v]));
     for (int32_t f = 0; f < mesh.face_count(); ++f) add(MeshTable::Face, f, answer.face_edges[f], check_face_cell(c, f, answer.face_edges[f]));
+    word_table_findings("winged-edge", out.findings);
     out.row_edge = std::move(c.row_edge);
     out.row_reversed = std::move(c.row_reversed);
     return out;

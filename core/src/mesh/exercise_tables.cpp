@@ -4,6 +4,8 @@
 // vertex's neighbours (the other ends of its edges).
 #include "wingspline/mesh/exercise_tables.h"
 
+#include "wingspline/mesh/exercise_feedback.h"
+
 #include <algorithm>
 #include <array>
 #include <functional>
@@ -492,23 +494,30 @@ ListTableResult run_adjacency(const std::vector<int32_t>& face_offsets, const st
     return out;
 }
 
+// A table's result with the value-free words of its findings (exercise_feedback.h).
+template <class Result>
+Result worded(const char* table, Result r) {
+    word_table_findings(table, r.check.findings);
+    return r;
+}
+
 } // namespace
 
 ListTableResult mark_faces_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                   int32_t vertex_count, const ListAnswer& answer) {
-    return run_faces(face_offsets, face_vertices, vertex_count, answer);
+    return worded("faces", run_faces(face_offsets, face_vertices, vertex_count, answer));
 }
 EdgeListTableResult mark_edge_list_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                           int32_t vertex_count, const EdgeListAnswer& answer) {
-    return run_edge_list(face_offsets, face_vertices, vertex_count, answer);
+    return worded("edge-list", run_edge_list(face_offsets, face_vertices, vertex_count, answer));
 }
 ListTableResult mark_adjacency_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                       int32_t vertex_count, const ListAnswer& answer) {
-    return run_adjacency(face_offsets, face_vertices, vertex_count, answer);
+    return worded("adjacency", run_adjacency(face_offsets, face_vertices, vertex_count, answer));
 }
 TableAnswerCheck check_faces_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                     int32_t vertex_count, const ListAnswer& answer) {
-    return run_faces(face_offsets, face_vertices, vertex_count, answer).check;
+    return worded("faces", run_faces(face_offsets, face_vertices, vertex_count, answer)).check;
 }
 ListAnswer worked_faces_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                int32_t vertex_count, const ListAnswer& answer) {
@@ -516,7 +525,7 @@ ListAnswer worked_faces_answer(const std::vector<int32_t>& face_offsets, const s
 }
 TableAnswerCheck check_edge_list_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                         int32_t vertex_count, const EdgeListAnswer& answer) {
-    return run_edge_list(face_offsets, face_vertices, vertex_count, answer).check;
+    return worded("edge-list", run_edge_list(face_offsets, face_vertices, vertex_count, answer)).check;
 }
 EdgeListAnswer worked_edge_list_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                        int32_t vertex_count, const EdgeListAnswer& answer) {
@@ -524,7 +533,7 @@ EdgeListAnswer worked_edge_list_answer(const std::vector<int32_t>& face_offsets,
 }
 TableAnswerCheck check_adjacency_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                         int32_t vertex_count, const ListAnswer& answer) {
-    return run_adjacency(face_offsets, face_vertices, vertex_count, answer).check;
+    return worded("adjacency", run_adjacency(face_offsets, face_vertices, vertex_count, answer)).check;
 }
 ListAnswer worked_adjacency_answer(const std::vector<int32_t>& face_offsets, const std::vector<int32_t>& face_vertices,
                                    int32_t vertex_count, const ListAnswer& answer) {

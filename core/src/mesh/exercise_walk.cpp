@@ -48,6 +48,16 @@ WalkStepCheck check_walk_step(const WingedEdgeMesh& mesh, bool around_face, int3
                                   : given >= 0                               ? "not " + edge_label(given) + " (the mesh has no such edge)"
                                                                              : "not " + std::to_string(given) + " (that names no edge)";
         out.reason = wrong + ": " + why + ", which is " + edge_label(out.expected) + closed;
+        const std::string rule = around_face ? "the walk along " + name + " reads E:L from an edge whose Left face is " + name +
+                                                   " and S:R from one whose Right face is " + name
+                                             : "the counter-clockwise walk around " + name + " reads S:L from an edge whose Start is " +
+                                                   name + " and E:R from one whose End is " + name;
+        out.message = "Step " + std::to_string(step) + ", from " + edge_label(from) +
+                      (given == -2 ? std::string(": no edge is picked") : ": that is not the edge the walk reads next") +
+                      ". Re-read the rule (lecture 000): " + rule + "; the walk ends when it comes back to the edge it started from.";
+        out.hint = name + " is the " + (around_face ? (first ? "Left" : "Right") + std::string(" face") : (first ? "Start" : "End")) +
+                   " of " + edge_label(from) + ": find the edge its " + (around_face ? (first ? "E:L" : "S:R") : (first ? "S:L" : "E:R")) +
+                   " wing names in the drawing (the other side, at that end, of the face on that side).";
     }
     return out;
 }

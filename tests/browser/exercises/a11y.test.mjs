@@ -7,6 +7,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import { createRequire } from 'node:module';
 import { useSiteAndBrowser, trap } from '../../helpers/browser.mjs';
+import { exerciseAt } from '../../helpers/exercise-levels.mjs';
 
 const axeSource = fs.readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
 const env = useSiteAndBrowser();
@@ -34,7 +35,8 @@ for (const scheme of ['light', 'dark']) {
     test(`axe (${scheme}): ${id}, answered wrong, then with the worked answer`, async () => {
       const context = await env.newContext({ viewport: { width: 1280, height: 800 }, colorScheme: scheme });
       const page = trap(await context.newPage());
-      await page.goto(`${env.site.url}${id.split('-')[0]}.html#exercise=${id}`);
+      // At level worked (a copy of the gallery's exercise), so the worked answer is there to audit.
+      await page.goto(`${env.site.url}${exerciseAt(id, { level: 'worked', hintAfter: 1 })}`);
       await page.waitForSelector('#exercise-panel');
       assert.deepEqual(await audit(page), [], 'as opened');
       // Every answer control has an accessible name.

@@ -50,3 +50,35 @@ test('a check the drawing cannot answer is said in the dialog, and nothing is ex
   await page.locator('#author-copy-link').click();
   assert.match(await page.locator('.author-problem').innerText(), /exercise\.question must not be empty/);
 });
+
+test('the author chooses the feedback: a new exercise is level check; level hint after 3 wrong checks is what the student is told', async () => {
+  const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
+  const page = await context.newPage();
+  await page.goto(`${env.site.url}curves.html`);
+  await page.waitForSelector('body[data-ready="true"]');
+  await page.locator('[data-action="make-exercise"]').click();
+  await page.locator('#author-kind').selectOption('value');
+  assert.equal(await page.locator('#author-feedback').inputValue(), 'check');
+  assert.equal(await page.locator('#author-hint-after').isVisible(), false);
+  await page.locator('#author-copy-link').click();
+  await page.waitForSelector('#author-link:not([hidden])');
+  const asCheck = await context.newPage();
+  await asCheck.goto(await page.locator('#author-link').inputValue());
+  await asCheck.waitForSelector('#exercise-panel');
+  assert.match(await asCheck.locator('#exercise-level').innerText(), /never shows the right value; no hints, no worked answer/);
+  assert.equal(await asCheck.locator('#exercise-show-worked').count(), 0);
+  await asCheck.close();
+  // By keyboard: the level chosen from its list, then the number of tries typed.
+  await page.locator('#author-feedback').focus();
+  await page.locator('#author-feedback').selectOption('hint');
+  await page.locator('#author-hint-after').fill('3');
+  await page.locator('#author-copy-link').click();
+  const asHint = await context.newPage();
+  await asHint.goto(await page.locator('#author-link').inputValue());
+  await asHint.waitForSelector('#exercise-panel');
+  assert.match(await asHint.locator('#exercise-level').innerText(), /after 3 wrong checks it adds a hint/);
+  // A number of tries out of 1..20 is said in the dialog, and nothing is exported.
+  await page.locator('#author-hint-after').fill('25');
+  await page.locator('#author-copy-link').click();
+  assert.match(await page.locator('.author-problem').innerText(), /exercise\.feedback\.hintAfter/);
+});

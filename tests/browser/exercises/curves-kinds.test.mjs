@@ -6,6 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { exerciseAt } from '../../helpers/exercise-levels.mjs';
 import { drag } from '../../helpers/pointer.mjs';
 
 const env = useSiteAndBrowser();
@@ -13,7 +14,7 @@ const feedback = (page) => page.locator('#exercise-feedback').innerText();
 const status = (page) => page.locator('#exercise-status').getAttribute('data-status');
 
 test('a joint that is G1 but not C1 (legs 1 : 2): a wrong class is explained, the right one with its reasons is accepted', async () => {
-  const page = await env.openLesson(`${env.site.url}continuity.html#exercise=continuity-classify-g1`);
+  const page = await env.openLesson(`${env.site.url}${exerciseAt('continuity-classify-g1', { level: 'worked' })}`);
   // The lab does not give the answer away: no verdict on the drawing, the joint panel hidden.
   assert.equal(await page.locator('#joints-panel').isVisible(), false);
   assert.equal(await page.evaluate(() => window.wingspline.labelRects().some((r) => /C\d|G\d/.test(r.text ?? ''))), false);
@@ -41,12 +42,13 @@ test('a joint that is G1 but not C1 (legs 1 : 2): a wrong class is explained, th
   assert.ok((await page.locator('#exercise-worked li').count()) >= 1);
 });
 
-test('B₁,₃(0.5) by hand: 0.4 is refused with the exact value named; 3/8 typed as a fraction is right', async () => {
-  const page = await env.openLesson(`${env.site.url}curves.html#exercise=curves-bernstein-half`);
+test('B₁,₃(0.5) by hand: 0.4 is refused without the exact value (it is in the worked answer); 3/8 typed as a fraction is right', async () => {
+  const page = await env.openLesson(`${env.site.url}${exerciseAt('curves-bernstein-half', { level: 'worked' })}`);
   await page.locator('#exercise-value').click();
   await page.keyboard.type('0.4');
   await page.locator('#exercise-check').click();
-  assert.match(await feedback(page), /0\.375/);
+  assert.match(await feedback(page), /not within the tolerance of B₁,₃\(u\) at u = 0\.5\. Re-read: Bᵢ,ₙ\(u\) = C\(n, i\)/);
+  assert.doesNotMatch(await feedback(page), /0\.375|3\/8/);
   assert.equal(await status(page), 'started');
   await page.locator('#exercise-value').fill('');
   await page.locator('#exercise-value').focus();

@@ -5,6 +5,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import { useSiteAndBrowser } from '../../helpers/browser.mjs';
 import { linkCode } from '../../helpers/classroom.mjs';
+import { exerciseAt } from '../../helpers/exercise-levels.mjs';
 
 const env = useSiteAndBrowser();
 const shipped = (id) => JSON.parse(fs.readFileSync(new URL(`../../../web/exercises/${id}.json`, import.meta.url), 'utf8'));
@@ -108,7 +109,7 @@ test('an exercise link pasted into an open lesson opens the exercise', async () 
 });
 
 test('solved after asking for the worked answer says so', async () => {
-  const page = await env.openLesson(`${env.site.url}curves.html#exercise=curves-bernstein-half`);
+  const page = await env.openLesson(`${env.site.url}${exerciseAt('curves-bernstein-half', { level: 'worked' })}`);
   await page.locator('#exercise-show-worked').click();
   await page.locator('#exercise-value').fill('0.375');
   await page.locator('#exercise-check').click();

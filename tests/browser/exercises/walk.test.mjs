@@ -3,8 +3,10 @@
 // the lecture's own rule (tests/helpers/lecture-slide.mjs), not from the app.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import fs from 'node:fs';
 import { useSiteAndBrowser } from '../../helpers/browser.mjs';
 import { slideWalk } from '../../helpers/lecture-slide.mjs';
+import { exerciseAt } from '../../helpers/exercise-levels.mjs';
 
 const env = useSiteAndBrowser();
 const feedback = (page) => page.locator('#exercise-feedback').innerText();
@@ -28,7 +30,9 @@ test('around v2 by keyboard: a wrong edge is explained, the right ones close the
   assert.equal(await page.locator('#exercise-edge-7').isChecked(), true);
   await page.keyboard.press('Enter');
   const wrong = await feedback(page);
-  assert.match(wrong, /Not e7: v2 is the Start of e6, so the CCW walk around v2 reads its S:L column, which is e5/);
+  // Level check (the gallery's): the step and the rule, never the next edge.
+  assert.match(wrong, /Step 1, from e6: that is not the edge the walk reads next\. Re-read the rule \(lecture 000\): the counter-clockwise walk around v2 reads S:L from an edge whose Start is v2 and E:R/);
+  assert.doesNotMatch(wrong, /\be5\b/);
   assert.equal(await status(page), 'started');
   // Then every right edge in turn, typed from the keyboard: Home, arrows to it, Enter.
   for (let k = 1; k < walk.length; k += 1) {
@@ -54,12 +58,14 @@ test('around v2 by keyboard: a wrong edge is explained, the right ones close the
   assert.match(await page.locator('.exercise-walk-path').innerText(), /back to e6/);
 });
 
-test('along F1 by pointer: click the edges, then the worked answer lists the walk with its rule', async () => {
-  const page = await env.openLesson(`${env.site.url}mesh.html#exercise=mesh-walk-along-f1`);
+test('along F1 by pointer (level worked, hints after one wrong check): click the edges, then the worked answer lists the walk with its rule', async () => {
+  const page = await env.openLesson(`${env.site.url}${exerciseAt('mesh-walk-along-f1', { level: 'worked', hintAfter: 1 })}`);
   const walk = slideWalk('face', 'F1');
   await page.locator(`label[for="exercise-edge-${walk[2].slice(1)}"]`).click(); // skips a step: wrong
   await page.locator('#exercise-check').click();
-  assert.match(await feedback(page), new RegExp(`Not ${walk[2]}: F1 is the Right face of ${walk[0]}, so the walk along F1 reads its S:R column, which is ${walk[1]}`));
+  assert.match(await feedback(page), new RegExp(`Step 1, from ${walk[0]}: that is not the edge the walk reads next\\. .*the walk along F1 reads E:L from an edge whose Left face is F1 and S:R from one whose Right face is F1`));
+  assert.match(await feedback(page), new RegExp(`Hint: F1 is the Right face of ${walk[0]}: find the edge its S:R wing names`));
+  assert.doesNotMatch(await feedback(page), new RegExp(`\\b${walk[1]}\\b`));
   for (const e of [...walk.slice(1), walk[0]]) {
     await page.locator(`label[for="exercise-edge-${e.slice(1)}"]`).click();
     await page.locator('#exercise-check').click();
@@ -73,4 +79,21 @@ test('along F1 by pointer: click the edges, then the worked answer lists the wal
   await page.waitForSelector('body[data-ready="true"]');
   assert.equal(await status(page), 'started');
   assert.match(await page.locator('.exercise-walk-path').innerText(), new RegExp(`${walk[0]} → \\?`));
+});
+
+test('progress kept before the walk recorded its picks ({known}, the fixture) opens where it was, and is saved as picks', async () => {
+  const fixture = JSON.parse(fs.readFileSync(new URL('../../fixtures/exercise-progress/walk-known-v1.json', import.meta.url), 'utf8'));
+  const page = await env.openLesson(`${env.site.url}mesh.html`);
+  await page.evaluate(({ key, entry }) => localStorage.setItem(key, JSON.stringify(entry)), fixture);
+  await page.goto(`${env.site.url}mesh.html#exercise=mesh-walk-around-v2`);
+  await page.waitForSelector('body[data-ready="true"]');
+  const walk = slideWalk('vertex', 'v2');
+  // known = 3: e6, e5, e3 shown; the next step is the fourth edge.
+  assert.match(await page.locator('.exercise-walk-path').innerText(), new RegExp(`${walk.slice(0, 3).join(' → ')} → \\?`));
+  assert.match(await page.locator('#exercise-status').innerText(), /4 checks/);
+  await page.locator(`label[for="exercise-edge-${walk[3].slice(1)}"]`).click();
+  await page.locator('#exercise-check').click();
+  assert.match(await feedback(page), new RegExp(`Right: .*${walk[3]}`));
+  const saved = await page.evaluate((key) => JSON.parse(localStorage.getItem(key)), fixture.key);
+  assert.deepEqual(saved.answer, { picks: [...walk.slice(1, 4)].map((e) => Number(e.slice(1))) });
 });

@@ -275,7 +275,13 @@ TEST_CASE("values: bad asks and answers get stable codes naming the field", "[ex
     a.u = 1.5;
     expect_error([&] { worked_value(s, a); }, "parameter-out-of-range", "1.5");
     a.u = 0.5;
-    expect_error([&] { check_value_answer(s, a, {0.1, 0.2}, 0.01); }, "invalid-argument", "given has 2 number(s), but B₁,₃(0.5) has 1");
+    {
+        // A wrong count of numbers is a wrong answer said plainly (the student's mistake), not an error.
+        const ValueCheck count = check_value_answer(s, a, {0.1, 0.2}, 0.01);
+        CHECK_FALSE(count.correct);
+        CHECK(count.code == "wrong-count");
+        CHECK(count.message == "The answer is a single number; you typed two numbers.");
+    }
     expect_error([&] { check_value_answer(s, a, {0.1}, -1); }, "invalid-argument", "tolerance");
     expect_error([&] { check_value_answer(s, a, {NAN}, 0.01); }, "non-finite-input", "given[0]");
     ValueAsk pp = ask("patch-point");

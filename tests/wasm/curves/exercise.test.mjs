@@ -102,7 +102,10 @@ test('checkValueAnswer: unknown quantity, missing and bad fields, wrong sizes', 
   throwsCode(() => api.checkValueAnswer(subject, { quantity: 'blend', i: 9, u: 0.5 }, [1], 0.1), 'invalid-argument', 'ask.i is 9');
   throwsCode(() => api.checkValueAnswer(subject, { quantity: 'point', u: Infinity }, [1, 1], 0.1), 'non-finite-input', 'ask.u');
   throwsCode(() => api.checkValueAnswer(subject, { quantity: 'point', u: 2 }, [1, 1], 0.1), 'parameter-out-of-range');
-  throwsCode(() => api.checkValueAnswer(subject, { quantity: 'point', u: 0.5 }, [1], 0.1), 'invalid-argument', 'given has 1');
+  // A wrong count of numbers is the student's mistake: a wrong answer said plainly, not an error.
+  const count = api.checkValueAnswer(subject, { quantity: 'point', u: 0.5 }, [1], 0.1);
+  assert.deepEqual([count.correct, count.code, count.distance, count.message], [false, 'wrong-count', Infinity, 'P(u) is a point: type its x and y (you typed one number).']);
+  assert.equal(api.checkValueAnswer(subject, { quantity: 'blend', i: 1, u: 0.5 }, [0.1, 0.2], 0.1).message, 'The answer is a single number; you typed two numbers.');
   throwsCode(() => api.checkValueAnswer(subject, { quantity: 'point', u: 0.5 }, [1, NaN], 0.1), 'non-finite-input', 'given[1]');
   throwsCode(() => api.checkValueAnswer(subject, { quantity: 'point', u: 0.5 }, [1, 1], -0.1), 'invalid-argument', 'tolerance');
   throwsCode(() => api.workedValue(subject, { quantity: 'patch-point', u: 0.5, v: 0.5 }), 'invalid-argument', 'subject must be {patch');

@@ -99,9 +99,11 @@ const WINGED_EDGE_CELLS = Object.freeze({
   faceEdges: (i) => `faceEdges: ${faceRow(i)}`,
 });
 
+// message and hint: the value-free words (where, the rule; a nudge), for feedback levels
+// check and hint; reason: with the values, for the worked answer and the lecturer.
 function plainFindings(list) {
-  return Array.from(list, ({ table, row, field, index, given, expected, code, reason }) => ({
-    table, row, field, index, given, expected, code, reason,
+  return Array.from(list, ({ table, row, field, index, given, expected, code, reason, message, hint }) => ({
+    table, row, field, index, given, expected, code, reason, message, hint,
   }));
 }
 
@@ -124,14 +126,14 @@ export function createExerciseApi(raw) {
   return {
     answerCells: ANSWER_CELLS,
     // {correct, findings: [{table: 'vertex'|'edge'|'face', row, field, given, expected, code,
-    // reason}], rowEdges (the mesh edge each row was matched to, -1 none), rowReversed}.
+    // reason, message, hint}], rowEdges (the mesh edge each row was matched to, -1 none), rowReversed}.
     // Any consistent numbering and either orientation of each edge is right. Errors:
     // 'invalid-answer' (row length, table length, a cell below -2), 'invalid-faces', or the
     // mesh's validation code for faces a winged edge cannot hold.
     checkWingedEdgeAnswer(mesh, answer) {
       const r = unwrap(raw.exerciseCheckWingedEdge(...answerArguments(mesh, answer)));
-      const findings = Array.from(r.findings, ({ table, row, field, given, expected, code, reason }) => ({
-        table, row, field, given, expected, code, reason,
+      const findings = Array.from(r.findings, ({ table, row, field, given, expected, code, reason, message, hint }) => ({
+        table, row, field, given, expected, code, reason, message, hint,
       }));
       return {
         correct: findings.length === 0,
@@ -148,7 +150,7 @@ export function createExerciseApi(raw) {
     },
     // One entry point for every table of kind 1: table 'winged-edge' | 'faces' | 'edge-list' |
     // 'adjacency'. Returns {correct, findings: [{table, row, field, index, given, expected,
-    // code, reason}], worked} with worked the right answer in the answer's own shape (the
+    // code, reason, message, hint}], worked} with worked the right answer in the answer's own shape (the
     // student's numbering where rows match). Errors: 'unknown-table', 'invalid-answer'
     // (naming the row and field), 'invalid-faces' or the mesh's validation code.
     checkMeshTableAnswer(mesh, table, answer) {
@@ -191,7 +193,8 @@ export function createExerciseApi(raw) {
     // (from 1) asks for the walk's edge k, edges 0..k-1 shown; the walk is the core's
     // (mesh.traversalSteps / faceEdgeSteps on the mesh built from these faces, with the
     // mesh's edges / vertexEdges / faceEdges numbering when given, as lectureExample()
-    // returns them). Returns {correct, expected, done, reason}. Errors: 'invalid-argument',
+    // returns them). Returns {correct, expected, done, reason, message, hint} (message and
+    // hint: value-free, '' for a right step). Errors: 'invalid-argument',
     // 'index-out-of-range' (no such vertex or face), 'no-walk' (a vertex on no face),
     // 'invalid-step'.
     checkWalkStep(mesh, question) {
@@ -204,7 +207,7 @@ export function createExerciseApi(raw) {
       integerIn(step, 'step', -INT32_MAX, INT32_MAX);
       integerIn(given, 'given', -INT32_MAX, INT32_MAX);
       const r = unwrap(raw.exerciseCheckWalkStep(...exerciseMesh(mesh), ...walkNumbering(mesh), around === 'face', element, step, given));
-      return { correct: r.correct, expected: r.expected, done: r.done, reason: r.reason };
+      return { correct: r.correct, expected: r.expected, done: r.done, reason: r.reason, message: r.message, hint: r.hint };
     },
   };
 }

@@ -93,7 +93,7 @@ export function createExerciseCurvesApi(raw) {
       return { parametric: list(r.parametric), geometric: list(r.geometric) };
     },
     // {correct, findings: [{field: 'parametric'|'geometric'|<reason id>, given, expected,
-    // reason}], worked: {parametric, geometric, why, explanation}}. A field left out of the
+    // reason, message, hint}], worked: {parametric, geometric, why, explanation}}. A field left out of the
     // answer is not checked. Classes are numbers k; reason findings give booleans (ticked / true).
     checkJointAnswer(a, b, answer = {}, { tolerance = DEFAULT_JOINT_TOLERANCE } = {}) {
       object(answer, 'answer', "{ parametric: 1, geometric: 1, why: ['meet', 'equal-first'] }");
@@ -108,7 +108,7 @@ export function createExerciseCurvesApi(raw) {
       const w = r.worked;
       return {
         correct: r.correct,
-        findings: Array.from(r.findings, ({ field, given, expected, reason }) => ({ field, given, expected, reason })),
+        findings: Array.from(r.findings, ({ field, given, expected, reason, message, hint }) => ({ field, given, expected, reason, message, hint })),
         worked: { parametric: w.parametric, geometric: w.geometric, why: Array.from(w.why), explanation: Array.from(w.explanation) },
       };
     },
@@ -117,12 +117,15 @@ export function createExerciseCurvesApi(raw) {
     workedValue(subject, ask) {
       return workedOut(unwrap(raw.exerciseWorkedValue(valueSubject(subject), valueAsk(ask))));
     },
-    // {correct, expected, distance (Euclidean), label, working, reason ('' when right)};
-    // tolerance: absolute, in the units of the quantity.
+    // {correct, expected, distance (Euclidean; Infinity for a wrong count), label, working,
+    // reason ('' when right), code ('' | 'not-within' | 'wrong-count'), message and hint (the
+    // value-free words: what was asked in the question's terms, the formula; a nudge)};
+    // tolerance: absolute, in the units of the quantity. As many numbers as the value has are
+    // expected: another count is a wrong answer (code 'wrong-count'), not an error.
     checkValueAnswer(subject, ask, given, tolerance) {
       if (typeof tolerance !== 'number') fail('invalid-argument', 'tolerance must be a number (absolute, in the units of the value)');
       const r = unwrap(raw.exerciseCheckValue(valueSubject(subject), valueAsk(ask), finiteNumbers(given, 'given'), tolerance));
-      return { correct: r.correct, ...workedOut(r), distance: r.distance, reason: r.reason };
+      return { correct: r.correct, ...workedOut(r), distance: r.distance, reason: r.reason, code: r.code, message: r.message, hint: r.hint };
     },
     // Kind 5: {holds, reason, measured}. property {kind: 'joint-class', parametric?, geometric?,
     // tolerance?} with subject {a, b}; {kind: 'passes-through', point, tolerance (relative to

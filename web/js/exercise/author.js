@@ -8,7 +8,7 @@ import { h, setChildren } from '../app/dom.js';
 import { download } from '../app/file-io.js';
 import { stringifyExact } from '../app/share-link.js';
 import { lessons } from '../lessons/registry.js';
-import { KINDS, TABLES, QUANTITIES, exerciseOf, parseExercise } from './format.js';
+import { KINDS, TABLES, QUANTITIES, FEEDBACK_LEVELS, DEFAULT_HINT_AFTER, exerciseOf, parseExercise } from './format.js';
 import { readExerciseState, CREATE } from './player.js';
 import { exerciseUrl } from './link.js';
 
@@ -61,6 +61,12 @@ export function openAuthorDialog({ ctx, lesson, view, message }) {
   const source = /** @type {HTMLInputElement} */ (h('input', { type: 'text', id: 'author-source', maxlength: 200, placeholder: 'e.g. Lecture 000, the winged-edge slide' }));
   const question = /** @type {HTMLTextAreaElement} */ (h('textarea', { id: 'author-question', rows: 4, maxlength: 2000 }));
   const fieldBox = h('div', { class: 'author-fields' });
+  // Feedback: a new exercise tells where, never the value (level check), unless the author allows more.
+  const levelSelect = /** @type {HTMLSelectElement} */ (h('select', { id: 'author-feedback' },
+    Object.entries(FEEDBACK_LEVELS).map(([k, v]) => h('option', { value: k, selected: k === 'check' }, v.label))));
+  const hintAfter = /** @type {HTMLInputElement} */ (h('input', { type: 'number', id: 'author-hint-after', min: 1, max: 20, step: 1, value: String(DEFAULT_HINT_AFTER) }));
+  const hintAfterBox = h('div', { hidden: true }, h('label', { class: 'field', for: 'author-hint-after' }, 'Hints after this many wrong checks (1 to 20)'), hintAfter);
+  levelSelect.addEventListener('change', () => { hintAfterBox.hidden = levelSelect.value === 'check'; });
   const hideBoxes = panels.map((p) => /** @type {HTMLInputElement} */ (h('input', { type: 'checkbox', value: p.id, id: `author-hide-${p.id}` })));
   const problem = h('p', { class: 'author-problem', role: 'alert' });
   const result = h('p', { class: 'author-result', 'aria-live': 'polite' });
@@ -121,6 +127,7 @@ export function openAuthorDialog({ ctx, lesson, view, message }) {
     const exercise = exerciseOf({
       title: title.value.trim(), lesson: lesson.id, source: source.value.trim(), question: question.value.trim(),
       stateVersion: lesson.stateVersion, state: ctx.state, hide: hideBoxes.filter((b) => b.checked).map((b) => b.value), check: checkOf(kind),
+      feedback: { level: levelSelect.value, hintAfter: hintAfter.value.trim() === '' ? undefined : Number(hintAfter.value) },
     });
     // As a student's page reads it: the text (with its size limit), the lesson's state, and
     // the kind's own checks against this drawing (a walk element, a joint, a mesh too big
@@ -167,6 +174,7 @@ export function openAuthorDialog({ ctx, lesson, view, message }) {
     h('label', { class: 'field', for: 'author-title' }, 'Title'), title,
     h('label', { class: 'field', for: 'author-question' }, 'Question'), question,
     h('label', { class: 'field', for: 'author-source' }, 'Source (optional)'), source,
+    h('label', { class: 'field', for: 'author-feedback' }, 'Feedback the student gets'), levelSelect, hintAfterBox,
     h('fieldset', {}, h('legend', {}, 'Hide while answering'), h('div', { class: 'hide-list' }, panels.map((p, i) => h('label', { class: 'choice', for: hideBoxes[i].id }, hideBoxes[i], p.title)))),
     problem, result, linkBox,
     h('div', { class: 'dialog-actions' },

@@ -63,6 +63,28 @@ export const KINDS = Object.freeze({
   property: { label: 'Move control points until a property holds' },
 });
 
+// What a check tells the student (the author chooses; docs/exercises.md, "Feedback levels"):
+// check: right or wrong, and where, with the rule to re-read, never the right value; hint: also
+// a nudge per mistake once the student has checked hintAfter times wrongly; worked: also the
+// worked answer on request (recorded in the progress).
+export const FEEDBACK_LEVELS = Object.freeze({
+  check: { label: 'Check only: where it is wrong and the rule, never the right value' },
+  hint: { label: 'Check, then hints after a number of wrong tries' },
+  worked: { label: 'Check, hints, and the worked answer on request (self-study)' },
+});
+export const DEFAULT_HINT_AFTER = 2;
+// A file without `feedback` was written when the worked answer was always on offer: it keeps
+// that (level worked), so an exercise handed out before levels existed behaves as it did.
+// The authoring dialog writes the field, level check by default.
+export const LEGACY_FEEDBACK = Object.freeze({ level: 'worked', hintAfter: DEFAULT_HINT_AFTER });
+
+/** The exercise's feedback with the defaults filled in. @param {any} exercise @returns {{ level: 'check'|'hint'|'worked', hintAfter: number }} */
+export function feedbackOf(exercise) {
+  const f = exercise?.feedback;
+  if (!f) return { ...LEGACY_FEEDBACK };
+  return { level: f.level, hintAfter: f.hintAfter ?? DEFAULT_HINT_AFTER };
+}
+
 const positive = (v, path) => {
   const x = number({ min: 0, max: 1e9 })(v, path);
   if (!(x > 0)) throw new SchemaError(path, 'must be greater than 0');
@@ -145,8 +167,9 @@ const EXERCISE = object({
   },
   hide: list(text({ maxLength: 64 }), { max: 24 }),
   order: integer({ min: 0, max: 1e6 }),
+  feedback: object({ level: oneOf(...Object.keys(FEEDBACK_LEVELS)), hintAfter: integer({ min: 1, max: 20 }) }, { optional: ['hintAfter'] }),
   check: readCheck,
-}, { optional: ['id', 'source', 'hide', 'order'] });
+}, { optional: ['id', 'source', 'hide', 'order', 'feedback'] });
 
 function nonEmpty(v, path, maxLength) {
   const s = text({ maxLength })(v, path);
@@ -206,9 +229,9 @@ export function parseExercise(textValue, options) {
 /**
  * A new exercise object (the authoring dialog's output), read back through readExercise by
  * the caller before it is offered.
- * @param {{ id?: string, title: string, lesson: string, source?: string, question: string, stateVersion: number, state: any, hide?: string[], check: any }} fields
+ * @param {{ id?: string, title: string, lesson: string, source?: string, question: string, stateVersion: number, state: any, hide?: string[], feedback?: { level: string, hintAfter?: number }, check: any }} fields
  */
-export function exerciseOf({ id, title, lesson, source, question, stateVersion, state, hide, check }) {
+export function exerciseOf({ id, title, lesson, source, question, stateVersion, state, hide, feedback, check }) {
   /** @type {any} */
   const out = { format: EXERCISE_FORMAT, version: EXERCISE_VERSION };
   if (id) out.id = id;
@@ -216,6 +239,7 @@ export function exerciseOf({ id, title, lesson, source, question, stateVersion, 
   if (source) out.source = source;
   Object.assign(out, { question, stateVersion, state });
   if (hide?.length) out.hide = hide;
+  if (feedback) out.feedback = feedback.level === 'check' ? { level: 'check' } : { level: feedback.level, hintAfter: feedback.hintAfter ?? DEFAULT_HINT_AFTER };
   out.check = check;
   return out;
 }

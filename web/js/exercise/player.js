@@ -7,13 +7,21 @@
 // are hidden. Nothing of the person's own saved lesson work is read or written meanwhile.
 import { h, setChildren } from '../app/dom.js';
 import { readEnvelope } from '../app/share-link.js';
-import { KINDS, ExerciseError } from './format.js';
+import { KINDS, ExerciseError, feedbackOf } from './format.js';
 import { writeProgress, clearProgress } from './progress.js';
 import { createTableKind } from './kinds/table.js';
 import { createWalkKind } from './kinds/walk.js';
 import { createJointKind } from './kinds/joint.js';
 import { createValueKind } from './kinds/value.js';
 import { createPropertyKind } from './kinds/property.js';
+
+// What this exercise's feedback will and will not tell, in one line (the author's level).
+export function levelSentence({ level, hintAfter }) {
+  const tries = `${hintAfter} wrong check${hintAfter === 1 ? '' : 's'}`;
+  if (level === 'check') return 'Feedback: Check says whether your answer is right and where it is wrong, with the rule to re-read. It never shows the right value; no hints, no worked answer.';
+  if (level === 'hint') return `Feedback: Check says where your answer is wrong and the rule to re-read; after ${tries} it adds a hint for each mistake. It never shows the right value; no worked answer.`;
+  return `Feedback: Check says where your answer is wrong and the rule to re-read; after ${tries} it adds hints; the worked answer is on offer (and recorded as seen).`;
+}
 
 // Typed arrays as plain lists, to compare two subjects.
 const plain = (key, value) => (ArrayBuffer.isView(value) ? Array.from(/** @type {any} */ (value)) : value);
@@ -57,6 +65,7 @@ export function mountExercise({ ctx, lesson, view, exercise, key, hash = null, l
   const asOpened = asksNow ? null : live();
   const subject = asksNow ? live : () => asOpened;
   const same = (a, b) => JSON.stringify(a, plain) === JSON.stringify(b, plain);
+  const feedbackLevel = feedbackOf(exercise);
   /** @type {any} */
   let progress = loaded.progress ?? { status: 'started', checks: 0, answer: null, state: null, solvedAt: null, title: exercise.title, lesson: exercise.lesson };
   const feedback = h('div', { class: 'exercise-feedback', id: 'exercise-feedback', role: 'status', 'aria-live': 'polite' });
@@ -73,13 +82,15 @@ export function mountExercise({ ctx, lesson, view, exercise, key, hash = null, l
   if (loaded.progress) kind.restore(progress.answer);
 
   const checkButton = h('button', { type: 'button', class: 'primary', id: 'exercise-check', onclick: () => runCheck() }, 'Check');
-  const workedButton = h('button', { type: 'button', id: 'exercise-show-worked', onclick: () => showWorked() }, 'Show the worked answer');
+  // The worked answer is offered only where the author allows it (level worked).
+  const workedButton = feedbackLevel.level === 'worked' ? h('button', { type: 'button', id: 'exercise-show-worked', onclick: () => showWorked() }, 'Show the worked answer') : null;
   const againButton = h('button', { type: 'button', id: 'exercise-start-again', onclick: () => startAgain() }, 'Start again');
   const root = h('section', { class: 'exercise-panel callout', id: 'exercise-panel', 'aria-labelledby': 'exercise-title' },
     h('p', { class: 'exercise-kind' }, `Exercise · ${KINDS[check.kind].label}`),
     h('h2', { id: 'exercise-title' }, exercise.title),
     exercise.source ? h('p', { class: 'exercise-source hint lecture-note' }, exercise.source) : null,
     h('p', { class: 'exercise-question', id: 'exercise-question' }, exercise.question),
+    h('p', { class: 'exercise-level hint', id: 'exercise-level', 'data-level': feedbackLevel.level }, levelSentence(feedbackLevel)),
     drift,
     kind.root,
     h('div', { class: 'exercise-actions' }, checkButton, workedButton, againButton),
@@ -120,6 +131,7 @@ export function mountExercise({ ctx, lesson, view, exercise, key, hash = null, l
     status.dataset.status = progress.status;
     setChildren(status, solved ? (progress.sawWorked ? '✓ Solved (after the worked answer)' : '✓ Solved') : 'Not solved yet',
       ` · ${progress.checks} check${progress.checks === 1 ? '' : 's'}`,
+      progress.hintsShown ? ` · ${progress.hintsShown} hint${progress.hintsShown === 1 ? '' : 's'} shown` : '',
       unsaved ? ' · this browser does not keep progress (its storage is full or disabled): your answer stays on this page until you leave it' : ' · kept in this browser');
   }
 
@@ -131,19 +143,30 @@ export function mountExercise({ ctx, lesson, view, exercise, key, hash = null, l
       setChildren(feedback, h('p', { class: 'exercise-wrong' }, `This answer could not be checked: ${err.message}`));
       return null;
     }
+    // A wrong check: something named wrong (a walk's wrong pick after right steps too).
+    const wrong = !result.correct && !result.incomplete && result.findings.length > 0;
     if (!result.incomplete) {
       progress = { ...progress, checks: progress.checks + 1 };
+      if (wrong) progress = { ...progress, wrongChecks: (progress.wrongChecks ?? 0) + 1 };
       if (result.correct && progress.status !== 'solved') progress = { ...progress, status: 'solved', solvedAt: new Date().toISOString() };
     }
-    feedback.dataset.result = result.correct ? 'right' : result.partial ? 'partial' : 'wrong';
+    // Hints: at level hint or worked, once the student has checked wrongly hintAfter times.
+    const hinting = feedbackLevel.level !== 'check' && (progress.wrongChecks ?? 0) >= feedbackLevel.hintAfter;
+    const findings = result.findings.slice(0, 40);
+    const hints = hinting && wrong ? findings.filter((f) => f.hint).length : 0;
+    if (hints) progress = { ...progress, hintsShown: (progress.hintsShown ?? 0) + hints };
+    feedback.dataset.result = result.correct ? 'right' : wrong || result.incomplete ? 'wrong' : 'partial';
     if (result.correct) {
       setChildren(feedback, h('p', { class: 'exercise-right' }, '✓ Right.', result.note ? ` ${result.note}` : ''));
-    } else if (result.partial) {
+    } else if (result.partial && !result.findings.length) {
       setChildren(feedback, h('p', { class: 'exercise-right' }, result.note ?? 'Right so far.'));
     } else {
       setChildren(feedback, h('p', { class: 'exercise-wrong' }, result.findings.length === 1 ? 'Not yet:' : `Not yet: ${result.findings.length} things to look at.`),
-        h('ul', {}, result.findings.slice(0, 40).map((f) => h('li', {}, f))),
-        result.findings.length > 40 ? h('p', {}, `… and ${result.findings.length - 40} more.`) : null);
+        h('ul', {}, findings.map((f) => h('li', {}, f.text, hinting && wrong && f.hint ? h('span', { class: 'exercise-hint' }, ` Hint: ${f.hint}`) : null))),
+        result.findings.length > 40 ? h('p', {}, `… and ${result.findings.length - 40} more.`) : null,
+        result.note ? h('p', {}, result.note) : null,
+        !hinting && wrong && feedbackLevel.level !== 'check' && findings.some((f) => f.hint)
+          ? h('p', { class: 'exercise-hint-later hint' }, `Hints come after ${feedbackLevel.hintAfter} wrong check${feedbackLevel.hintAfter === 1 ? '' : 's'} (${progress.wrongChecks ?? 0} so far).`) : null);
     }
     save();
     showStatus();
@@ -151,6 +174,7 @@ export function mountExercise({ ctx, lesson, view, exercise, key, hash = null, l
   }
 
   function showWorked() {
+    if (feedbackLevel.level !== 'worked') return;
     let lines;
     try {
       lines = kind.worked().lines;

@@ -48,6 +48,10 @@ struct JointFinding {
     bool is_reason = false;
     int given = 0, expected = 0; // classes: k; reasons: 1 ticked/true, 0 not
     std::string reason;
+    // Value-free (feedback levels "check" and "hint"): which choice or statement is wrong and
+    // the definition to re-read; never the class nor the truth, nor the measured evidence.
+    std::string message;
+    std::string hint;
 };
 struct JointWorked {
     int parametric = -1, geometric = -1;
@@ -87,9 +91,18 @@ struct ValueCheck {
     bool correct = false;
     double distance = 0; // Euclidean, in the quantity's units
     WorkedValue worked;
-    std::string reason;  // why it is wrong (empty when right)
+    std::string reason;  // why it is wrong (empty when right), with the value: the worked answer's words
+    // "" when right; "not-within" (a value outside the tolerance) or "wrong-count" (as many
+    // numbers as the value has are needed: given.size() differs).
+    std::string code;
+    // Value-free (feedback levels "check" and "hint"): what was asked in the question's words
+    // (indices from first, the parameter u) and the formula to re-read; never the value, nor
+    // the distance it is off by.
+    std::string message;
+    std::string hint;
 };
-// tolerance: absolute, in the quantity's units (>= 0); given: as many numbers as the value.
+// tolerance: absolute, in the quantity's units (>= 0); given: as many numbers as the value (a
+// different count is a wrong answer, code "wrong-count", said in a plain sentence).
 ValueCheck check_value_answer(const ValueSubject& subject, const ValueAsk& ask, const std::vector<double>& given,
                               double tolerance);
 

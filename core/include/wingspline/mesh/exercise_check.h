@@ -56,7 +56,12 @@ struct AnswerFinding {
     int32_t given = kNone;
     int32_t expected = kNone;
     std::string code;
-    std::string reason; // names the row and the column, and why, from the definition
+    std::string reason; // names the row and the column, and why, from the definition (with the values: the worked answer's)
+    // What a student reads at feedback level "check" and "hint" (exercise_feedback.h): where,
+    // as the question's grid counts (row e3, column S:L), and the rule to re-read; never the
+    // right value nor anything it is copied from. hint: a value-free nudge.
+    std::string message;
+    std::string hint;
 };
 
 struct AnswerCheck {

@@ -19,6 +19,10 @@ struct WalkStepCheck {
     int32_t expected = kNone; // the edge the rule reads (0-based mesh edge)
     bool done = false;        // expected is the walk's first edge: the walk is closed
     std::string reason;       // the rule applied to this step, with 1-based labels (v2, e5, F1)
+    // Value-free (feedback levels "check" and "hint"): the step and the edge it starts from,
+    // the rule to re-read; the hint names the column to read. Never the expected edge.
+    std::string message;
+    std::string hint;
 };
 
 // around_face: false = around vertex `element`, true = along face `element`. `given` is the

@@ -5,16 +5,44 @@
 // (api.checkJointAnswer), scale-free, and explains it with the measured evidence.
 import { h } from '../../app/dom.js';
 import { ExerciseError } from '../format.js';
+import { findingOf, incomplete, isPlainObject, unreadable } from './grading.js';
+
+function jointOf(check, subject) {
+  const joints = subject.joints;
+  if (!joints) throw new ExerciseError('this lesson has no joints to classify', 'exercise.check.kind');
+  if (check.joint > joints.length) throw new ExerciseError(`its field exercise.check.joint is ${check.joint}, but the curve has ${joints.length} joint${joints.length === 1 ? '' : 's'}`, 'exercise.check.joint');
+  return joints[check.joint - 1];
+}
+
+/**
+ * Grades a classification {parametric, geometric, why} (the page's answer). Pure: no DOM.
+ * @param {{ api: any, check: any, subject: any, answer: unknown }} parts
+ * @returns {import('./grading.js').GradeResult}
+ */
+export function gradeJoint({ api, check, subject, answer }) {
+  const shape = 'a classification {parametric: k or null, geometric: k or null, why: [statement ids]}';
+  if (!isPlainObject(answer)) return unreadable(shape);
+  const a = /** @type {any} */ (answer);
+  const classOk = (k) => k === null || k === undefined || (Number.isInteger(k) && k >= -1 && k <= 2);
+  const ids = api.jointReasons().map((r) => r.id);
+  const why = a.why ?? [];
+  if (!classOk(a.parametric) || !classOk(a.geometric) || !Array.isArray(why) || !why.every((x) => ids.includes(x))) return unreadable(shape);
+  const missing = [a.parametric == null ? 'the parametric class (Cᵏ)' : null, a.geometric == null ? 'the geometric class (Gᵏ)' : null].filter(Boolean);
+  if (missing.length) return incomplete(`Choose ${missing.join(' and ')} first.`);
+  const { a: first, b: second } = jointOf(check, subject);
+  const r = api.checkJointAnswer(first, second, { parametric: a.parametric, geometric: a.geometric, why });
+  return { correct: r.correct, findings: r.findings.map((f) => findingOf(f.message, f.hint)) };
+}
+
+/** The worked answer: the measured evidence, statement by statement. @param {{ api: any, check: any, subject: any }} parts */
+export function workedJoint({ api, check, subject }) {
+  const { a: first, b: second } = jointOf(check, subject);
+  return { lines: api.checkJointAnswer(first, second, {}).worked.explanation };
+}
 
 /** @param {any} parts */
 export function createJointKind({ api, check, subject }) {
-  const jointOf = () => {
-    const joints = subject().joints;
-    if (!joints) throw new ExerciseError('this lesson has no joints to classify', 'exercise.check.kind');
-    if (check.joint > joints.length) throw new ExerciseError(`its field exercise.check.joint is ${check.joint}, but the curve has ${joints.length} joint${joints.length === 1 ? '' : 's'}`, 'exercise.check.joint');
-    return joints[check.joint - 1];
-  };
-  jointOf();
+  jointOf(check, subject());
   const classes = api.jointClasses();
   const reasons = api.jointReasons();
   const radioGroup = (name, title, options) => {
@@ -42,18 +70,7 @@ export function createJointKind({ api, check, subject }) {
       for (const [group, k] of [[parametric, saved.parametric], [geometric, saved.geometric]]) for (const i of group.inputs) i.checked = i.value === String(k);
       if (Array.isArray(saved.why)) for (const w of why) w.checked = saved.why.includes(w.value);
     },
-    check() {
-      const a = answer();
-      const missing = [a.parametric === null ? 'the parametric class (Cᵏ)' : null, a.geometric === null ? 'the geometric class (Gᵏ)' : null].filter(Boolean);
-      if (missing.length) return { correct: false, incomplete: true, findings: [`Choose ${missing.join(' and ')} first.`] };
-      const { a: first, b: second } = jointOf();
-      const r = api.checkJointAnswer(first, second, a);
-      return { correct: r.correct, findings: r.findings.map((f) => f.reason) };
-    },
-    worked() {
-      const { a: first, b: second } = jointOf();
-      const r = api.checkJointAnswer(first, second, answer());
-      return { lines: r.worked.explanation };
-    },
+    check: () => gradeJoint({ api, check, subject: subject(), answer: answer() }),
+    worked: () => workedJoint({ api, check, subject: subject() }),
   };
 }

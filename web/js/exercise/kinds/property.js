@@ -5,6 +5,7 @@
 // missing (api.checkCurveProperty). The target point of "passes through" is drawn.
 import { h } from '../../app/dom.js';
 import { ExerciseError } from '../format.js';
+import { findingOf } from './grading.js';
 
 export function propertySubject(property, subject) {
   if (property.kind === 'joint-class') {
@@ -18,14 +19,33 @@ export function propertySubject(property, subject) {
   return { curve };
 }
 
+function measure(api, property, subject) {
+  const { joint, ...rest } = property;
+  return api.checkCurveProperty(propertySubject(property, subject), rest);
+}
+
+/**
+ * Grades the drawing (the subject asked of the student's lesson state; the page's answer is
+ * null: the drawing is the answer). Pure: no DOM. What is missing names the present state of
+ * the drawing, never a target value.
+ * @param {{ api: any, check: any, subject: any, answer?: unknown }} parts
+ * @returns {import('./grading.js').GradeResult}
+ */
+export function gradeProperty({ api, check, subject }) {
+  const r = measure(api, check.property, subject);
+  return { correct: r.holds, findings: r.holds ? [] : [findingOf(r.reason)], note: r.holds ? r.reason : undefined };
+}
+
+/** @param {{ api: any, check: any, subject: any }} parts */
+export function workedProperty({ api, check, subject }) {
+  const r = measure(api, check.property, subject);
+  return { lines: [r.reason, check.property.kind === 'joint-class' ? 'Lecture 000: a joint is Cᵏ when the derivatives up to order k agree there; Gᵏ when they agree after reparametrisation (same directions, lengths may differ).' : 'Move the nearest part of the curve towards the point: drag the control points that weigh most there (the blending functions at that u).'] };
+}
+
 /** @param {any} parts */
 export function createPropertyKind({ api, check, subject }) {
   const { property } = check;
-  const measure = () => {
-    const { joint, ...rest } = property;
-    return api.checkCurveProperty(propertySubject(property, subject()), rest);
-  };
-  measure();
+  measure(api, property, subject());
   const now = h('p', { class: 'exercise-live', 'aria-live': 'polite' });
   const root = h('div', { class: 'exercise-property' },
     h('p', { class: 'hint' }, 'Drag the control points in the drawing (or select one and use the arrow keys), then check.'), now);
@@ -35,20 +55,14 @@ export function createPropertyKind({ api, check, subject }) {
     restore() {},
     stateChanged() {
       try {
-        const r = measure();
+        const r = measure(api, property, subject());
         now.textContent = r.holds ? 'It holds now: check it.' : `Not yet: ${r.reason}`;
       } catch (err) {
         now.textContent = err.message;
       }
     },
-    check() {
-      const r = measure();
-      return { correct: r.holds, findings: r.holds ? [] : [r.reason], note: r.holds ? r.reason : undefined };
-    },
-    worked() {
-      const r = measure();
-      return { lines: [r.reason, property.kind === 'joint-class' ? 'Lecture 000: a joint is Cᵏ when the derivatives up to order k agree there; Gᵏ when they agree after reparametrisation (same directions, lengths may differ).' : 'Move the nearest part of the curve towards the point: drag the control points that weigh most there (the blending functions at that u).'] };
-    },
+    check: () => gradeProperty({ api, check, subject: subject() }),
+    worked: () => workedProperty({ api, check, subject: subject() }),
     // The target point on the drawing (world coordinates), for "passes through".
     draw(painter, colors) {
       if (property.kind !== 'passes-through') return;

@@ -8,6 +8,7 @@ import { h, setChildren } from '../../app/dom.js';
 import { ExerciseError, TABLES } from '../format.js';
 import { refuseLargeMesh } from '../subjects.js';
 import { elementLabel } from '../../ui/element-labels.js';
+import { findingOf, incomplete, isPlainObject, unreadable } from './grading.js';
 
 export const NONE = -1;
 export const BLANK = -2;
@@ -73,12 +74,12 @@ export function readLabel(raw, ref, count, allowNone, names = NAMES) {
   return { value: n - 1 };
 }
 
-/** @param {any} parts */
-export function createTableKind({ api, check, subject }) {
-  const mesh = subject().mesh;
+// The exercise's tables for its mesh: the grids (the core's descriptors), the lesson's own rows
+// (for the columns the exercise gives), the element counts. No DOM: the page and the grader share it.
+function tableModel(api, check, subject) {
+  const mesh = subject.mesh;
   if (!mesh) throw new ExerciseError('this lesson has no mesh to fill a table for', 'exercise.check.kind');
   refuseLargeMesh(mesh);
-  // The lesson's own tables, for the columns the exercise gives (the lesson's numbering).
   const built = api.buildMesh(mesh);
   let grids;
   const own = {}; // the lesson's own rows, by the grid's row kind
@@ -91,18 +92,138 @@ export function createTableKind({ api, check, subject }) {
   } finally {
     built.dispose();
   }
-  const countOf = (ref) => own[`${ref}Count`];
   const given = new Set(check.given ?? []);
   const names = namesOf(check.table);
-  const inputs = new Map(); // `${table}:${row}:${field}` -> input
-
   // A column the exercise gives, in format.js's names (the winged edge's vertex and face
   // tables' one column: vertexEdge, faceEdge).
   const givenName = (grid, column) => (check.table === 'winged-edge' && grid.table !== 'edge' ? `${grid.table}Edge` : column.field);
-  function givenValue(grid, row, column) {
-    return given.has(givenName(grid, column)) ? own[grid.table][row][column.field] : null;
+  /** The cells in order: key `${table}:${row}:${field}`, its grid and column, its given value (null: to fill in). */
+  const cells = [];
+  for (const grid of grids) {
+    for (let r = 0; r < grid.rows; r += 1) {
+      for (const c of grid.columns) {
+        const value = given.has(givenName(grid, c)) ? own[grid.table][r][c.field] : null;
+        cells.push({ key: `${grid.table}:${r}:${c.field}`, grid, row: r, column: c, given: value, name: `${grid.rowName(r)} ${c.head}` });
+      }
+    }
   }
+  return { mesh, grids, names, cells, countOf: (ref) => own[`${ref}Count`] };
+}
 
+// The answer (typed text per cell key) as the checker takes it; problems of reading as
+// {key, text}. Given cells read as the page shows them.
+function readTable(model, check, textOf) {
+  const { cells, names, countOf } = model;
+  const problems = [];
+  const byKey = new Map(cells.map((x) => [x.key, x]));
+  const cell = (x) => {
+    const raw = x.given !== null ? labelIn(names, x.column.ref, x.given) : textOf(x.key);
+    if (x.column.list) {
+      const out = [];
+      for (const p of raw.split(/[\s,;]+/).filter((q) => q !== '')) {
+        const r = readLabel(p, x.column.ref, countOf(x.column.ref), false, names);
+        if (r.problem) problems.push({ key: x.key, text: `${x.name}: ${r.problem}.` });
+        else out.push(r.value);
+      }
+      return out;
+    }
+    const r = readLabel(raw, x.column.ref, countOf(x.column.ref), Boolean(x.column.none) || x.column.ref === 'edge', names);
+    if (r.problem) { problems.push({ key: x.key, text: `${x.name}: ${r.problem}.` }); return BLANK; }
+    return r.value;
+  };
+  const rowsOf = (table) => {
+    const grid = model.grids.find((g) => g.table === table);
+    return Array.from({ length: grid.rows }, (_, r) => grid.columns.map((c) => cell(byKey.get(`${table}:${r}:${c.field}`))));
+  };
+  let value;
+  if (check.table === 'winged-edge') value = { edges: rowsOf('edge').flat(), vertexEdges: rowsOf('vertex').flat(), faceEdges: rowsOf('face').flat() };
+  else if (check.table === 'faces') value = { faces: rowsOf('face').map((r) => r[0]) };
+  else if (check.table === 'edge-list') value = { edges: rowsOf('edge').flat(), polygons: rowsOf('face').map((r) => r[0]) };
+  else value = { vertexVertices: rowsOf('vertex').map((r) => r[0]) };
+  return { value, problems };
+}
+
+// A finding's cell key: its table, the student's row, its field.
+function cellKeyOf(model, f) {
+  const grid = model.grids.find((g) => g.table === f.table); // (the kind of the row: the edge list's polygons are 'face' rows)
+  if (!grid || f.row < 0) return null;
+  const field = grid.columns.some((c) => c.field === f.field) ? f.field : grid.columns.length === 1 ? grid.columns[0].field : null;
+  return field === null ? null : `${f.table}:${f.row}:${field}`;
+}
+
+const TABLE_SHAPE = 'the table as typed: {"edge:0:start": "v1", …} (text per cell)';
+
+/** @param {unknown} answer @returns {((key: string) => string) | null} */
+function typedCells(answer) {
+  if (!isPlainObject(answer)) return null;
+  const entries = Object.entries(/** @type {any} */ (answer));
+  if (entries.length > 20000 || !entries.every(([, v]) => typeof v === 'string' && v.length <= 200)) return null;
+  const map = new Map(entries);
+  return (key) => map.get(key) ?? '';
+}
+
+// The grade and, per finding, the cell it names (the page marks them).
+function markTable(api, check, model, answer) {
+  const textOf = typedCells(answer);
+  if (!textOf) return { result: unreadable(TABLE_SHAPE), marks: [] };
+  if (model.cells.every((x) => x.given !== null || textOf(x.key).trim() === '')) {
+    return { result: incomplete('Fill in the table first: every cell is blank.'), marks: [] };
+  }
+  const { value, problems } = readTable(model, check, textOf);
+  if (problems.length) {
+    return { result: { correct: false, incomplete: true, findings: problems.map((p) => ({ text: p.text })) }, marks: problems.map((p) => ({ key: p.key, text: p.text })) };
+  }
+  const r = api.checkMeshTableAnswer(model.mesh, check.table, value);
+  return {
+    result: { correct: r.correct, findings: r.findings.map((f) => findingOf(f.message, f.hint)) },
+    marks: r.findings.map((f) => ({ key: cellKeyOf(model, f), text: f.message })).filter((m) => m.key !== null),
+    worked: r.worked,
+  };
+}
+
+/**
+ * Grades a filled-in table (the page's answer: the text typed per cell). Pure: no DOM.
+ * @param {{ api: any, check: any, subject: any, answer: unknown }} parts
+ * @returns {import('./grading.js').GradeResult}
+ */
+export function gradeTable({ api, check, subject, answer }) {
+  return markTable(api, check, tableModel(api, check, subject), answer).result;
+}
+
+// The worked table as rows of labels, in the student's numbering where their rows match.
+function workedRows(api, check, model, answer) {
+  const textOf = typedCells(answer) ?? (() => '');
+  const { value } = readTable(model, check, textOf);
+  const worked = api.checkMeshTableAnswer(model.mesh, check.table, value).worked;
+  return model.grids.map((grid) => {
+    const flat = { edge: worked.edges, vertex: check.table === 'winged-edge' ? worked.vertexEdges : worked.vertexVertices, face: check.table === 'winged-edge' ? worked.faceEdges : check.table === 'edge-list' ? worked.polygons : worked.faces }[grid.table];
+    const width = grid.columns.length;
+    const rows = Array.from({ length: grid.rows }, (_, r) => grid.columns.map((c, k) => {
+      const v = c.list ? flat[r] : flat[width * r + k];
+      return c.list ? v.map((x) => labelIn(model.names, c.ref, x)).join(' ') : labelIn(model.names, c.ref, v);
+    }));
+    return { grid, rows };
+  });
+}
+
+/**
+ * The worked table, one line per row ("e1: S v1, E v2, …"), in the student's numbering where
+ * the answer given matches (any answer, or none).
+ * @param {{ api: any, check: any, subject: any, answer?: unknown }} parts
+ */
+export function workedTable({ api, check, subject, answer }) {
+  const model = tableModel(api, check, subject);
+  return {
+    lines: workedRows(api, check, model, answer).flatMap(({ grid, rows }) => rows.map((cells, r) => `${grid.title}, ${grid.rowName(r)}: ${grid.columns.map((c, k) => `${c.head} ${cells[k] || '–'}`).join(', ')}`)),
+  };
+}
+
+/** @param {any} parts */
+export function createTableKind({ api, check, subject }) {
+  const model = tableModel(api, check, subject());
+  const { grids, names } = model;
+  const inputs = new Map(); // key -> input
+  const cellByKey = new Map(model.cells.map((x) => [x.key, x]));
   const root = h('div', { class: 'exercise-tables' });
   for (const grid of grids) {
     const head = h('tr', {}, h('th', { scope: 'col' }, grid.rowRef), grid.columns.map((c) => h('th', { scope: 'col' }, c.head)));
@@ -110,78 +231,40 @@ export function createTableKind({ api, check, subject }) {
     for (let r = 0; r < grid.rows; r += 1) {
       const rowName = grid.rowName(r);
       body.push(h('tr', {}, h('th', { scope: 'row' }, rowName), grid.columns.map((c) => {
-        const value = givenValue(grid, r, c);
+        const x = cellByKey.get(`${grid.table}:${r}:${c.field}`);
+        const value = x.given;
         const input = /** @type {HTMLInputElement} */ (h('input', {
           type: 'text', class: c.list ? 'cell list' : 'cell', spellcheck: 'false', autocomplete: 'off', autocapitalize: 'off',
           'aria-label': `${rowName} ${c.head}`, 'data-table': grid.table, 'data-row': r, 'data-field': c.field,
           readonly: value !== null, value: value === null ? '' : labelIn(names, c.ref, value),
         }));
         if (value !== null) input.classList.add('given');
-        inputs.set(`${grid.table}:${r}:${c.field}`, { input, column: c, grid });
+        inputs.set(x.key, input);
         return h('td', {}, input);
       })));
     }
-    root.append(h('table', { class: 'data-table exercise-grid' }, h('caption', {}, grid.title), h('thead', {}, head), h('tbody', {}, body)));
+    // A grid wider than its column (a phone, a narrow window) scrolls in its own box, and a
+    // cue above it says so while it does.
+    const cue = h('p', { class: 'exercise-scroll-cue hint', id: `exercise-cue-${grid.table}`, hidden: true }, `${grid.title} is wider than this column: scroll it sideways for every column →`);
+    const box = h('div', { class: 'exercise-grid-box' },
+      h('table', { class: 'data-table exercise-grid' }, h('caption', {}, grid.title), h('thead', {}, head), h('tbody', {}, body)));
+    root.append(cue, box);
+    if (typeof ResizeObserver === 'function') new ResizeObserver(() => { cue.hidden = box.scrollWidth <= box.clientWidth + 1; }).observe(box);
   }
   const workedBox = h('div', { class: 'exercise-worked', hidden: true });
   root.append(workedBox);
 
   // The typed answer as text, cell by cell (progress keeps it exactly as typed).
-  const answer = () => Object.fromEntries([...inputs].filter(([, x]) => !x.input.readOnly).map(([key, x]) => [key, x.input.value]));
+  const answer = () => Object.fromEntries([...inputs].filter(([, input]) => !input.readOnly).map(([key, input]) => [key, input.value]));
   function restore(saved) {
     if (!saved || typeof saved !== 'object') return;
     for (const [key, value] of Object.entries(saved)) {
-      const x = inputs.get(key);
-      if (x && !x.input.readOnly && typeof value === 'string') x.input.value = value.slice(0, 200);
+      const input = inputs.get(key);
+      if (input && !input.readOnly && typeof value === 'string') input.value = value.slice(0, 200);
     }
   }
-
-  // The answer as the checker takes it; problems of reading come first, as findings.
-  function read() {
-    const problems = [];
-    const cell = (x) => {
-      const raw = x.input.value;
-      if (x.column.list) {
-        const parts = raw.split(/[\s,;]+/).filter((p) => p !== '');
-        const out = [];
-        for (const p of parts) {
-          const r = readLabel(p, x.column.ref, countOf(x.column.ref), false, names);
-          if (r.problem) problems.push({ x, text: r.problem });
-          else out.push(r.value);
-        }
-        return out;
-      }
-      const r = readLabel(raw, x.column.ref, countOf(x.column.ref), Boolean(x.column.none) || x.column.ref === 'edge', names);
-      if (r.problem) { problems.push({ x, text: r.problem }); return BLANK; }
-      return r.value;
-    };
-    const rowsOf = (table) => {
-      const grid = grids.find((g) => g.table === table);
-      return Array.from({ length: grid.rows }, (_, r) => grid.columns.map((c) => cell(inputs.get(`${table}:${r}:${c.field}`))));
-    };
-    let value;
-    if (check.table === 'winged-edge') value = { edges: rowsOf('edge').flat(), vertexEdges: rowsOf('vertex').flat(), faceEdges: rowsOf('face').flat() };
-    else if (check.table === 'faces') value = { faces: rowsOf('face').map((r) => r[0]) };
-    else if (check.table === 'edge-list') value = { edges: rowsOf('edge').flat(), polygons: rowsOf('face').map((r) => r[0]) };
-    else value = { vertexVertices: rowsOf('vertex').map((r) => r[0]) };
-    return { value, problems };
-  }
-
-  function mark(x, text) {
-    x.input.setAttribute('aria-invalid', 'true');
-    x.input.title = text;
-  }
   function clearMarks() {
-    for (const { input } of inputs.values()) { input.removeAttribute('aria-invalid'); input.removeAttribute('title'); }
-  }
-
-  // A finding's cell: its table, the student's row, its field.
-  function cellOf(f) {
-    const table = f.table; // (the kind of the row: the edge list's polygons are 'face' rows)
-    const grid = grids.find((g) => g.table === table);
-    if (!grid) return null;
-    const field = grid.columns.some((c) => c.field === f.field) ? f.field : grid.columns.length === 1 ? grid.columns[0].field : null;
-    return field === null ? null : inputs.get(`${table}:${f.row}:${field}`) ?? null;
+    for (const input of inputs.values()) { input.removeAttribute('aria-invalid'); input.removeAttribute('title'); }
   }
 
   return {
@@ -190,44 +273,20 @@ export function createTableKind({ api, check, subject }) {
     restore,
     check() {
       clearMarks();
-      const { value, problems } = read();
-      if ([...inputs.values()].every((x) => x.input.readOnly || x.input.value.trim() === '')) {
-        return { correct: false, incomplete: true, findings: ['Fill in the table first: every cell is blank.'] };
+      const { result, marks } = markTable(api, check, model, answer());
+      for (const m of marks) {
+        const input = inputs.get(m.key);
+        if (input) { input.setAttribute('aria-invalid', 'true'); input.title = m.text; }
       }
-      if (problems.length) {
-        for (const p of problems) mark(p.x, p.text);
-        return { correct: false, incomplete: true, findings: problems.map((p) => `${p.x.input.getAttribute('aria-label')}: ${p.text}.`) };
-      }
-      const r = api.checkMeshTableAnswer(mesh, check.table, value);
-      for (const f of r.findings) {
-        const x = cellOf(f);
-        if (x) mark(x, f.reason);
-      }
-      return { correct: r.correct, findings: r.findings.map((f) => f.reason) };
+      return result;
     },
     worked() {
-      const { value } = read();
-      const r = api.checkMeshTableAnswer(mesh, check.table, value);
-      setChildren(workedBox, h('h3', {}, 'Worked answer'), workedTables(r.worked));
+      const tables = workedRows(api, check, model, answer());
+      setChildren(workedBox, h('h3', {}, 'Worked answer'), tables.map(({ grid, rows }) => h('table', { class: 'data-table exercise-grid worked' }, h('caption', {}, grid.title),
+        h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, ''), grid.columns.map((c) => h('th', { scope: 'col' }, c.head)))),
+        h('tbody', {}, rows.map((cells, r) => h('tr', {}, h('th', { scope: 'row' }, grid.rowName(r)), cells.map((c) => h('td', {}, c))))))));
       workedBox.hidden = false;
       return { lines: [] };
     },
   };
-
-  // The worked answer in the grids' shape, read-only.
-  function workedTables(worked) {
-    const rows = (table) => {
-      const grid = grids.find((g) => g.table === table);
-      const flat = { edge: worked.edges, vertex: check.table === 'winged-edge' ? worked.vertexEdges : worked.vertexVertices, face: check.table === 'winged-edge' ? worked.faceEdges : check.table === 'edge-list' ? worked.polygons : worked.faces }[table];
-      const width = grid.columns.length;
-      return Array.from({ length: grid.rows }, (_, r) => grid.columns.map((c, k) => {
-        const v = c.list ? flat[r] : flat[width * r + k];
-        return c.list ? v.map((x) => labelIn(names, c.ref, x)).join(' ') : labelIn(names, c.ref, v);
-      }));
-    };
-    return grids.map((grid) => h('table', { class: 'data-table exercise-grid worked' }, h('caption', {}, grid.title),
-      h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, ''), grid.columns.map((c) => h('th', { scope: 'col' }, c.head)))),
-      h('tbody', {}, rows(grid.table).map((cells, r) => h('tr', {}, h('th', { scope: 'row' }, grid.rowName(r)), cells.map((c) => h('td', {}, c)))))));
-  }
 }
-

@@ -5,6 +5,7 @@
 // value, compares and shows the working (api.checkValueAnswer).
 import { h } from '../../app/dom.js';
 import { ExerciseError } from '../format.js';
+import { findingOf, incomplete, unreadable } from './grading.js';
 
 // "0.375", "3/8", "-1/6", "(1.5, 2)", "1.5 2": the numbers typed, or a sentence.
 export function readNumbers(raw) {
@@ -14,7 +15,7 @@ export function readNumbers(raw) {
   const out = [];
   for (const p of parts) {
     const m = /^([+-]?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?)(?:\/([+-]?(?:\d+\.?\d*|\.\d+)))?$/i.exec(p);
-    if (!m) return { problem: `"${p.slice(0, 20)}" is not a number (write 0.375, 3/8 or a point as 1.5, 2).` };
+    if (!m) return { problem: `"${p.slice(0, 20)}" is not a number (write a decimal such as d.ddd, a fraction p/q, or a point as x, y).` };
     const x = Number(m[1]) / (m[2] === undefined ? 1 : Number(m[2]));
     if (!Number.isFinite(x)) return { problem: `"${p.slice(0, 20)}" is not a finite number.` };
     out.push(x);
@@ -44,12 +45,32 @@ export function askOf(check, subject) {
   return { of, ask };
 }
 
+/**
+ * Grades a typed value (the page's answer: the text as typed). Pure: no DOM.
+ * @param {{ api: any, check: any, subject: any, answer: unknown }} parts
+ * @returns {import('./grading.js').GradeResult}
+ */
+export function gradeValue({ api, check, subject, answer }) {
+  if (typeof answer !== 'string' || answer.length > 200) return unreadable('a number or a point, typed as text');
+  const typed = readNumbers(answer);
+  if (typed.problem) return incomplete(typed.problem);
+  const { of, ask } = askOf(check, subject);
+  const r = api.checkValueAnswer(of, ask, typed.value, check.tolerance);
+  return { correct: r.correct, findings: r.correct ? [] : [findingOf(r.message, r.hint)] };
+}
+
+/** The worked answer: the core's working and the value. @param {{ api: any, check: any, subject: any }} parts */
+export function workedValue({ api, check, subject }) {
+  const { of, ask } = askOf(check, subject);
+  const r = api.workedValue(of, ask);
+  return { lines: [...r.working, `${r.label} = ${r.expected.map((x) => String(Number(x.toPrecision(6)))).join(', ')}`] };
+}
+
 /** @param {any} parts */
 export function createValueKind({ api, check, subject }) {
-  const target = () => askOf(check, subject());
   // Asked once now: a question the core cannot answer for this drawing is refused at once.
   try {
-    const { of, ask } = target();
+    const { of, ask } = askOf(check, subject());
     api.workedValue(of, ask);
   } catch (err) {
     if (err instanceof ExerciseError) throw err;
@@ -58,23 +79,14 @@ export function createValueKind({ api, check, subject }) {
   const input = /** @type {HTMLInputElement} */ (h('input', { type: 'text', class: 'exercise-value', id: 'exercise-value', inputmode: 'text', autocomplete: 'off', spellcheck: 'false' }));
   const root = h('div', { class: 'exercise-value-box' },
     h('label', { for: 'exercise-value' }, 'Your answer'), input,
-    h('p', { class: 'hint' }, `A number, a fraction such as 3/8, or a point such as 1.5, 2. Within ${check.tolerance} of the exact value counts as right.`));
+    // The format in letters: an example number could be this exercise's answer (3/8 was B₁,₃(½)'s).
+    h('p', { class: 'hint' }, `A decimal (d.ddd), a fraction (p/q), or a point (x, y). Within ${check.tolerance} of the exact value counts as right.`));
   return {
     root,
     answer: () => input.value,
     restore(saved) { if (typeof saved === 'string') input.value = saved.slice(0, 200); },
     focus: () => input.focus(),
-    check() {
-      const typed = readNumbers(input.value);
-      if (typed.problem) return { correct: false, incomplete: true, findings: [typed.problem] };
-      const { of, ask } = target();
-      const r = api.checkValueAnswer(of, ask, typed.value, check.tolerance);
-      return { correct: r.correct, findings: r.correct ? [] : [r.reason] };
-    },
-    worked() {
-      const { of, ask } = target();
-      const r = api.workedValue(of, ask);
-      return { lines: [...r.working, `${r.label} = ${r.expected.map((x) => String(Number(x.toPrecision(6)))).join(', ')}`] };
-    },
+    check: () => gradeValue({ api, check, subject: subject(), answer: input.value }),
+    worked: () => workedValue({ api, check, subject: subject() }),
   };
 }

@@ -3,15 +3,21 @@
 // face), step after step (lecture 000's traversal). The walk is the core's
 // (mesh.traversalSteps / faceEdgeSteps); the student picks the next edge among the mesh's
 // edges, by pointer or with the arrow keys, and checks it. A right edge is added to the walk
-// (and drawn by the lesson); a wrong one is explained from the rule the walk reads.
+// (and drawn by the lesson); a wrong one is said from the rule the walk reads.
+//
+// The answer is every edge the student checked, right or wrong, in order: { picks: [3, 5, …] }
+// (edge numbers as the page shows them, e3 = 3), so a grader replays the walk step by step.
+// Progress saved before that kept only { known } (the walk shown up to step known): its first
+// known - 1 predictions were right, so they are taken from the core's walk.
 import { h, setChildren } from '../../app/dom.js';
 import { ExerciseError } from '../format.js';
 import { label } from './table.js';
 import { refuseLargeMesh } from '../subjects.js';
+import { findingOf, isPlainObject, unreadable } from './grading.js';
 
-/** @param {any} parts */
-export function createWalkKind({ api, check, subject, support, ctx }) {
-  const mesh = subject().mesh;
+// The walk the exercise asks for: its steps (the core's) and the mesh's edge count.
+function walkOf(api, check, subject) {
+  const mesh = subject.mesh;
   if (!mesh) throw new ExerciseError('this lesson has no mesh to walk on', 'exercise.check.kind');
   refuseLargeMesh(mesh);
   const built = api.buildMesh(mesh);
@@ -29,13 +35,82 @@ export function createWalkKind({ api, check, subject, support, ctx }) {
     built.dispose();
   }
   if (steps.length < 2) throw new ExerciseError(`the walk ${check.around === 'vertex' ? 'around' : 'along'} ${check.around === 'vertex' ? 'v' : 'F'}${check.element} has no step to predict`, 'exercise.check.element');
-  const where = check.around === 'vertex' ? `around v${check.element}` : `along F${check.element}`;
   // The core checks a step and says why, from the rule the walk reads (S:L or E:R around a
   // vertex, E:L or S:R along a face).
   const stepCheck = (step, given) => api.checkWalkStep(mesh, { around: check.around, element: check.element - 1, step, given });
+  return { steps, edgeCount, stepCheck, where: check.around === 'vertex' ? `around v${check.element}` : `along F${check.element}` };
+}
 
-  // Predictions made: the walk shows steps[0..known-1]; known = steps.length + 1 once the
-  // student has also said that the walk comes back to its first edge (the loop's "while").
+/**
+ * A saved walk answer in today's shape: { picks } as is, the old { known } as the right picks
+ * the walk had shown (from the core's steps); null when it is neither.
+ * @param {unknown} saved @param {Array<{ edge: number }>} steps
+ */
+export function migrateWalkAnswer(saved, steps) {
+  if (!isPlainObject(saved)) return null;
+  const s = /** @type {any} */ (saved);
+  if (Array.isArray(s.picks)) return { picks: s.picks };
+  if (Number.isSafeInteger(s.known) && s.known >= 1 && s.known <= steps.length + 1) {
+    return { picks: Array.from({ length: s.known - 1 }, (_, i) => (i + 1 < steps.length ? steps[i + 1].edge : steps[0].edge) + 1) };
+  }
+  return null;
+}
+
+// The picks replayed: how far the walk got, and the last pick's verdict.
+function replay(walk, picks) {
+  let known = 1;
+  let last = null;
+  for (const pick of picks) {
+    if (known > walk.steps.length) break; // picks after the walk closed are not steps
+    last = walk.stepCheck(known, pick - 1);
+    if (last.correct) known += 1;
+  }
+  return { known, last };
+}
+
+const readPicks = (answer, edgeCount) => {
+  if (!isPlainObject(answer)) return null;
+  const picks = /** @type {any} */ (answer).picks;
+  if (!Array.isArray(picks) || picks.length > 10000 || !picks.every((p) => Number.isInteger(p) && p >= 1 && p <= edgeCount)) return null;
+  return picks;
+};
+
+/**
+ * Grades a walk: { picks } replayed against the core's walk. Right: the walk is closed;
+ * partial: some steps found; a wrong last pick is said (where, the rule), never the edge.
+ * Pure: no DOM.
+ * @param {{ api: any, check: any, subject: any, answer: unknown }} parts
+ * @returns {import('./grading.js').GradeResult}
+ */
+export function gradeWalk({ api, check, subject, answer }) {
+  const walk = walkOf(api, check, subject);
+  const migrated = migrateWalkAnswer(answer, walk.steps);
+  const picks = migrated && readPicks(migrated, walk.edgeCount);
+  if (!picks) return unreadable(`the edges picked, in order: {picks: [edge numbers from 1 to ${walk.edgeCount}]}`);
+  const { known, last } = replay(walk, picks);
+  const n = walk.steps.length;
+  if (known > n) return { correct: true, findings: [], note: last ? `${last.reason}.` : `The walk ${walk.where} is closed.` };
+  if (!last) return { correct: false, incomplete: true, findings: [{ text: 'Pick the next edge first (click it, or use the arrow keys in the list).' }] };
+  if (last.correct) return { correct: false, partial: true, findings: [], note: `Right: ${last.reason}.` };
+  return { correct: false, partial: known > 1, findings: [findingOf(last.message, last.hint)], note: known > 1 ? `${known - 1} of ${n} steps found.` : undefined };
+}
+
+/** The worked walk: every step with the rule it reads. @param {{ api: any, check: any, subject: any }} parts */
+export function workedWalk({ api, check, subject }) {
+  const { steps, stepCheck } = walkOf(api, check, subject);
+  return { lines: steps.map((s, k) => `${label('edge', s.edge)} → ${stepCheck(k + 1, k + 1 < steps.length ? steps[k + 1].edge : steps[0].edge).reason}.`) };
+}
+
+/** @param {any} parts */
+export function createWalkKind({ api, check, subject, support, ctx }) {
+  const walk = walkOf(api, check, subject());
+  const { steps, edgeCount, where } = walk;
+
+  // Every pick checked, in order (edge numbers from 1); known: the walk shows steps[0..known-1];
+  // known = steps.length + 1 once the student has also said that the walk comes back to its
+  // first edge (the loop's "while").
+  /** @type {number[]} */
+  let picks = [];
   let known = 1;
   const path = h('p', { class: 'exercise-walk-path', 'aria-live': 'polite' });
   const prompt = h('p', { class: 'exercise-walk-prompt' });
@@ -52,31 +127,34 @@ export function createWalkKind({ api, check, subject, support, ctx }) {
     setChildren(path, `The walk ${where}: `, steps.slice(0, Math.min(known, steps.length)).map((s, i) => [i ? ' → ' : '', h('strong', {}, label('edge', s.edge))]), done ? ` → back to ${label('edge', steps[0].edge)}` : ' → ?');
     prompt.textContent = done ? 'The walk is closed: every edge is found.' : `Step ${known}: the walk is at ${label('edge', steps[known - 1].edge)}. Which edge comes next?`;
     for (const r of radios) { r.checked = false; r.disabled = done; }
+    // The drawing shows the walk's start only: a later frame of the lesson's walk draws the
+    // next edge dashed, which is the answer to the step asked.
     support.showWalk?.(ctx, check.around, check.element - 1);
   }
 
   return {
     root,
-    answer: () => ({ known }),
+    answer: () => ({ picks: [...picks] }),
     restore(saved) {
-      if (saved && Number.isSafeInteger(saved.known) && saved.known >= 1 && saved.known <= steps.length + 1) known = saved.known;
+      const migrated = migrateWalkAnswer(saved, steps);
+      const read = migrated && readPicks(migrated, edgeCount);
+      if (!read) return;
+      picks = read;
+      known = replay(walk, picks).known;
     },
     start: show,
     check() {
       if (known > steps.length) return { correct: true, incomplete: true, findings: [] };
       const picked = radios.find((r) => r.checked);
-      if (!picked) return { correct: false, findings: ['Pick the next edge first (click it, or use the arrow keys in the list).'], incomplete: true };
-      const given = Number(picked.value);
-      const r = stepCheck(known, given);
-      if (!r.correct) return { correct: false, findings: [`${r.reason[0].toUpperCase()}${r.reason.slice(1)}.`] };
-      known += 1;
-      const closed = known > steps.length;
-      show();
-      return { correct: closed, partial: !closed, findings: [], note: closed ? `${r.reason}.` : `Right: ${r.reason}.` };
+      if (!picked) return { correct: false, findings: [{ text: 'Pick the next edge first (click it, or use the arrow keys in the list).' }], incomplete: true };
+      picks = [...picks, Number(picked.value) + 1];
+      const result = gradeWalk({ api, check, subject: subject(), answer: { picks } });
+      const before = known;
+      known = replay(walk, picks).known;
+      if (known > before) show();
+      return result;
     },
-    worked() {
-      return { lines: steps.map((s, k) => `${label('edge', s.edge)} → ${stepCheck(k + 1, k + 1 < steps.length ? steps[k + 1].edge : steps[0].edge).reason}.`) };
-    },
-    reset() { known = 1; show(); },
+    worked: () => workedWalk({ api, check, subject: subject() }),
+    reset() { picks = []; known = 1; show(); },
   };
 }

@@ -7,7 +7,7 @@
 import { number, integer, boolean, oneOf, list, object, viewSchema } from '../../app/schema.js';
 import { FAMILY_IDS, familyInfo, usesKnots, isSpline } from './families.js';
 import { OVERLAYS, CONSTRUCTIONS, blendingLabels } from './names.js';
-import { computeCurveModel, constructionsFor } from './curve-model.js';
+import { computeCurveModel, constructionsFor, createModelCache } from './curve-model.js';
 import { drawCurve, drawInfluence, drawPolygon, drawHull, drawVector, drawComb, drawMarks, drawSamples, drawLevels, drawLegend, arrowScale } from '../../ui/curve-overlays.js';
 import { createPanels, updatePanels, drawPlots } from './panels.js';
 import { formatNumber } from '../../ui/mathml.js';
@@ -73,7 +73,8 @@ export const lesson = {
   compute(view, state, ctx) {
     const problem = lesson.checkState(state);
     if (problem) throw Object.assign(new Error(problem), { code: 'inconsistent-state' });
-    return computeCurveModel(ctx.api, state, view.cache);
+    // Headless (the exercise grader: view {}), the view gets its model cache here.
+    return computeCurveModel(ctx.api, state, view.cache ??= createModelCache());
   },
 
   setup(ctx) { return createPanels(ctx); },

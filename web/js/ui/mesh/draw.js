@@ -316,7 +316,9 @@ export function drawMesh(baseCache, selection, painter, model, state, ctx) {
   } else {
     drawBaseCached(baseCache, painter, model, state, ctx, plan);
   }
-  drawWalk(painter, model, state, ctx.colors);
+  // While a table is filled in, the walk is not drawn: its first edge is the vertex (face)
+  // table's entry, an answer. A walk being predicted shows its start only (mesh/exercise.js).
+  if (!ctx.ui?.exercise || ctx.ui.exercise === 'walk') drawWalk(painter, model, state, ctx.colors);
   drawElement(painter, model, selection.hover, ctx.colors, false);
   drawElement(painter, model, selection.pick, ctx.colors, true);
   // The edit player: the row the current assignment writes, on the canvas too.

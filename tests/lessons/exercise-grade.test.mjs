@@ -1,0 +1,154 @@
+// The five kinds' pure grading functions (the shared contract: grade<Kind>({api, check,
+// subject, answer}) -> {correct, partial?, incomplete?, findings: [{text, hint?}], note?}) run
+// in Node over the real core, with the subject the grader asks for (view {}, the model from
+// lesson.compute). Right answers come from the lectures (the slide's tables and walk, the
+// Bernstein polynomials), never from the app; a finding's text never holds the right value;
+// an answer of the wrong shape (an untrusted file) is a result, never an exception; the walk's
+// progress saved in its old shape ({known}) opens as the picks it stood for.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import { loadWingspline } from 'wingspline';
+import { lessons } from '../../web/js/lessons/registry.js';
+import { parseExercise, feedbackOf } from '../../web/js/exercise/format.js';
+import { readExerciseState } from '../../web/js/exercise/player.js';
+import { gradeTable, workedTable } from '../../web/js/exercise/kinds/table.js';
+import { gradeWalk, workedWalk, migrateWalkAnswer } from '../../web/js/exercise/kinds/walk.js';
+import { gradeJoint, workedJoint } from '../../web/js/exercise/kinds/joint.js';
+import { gradeValue, workedValue } from '../../web/js/exercise/kinds/value.js';
+import { gradeProperty, workedProperty } from '../../web/js/exercise/kinds/property.js';
+import { meshLesson } from '../../web/js/lessons/mesh/lesson.js';
+import { lesson as curvesLesson } from '../../web/js/lessons/curves/lesson.js';
+import { lesson as continuityLesson } from '../../web/js/lessons/continuity/lesson.js';
+import { lesson as comparisonLesson } from '../../web/js/lessons/comparison/lesson.js';
+import { lesson as surfacesLesson } from '../../web/js/lessons/surfaces/lesson.js';
+import { subdivisionLesson } from '../../web/js/lessons/subdivision/lesson.js';
+import { slideRows, SLIDE_VERTEX_EDGES, SLIDE_FACE_EDGES, slideWalk } from '../helpers/lecture-slide.mjs';
+
+const api = await loadWingspline();
+const LESSONS = Object.fromEntries([meshLesson, curvesLesson, continuityLesson, comparisonLesson, surfacesLesson, subdivisionLesson].map((l) => [l.id, l]));
+const lessonIds = lessons.map((l) => l.id);
+const GRADE = { table: gradeTable, walk: gradeWalk, joint: gradeJoint, value: gradeValue, property: gradeProperty };
+const WORKED = { table: workedTable, walk: workedWalk, joint: workedJoint, value: workedValue, property: workedProperty };
+const readText = (id) => fs.readFileSync(new URL(`../../web/exercises/${id}.json`, import.meta.url), 'utf8');
+
+// As the grader opens an exercise: headless, view {}, the model from the lesson's compute.
+function opened(id) {
+  const exercise = parseExercise(readText(id), { lessonIds });
+  const lesson = LESSONS[exercise.lesson];
+  const state = readExerciseState(lesson, exercise);
+  const model = lesson.compute({}, state, { api });
+  return { exercise, check: exercise.check, subject: lesson.exercise.subject({}, model, state, { api }) };
+}
+const shippedIds = fs.readdirSync(new URL('../../web/exercises/', import.meta.url)).filter((f) => f.endsWith('.json')).map((f) => f.slice(0, -5));
+
+test('every gallery exercise grades headless: a bad answer shape is a result, never an exception; the worked answer has lines', () => {
+  for (const id of shippedIds) {
+    const { check, subject } = opened(id);
+    for (const bad of [undefined, null, 42, 'x'.repeat(500), [], { picks: 'e1' }, { parametric: 'C1' }, { 'edge:0:start': 7 }]) {
+      const r = GRADE[check.kind]({ api, check, subject, answer: bad });
+      assert.equal(typeof r.correct, 'boolean', `${id}: ${JSON.stringify(bad)}`);
+      assert.ok(Array.isArray(r.findings), id);
+      for (const f of r.findings) assert.equal(typeof f.text, 'string', id);
+      if (check.kind !== 'property') assert.equal(r.correct, false, `${id}: ${JSON.stringify(bad)?.slice(0, 40)}`);
+    }
+    const worked = WORKED[check.kind]({ api, check, subject });
+    assert.ok(worked.lines.length >= 1 && worked.lines.every((l) => typeof l === 'string'), id);
+  }
+});
+
+test('the gallery\'s feedback: homework is level check; the two exercises whose answer the slides print are self-study (worked)', () => {
+  const levels = Object.fromEntries(shippedIds.map((id) => [id, feedbackOf(parseExercise(readText(id), { lessonIds })).level]));
+  assert.deepEqual(Object.entries(levels).filter(([, l]) => l !== 'check').map(([id]) => id).sort(), ['mesh-edge-list-foley', 'mesh-winged-edge-slide']);
+  // A file from before the levels keeps the worked answer it always offered.
+  const old = JSON.parse(readText('mesh-walk-around-v2'));
+  delete old.feedback;
+  assert.deepEqual(feedbackOf(parseExercise(JSON.stringify(old), { lessonIds })), { level: 'worked', hintAfter: 2 });
+  old.feedback = { level: 'hint', hintAfter: 21 };
+  assert.throws(() => parseExercise(JSON.stringify(old), { lessonIds }), /exercise\.feedback\.hintAfter/);
+  old.feedback = { level: 'answers' };
+  assert.throws(() => parseExercise(JSON.stringify(old), { lessonIds }), /exercise\.feedback\.level/);
+});
+
+test('table: the slide\'s tables typed as the slide prints them are right; a wrong cell is named without its value', () => {
+  const { check, subject } = opened('mesh-winged-edge-slide');
+  const rows = slideRows();
+  const FIELDS = ['start', 'end', 'left', 'right', 'startLeft', 'startRight', 'endLeft', 'endRight'];
+  const given = new Set(check.given ?? []);
+  const typed = (value) => (value === '-' ? 'none' : value);
+  const answer = {};
+  rows.forEach((r, i) => [r.S, r.E, r.L, r.R, r.SL, r.SR, r.EL, r.ER].forEach((v, k) => { if (!given.has(FIELDS[k])) answer[`edge:${i}:${FIELDS[k]}`] = typed(v); }));
+  SLIDE_VERTEX_EDGES.forEach((e, v) => { if (!given.has('vertexEdge')) answer[`vertex:${v}:edge`] = e; });
+  SLIDE_FACE_EDGES.forEach((e, f) => { if (!given.has('faceEdge')) answer[`face:${f}:edge`] = e; });
+  assert.deepEqual(gradeTable({ api, check, subject, answer }), { correct: true, findings: [] });
+  const wrong = { ...answer, 'edge:4:startLeft': 'e2' }; // e5's S:L is e3 on the slide
+  const r = gradeTable({ api, check, subject, answer: wrong });
+  assert.equal(r.correct, false);
+  assert.equal(r.findings.length, 1);
+  assert.match(r.findings[0].text, /^Row e5, column S:L: /);
+  assert.doesNotMatch(r.findings[0].text, /\be3\b/);
+  assert.doesNotMatch(r.findings[0].hint ?? '', /\be3\b/);
+  assert.deepEqual(gradeTable({ api, check, subject, answer: {} }).incomplete, true);
+  const unreadable = gradeTable({ api, check, subject, answer: { ...answer, 'edge:4:startLeft': 'x9' } });
+  assert.equal(unreadable.incomplete, true);
+  assert.match(unreadable.findings[0].text, /^e5 S:L: "x9" is not an edge/);
+});
+
+test('walk: the slide\'s walk around v2 replayed from its picks; a wrong pick names the step, never the edge', () => {
+  const { check, subject } = opened('mesh-walk-around-v2');
+  const walk = slideWalk('vertex', `v${check.element}`).map((e) => Number(e.slice(1)));
+  const picks = [...walk.slice(1), walk[0]];
+  assert.equal(gradeWalk({ api, check, subject, answer: { picks } }).correct, true);
+  const partial = gradeWalk({ api, check, subject, answer: { picks: picks.slice(0, 2) } });
+  assert.deepEqual([partial.correct, partial.partial, partial.findings], [false, true, []]);
+  const wrongEdge = [1, 2, 3, 4, 5, 6, 7].find((e) => e !== picks[1] && e !== walk[1]);
+  const wrong = gradeWalk({ api, check, subject, answer: { picks: [picks[0], wrongEdge] } });
+  assert.equal(wrong.correct, false);
+  assert.equal(wrong.findings.length, 1);
+  assert.match(wrong.findings[0].text, new RegExp(`^Step 2, from e${walk[1]}: `));
+  assert.doesNotMatch(`${wrong.findings[0].text} ${wrong.findings[0].hint}`, new RegExp(`\\be${picks[1]}\\b`));
+  // Picks after a wrong one still count once right: the grader replays every step.
+  assert.equal(gradeWalk({ api, check, subject, answer: { picks: [picks[0], wrongEdge, ...picks.slice(1)] } }).correct, true);
+  assert.equal(gradeWalk({ api, check, subject, answer: { picks: [0] } }).incomplete, true);
+  assert.equal(gradeWalk({ api, check, subject, answer: { picks: [] } }).incomplete, true);
+});
+
+test('walk: progress kept in the old shape {known} opens as the right picks it stood for (fixture)', () => {
+  const fixture = JSON.parse(fs.readFileSync(new URL('../fixtures/exercise-progress/walk-known-v1.json', import.meta.url), 'utf8'));
+  const { check, subject } = opened('mesh-walk-around-v2');
+  const walk = slideWalk('vertex', `v${check.element}`).map((e) => Number(e.slice(1)));
+  const steps = walk.map((e) => ({ edge: e - 1 }));
+  assert.deepEqual(migrateWalkAnswer(fixture.entry.answer, steps), { picks: walk.slice(1, fixture.entry.answer.known) });
+  const r = gradeWalk({ api, check, subject, answer: fixture.entry.answer });
+  assert.deepEqual([r.correct, r.partial], [false, true]);
+  // Closed walk in the old shape: every step right.
+  assert.equal(gradeWalk({ api, check, subject, answer: { known: walk.length + 1 } }).correct, true);
+  assert.equal(gradeWalk({ api, check, subject, answer: { known: walk.length + 2 } }).incomplete, true);
+});
+
+test('joint: the G1-not-C1 joint; a wrong class names the family, never the class', () => {
+  const { check, subject } = opened('continuity-classify-g1');
+  const wrong = gradeJoint({ api, check, subject, answer: { parametric: 2, geometric: 1, why: [] } });
+  assert.equal(wrong.correct, false);
+  for (const f of wrong.findings) assert.doesNotMatch(f.text, /[CG](⁻¹|⁰|¹|²)|\btrue\b|\bfalse\b/);
+  assert.ok(wrong.findings.some((f) => /parametric class/.test(f.text)));
+  assert.equal(gradeJoint({ api, check, subject, answer: { parametric: null, geometric: 1, why: [] } }).incomplete, true);
+  assert.equal(gradeJoint({ api, check, subject, answer: { parametric: 1, geometric: 1, why: ['tangent'] } }).incomplete, true);
+});
+
+test('value: the Bernstein value at u = 1/2 from the lecture\'s formula; a wrong number is said without the value, a wrong count plainly', () => {
+  const { check, subject } = opened('curves-bernstein-half');
+  // B_{i,3}(u) = C(3, i) u^i (1 - u)^(3 - i) (lecture 001).
+  const C = [1, 3, 3, 1][check.i];
+  const expected = C * check.u ** check.i * (1 - check.u) ** (3 - check.i);
+  assert.equal(gradeValue({ api, check, subject, answer: String(expected) }).correct, true);
+  const r = gradeValue({ api, check, subject, answer: String(expected + 0.5) });
+  assert.equal(r.correct, false);
+  assert.ok(!r.findings[0].text.includes(String(Number(expected.toPrecision(6)))), r.findings[0].text);
+  assert.equal(gradeValue({ api, check, subject, answer: '1, 2' }).findings[0].text, 'The answer is a single number; you typed two numbers.');
+  const mg = opened('comparison-hermite-mg');
+  const text = gradeValue({ api, check: mg.check, subject: mg.subject, answer: '3' }).findings[0].text;
+  assert.match(text, /first row, first column \(x\) of M G for the first segment/);
+  // The only numbers: the lectures' (000, 003) and the 1 of [u³ u² u 1].
+  assert.deepEqual([...new Set(text.match(/-?\d+(\.\d+)?/g))].sort(), ['000', '003', '1']);
+});
