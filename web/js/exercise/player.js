@@ -116,7 +116,7 @@ export function mountExercise({ ctx, lesson, view, exercise, key, hash = null, l
     if (leaving) return;
     // Which exercise this is, for a submission file (submission.js): the content hash tells
     // the version answered from the lecturer's copy.
-    progress = { ...progress, id: exercise.id ?? null, hash, kind: check.kind, answer: kind.answer(), state: keepsState ? ctx.state : null };
+    progress = { ...progress, id: exercise.id ?? null, hash, kind: check.kind, feedback: feedbackLevel.level, answer: kind.answer(), state: keepsState ? ctx.state : null };
     const kept = writeProgress(key, progress);
     if (kept === unsaved) { unsaved = !kept; showStatus(); }
   }
