@@ -164,7 +164,7 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
   assert.ok(Math.abs(mg - 1.4) < 1e-12, `the M G entry of the lecture's formula: ${mg}`);
   // The walk along F1 as the slide's tables give it, predicted from its second edge on, then
   // back to the first (the walk closes); picks are edge numbers as the page shows them (e5 = 5).
-  const walk = slideWalk('face', 1).map((e) => Number(e.slice(1)));
+  const walk = slideWalk('face', 'F1').map((e) => Number(e.slice(1)));
   const picks = [...walk.slice(1), walk[0]];
   fs.writeFileSync(path.join(uploads, 'ada', 'wingspline-submission-ada.json'), submissionText({ student: 'Ada Lovelace', exercises: [
     entry('comparison-hermite-mg', String(mg)), entry('mesh-walk-along-f1', { picks }, { status: 'solved' })] }));

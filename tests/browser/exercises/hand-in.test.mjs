@@ -32,7 +32,7 @@ test('answered exercises are exported in one submission file under the typed nam
   // The walk along F1, solved by pointer: the edges the slide's own rule gives, after the first.
   await page.goto(`${env.site.url}mesh.html#exercise=mesh-walk-along-f1`);
   await page.waitForSelector('#exercise-panel');
-  const walk = slideWalk('face', 1).map((e) => Number(e.slice(1)));
+  const walk = slideWalk('face', 'F1').map((e) => Number(e.slice(1)));
   for (const e of [...walk.slice(1), walk[0]]) {
     await page.locator(`label[for="exercise-edge-${e}"]`).click();
     await page.locator('#exercise-check').click();
