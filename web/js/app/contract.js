@@ -184,13 +184,15 @@
  * the kinds of check its drawing gives (exercise/format.js KINDS); `subject`: what a check
  * is asked of, from the lesson's model (exercise/subjects.js lists the shapes); `keepsState`:
  * the kinds whose answer is the drawing itself (kept with the exercise's progress);
- * `showWalk`: the drawing follows a walk being predicted; `suggest`: the authoring dialog's
+ * `showWalk`: the drawing follows a walk being predicted; `markSubdividePoint`: the drawing
+ * marks the new point a subdivide exercise asks about; `suggest`: the authoring dialog's
  * starting check, hidden panels and question for a kind, from the view shown.
  * @typedef {{
  *   kinds: string[],
  *   subject(view: View, model: Model, state: State, ctx: Ctx): { mesh?: any, curve?: any, curves?: Object<string, any>, joints?: Array<{ a: any, b: any }>, patch?: any },
  *   keepsState?: string[],
  *   showWalk?: (ctx: Ctx, around: string, element: number) => void,
+ *   markSubdividePoint?: (ctx: Ctx, painter: Painter, colors: any, asked: { corners: number[], type: string, label: string }) => void,
  *   suggest?: (kind: string, state: State, asked: { api: any, subject: any }) => { check: any, hide: string[], question: string },
  * }} ExerciseSupport
  */
