@@ -355,7 +355,11 @@ std::vector<SubdivideFinding> check_subdivide_mask(const WingedEdgeMesh& mesh, S
             out.push_back({"wrong-weight", row, v, kNone, text, hint});
         }
     }
-    for (std::size_t i = 0; i < s.vertices.size(); ++i) {
+    // Missing points by their numbers (v1 before v5), as the student reads the drawing.
+    std::vector<std::size_t> order(s.vertices.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.vertices[a] < s.vertices[b]; });
+    for (std::size_t i : order) {
         const int32_t v = s.vertices[i];
         if (first_row[v] != kNone) continue;
         std::string text = vertex_label(v) + " is missing: " + where + " also averages " + vertex_label(v);

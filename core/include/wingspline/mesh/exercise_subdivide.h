@@ -89,7 +89,7 @@ struct SubdivideMaskAnswer {
 
 // Checks a mask answer against exact_stencil (throws as it does; "invalid-answer" when
 // the rows and weights differ in number or the rule is not a PointRule). Findings in order:
-// the mask, then the rows, then the missing points.
+// the mask, then the rows, then the missing points (by vertex number).
 std::vector<SubdivideFinding> check_subdivide_mask(const WingedEdgeMesh& mesh, Scheme scheme, NewPoint point,
                                                    int32_t element, const SubdivideMaskAnswer& answer);
 
