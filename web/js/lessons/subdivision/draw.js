@@ -226,11 +226,12 @@ export function drawScene(painter, model, state, ctx) {
   } else {
     drawFaces(painter, model, colors);
   }
-  drawOldEdges(painter, model, colors);
-  drawExtraordinary(painter, model, colors);
-  // A subdivide exercise asks for the masks: the drawing names the old vertices and never
-  // draws a mask's weights.
+  // A subdivide exercise asks for the masks: the drawing names the old vertices and draws
+  // neither a mask's weights nor the rings of extraordinary vertices (they are interior
+  // ones: the ring would tell an interior mask from a boundary one).
   const asking = ctx.ui.exercise === 'subdivide';
+  drawOldEdges(painter, model, colors);
+  if (!asking) drawExtraordinary(painter, model, colors);
   drawVertexLabels(painter, model.oldProjected ?? model.projected, colors, asking ? EXERCISE_LABEL_VERTICES : LABEL_VERTICES);
   drawControl(painter, model, ctx);
   drawNewPoints(painter, model, colors);
