@@ -151,3 +151,31 @@ test('the worked answer gives the mask and every weight; the answer typed is kep
   assert.match(lines[0], /The edge point of e2 is made by the interior edge mask \(Loop\)/);
   for (const [v, w] of PLAYS['subdivision-loop-edge-point-e2'].right.rows) assert.ok(lines.some((l) => l.startsWith(`${v}: ${w}`)), `${v}: ${w} in ${lines.join(' | ')}`);
 });
+
+test('Make an exercise from the view: the edge point the drawing shows becomes a mask question that plays', async () => {
+  const page = await env.openLesson(`${env.site.url}subdivision.html`);
+  // The tetrahedron under Loop: Next phase skips the (empty) face points and shows the edge
+  // points, the first one's mask drawn.
+  await page.getByRole('button', { name: /Next phase/ }).click();
+  await page.locator('[data-action="make-exercise"]').click();
+  await page.locator('#author-kind').selectOption('subdivide');
+  assert.equal(await page.locator('#author-field-ask').inputValue(), 'mask');
+  assert.equal(await page.locator('#author-field-point-type').inputValue(), 'edge');
+  assert.equal(await page.locator('#author-field-point-element').inputValue(), '1');
+  await page.locator('#author-copy-link').click();
+  await page.waitForSelector('#author-link:not([hidden])');
+  assert.equal(await page.locator('.author-problem').innerText(), '');
+  const played = await env.openLesson(await page.locator('#author-link').inputValue());
+  assert.match(await played.locator('#exercise-question').innerText(), /new edge point from e1/);
+  // The drawing shows the step's new points but no weight of the mask.
+  const labels = await played.evaluate(() => window.wingspline.labelRects().map((r) => r.text));
+  assert.ok(labels.includes('edge point of e1?'), labels.join(' '));
+  assert.equal(labels.some((t) => /\d\/\d|0\.\d/.test(t)), false, labels.join(' '));
+  // The tetrahedron's edges are interior: 3/8 of each end, 1/8 of each other corner.
+  await answerByPointer(played, { mask: 'edge-interior', rows: [['v1', '3/8'], ['v2', '3/8'], ['v3', '1/8'], ['v4', '1/8']] });
+  const verdict = await played.locator('#exercise-feedback').innerText();
+  // (which two corners are e1's ends is the core's numbering: either it is right, or the
+  // feedback names the wrong weights without a value)
+  if (!/✓ Right/.test(verdict)) for (const value of ['3/8', '1/8']) assert.ok(!verdict.includes(value), verdict);
+  assert.deepEqual(played.problems, []);
+});

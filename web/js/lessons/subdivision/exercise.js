@@ -32,15 +32,21 @@ export const subdivisionExercise = {
 
 const SCHEME_NAMES = { loop: 'Loop', 'catmull-clark': 'Catmull-Clark' };
 
-// The new point chosen in the drawing (state.focus, numbered as the core numbers one step's
-// result: vertex points, then edge points, then face points), or the counts when none is.
+// The new point whose mask the drawing shows (as the lesson's compute picks it: the point
+// chosen, state.focus, if its phase is shown, else the first point of the newest phase
+// shown), numbered as the core numbers one step's result (vertex points 0..V-1, edge points
+// V + e, face points V + E + f); the counts when no new point is shown.
 function suggestSubdivide(state, { api, subject }) {
   const { mesh, scheme } = subject.subdivision;
   const name = SCHEME_NAMES[scheme];
   const hide = ['step-panel', 'tables-panel'];
-  if (state.phase > 0 && state.focus >= 0) {
-    const old = api.subdivisionCounts(mesh, { scheme, steps: 0 });
-    const f = state.focus;
+  const old = api.subdivisionCounts(mesh, { scheme, steps: 0 });
+  // The phases in the core's order (face points, edge points, vertex points): first point, count.
+  const phases = [[old.vertices + old.edges, scheme === 'loop' ? 0 : old.faces], [old.vertices, old.edges], [0, old.vertices]];
+  const shown = phases.slice(0, state.phase).filter(([, count]) => count > 0);
+  const chosen = shown.some(([first, count]) => state.focus >= first && state.focus < first + count);
+  const f = chosen ? state.focus : shown.length ? shown[shown.length - 1][0] : -1;
+  if (f >= 0) {
     const point = f < old.vertices ? { type: 'vertex', element: f + 1 }
       : f < old.vertices + old.edges ? { type: 'edge', element: f - old.vertices + 1 }
         : { type: 'face', element: f - old.vertices - old.edges + 1 };
