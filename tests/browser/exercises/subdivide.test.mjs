@@ -8,8 +8,10 @@
 // answer is shown, neither the feedback nor any canvas label holds a right value.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import { createRequire } from 'node:module';
 import { loadWingspline } from 'wingspline';
-import { useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { useSiteAndBrowser, trap } from '../../helpers/browser.mjs';
 
 const env = useSiteAndBrowser();
 const api = await loadWingspline();
@@ -179,3 +181,30 @@ test('Make an exercise from the view: the edge point the drawing shows becomes a
   if (!/✓ Right/.test(verdict)) for (const value of ['3/8', '1/8']) assert.ok(!verdict.includes(value), verdict);
   assert.deepEqual(played.problems, []);
 });
+
+const axeSource = fs.readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+async function audit(page) {
+  await page.evaluate(axeSource);
+  const result = await page.evaluate(() => window.axe.run(document, { resultTypes: ['violations'] }));
+  return result.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical')
+    .map((v) => `${v.id} (${v.impact}): ${v.help} at ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(', ')}`);
+}
+
+for (const scheme of ['light', 'dark']) {
+  for (const id of ['subdivision-loop-edge-point-e2', 'subdivision-catmull-clark-cube-counts']) {
+    test(`axe (${scheme}): ${id} as opened, after a wrong check and with the worked answer; every control named`, async () => {
+      const context = await env.newContext({ viewport: { width: 1280, height: 800 }, colorScheme: scheme });
+      const page = trap(await context.newPage());
+      await page.goto(`${env.site.url}subdivision.html#exercise=${id}`);
+      await page.waitForSelector('#exercise-panel');
+      assert.deepEqual(await audit(page), [], 'as opened');
+      const unnamed = await page.evaluate(() => [...document.querySelectorAll('#exercise-panel input, #exercise-panel button, #exercise-panel select')]
+        .filter((el) => !(el.labels?.length || el.getAttribute('aria-label') || el.textContent.trim())).map((el) => el.outerHTML.slice(0, 80)));
+      assert.deepEqual(unnamed, []);
+      await (id.endsWith('counts') ? answerByPointer(page, { counts: ['1', '2', '3'] }) : answerByPointer(page, PLAYS[id].wrong));
+      await page.locator('#exercise-show-worked').click();
+      assert.deepEqual(await audit(page), [], 'after a check and the worked answer');
+      assert.deepEqual(page.problems, []);
+    });
+  }
+}
