@@ -270,6 +270,7 @@ TEST_CASE("Random meshes: every stencil sums to exactly 1 and gives subdivide()'
         if (!loop)
             for (int32_t f = 0; f < m.face_count(); ++f) check_point(NewPoint::Face, f, V + E + f);
     }
+    CAPTURE(points, irrational);
     CHECK(points > 2000);
     CHECK(irrational > 0); // the random Loop meshes do have vertices of valence 5 or 7
 }
@@ -366,6 +367,7 @@ TEST_CASE("The mask check: the right answer passes; every wrong weight, missing 
             REQUIRE(fs[0].code == "no-mask");
         }
     }
+    CAPTURE(corruptions);
     CHECK(corruptions > 3000);
 }
 
