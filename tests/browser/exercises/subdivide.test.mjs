@@ -130,6 +130,11 @@ for (const [id, play] of Object.entries(PLAYS)) {
       assert.match(wrong, /Not yet/);
       assert.match(wrong, play.said);
       for (const value of valuesOf(play)) assert.ok(!wrong.includes(value), `the feedback shows ${value}: ${wrong}`);
+      // Nor does the page anywhere else (the typed answers are in inputs, not in its text).
+      if (!play.right.counts) {
+        const text = await page.locator('body').innerText();
+        for (const value of valuesOf(play)) assert.ok(!text.includes(value), `the page shows ${value}`);
+      }
       assert.equal(await page.locator('#exercise-status').getAttribute('data-status'), 'started');
       await answer(page, play.right);
       assert.match(await page.locator('#exercise-feedback').innerText(), /✓ Right\./);

@@ -189,7 +189,7 @@
  * starting check, hidden panels and question for a kind, from the view shown.
  * @typedef {{
  *   kinds: string[],
- *   subject(view: View, model: Model, state: State, ctx: Ctx): { mesh?: any, curve?: any, curves?: Object<string, any>, joints?: Array<{ a: any, b: any }>, patch?: any },
+ *   subject(view: View, model: Model, state: State, ctx: Ctx): { mesh?: any, curve?: any, curves?: Object<string, any>, joints?: Array<{ a: any, b: any }>, patch?: any, subdivision?: any },
  *   keepsState?: string[],
  *   showWalk?: (ctx: Ctx, around: string, element: number) => void,
  *   markSubdividePoint?: (ctx: Ctx, painter: Painter, colors: any, asked: { corners: number[], type: string, label: string }) => void,

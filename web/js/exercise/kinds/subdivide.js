@@ -35,6 +35,8 @@ const MAX_TEXT = 40;
 // The digits a typed number may have (beyond them a double is not exact).
 const MAX_DIGITS = 15;
 const PREFIX = { vertex: 'v', edge: 'e', face: 'F' };
+// The page's examples of a weight are p/q and 2/7, never a fraction a mask of the lectures'
+// meshes has (3/8, 1/8, 1/16, ...): an example on the page must not be an answer.
 
 /** "the edge point of e3" */
 export function pointWords(point) {
@@ -80,7 +82,7 @@ export function readFraction(raw) {
     if (digits.length > MAX_DIGITS) return { problem: `${shown} has more digits than a weight needs` };
     return { num: (decimal[1] === '-' ? -1 : 1) * Number(digits || '0'), den: 10 ** (decimal[3]?.length ?? 0) };
   }
-  return { problem: `${shown} is not a fraction (write 3/8, 1/16 or 0.375)` };
+  return { problem: `${shown} is not a fraction (write it as p/q, such as 2/7, a whole number or a decimal such as 0.25)` };
 }
 
 function isText(x) {
@@ -120,7 +122,7 @@ function gradeMask(api, check, mesh, answer) {
     const where = `Row ${i + 1}`;
     if (!row.point.trim() && !row.weight.trim()) { problems.push(`${where} is empty: fill it in or remove it.`); return null; }
     if (!row.point.trim()) { problems.push(`${where}: name the old point (e.g. v3).`); return null; }
-    if (!row.weight.trim()) { problems.push(`${where}: type the weight of ${row.point.trim().slice(0, 20)} (e.g. 1/8).`); return null; }
+    if (!row.weight.trim()) { problems.push(`${where}: type the weight of ${row.point.trim().slice(0, 20)} as a fraction p/q.`); return null; }
     const p = readOldPoint(row.point);
     const w = readFraction(row.weight);
     if ('problem' in p) { problems.push(`${where}: ${p.problem}.`); return null; }
@@ -268,7 +270,7 @@ function maskForm(check) {
   function addRow(point, weight) {
     if (rows.length >= MAX_ROWS) return;
     const p = /** @type {HTMLInputElement} */ (h('input', { type: 'text', class: 'exercise-old-point', autocomplete: 'off', spellcheck: 'false', placeholder: 'v1', value: point, size: 5 }));
-    const w = /** @type {HTMLInputElement} */ (h('input', { type: 'text', class: 'exercise-weight', autocomplete: 'off', spellcheck: 'false', inputmode: 'text', placeholder: '1/8', value: weight, size: 8 }));
+    const w = /** @type {HTMLInputElement} */ (h('input', { type: 'text', class: 'exercise-weight', autocomplete: 'off', spellcheck: 'false', inputmode: 'text', placeholder: 'p/q', value: weight, size: 8 }));
     const row = { tr: h('tr', {}), point: p, weight: w };
     const remove = h('button', { type: 'button', class: 'exercise-remove-row', onclick: () => removeRow(row) }, '✕');
     setChildren(row.tr, h('td', {}, p), h('td', {}, w), h('td', {}, remove));
@@ -312,7 +314,7 @@ function maskForm(check) {
       h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'Old point'), h('th', { scope: 'col' }, 'Weight'), h('th', { scope: 'col' }, h('span', { class: 'visually-hidden' }, 'Remove')))),
       body),
     h('p', {}, addButton),
-    h('p', { class: 'hint' }, 'Name old points as the drawing labels them (v1, v2, …) and type exact fractions (3/8). Alt+N adds a row, Alt+Delete removes the row you are in.'));
+    h('p', { class: 'hint' }, 'Name old points as the drawing labels them (v1, v2, …) and type exact fractions p/q. Alt+N adds a row, Alt+Delete removes the row you are in.'));
   return {
     root,
     answer: () => ({ mask: radios.find((r) => r.checked)?.value ?? null, rows: rows.map((r) => ({ point: r.point.value.slice(0, MAX_TEXT), weight: r.weight.value.slice(0, MAX_TEXT) })) }),
