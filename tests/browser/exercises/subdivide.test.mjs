@@ -178,12 +178,18 @@ test('Make an exercise from the view: the edge point the drawing shows becomes a
   const labels = await played.evaluate(() => window.wingspline.labelRects().map((r) => r.text));
   assert.ok(labels.includes('edge point of e1?'), labels.join(' '));
   assert.equal(labels.some((t) => /\d\/\d|0\.\d/.test(t)), false, labels.join(' '));
-  // The tetrahedron's edges are interior: 3/8 of each end, 1/8 of each other corner.
-  await answerByPointer(played, { mask: 'edge-interior', rows: [['v1', '3/8'], ['v2', '3/8'], ['v3', '1/8'], ['v4', '1/8']] });
-  const verdict = await played.locator('#exercise-feedback').innerText();
-  // (which two corners are e1's ends is the core's numbering: either it is right, or the
-  // feedback names the wrong weights without a value)
-  if (!/✓ Right/.test(verdict)) for (const value of ['3/8', '1/8']) assert.ok(!verdict.includes(value), verdict);
+  // The tetrahedron's edges are interior: 3/8 of each end, 1/8 of each other corner. Which
+  // corners are e1's ends is the question's data: the first row of the edge table of the
+  // tetrahedron as the core builds it from its faces (the drawing's numbering).
+  const built = api.buildMesh(api.generateMesh('tetrahedron'));
+  const { edges } = built.wingedEdgeArrays();
+  built.dispose();
+  const ends = [edges[0], edges[1]];
+  const rows = [0, 1, 2, 3].map((v) => [`v${v + 1}`, ends.includes(v) ? '3/8' : '1/8']);
+  await answerByPointer(played, { mask: 'edge-boundary', rows });
+  assert.match(await played.locator('#exercise-feedback').innerText(), /The mask chosen is not the one that makes the edge point of e1/);
+  await answerByPointer(played, { mask: 'edge-interior', rows });
+  assert.match(await played.locator('#exercise-feedback').innerText(), /✓ Right\./);
   assert.deepEqual(played.problems, []);
 });
 
