@@ -184,3 +184,26 @@ test('the check is read with a sentence naming the field: a mask question needs 
   assert.match(refused((c) => { c.scheme = 'butterfly'; }), /exercise\.check\.scheme/);
   assert.equal(refused((c) => { c.ask = 'counts'; delete c.point; c.steps = 2; }), 'read');
 });
+
+test('3,000 random answers, typed or damaged, are graded without an exception, each finding a sentence', () => {
+  // A seeded generator (mulberry32), so a failure can be replayed.
+  let seed = 20261127;
+  const random = () => { seed = (seed + 0x6D2B79F5) | 0; let t = seed; t = Math.imul(t ^ (t >>> 15), t | 1); t ^= t + Math.imul(t ^ (t >>> 7), t | 61); return ((t ^ (t >>> 14)) >>> 0) / 4294967296; };
+  const pick = (list) => list[Math.floor(random() * list.length)];
+  const pieces = ['v', 'V', '1', '2', '3', '5', '9', '0', '/', '.', '-', ' ', 'x', '8', '16', '99999999999'];
+  const typed = () => Array.from({ length: Math.floor(random() * 6) }, () => pick(pieces)).join('');
+  const exercises = ['subdivision-loop-edge-point-e2', 'subdivision-loop-vertex-point-v2', 'subdivision-catmull-clark-cube-corner', 'subdivision-catmull-clark-cube-counts'].map(opened);
+  let correct = 0;
+  for (let i = 0; i < 3000; i += 1) {
+    const { check, subject } = pick(exercises);
+    const answer = check.ask === 'counts'
+      ? { vertices: typed(), edges: typed(), faces: random() < 0.1 ? 7 : typed() }
+      : { mask: pick([null, 'edge-interior', 'edge-boundary', 'vertex-interior', 'vertex-boundary', 'face-point', 'other']), rows: Array.from({ length: Math.floor(random() * 6) }, () => (random() < 0.05 ? null : { point: typed(), weight: typed() })) };
+    const r = gradeSubdivide({ api, check, subject, answer });
+    assert.equal(typeof r.correct, 'boolean');
+    assert.ok(Array.isArray(r.findings));
+    if (!r.correct) assert.ok(r.findings.length > 0 && r.findings.every((f) => typeof f.text === 'string' && f.text.length > 10), JSON.stringify(r));
+    correct += r.correct;
+  }
+  assert.equal(correct, 0); // (random strings do not make a right answer)
+});
