@@ -47,7 +47,7 @@ export type WingsplineErrorCode =
   // subdivision
   | 'unknown-scheme' | 'not-a-triangle-mesh' | 'mesh-has-gaps'
   // checking a student's tables (exercise kind 1) and walk steps (kind 2)
-  | 'invalid-answer' | 'invalid-faces' | 'invalid-step' | 'no-walk'
+  | 'invalid-answer' | 'invalid-faces' | 'invalid-step' | 'no-walk' | 'no-exact-mask'
   // curves
   | 'unknown-curve-kind' | 'unknown-basis' | 'unknown-form' | 'unsupported-curve-kind' | 'invalid-dimension' | 'invalid-points'
   | 'non-finite-input' | 'non-finite-result' | 'too-few-points' | 'degree-out-of-range' | 'wrong-knot-count'
@@ -651,6 +651,22 @@ export interface WorkedWingedEdgeAnswer {
   faceEdges: Int32Array;
 }
 
+/** The masks of one subdivision step, as the core names them. */
+export type SubdivideMask = 'face-point' | 'edge-interior' | 'edge-boundary' | 'vertex-interior' | 'vertex-boundary';
+/** A new point of one step: the vertex (edge, face) point of old element `element` (0-based). */
+export interface SubdividePoint { type: 'vertex' | 'edge' | 'face'; element: number }
+/** A stencil: weights[i] (exact, lowest terms, den > 0) of old vertex vertices[i]; they sum to 1. */
+export interface SubdivideStencil {
+  rule: SubdivideMask;
+  vertices: Int32Array;
+  weights: Array<{ num: number; den: number }>;
+  /** why vertices[i] is in it: "an end of e3" */
+  roles: string[];
+}
+/** One thing wrong: code no-mask | wrong-mask | not-a-vertex | repeated-point | not-in-stencil | wrong-weight | missing-point | wrong-count; row (0-based, -1 none), vertex (-1 none), count (0 V, 1 E, 2 F; -1 none). */
+export interface SubdivideFinding { code: string; row: number; vertex: number; count: number; text: string; hint: string }
+export interface SubdivideCheck { correct: boolean; findings: SubdivideFinding[] }
+
 /** The tables checkMeshTableAnswer checks (exercise kind 1). */
 export type MeshExerciseTable = 'winged-edge' | 'faces' | 'edge-list' | 'adjacency';
 /** Lecture 000's face table: per face (the mesh's numbering) its corners, counter-clockwise, any first. -2 = blank. */
@@ -756,6 +772,16 @@ export interface WingsplineApi {
   checkMeshTableAnswer<T extends MeshExerciseTable>(mesh: ExerciseMesh, table: T, answer: MeshTableAnswers[T]): MeshTableCheck<T>;
   /** Checks one predicted step of the CCW walk (exercise kind 2). */
   checkWalkStep(mesh: WalkExerciseMesh, question: WalkStepQuestion): WalkStepCheck;
+  /** The masks a subdivide exercise chooses among (the core's rule names). */
+  readonly subdivideMasks: readonly SubdivideMask[];
+  /** The exact stencil of one new point of a step (docs/api-mesh.md, "Checking a subdivision step by hand"). */
+  subdivideStencil(mesh: ExerciseMesh, question: { scheme: SubdivisionScheme; point: SubdividePoint }): SubdivideStencil;
+  /** Checks a student's mask and weights exactly; no finding holds the right value. */
+  checkSubdivideMask(mesh: ExerciseMesh, answer: { scheme: SubdivisionScheme; point: SubdividePoint; mask: SubdivideMask | null; rows: ReadonlyArray<{ vertex: number; num: number; den: number }> }): SubdivideCheck;
+  /** Checks V, E, F typed for the mesh after `steps` (1..4) steps; null = left blank. */
+  checkSubdivideCounts(mesh: ExerciseMesh, answer: { scheme: SubdivisionScheme; steps?: number; vertices: number | null; edges: number | null; faces: number | null }): SubdivideCheck;
+  /** V, E, F after `steps` (0..16) steps of the exercise's mesh. */
+  subdivisionCounts(mesh: ExerciseMesh, options: { scheme: SubdivisionScheme; steps?: number }): { vertices: number; edges: number; faces: number };
 
   // ---- curves (docs/api-curves.md)
   /** form: 'descending' (lectures 000, 003; the default), 'ascending' (002) or 'transposed' (001). */

@@ -84,6 +84,7 @@ const std::vector<ErrorCodeInfo>& error_codes() {
         {"no-walk", "exercises", "a walk question about an element with no walk (an isolated vertex)"},
         {"unknown-quantity", "exercises", "a curve exercise quantity the checker does not know"},
         {"unknown-property", "exercises", "a curve exercise property the checker does not know"},
+        {"no-exact-mask", "exercises", "a subdivide question about a new point with no exact mask (a Loop face point, an isolated vertex, Loop's beta at a valence other than 3, 4 or 6)"},
         {"degenerate-curve", "exercises", "a curve exercise whose curve has no well-defined answer (zero length, zero tangent)"},
         // curves
         {"unknown-curve-kind", "curves", "a curve kind other than the seven"},

@@ -11,7 +11,7 @@ import { facesToCsr } from './mesh-api.js';
 // Cell values with a meaning of their own.
 const ANSWER_CELLS = Object.freeze({ none: -1, blank: -2 });
 
-function exerciseMesh(mesh) {
+export function exerciseMesh(mesh) {
   if (mesh === null || typeof mesh !== 'object') fail('invalid-argument', 'expected the exercise mesh {faces, vertexCount}');
   let csr;
   if (mesh.faces === undefined && mesh.faceOffsets !== undefined) {

@@ -25,6 +25,11 @@ function fieldsOf(kind, subject) {
   }
   if (kind === 'walk') return [pick('around', 'Walk', { vertex: 'around a vertex', face: 'along a face' }), num('element', 'Vertex or face number (1-based)', { min: 1, step: 1 })];
   if (kind === 'joint') return [num('joint', 'Joint (1 = the first)', { min: 1, step: 1 })];
+  if (kind === 'subdivide') {
+    return [pick('scheme', 'Scheme (the drawing\'s)', { loop: 'Loop', 'catmull-clark': 'Catmull-Clark' }), pick('ask', 'Ask', { mask: 'the mask and weights of a new point', counts: 'the counts V, E, F after the step' }),
+      pick('point.type', 'New point (mask)', { vertex: 'the vertex point of', edge: 'the edge point of', face: 'the face point of' }), num('point.element', 'Old element (1-based: v1, e1, F1)', { min: 1, step: 1 }),
+      num('steps', 'Steps (counts; empty: 1)', { min: 1, max: 4, step: 1 })];
+  }
   if (kind === 'value') {
     const quantities = Object.fromEntries(Object.entries(QUANTITIES).filter(([k]) => (k === 'patch-point' ? Boolean(subject.patch) : !subject.patch)).map(([k, v]) => [k, v.label]));
     return [pick('quantity', 'Value to compute', quantities),
@@ -77,7 +82,7 @@ export function openAuthorDialog({ ctx, lesson, view, message }) {
     const suggestion = support.suggest?.(kind, ctx.state, { api: ctx.api, subject }) ?? { check: { kind }, hide: [], question: '' };
     inputs = new Map();
     const check = suggestion.check;
-    const valueOf = (name) => (name.startsWith('property.') ? (name === 'property.x' ? check.property?.point?.[0] : name === 'property.y' ? check.property?.point?.[1] : check.property?.[name.slice(9)]) : check[name]);
+    const valueOf = (name) => (name.startsWith('point.') ? check.point?.[name.slice(6)] : name.startsWith('property.') ? (name === 'property.x' ? check.property?.point?.[0] : name === 'property.y' ? check.property?.point?.[1] : check.property?.[name.slice(9)]) : check[name]);
     setChildren(fieldBox, fieldsOf(kind, subject).map((f) => {
       const id = `author-field-${f.name.replace('.', '-')}`;
       const current = valueOf(f.name);
@@ -111,8 +116,10 @@ export function openAuthorDialog({ ctx, lesson, view, message }) {
       const f = fieldsOf(kind, subject).find((x) => x.name === name);
       const value = f.type === 'number' ? Number(raw) : f.type === 'list' ? raw.split(/[\s,]+/).filter(Boolean) : raw;
       if (name.startsWith('property.')) property[name.slice(9)] = value;
+      else if (name.startsWith('point.')) check.point = { ...check.point, [name.slice(6)]: value };
       else check[name] = value;
     }
+    if (kind === 'subdivide') delete check[check.ask === 'counts' ? 'point' : 'steps'];
     if (kind === 'value') for (const name of VALUE_FIELDS) if (!QUANTITIES[check.quantity]?.fields.includes(name)) delete check[name];
     if (kind === 'property') {
       if (property.x !== undefined || property.y !== undefined) { property.point = [property.x, property.y]; delete property.x; delete property.y; }

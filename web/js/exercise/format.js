@@ -5,7 +5,7 @@
 // dialog (author.js), the gallery (pages/gallery.js) and the tests all read exercises here.
 //
 // An exercise is a lesson state (what the drawing shows), the panels hidden while it is
-// answered, a question, and what is checked (`check`, one of the five kinds of KINDS). Whole
+// answered, a question, and what is checked (`check`, one of the kinds of KINDS). Whole
 // numbers in `check` are written as the lectures write them: vertices, edges, faces, joints,
 // segments and matrix rows/columns from 1 (v1, e1, F1, the first joint); blending functions
 // and control points from 0 (B₀,₃, P₀, Q₀).
@@ -61,6 +61,7 @@ export const KINDS = Object.freeze({
   joint: { label: 'Classify a joint (Cᵏ and Gᵏ) and say why' },
   value: { label: 'Compute a value by hand' },
   property: { label: 'Move control points until a property holds' },
+  subdivide: { label: 'One subdivision step by hand' },
 });
 
 // What a check tells the student (the author chooses; docs/exercises.md, "Feedback levels"):
@@ -106,7 +107,23 @@ const CHECKS = {
     family: text({ maxLength: 40 }),
   }, ['i', 'u', 'v', 'segment', 'row', 'col', 'index', 'family']],
   property: [{ kind: oneOf('property'), property: (v, path) => readProperty(v, path) }, []],
+  subdivide: [{
+    kind: oneOf('subdivide'), scheme: oneOf('loop', 'catmull-clark'), ask: oneOf('mask', 'counts'),
+    point: object({ type: oneOf('vertex', 'edge', 'face'), element: ordinal }), steps: integer({ min: 1, max: 4 }),
+  }, ['point', 'steps']],
 };
+
+// Kind subdivide: a mask question names its new point (and no steps: it is about one step);
+// a counts question names no point. Loop makes no face points.
+function readSubdivide(check, path) {
+  if (check.ask === 'mask') {
+    if (!check.point) throw new SchemaError(`${path}.point`, 'is missing (a mask question names the new point: {type: "vertex", "edge" or "face", element})');
+    if (check.steps !== undefined) throw new SchemaError(`${path}.steps`, 'is only for ask "counts" (a mask question is about one step)');
+    if (check.scheme === 'loop' && check.point.type === 'face') throw new SchemaError(`${path}.point.type`, 'is "face", but Loop\'s scheme makes no face points (use vertex or edge)');
+  } else if (check.point) {
+    throw new SchemaError(`${path}.point`, 'is only for ask "mask" (a counts question is about the whole mesh)');
+  }
+}
 
 function readProperty(v, path) {
   const kind = v && typeof v === 'object' ? v.kind : undefined;
@@ -134,6 +151,7 @@ function readCheck(v, path) {
       if (check[field] === undefined) throw new SchemaError(`${path}.${field}`, `is missing (${QUANTITIES[check.quantity].label} needs ${QUANTITIES[check.quantity].fields.join(', ')})`);
     }
   }
+  if (kind === 'subdivide') readSubdivide(check, path);
   if (kind === 'table') {
     const all = TABLES[check.table].columns;
     if (all.length && all.every((c) => check.given?.includes(c))) throw new SchemaError(`${path}.given`, 'gives every column: nothing is left to fill in');

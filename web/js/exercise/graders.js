@@ -8,6 +8,7 @@ import { gradeWalk } from './kinds/walk.js';
 import { gradeJoint } from './kinds/joint.js';
 import { gradeValue } from './kinds/value.js';
 import { gradeProperty } from './kinds/property.js';
+import { gradeSubdivide } from './kinds/subdivide.js';
 
 /** @type {Readonly<Record<string, (parts: { api: any, check: any, subject: any, answer: any }) => { correct: boolean, partial?: boolean, incomplete?: boolean, findings: Array<{ text: string, hint?: string } | string>, note?: string }>>} */
 export const GRADERS = Object.freeze({
@@ -16,4 +17,5 @@ export const GRADERS = Object.freeze({
   joint: gradeJoint,
   value: gradeValue,
   property: gradeProperty,
+  subdivide: gradeSubdivide,
 });

@@ -4,6 +4,7 @@
 //   { curve }   one curve spec (curves-api.js)     { curves: { family: spec } }
 //   { joints }  [{ a, b }] the segments meeting at each joint, in order
 //   { patch }   { kind, points } a bicubic patch (surfaces API)
+//   { subdivision } { mesh, scheme } the old mesh of the step shown and its scheme (kind subdivide)
 // Only data is arranged here; every value is the core's.
 import { ExerciseError, MAX_EXERCISE_ELEMENTS } from './format.js';
 

@@ -15,6 +15,7 @@ const SHADES = 24;          // a bigger mesh: faces turned away skipped, the res
 const BATCH = 256;          // ... at most this many faces per path
 const POINT_LIMIT = 20000;  // more new points than this are not drawn one by one
 const LABEL_VERTICES = 12;  // vertex labels up to this many vertices (the mask's own are always named)
+const EXERCISE_LABEL_VERTICES = 60; // ... and in a subdivide exercise, whose answer names old vertices by their labels
 const CONTROL_LIMIT = 400; // control vertices drawn (and dragged) up to this many
 const PICK_PX = 12;         // a click this close to a new point picks it
 // The light, in view coordinates (x right, y up, z towards the viewer), unit length.
@@ -144,9 +145,9 @@ function drawOldEdges(painter, model, colors) {
   painter.segments(xy, { stroke: colors.ink, width: 1, alpha: 0.45, dash: [3, 3] });
 }
 
-function drawVertexLabels(painter, P, colors) {
+function drawVertexLabels(painter, P, colors, most) {
   const V = P.length / 3;
-  if (V > LABEL_VERTICES) return;
+  if (V > most) return;
   for (let v = 0; v < V; v += 1) {
     painter.circle(P[3 * v], P[3 * v + 1], 3.5, { fill: colors.ink });
     painter.text(P[3 * v], P[3 * v + 1], label('vertex', v), { fill: colors.ink, font: 13, weight: 700, dx: 12, dy: -12, halo: colors.background });
@@ -225,12 +226,16 @@ export function drawScene(painter, model, state, ctx) {
   } else {
     drawFaces(painter, model, colors);
   }
+  // A subdivide exercise asks for the masks: the drawing names the old vertices and draws
+  // neither a mask's weights nor the rings of extraordinary vertices (they are interior
+  // ones: the ring would tell an interior mask from a boundary one).
+  const asking = ctx.ui.exercise === 'subdivide';
   drawOldEdges(painter, model, colors);
-  drawExtraordinary(painter, model, colors);
-  drawVertexLabels(painter, model.oldProjected ?? model.projected, colors);
+  if (!asking) drawExtraordinary(painter, model, colors);
+  drawVertexLabels(painter, model.oldProjected ?? model.projected, colors, asking ? EXERCISE_LABEL_VERTICES : LABEL_VERTICES);
   drawControl(painter, model, ctx);
   drawNewPoints(painter, model, colors);
-  drawMask(painter, model, colors);
+  if (!asking) drawMask(painter, model, colors);
 }
 
 // The new point (of a phase shown) under the canvas point x, y (world), or -1.
@@ -246,4 +251,33 @@ export function pointAt(model, x, y, zoom) {
     }
   }
   return best;
+}
+
+// An exercise's new point, marked on the old mesh without giving it away: a ring at the
+// asked vertex, or at the middle of the asked edge or face as drawn (screen arithmetic:
+// the mean of the projected corners), the edge or the face's sides traced, and its label.
+// The old mesh is where the level is drawn: nothing is marked once the step is reconnected
+// or the limit positions are shown.
+export function drawAskedPoint(painter, model, colors, asked) {
+  if (model.phase >= PHASES.length || model.limit) return;
+  const P = model.oldProjected ?? model.projected;
+  const { corners } = asked;
+  if (!corners.length || corners.some((v) => 3 * v + 1 >= P.length)) return;
+  const colour = colors.series[2];
+  let x = 0;
+  let y = 0;
+  for (const v of corners) { x += P[3 * v]; y += P[3 * v + 1]; }
+  x /= corners.length;
+  y /= corners.length;
+  if (corners.length > 1) {
+    const xy = [];
+    for (let k = 0; k < corners.length; k += 1) {
+      const a = corners[k]; const b = corners[(k + 1) % corners.length];
+      if (corners.length === 2 && k === 1) break;
+      xy.push(P[3 * a], P[3 * a + 1], P[3 * b], P[3 * b + 1]);
+    }
+    painter.segments(xy, { stroke: colour, width: 4, alpha: 0.85 });
+  }
+  painter.circle(x, y, 9, { stroke: colour, width: 3 });
+  painter.text(x, y, `${asked.type} point of ${asked.label}?`, { fill: colour, font: 14, weight: 700, dx: 0, dy: 22, halo: colors.background, priority: 2 });
 }
