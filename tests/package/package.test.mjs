@@ -158,7 +158,7 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
   const exercises = path.join(work, 'homework-3');
   const uploads = path.join(work, 'uploads');
   for (const dir of [exercises, path.join(uploads, 'ada'), path.join(uploads, 'bob'), path.join(uploads, 'eve'), path.join(uploads, 'zed')]) fs.mkdirSync(dir, { recursive: true });
-  const ids = ['comparison-hermite-mg', 'mesh-walk-along-f1'];
+  const ids = ['comparison-hermite-mg', 'mesh-walk-along-f1', 'subdivision-catmull-clark-cube-counts'];
   for (const id of ids) fs.writeFileSync(path.join(exercises, `${id}.json`), galleryFile(id));
   const mg = hermiteMgFirstEntry();
   assert.ok(Math.abs(mg - 1.4) < 1e-12, `the M G entry of the lecture's formula: ${mg}`);
@@ -166,9 +166,15 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
   // back to the first (the walk closes); picks are edge numbers as the page shows them (e5 = 5).
   const walk = slideWalk('face', 'F1').map((e) => Number(e.slice(1)));
   const picks = [...walk.slice(1), walk[0]];
+  // One Catmull-Clark step of the cube (V 8, E 12, F 6 quads; lecture 004): a new point per
+  // vertex, edge and face; each quad becomes four, each edge two plus one per face side.
+  const [V, E, F, corners] = [8, 12, 6, 24];
+  const counts = { vertices: String(V + E + F), edges: String(2 * E + corners), faces: String(corners) };
   fs.writeFileSync(path.join(uploads, 'ada', 'wingspline-submission-ada.json'), submissionText({ student: 'Ada Lovelace', exercises: [
-    entry('comparison-hermite-mg', String(mg)), entry('mesh-walk-along-f1', { picks }, { status: 'solved' })] }));
-  fs.writeFileSync(path.join(uploads, 'bob', 'wingspline-submission-bob.json'), submissionText({ student: 'Bob', exercises: [entry('comparison-hermite-mg', '3')] }));
+    entry('comparison-hermite-mg', String(mg)), entry('mesh-walk-along-f1', { picks }, { status: 'solved' }),
+    entry('subdivision-catmull-clark-cube-counts', counts)] }));
+  fs.writeFileSync(path.join(uploads, 'bob', 'wingspline-submission-bob.json'), submissionText({ student: 'Bob', exercises: [entry('comparison-hermite-mg', '3'),
+    entry('subdivision-catmull-clark-cube-counts', { ...counts, edges: String(2 * E) })] }));
   // Eve's file: edited after export (her wrong answer marked solved), a name made to run in a spreadsheet.
   fs.writeFileSync(path.join(uploads, 'eve', 'wingspline-submission-eve.json'), submissionText({
     student: '=HYPERLINK("http://example.invalid","x")', exercises: [entry('comparison-hermite-mg', '3'), entry('mesh-walk-along-f1', { picks: [walk[0]] })],
@@ -182,7 +188,7 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
   const out = path.join(work, 'grades');
   const r = spawnSync('npx', ['--offline', 'wingspline', 'grade', 'homework-3', 'uploads', '--out', out], { cwd: work, encoding: 'utf8' });
   assert.equal(r.status, 0, r.stderr);
-  assert.match(r.stdout, /Graded 6 submission files against 2 exercises: 2 of 10 answers right/);
+  assert.match(r.stdout, /Graded 6 submission files against 3 exercises: 3 of 14 answers right/);
   const rows = csvObjects(fs.readFileSync(path.join(out, 'gradebook.csv'), 'utf8'));
   const at = (file, exercise) => rows.find((x) => x['submission file'].endsWith(file) && x.exercise === exercise);
   const ada = at('ada.json', 'comparison-hermite-mg');
@@ -190,6 +196,10 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
   assert.equal(ada.score, '1');
   assert.match(ada.note, /name as typed in the file .*ada\.json; not verified/);
   assert.equal(at('ada.json', 'mesh-walk-along-f1').result, 'right');
+  assert.equal(at('ada.json', 'subdivision-catmull-clark-cube-counts').result, 'right');
+  const bobCounts = at('bob.json', 'subdivision-catmull-clark-cube-counts');
+  assert.equal(bobCounts.result, 'wrong');
+  assert.ok(!bobCounts.reason.includes(counts.edges), `the reason does not give E: ${bobCounts.reason}`);
   const bob = at('bob.json', 'comparison-hermite-mg');
   assert.equal(bob.result, 'wrong');
   assert.equal(bob.score, '0');
@@ -209,7 +219,7 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
   for (const row of rows) for (const [k, v] of Object.entries(row)) assert.ok(!/^[=+\-@]/.test(v), `${k}: ${v}`);
   const md = fs.readFileSync(path.join(out, 'gradebook.md'), 'utf8');
   assert.match(md, /^# Gradebook/);
-  assert.match(md, /\| ada\\\.json \| Ada Lovelace \| 2 \| 2 \||wingspline\\-submission\\-ada\\\.json \| Ada Lovelace \| 2 \| 2 \|/);
+  assert.match(md, /wingspline\\-submission\\-ada\\\.json \| Ada Lovelace \| 3 \| 3 \|/);
 
   // Without the exercise files: told, and a non-zero exit.
   const none = spawnSync('npx', ['--offline', 'wingspline', 'grade', 'uploads/bob'], { cwd: work, encoding: 'utf8' });
