@@ -1,4 +1,4 @@
-// The five kinds' pure grading functions (the shared contract: grade<Kind>({api, check,
+// Every kind's pure grading function (the shared contract: grade<Kind>({api, check,
 // subject, answer}) -> {correct, partial?, incomplete?, findings: [{text, hint?}], note?}) run
 // in Node over the real core, with the subject the grader asks for (view {}, the model from
 // lesson.compute). Right answers come from the lectures (the slide's tables and walk, the
@@ -16,7 +16,9 @@ import { gradeTable, workedTable } from '../../web/js/exercise/kinds/table.js';
 import { gradeWalk, workedWalk, migrateWalkAnswer } from '../../web/js/exercise/kinds/walk.js';
 import { gradeJoint, workedJoint } from '../../web/js/exercise/kinds/joint.js';
 import { gradeValue, workedValue } from '../../web/js/exercise/kinds/value.js';
-import { gradeProperty, workedProperty } from '../../web/js/exercise/kinds/property.js';
+import { workedProperty } from '../../web/js/exercise/kinds/property.js';
+import { workedSubdivide } from '../../web/js/exercise/kinds/subdivide.js';
+import { GRADERS } from '../../web/js/exercise/graders.js';
 import { meshLesson } from '../../web/js/lessons/mesh/lesson.js';
 import { lesson as curvesLesson } from '../../web/js/lessons/curves/lesson.js';
 import { lesson as continuityLesson } from '../../web/js/lessons/continuity/lesson.js';
@@ -28,8 +30,9 @@ import { slideRows, SLIDE_VERTEX_EDGES, SLIDE_FACE_EDGES, slideWalk } from '../h
 const api = await loadWingspline();
 const LESSONS = Object.fromEntries([meshLesson, curvesLesson, continuityLesson, comparisonLesson, surfacesLesson, subdivisionLesson].map((l) => [l.id, l]));
 const lessonIds = lessons.map((l) => l.id);
-const GRADE = { table: gradeTable, walk: gradeWalk, joint: gradeJoint, value: gradeValue, property: gradeProperty };
-const WORKED = { table: workedTable, walk: workedWalk, joint: workedJoint, value: workedValue, property: workedProperty };
+// The grader's registry, and the kinds named here, must agree: a kind the grader cannot grade fails this test.
+const GRADE = GRADERS;
+const WORKED = { table: workedTable, walk: workedWalk, joint: workedJoint, value: workedValue, property: workedProperty, subdivide: workedSubdivide };
 const readText = (id) => fs.readFileSync(new URL(`../../web/exercises/${id}.json`, import.meta.url), 'utf8');
 
 // As the grader opens an exercise: headless, view {}, the model from the lesson's compute.
