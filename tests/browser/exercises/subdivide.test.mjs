@@ -12,6 +12,7 @@ import fs from 'node:fs';
 import { createRequire } from 'node:module';
 import { loadWingspline } from 'wingspline';
 import { useSiteAndBrowser, trap } from '../../helpers/browser.mjs';
+import { exerciseAt } from '../../helpers/exercise-levels.mjs';
 
 const env = useSiteAndBrowser();
 const api = await loadWingspline();
@@ -146,7 +147,8 @@ for (const [id, play] of Object.entries(PLAYS)) {
 }
 
 test('the worked answer gives the mask and every weight; the answer typed is kept over a reload', async () => {
-  const page = await env.openLesson(`${env.site.url}subdivision.html#exercise=subdivision-loop-edge-point-e2`);
+  // (the gallery's copy is level check, with no worked answer: a lecturer's copy at level worked)
+  const page = await env.openLesson(`${env.site.url}${exerciseAt('subdivision-loop-edge-point-e2', { level: 'worked' })}`);
   await answerByPointer(page, { mask: 'edge-interior', rows: [['v2', '3/8'], ['v3', '']] });
   assert.match(await page.locator('#exercise-feedback').innerText(), /Row 2: type the weight of v3/);
   await page.reload();
@@ -206,7 +208,7 @@ for (const scheme of ['light', 'dark']) {
     test(`axe (${scheme}): ${id} as opened, after a wrong check and with the worked answer; every control named`, async () => {
       const context = await env.newContext({ viewport: { width: 1280, height: 800 }, colorScheme: scheme });
       const page = trap(await context.newPage());
-      await page.goto(`${env.site.url}subdivision.html#exercise=${id}`);
+      await page.goto(`${env.site.url}${exerciseAt(id, { level: 'worked' })}`);
       await page.waitForSelector('#exercise-panel');
       assert.deepEqual(await audit(page), [], 'as opened');
       const unnamed = await page.evaluate(() => [...document.querySelectorAll('#exercise-panel input, #exercise-panel button, #exercise-panel select')]
