@@ -1,4 +1,4 @@
-// Feedback levels (docs/exercises.md): each of the five kinds played at each level, a
+// Feedback levels (docs/exercises.md): each kind played at each level, a
 // wrong answer checked once by pointer (the Check button) and once by keyboard (Enter).
 //  * check: the page says where and the rule, never the right value (for a typed value,
 //    nowhere in the page's text; for a table, a walk or a joint, nowhere in the feedback and
@@ -77,6 +77,17 @@ const KINDS = {
     id: 'curves-bernstein-half', scope: 'page', right: ['0.375', '3/8', '.375'],
     wrong: (page) => page.locator('#exercise-value').fill('0.4'),
     keyboardTarget: (page) => page.locator('#exercise-value'),
+  },
+  subdivide: {
+    // One Catmull-Clark step of the cube (V 8, E 12, F 6 quads): E' = 2E + the 24 face sides = 48,
+    // typed as 2E = 24; V' = V + E + F = 26 and F' = 24 typed right.
+    id: 'subdivision-catmull-clark-cube-counts', scope: 'feedback', right: ['48'],
+    wrong: async (page) => {
+      await page.locator('#exercise-count-vertices').fill('26');
+      await page.locator('#exercise-count-edges').fill('24');
+      await page.locator('#exercise-count-faces').fill('24');
+    },
+    keyboardTarget: (page) => page.locator('#exercise-count-edges'),
   },
   property: {
     id: 'curves-through-a-point', scope: 'feedback', right: [],
