@@ -4,6 +4,7 @@
 // operation as {name, args} (the registry's arguments in order, elements 0-based); the answer
 // as {vertices, edges, faces}, each {cells, removed, labels} of whole numbers (-1 none, -2 blank).
 #include "boundary.h"
+#include "exercise_findings.h"
 
 #include "wingspline/mesh/exercise_edit.h"
 
@@ -100,22 +101,8 @@ val check_edit_value(const val& positions, const val& face_offsets, const val& f
         const Operation operation = question_operation(op);
         const EditAnswer a = answer_value(answer);
         const EditCheck c = check_edit_answer(before, operation, a);
-        val findings = val::array();
-        for (std::size_t i = 0; i < c.findings.size(); ++i) {
-            const AnswerFinding& f = c.findings[i];
-            val o = val::object();
-            o.set("table", std::string(table_name(f.table)));
-            o.set("row", f.row);
-            o.set("field", f.field);
-            o.set("index", f.index);
-            o.set("given", f.given);
-            o.set("expected", f.expected);
-            o.set("code", f.code);
-            o.set("reason", f.reason);
-            findings.set(i, o);
-        }
         val r = val::object();
-        r.set("findings", findings);
+        r.set("findings", findings_value(c.findings));
         r.set("worked", answer_object(worked_edit_answer(before, operation, a)));
         return r;
     });

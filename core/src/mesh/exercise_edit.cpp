@@ -445,8 +445,10 @@ struct Run {
                         where + " names " + label_of(t, given) + ", which no " + table_words(t) + " has after " + q.operation +
                             " (new rows take the labels you gave them)");
                 } else if (given != kNone && deleted(after, t, resolve(t, given))) {
+                    const bool earlier = resolve(t, given) < before_count[t] && deleted(before, t, resolve(t, given));
                     add(kE, row, kEdgeField[k], given, want, "removed-element",
-                        where + " names " + label_of(t, given) + ", which " + q.operation + " removes: " + column_reason(row, k, expected_core));
+                        where + " names " + label_of(t, given) + ", which " + (earlier ? std::string("an earlier edit removed") : q.operation + " removes") +
+                            ": " + column_reason(row, k, expected_core));
                 } else {
                     const char* code = t == kV ? "wrong-vertex" : t == kF ? "wrong-face" : "wrong-wing";
                     add(kE, row, kEdgeField[k], given, want, code, where + ": " + column_reason(row, k, expected_core));

@@ -185,13 +185,14 @@
  * is asked of, from the lesson's model (exercise/subjects.js lists the shapes); `keepsState`:
  * the kinds whose answer is the drawing itself (kept with the exercise's progress);
  * `showWalk`: the drawing follows a walk being predicted; `suggest`: the authoring dialog's
- * starting check, hidden panels and question for a kind, from the view shown.
+ * starting check, hidden panels and question for a kind, from the view shown (and, where the
+ * exercise starts from another drawing, its state: an edit's question starts before the edit).
  * @typedef {{
  *   kinds: string[],
- *   subject(view: View, model: Model, state: State, ctx: Ctx): { mesh?: any, curve?: any, curves?: Object<string, any>, joints?: Array<{ a: any, b: any }>, patch?: any },
+ *   subject(view: View, model: Model, state: State, ctx: Ctx): { mesh?: any, loaded?: any, edits?: any[], curve?: any, curves?: Object<string, any>, joints?: Array<{ a: any, b: any }>, patch?: any },
  *   keepsState?: string[],
  *   showWalk?: (ctx: Ctx, around: string, element: number) => void,
- *   suggest?: (kind: string, state: State, asked: { api: any, subject: any }) => { check: any, hide: string[], question: string },
+ *   suggest?: (kind: string, state: State, asked: { api: any, subject: any }) => { check: any, hide: string[], question: string, state?: State },
  * }} ExerciseSupport
  */
 

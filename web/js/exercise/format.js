@@ -61,6 +61,7 @@ export const KINDS = Object.freeze({
   joint: { label: 'Classify a joint (Cᵏ and Gᵏ) and say why' },
   value: { label: 'Compute a value by hand' },
   property: { label: 'Move control points until a property holds' },
+  edit: { label: 'Write the rows an edit rewrites' },
 });
 
 const positive = (v, path) => {
@@ -84,7 +85,19 @@ const CHECKS = {
     family: text({ maxLength: 40 }),
   }, ['i', 'u', 'v', 'segment', 'row', 'col', 'index', 'family']],
   property: [{ kind: oneOf('property'), property: (v, path) => readProperty(v, path) }, []],
+  edit: [{ kind: oneOf('edit'), op: (v, path) => readEditOperation(v, path) }, []],
 };
+
+// An edit's operation as the lesson state stores it ({op: 'flip-edge', e: 3}), its elements
+// counted from 1 as the lectures count them; which arguments an operation takes is the core
+// registry's to say (the edit kind asks it, and names the field).
+function readEditOperation(v, path) {
+  if (v === null || v === undefined) throw new SchemaError(path, 'must name the operation asked, e.g. {"op": "flip-edge", "e": 3} (in the lesson: make the edit, then Make an exercise)');
+  const op = object({ op: text({ maxLength: 40 }), e: ordinal, f: ordinal, v: ordinal, a: ordinal, b: ordinal, t: parameter },
+    { optional: ['e', 'f', 'v', 'a', 'b', 't'] })(v, path);
+  if (!/^[a-z][a-z-]*$/.test(op.op)) throw new SchemaError(`${path}.op`, `must be an operation's name such as flip-edge, not "${op.op}"`);
+  return op;
+}
 
 function readProperty(v, path) {
   const kind = v && typeof v === 'object' ? v.kind : undefined;

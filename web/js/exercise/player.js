@@ -14,11 +14,13 @@ import { createWalkKind } from './kinds/walk.js';
 import { createJointKind } from './kinds/joint.js';
 import { createValueKind } from './kinds/value.js';
 import { createPropertyKind } from './kinds/property.js';
+import { createEditKind } from './kinds/edit.js';
 
 // Typed arrays as plain lists, to compare two subjects.
 const plain = (key, value) => (ArrayBuffer.isView(value) ? Array.from(/** @type {any} */ (value)) : value);
 
-export const CREATE = { table: createTableKind, walk: createWalkKind, joint: createJointKind, value: createValueKind, property: createPropertyKind };
+export const CREATE = { table: createTableKind, walk: createWalkKind, joint: createJointKind, value: createValueKind, property: createPropertyKind,
+  edit: createEditKind };
 
 /**
  * The lesson state of an exercise, read like a share link's (migrated, validated); a field
@@ -140,7 +142,7 @@ export function mountExercise({ ctx, lesson, view, exercise, key, loaded, panels
       setChildren(feedback, h('p', { class: 'exercise-right' }, result.note ?? 'Right so far.'));
     } else {
       setChildren(feedback, h('p', { class: 'exercise-wrong' }, result.findings.length === 1 ? 'Not yet:' : `Not yet: ${result.findings.length} things to look at.`),
-        h('ul', {}, result.findings.slice(0, 40).map((f) => h('li', {}, f))),
+        h('ul', {}, result.findings.slice(0, 40).map((f) => h('li', {}, typeof f === 'string' ? f : f.text))),
         result.findings.length > 40 ? h('p', {}, `… and ${result.findings.length - 40} more.`) : null);
     }
     save();
