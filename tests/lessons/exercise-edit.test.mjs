@@ -149,6 +149,13 @@ test('an answer that is not an answer to the question reads as "could not be rea
   typed.edges.cells[2][4] = 'x7';
   const r = gradeEdit({ api, check: exercise.check, subject, answer: typed });
   assert.match(r.findings[0].text, /^Row e3, column S:L: "x7" is not an edge/);
+  // a row left blank is one finding, not eight; two blank cells of a row are one too
+  typed.edges.cells[2][4] = 'e5';
+  typed.edges.cells[0] = Array(8).fill('');
+  typed.edges.cells[1][6] = '';
+  typed.edges.cells[1][7] = '';
+  const blanks = gradeEdit({ api, check: exercise.check, subject, answer: typed }).findings.map((f) => f.text);
+  assert.deepEqual(blanks.map((t) => t.split(' is').shift().split(' are').shift()), ['Row e1: every column', 'Row e2: columns E:L and E:R']);
 });
 
 // The mesh lesson's state for the slide's mesh with these edits.

@@ -133,6 +133,25 @@ function readAnswer(answer, q) {
 
 const UNREADABLE = { correct: false, incomplete: true, findings: [{ text: 'This answer could not be read: it is not an answer to this edit (its rows do not match the question).' }] };
 
+// The blank cells of one edge row make one finding ("row e1: S, E and L are blank: ..."), so a
+// row not yet written reads as one line, not eight.
+function groupBlanks(findings) {
+  const out = [];
+  const rows = new Map();
+  for (const f of findings) {
+    if (f.code !== 'blank' || f.table !== 'edge') { out.push(f); continue; }
+    const key = f.index;
+    if (!rows.has(key)) { rows.set(key, { ...f, columns: [] }); out.push(rows.get(key)); }
+    rows.get(key).columns.push(EDGE_COLUMNS[EDGE_FIELDS.indexOf(f.field)]);
+  }
+  return out.map((f) => {
+    if (!f.columns || f.columns.length === 1) return f;
+    const where = f.reason.slice(0, f.reason.indexOf(', column'));
+    const list = `${f.columns.slice(0, -1).join(', ')} and ${f.columns[f.columns.length - 1]}`;
+    return { ...f, reason: `${where}: ${f.columns.length === 8 ? 'every column' : `columns ${list}`} ${f.columns.length === 8 ? 'is' : 'are'} blank: every cell of a row the operation rewrites is written (none where there is no face)` };
+  });
+}
+
 /**
  * Grades an answer (DOM-free; the grader runs it over loadWingspline()).
  * @param {{ api: any, check: any, subject: any, answer: any }} parts
@@ -149,7 +168,7 @@ export function gradeEdit({ api, check, subject, answer }) {
   const r = api.checkEditAnswer(subject.loaded, subject.edits ?? [], q.op, read.answer);
   return {
     correct: r.correct,
-    findings: r.findings.map((f) => ({ text: sentence(f.reason), hint: HINTS[f.code] })),
+    findings: groupBlanks(r.findings).map((f) => ({ text: sentence(f.reason), hint: HINTS[f.code] })),
     note: r.correct ? `Every row after ${q.operation} is right.` : undefined,
   };
 }
