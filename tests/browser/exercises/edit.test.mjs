@@ -6,6 +6,9 @@
 // tests in tests/native have the same ones); no right value appears in the feedback.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
 import { useSiteAndBrowser, screenshot } from '../../helpers/browser.mjs';
 
 const env = useSiteAndBrowser();
@@ -122,4 +125,46 @@ test('Make an exercise after an edit: the last edit is the question, and the exe
   }
   await played.locator('#exercise-check').click();
   assert.match(await feedback(played), /✓ Right/);
+});
+
+test('an exercise made from an imported mesh (kept by reference in this browser) opens in a fresh browser', async () => {
+  // A strip of 198 triangles on 200 vertices (the exercise cap), its coordinates small numbers
+  // of 21 or 22 characters each so that its JSON is over the 16,384 characters a saved state
+  // keeps inline: this browser keeps it in its content store, the saved work refers to it.
+  const off = ['OFF', '200 198 0'];
+  for (let row = 0; row < 2; row += 1) {
+    for (let i = 0; i < 100; i += 1) off.push(`${-(i + (row + 1) / 7) * 1.1e-7} ${-(row + (i + 1) / 7001) * 1.3e-7} ${-(i + 1) / 9973 * 1e-7}`);
+  }
+  for (let i = 0; i < 99; i += 1) off.push(`3 ${i} ${i + 1} ${100 + i}`, `3 ${i + 1} ${101 + i} ${100 + i}`);
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'wingspline-edit-'));
+  const file = path.join(dir, 'strip.off');
+  fs.writeFileSync(file, `${off.join('\n')}\n`);
+  try {
+    const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
+    const page = await context.newPage();
+    await page.goto(`${env.site.url}mesh.html`);
+    await page.waitForSelector('body[data-ready="true"]');
+    await page.setInputFiles('#import-file', file);
+    await page.waitForFunction(() => window.wingspline.model?.F === 198);
+    await page.evaluate(() => window.wingspline.flush());
+    // over the inline limit (INLINE_CONTENT_MAX_CHARS): saved work refers to it by hash
+    assert.ok(await page.evaluate(() => JSON.stringify(window.wingspline.state.imported).length) > 16384);
+    await page.locator('[data-action="make-exercise"]').click();
+    for (const kind of ['edit', 'table']) {
+      await page.locator('#author-kind').selectOption(kind);
+      await page.locator('#author-copy-link').click();
+      await page.waitForSelector('#author-link:not([hidden])');
+      assert.equal(await page.locator('.author-problem').innerText(), '');
+      const url = await page.locator('#author-link').inputValue();
+      const fresh = await env.newContext({ viewport: { width: 1280, height: 800 } }); // another browser's storage
+      const played = await fresh.newPage();
+      await played.goto(url);
+      await played.waitForSelector('#exercise-panel');
+      assert.equal(await played.evaluate(() => document.documentElement.dataset.exercise), kind);
+      assert.equal(await played.locator('#message').innerText(), '');
+      assert.equal(await played.evaluate(() => window.wingspline.model.F), 198);
+    }
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
 });
