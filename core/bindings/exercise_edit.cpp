@@ -4,7 +4,7 @@
 // operation as {name, args} (the registry's arguments in order, elements 0-based); the answer
 // as {vertices, edges, faces}, each {cells, removed, labels} of whole numbers (-1 none, -2 blank).
 #include "boundary.h"
-#include "exercise_findings.h"
+#include "exercise_shared.h"
 
 #include "wingspline/mesh/exercise_edit.h"
 
@@ -37,12 +37,7 @@ WingedEdgeMesh before_mesh(const val& positions, const val& face_offsets, const 
     m.face_offsets = to_ints(face_offsets);
     m.face_vertices = to_ints(face_vertices);
     require(m.positions.size() % 3 == 0, "invalid-argument", "positions must hold x, y, z for each vertex");
-    BuildOptions options;
-    const std::vector<int32_t> pairs = to_ints(edges);
-    require(pairs.size() % 2 == 0, "invalid-argument", "edges must hold [S, E] for each edge");
-    for (std::size_t i = 0; i + 1 < pairs.size(); i += 2) options.edges.push_back({pairs[i], pairs[i + 1]});
-    options.vertex_edges = to_ints(vertex_edges);
-    options.face_edges = to_ints(face_edges);
+    const BuildOptions options = numbering_options(edges, vertex_edges, face_edges);
     std::vector<Operation> list;
     const auto n = edits["length"].as<unsigned>();
     for (unsigned i = 0; i < n; ++i) list.push_back(operation_value(edits[i]));
