@@ -10,6 +10,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { useSiteAndBrowser, screenshot } from '../../helpers/browser.mjs';
+import { playMadeExercise } from '../../helpers/classroom.mjs';
 
 const env = useSiteAndBrowser();
 const feedback = (page) => page.locator('#exercise-feedback').innerText();
@@ -104,16 +105,7 @@ test('Make an exercise after an edit: the last edit is the question, and the exe
   await page.click('button[data-op="flip-edge"]');
   await page.waitForFunction(() => window.wingspline.state.ops.length === 1);
   await page.locator('[data-action="make-exercise"]').click();
-  await page.locator('#author-kind').selectOption('edit');
-  await page.locator('#author-copy-link').click();
-  await page.waitForSelector('#author-link:not([hidden])');
-  assert.equal(await page.locator('.author-problem').innerText(), '');
-  const url = await page.locator('#author-link').inputValue();
-  const played = await context.newPage();
-  await played.goto(url);
-  await played.waitForSelector('#exercise-panel');
-  assert.equal(await played.evaluate(() => document.documentElement.dataset.exercise), 'edit');
-  assert.equal(await played.locator('#message').innerText(), '');
+  const played = await playMadeExercise(page, context, 'edit');
   assert.match(await played.locator('.exercise-edit-op').innerText(), /flip e3/);
   // the drawing is the mesh before the flip: e3 still joins v2 and v3
   assert.deepEqual(await played.evaluate(() => window.wingspline.state.ops), []);
@@ -151,17 +143,8 @@ test('an exercise made from an imported mesh (kept by reference in this browser)
     assert.ok(await page.evaluate(() => JSON.stringify(window.wingspline.state.imported).length) > 16384);
     await page.locator('[data-action="make-exercise"]').click();
     for (const kind of ['edit', 'table']) {
-      await page.locator('#author-kind').selectOption(kind);
-      await page.locator('#author-copy-link').click();
-      await page.waitForSelector('#author-link:not([hidden])');
-      assert.equal(await page.locator('.author-problem').innerText(), '');
-      const url = await page.locator('#author-link').inputValue();
       const fresh = await env.newContext({ viewport: { width: 1280, height: 800 } }); // another browser's storage
-      const played = await fresh.newPage();
-      await played.goto(url);
-      await played.waitForSelector('#exercise-panel');
-      assert.equal(await played.evaluate(() => document.documentElement.dataset.exercise), kind);
-      assert.equal(await played.locator('#message').innerText(), '');
+      const played = await playMadeExercise(page, fresh, kind);
       assert.equal(await played.evaluate(() => window.wingspline.model.F), 198);
     }
   } finally {
