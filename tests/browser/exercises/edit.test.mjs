@@ -151,3 +151,53 @@ test('an exercise made from an imported mesh (kept by reference in this browser)
     fs.rmSync(dir, { recursive: true, force: true });
   }
 });
+
+test('a walk and a table made after an edit, and from a subdivided mesh, open and check against the drawing\'s numbering', async () => {
+  const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
+  const page = await context.newPage();
+  await page.goto(`${env.site.url}mesh.html`);
+  await page.waitForSelector('body[data-ready="true"]');
+  await page.selectOption('#edit-kind', 'edge');
+  await page.fill('#edit-element', '3');
+  await page.press('#edit-element', 'Enter');
+  await page.waitForFunction(() => document.querySelector('#edit-picked')?.textContent === 'Picked: e3');
+  await page.click('button[data-op="split-edge"]');
+  await page.waitForFunction(() => window.wingspline.state.ops.length === 1);
+  await page.fill('#walk-element', '3');
+  await page.press('#walk-element', 'Enter');
+  await page.waitForFunction(() => window.wingspline.state.vertex === 2);
+  await page.locator('[data-action="make-exercise"]').click();
+  // After the split (by hand): v3 stores the new e8 = v6 -> v3; the CCW walk around v3 reads
+  // e8's E:R (e4), e4's S:L (e1), e1's E:R (e8 again).
+  const walk = await playMadeExercise(page, context, 'walk');
+  assert.match(await walk.locator('.exercise-walk-path').innerText(), /around v3: e8 → \?/);
+  for (const e of ['e4', 'e1', 'e8']) {
+    await walk.locator(`label[for="exercise-edge-${e.slice(1)}"]`).click();
+    await walk.locator('#exercise-check').click();
+    assert.match(await feedback(walk), /Right/, e);
+  }
+  assert.equal(await status(walk), 'solved');
+  const table = await playMadeExercise(page, context, 'table');
+  assert.equal(await table.locator('.exercise-grid').first().isVisible(), true);
+  await table.locator('#exercise-check').click();
+  assert.notEqual(await table.locator('#exercise-feedback').getAttribute('data-result'), 'right');
+
+  // The subdivision lesson at level 1: its walk around v1 is the drawing's (the lesson's own
+  // mesh), the exercise's check accepts it step by step.
+  const sub = await context.newPage();
+  await sub.goto(`${env.site.url}subdivision.html`);
+  await sub.waitForSelector('body[data-ready="true"]');
+  await sub.click('#level-up');
+  await sub.waitForFunction(() => window.wingspline.state.level === 1);
+  const steps = await sub.evaluate(() => window.wingspline.model.mesh.traversalSteps(0).map((s) => s.edge + 1));
+  await sub.locator('[data-action="make-exercise"]').click();
+  const subWalk = await playMadeExercise(sub, context, 'walk');
+  for (const k of [1, 2, 0]) {
+    await subWalk.locator(`label[for="exercise-edge-${steps[k]}"]`).click();
+    await subWalk.locator('#exercise-check').click();
+  }
+  assert.equal(await status(subWalk), 'solved');
+  const subTable = await playMadeExercise(sub, context, 'table');
+  await subTable.locator('#exercise-check').click();
+  assert.notEqual(await subTable.locator('#exercise-feedback').getAttribute('data-result'), 'right');
+});
