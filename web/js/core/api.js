@@ -8,6 +8,7 @@ import { createMeshApi } from './mesh-api.js';
 import { createCurvesApi } from './curves-api.js';
 import { createExerciseApi } from './exercise-api.js';
 import { createExerciseCurvesApi } from './exercise-curves-api.js';
+import { createExerciseEditApi } from './exercise-edit-api.js';
 
 /** @param {any} raw the module's embind functions */
 export function createApi(raw) {
@@ -27,5 +28,6 @@ export function createApi(raw) {
     ...createCurvesApi(raw),
     ...createExerciseApi(raw),
     ...createExerciseCurvesApi(raw),
+    ...createExerciseEditApi(raw),
   });
 }

@@ -5,13 +5,13 @@
 // is their edge e(r+1)); -1 = none, -2 = blank. See docs/api-mesh.md, "Checking a student's
 // winged-edge table".
 import { unwrap, fail, isNumberArray, integerIn, INT32_MAX } from './errors.js';
-import { facesToCsr, operationValues } from './mesh-api.js';
+import { facesToCsr } from './mesh-api.js';
 
 
 // Cell values with a meaning of their own.
 const ANSWER_CELLS = Object.freeze({ none: -1, blank: -2 });
 
-function exerciseMesh(mesh) {
+export function exerciseMesh(mesh) {
   if (mesh === null || typeof mesh !== 'object') fail('invalid-argument', 'expected the exercise mesh {faces, vertexCount}');
   let csr;
   if (mesh.faces === undefined && mesh.faceOffsets !== undefined) {
@@ -62,7 +62,7 @@ function answerCell(x, what) {
 }
 
 // A flat row table (number[]) -> Int32Array; `name(i)` says which row and field entry i is.
-function flatAnswer(value, key, name) {
+export function flatAnswer(value, key, name) {
   if (!isNumberArray(value)) fail('invalid-answer', `the answer's ${key} must be an array of whole numbers (-1 = none, -2 = blank)`);
   const out = new Int32Array(value.length);
   for (let i = 0; i < value.length; i += 1) out[i] = answerCell(value[i], name(i));
@@ -99,14 +99,14 @@ const WINGED_EDGE_CELLS = Object.freeze({
   faceEdges: (i) => `faceEdges: ${faceRow(i)}`,
 });
 
-function plainFindings(list) {
+export function plainFindings(list) {
   return Array.from(list, ({ table, row, field, index, given, expected, code, reason }) => ({
     table, row, field, index, given, expected, code, reason,
   }));
 }
 
 // The mesh's numbering for a walk: a slide's edges ([S, E] per edge) and vertex/face edges, if given.
-function walkNumbering(mesh) {
+export function walkNumbering(mesh) {
   const edges = mesh.edges ?? [];
   if (!Array.isArray(edges)) fail('invalid-argument', 'the mesh\'s edges must be [S, E] pairs, one per edge');
   const pairs = new Int32Array(2 * edges.length);
@@ -121,76 +121,9 @@ function walkNumbering(mesh) {
 }
 
 
-// ---- the edit exercise (docs/exercises.md, kind edit): the mesh before is the exercise mesh
-// (with its positions and the slide's numbering, if any) after `edits` replayed in order; the
-// question's operation is a lesson state's {op, ...} record. The answer: per table (vertices,
-// edges, faces) {cells, removed, labels}: cells 8 per edge row (S E L R S:L S:R E:L E:R), 1 per
-// vertex or face row (its edge), the listed rows then the new ones; removed: one flag per row;
-// labels: the new rows' labels. Labels 0-based, -1 none, -2 blank.
-const EDIT_TABLES = Object.freeze(['vertices', 'edges', 'faces']);
-
-function editMeshArguments(mesh, registry, edits, operation) {
-  const [faceOffsets, faceVertices, vertexCount] = exerciseMesh(mesh);
-  const positions = mesh.positions === undefined ? new Float64Array(3 * vertexCount) : mesh.positions;
-  if (!isNumberArray(positions) || positions.length !== 3 * vertexCount) fail('invalid-argument', 'the exercise mesh\'s positions must hold x, y, z for each vertex');
-  if (!Array.isArray(edits)) fail('invalid-argument', 'the edits before the question must be a list of operations such as {op: \'flip-edge\', e: 2}');
-  const asValue = (op) => {
-    const [edit, values] = operationValues(registry, op);
-    return { name: edit.name, args: Float64Array.from(values) };
-  };
-  // Among the edits, the lesson's Compact step renumbers; a moved vertex changes no table.
-  const before = edits.filter((op) => op?.op !== 'move-vertex').map((op) => (op?.op === 'compact' ? { name: 'compact', args: new Float64Array(0) } : asValue(op)));
-  return [Float64Array.from(positions), faceOffsets, faceVertices, ...walkNumbering(mesh), before, asValue(operation)];
-}
-
-function editAnswer(answer) {
-  if (answer === null || typeof answer !== 'object') fail('invalid-answer', 'the answer to an edit is {vertices, edges, faces}');
-  const out = {};
-  for (const key of EDIT_TABLES) {
-    const t = answer[key];
-    if (t === null || typeof t !== 'object') fail('invalid-answer', `the answer's ${key} must be {cells, removed, labels}`);
-    const removed = Array.isArray(t.removed) ? t.removed.map((x) => (x ? 1 : 0)) : t.removed;
-    out[key] = {
-      cells: flatAnswer(t.cells, `${key}.cells`, (i) => `${key}.cells[${i}]`),
-      removed: flatAnswer(removed, `${key}.removed`, (i) => `${key}.removed[${i}]`),
-      labels: flatAnswer(t.labels, `${key}.labels`, (i) => `${key}.labels[${i}]`),
-    };
-  }
-  return out;
-}
-
-const plainEditAnswer = (w) => Object.fromEntries(EDIT_TABLES.map((key) => [key, {
-  cells: Array.from(w[key].cells), removed: Array.from(w[key].removed, (x) => x !== 0), labels: Array.from(w[key].labels),
-}]));
-
 export function createExerciseApi(raw) {
-  let registry = null; // the operations' registry, read once per API
-  const operations = () => (registry ??= unwrap(raw.meshOperationDescriptors()));
   return {
     answerCells: ANSWER_CELLS,
-    // The edit exercise's question: which existing rows `operation` rewrites or removes on the
-    // mesh before (labels 0-based, ascending) and how many new rows each table gains:
-    // {rows: {vertices, edges, faces}, added: {vertices, edges, faces}, operation: 'flip e3'}.
-    // Errors: the operation's refusal (its own code), 'invalid-argument', 'invalid-faces'.
-    editQuestion(mesh, edits, operation) {
-      const r = unwrap(raw.exerciseEditQuestion(...editMeshArguments(mesh, operations(), edits, operation)));
-      return {
-        rows: Object.fromEntries(EDIT_TABLES.map((key) => [key, Array.from(r.rows[key])])),
-        added: { vertices: r.added.vertices, edges: r.added.edges, faces: r.added.faces },
-        operation: r.operation,
-      };
-    },
-    // Checks an answer to the edit question (the core compares it with the operation's change
-    // record; new elements under any labels, see exercise_edit.h): {correct, findings: [{table,
-    // row, field, index, given, expected, code, reason}], worked} (worked: the right answer in
-    // the student's labels, the answer's shape). `reason` never holds the right value.
-    // Errors: 'invalid-answer' (the answer's shape), the operation's refusal, 'invalid-faces'.
-    checkEditAnswer(mesh, edits, operation, answer) {
-      const args = editMeshArguments(mesh, operations(), edits, operation);
-      const r = unwrap(raw.exerciseCheckEdit(...args, editAnswer(answer)));
-      const findings = plainFindings(r.findings);
-      return { correct: findings.length === 0, findings, worked: plainEditAnswer(r.worked) };
-    },
     // {correct, findings: [{table: 'vertex'|'edge'|'face', row, field, given, expected, code,
     // reason}], rowEdges (the mesh edge each row was matched to, -1 none), rowReversed}.
     // Any consistent numbering and either orientation of each edge is right. Errors:
