@@ -333,8 +333,8 @@ TEST_CASE("random edits on random meshes: any numbering accepted, every one-cell
     figures << questions << " questions, " << corruptions << " corruptions;";
     for (const auto& [name, n] : per_op) figures << " " << name << " " << n;
     WARN(figures.str());
-    CHECK(questions > 2000);
-    CHECK(corruptions > 50000);
+    CHECK(questions > static_cast<int>(kSeeds) * 2 / 3); // most seeds find an operation the mesh allows
+    CHECK(corruptions > static_cast<int>(kSeeds) * 15);
     CHECK(per_op.size() == operations().size());
 }
 
