@@ -17,6 +17,22 @@ const feedback = (page) => page.locator('#exercise-feedback').innerText();
 const status = (page) => page.locator('#exercise-status').getAttribute('data-status');
 const cell = (page, table, row, col) => page.locator(`.exercise-edit input[data-table="${table}"][data-row="${row}"][data-col="${col}"]`);
 
+// The mesh lesson in a page of its own context, with one edit of e3 made in the edit panel
+// (e3 picked by its number, the operation's button pressed).
+async function editE3(op) {
+  const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
+  const page = await context.newPage();
+  await page.goto(`${env.site.url}mesh.html`);
+  await page.waitForSelector('body[data-ready="true"]');
+  await page.selectOption('#edit-kind', 'edge');
+  await page.fill('#edit-element', '3');
+  await page.press('#edit-element', 'Enter');
+  await page.waitForFunction(() => document.querySelector('#edit-picked')?.textContent === 'Picked: e3');
+  await page.click(`button[data-op="${op}"]`);
+  await page.waitForFunction(() => window.wingspline.state.ops.length === 1);
+  return { context, page };
+}
+
 // flip e3 (by hand): v3 now stores e1; e1..e5 rewritten; F1 stores e3.
 const FLIP_E3 = {
   vertices: [['e1']],
@@ -94,16 +110,7 @@ test('collapse e4 by pointer: a removed row not marked is named, then ticking it
 });
 
 test('Make an exercise after an edit: the last edit is the question, and the exercise opens on the mesh before it', async () => {
-  const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
-  const page = await context.newPage();
-  await page.goto(`${env.site.url}mesh.html`);
-  await page.waitForSelector('body[data-ready="true"]');
-  await page.selectOption('#edit-kind', 'edge');
-  await page.fill('#edit-element', '3');
-  await page.press('#edit-element', 'Enter');
-  await page.waitForFunction(() => document.querySelector('#edit-picked')?.textContent === 'Picked: e3');
-  await page.click('button[data-op="flip-edge"]');
-  await page.waitForFunction(() => window.wingspline.state.ops.length === 1);
+  const { context, page } = await editE3('flip-edge');
   await page.locator('[data-action="make-exercise"]').click();
   const played = await playMadeExercise(page, context, 'edit');
   assert.match(await played.locator('.exercise-edit-op').innerText(), /flip e3/);
@@ -153,16 +160,7 @@ test('an exercise made from an imported mesh (kept by reference in this browser)
 });
 
 test('a walk and a table made after an edit, and from a subdivided mesh, open and check against the drawing\'s numbering', async () => {
-  const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
-  const page = await context.newPage();
-  await page.goto(`${env.site.url}mesh.html`);
-  await page.waitForSelector('body[data-ready="true"]');
-  await page.selectOption('#edit-kind', 'edge');
-  await page.fill('#edit-element', '3');
-  await page.press('#edit-element', 'Enter');
-  await page.waitForFunction(() => document.querySelector('#edit-picked')?.textContent === 'Picked: e3');
-  await page.click('button[data-op="split-edge"]');
-  await page.waitForFunction(() => window.wingspline.state.ops.length === 1);
+  const { context, page } = await editE3('split-edge');
   await page.fill('#walk-element', '3');
   await page.press('#walk-element', 'Enter');
   await page.waitForFunction(() => window.wingspline.state.vertex === 2);
