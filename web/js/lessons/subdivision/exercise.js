@@ -13,11 +13,13 @@ export const subdivisionExercise = {
     return { mesh: numberedMeshOf(model.mesh) };
   },
   suggest(kind) {
+    // The drawing labels vertices, not edges: the walk is read off the winged-edge table
+    // (the tables panel stays), by the lecture's rule, as on the slide "Find CCW edges".
     if (kind === 'walk') {
       return {
         check: { kind: 'walk', around: 'vertex', element: 1 },
-        hide: ['tables-panel'],
-        question: 'Walk counter-clockwise around v1 of the mesh drawn, starting at the edge its vertex table stores. At each step, which edge comes next?',
+        hide: [],
+        question: 'Walk counter-clockwise around v1 of the mesh drawn, using its winged-edge tables (the panel "Winged-edge tables of the mesh shown"): start at the edge the vertex table stores for v1; from each edge, read S:L if v1 is its Start, E:R if it is its End. At each step, which edge comes next?',
       };
     }
     return {
