@@ -11,6 +11,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { useSiteAndBrowser, screenshot } from '../../helpers/browser.mjs';
 import { playMadeExercise } from '../../helpers/classroom.mjs';
+import { clickToPick, edgeMiddle } from '../../helpers/mesh-page.mjs';
 
 const env = useSiteAndBrowser();
 const feedback = (page) => page.locator('#exercise-feedback').innerText();
@@ -74,6 +75,11 @@ test('flip e3 by keyboard: a wrong wing is named by row and column without its v
   assert.match(await feedback(page), /✓ Right\. Every row after flip e3 is right/);
   assert.equal(await status(page), 'solved');
   await screenshot(page, 'exercise-edit-flip');
+  // The operation's key does nothing while the exercise is answered (it would draw the answer).
+  await clickToPick(page, await edgeMiddle(page, 2), 'e3');
+  await page.keyboard.press('f');
+  await page.keyboard.press('s');
+  assert.deepEqual(await page.evaluate(() => window.wingspline.state.ops), []);
   // the answer is kept: after a reload it is still there, and still right
   await page.reload();
   await page.waitForSelector('body[data-ready="true"]');
