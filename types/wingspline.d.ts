@@ -720,6 +720,34 @@ export interface WalkStepQuestion {
   step: number;
   given: number;
 }
+/** The edit exercise: one table of the answer, the listed rows then the new rows (docs/exercises.md, kind edit). */
+export interface EditTableAnswer {
+  /** 8 per edge row (S E L R S:L S:R E:L E:R), 1 per vertex or face row (its edge); 0-based, -1 = none, -2 = blank. */
+  cells: NumberList;
+  /** One per row: the row is marked removed. */
+  removed: ReadonlyArray<boolean | number>;
+  /** The new rows' labels, the student's choice (0-based; -2 = not given). */
+  labels: NumberList;
+}
+export interface EditAnswer { vertices: EditTableAnswer; edges: EditTableAnswer; faces: EditTableAnswer }
+export interface EditQuestion {
+  /** Per table, the existing rows the operation rewrites or removes (0-based, ascending). */
+  rows: { vertices: number[]; edges: number[]; faces: number[] };
+  /** Per table, how many new rows the operation adds. */
+  added: { vertices: number; edges: number; faces: number };
+  /** The operation as the edit panel writes it: 'flip e3'. */
+  operation: string;
+}
+export type EditFindingCode = 'blank' | 'unknown-label' | 'removed-element' | 'wrong-vertex' | 'wrong-face' | 'wrong-wing'
+  | 'not-incident' | 'not-on-face' | 'removed' | 'kept' | 'new-removed' | 'blank-label' | 'used-label' | 'duplicate-label';
+/** As MeshTableFinding: index is the row's position in its table of the answer; field 'removed' or 'label' for those marks. */
+export interface EditFinding extends Omit<MeshTableFinding, 'code'> { code: EditFindingCode }
+export interface EditCheck {
+  correct: boolean;
+  findings: EditFinding[];
+  /** The right answer in the student's labels. */
+  worked: { vertices: { cells: number[]; removed: boolean[]; labels: number[] }; edges: { cells: number[]; removed: boolean[]; labels: number[] }; faces: { cells: number[]; removed: boolean[]; labels: number[] } };
+}
 export interface WalkStepCheck {
   correct: boolean;
   /** The edge the lecture's rule reads (0-based). */
@@ -782,6 +810,10 @@ export interface WingsplineApi {
   checkSubdivideCounts(mesh: ExerciseMesh, answer: { scheme: SubdivisionScheme; steps?: number; vertices: number | null; edges: number | null; faces: number | null }): SubdivideCheck;
   /** V, E, F after `steps` (0..16) steps of the exercise's mesh. */
   subdivisionCounts(mesh: ExerciseMesh, options: { scheme: SubdivisionScheme; steps?: number }): { vertices: number; edges: number; faces: number };
+  /** The edit exercise's question: the rows `operation` rewrites on the mesh after `edits` (docs/exercises.md). */
+  editQuestion(mesh: WalkExerciseMesh, edits: ReadonlyArray<MeshOperation>, operation: MeshOperation): EditQuestion;
+  /** Checks an edit exercise's answer against the operation's change record (new elements under any labels). */
+  checkEditAnswer(mesh: WalkExerciseMesh, edits: ReadonlyArray<MeshOperation>, operation: MeshOperation, answer: EditAnswer): EditCheck;
 
   // ---- curves (docs/api-curves.md)
   /** form: 'descending' (lectures 000, 003; the default), 'ascending' (002) or 'transposed' (001). */

@@ -3,6 +3,7 @@
 // Int32 arrays: edges[8*r + k] (k: S E L R S:L S:R E:L E:R of the student's row r),
 // vertexEdges[v], faceEdges[f]; -1 = none, -2 = blank. Findings leave as plain objects.
 #include "boundary.h"
+#include "exercise_shared.h"
 
 #include "wingspline/mesh/exercise_check.h"
 #include "wingspline/mesh/exercise_tables.h"
@@ -23,27 +24,6 @@ struct ExerciseInput {
 ExerciseInput exercise_input(const val& face_offsets, const val& face_vertices, int32_t vertex_count, const val& edges,
                              const val& vertex_edges, const val& face_edges) {
     return {to_ints(face_offsets), to_ints(face_vertices), vertex_count, {to_ints(edges), to_ints(vertex_edges), to_ints(face_edges)}};
-}
-
-// Findings as plain objects {table, row, field, index, given, expected, code, reason, message, hint}.
-val findings_value(const std::vector<AnswerFinding>& list) {
-    val findings = val::array();
-    for (std::size_t i = 0; i < list.size(); ++i) {
-        const AnswerFinding& f = list[i];
-        val o = val::object();
-        o.set("table", std::string(table_name(f.table)));
-        o.set("row", f.row);
-        o.set("field", f.field);
-        o.set("index", f.index);
-        o.set("given", f.given);
-        o.set("expected", f.expected);
-        o.set("code", f.code);
-        o.set("reason", f.reason);
-        o.set("message", f.message);
-        o.set("hint", f.hint);
-        findings.set(i, o);
-    }
-    return findings;
 }
 
 val check_answer(const val& face_offsets, const val& face_vertices, int32_t vertex_count, const val& edges,
@@ -112,12 +92,7 @@ val check_table(const val& face_offsets, const val& face_vertices, int32_t verte
 val check_walk(const val& face_offsets, const val& face_vertices, int32_t vertex_count, const val& edges, const val& vertex_edges,
                const val& face_edges, bool around_face, int32_t element, int32_t step, int32_t given) {
     return guarded([&] {
-        BuildOptions options;
-        const std::vector<int32_t> pairs = to_ints(edges);
-        require(pairs.size() % 2 == 0, "invalid-argument", "edges must hold [S, E] for each edge");
-        for (std::size_t i = 0; i + 1 < pairs.size(); i += 2) options.edges.push_back({pairs[i], pairs[i + 1]});
-        options.vertex_edges = to_ints(vertex_edges);
-        options.face_edges = to_ints(face_edges);
+        const BuildOptions options = numbering_options(edges, vertex_edges, face_edges);
         const WingedEdgeMesh mesh = exercise_mesh(to_ints(face_offsets), to_ints(face_vertices), vertex_count, options);
         const WalkStepCheck c = check_walk_step(mesh, around_face, element, step, given);
         val r = val::object();

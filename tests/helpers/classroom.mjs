@@ -101,3 +101,21 @@ export async function editByKeyboard(page) {
   await page.keyboard.press('ArrowUp');
   await page.evaluate(() => window.wingspline.flush());
 }
+
+/**
+ * Make an exercise (the dialog already open on `page`): choose `kind`, take its link, open it
+ * in a page of `context` and wait for the exercise; the dialog must say no problem, the played
+ * page must play that kind with an empty message line. Returns the played page.
+ */
+export async function playMadeExercise(page, context, kind) {
+  await page.locator('#author-kind').selectOption(kind);
+  await page.locator('#author-copy-link').click();
+  await page.waitForSelector('#author-link:not([hidden])');
+  if (await page.locator('.author-problem').innerText()) throw new Error(`the dialog refused ${kind}: ${await page.locator('.author-problem').innerText()}`);
+  const played = await context.newPage();
+  await played.goto(await page.locator('#author-link').inputValue());
+  await played.waitForSelector('#exercise-panel');
+  const shown = await played.evaluate(() => [document.documentElement.dataset.exercise, document.querySelector('#message')?.textContent ?? '']);
+  if (shown[0] !== kind || shown[1].trim()) throw new Error(`the made ${kind} exercise plays as ${shown[0]}, message "${shown[1]}"`);
+  return played;
+}

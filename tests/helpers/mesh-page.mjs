@@ -15,3 +15,15 @@ export async function clickToPick(page, point, label) {
   await page.mouse.click(point.x, point.y);
   await page.waitForFunction((l) => document.querySelector('#edit-picked')?.textContent === `Picked: ${l}`, label);
 }
+
+// The client point a third of the way along edge e (0-based) of the mesh lesson's drawing,
+// asked of the page (clear of the edge's label in the middle).
+export async function edgeMiddle(page, e) {
+  return page.evaluate((edge) => {
+    const m = window.wingspline.model;
+    const s = m.we.edges[8 * edge]; const t = m.we.edges[8 * edge + 1];
+    const x = m.projected[3 * s] + (m.projected[3 * t] - m.projected[3 * s]) / 3;
+    const y = m.projected[3 * s + 1] + (m.projected[3 * t + 1] - m.projected[3 * s + 1]) / 3;
+    return window.wingspline.toClient(x, y);
+  }, e);
+}

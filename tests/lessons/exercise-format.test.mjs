@@ -46,7 +46,7 @@ test('the gallery has at least two exercises for every lesson, and every kind ap
     kinds.add(x.check.kind);
   }
   for (const id of lessonIds) assert.ok((byLesson[id] ?? 0) >= 2, `${id}: ${byLesson[id] ?? 0} exercises`);
-  assert.deepEqual([...kinds].sort(), Object.keys(KINDS).sort());
+  assert.deepEqual([...kinds].sort(), Object.keys(KINDS).sort()); // every kind has a gallery exercise
 });
 
 // A valid exercise to damage, one field at a time.

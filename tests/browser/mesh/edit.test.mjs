@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { openPage, screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
-import { clickToPick } from '../../helpers/mesh-page.mjs';
+import { clickToPick, edgeMiddle } from '../../helpers/mesh-page.mjs';
 
 const env = useSiteAndBrowser();
 
@@ -30,18 +30,6 @@ const SPLIT_E3 = {
   e1: ['e1', 'v1', 'v3', '', 'F1', 'e2', 'e2', 'e4', 'e8'],
   e4: ['e4', 'v3', 'v4', '', 'F2', 'e1', 'e8', 'e7', 'e5'],
 };
-
-// The client point of the middle of edge e on the canvas (asked of the page).
-async function edgeMiddle(page, e) {
-  return page.evaluate((edge) => {
-    const m = window.wingspline.model;
-    const s = m.we.edges[8 * edge]; const t = m.we.edges[8 * edge + 1];
-    // A third of the way along: clear of the edge label in the middle.
-    const x = m.projected[3 * s] + (m.projected[3 * t] - m.projected[3 * s]) / 3;
-    const y = m.projected[3 * s + 1] + (m.projected[3 * t + 1] - m.projected[3 * s + 1]) / 3;
-    return window.wingspline.toClient(x, y);
-  }, e);
-}
 
 async function pickEdgeWithPointer(page, e) {
   await clickToPick(page, await edgeMiddle(page, e), `e${e + 1}`);

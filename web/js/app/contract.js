@@ -189,15 +189,16 @@
  * `view = {}` and `model = null` there and works from the state;
  * `showWalk`: the drawing follows a walk being predicted; `markSubdividePoint`: the drawing
  * marks the new point a subdivide exercise asks about; `suggest`: the authoring dialog's
- * starting check, hidden panels and question for a kind, from the view shown.
+ * starting check, hidden panels and question for a kind, from the view shown (and, where the
+ * exercise starts from another drawing, its state: an edit's question starts before the edit).
  * @typedef {{
  *   kinds: string[],
- *   subject(view: View, model: Model, state: State, ctx: Ctx): { mesh?: any, curve?: any, curves?: Object<string, any>, joints?: Array<{ a: any, b: any }>, patch?: any, subdivision?: any },
+ *   subject(view: View, model: Model, state: State, ctx: Ctx): { mesh?: any, loaded?: any, edits?: any[], curve?: any, curves?: Object<string, any>, joints?: Array<{ a: any, b: any }>, patch?: any, subdivision?: any },
  *   keepsState?: string[],
  *   usesModel?: boolean,
  *   showWalk?: (ctx: Ctx, around: string, element: number) => void,
  *   markSubdividePoint?: (ctx: Ctx, painter: Painter, colors: any, asked: { corners: number[], type: string, label: string }) => void,
- *   suggest?: (kind: string, state: State, asked: { api: any, subject: any }) => { check: any, hide: string[], question: string },
+ *   suggest?: (kind: string, state: State, asked: { api: any, subject: any }) => { check: any, hide: string[], question: string, state?: State },
  * }} ExerciseSupport
  */
 

@@ -9,6 +9,7 @@ import { createCurvesApi } from './curves-api.js';
 import { createExerciseApi } from './exercise-api.js';
 import { createExerciseCurvesApi } from './exercise-curves-api.js';
 import { createExerciseSubdivideApi } from './exercise-subdivide-api.js';
+import { createExerciseEditApi } from './exercise-edit-api.js';
 
 /** @param {any} raw the module's embind functions */
 export function createApi(raw) {
@@ -29,5 +30,6 @@ export function createApi(raw) {
     ...createExerciseApi(raw),
     ...createExerciseCurvesApi(raw),
     ...createExerciseSubdivideApi(raw),
+    ...createExerciseEditApi(raw),
   });
 }

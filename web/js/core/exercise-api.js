@@ -62,7 +62,7 @@ function answerCell(x, what) {
 }
 
 // A flat row table (number[]) -> Int32Array; `name(i)` says which row and field entry i is.
-function flatAnswer(value, key, name) {
+export function flatAnswer(value, key, name) {
   if (!isNumberArray(value)) fail('invalid-answer', `the answer's ${key} must be an array of whole numbers (-1 = none, -2 = blank)`);
   const out = new Int32Array(value.length);
   for (let i = 0; i < value.length; i += 1) out[i] = answerCell(value[i], name(i));
@@ -101,14 +101,14 @@ const WINGED_EDGE_CELLS = Object.freeze({
 
 // message and hint: the value-free words (where, the rule; a nudge), for feedback levels
 // check and hint; reason: with the values, for the worked answer and the lecturer.
-function plainFindings(list) {
+export function plainFindings(list) {
   return Array.from(list, ({ table, row, field, index, given, expected, code, reason, message, hint }) => ({
     table, row, field, index, given, expected, code, reason, message, hint,
   }));
 }
 
 // The mesh's numbering for a walk: a slide's edges ([S, E] per edge) and vertex/face edges, if given.
-function walkNumbering(mesh) {
+export function walkNumbering(mesh) {
   const edges = mesh.edges ?? [];
   if (!Array.isArray(edges)) fail('invalid-argument', 'the mesh\'s edges must be [S, E] pairs, one per edge');
   const pairs = new Int32Array(2 * edges.length);
@@ -121,6 +121,7 @@ function walkNumbering(mesh) {
   });
   return [pairs, cells(mesh.vertexEdges ?? [], 'vertexEdges'), cells(mesh.faceEdges ?? [], 'faceEdges')];
 }
+
 
 export function createExerciseApi(raw) {
   return {

@@ -183,6 +183,35 @@ const ADJACENCY_KINDS = Object.freeze({
   'edges-of-face': 'face', 'vertices-of-face': 'face', 'face-neighbours': 'face', 'faces-of-edge': 'edge',
 });
 
+function editNamed(edits, name) {
+  const edit = edits?.operations.find((o) => o.name === name);
+  if (!edit) {
+    const names = (edits?.operations ?? []).map((o) => o.name);
+    fail('unknown-operation', `unknown mesh operation ${JSON.stringify(String(name)).slice(0, 60)}; use ${names.join(', ')}`);
+  }
+  return edit;
+}
+
+// The entry of an {op, ...} record in the registry `edits` (meshOperations) and its arguments
+// in the entry's order: an element index, or a finite number (its default when left out).
+// Keys the entry does not take are refused, so a misspelt argument never goes unnoticed.
+export function operationValues(edits, operation) {
+  if (operation === null || typeof operation !== 'object') fail('invalid-argument', 'an operation is an object such as {op: \'flip-edge\', e: 4}');
+  const edit = editNamed(edits, operation.op);
+  const names = edit.arguments.map((a) => a.name);
+  for (const key of Object.keys(operation)) {
+    if (key !== 'op' && !names.includes(key)) fail('invalid-argument', `${edit.name} takes ${names.join(', ')}; ${String(key).slice(0, 20)} is not one of them`);
+  }
+  const values = edit.arguments.map((a) => {
+    const v = operation[a.name] === undefined && a.optional ? a.default : operation[a.name];
+    if (v === undefined) fail('invalid-argument', `${edit.name} needs ${a.name}${a.label ? ` (${a.label})` : a.kind ? ` (a ${a.kind})` : ''}`);
+    if (a.kind) return elementIndex(v, a.kind);
+    if (typeof v !== 'number' || !Number.isFinite(v)) fail('invalid-argument', `${a.name} must be a finite number, not ${String(v).slice(0, 40)}`);
+    return v;
+  });
+  return [edit, values];
+}
+
 export class Mesh {
   static {
     handleOfMesh = (mesh) => mesh.#live();
@@ -429,38 +458,13 @@ export class Mesh {
     return r.allowed ? { ok: true } : { ok: false, code: r.code, message: r.message };
   }
 
-  #editNamed(name) {
-    const edit = this.#edits?.operations.find((o) => o.name === name);
-    if (!edit) {
-      const names = (this.#edits?.operations ?? []).map((o) => o.name);
-      fail('unknown-operation', `unknown mesh operation ${JSON.stringify(String(name)).slice(0, 60)}; use ${names.join(', ')}`);
-    }
-    return edit;
-  }
-
   #positional(name, args) {
-    const edit = this.#editNamed(name);
+    const edit = editNamed(this.#edits, name);
     return Object.fromEntries([['op', name], ...edit.arguments.map((a, k) => [a.name, args[k]]).filter(([, v]) => v !== undefined)]);
   }
 
-  // The entry of an {op, ...} record and its arguments in the entry's order: an element
-  // index, or a finite number (its default when left out). Keys the entry does not take
-  // are refused, so a misspelt argument never goes unnoticed.
   #operationValues(operation) {
-    if (operation === null || typeof operation !== 'object') fail('invalid-argument', 'an operation is an object such as {op: \'flip-edge\', e: 4}');
-    const edit = this.#editNamed(operation.op);
-    const names = edit.arguments.map((a) => a.name);
-    for (const key of Object.keys(operation)) {
-      if (key !== 'op' && !names.includes(key)) fail('invalid-argument', `${edit.name} takes ${names.join(', ')}; ${String(key).slice(0, 20)} is not one of them`);
-    }
-    const values = edit.arguments.map((a) => {
-      const v = operation[a.name] === undefined && a.optional ? a.default : operation[a.name];
-      if (v === undefined) fail('invalid-argument', `${edit.name} needs ${a.name}${a.label ? ` (${a.label})` : a.kind ? ` (a ${a.kind})` : ''}`);
-      if (a.kind) return elementIndex(v, a.kind);
-      if (typeof v !== 'number' || !Number.isFinite(v)) fail('invalid-argument', `${a.name} must be a finite number, not ${String(v).slice(0, 40)}`);
-      return v;
-    });
-    return [edit, values];
+    return operationValues(this.#edits, operation);
   }
 
   // Named methods for the operations that had them before every operation became a value

@@ -23,6 +23,7 @@ function fieldsOf(kind, subject) {
     return [pick('table', 'Table to fill in', Object.fromEntries(Object.entries(TABLES).map(([k, v]) => [k, v.label]))),
       { name: 'given', label: 'Columns given (comma-separated: start, end, left, …; empty for none)', type: 'list' }];
   }
+  if (kind === 'edit') return []; // the operation is the lesson's last edit (its suggestion)
   if (kind === 'walk') return [pick('around', 'Walk', { vertex: 'around a vertex', face: 'along a face' }), num('element', 'Vertex or face number (1-based)', { min: 1, step: 1 })];
   if (kind === 'joint') return [num('joint', 'Joint (1 = the first)', { min: 1, step: 1 })];
   if (kind === 'subdivide') {
@@ -77,9 +78,11 @@ export function openAuthorDialog({ ctx, lesson, view, message }) {
   const result = h('p', { class: 'author-result', 'aria-live': 'polite' });
   /** @type {Map<string, HTMLInputElement | HTMLSelectElement>} */
   let inputs = new Map();
+  let suggested = null; // the lesson's suggestion for the kind shown (an edit's: its state and operation)
 
   function fill(kind) {
     const suggestion = support.suggest?.(kind, ctx.state, { api: ctx.api, subject }) ?? { check: { kind }, hide: [], question: '' };
+    suggested = suggestion;
     inputs = new Map();
     const check = suggestion.check;
     const valueOf = (name) => (name.startsWith('point.') ? check.point?.[name.slice(6)] : name.startsWith('property.') ? (name === 'property.x' ? check.property?.point?.[0] : name === 'property.y' ? check.property?.point?.[1] : check.property?.[name.slice(9)]) : check[name]);
@@ -108,6 +111,7 @@ export function openAuthorDialog({ ctx, lesson, view, message }) {
 
   // The check as typed (empty numbers left out; a quantity's unused fields left out).
   function checkOf(kind) {
+    if (kind === 'edit') return { ...suggested?.check, kind };
     const check = { kind };
     const property = {};
     for (const [name, input] of inputs) {
@@ -133,7 +137,7 @@ export function openAuthorDialog({ ctx, lesson, view, message }) {
     const kind = kindSelect.value;
     const exercise = exerciseOf({
       title: title.value.trim(), lesson: lesson.id, source: source.value.trim(), question: question.value.trim(),
-      stateVersion: lesson.stateVersion, state: ctx.state, hide: hideBoxes.filter((b) => b.checked).map((b) => b.value), check: checkOf(kind),
+      stateVersion: lesson.stateVersion, state: suggested?.state ?? ctx.state, hide: hideBoxes.filter((b) => b.checked).map((b) => b.value), check: checkOf(kind),
       feedback: { level: levelSelect.value, hintAfter: hintAfter.value.trim() === '' ? undefined : Number(hintAfter.value) },
     });
     // As a student's page reads it: the text (with its size limit), the lesson's state, and
@@ -141,7 +145,8 @@ export function openAuthorDialog({ ctx, lesson, view, message }) {
     // to work by hand, a quantity the curve cannot give), the answer form built and dropped.
     const read = parseExercise(stringifyExact(exercise), { lessonIds });
     readExerciseState(lesson, read);
-    CREATE[kind]({ api: ctx.api, check: read.check, subject: () => subject, support, ctx });
+    const asked = suggested?.state ? support.subject(view, ctx.model, suggested.state, ctx) : subject;
+    CREATE[kind]({ api: ctx.api, check: read.check, subject: () => asked, support, ctx });
     return read;
   }
 

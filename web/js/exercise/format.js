@@ -53,7 +53,7 @@ export const PROPERTIES = Object.freeze({
   'passes-through': { label: 'make the curve pass through a point' },
 });
 
-// The five kinds, in the issue's order. Which lessons offer a kind is the lesson's to say
+// The kinds (the first five in the order they came, then the homework kinds). Which lessons offer a kind is the lesson's to say
 // (its `exercise.kinds`, app/contract.js).
 export const KINDS = Object.freeze({
   table: { label: 'Fill in a table' },
@@ -62,6 +62,7 @@ export const KINDS = Object.freeze({
   value: { label: 'Compute a value by hand' },
   property: { label: 'Move control points until a property holds' },
   subdivide: { label: 'One subdivision step by hand' },
+  edit: { label: 'Write the rows an edit rewrites' },
 });
 
 // What a check tells the student (the author chooses; docs/exercises.md, "Feedback levels"):
@@ -111,6 +112,7 @@ const CHECKS = {
     kind: oneOf('subdivide'), scheme: oneOf('loop', 'catmull-clark'), ask: oneOf('mask', 'counts'),
     point: object({ type: oneOf('vertex', 'edge', 'face'), element: ordinal }), steps: integer({ min: 1, max: 4 }),
   }, ['point', 'steps']],
+  edit: [{ kind: oneOf('edit'), op: (v, path) => readEditOperation(v, path) }, []],
 };
 
 // Kind subdivide: a mask question names its new point (and no steps: it is about one step);
@@ -123,6 +125,17 @@ function readSubdivide(check, path) {
   } else if (check.point) {
     throw new SchemaError(`${path}.point`, 'is only for ask "mask" (a counts question is about the whole mesh)');
   }
+}
+
+// An edit's operation as the lesson state stores it ({op: 'flip-edge', e: 3}), its elements
+// counted from 1 as the lectures count them; which arguments an operation takes is the core
+// registry's to say (the edit kind asks it, and names the field).
+function readEditOperation(v, path) {
+  if (v === null || v === undefined) throw new SchemaError(path, 'must name the operation asked, e.g. {"op": "flip-edge", "e": 3} (in the lesson: make the edit, then Make an exercise)');
+  const op = object({ op: text({ maxLength: 40 }), e: ordinal, f: ordinal, v: ordinal, a: ordinal, b: ordinal, t: parameter },
+    { optional: ['e', 'f', 'v', 'a', 'b', 't'] })(v, path);
+  if (!/^[a-z][a-z-]*$/.test(op.op)) throw new SchemaError(`${path}.op`, `must be an operation's name such as flip-edge, not "${op.op}"`);
+  return op;
 }
 
 function readProperty(v, path) {

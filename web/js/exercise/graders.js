@@ -9,6 +9,7 @@ import { gradeJoint } from './kinds/joint.js';
 import { gradeValue } from './kinds/value.js';
 import { gradeProperty } from './kinds/property.js';
 import { gradeSubdivide } from './kinds/subdivide.js';
+import { gradeEdit } from './kinds/edit.js';
 
 /** @type {Readonly<Record<string, (parts: { api: any, check: any, subject: any, answer: any }) => { correct: boolean, partial?: boolean, incomplete?: boolean, findings: Array<{ text: string, hint?: string } | string>, note?: string }>>} */
 export const GRADERS = Object.freeze({
@@ -18,4 +19,5 @@ export const GRADERS = Object.freeze({
   value: gradeValue,
   property: gradeProperty,
   subdivide: gradeSubdivide,
+  edit: gradeEdit,
 });

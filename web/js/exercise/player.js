@@ -14,6 +14,7 @@ import { createWalkKind } from './kinds/walk.js';
 import { createJointKind } from './kinds/joint.js';
 import { createValueKind } from './kinds/value.js';
 import { createPropertyKind } from './kinds/property.js';
+import { createEditKind } from './kinds/edit.js';
 import { createSubdivideKind } from './kinds/subdivide.js';
 
 // What this exercise's feedback will and will not tell, in one line (the author's level).
@@ -27,7 +28,8 @@ export function levelSentence({ level, hintAfter }) {
 // Typed arrays as plain lists, to compare two subjects.
 const plain = (key, value) => (ArrayBuffer.isView(value) ? Array.from(/** @type {any} */ (value)) : value);
 
-export const CREATE = { table: createTableKind, walk: createWalkKind, joint: createJointKind, value: createValueKind, property: createPropertyKind, subdivide: createSubdivideKind };
+export const CREATE = { table: createTableKind, walk: createWalkKind, joint: createJointKind, value: createValueKind, property: createPropertyKind, subdivide: createSubdivideKind,
+  edit: createEditKind };
 
 /**
  * The lesson state of an exercise, read like a share link's (migrated, validated); a field

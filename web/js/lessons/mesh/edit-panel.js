@@ -144,9 +144,11 @@ export function createEditPanel(ctx, selection, { pick }) {
     }
   }
 
+  // While an edit exercise is answered the drawing stays the mesh before the operation: the
+  // operations' keys are off (the panel itself is hidden), or a key would draw the answer.
   for (const entry of EDIT_OPS) {
     ctx.keymap.add({ keys: [entry.key], label: `${entry.label.toLowerCase()} (the picked ${entry.needs})`, group: 'Edit',
-      action: () => run(entry.op), when: () => selection.pick?.kind === entry.needs });
+      action: () => run(entry.op), when: () => selection.pick?.kind === entry.needs && ctx.ui.exercise !== 'edit' });
   }
 
   // The choices for the picked element (the registry's query: the corners of a face, the

@@ -1,17 +1,20 @@
 // @ts-check
 // The mesh lesson's exercises (docs/exercises.md): fill in a table for the mesh
-// drawn (kind 1) and predict the CCW walk (kind 2). The subject is the mesh as loaded, with
-// the slide's numbering where it has one (lecture 000's edges e1..e9), so the drawing's labels
-// and the checks agree.
+// drawn (kind 1), predict the CCW walk (kind 2), and write the rows an edit rewrites (edit).
+// The subject is the mesh as loaded (with the slide's numbering where it has one: lecture
+// 000's edges e1..e9) and the state's edits; the mesh the table and walk are asked of is the
+// one drawn, the edits replayed in the core, so the drawing's labels and the checks agree.
 import { sourceOf } from '../../ui/mesh/mesh-choice.js';
-import { refuseEdited } from '../../exercise/subjects.js';
+import { editedMeshSubject } from '../../exercise/subjects.js';
+
+// The operations of the edit panel an edit exercise can ask (not a move, not compact).
+const isQuestion = (op) => op && op.op !== 'move-vertex' && op.op !== 'compact';
 
 /** @type {import('../../app/contract.js').ExerciseSupport} */
 export const meshExercise = {
-  kinds: ['table', 'walk'],
+  kinds: ['table', 'walk', 'edit'],
   subject(view, model, state, ctx) {
-    refuseEdited(state);
-    return { mesh: sourceOf(state, ctx.api) };
+    return editedMeshSubject(ctx.api, sourceOf(state, ctx.api), state.ops);
   },
   // The drawing follows the walk being predicted: its element, at its start (the walk's own
   // panel, which would tell the next edge, is hidden by the exercise).
@@ -28,6 +31,20 @@ export const meshExercise = {
         check: { kind: 'walk', around, element },
         hide: ['walk-panel', 'tables-panel'],
         question: `Walk counter-clockwise ${around === 'vertex' ? `around v${element}` : `along F${element}`}, starting at the edge the ${around} table stores. At each step, which edge comes next?`,
+      };
+    }
+    if (kind === 'edit') {
+      // The last edit is the question, the exercise's drawing the mesh before it; with no
+      // edit made yet, splitting e1 (which every mesh allows) stands in until one is.
+      const ops = state.ops ?? [];
+      const last = ops[ops.length - 1];
+      const asked = isQuestion(last);
+      const op = asked ? Object.fromEntries(Object.entries(last).map(([k, v]) => [k, k === 'op' || k === 't' ? v : v + 1])) : { op: 'split-edge', e: 1, t: 0.5 };
+      return {
+        state: asked ? { ...state, ops: ops.slice(0, -1) } : state,
+        check: { kind: 'edit', op },
+        hide: ['edit-panel'],
+        question: 'Here is the mesh before the operation. Write every row of the winged-edge tables that the operation rewrites, as it reads after it: existing rows keep their labels; give each new element a label of your choice that no element has yet; mark a removed element\'s row as removed.',
       };
     }
     return {

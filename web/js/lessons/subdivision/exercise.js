@@ -1,20 +1,22 @@
 // @ts-check
 // The subdivision lesson's exercises: fill in a table of the mesh at the level
-// shown (kind 1), e.g. the face table after one Loop step, and one step by hand (kind
-// subdivide): the mask and exact weights of a new point, or the counts V, E, F after a step.
-// The numbering of vertices and faces is the core's subdivision numbering, shown in the
-// drawing; the table kind numbers edges freely, the subdivide kind marks the edge it asks about.
-import { meshSubjectOf } from '../../exercise/subjects.js';
+// shown (kind 1), e.g. the face table after one Loop step; predict a CCW walk on it (kind
+// 2); one step by hand (kind subdivide): the mask and exact weights of a new point, or the
+// counts V, E, F after a step. The numbering is the core's subdivision numbering, shown in the
+// drawing (the subject carries the edges' too, so a walk's edges are the drawing's); a
+// table's edges are numbered freely, the subdivide kind marks the edge it asks about.
+import { numberedMeshOf, meshSubjectOf } from '../../exercise/subjects.js';
 import { drawAskedPoint } from './draw.js';
 
 /** @type {import('../../app/contract.js').ExerciseSupport} */
 export const subdivisionExercise = {
-  kinds: ['table', 'subdivide'],
+  kinds: ['table', 'walk', 'subdivide'],
   usesModel: true,
-  // mesh: the mesh shown (the table kind); subdivision: the old mesh of the step shown (the
-  // level's own mesh, even once the step is reconnected) and its scheme (the subdivide kind).
+  // mesh: the mesh shown (the table and walk kinds); subdivision: the old mesh of the step
+  // shown (the level's own mesh, even once the step is reconnected) and its scheme (the
+  // subdivide kind).
   subject(view, model) {
-    return { mesh: meshSubjectOf(model.mesh), subdivision: { mesh: meshSubjectOf(model.levelMesh), scheme: model.scheme } };
+    return { mesh: numberedMeshOf(model.mesh), subdivision: { mesh: meshSubjectOf(model.levelMesh), scheme: model.scheme } };
   },
   // The drawing marks the new point asked about where the old mesh is drawn (its vertex, the
   // edge's middle, the face's middle), without its position or its mask.
@@ -23,6 +25,15 @@ export const subdivisionExercise = {
   },
   suggest(kind, state, asked) {
     if (kind === 'subdivide') return suggestSubdivide(state, asked);
+    // The drawing labels vertices, not edges: the walk is read off the winged-edge table
+    // (the tables panel stays), by the lecture's rule, as on the slide "Find CCW edges".
+    if (kind === 'walk') {
+      return {
+        check: { kind: 'walk', around: 'vertex', element: 1 },
+        hide: [],
+        question: 'Walk counter-clockwise around v1 of the mesh drawn, using its winged-edge tables (the panel "Winged-edge tables of the mesh shown"): start at the edge the vertex table stores for v1; from each edge, read S:L if v1 is its Start, E:R if it is its End. At each step, which edge comes next?',
+      };
+    }
     return {
       check: { kind: 'table', table: 'adjacency' },
       hide: ['tables-panel'],
