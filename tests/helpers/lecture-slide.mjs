@@ -47,3 +47,13 @@ export const FOLEY_EDGE_LIST = Object.freeze([
   ['V4', 'V1', 'P1', 'λ'],
 ]);
 export const FOLEY_POLYGONS = Object.freeze([['E1', 'E4', 'E5'], ['E2', 'E3', 'E4']]);
+
+// flip e3 (by hand): v3 now stores e1; e1..e5 rewritten; F1 stores e3.
+export const FLIP_E3 = {
+  vertices: [['e1']],
+  edges: [['v1', 'v3', 'none', 'F2', 'e2', 'e3', 'e4', 'e4'], ['v1', 'v2', 'F1', 'none', 'e3', 'e1', 'e5', 'e6'],
+    ['v4', 'v1', 'F1', 'F2', 'e5', 'e4', 'e2', 'e1'], ['v3', 'v4', 'none', 'F2', 'e1', 'e1', 'e7', 'e3'],
+    ['v2', 'v4', 'F1', 'F3', 'e2', 'e6', 'e3', 'e7']],
+  faces: [['e3']],
+};
+

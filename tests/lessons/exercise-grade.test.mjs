@@ -18,6 +18,7 @@ import { gradeJoint, workedJoint } from '../../web/js/exercise/kinds/joint.js';
 import { gradeValue, workedValue } from '../../web/js/exercise/kinds/value.js';
 import { workedProperty } from '../../web/js/exercise/kinds/property.js';
 import { workedSubdivide } from '../../web/js/exercise/kinds/subdivide.js';
+import { workedEdit } from '../../web/js/exercise/kinds/edit.js';
 import { GRADERS } from '../../web/js/exercise/graders.js';
 import { meshLesson } from '../../web/js/lessons/mesh/lesson.js';
 import { lesson as curvesLesson } from '../../web/js/lessons/curves/lesson.js';
@@ -32,7 +33,7 @@ const LESSONS = Object.fromEntries([meshLesson, curvesLesson, continuityLesson, 
 const lessonIds = lessons.map((l) => l.id);
 // The grader's registry, and the kinds named here, must agree: a kind the grader cannot grade fails this test.
 const GRADE = GRADERS;
-const WORKED = { table: workedTable, walk: workedWalk, joint: workedJoint, value: workedValue, property: workedProperty, subdivide: workedSubdivide };
+const WORKED = { table: workedTable, walk: workedWalk, joint: workedJoint, value: workedValue, property: workedProperty, subdivide: workedSubdivide, edit: workedEdit };
 const readText = (id) => fs.readFileSync(new URL(`../../web/exercises/${id}.json`, import.meta.url), 'utf8');
 
 // As the grader opens an exercise: headless, view {}, the model from the lesson's compute.

@@ -11,7 +11,7 @@ import { execFileSync, spawnSync } from 'node:child_process';
 import { createHash } from 'node:crypto';
 import { repoRoot, startSite, launchBrowser } from '../helpers/browser.mjs';
 import { csvObjects } from '../helpers/csv.mjs';
-import { slideWalk } from '../helpers/lecture-slide.mjs';
+import { slideWalk, FLIP_E3 } from '../helpers/lecture-slide.mjs';
 
 const pageDir = path.join(repoRoot, 'tests', 'package', 'page');
 let tmp;
@@ -158,7 +158,7 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
   const exercises = path.join(work, 'homework-3');
   const uploads = path.join(work, 'uploads');
   for (const dir of [exercises, path.join(uploads, 'ada'), path.join(uploads, 'bob'), path.join(uploads, 'eve'), path.join(uploads, 'zed')]) fs.mkdirSync(dir, { recursive: true });
-  const ids = ['comparison-hermite-mg', 'mesh-walk-along-f1', 'subdivision-catmull-clark-cube-counts'];
+  const ids = ['comparison-hermite-mg', 'mesh-walk-along-f1', 'subdivision-catmull-clark-cube-counts', 'mesh-edit-flip-e3'];
   for (const id of ids) fs.writeFileSync(path.join(exercises, `${id}.json`), galleryFile(id));
   const mg = hermiteMgFirstEntry();
   assert.ok(Math.abs(mg - 1.4) < 1e-12, `the M G entry of the lecture's formula: ${mg}`);
@@ -170,11 +170,15 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
   // vertex, edge and face; each quad becomes four, each edge two plus one per face side.
   const [V, E, F, corners] = [8, 12, 6, 24];
   const counts = { vertices: String(V + E + F), edges: String(2 * E + corners), faces: String(corners) };
+  // The rows flip e3 rewrites, worked by hand from lecture 000's conventions (FLIP_E3): the
+  // answer as the edit kind keeps it, per table its rows' cells as typed.
+  const flip = (cells) => Object.fromEntries(Object.entries(cells).map(([t, rows]) => [t, { cells: rows, removed: rows.map(() => false), labels: [] }]));
+  const wrongFlip = { ...FLIP_E3, edges: FLIP_E3.edges.map((row, r) => (r === 2 ? row.map((c, k) => (k === 4 ? 'e2' : c)) : row)) };
   fs.writeFileSync(path.join(uploads, 'ada', 'wingspline-submission-ada.json'), submissionText({ student: 'Ada Lovelace', exercises: [
     entry('comparison-hermite-mg', String(mg)), entry('mesh-walk-along-f1', { picks }, { status: 'solved' }),
-    entry('subdivision-catmull-clark-cube-counts', counts)] }));
+    entry('subdivision-catmull-clark-cube-counts', counts), entry('mesh-edit-flip-e3', flip(FLIP_E3))] }));
   fs.writeFileSync(path.join(uploads, 'bob', 'wingspline-submission-bob.json'), submissionText({ student: 'Bob', exercises: [entry('comparison-hermite-mg', '3'),
-    entry('subdivision-catmull-clark-cube-counts', { ...counts, edges: String(2 * E) })] }));
+    entry('subdivision-catmull-clark-cube-counts', { ...counts, edges: String(2 * E) }), entry('mesh-edit-flip-e3', flip(wrongFlip))] }));
   // Eve's file: edited after export (her wrong answer marked solved), a name made to run in a spreadsheet.
   fs.writeFileSync(path.join(uploads, 'eve', 'wingspline-submission-eve.json'), submissionText({
     student: '=HYPERLINK("http://example.invalid","x")', exercises: [entry('comparison-hermite-mg', '3'), entry('mesh-walk-along-f1', { picks: [walk[0]] })],
@@ -188,7 +192,7 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
   const out = path.join(work, 'grades');
   const r = spawnSync('npx', ['--offline', 'wingspline', 'grade', 'homework-3', 'uploads', '--out', out], { cwd: work, encoding: 'utf8' });
   assert.equal(r.status, 0, r.stderr);
-  assert.match(r.stdout, /Graded 6 submission files against 3 exercises: 3 of 14 answers right/);
+  assert.match(r.stdout, /Graded 6 submission files against 4 exercises: 4 of 18 answers right/);
   const rows = csvObjects(fs.readFileSync(path.join(out, 'gradebook.csv'), 'utf8'));
   const at = (file, exercise) => rows.find((x) => x['submission file'].endsWith(file) && x.exercise === exercise);
   const ada = at('ada.json', 'comparison-hermite-mg');
@@ -197,6 +201,11 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
   assert.match(ada.note, /name as typed in the file .*ada\.json; not verified/);
   assert.equal(at('ada.json', 'mesh-walk-along-f1').result, 'right');
   assert.equal(at('ada.json', 'subdivision-catmull-clark-cube-counts').result, 'right');
+  assert.equal(at('ada.json', 'mesh-edit-flip-e3').result, 'right');
+  const bobEdit = at('bob.json', 'mesh-edit-flip-e3');
+  assert.equal(bobEdit.result, 'wrong');
+  assert.match(bobEdit.reason, /Row e3, column S:L/);
+  assert.doesNotMatch(bobEdit.reason, /\be5\b/, 'the right wing (e5) is not told');
   const bobCounts = at('bob.json', 'subdivision-catmull-clark-cube-counts');
   assert.equal(bobCounts.result, 'wrong');
   assert.ok(!bobCounts.reason.includes(counts.edges), `the reason does not give E: ${bobCounts.reason}`);
@@ -219,7 +228,7 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
   for (const row of rows) for (const [k, v] of Object.entries(row)) assert.ok(!/^[=+\-@]/.test(v), `${k}: ${v}`);
   const md = fs.readFileSync(path.join(out, 'gradebook.md'), 'utf8');
   assert.match(md, /^# Gradebook/);
-  assert.match(md, /wingspline\\-submission\\-ada\\\.json \| Ada Lovelace \| 3 \| 3 \|/);
+  assert.match(md, /wingspline\\-submission\\-ada\\\.json \| Ada Lovelace \| 4 \| 4 \|/);
 
   // Without the exercise files: told, and a non-zero exit.
   const none = spawnSync('npx', ['--offline', 'wingspline', 'grade', 'uploads/bob'], { cwd: work, encoding: 'utf8' });

@@ -12,6 +12,7 @@ import path from 'node:path';
 import { useSiteAndBrowser, screenshot } from '../../helpers/browser.mjs';
 import { playMadeExercise } from '../../helpers/classroom.mjs';
 import { clickToPick, edgeMiddle } from '../../helpers/mesh-page.mjs';
+import { FLIP_E3 } from '../../helpers/lecture-slide.mjs';
 
 const env = useSiteAndBrowser();
 const feedback = (page) => page.locator('#exercise-feedback').innerText();
@@ -33,15 +34,6 @@ async function editE3(op) {
   await page.waitForFunction(() => window.wingspline.state.ops.length === 1);
   return { context, page };
 }
-
-// flip e3 (by hand): v3 now stores e1; e1..e5 rewritten; F1 stores e3.
-const FLIP_E3 = {
-  vertices: [['e1']],
-  edges: [['v1', 'v3', 'none', 'F2', 'e2', 'e3', 'e4', 'e4'], ['v1', 'v2', 'F1', 'none', 'e3', 'e1', 'e5', 'e6'],
-    ['v4', 'v1', 'F1', 'F2', 'e5', 'e4', 'e2', 'e1'], ['v3', 'v4', 'none', 'F2', 'e1', 'e1', 'e7', 'e3'],
-    ['v2', 'v4', 'F1', 'F3', 'e2', 'e6', 'e3', 'e7']],
-  faces: [['e3']],
-};
 
 test('flip e3 by keyboard: a wrong wing is named by row and column without its value, then the right rows solve it', async () => {
   const page = await env.openLesson(`${env.site.url}mesh.html#exercise=mesh-edit-flip-e3`);

@@ -12,7 +12,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { useSiteAndBrowser } from '../../helpers/browser.mjs';
 import { exerciseAt } from '../../helpers/exercise-levels.mjs';
-import { slideRows, SLIDE_VERTEX_EDGES, SLIDE_FACE_EDGES, slideWalk } from '../../helpers/lecture-slide.mjs';
+import { slideRows, SLIDE_VERTEX_EDGES, SLIDE_FACE_EDGES, slideWalk, FLIP_E3 } from '../../helpers/lecture-slide.mjs';
 
 const env = useSiteAndBrowser();
 const feedback = (page) => page.locator('#exercise-feedback').innerText();
@@ -77,6 +77,20 @@ const KINDS = {
     id: 'curves-bernstein-half', scope: 'page', right: ['0.375', '3/8', '.375'],
     wrong: (page) => page.locator('#exercise-value').fill('0.4'),
     keyboardTarget: (page) => page.locator('#exercise-value'),
+  },
+  edit: {
+    // The rows flip e3 rewrites, worked by hand (FLIP_E3), with e3's S:L typed e2 (it is e5).
+    id: 'mesh-edit-flip-e3', scope: 'feedback', right: ['e5'],
+    wrong: async (page) => {
+      for (const [table, rows] of Object.entries(FLIP_E3)) {
+        for (const [row, cells] of rows.entries()) {
+          for (const [col, value] of cells.entries()) {
+            await page.locator(`.exercise-edit input[data-table="${table}"][data-row="${row}"][data-col="${col}"]`).fill(table === 'edges' && row === 2 && col === 4 ? 'e2' : value);
+          }
+        }
+      }
+    },
+    keyboardTarget: (page) => page.locator('.exercise-edit input[data-table="edges"][data-row="2"][data-col="4"]'),
   },
   subdivide: {
     // One Catmull-Clark step of the cube (V 8, E 12, F 6 quads): E' = 2E + the 24 face sides = 48,
