@@ -98,7 +98,7 @@ export function mountExercise({ ctx, lesson, view, exercise, key, hash = null, l
     kind.root,
     h('div', { class: 'exercise-actions' }, checkButton, workedButton, againButton),
     feedback, worked, status,
-    h('p', { class: 'exercise-leave' }, h('a', { href: `./${lesson.id}.html`, id: 'exercise-leave' }, 'Leave the exercise'), ' · ', h('a', { href: './exercises.html' }, 'All exercises')));
+    h('p', { class: 'exercise-leave' }, h('a', { href: `./${lesson.id}.html`, id: 'exercise-leave' }, 'Leave the exercise'), ' · ', h('a', { href: './exercises.html' }, 'All exercises'), ' · ', h('a', { href: './exercises.html#hand-in-title', id: 'exercise-hand-in' }, 'Hand in your answers')));
   // Enter in a typed answer checks it (a radio group's Enter too).
   kind.root.addEventListener('keydown', (event) => {
     if (event.key === 'Enter' && !event.isComposing && event.target instanceof HTMLInputElement) {
