@@ -194,9 +194,17 @@ WorkedValue matrix_entry(const Curve& c, const ValueAsk& ask) {
     const int col = need_index(ask.col, "ask.col", s.columns, "the column of M G (x, y" + std::string(s.columns > 2 ? ", ..." : "") + ")");
     WorkedValue w;
     w.expected = {s.C[s.columns * row + col]};
-    w.label = "(M G)" + sub(row) + "," + sub(col) + " of segment " + std::to_string(segment);
-    w.working.push_back("P(t) = " + powers_name(s.degree) + " M G with C = M G (lectures 000, 003); row r of C multiplies t^(" +
-                        std::to_string(s.degree) + " − r)" + (s.homogeneous ? "; G holds (w x, w y, .., w)" : ""));
+    // In the question's language: rows, columns and segments counted from 1, the coordinate
+    // named, the segment's own parameter u as lecture 003 writes P(u) = [u³ u² u 1] M G.
+    const char* axes[] = {"x", "y", "z", "w"};
+    const std::string axis = col < 4 ? std::string(" (") + axes[s.homogeneous && col == s.columns - 1 ? 3 : col] + ")" : "";
+    std::string powers = powers_name(s.degree);
+    for (char& ch : powers)
+        if (ch == 't') ch = 'u';
+    w.label = "(M G)" + sub(row + 1) + "," + sub(col + 1) + ", row " + std::to_string(row + 1) + ", column " + std::to_string(col + 1) + axis +
+              ", of segment " + std::to_string(segment + 1);
+    w.working.push_back("P(u) = " + powers + " M G on the segment, its own u from 0 to 1 (lecture 003); row r of M G multiplies u^(" +
+                        std::to_string(s.degree + 1) + " − r)" + (s.homogeneous ? "; G holds (w x, w y, .., w)" : ""));
     std::string terms, column;
     double sum = 0;
     for (int j = 0; j < n; ++j) {
@@ -205,9 +213,9 @@ WorkedValue matrix_entry(const Curve& c, const ValueAsk& ask) {
         terms += (j ? " + " : "") + operand(m) + " · " + operand(g);
         column += (j ? ", " : "") + s.labels[j];
     }
-    w.working.push_back("the rows of G are " + column + "; column " + std::to_string(col) + " of G = their coordinate " +
-                        std::to_string(col));
-    w.working.push_back("(M G)" + sub(row) + "," + sub(col) + " = Σⱼ M" + sub(row) + ",ⱼ G" + "ⱼ," + sub(col) + " = " + terms +
+    w.working.push_back("the rows of G are " + column + "; column " + std::to_string(col + 1) + " of G holds their" + axis +
+                        " coordinates");
+    w.working.push_back("(M G)" + sub(row + 1) + "," + sub(col + 1) + " = Σⱼ M" + sub(row + 1) + ",ⱼ Gⱼ," + sub(col + 1) + " = " + terms +
                         " = " + fmt(sum));
     return w;
 }

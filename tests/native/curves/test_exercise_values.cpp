@@ -182,8 +182,9 @@ TEST_CASE("mg: entries of C = M G equal the slide's Bezier matrix times the geom
     a.row = 1;
     a.col = 1;
     const WorkedValue w = worked_value(of_curve(curve_of(CurveKind::Bezier, 2, {0, 0, 1, 2, 3, 2, 4, 0})), a);
-    CHECK(w.label == "(M G)₁,₁ of segment 0");
-    CHECK(w.working.back() == "(M G)₁,₁ = Σⱼ M₁,ⱼ Gⱼ,₁ = 3 · 0 + (-6) · 2 + 3 · 2 + 0 · 0 = -6");
+    // Written as the question counts (row 2, column 2 = y, segment 1; lecture 003's Bezier row 2 is 3 -6 3 0).
+    CHECK(w.label == "(M G)₂,₂, row 2, column 2 (y), of segment 1");
+    CHECK(w.working.back() == "(M G)₂,₂ = Σⱼ M₂,ⱼ Gⱼ,₂ = 3 · 0 + (-6) · 2 + 3 · 2 + 0 · 0 = -6");
 }
 
 TEST_CASE("boehm: inserting a knot into a uniform cubic B-spline, against exact rational arithmetic", "[exercise][value]") {
