@@ -65,6 +65,7 @@ export class LabelLayout {
     this.width = width;
     this.height = height;
     this.requests = [];
+    this.byText = new Map(); // text -> indices into requests (the same-label test is O(1) per ask)
     this.obstacles = [];
     this.dropped = 0;
   }
@@ -78,9 +79,14 @@ export class LabelLayout {
   // text at anchor (ax, ay) in screen px, drawn at (ax + dx, ay + dy) if that is free.
   // opts: { px, weight, align, baseline, dx, dy, priority, fixed, ...anything the drawer needs }
   ask(text, ax, ay, opts) {
-    const same = this.requests.findIndex((r) => r.text === text && Math.abs(r.ax - ax) < 0.5 && Math.abs(r.ay - ay) < 0.5);
-    const request = { text: String(text), ax, ay, opts, order: same >= 0 ? this.requests[same].order : this.requests.length };
-    if (same >= 0) this.requests[same] = request; else this.requests.push(request);
+    const key = String(text);
+    const indices = this.byText.get(key) ?? [];
+    const same = indices.find((i) => Math.abs(this.requests[i].ax - ax) < 0.5 && Math.abs(this.requests[i].ay - ay) < 0.5) ?? -1;
+    const request = { text: key, ax, ay, opts, order: same >= 0 ? this.requests[same].order : this.requests.length };
+    if (same >= 0) { this.requests[same] = request; return; }
+    indices.push(this.requests.length);
+    this.byText.set(key, indices);
+    this.requests.push(request);
   }
 
   // Places every asked label: [{ text, x, y, box, opts }] with x, y where to draw it

@@ -183,6 +183,10 @@ function drawElement(painter, model, element, colors, strong) {
   if (element.kind === 'face' && element.index < faceCount(model)) painter.polygon(faceXY(model, P, element.index), { fill: colour, alpha: strong ? 0.35 : 0.25 });
 }
 
+// How many of the found edges (the last ones) carry their name and step number: a pole of
+// valence 40,000 would ask 80,000 labels per frame, and no screen shows more than a few dozen.
+const FOUND_LABELLED = 48;
+
 function drawWalk(painter, model, state, colors) {
   const frame = model.frame;
   if (!frame) return;
@@ -197,11 +201,14 @@ function drawWalk(painter, model, state, colors) {
   }
   if (frame.current >= 0 && !frame.done) highlightEdge(painter, model, frame.current, { stroke: current, width: 11, alpha: 0.55 });
   const zoom = state.view.zoom;
+  const labelledFrom = Math.max(0, frame.foundCount - FOUND_LABELLED);
   for (let k = 0; k < frame.foundCount; k += 1) {
     const e = frame.order[k];
-    // Found edges keep their S -> E arrow and their label on top of the highlight (on a
-    // mesh of any size: the walk's elements are always labelled).
+    // Found edges keep their S -> E arrow; the last FOUND_LABELLED keep their label and
+    // step number on top of the highlight (on a mesh of any size: the walk's elements are
+    // always labelled).
     painter.arrow(...edgeEnds(model, P, e, zoom), { stroke: found, width: 4.5 });
+    if (k < labelledFrom) continue;
     {
       const s0 = model.weShown.edges[8 * e]; const t0 = model.weShown.edges[8 * e + 1];
       painter.text((P[3 * s0] + P[3 * t0]) / 2, (P[3 * s0 + 1] + P[3 * t0 + 1]) / 2, eLabel(e), { fill: colors.ink, font: 13, weight: 700, halo: colors.background });
