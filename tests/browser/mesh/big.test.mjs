@@ -167,6 +167,61 @@ test('on a 100,000-face sphere the pointer finds the face, edge and vertex under
   }
 });
 
+// A drag turns (3D) or pans (2D) the view and never picks: on a mesh too big for vertex
+// handles, the press used to pick the vertex under it at once, and the walk moved there and
+// zoomed to it at the end of a rotation. A press released where it went down still picks.
+test('a drag over a vertex of a 100,000-face sphere turns the view and picks nothing; a click there picks it', async () => {
+  const page = await openMesh();
+  assert.ok(await commit(page, { meshKind: 'sphere', sphere: SPHERE, mode3d: true, vertex: 0 }));
+  await page.waitForFunction(() => window.wingspline.model?.F === 100000);
+  // The vertex nearest the viewer (largest depth, from the projected positions), zoomed so
+  // that its neighbours are far apart on screen.
+  const target = await page.evaluate(() => {
+    const m = window.wingspline.model;
+    let best = 0;
+    for (let v = 1; v < m.V; v += 1) if (m.projected[3 * v + 2] > m.projected[3 * best + 2]) best = v;
+    return { v: best, xy: [m.projected[3 * best], m.projected[3 * best + 1]] };
+  });
+  assert.notEqual(target.v, 0);
+  await page.evaluate(({ xy }) => window.wingspline.ctx.setView({ cx: xy[0], cy: xy[1], zoom: 4000 }), target);
+  const p = await clientOf(page, ...target.xy);
+  await page.mouse.move(p.x, p.y);
+  await page.waitForFunction((v) => window.wingspline.view.selection.hover?.kind === 'vertex' && window.wingspline.view.selection.hover.index === v, target.v);
+  const before = await page.evaluate(() => ({ rotation: window.wingspline.state.rotation, zoom: window.wingspline.state.view.zoom }));
+  await page.mouse.down();
+  for (let i = 1; i <= 8; i += 1) await page.mouse.move(p.x + 6 * i, p.y + 2 * i);
+  await page.mouse.up();
+  // Two frames for anything the release would have started (the walk's zoom follows a frame).
+  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+  const after = await page.evaluate(() => ({ rotation: window.wingspline.state.rotation, zoom: window.wingspline.state.view.zoom, vertex: window.wingspline.state.vertex, pick: window.wingspline.view.selection.pick }));
+  assert.notDeepEqual(after.rotation, before.rotation, 'the drag turned the view');
+  assert.equal(after.vertex, 0, 'the walk keeps its vertex');
+  assert.equal(after.pick, null, 'nothing is picked');
+  assert.equal(after.zoom, before.zoom, 'the view did not zoom to a vertex');
+  // A click (press and release at one place) on the same vertex picks it and walks from it.
+  await page.evaluate(({ xy, rotation }) => window.wingspline.ctx.commit({ ...window.wingspline.ctx.state, rotation }, { history: false }), { xy: target.xy, rotation: before.rotation });
+  await page.waitForFunction((r) => window.wingspline.state.rotation.yaw === r.yaw, before.rotation);
+  await page.mouse.click(p.x, p.y);
+  await page.waitForFunction((v) => window.wingspline.state.vertex === v, target.v);
+  assert.deepEqual(await page.evaluate(() => window.wingspline.view.selection.pick), { kind: 'vertex', index: target.v });
+  // In 2D a drag from a face pans the view and picks nothing.
+  assert.ok(await commit(page, { mode3d: false }));
+  await page.waitForFunction(() => !window.wingspline.state.mode3d);
+  await page.evaluate(() => { window.wingspline.view.selection.pick = null; });
+  const box = await page.locator('#stage').boundingBox();
+  const centre = { x: box.x + box.width / 2, y: box.y + box.height / 2 };
+  await page.mouse.move(centre.x, centre.y);
+  await page.waitForFunction(() => window.wingspline.view.selection.hover !== null);
+  const view0 = await page.evaluate(() => window.wingspline.state.view);
+  await page.mouse.down();
+  for (let i = 1; i <= 8; i += 1) await page.mouse.move(centre.x + 5 * i, centre.y);
+  await page.mouse.up();
+  const view1 = await page.evaluate(() => window.wingspline.state.view);
+  assert.ok(view1.cx < view0.cx, `the drag panned the view (cx ${view0.cx} -> ${view1.cx})`);
+  assert.equal(await page.evaluate(() => window.wingspline.view.selection.pick), null, 'nothing is picked');
+  assert.deepEqual(page.problems, []);
+});
+
 test('the walk on a 100,000-face sphere zooms to its vertex when it steps', async () => {
   const page = await openMesh();
   assert.ok(await commit(page, { meshKind: 'sphere', sphere: SPHERE, mode3d: true, vertex: 0 }));

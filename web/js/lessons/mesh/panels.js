@@ -99,23 +99,41 @@ export function setupPanels(ctx, selection) {
   });
   stage.addEventListener('pointerleave', () => setHover(null));
 
+  // A press on the canvas is a click only if it is released where it went down: a drag
+  // (turning the 3D view, panning the 2D one) never picks. The element under the press is
+  // kept as `pressed` and picked on release, unless the pointer moved more than CLICK_SLOP_PX.
+  const CLICK_SLOP_PX = 4;
   let rotating = null;
+  let pressed = null;
   window.addEventListener('pointermove', (event) => {
+    if (pressed && Math.hypot(event.clientX - pressed.x, event.clientY - pressed.y) > CLICK_SLOP_PX) pressed = null;
     if (!rotating) return;
     const yaw = rotating.yaw + (event.clientX - rotating.x) * 0.01;
     const pitch = Math.max(-MAX_TILT, Math.min(MAX_TILT, rotating.pitch + (event.clientY - rotating.y) * 0.01));
     ctx.commit({ ...state(), rotation: { yaw, pitch } }, { history: false });
   });
-  window.addEventListener('pointerup', () => { rotating = null; });
+  window.addEventListener('pointerup', (event) => {
+    rotating = null;
+    const click = pressed;
+    pressed = null;
+    if (click && Math.hypot(event.clientX - click.x, event.clientY - click.y) <= CLICK_SLOP_PX) pickElement(click.element, { fromCanvas: true });
+  });
+  window.addEventListener('pointercancel', () => { rotating = null; pressed = null; });
 
+  // The stage asks on a press: true keeps the press (the 3D view turns with it), false lets
+  // the stage pan the 2D view. Without a pointer event (a test's direct call), it picks.
   function canvasClick(x, y, event) {
     const element = elementAt(ctx.model, x, y, state().view.zoom);
-    if (element) pickElement(element, { fromCanvas: true });
-    if (state().mode3d && event && !event.shiftKey) {
+    if (!event) {
+      if (element) pickElement(element, { fromCanvas: true });
+      return Boolean(element);
+    }
+    pressed = element ? { element, x: event.clientX, y: event.clientY } : null;
+    if (state().mode3d && !event.shiftKey) {
       rotating = { x: event.clientX, y: event.clientY, ...state().rotation };
       return true;
     }
-    return Boolean(element);
+    return false;
   }
 
   // A picked element is highlighted everywhere; a face or vertex also becomes the walk's.
