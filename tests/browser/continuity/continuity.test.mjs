@@ -285,6 +285,8 @@ test('zero tangents: curvature "undefined" in the table and the plot agree; the 
   assert.match(row, /undefined \(\|P'⁺\| = 0 at u = 1/);
   const note = await page.textContent('#curvature-undefined');
   assert.match(note, /κ undefined .* u = 1 \(\|P'\| = 0\)/);
+  // Both sides of the joint have P' = 0 at u = 1: one place, named once.
+  assert.equal(note.split('u = 1 (').length - 1, 1, `u = 1 is named once: ${note}`);
   await page.click('.joint-card details.wordings summary');
   const rows = await page.$$eval('.joint-card details.wordings tbody tr', (trs) => trs.map((r) => Array.from(r.cells, (c) => c.textContent)));
   assert.equal(rows.length, 3);

@@ -423,9 +423,15 @@ function drawPlots(ui, model, state, ctx) {
     series: [{ label: 'x\'\'', color: c.series[0], pieces: comp(0) }, { label: 'y\'\'', color: c.series[1], dash: [6, 3], pieces: comp(1) }],
     marks, cursor: state.u, yLabel: 'x\'\' (solid), y\'\' (dashed)', colors: plotColors,
   });
-  const undefinedAt = model.segments.flatMap((s) => s.undefinedAt);
+  // A joint is the end of one segment and the start of the next: where both sides have
+  // P' = 0 it is one place, named once.
+  const undefinedAt = [];
+  for (const x of model.segments.flatMap((s) => s.undefinedAt)) {
+    const place = `u = ${formatNumber(x.u, 4)} (|P'| = ${formatNumber(x.speed, 3)})`;
+    if (!undefinedAt.includes(place)) undefinedAt.push(place);
+  }
   ui.curvatureUndefined.textContent = undefinedAt.length
-    ? `κ undefined (P' = 0, the plot leaves a gap) at ${undefinedAt.map((x) => `u = ${formatNumber(x.u, 4)} (|P'| = ${formatNumber(x.speed, 3)})`).join(', ')}.`
+    ? `κ undefined (P' = 0, the plot leaves a gap) at ${undefinedAt.join(', ')}.`
     : '';
   drawSeriesPlot(ui.plots.curvature, {
     series: [{ label: 'κ', color: c.series[2], pieces: model.segments.map((s) => ({ u: s.u, v: s.curvature })) }],
