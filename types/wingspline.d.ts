@@ -426,6 +426,16 @@ export type SubdivisionScheme = 'loop' | 'catmull-clark';
 export interface SubdivisionOptions {
   scheme: SubdivisionScheme;
 }
+/** The reconnection phase of one step as pointer assignments (docs/api-mesh.md, "Subdivision"). */
+export interface ReconnectionPlayback {
+  /** The algorithm's lines in order; steps[i].phase indexes them. */
+  lines: string[];
+  /** Every entry of the next level's tables, written once; before is -1 (the tables start empty). */
+  steps: Array<{ table: 'vertex' | 'edge' | 'face'; row: number; field: string; before: number; after: number; phase: number }>;
+  /** The old edge or face each step belongs to; -1 for the vertex table's steps. */
+  sources: Int32Array;
+}
+
 export interface SubdivisionSteps {
   scheme: SubdivisionScheme;
   phases: Array<{ name: string; first: number; count: number }>;
@@ -788,6 +798,7 @@ export interface WingsplineApi {
   generateMesh(kind: GeneratedMeshKind, options?: GenerateMeshOptions & { layout?: 'faces' }): FaceSet;
   subdivide(mesh: Mesh, options: SubdivisionOptions & { steps?: number }): Mesh;
   subdivisionSteps(mesh: Mesh, options: SubdivisionOptions): SubdivisionSteps;
+  reconnectionPlayback(mesh: Mesh, options: SubdivisionOptions): ReconnectionPlayback;
   limitPositions(mesh: Mesh, options: SubdivisionOptions): Float64Array;
 
   // ---- exercises (docs/api-mesh.md, "Checking a student's winged-edge table")

@@ -7,6 +7,7 @@
 #include "wingspline/mesh/winged_edge.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace wingspline::bindings {
 
@@ -14,5 +15,9 @@ const mesh::WingedEdgeMesh& winged_of_handle(int32_t handle);
 mesh::IndexedMesh indexed_from_arrays(const val& positions, const val& face_offsets, const val& face_vertices);
 // A new live mesh (subdivision.cpp's results): its handle, as buildMesh returns one.
 int32_t register_mesh(mesh::WingedEdgeMesh&& winged);
+// Pointer assignments as they cross (a change record's, a reconnection's): an Int32Array of
+// six per step [table, row, field, before, after, phase], table and field as indices into
+// meshOperationDescriptors().tables / .fields (mesh_edit.cpp).
+val assignment_steps_array(const std::vector<mesh::AssignmentStep>& steps);
 
 } // namespace wingspline::bindings

@@ -1,6 +1,7 @@
 // Changing a mesh: every operation of the core's registry through one binding (meshEdit), its
 // change record as flat arrays, the registry itself as data, compact() and the gaps.
 #include "boundary.h"
+#include "mesh_access.h"
 #include "mesh_entry.h"
 
 #include "wingspline/mesh/operations.h"
@@ -11,6 +12,15 @@
 #include <memory>
 
 namespace wingspline::bindings {
+
+val assignment_steps_array(const std::vector<mesh::AssignmentStep>& steps) {
+    std::vector<int32_t> flat;
+    flat.reserve(6 * steps.size());
+    for (const mesh::AssignmentStep& s : steps)
+        flat.insert(flat.end(), {static_cast<int32_t>(s.table), s.row, mesh::change_field_index(s.field), s.before, s.after, s.phase});
+    return to_typed_array(flat);
+}
+
 namespace {
 
 using namespace wingspline::mesh;
@@ -56,10 +66,6 @@ val change_value(const ChangeRecord& c) {
     // before, after, phase] (indices into meshOperationDescriptors().tables / .fields, and
     // into this record's phases), and the positions set, eight numbers each [vertex, before
     // xyz, after xyz, step].
-    std::vector<int32_t> steps;
-    steps.reserve(6 * c.steps.size());
-    for (const AssignmentStep& s : c.steps)
-        steps.insert(steps.end(), {static_cast<int32_t>(s.table), s.row, change_field_index(s.field), s.before, s.after, s.phase});
     val phases = val::array();
     for (std::size_t k = 0; k < c.phases.size(); ++k) phases.set(k, c.phases[k]);
     std::vector<double> positions;
@@ -68,7 +74,7 @@ val change_value(const ChangeRecord& c) {
                                            p.after.z, static_cast<double>(p.step)});
     val r = val::object();
     r.set("op", c.op);
-    r.set("steps", to_typed_array(steps));
+    r.set("steps", assignment_steps_array(c.steps));
     r.set("phases", phases);
     r.set("positions", to_typed_array(positions));
     r.set("added", element_list(c.added_vertices, c.added_edges, c.added_faces));

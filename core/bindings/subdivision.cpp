@@ -59,6 +59,26 @@ val mesh_subdivision_steps(int32_t handle, const std::string& scheme) {
     });
 }
 
+// The reconnection phase as pointer assignments (reconnection_playback): steps as int32,
+// 6 each [table, row, field, before, after, line] in the change records' layout
+// (meshOperations' tables and fields), the old element of each step, and the lines.
+val mesh_reconnection_playback(int32_t handle, const std::string& scheme) {
+    return guarded([&] {
+        const WingedEdgeMesh& w = winged_of_handle(handle);
+        const Scheme s = scheme_from_name(scheme);
+        const CheckResult check = check_subdivide(w, s, 1, kSubdivisionLimits);
+        if (!check.ok) throw Error(check.code, check.message);
+        const ReconnectionPlayback p = reconnection_playback(w, s, subdivide(w, s, 1));
+        val lines = val::array();
+        for (std::size_t k = 0; k < p.lines.size(); ++k) lines.set(k, p.lines[k]);
+        val r = val::object();
+        r.set("steps", assignment_steps_array(p.steps));
+        r.set("sources", to_typed_array(p.source));
+        r.set("lines", lines);
+        return r;
+    });
+}
+
 val mesh_limit_positions(int32_t handle, const std::string& scheme) {
     return guarded([&] {
         val r = val::object();
@@ -84,5 +104,6 @@ EMSCRIPTEN_BINDINGS(wingspline_subdivision) {
     emscripten::function("meshSubdivide", &mesh_subdivide);
     emscripten::function("meshSubdivisionSteps", &mesh_subdivision_steps);
     emscripten::function("meshLimitPositions", &mesh_limit_positions);
+    emscripten::function("meshReconnectionPlayback", &mesh_reconnection_playback);
     emscripten::function("curveSubdivide", &curve_subdivide);
 }

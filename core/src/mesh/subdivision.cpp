@@ -535,6 +535,89 @@ SubdivisionSteps subdivision_steps(const WingedEdgeMesh& mesh, Scheme scheme) {
     return s;
 }
 
+ReconnectionPlayback reconnection_playback(const WingedEdgeMesh& mesh, Scheme scheme, const WingedEdgeMesh& result) {
+    const int32_t E = mesh.edge_count(), F = mesh.face_count();
+    const bool loop = scheme == Scheme::Loop;
+    ReconnectionPlayback p;
+    p.lines = {
+        "Split each old edge in two: its first half runs from S to the edge point, its second from the edge point to E",
+        "Old face F: each new face inside it stores one of its edges (face table)",
+        "Old face F: each new inner edge gets S, E, L, R and its four wings",
+        "Old face F: the halves of its sides get, on the side facing F, the new face and two wings",
+        "A half on the boundary gets its two wings on the side with no face (the boundary walked as a face)",
+        "Every vertex of the next level stores one edge at it (vertex table)",
+    };
+    auto assign = [&](MeshTable table, int32_t row, const char* field, int32_t after, int32_t line, int32_t source) {
+        if (after == kNone) return;
+        AssignmentStep s;
+        s.table = table, s.row = row, s.field = field, s.before = kNone, s.after = after, s.phase = line;
+        p.steps.push_back(s);
+        p.source.push_back(source);
+    };
+    // line 0: the halves' ends
+    for (int32_t e = 0; e < E; ++e) {
+        for (int32_t h : {2 * e, 2 * e + 1}) {
+            assign(MeshTable::Edge, h, "start", result.edge(h).start, 0, e);
+            assign(MeshTable::Edge, h, "end", result.edge(h).end, 0, e);
+        }
+    }
+    // lines 1-3: face by face (the numbering of subdivision.h: the new faces and inner edges
+    // of face f are a block that starts at o_f, the corners of the faces before f)
+    int32_t o = 0;
+    for (int32_t f = 0; f < F; ++f) {
+        const std::vector<int32_t> sides = mesh.edges_of_face(f);
+        const int32_t n = static_cast<int32_t>(sides.size());
+        const int32_t first_face = loop ? 4 * f : o, face_count = loop ? 4 : n;
+        const int32_t first_inner = loop ? 2 * E + 3 * f : 2 * E + o, inner_count = loop ? 3 : n;
+        const auto inside = [&](int32_t face) { return face != kNone && face >= first_face && face < first_face + face_count; };
+        for (int32_t g = first_face; g < first_face + face_count; ++g) assign(MeshTable::Face, g, "edge", result.face_edge(g), 1, f);
+        for (int32_t t = first_inner; t < first_inner + inner_count; ++t) {
+            const EdgeRecord& r = result.edge(t);
+            assign(MeshTable::Edge, t, "start", r.start, 2, f);
+            assign(MeshTable::Edge, t, "end", r.end, 2, f);
+            assign(MeshTable::Edge, t, "left", r.left, 2, f);
+            assign(MeshTable::Edge, t, "right", r.right, 2, f);
+            assign(MeshTable::Edge, t, "startLeft", r.start_left, 2, f);
+            assign(MeshTable::Edge, t, "startRight", r.start_right, 2, f);
+            assign(MeshTable::Edge, t, "endLeft", r.end_left, 2, f);
+            assign(MeshTable::Edge, t, "endRight", r.end_right, 2, f);
+        }
+        for (int32_t e : sides) {
+            for (int32_t h : {2 * e, 2 * e + 1}) {
+                const EdgeRecord& r = result.edge(h);
+                if (inside(r.left)) {
+                    assign(MeshTable::Edge, h, "left", r.left, 3, f);
+                    assign(MeshTable::Edge, h, "startLeft", r.start_left, 3, f);
+                    assign(MeshTable::Edge, h, "endLeft", r.end_left, 3, f);
+                }
+                if (inside(r.right)) {
+                    assign(MeshTable::Edge, h, "right", r.right, 3, f);
+                    assign(MeshTable::Edge, h, "startRight", r.start_right, 3, f);
+                    assign(MeshTable::Edge, h, "endRight", r.end_right, 3, f);
+                }
+            }
+        }
+        o += n;
+    }
+    // line 4: the boundary halves' wings on their open side
+    for (int32_t e = 0; e < E; ++e) {
+        for (int32_t h : {2 * e, 2 * e + 1}) {
+            const EdgeRecord& r = result.edge(h);
+            if (r.left == kNone) {
+                assign(MeshTable::Edge, h, "startLeft", r.start_left, 4, e);
+                assign(MeshTable::Edge, h, "endLeft", r.end_left, 4, e);
+            }
+            if (r.right == kNone) {
+                assign(MeshTable::Edge, h, "startRight", r.start_right, 4, e);
+                assign(MeshTable::Edge, h, "endRight", r.end_right, 4, e);
+            }
+        }
+    }
+    // line 5: the vertex table
+    for (int32_t v = 0; v < result.vertex_count(); ++v) assign(MeshTable::Vertex, v, "edge", result.vertex_edge(v), 5, kNone);
+    return p;
+}
+
 Masks limit_masks(const WingedEdgeMesh& mesh, Scheme scheme) {
     const CheckResult check = check_subdivide(mesh, scheme, 0);
     if (!check.ok) throw Error(check.code, check.message);

@@ -152,6 +152,9 @@ test('a closed polygon wraps: 2n points a step, its limit the periodic B-spline'
   await page.waitForFunction(() => window.wingspline.state.curveScheme === 'chaikin');
   await page.waitForFunction(() => /periodic quadratic/.test(document.querySelector('#curve-caption').textContent));
   assert.match(await caption(page), /7 points became 14/);
+  // The knot-insertion note names the scheme chosen, not the cubic rule.
+  assert.match(await page.textContent('#curve-panel'), /One Chaikin step \(quadratic B-spline\) is knot insertion/);
+  assert.doesNotMatch(await page.textContent('#curve-panel'), /One cubic step/);
   await page.uncheck('#curve-closed');
   await page.waitForFunction(() => window.wingspline.state.curve.closed === false);
   await page.waitForFunction(() => /uniform quadratic/.test(document.querySelector('#curve-caption').textContent));

@@ -1,4 +1,4 @@
-// Through the JS API: api.subdivide, api.subdivisionSteps, api.limitPositions,
+// Through the JS API: api.subdivide, api.subdivisionSteps, api.reconnectionPlayback, api.limitPositions,
 // api.subdivideCurve. Expected values: the formulas worked by hand (tetrahedron, cube), an
 // independent recomputation from the face lists in this file (not the winged edge's
 // walks), invariants (counts, chi, validate, symmetry, similarity transforms, masks summing
@@ -190,6 +190,39 @@ test('subdivisionSteps: phases in order, every mask sums to 1 and reproduces sub
     assert.equal(st.ruleNames[st.rules[0]].startsWith('vertex-'), true);
     assert.equal(st.faceOffsets.length - 1, out.counts().faces);
   }
+}));
+
+// The reconnection as the API gives it: its steps, played into empty tables, are the next
+// level's winged-edge arrays (wingedEdgeArrays of api.subdivide), each entry written once;
+// the open grid has boundary work (line 4), the closed meshes none.
+test('reconnectionPlayback: played into empty tables it gives the next level\'s tables, each entry once', () => withMeshes((keep) => {
+  const FIELDS = ['start', 'end', 'left', 'right', 'startLeft', 'startRight', 'endLeft', 'endRight'];
+  for (const [kind, scheme] of [['tetrahedron', 'loop'], ['cube', 'catmull-clark'], ['grid', 'catmull-clark'], ['sphere', 'loop']]) {
+    const mesh = keep(api.buildMesh(api.generateMesh(kind, kind === 'sphere' ? { slices: 6, stacks: 4 } : kind === 'grid' ? { nx: 3, ny: 2 } : {})));
+    const r = api.reconnectionPlayback(mesh, { scheme });
+    const next = keep(api.subdivide(mesh, { scheme })).wingedEdgeArrays();
+    assert.equal(r.lines.length, 6);
+    assert.equal(r.sources.length, r.steps.length);
+    const edges = new Int32Array(next.edges.length).fill(-1);
+    const vertexEdge = new Int32Array(next.vertexEdge.length).fill(-1);
+    const faceEdge = new Int32Array(next.faceEdge.length).fill(-1);
+    const seen = new Set();
+    for (const s of r.steps) {
+      const key = `${s.table}:${s.row}:${s.field}`;
+      assert.ok(!seen.has(key), `${key} written twice`);
+      seen.add(key);
+      assert.equal(s.before, -1);
+      if (s.table === 'edge') edges[8 * s.row + FIELDS.indexOf(s.field)] = s.after;
+      else if (s.table === 'vertex') vertexEdge[s.row] = s.after;
+      else faceEdge[s.row] = s.after;
+    }
+    assert.deepEqual(edges, next.edges, `${kind}: edge table`);
+    assert.deepEqual(vertexEdge, next.vertexEdge, `${kind}: vertex table`);
+    assert.deepEqual(faceEdge, next.faceEdge, `${kind}: face table`);
+    const boundary = r.steps.filter((s) => s.phase === 4).length;
+    if (kind === 'grid') assert.ok(boundary > 0, 'the grid has a boundary'); else assert.equal(boundary, 0);
+  }
+  assert.throws(() => api.reconnectionPlayback(keep(api.buildMesh(api.generateMesh('cube'))), { scheme: 'loop' }), (e) => e.code === 'not-a-triangle-mesh');
 }));
 
 test('similarity transforms commute with a step, at scales 1e-6 to 1e6', () => withMeshes((keep) => {

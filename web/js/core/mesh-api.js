@@ -140,13 +140,18 @@ function storageValue(s) {
 // steps are `stepStride` int32 each [table, row, field, before, after, phase] naming
 // descriptor.tables / descriptor.fields; positions `positionStride` numbers each [vertex,
 // before xyz, after xyz, step].
-function readChange(r, descriptor) {
-  const { tables, fields, stepStride, positionStride } = descriptor;
+function readSteps(flat, { tables, fields, stepStride }) {
   const steps = [];
-  for (let k = 0; k + stepStride <= r.steps.length; k += stepStride) {
-    const [t, row, f, before, after, phase] = r.steps.subarray(k, k + stepStride);
+  for (let k = 0; k + stepStride <= flat.length; k += stepStride) {
+    const [t, row, f, before, after, phase] = flat.subarray(k, k + stepStride);
     steps.push({ table: tables[t], row, field: fields[f], before, after, phase });
   }
+  return steps;
+}
+
+function readChange(r, descriptor) {
+  const { positionStride } = descriptor;
+  const steps = readSteps(r.steps, descriptor);
   const positions = [];
   for (let k = 0; k + positionStride <= r.positions.length; k += positionStride) {
     const p = r.positions;
@@ -715,6 +720,16 @@ export function createMeshApi(raw) {
       faceVertices: r.faceVertices,
       counts: { vertices: r.positions.length / 3, edges: r.edges, faces: r.faceOffsets.length - 1 },
     };
+  };
+  // The reconnection phase of one step as pointer assignments, for playback as an edit is
+  // played: {lines: [the algorithm's lines], steps: [{table, row, field, before, after,
+  // phase}] (phase indexes lines; before is -1: the next level's tables start empty),
+  // sources: Int32Array (the old edge or face each step belongs to, -1 for the vertex
+  // table)}. Every entry of the next level's tables is written once. Errors as subdivisionSteps.
+  meshApi.reconnectionPlayback = (mesh, options = {}) => {
+    const { handle, scheme } = subdivisionArgs(mesh, options, 'reconnectionPlayback');
+    const r = unwrap(raw.meshReconnectionPlayback(handle, scheme));
+    return { lines: Array.from(r.lines), steps: readSteps(r.steps, meshOperations), sources: r.sources };
   };
   // Where each vertex goes in the limit: Float64Array, x, y, z per vertex.
   meshApi.limitPositions = (mesh, options = {}) => {

@@ -95,6 +95,27 @@ struct SubdivisionSteps {
 };
 SubdivisionSteps subdivision_steps(const WingedEdgeMesh& mesh, Scheme scheme);
 
+// The reconnection phase as pointer assignments, for step-by-step playback as the edit
+// panel plays an operation: every entry of the next level's three tables written once, in
+// the order a person can follow the lecture's "connect the new points":
+//   line 0: each old edge e split in two: 2e from S to the edge point, 2e + 1 from the edge
+//           point to E (their S and E);
+//   line 1: each old face f, in face order: its new faces take an edge (face table);
+//   line 2: ... its inner edges: S, E, L, R and the four wings;
+//   line 3: ... the halves of its sides: on the side that faces f, the face and two wings;
+//   line 4: the halves on the boundary: the two wings on the side with no face;
+//   line 5: every vertex of the next level takes an edge (vertex table).
+// Each step's `phase` indexes `lines`; `source[i]` is the old element step i belongs to (an
+// old edge for lines 0 and 4, an old face for lines 1-3, -1 for line 5). `before` is -1 for
+// every step (the next level's tables start empty); entries that stay -1 (no face on a
+// boundary side) are not assigned. `result` is subdivide(mesh, scheme, 1).
+struct ReconnectionPlayback {
+    std::vector<std::string> lines;
+    std::vector<AssignmentStep> steps;
+    std::vector<int32_t> source;
+};
+ReconnectionPlayback reconnection_playback(const WingedEdgeMesh& mesh, Scheme scheme, const WingedEdgeMesh& result);
+
 // Where each vertex goes in the limit (3 per vertex), and the limit masks.
 //  * Loop, interior vertex of valence n: (1 - n chi) v + chi sum(neighbours),
 //    chi = 1 / (3 / (8 beta) + n) (Loop 1987; Hoppe et al. 1994);

@@ -4,15 +4,9 @@
 // after}); this file turns them into frames and into the winged-edge tables as they stood
 // after frame k (the final tables with the later assignments taken back). No geometry and
 // no topology is decided here: every number is one the core wrote.
-import { vLabel, eLabel, fLabel } from './labels.js';
+import { EDGE_FIELDS, FIELD_HEADINGS, assignmentText } from '../../ui/mesh/assignments.js';
 
-// The winged-edge columns as the edge table's descriptor names them, in the order of the
-// flat edge record (8 numbers per edge: S, E, L, R, S:L, S:R, E:L, E:R).
-export const EDGE_FIELDS = ['start', 'end', 'left', 'right', 'startLeft', 'startRight', 'endLeft', 'endRight'];
-const FIELD_HEADINGS = { start: 'S', end: 'E', left: 'L', right: 'R', startLeft: 'S:L', startRight: 'S:R', endLeft: 'E:L', endRight: 'E:R', edge: 'edge' };
-const REFERS = { start: vLabel, end: vLabel, left: fLabel, right: fLabel, startLeft: eLabel, startRight: eLabel, endLeft: eLabel, endRight: eLabel, edge: eLabel };
-const ROW_LABEL = { vertex: vLabel, edge: eLabel, face: fLabel };
-const none = (label) => (x) => (x < 0 ? '—' : label(x));
+export { EDGE_FIELDS };
 
 // The steps a person sees: the assignments of the three tables of lecture 000 (the face
 // table's bookkeeping field firstCorner, which no slide shows, is left out).
@@ -20,11 +14,8 @@ export function visibleSteps(record) {
   return (record?.steps ?? []).filter((s) => Object.hasOwn(FIELD_HEADINGS, s.field));
 }
 
-// One line per step: "edge table, e9 · E:L: e3 → e10".
-export function stepText(s) {
-  const label = none(REFERS[s.field] ?? String);
-  return `${s.table} table, ${ROW_LABEL[s.table](s.row)} · ${FIELD_HEADINGS[s.field]}: ${label(s.before)} → ${label(s.after)}`;
-}
+// One line per step: "edge table, e9 · E:L: e3 → e10" (ui/mesh/assignments.js).
+export const stepText = assignmentText;
 
 // The winged-edge arrays ({positions, vertexEdge, edges, faceEdge}, as wingedEdgeArrays
 // gives them) as they were after `shown` visible steps of the record (0: before the edit,

@@ -14,6 +14,7 @@ const SMALL_FACES = 4000;   // up to this many faces: one polygon each, far to n
 const SHADES = 24;          // a bigger mesh: faces turned away skipped, the rest batched by shade
 const BATCH = 256;          // ... at most this many faces per path
 const POINT_LIMIT = 20000;  // more new points than this are not drawn one by one
+export const NEW_POINT_LABELS = 30; // the newest phase's points named (face or edge) up to this many
 const LABEL_VERTICES = 12;  // vertex labels up to this many vertices (the mask's own are always named)
 const EXERCISE_LABEL_VERTICES = 60; // ... and in a subdivide exercise, whose answer names old vertices by their labels
 const CONTROL_LIMIT = 400; // control vertices drawn (and dragged) up to this many
@@ -154,13 +155,26 @@ function drawVertexLabels(painter, P, colors, most) {
   }
 }
 
-function drawNewPoints(painter, model, colors) {
+// The new points of the phases shown. Those of the newest phase carry the name of what they
+// are the point of (a face point "F2", an edge point "e5"; vertex points sit by their old
+// vertex's label), up to NEW_POINT_LABELS of them, so a student can tell which face or edge
+// each one averages.
+function drawNewPoints(painter, model, colors, naming) {
   const N = model.newProjected;
   if (!N) return;
+  const newest = model.pointPhases[model.pointPhases.length - 1];
+  const { vertices: V, edges: E } = model.levelCounts;
   for (const phase of model.pointPhases) {
     if (phase.count > POINT_LIMIT) continue;
     const colour = colors.series[PHASES.indexOf(phase.name) % colors.series.length];
-    for (let i = phase.first; i < phase.first + phase.count; i += 1) painter.circle(N[3 * i], N[3 * i + 1], 4, { fill: colour, stroke: colors.background, width: 1 });
+    const named = naming && phase === newest && phase.count <= NEW_POINT_LABELS && phase.name !== 'vertex-points';
+    for (let i = phase.first; i < phase.first + phase.count; i += 1) {
+      painter.circle(N[3 * i], N[3 * i + 1], 4, { fill: colour, stroke: colors.background, width: 1 });
+      if (named) {
+        const name = phase.name === 'face-points' ? label('face', i - V - E) : label('edge', i - V);
+        painter.text(N[3 * i], N[3 * i + 1], name, { fill: colour, font: 13, weight: 700, dx: 0, dy: -14, halo: colors.background });
+      }
+    }
   }
 }
 
@@ -234,8 +248,45 @@ export function drawScene(painter, model, state, ctx) {
   if (!asking) drawExtraordinary(painter, model, colors);
   drawVertexLabels(painter, model.oldProjected ?? model.projected, colors, asking ? EXERCISE_LABEL_VERTICES : LABEL_VERTICES);
   drawControl(painter, model, ctx);
-  drawNewPoints(painter, model, colors);
+  drawNewPoints(painter, model, colors, !asking);
   if (!asking) drawMask(painter, model, colors);
+  drawReconnectionStep(painter, model, colors);
+}
+
+// The reconnection's current assignment (reconnection.js) on the next level's mesh: the row
+// it wrote (a new face filled, a new edge drawn thick from S to E, a vertex ringed) and the
+// element it wrote there (an edge, a face) dashed, each labelled as the tables name it.
+function drawReconnectionStep(painter, model, colors) {
+  const r = model.reconnection;
+  if (!r || r.tooBig !== undefined || r.shown === 0 || r.shown >= r.steps.length) return;
+  const s = r.steps[r.shown - 1];
+  const P = model.projected;
+  const E = model.we.edges;
+  const row = colors.series[2];
+  const value = colors.series[4];
+  const edge = (e, style) => {
+    const a = E[8 * e]; const b = E[8 * e + 1];
+    if (a < 0 || b < 0) return;
+    painter.line(P[3 * a], P[3 * a + 1], P[3 * b], P[3 * b + 1], style);
+    painter.text((P[3 * a] + P[3 * b]) / 2, (P[3 * a + 1] + P[3 * b + 1]) / 2, label('edge', e), { fill: style.stroke, font: 13, weight: 700, halo: colors.background, priority: 2 });
+  };
+  const face = (f, style) => {
+    const xy = faceXY(model, P, f);
+    painter.polygon(xy, style);
+    let x = 0; let y = 0;
+    for (let i = 0; i < xy.length; i += 2) { x += xy[i]; y += xy[i + 1]; }
+    painter.text(2 * x / xy.length, 2 * y / xy.length, label('face', f), { fill: colors.ink, font: 13, weight: 700, halo: colors.background, priority: 2 });
+  };
+  if (s.table === 'face') face(s.row, { fill: row, alpha: 0.4 });
+  else if (s.table === 'vertex') {
+    painter.circle(P[3 * s.row], P[3 * s.row + 1], 9, { stroke: row, width: 3 });
+    painter.text(P[3 * s.row], P[3 * s.row + 1], label('vertex', s.row), { fill: colors.ink, font: 13, weight: 700, dx: 12, dy: -12, halo: colors.background, priority: 2 });
+  } else edge(s.row, { stroke: row, width: 6, alpha: 0.85 });
+  // The value written: a vertex (S, E), a face (L, R) or an edge (a wing, a vertex's or a face's edge).
+  if (s.after < 0) return;
+  if (['start', 'end'].includes(s.field)) painter.circle(P[3 * s.after], P[3 * s.after + 1], 7, { fill: value, stroke: colors.background, width: 1.5 });
+  else if (['left', 'right'].includes(s.field)) face(s.after, { fill: value, alpha: 0.3 });
+  else if (!['start', 'end'].includes(s.field)) edge(s.after, { stroke: value, width: 4, alpha: 0.9, dash: [6, 4] });
 }
 
 // The new point (of a phase shown) under the canvas point x, y (world), or -1.

@@ -12,7 +12,7 @@ import { importedMesh, importedCsr } from '../../app/imported-mesh.js';
 import { importedArrays } from '../../app/mesh-import.js';
 import { viewRotation, projectAll, unprojectDelta, fitProjected } from '../../ui/mesh/view.js';
 import { sourceKey, createImportedKeys, hashNumbers } from '../../ui/mesh/mesh-choice.js';
-import { SOURCES, SIZES, IMPORTED_FIELD, PHASES, MAX_LEVEL, meshInput, label } from './source.js';
+import { SOURCES, SIZES, IMPORTED_FIELD, PHASES, MAX_LEVEL, meshInput, label, viewOf } from './source.js';
 import { setupPanels } from './panels.js';
 import { drawScene, pointAt } from './draw.js';
 import { subdivisionExercise } from './exercise.js';
@@ -30,6 +30,9 @@ const CURVE_MAX_POINTS = 32;
 // closed subdivision after CLOSED_LIMIT_STEPS steps (n points -> 256 n), whose distance to the
 // limit shrinks about 4x per step (docs/api-curves.md), far below a pixel.
 const CLOSED_LIMIT_STEPS = 8;
+// The reconnection is played pointer by pointer up to this many old faces (Loop: about 8 x
+// (2E + 3F) assignments, some 24,000 at 500 faces); a bigger level shows its finished tables.
+export const PLAYBACK_FACES = 500;
 
 const size = (bounds) => integer({ min: bounds[0], max: bounds[1] });
 const schema = {
@@ -45,6 +48,9 @@ const schema = {
   phase: integer({ min: 0, max: PHASES.length }),
   // The new point whose mask is drawn (-1: the first point of the newest phase shown).
   focus: integer({ min: -1, max: 10000000 }),
+  // The reconnection played pointer by pointer: how many assignments are shown (-1: all,
+  // the next level's finished tables).
+  reconnect: integer({ min: -1, max: 10000000 }),
   limit: boolean(),
   shading: oneOf('flat', 'smooth'),
   curveScheme: oneOf('chaikin', 'cubic-bspline'),
@@ -64,11 +70,12 @@ function defaultState() {
     level: 0,
     phase: 0,
     focus: -1,
+    reconnect: -1,
     limit: false,
     shading: 'flat',
     curveScheme: 'cubic-bspline',
     curve: { points: [...CURVE_POLYGON], closed: false },
-    rotation: { yaw: 0.6, pitch: 0.45 },
+    rotation: viewOf('tetrahedron'),
     view: { cx: 0, cy: 0, zoom: 150 },
   };
 }
@@ -85,7 +92,7 @@ function checkState(state) {
 // the tables read of it. A chain that another mesh or scheme replaces is disposed only
 // after the new one was accepted, so a refused choice keeps the page's meshes alive.
 function emptyChain(key) {
-  return { key, levels: [], steps: [], derived: [] };
+  return { key, levels: [], steps: [], derived: [], playbacks: [] };
 }
 
 function disposeChain(chain) {
@@ -116,6 +123,20 @@ function stepsOf(chain, k, scheme, api) {
     }
   }
   return chain.steps[k];
+}
+
+// Level k's reconnection as the core's pointer assignments (api.reconnectionPlayback), once,
+// for a level small enough to step through (PLAYBACK_FACES); null above it.
+function playbackOf(chain, k, scheme, api) {
+  if (chain.levels[k].counts().faces > PLAYBACK_FACES) return null;
+  if (!chain.playbacks[k]) {
+    const playback = api.reconnectionPlayback(chain.levels[k], { scheme });
+    // Which step writes each entry ("edge:12:startLeft" -> step), for the tables' cells.
+    const firstWrite = new Map();
+    playback.steps.forEach((s, i) => firstWrite.set(`${s.table}:${s.row}:${s.field}`, i));
+    chain.playbacks[k] = { ...playback, firstWrite };
+  }
+  return chain.playbacks[k];
 }
 
 // What the page reads of one level's mesh, once: positions, faces, counts, winged-edge
@@ -231,6 +252,8 @@ function modelOf(view, chain, state, api) {
     pointPhases,
     focus,
     extraordinary: s && !reconnected ? extraordinaryOf(s, scheme) : [],
+    interiorVertices: s ? interiorCount(s) : 0,
+    reconnection: reconnected ? reconnectionOf(playbackOf(chain, level, scheme, api), state.reconnect, old.counts.faces) : null,
     sourceKey: view.centre.key, // the mesh chosen (not its moved vertices nor the scheme)
     curve: curveOf(api, state, reconnected ? level + 1 : level),
   };
@@ -254,6 +277,23 @@ function extraordinaryOf(s, scheme) {
     if (s.rules[v] === interior && s.valences[v] !== regular) out.push({ v, n: s.valences[v] });
   }
   return out;
+}
+
+// The reconnection's playback as shown: {lines, steps, sources, firstWrite, shown} (shown: how many
+// assignments are made, all when the state says -1), or {tooBig: faces} above PLAYBACK_FACES.
+function reconnectionOf(playback, reconnect, faces) {
+  if (!playback) return { tooBig: faces };
+  const n = playback.steps.length;
+  return { ...playback, shown: reconnect < 0 || reconnect > n ? n : reconnect };
+}
+
+// How many old vertices take the interior vertex rule (the core's rule per vertex): a mesh
+// whose vertices are all on the boundary has none, and so no extraordinary vertex either.
+function interiorCount(s) {
+  const interior = s.ruleNames.indexOf('vertex-interior');
+  let n = 0;
+  for (let v = 0; v < s.valences.length; v += 1) if (s.rules[v] === interior) n += 1;
+  return n;
 }
 
 // The curve beside the mesh: the polygon after as many steps as the mesh's level, and the
@@ -350,10 +390,11 @@ const meshFile = (format) => ({
 export const subdivisionLesson = {
   id: 'subdivision',
   title: 'Subdivision',
-  stateVersion: 2,
+  stateVersion: 3,
   exercise: subdivisionExercise,
   // Version 2 holds the curve's polygon (it was fixed before): a version-1 link gets it.
-  migrations: { 1: (old) => ({ ...old, curve: { points: [...CURVE_POLYGON], closed: false } }) },
+  // Version 3 holds the reconnection's playback step: an older state shows the finished tables.
+  migrations: { 1: (old) => ({ ...old, curve: { points: [...CURVE_POLYGON], closed: false } }), 2: (old) => ({ ...old, reconnect: -1 }) },
   schema,
   defaultState,
   checkState,

@@ -9,9 +9,11 @@ import { createVirtualTable } from '../../ui/virtual-table.js';
 import { createCurvePlot } from './curve-plot.js';
 import { createExplorerLink } from './explorer-link.js';
 import { formatNumber } from '../../ui/mathml.js';
-import { SOURCES, SIZES, PHASES, MAX_LEVEL, label } from './source.js';
+import { SOURCES, SIZES, PHASES, MAX_LEVEL, label, viewOf } from './source.js';
 import { createMeshChooser } from '../../ui/mesh/chooser.js';
 import { createWingedTables } from '../../ui/mesh/tables.js';
+import { createReconnectionPanel, tableEntry, currentCell } from './reconnection.js';
+import { NEW_POINT_LABELS } from './draw.js';
 import { formatWeight } from './format-weight.js';
 import { createTurnControls, MAX_TILT } from '../../ui/turn-controls.js';
 
@@ -64,7 +66,9 @@ export function setupPanels(ctx, view) {
   // A new mesh or scheme starts at level 0. Loop refuses a mesh with faces that are not
   // triangles (the core names the face): the message offers Catmull-Clark.
   function choose(patch) {
-    const next = { ...state(), ...patch, moved: patch.scheme ? state().moved : [], level: 0, phase: 0, focus: -1 };
+    // Another mesh opens in its own view (source.js: the lecture's example from the top).
+    const turn = patch.meshKind && patch.meshKind !== state().meshKind ? { rotation: viewOf(patch.meshKind) } : {};
+    const next = { ...state(), ...patch, ...turn, moved: patch.scheme ? state().moved : [], level: 0, phase: 0, focus: -1, reconnect: -1 };
     if (ctx.commit(next)) {
       levelNote.hidden = true;
       queueMicrotask(() => ctx.fitView());
@@ -91,7 +95,7 @@ export function setupPanels(ctx, view) {
       ctx.message.info(`Level ${MAX_LEVEL} is the last level this page shows.`);
       return;
     }
-    const ok = commit({ level: k, phase: 0, focus: -1 });
+    const ok = commit({ level: k, phase: 0, focus: -1, reconnect: -1 });
     levelNote.hidden = ok;
     levelNote.textContent = ok ? '' : ctx.message.text;
   }
@@ -102,23 +106,23 @@ export function setupPanels(ctx, view) {
     if (s.phase >= PHASES.length) { levelTo(s.level + 1); return; }
     let p = s.phase + 1;
     while (empty(p)) p += 1;
-    const ok = commit({ phase: p, focus: -1 });
+    const ok = commit({ phase: p, focus: -1, reconnect: -1 });
     levelNote.hidden = ok;
     levelNote.textContent = ok ? '' : ctx.message.text;
   }
   function prevPhase() {
     const s = state();
     if (s.phase === 0) {
-      if (s.level > 0) commit({ level: s.level - 1, phase: PHASES.length, focus: -1 });
+      if (s.level > 0) commit({ level: s.level - 1, phase: PHASES.length, focus: -1, reconnect: -1 });
       return;
     }
     let p = s.phase - 1;
     while (p > 0 && empty(p)) p -= 1;
-    commit({ phase: p, focus: -1 });
+    commit({ phase: p, focus: -1, reconnect: -1 });
   }
 
   const notOnCanvas = (event) => event.target !== stage;
-  ctx.setPresenter({ next: nextPhase, prev: prevPhase, reset: () => commit({ level: 0, phase: 0, focus: -1 }), toggleOverlays: () => commit({ limit: !state().limit }) });
+  ctx.setPresenter({ next: nextPhase, prev: prevPhase, reset: () => commit({ level: 0, phase: 0, focus: -1, reconnect: -1 }), toggleOverlays: () => commit({ limit: !state().limit }) });
   ctx.keymap.add({ keys: ['ArrowRight'], label: 'next phase of the step (canvas not focused)', group: 'Subdivision', action: nextPhase, when: notOnCanvas });
   ctx.keymap.add({ keys: ['ArrowLeft'], label: 'previous phase', group: 'Subdivision', action: prevPhase, when: notOnCanvas });
   ctx.keymap.add({ keys: ['>', 'ArrowUp'], label: 'level up (↑: canvas not focused)', group: 'Subdivision', action: () => levelTo(state().level + 1), when: (e) => e.key === '>' || notOnCanvas(e) });
@@ -165,8 +169,9 @@ export function setupPanels(ctx, view) {
   const maskValence = h('p', { class: 'mask-valence', id: 'mask-valence' });
   const maskPanel = h('section', { class: 'mask-panel', id: 'mask-panel', 'aria-live': 'polite' }, maskTitle, maskRule, maskTerms, maskValence);
   const extraordinary = h('p', { class: 'extraordinary', id: 'extraordinary' });
+  const reconnection = createReconnectionPanel(ctx, { onStep: (i) => commit({ reconnect: i }, { history: false }) });
   const stepPanel = h('section', { class: 'step-panel', id: 'step-panel', 'aria-labelledby': 'step-title' },
-    h('h2', { id: 'step-title' }, 'One step, phase by phase'), levelNote, phaseList, maskPanel, countsTable, extraordinary);
+    h('h2', { id: 'step-title' }, 'One step, phase by phase'), levelNote, phaseList, reconnection.root, maskPanel, countsTable, extraordinary);
 
   // ------------------------------------------------------------ the curve beside it
   const curveScheme = h('select', { id: 'curve-scheme', 'aria-label': 'Curve scheme' },
@@ -180,7 +185,10 @@ export function setupPanels(ctx, view) {
   const curvePlot = createCurvePlot(curvePanel, ctx);
   const explorerAnchor = h('a', { href: 'curves.html', id: 'curve-explorer-link' }, 'insert a knot into this polygon\'s B-spline in the curve explorer');
   const explorerLink = createExplorerLink(explorerAnchor, ctx);
-  curvePanel.append(curveCaption, h('p', {}, 'One cubic step is knot insertion at the middle of every span: ', explorerAnchor,
+  // The scheme's own name: Chaikin's step is knot insertion into the quadratic B-spline,
+  // the cubic rule's into the cubic one (both at the middle of every span).
+  const insertionScheme = h('span', { id: 'curve-insertion-scheme' }, 'One cubic step');
+  curvePanel.append(curveCaption, h('p', {}, insertionScheme, ' is knot insertion at the middle of every span: ', explorerAnchor,
     ' (an open B-spline: a closed polygon goes there open).'));
 
   // ------------------------------------------------------------ winged-edge tables
@@ -196,7 +204,8 @@ export function setupPanels(ctx, view) {
     return createVirtualTable({
       id, caption: d.title, head: [['', ...d.columns.map((c) => columnHeading(c))]],
       rowLabel: (i) => label(d.rows, i),
-      row: (i) => { const r = tableOf(name).row(i); return d.columns.map((c) => cell(c, r[c.name])); },
+      // During the reconnection's playback an entry shows once the core has written it.
+      row: (i) => { const r = tableOf(name).row(i); return d.columns.map((c) => tableEntry(ctx.model, d.rows, i, c.name, cell(c, r[c.name]))); },
     });
   };
   const tables = { vertices: wingedTable('vertices', 'sub-vertex-table'), edges: wingedTable('edges', 'sub-edge-table'), faces: wingedTable('faces', 'sub-face-table') };
@@ -221,8 +230,9 @@ export function setupPanels(ctx, view) {
     const done = new Set(model.shownPhases.map((p) => p.name));
     phaseList.replaceChildren(...PHASES.map((name, k) => {
       const phase = model.phases[k];
+      const named = { 'face-points': ', each labelled with its face', 'edge-points': ', each labelled with its edge' }[name];
       const li = h('li', { 'data-phase': name }, PHASE_NAMES[name],
-        phase && phase.name !== 'reconnection' ? ` (${phase.count})` : '', phase?.count === 0 && phase.name !== 'reconnection' ? ' — none for this scheme' : '');
+        phase && phase.name !== 'reconnection' ? ` (${phase.count}${phase.count > 0 && phase.count <= NEW_POINT_LABELS && named ? named : ''})` : '', phase?.count === 0 && phase.name !== 'reconnection' ? ' — none for this scheme' : '');
       li.classList.toggle('is-done', done.has(name));
       if (model.shownPhases.length && model.shownPhases[model.shownPhases.length - 1].name === name) li.setAttribute('aria-current', 'step');
       return li;
@@ -251,7 +261,8 @@ export function setupPanels(ctx, view) {
     const regular = model.scheme === 'loop' ? 6 : 4;
     extraordinary.textContent = !model.steps || model.phase >= PHASES.length ? ''
       : ex.length ? `Extraordinary vertices (interior, valence ≠ ${regular}; ringed in the drawing): ${ex.slice(0, LISTED_EXTRAORDINARY).map(({ v, n }) => `${label('vertex', v)} (n = ${n})`).join(', ')}${ex.length > LISTED_EXTRAORDINARY ? ` and ${ex.length - LISTED_EXTRAORDINARY} more` : ''}.`
-        : `No extraordinary vertices: every interior vertex has valence ${regular}.`;
+        : model.interiorVertices === 0 ? 'No interior vertex: every vertex is on the boundary and takes the boundary rule, so none is extraordinary.'
+          : `No extraordinary vertices: every interior vertex has valence ${regular}.`;
   }
 
   function updateMask(model) {
@@ -287,8 +298,17 @@ export function setupPanels(ctx, view) {
       shownSource = model.sourceKey;
       updateStep(model);
       const c = model.curve;
+      insertionScheme.textContent = c.degree === 2 ? 'One Chaikin step (quadratic B-spline)' : 'One cubic step';
       curveCaption.textContent = `${c.steps} step${c.steps === 1 ? '' : 's'} (as many as the mesh's level): ${c.control.length / 2} points became ${c.refined.length / 2}; the curve is the uniform ${c.closed ? 'periodic ' : ''}${c.degree === 2 ? 'quadratic' : 'cubic'} B-spline of the ${c.closed ? 'closed ' : ''}polygon, which the steps approach. Drag a control point to reshape.`;
+      reconnection.update(model);
       for (const [name, t] of Object.entries(tables)) t.refresh(model.counts[name]);
+      // The cell the reconnection wrote last: marked, and its row scrolled into its table's view.
+      const written = currentCell(model);
+      for (const [name, t] of Object.entries(tables)) {
+        const here = written?.name === name;
+        t.mark(here ? { rows: { 'is-highlighted': [written.row] }, read: [[written.row, written.column]] } : {});
+        if (here) t.reveal(written.row);
+      }
       explorerLink.update(model, s).catch((err) => ctx.message.error(`The link to the curve explorer could not be made: ${err.message}`, 'link-error'));
     },
   };

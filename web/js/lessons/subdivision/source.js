@@ -17,6 +17,15 @@ export { label };
 export const SOURCES = meshKinds(['tetrahedron', 'cube', 'lecture', 'sphere', 'grid', 'file'],
   { tetrahedron: 'Tetrahedron (triangles)', lecture: 'Lecture example (lecture 000)', grid: 'Grid (open)' });
 
+// The view each mesh opens in (yaw, pitch in radians; ui/mesh/view.js). Lecture 000's example
+// lies in the plane z = 0: seen from the top, as the slide draws it. The tetrahedron turned so
+// that three of its faces face the viewer at clearly different angles to the light (shades
+// 0.64, 0.40 and 0.18 of the ramp; seen face on, the default turn showed one uniform
+// triangle). Every other mesh: a turn that shows it as a solid.
+const VIEWS = { lecture: { yaw: 0, pitch: 0 }, tetrahedron: { yaw: -2.35, pitch: -0.7 } };
+const DEFAULT_VIEW = { yaw: 0.6, pitch: 0.45 };
+export const viewOf = (meshKind) => ({ ...(VIEWS[meshKind] ?? DEFAULT_VIEW) });
+
 // [min, max] of each size field (ui/mesh/chooser.js; the schema in lesson.js holds them too):
 // the sphere's slices, stacks; the grid's nx, ny.
 export const SIZES = {
