@@ -1,8 +1,8 @@
 // Accessible and secure: axe-core finds no serious or critical violation on any
 // page (landing, every ready lesson, the fixture; light, dark and presentation mode); the
 // keyboard alone reaches a control point, moves it, and types exact coordinates, and a
-// screen reader hears where it is; the key map opens with ?; presentation mode hides the
-// advanced controls; reduced motion slows the player; print hides the controls.
+// screen reader hears where it is; the key map opens with ? at its top; presentation mode hides
+// the advanced controls; reduced motion slows the player; print shows no control at all.
 //
 // axe is injected with page.evaluate(source), not page.addScriptTag: addScriptTag inserts an
 // inline <script>, which the pages' CSP (script-src 'self') rightly refuses, and
@@ -22,7 +22,10 @@ const env = useSiteAndBrowser(startClassroomSite);
 async function audit(page) {
   await page.evaluate(axeSource);
   const result = await page.evaluate(() => window.axe.run(document, { resultTypes: ['violations'] }));
-  return result.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical')
+  // Serious and critical violations, and two that read wrongly to a screen reader although
+  // axe calls them minor or moderate: a role that overrides an element's own (a <math> made a
+  // region) and two regions with one name.
+  return result.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical' || ['aria-allowed-role', 'landmark-unique'].includes(v.id))
     .map((v) => `${v.id} (${v.impact}): ${v.help} at ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(', ')}`);
 }
 
@@ -107,7 +110,23 @@ for (const lesson of lessonsUnderTest) {
       await page.waitForSelector('dialog.keymap-dialog[open]');
       const keys = await page.textContent('dialog.keymap-dialog');
       for (const word of ['undo', 'presentation mode', 'move the selected handle', 'show this key map']) assert.ok(keys.includes(word), word);
+      // It opens at its top: the title in view and the focus on Close, on a 1366 x 768 laptop too.
       await page.keyboard.press('Escape');
+      await page.setViewportSize({ width: 1366, height: 768 });
+      await page.focus('#stage');
+      await page.keyboard.press('?');
+      await page.waitForSelector('dialog.keymap-dialog[open]');
+      const opened = await page.evaluate(() => {
+        const title = document.getElementById('keymap-title').getBoundingClientRect();
+        const dialog = document.querySelector('dialog.keymap-dialog');
+        const box = dialog.getBoundingClientRect();
+        return { top: title.top, boxTop: box.top, scrollTop: dialog.scrollTop, focus: document.activeElement?.textContent };
+      });
+      assert.ok(opened.top >= opened.boxTop && opened.top >= 0, `the title is in view: ${JSON.stringify(opened)}`);
+      assert.equal(opened.scrollTop, 0);
+      assert.equal(opened.focus, 'Close');
+      await page.keyboard.press('Escape');
+      await page.setViewportSize({ width: 1280, height: 800 });
       await page.waitForSelector('dialog.keymap-dialog:not([open])', { state: 'attached' });
       assert.equal(await page.evaluate(() => document.activeElement?.id), 'stage', 'focus returns to the drawing');
       await page.click('[data-action=present]');
@@ -129,6 +148,10 @@ for (const lesson of lessonsUnderTest) {
       for (const selector of ['#lesson-toolbar', '#stage-controls']) assert.equal(await page.isVisible(selector), false, `${selector} hidden`);
       assert.ok(await page.isVisible('#stage'));
       assert.ok(await page.isVisible('h1'));
+      // No control of any kind is printed: buttons, menus, sliders, checkboxes, selects.
+      const printed = await page.evaluate(() => [...document.querySelectorAll('button, select, input, textarea, details.menu')]
+        .filter((el) => el.getClientRects().length > 0).map((el) => el.id || el.outerHTML.slice(0, 60)));
+      assert.deepEqual(printed, []);
     });
   });
 }

@@ -87,10 +87,16 @@ function markOverflow(target) {
   if (overflows && !target.hasAttribute('tabindex')) {
     target.tabIndex = 0;
     target.dataset.scrollRegion = '';
-    if (!target.hasAttribute('role')) target.setAttribute('role', 'region');
+    // A <math> keeps its own role (math); any other box becomes a region. Each gets a name
+    // of its own: its section's heading, and which of the section's scrolling boxes it is
+    // when there are several (two regions must not share one name).
+    if (!target.hasAttribute('role') && target.localName !== 'math') target.setAttribute('role', 'region');
     if (!target.hasAttribute('aria-label') && !target.hasAttribute('aria-labelledby')) {
-      const heading = target.closest('details, section')?.querySelector('h2, h3');
-      target.setAttribute('aria-label', `${heading?.textContent ?? 'Content'} (scrolls)`);
+      const section = target.closest('details, section');
+      const heading = section?.querySelector('h2, h3');
+      const boxes = section ? [...section.querySelectorAll(SCROLL_BOXES)].filter((b) => !b.hasAttribute('aria-labelledby') && (!b.hasAttribute('aria-label') || b.dataset.scrollRegion !== undefined)) : [target];
+      const which = boxes.length > 1 ? `, ${boxes.indexOf(target) + 1} of ${boxes.length}` : '';
+      target.setAttribute('aria-label', `${heading?.textContent ?? 'Content'} (scrolls${which})`);
     }
   } else if (!overflows && target.dataset.scrollRegion !== undefined) {
     target.removeAttribute('tabindex');

@@ -66,8 +66,17 @@ export function createKeymap() {
     const title = document.createElement('h2');
     title.id = 'keymap-title';
     title.textContent = 'Keyboard';
+    // Close sits beside the title and takes the focus: focusing a button at the end of a
+    // long list scrolled the dialog to its bottom and cut its title off (1366 x 768).
+    const close = document.createElement('button');
+    close.type = 'button';
+    close.textContent = 'Close';
+    close.addEventListener('click', () => dialog.close());
+    const head = document.createElement('div');
+    head.className = 'keymap-head';
+    head.append(title, close);
     /** @type {HTMLElement[]} */
-    const content = [title];
+    const content = [head];
     for (const [group, list] of groups) {
       const h3 = document.createElement('h3');
       h3.textContent = group;
@@ -85,14 +94,10 @@ export function createKeymap() {
       }
       content.push(h3, dl);
     }
-    const close = document.createElement('button');
-    close.type = 'button';
-    close.textContent = 'Close';
-    close.addEventListener('click', () => dialog.close());
-    content.push(close);
     dialog.replaceChildren(...content);
     if (!dialog.open) dialog.showModal();
-    close.focus();
+    close.focus({ preventScroll: true });
+    dialog.scrollTop = 0;
   }
 
   document.addEventListener('keydown', onKeyDown);
