@@ -17,7 +17,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { useSiteAndBrowser, repoRoot } from '../../helpers/browser.mjs';
+import { useSiteAndBrowser, repoRoot, screenshot } from '../../helpers/browser.mjs';
 import { createStaticServer, listen } from '../../../scripts/lib/static-server.mjs';
 
 const env = useSiteAndBrowser();
@@ -91,12 +91,12 @@ after(async () => {
 
 let deckCount = 0;
 // The deck opened on its embed slide (the second, index 1), the lesson ready in the frame.
-async function openDeck(hash) {
+async function openDeck(hash, viewport = VIEWPORT) {
   const appOrigin = new URL(env.site.url).origin;
   deckCount += 1;
   const file = `deck-${deckCount}.html`;
   fs.writeFileSync(path.join(deckDir, file), deckPage(appOrigin, new URL(`mesh.html#${hash}`, env.site.url).href));
-  const context = await env.newContext({ viewport: VIEWPORT });
+  const context = await env.newContext({ viewport });
   const page = await context.newPage();
   page.problems = [];
   page.on('pageerror', (err) => page.problems.push(`pageerror: ${err.message}`));
@@ -223,6 +223,17 @@ test('keys the embed uses stay in it: ArrowRight moves a selected vertex, PageDo
     await page.keyboard.press('Escape');
     await page.keyboard.press('ArrowRight');
     assert.deepEqual(await waitForSlide(page, 2), { h: 2, v: 0 });
+    assert.deepEqual(page.problems, []);
+  }
+});
+
+test('the deck with its embed at 1920 x 1080 (present=1), 1280 x 720 and 390 x 844: the keys still reach the deck, screenshots for the eye', async () => {
+  for (const [width, height, hash] of [[1920, 1080, 'embed=1&present=1'], [1280, 720, 'embed=1'], [390, 844, 'embed=1']]) {
+    const { page, frame } = await openDeck(hash, { width, height });
+    await clickCanvas(frame, await emptyCanvasPoint(frame));
+    await screenshot(page, `deck-embed-${width}x${height}`);
+    await page.keyboard.press('PageDown');
+    assert.deepEqual(await waitForSlide(page, 2), { h: 2, v: 0 }, `${width}x${height}`);
     assert.deepEqual(page.problems, []);
   }
 });
