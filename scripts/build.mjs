@@ -14,6 +14,7 @@ import { withBuildLock } from './lib/build-lock.mjs';
 import { writeServiceWorkerManifest } from './lib/site-manifest.mjs';
 import { lessonPage } from './lib/lesson-page.mjs';
 import { exerciseIndex } from './lib/exercise-index.mjs';
+import { guidePages } from './lib/guides.mjs';
 
 const jobs = ['-j', '2'];
 
@@ -82,7 +83,13 @@ export function assembleSite() {
 async function assembleSiteNow() {
   const dist = path.join(repoRoot, 'dist');
   const pages = await lessonPages();
-  mirror(path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.js', ...pages.map((p) => p.file)]), new Set(['templates']));
+  // The guides (dist/guide/, from docs/ by scripts/lib/guides.mjs) are pages like the lessons'.
+  pages.push(...guidePages());
+  mirror(path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.js', 'guide', ...pages.map((p) => p.file)]), new Set(['templates']));
+  fs.mkdirSync(path.join(dist, 'guide'), { recursive: true });
+  for (const name of fs.readdirSync(path.join(dist, 'guide'))) {
+    if (!pages.some((p) => p.file === `guide/${name}`)) fs.rmSync(path.join(dist, 'guide', name), { recursive: true, force: true });
+  }
   for (const { file, html } of pages) {
     const target = path.join(dist, file);
     if (!fs.existsSync(target) || fs.readFileSync(target, 'utf8') !== html) fs.writeFileSync(target, html);

@@ -95,6 +95,40 @@ test('installed in an empty folder, `import { loadWingspline } from \'wingspline
   assert.match(result.version, /\d/);
 });
 
+test('installed, the package says where it comes from and exports its manifest and its wasm: both resolve by name, from import and require', () => {
+  const app = path.dirname(path.dirname(installed));
+  const manifest = JSON.parse(fs.readFileSync(path.join(installed, 'package.json'), 'utf8'));
+  // What a registry user expects to find (npm's package.json fields): a repository, a home page,
+  // where to report bugs, keywords and an author, and a changelog in the tarball.
+  assert.equal(manifest.repository?.type, 'git');
+  assert.match(manifest.repository?.url ?? '', /^git\+https:\/\/\S+\.git$/);
+  assert.match(manifest.homepage ?? '', /^https:\/\//);
+  assert.match(manifest.bugs?.url ?? '', /^https:\/\/\S+\/issues$/);
+  assert.ok(Array.isArray(manifest.keywords) && manifest.keywords.includes('webassembly') && manifest.keywords.includes('winged-edge'));
+  assert.ok(typeof manifest.author === 'string' && manifest.author.length > 0);
+  assert.ok(packed.includes('CHANGELOG.md'), 'the changelog is in the tarball');
+  fs.writeFileSync(path.join(app, 'resolve.mjs'), [
+    "import { createRequire } from 'node:module';",
+    "import { fileURLToPath } from 'node:url';",
+    'const require = createRequire(import.meta.url);',
+    'process.stdout.write(JSON.stringify({',
+    "  manifest: fileURLToPath(import.meta.resolve('wingspline/package.json')),",
+    "  wasm: fileURLToPath(import.meta.resolve('wingspline/dist/wasm/wingspline-core.wasm')),",
+    "  requiredManifest: require.resolve('wingspline/package.json'),",
+    "  requiredWasm: require.resolve('wingspline/dist/wasm/wingspline-core.wasm'),",
+    '}));',
+  ].join('\n'));
+  const found = JSON.parse(execFileSync(process.execPath, ['resolve.mjs'], { cwd: app, encoding: 'utf8' }));
+  const real = (file) => fs.realpathSync(file);
+  assert.equal(real(found.manifest), real(path.join(installed, 'package.json')));
+  assert.equal(real(found.requiredManifest), real(path.join(installed, 'package.json')));
+  assert.equal(real(found.wasm), real(path.join(installed, 'dist', 'wasm', 'wingspline-core.wasm')));
+  assert.equal(real(found.requiredWasm), real(found.wasm));
+  const wasm = fs.readFileSync(found.wasm);
+  assert.deepEqual([...wasm.subarray(0, 4)], [0x00, 0x61, 0x73, 0x6d], 'the exported file is a wasm module (\\0asm)');
+  assert.ok(WebAssembly.validate(wasm), 'and a valid one');
+});
+
 test('installed, the declarations reach a TypeScript student through the package\'s exports: a right use type-checks, a misuse does not', () => {
   const app = path.dirname(path.dirname(installed));
   const tsc = path.join(repoRoot, 'node_modules', 'typescript', 'bin', 'tsc');

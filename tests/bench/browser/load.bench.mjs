@@ -1,8 +1,9 @@
 // ui_load (docs/benchmarks.md): time from navigation to the first lesson drawn and
 // interactive (the shell's performance mark 'wingspline-ready'; until a lesson is marked
 // ready in the registry, the test-only fixture lesson of tests/fixtures/site, which costs
-// the whole skeleton and the core but no lesson code), and the bytes transferred: raw, and gzip -9 of each
-// response (the 300 KB budget is for gzip), plus the gzip size of all of dist/.
+// the whole skeleton and the core but no lesson code), and the bytes transferred: raw, gzip -9 of each
+// response (the 300 KB budget is for gzip), the bodies as the classroom server sent them
+// (wire_bytes: compressed by its Accept-Encoding, brotli for Chromium), plus the gzip size of all of dist/.
 // Each repetition is a cold load in a fresh browser context (empty caches, no worker).
 import fs from 'node:fs';
 import path from 'node:path';
@@ -39,7 +40,8 @@ if (wants('ui_load')) {
       const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'block' });
       const page = await context.newPage();
       const bodies = [];
-      page.on('response', (response) => bodies.push(response.body().then((b) => ({ url: response.url(), b })).catch(() => null)));
+      page.on('response', (response) => bodies.push(Promise.all([response.body(), response.request().sizes()])
+        .then(([b, sizes]) => ({ url: response.url(), b, wire: sizes.responseBodySize })).catch(() => null)));
       await page.goto(new URL(pageFile, site.url).href);
       await page.waitForSelector('body[data-ready=true]', { timeout: 30000 });
       ms.push(await page.evaluate(() => performance.getEntriesByName('wingspline-ready')[0].startTime));
@@ -49,6 +51,7 @@ if (wants('ui_load')) {
         transfer = {
           bytes: files.reduce((a, f) => a + f.b.length, 0),
           gzip_bytes: files.reduce((a, f) => a + gzipSize(f.b), 0),
+          wire_bytes: files.reduce((a, f) => a + f.wire, 0),
           largest: files.map((f) => ({ file: new URL(f.url).pathname, gzip: gzipSize(f.b) })).sort((a, b) => b.gzip - a.gzip).slice(0, 4),
           requests: files.length,
         };

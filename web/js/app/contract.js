@@ -112,9 +112,11 @@
  */
 
 /**
- * The page's key map (app/keymap.js): a lesson registers its keys in setup.
+ * The page's key map (app/keymap.js): a lesson registers its keys in setup. `shownWith`: the
+ * panel whose keys they are; they act only while it is shown (in an embed without it they
+ * are free for the slides around it).
  * @typedef {{
- *   add(binding: { keys: string[], label: string, group?: string, when?: (event: KeyboardEvent) => boolean, action?: (event: KeyboardEvent) => void }): void,
+ *   add(binding: { keys: string[], label: string, group?: string, when?: (event: KeyboardEvent) => boolean, action?: (event: KeyboardEvent) => void, shownWith?: Element }): void,
  *   [extra: string]: any,
  * }} Keymap
  */

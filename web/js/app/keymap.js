@@ -36,6 +36,9 @@ export function createKeymap() {
     if (target instanceof HTMLButtonElement && (event.key === ' ' || event.key === 'Enter')) return;
     for (const b of bindings) {
       if (!b.action || (b.when && !b.when(event))) continue;
+      // A binding of a panel acts only while the panel is shown (an embed without it: the
+      // key is then free, for the slides around the embed).
+      if (b.shownWith && b.shownWith.getClientRects().length === 0) continue;
       if (matches(b, event)) {
         event.preventDefault();
         b.action(event);
@@ -104,9 +107,11 @@ export function createKeymap() {
 
   return {
     // keys: ['ArrowRight', 'PageDown'], label shown in the `?` dialog, group heading.
-    // Without an action the entry is only listed (keys another element handles).
-    add({ keys, label, action, group = 'Lesson', when }) {
-      bindings.push({ keys, label, action, group, when });
+    // Without an action the entry is only listed (keys another element handles). shownWith:
+    // the element (a panel) whose keys these are; they act only while it is shown.
+    /** @param {{ keys: string[], label: string, group?: string, when?: (event: KeyboardEvent) => boolean, action?: (event: KeyboardEvent) => void, shownWith?: Element }} binding */
+    add({ keys, label, action, group = 'Lesson', when, shownWith }) {
+      bindings.push({ keys, label, action, group, when, shownWith });
     },
     showDialog,
     list: () => bindings.map(({ keys, label, group }) => ({ keys, label, group })),

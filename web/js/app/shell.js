@@ -26,7 +26,7 @@
 import { loadWingspline } from '../core/wingspline.js';
 import { createStore } from './store.js';
 import { isFramed } from './persist.js';
-import { applyEmbed, showEmbedPanels } from './embed.js';
+import { applyEmbed, showEmbedPanels, passKeysToHost } from './embed.js';
 import { openWorkStores, readOwnWork, createSavedWork } from './saved-work.js';
 import { createAddressFollower } from './follow-address.js';
 import { createHandles } from './handles.js';
@@ -72,6 +72,13 @@ export async function runLesson(lesson, { exercises = null, gpuRenderer = null }
   const message = createMessageLine(byId('message'));
   const announcer = createAnnouncer(els.description);
   const keymap = createKeymap();
+  // A framed embed passes the slide keys the lesson does not use to its host, and Escape
+  // gives the host the focus back (docs/embed.md, "Keys in a slide").
+  if (embed && isFramed()) {
+    passKeysToHost(window.parent);
+    keymap.add({ keys: ['ArrowRight', 'ArrowLeft', 'ArrowDown', 'ArrowUp', 'PageDown', 'PageUp', ' ', 'n', 'p', 'Home', 'End'], label: 'to the slides, when the lesson does not use the key', group: 'In a slide' });
+    keymap.add({ keys: ['Escape'], label: 'give the keys back to the slides', group: 'In a slide' });
+  }
 
   let api;
   try {

@@ -77,12 +77,12 @@ export function createWalkPanel(ctx, { title = 'Winged-edge walk', pseudocode = 
     narration, side, found);
 
   const notOnCanvas = (event) => event.target !== stage;
-  ctx.keymap.add({ keys: [' '], label: 'play / pause the walk', group: 'Walk', action: () => player.toggle(), when: notOnCanvas });
-  ctx.keymap.add({ keys: ['ArrowRight', 'PageDown', 'n'], label: 'next step of the walk (arrows when the canvas is not focused)', group: 'Walk', action: () => player.next(), when: notOnCanvas });
-  ctx.keymap.add({ keys: ['ArrowLeft', 'PageUp', 'b'], label: 'previous step of the walk', group: 'Walk', action: () => player.prev(), when: notOnCanvas });
-  ctx.keymap.add({ keys: ['Home'], label: 'restart the walk', group: 'Walk', action: () => player.restart(), when: notOnCanvas });
-  ctx.keymap.add({ keys: ['End'], label: 'last step of the walk', group: 'Walk', action: () => player.end(), when: notOnCanvas });
-  ctx.keymap.add({ keys: ['PageDown', 'PageUp', 'n', 'b'], label: 'on the focused canvas too: PageDown/n next, PageUp/b back (presenter remote)', group: 'Walk',
+  ctx.keymap.add({ keys: [' '], label: 'play / pause the walk', group: 'Walk', shownWith: root, action: () => player.toggle(), when: notOnCanvas });
+  ctx.keymap.add({ keys: ['ArrowRight', 'PageDown', 'n'], label: 'next step of the walk (arrows when the canvas is not focused)', group: 'Walk', shownWith: root, action: () => player.next(), when: notOnCanvas });
+  ctx.keymap.add({ keys: ['ArrowLeft', 'PageUp', 'b'], label: 'previous step of the walk', group: 'Walk', shownWith: root, action: () => player.prev(), when: notOnCanvas });
+  ctx.keymap.add({ keys: ['Home'], label: 'restart the walk', group: 'Walk', shownWith: root, action: () => player.restart(), when: notOnCanvas });
+  ctx.keymap.add({ keys: ['End'], label: 'last step of the walk', group: 'Walk', shownWith: root, action: () => player.end(), when: notOnCanvas });
+  ctx.keymap.add({ keys: ['PageDown', 'PageUp', 'n', 'b'], label: 'on the focused canvas too: PageDown/n next, PageUp/b back (presenter remote)', group: 'Walk', shownWith: root,
     action: (event) => (event.key === 'PageDown' || event.key === 'n' ? player.next() : player.prev()), when: (event) => event.target === stage });
 
   function sync(s) {
