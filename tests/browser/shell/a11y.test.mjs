@@ -3,31 +3,14 @@
 // keyboard alone reaches a control point, moves it, and types exact coordinates, and a
 // screen reader hears where it is; the key map opens with ? at its top; presentation mode hides
 // the advanced controls; reduced motion slows the player; print shows no control at all.
-//
-// axe is injected with page.evaluate(source), not page.addScriptTag: addScriptTag inserts an
-// inline <script>, which the pages' CSP (script-src 'self') rightly refuses, and
-// bypassCSP would audit a page with its policy switched off. Evaluation through the
-// DevTools protocol is not subject to the page's CSP, so the audited page is the real one.
+// axe runs through tests/helpers/axe.mjs (which says why it is evaluated, not added as a script tag).
 import { test, describe, after } from 'node:test';
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
-import { createRequire } from 'node:module';
 import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
 import { lessonsUnderTest, startClassroomSite, openLesson, trap } from '../../helpers/classroom.mjs';
-
-const axeSource = fs.readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+import { seriousViolations as audit } from '../../helpers/axe.mjs';
 
 const env = useSiteAndBrowser(startClassroomSite);
-
-async function audit(page) {
-  await page.evaluate(axeSource);
-  const result = await page.evaluate(() => window.axe.run(document, { resultTypes: ['violations'] }));
-  // Serious and critical violations, and two that read wrongly to a screen reader although
-  // axe calls them minor or moderate: a role that overrides an element's own (a <math> made a
-  // region) and two regions with one name.
-  return result.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical' || ['aria-allowed-role', 'landmark-unique'].includes(v.id))
-    .map((v) => `${v.id} (${v.impact}): ${v.help} at ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(', ')}`);
-}
 
 const pages = [{ title: 'Landing page', page: 'index.html', landing: true }, ...lessonsUnderTest];
 for (const scheme of ['light', 'dark']) {
