@@ -14,14 +14,39 @@ const REFERS = { start: vLabel, end: vLabel, left: fLabel, right: fLabel, startL
 const ROW_LABEL = { vertex: vLabel, edge: eLabel, face: fLabel };
 const none = (label) => (x) => (x < 0 ? '—' : label(x));
 
-// The steps a person sees: the assignments of the three tables of lecture 000 (the face
-// table's bookkeeping field firstCorner, which no slide shows, is left out).
+// The vertex table's coordinate columns (x, y, z: cells 0..2 of a vertex's position).
+export const COORDINATES = ['x', 'y', 'z'];
+
+// The steps a person sees, one per entry the winged edge writes (the core's definition of
+// its writes, edit_costs.h playback_writes, counts the same lines): the assignments of the
+// three tables of lecture 000 in the algorithm's order (the face table's bookkeeping field
+// firstCorner, which no slide shows, is left out; an entry written twice is two lines), and
+// where the record sets a position, its coordinates: all three of a new vertex (it had
+// none: before is null), the ones a move changed.
 export function visibleSteps(record) {
-  return (record?.steps ?? []).filter((s) => Object.hasOwn(FIELD_HEADINGS, s.field));
+  const raw = record?.steps ?? [];
+  const added = new Set(record?.added?.vertices ?? []);
+  const byStep = new Map();
+  for (const p of record?.positions ?? []) {
+    const at = Math.min(p.step, raw.length);
+    const fresh = added.has(p.vertex);
+    const lines = COORDINATES.map((field, k) => ({ table: 'vertex', row: p.vertex, field, before: fresh ? null : p.before[k], after: p.after[k],
+      phase: (raw[at] ?? raw[at - 1])?.phase ?? -1, coordinate: true })).filter((c) => fresh || c.before !== c.after);
+    byStep.set(at, [...(byStep.get(at) ?? []), ...lines]);
+  }
+  const out = [];
+  for (let i = 0; i <= raw.length; i += 1) {
+    out.push(...(byStep.get(i) ?? []));
+    if (i < raw.length && Object.hasOwn(FIELD_HEADINGS, raw[i].field)) out.push(raw[i]);
+  }
+  return out;
 }
 
-// One line per step: "edge table, e9 · E:L: e3 → e10".
+const coordinate = (x) => (x === null ? '—' : String(Number(x.toFixed(6))));
+
+// One line per step: "edge table, e9 · E:L: e3 → e10"; "vertex table, v6 · x: — → 1".
 export function stepText(s) {
+  if (s.coordinate) return `vertex table, ${vLabel(s.row)} · ${s.field}: ${coordinate(s.before)} → ${coordinate(s.after)}`;
   const label = none(REFERS[s.field] ?? String);
   return `${s.table} table, ${ROW_LABEL[s.table](s.row)} · ${FIELD_HEADINGS[s.field]}: ${label(s.before)} → ${label(s.after)}`;
 }
@@ -32,10 +57,11 @@ export function stepText(s) {
 export function arraysAtStep(we, record, shown) {
   const steps = visibleSteps(record);
   if (shown >= steps.length) return we;
-  const out = { ...we, edges: Int32Array.from(we.edges), vertexEdge: Int32Array.from(we.vertexEdge), faceEdge: Int32Array.from(we.faceEdge) };
+  const out = { ...we, positions: Float64Array.from(we.positions), edges: Int32Array.from(we.edges), vertexEdge: Int32Array.from(we.vertexEdge), faceEdge: Int32Array.from(we.faceEdge) };
   for (let i = steps.length - 1; i >= shown; i -= 1) {
     const s = steps[i];
-    if (s.table === 'edge') out.edges[8 * s.row + EDGE_FIELDS.indexOf(s.field)] = s.before;
+    if (s.coordinate) { if (s.before !== null) out.positions[3 * s.row + COORDINATES.indexOf(s.field)] = s.before; }
+    else if (s.table === 'edge') out.edges[8 * s.row + EDGE_FIELDS.indexOf(s.field)] = s.before;
     else if (s.table === 'vertex') out.vertexEdge[s.row] = s.before;
     else out.faceEdge[s.row] = s.before;
   }
