@@ -58,9 +58,9 @@ test('a student splits e3 with the pointer, steps through the assignments, undoe
   // The new vertex is the midpoint of v2 = (1, 1, 0)... read from the page's own v2 and v3.
   const [v2, v3, v6] = await page.evaluate(() => [1, 2, 5].map((v) => Array.from(window.wingspline.model.positions.slice(3 * v, 3 * v + 3))));
   for (let k = 0; k < 3; k += 1) assert.ok(Math.abs(v6[k] - (v2[k] + v3[k]) / 2) <= 1e-12 * (1 + Math.abs(v2[k]) + Math.abs(v3[k])));
-  // The cost argument of lecture 000 as numbers: what each representation rewrote (counted
-  // by hand in tests/native: the winged edge 18, independent faces 9, vertex and face tables 6).
-  const costs = await page.$$eval('#edit-costs tbody tr', (rows) => Object.fromEntries(rows.map((r) => [r.dataset.representation, Number(r.children[1].textContent)])));
+  // The cost argument of lecture 000 as numbers: what each representation wrote (counted
+  // by hand in tests/wasm/mesh/edit.test.mjs: the winged edge 18, independent faces 9, vertex and face tables 6).
+  const costs = await page.$$eval('#edit-costs tbody tr', (rows) => Object.fromEntries(rows.map((r) => [r.dataset.representation, Number(r.querySelector('[data-cost=writes]').textContent)])));
   assert.deepEqual([costs['winged-edge'], costs['independent-faces'], costs['vertex-face-tables']], [18, 9, 6]);
   // Euler's formula after the edit: 6 - 8 + 3 = 1.
   assert.match(await page.textContent('#edit-euler'), /before the last edit 5 − 7 \+ 3 = 1; after it 6 − 8 \+ 3 = 1/);
