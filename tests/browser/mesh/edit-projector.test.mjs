@@ -172,7 +172,7 @@ test('flip e3: reads and writes per representation as counted by hand on the sli
   // The words say the lesson: what the winged edge wrote and read, who had to search.
   const note = await page.textContent('#edit-cost-note');
   assert.match(note, /The winged edge wrote 18 entries .* and read 16 to find the faces on both sides of e3/);
-  assert.match(note, /Vertex and face tables .* had to search the whole mesh, all 3 faces/);
+  assert.match(note, /vertex and face tables \(23 read, 4 written\) had to search the whole mesh, all 3 faces/);
   // The chart: 4 sizes, the winged edge's series flat, the face table's growing.
   await screenshot(page, 'edit-costs-flip-e3');
   await page.focus('#edit-growth summary');
@@ -192,6 +192,9 @@ test('flip e3: reads and writes per representation as counted by hand on the sli
     return colours.size;
   });
   assert.ok(inked > 3, `the chart is drawn (${inked} colours)`);
-  await screenshot(page, 'edit-costs-flip-e3');
+  // After the edit the column still gives the tables and the costs room (the walk shrinks).
+  const room = await page.$eval('.panels-rest', (el) => el.getBoundingClientRect().height);
+  assert.ok(room >= 150, `the column below the walk keeps room at 1280 x 720: ${room}px`);
+  await screenshot(page, 'edit-costs-flip-e3-after');
   assert.deepEqual(page.problems, []);
 });

@@ -292,9 +292,9 @@ export function createEditPanel(ctx, selection, { pick }) {
     const last = COST_FACES.length - 1;
     const searching = g.refused ? [] : Object.keys(cost).filter((rep) => g.reads[last][rep] > g.reads[0][rep]);
     if (searching.length) {
-      const names = searching.map((rep) => `${REPRESENTATION_NAMES[rep]} (${count(cost[rep].reads)} read, ${count(cost[rep].writes)} written)`);
+      const names = searching.map((rep) => `${REPRESENTATION_NAMES[rep].toLowerCase()} (${count(cost[rep].reads)} read, ${count(cost[rep].writes)} written)`);
       words.push(`The ${listed(names)} had to search the whole mesh, all ${count(model.F)} faces, to find ${finds}: they store no way from one element to its neighbours.`,
-        `On a grid of ${count(COST_FACES[last])} faces the same edit reads ${listed(searching.map((rep) => `${count(g.reads[last][rep])} (${REPRESENTATION_NAMES[rep]})`))}; the winged edge still reads ${count(g.reads[last]['winged-edge'])}.`);
+        `On a grid of ${count(COST_FACES[last])} faces the same edit reads ${listed(searching.map((rep) => `${count(g.reads[last][rep])} (${REPRESENTATION_NAMES[rep].toLowerCase()})`))}; the winged edge still reads ${count(g.reads[last]['winged-edge'])}.`);
     } else if (!g.refused) {
       words.push(`Every representation finds ${finds} from the element itself here, without a search: the cost does not grow with the mesh (chart below).`);
     }
