@@ -15,7 +15,8 @@
 // Writes: for the winged edge, the assignments its algorithm made, one per line of the
 // edit's playback: every recorded assignment of a column the slides show (an entry written
 // twice counts twice) and every coordinate set (a new vertex's x, y and z; a moved vertex's
-// coordinates that changed). The other five keep no record of an algorithm: their writes are
+// coordinates that changed; a field of a new row left "none", as a new boundary edge's
+// missing face, is born so and never assigned). The other five keep no record of an algorithm: their writes are
 // the entries that differ between their tables before and after (rewritten_entries), the
 // fewest any algorithm could write.
 #include "wingspline/mesh/operations.h"
