@@ -231,6 +231,9 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       const gapList = model.gapLists?.[`${kind === 'vertex' ? 'vertices' : kind === 'edge' ? 'edges' : 'faces'}`];
       if (gapList?.length) rows['is-gap'] = Array.from(gapList);
       tables[name].mark({ rows, read, compared });
+      // A table with nothing of the walk's or the player's marked forgets what it revealed, so
+      // a step back to a row it showed before reveals that row again.
+      if (!rows['is-highlighted'].length) delete revealed[name];
       if (reveal && selection.pick?.kind === kind) tables[name].reveal(selection.pick.index);
       else if ((frame || inEdit) && tab === 'winged' && rows['is-highlighted'].length) {
         // The walk's (or the edit player's) row is scrolled into view when it moves, not on
