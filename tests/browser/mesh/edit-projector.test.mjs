@@ -132,7 +132,7 @@ for (const size of SIZES) {
 
   test(`${size.name}: every step of every edit shows the drawing, the assignment and the rewritten cell; the walk folds while it plays`, async () => {
     const page = await openLesson(size.viewport, size.present);
-    for (const e of EDITS.filter((x) => !process.env.ONLY_EDIT || x.name === process.env.ONLY_EDIT)) {
+    for (const e of EDITS) {
       // Each edit on the slide's mesh: undo back to it first (Ctrl+Z, as a lecturer would).
       while (await page.evaluate(() => window.wingspline.state.ops.length)) {
         await page.keyboard.press('Control+z');
