@@ -255,6 +255,8 @@ export interface ChangedRow {
   fields: Array<{ field: string; before: number; after: number }>;
 }
 /** What an operation changed: enough to replay it and to undo it (docs/api-mesh.md). */
+/** What an edit cost one representation (edit_costs.h): entries read to find what to change, entries written. */
+export interface EditCost { reads: number; writes: number }
 export interface ChangeRecord {
   op: string;
   added: ElementLists;
@@ -267,8 +269,8 @@ export interface ChangeRecord {
   /** Euler operations: the algorithm's lines; steps[i].phase indexes them. */
   phases?: string[];
   positions?: Array<{ vertex: number; before: number[]; after: number[]; step: number }>;
-  /** With apply(op, {rewritten: true}): stored entries each representation rewrote. */
-  rewritten?: Partial<Record<Representation, number>>;
+  /** With apply(op, {costs: true}): the entries each representation read to find what to change and the entries it wrote. */
+  costs?: Partial<Record<Representation, EditCost>>;
 }
 /**
  * One operation of the core's registry (api.meshOperations) as a lesson state holds it, its
@@ -303,6 +305,8 @@ export interface MeshOperationsDescriptor {
     readonly shortcut: string;
     /** One line with {argument} placeholders: "split {e} at t = {t}". */
     readonly describe: string;
+    /** What it must find before it writes, {name} as in describe: "the sides of {f}" (edit_costs.h). */
+    readonly finds: string;
     readonly arguments: ReadonlyArray<{
       readonly name: string; readonly kind: ElementKind | null; readonly optional: boolean; readonly default: number;
       /** For an element after the first: the adjacency query of the first that lists its candidates. */
@@ -384,7 +388,7 @@ export interface Mesh {
   setVertexEdge(v: number, e: number): ChangeRecord;
   checkSetFaceEdge(f: number, e: number): CheckResult;
   setFaceEdge(f: number, e: number): ChangeRecord;
-  apply(operation: MeshOperation, options?: { rewritten?: boolean }): ChangeRecord;
+  apply(operation: MeshOperation, options?: { costs?: boolean }): ChangeRecord;
   splitEdge(e: number, t?: number): ChangeRecord;
   splitFace(f: number, a: number, b: number): ChangeRecord;
   joinFaces(e: number): ChangeRecord;
@@ -786,6 +790,8 @@ export interface WingsplineApi {
   readonly meshLimits: MeshLimits;
   readonly tableDescriptors: readonly TableDescriptor[];
   readonly meshOperations: MeshOperationsDescriptor;
+  /** Operation `name` on grids of n x n quads (F = 2 n²), one per even n of `sizes`: what it costs each representation. */
+  editCostGrowth(name: MeshOperation['op'], sizes: number[]): { sizes: Array<{ n: number; faces: number }>; costs: Array<Record<Representation, EditCost>> };
   parseMesh(text: string, options: ParseMeshOptions & { layout: 'csr' }): FaceSetCsr;
   parseMesh(text: string, options?: ParseMeshOptions & { layout?: 'faces' }): FaceSet;
   formatMesh(input: MeshInput, options?: { format?: MeshFileFormat }): string;

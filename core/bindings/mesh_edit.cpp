@@ -4,6 +4,7 @@
 #include "mesh_access.h"
 #include "mesh_entry.h"
 
+#include "wingspline/mesh/edit_costs.h"
 #include "wingspline/mesh/operations.h"
 #include "wingspline/mesh/representations.h"
 #include "wingspline/mesh/tables.h"
@@ -85,13 +86,51 @@ val change_value(const ChangeRecord& c) {
     return r;
 }
 
+// {[representation]: {reads, writes}}
+val costs_value(const EditCosts& costs) {
+    val out = val::object();
+    for (int k = 0; k < kRepresentationCount; ++k) {
+        val one = val::object();
+        one.set("reads", static_cast<double>(costs[k].reads));
+        one.set("writes", static_cast<double>(costs[k].writes));
+        out.set(representation_key(static_cast<Representation>(k)), one);
+    }
+    return out;
+}
+
+// The operation `name` on grids of n x n quads, one per size (edit_cost_growth):
+// {sizes: [{n, faces}], costs: [{[representation]: {reads, writes}}]}.
+val mesh_edit_cost_growth(const std::string& name, const val& sizes) {
+    return guarded([&] {
+        const OperationEntry* entry = find_operation(name);
+        if (entry == nullptr) throw Error("unknown-operation", "unknown mesh operation '" + name.substr(0, 40) + "'");
+        std::vector<int32_t> n;
+        for (const double x : to_doubles(sizes)) n.push_back(static_cast<int32_t>(x));
+        const EditCostGrowth g = edit_cost_growth(*entry, n);
+        val out = val::object();
+        val list = val::array();
+        val costs = val::array();
+        for (std::size_t i = 0; i < g.n.size(); ++i) {
+            val size = val::object();
+            size.set("n", g.n[i]);
+            size.set("faces", static_cast<double>(g.faces[i]));
+            list.set(i, size);
+            costs.set(i, costs_value(g.costs[i]));
+        }
+        out.set("sizes", list);
+        out.set("costs", costs);
+        return out;
+    });
+}
+
 // Any operation of the registry (operations.h) by name, its arguments in the entry's order.
 // check = true only asks the check ({allowed, code, message}, nothing changed); otherwise
 // runs the operation and returns its change record, or the refusal as {ok: false, code,
-// message} with the mesh unchanged. cost: also say how many stored entries each
-// representation rewrote (rewritten_entries: the winged edge's from the change record, the
-// others by comparing their derivations before and after, which the cache hands over
-// rather than copies; the lesson asks it only for the edit a person just made).
+// message} with the mesh unchanged. cost: also say what the edit cost each representation
+// (edit_costs.h: the entries read to find what to change, counted before the change, and the
+// entries written: the winged edge's from the change record, the others by comparing their
+// derivations before and after, which the cache hands over rather than copies; the lesson
+// asks it only for the edit a person just made).
 val mesh_edit(int32_t handle, const std::string& name, const val& args, bool check, bool cost) {
     return guarded([&] {
         MeshEntry& me = entry(handle);
@@ -107,15 +146,14 @@ val mesh_edit(int32_t handle, const std::string& name, const val& args, bool che
             return r;
         }
         std::unique_ptr<Representations> before_reps;
-        if (cost && w.check(op).ok) before_reps = me.representations.take(w);
+        std::array<int64_t, kRepresentationCount> reads{};
+        if (cost && w.check(op).ok) {
+            reads = edit_reads(op, w, me.representations.of(w));
+            before_reps = me.representations.take(w);
+        }
         const ChangeRecord c = w.apply(op);
         val r = change_value(c);
-        if (before_reps) {
-            const auto n = rewritten_entries(c, *before_reps, w, me.representations.of(w));
-            val rewritten = val::object();
-            for (int k = 0; k < kRepresentationCount; ++k) rewritten.set(representation_key(static_cast<Representation>(k)), static_cast<double>(n[k]));
-            r.set("rewritten", rewritten);
-        }
+        if (before_reps) r.set("costs", costs_value(edit_costs(reads, c, *before_reps, w, me.representations.of(w))));
         return r;
     });
 }
@@ -154,8 +192,8 @@ val mesh_gaps(int32_t handle) {
     });
 }
 
-// Read once by mesh-api.js: {operations: [{name, title, counts, shortcut, describe,
-// arguments: [{name, kind (null for a number), optional, default, choices, label}]}],
+// Read once by mesh-api.js: {operations: [{name, title, counts, shortcut, describe, finds
+// (what it must find before it writes, edit_costs.h), arguments: [{name, kind (null for a number), optional, default, choices, label}]}],
 // tables, fields, stepStride, positionStride}: the registry (operations.h) as data.
 val mesh_operation_descriptors() {
     return guarded([] {
@@ -180,6 +218,7 @@ val mesh_operation_descriptors() {
             op.set("counts", std::string(all[k].counts));
             op.set("shortcut", std::string(all[k].shortcut));
             op.set("describe", std::string(all[k].describe));
+            op.set("finds", std::string(locate_description(all[k].locate)));
             op.set("arguments", args);
             ops.set(k, op);
         }
@@ -205,6 +244,7 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh_edit) {
     using namespace wingspline::bindings;
     emscripten::function("meshVersion", &mesh_version);
     emscripten::function("meshEdit", &mesh_edit);
+    emscripten::function("meshEditCostGrowth", &mesh_edit_cost_growth);
     emscripten::function("meshCompact", &mesh_compact);
     emscripten::function("meshGaps", &mesh_gaps);
     emscripten::function("meshOperationDescriptors", &mesh_operation_descriptors);

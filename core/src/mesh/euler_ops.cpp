@@ -1227,23 +1227,23 @@ const std::vector<OperationEntry>& operations() {
     using K = ElementKind;
     static const std::vector<OperationEntry> all = {
         {"split-edge", "Split edge", "V+1, E+1", "s", "split {e} at t = {t}",
-         {{"e", K::Edge}, {"t", K::None, 0.5, true, nullptr, "where the new vertex lies along the edge"}}, impl_of<SplitEdge>()},
-        {"flip-edge", "Flip edge", "V, E, F unchanged", "f", "flip {e}", {{"e", K::Edge}}, impl_of<FlipEdge>()},
+         {{"e", K::Edge}, {"t", K::None, 0.5, true, nullptr, "where the new vertex lies along the edge"}}, impl_of<SplitEdge>(), Locate::EdgeSides},
+        {"flip-edge", "Flip edge", "V, E, F unchanged", "f", "flip {e}", {{"e", K::Edge}}, impl_of<FlipEdge>(), Locate::EdgeSides},
         {"collapse-edge", "Collapse edge", "V−1, E−1 (−1 more per triangle side)", "c", "collapse {e} at t = {t}",
-         {{"e", K::Edge}, {"t", K::None, 0.5, true, nullptr, "where the merged vertex lies along the edge"}}, impl_of<CollapseEdge>()},
-        {"join-faces", "Join faces", "E−1, F−1", "j", "join the faces of {e}", {{"e", K::Edge}}, impl_of<JoinFaces>()},
+         {{"e", K::Edge}, {"t", K::None, 0.5, true, nullptr, "where the merged vertex lies along the edge"}}, impl_of<CollapseEdge>(), Locate::EdgeSidesAndEnds},
+        {"join-faces", "Join faces", "E−1, F−1", "j", "join the faces of {e}", {{"e", K::Edge}}, impl_of<JoinFaces>(), Locate::EdgeSides},
         {"split-face", "Split face", "E+1, F+1", "d", "split {f} by {a}–{b}",
          {{"f", K::Face}, {"a", K::Vertex, 0, false, "vertices-of-face", "first corner of the new edge"},
-          {"b", K::Vertex, 0, false, "vertices-of-face", "second corner of the new edge"}}, impl_of<SplitFace>()},
-        {"poke-face", "Poke face", "V+1, E+n, F+n−1", "k", "poke {f}", {{"f", K::Face}}, impl_of<PokeFace>()},
+          {"b", K::Vertex, 0, false, "vertices-of-face", "second corner of the new edge"}}, impl_of<SplitFace>(), Locate::FaceSides},
+        {"poke-face", "Poke face", "V+1, E+n, F+n−1", "k", "poke {f}", {{"f", K::Face}}, impl_of<PokeFace>(), Locate::FaceSides},
         {"split-vertex", "Split vertex", "V+1, E+3, F+2", "v", "split {v} between {a} and {b}",
          {{"v", K::Vertex}, {"a", K::Vertex, 0, false, "vertices-around-vertex", "neighbour where the moved edges begin"},
           {"b", K::Vertex, 0, false, "vertices-around-vertex", "neighbour where they end"},
-          {"t", K::None, 0.5, true, nullptr, "where the new vertex lies, from v towards the edges it takes"}}, impl_of<SplitVertex>()},
+          {"t", K::None, 0.5, true, nullptr, "where the new vertex lies, from v towards the edges it takes"}}, impl_of<SplitVertex>(), Locate::VertexStar},
         {"set-vertex-edge", "Store another edge for a vertex", "V, E, F unchanged", "", "store {e} for {v}",
-         {{"v", K::Vertex}, {"e", K::Edge, 0, false, "edges-around-vertex", "the edge to store"}}, impl_of<SetVertexEdge>()},
+         {{"v", K::Vertex}, {"e", K::Edge, 0, false, "edges-around-vertex", "the edge to store"}}, impl_of<SetVertexEdge>(), Locate::VertexStar},
         {"set-face-edge", "Store another edge for a face", "V, E, F unchanged", "", "store {e} for {f}",
-         {{"f", K::Face}, {"e", K::Edge, 0, false, "edges-of-face", "the edge to store"}}, impl_of<SetFaceEdge>()},
+         {{"f", K::Face}, {"e", K::Edge, 0, false, "edges-of-face", "the edge to store"}}, impl_of<SetFaceEdge>(), Locate::FaceSides},
     };
     return all;
 }

@@ -58,9 +58,9 @@ test('a student splits e3 with the pointer, steps through the assignments, undoe
   // The new vertex is the midpoint of v2 = (1, 1, 0)... read from the page's own v2 and v3.
   const [v2, v3, v6] = await page.evaluate(() => [1, 2, 5].map((v) => Array.from(window.wingspline.model.positions.slice(3 * v, 3 * v + 3))));
   for (let k = 0; k < 3; k += 1) assert.ok(Math.abs(v6[k] - (v2[k] + v3[k]) / 2) <= 1e-12 * (1 + Math.abs(v2[k]) + Math.abs(v3[k])));
-  // The cost argument of lecture 000 as numbers: what each representation rewrote (counted
-  // by hand in tests/native: the winged edge 18, independent faces 9, vertex and face tables 6).
-  const costs = await page.$$eval('#edit-costs tbody tr', (rows) => Object.fromEntries(rows.map((r) => [r.dataset.representation, Number(r.children[1].textContent)])));
+  // The cost argument of lecture 000 as numbers: what each representation wrote (counted
+  // by hand in tests/wasm/mesh/edit.test.mjs: the winged edge 18, independent faces 9, vertex and face tables 6).
+  const costs = await page.$$eval('#edit-costs tbody tr', (rows) => Object.fromEntries(rows.map((r) => [r.dataset.representation, Number(r.querySelector('[data-cost=writes]').textContent)])));
   assert.deepEqual([costs['winged-edge'], costs['independent-faces'], costs['vertex-face-tables']], [18, 9, 6]);
   // Euler's formula after the edit: 6 - 8 + 3 = 1.
   assert.match(await page.textContent('#edit-euler'), /before the last edit 5 − 7 \+ 3 = 1; after it 6 − 8 \+ 3 = 1/);
@@ -78,11 +78,18 @@ test('a student splits e3 with the pointer, steps through the assignments, undoe
   await page.click('#edit-next');
   await page.waitForFunction(() => document.querySelector('#edit-step')?.textContent.startsWith('1 of'));
   assert.equal(await page.$$eval('#edit-steps li.is-current', (li) => li.length), 1);
-  // The first assignment of the split: the new vertex v6 stores its edge e8 (the edge
-  // column of the vertex table, row v6): that one cell is marked, and the step list says so.
-  const marked = await page.$$eval('#we-vertex-table td.is-read, #we-edge-table td.is-read, #we-face-table td.is-read',
+  // The first entries the split writes: the new vertex v6's x, y, z (the midpoint of v2 =
+  // (1, 0) and v3 = (1, 2): x = 1), then v6 stores its edge e8 (the edge column of the vertex
+  // table, row v6): one cell is marked at a time, and the step list says which.
+  const marked = () => page.$$eval('#we-vertex-table td.is-read, #we-edge-table td.is-read, #we-face-table td.is-read',
     (cells) => cells.map((c) => [c.closest('table').id, c.parentElement.children[0].textContent.trim(), [...c.parentElement.children].indexOf(c)]));
-  assert.deepEqual(marked, [['we-vertex-table', 'v6', 4]], 'one cell is being written');
+  assert.deepEqual(await marked(), [['we-vertex-table', 'v6', 1]], 'one cell is being written');
+  assert.match(await page.textContent('#edit-steps li.is-current'), /vertex table, v6 · x: — → 1$/);
+  for (let k = 2; k <= 4; k += 1) {
+    await page.click('#edit-next');
+    await page.waitForFunction((want) => document.querySelector('#edit-step')?.textContent.startsWith(`${want} of`), k);
+  }
+  assert.deepEqual(await marked(), [['we-vertex-table', 'v6', 4]], 'one cell is being written');
   assert.match(await page.textContent('#edit-steps li.is-current'), /vertex table, v6 · edge: — → e8/);
   // ... and the algorithm's first line is the one marked (the core sends its lines).
   assert.equal(await page.$eval('#edit-phases li.is-current', (li) => Number(li.dataset.line)), 0);
@@ -263,8 +270,12 @@ test('split vertex, from the registry: pick v3, choose two neighbours, split it 
   assert.ok(total >= 24, `three new edge rows alone are 24 assignments: ${total}`);
   await page.click('#edit-restart');
   await page.waitForFunction(() => document.querySelector('#edit-step')?.textContent.startsWith('0 of'));
-  await page.click('#edit-next');
-  await page.waitForFunction(() => document.querySelector('#edit-step')?.textContent.startsWith('1 of'));
+  // v6's three coordinates first, then its edge.
+  for (let k = 1; k <= 4; k += 1) {
+    await page.click('#edit-next');
+    await page.waitForFunction((want) => document.querySelector('#edit-step')?.textContent.startsWith(`${want} of`), k);
+  }
+  assert.match(await page.textContent('#edit-steps li:nth-child(1)'), /vertex table, v6 · x: — → /);
   assert.match(await page.textContent('#edit-steps li.is-current'), /vertex table, v6 · edge: — → e8/);
   // Undo takes it back.
   await page.focus('body');

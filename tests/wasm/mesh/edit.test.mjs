@@ -256,23 +256,90 @@ test('the benchmark hook flips what the public API flips (docs/benchmarks.md mes
   }
 });
 
-test('apply(op, {rewritten: true}): the entries each representation rewrote for a split of e3 (counted by hand)', () => withLecture((mesh) => {
+test('apply(op, {costs: true}): the entries each representation wrote for a split of e3 (counted by hand)', () => withLecture((mesh) => {
   const plain = api.buildMesh(api.lectureExample());
   try {
-    const c = mesh.apply({ op: 'split-edge', e: 2, t: 0.5 }, { rewritten: true });
+    const c = mesh.apply({ op: 'split-edge', e: 2, t: 0.5 }, { costs: true });
     // Winged edge: the 15 assignments and v6's three coordinates. Independent faces: F1's
     // last two corners (6 numbers) and F2's new corner (3). Vertex and face tables: v6's
     // xyz (3), F1's list from its third entry (2) and F2's new entry (1).
-    assert.equal(c.rewritten['winged-edge'], 18);
-    assert.equal(c.rewritten['independent-faces'], 9);
-    assert.equal(c.rewritten['vertex-face-tables'], 6);
-    assert.deepEqual(Object.keys(c.rewritten).sort(), ['adjacency-lists', 'edge-list', 'independent-faces', 'partial-adjacency-lists', 'vertex-face-tables', 'winged-edge']);
+    assert.equal(c.costs['winged-edge'].writes, 18);
+    assert.equal(c.costs['independent-faces'].writes, 9);
+    assert.equal(c.costs['vertex-face-tables'].writes, 6);
+    assert.deepEqual(Object.keys(c.costs).sort(), ['adjacency-lists', 'edge-list', 'independent-faces', 'partial-adjacency-lists', 'vertex-face-tables', 'winged-edge']);
     // Without the option the record has no count (it would cost O(mesh) per replayed edit).
-    assert.equal(plain.apply({ op: 'split-edge', e: 2, t: 0.5 }).rewritten, undefined);
+    assert.equal(plain.apply({ op: 'split-edge', e: 2, t: 0.5 }).costs, undefined);
   } finally {
     plain.dispose();
   }
 }));
+
+test('apply(flip e3, {costs: true}): the reads each representation makes to find the faces around e3, counted by hand on the slide', () => withLecture((mesh) => {
+  // e3 = v2 -> v3, L = F1, R = F2; F1 = (v1 v2 v3), F2 = (v2 v4 v3), F3 = (v2 v5 v4). A flip
+  // first finds the faces on both sides of e3, then the sides of each (edit_costs.h).
+  const c = mesh.apply({ op: 'flip-edge', e: 2 }, { costs: true });
+  // Winged edge: e3's L and R (2); each face: its edge (1), then per side the edge's L, to
+  // know which way it runs, and the next wing (2 x 3) = 7; 2 + 7 + 7.
+  assert.equal(c.costs['winged-edge'].reads, 16);
+  // Vertex and face tables: the face table has no way back from an edge, so all F = 3 faces
+  // are scanned: the 4 offsets, and per face its first corner and the next ones until the
+  // pair v2 v3 appears (F1: v1 v2 v3, 3; F2: v2 v4 v3 and the wrap v3 -> v2, 3 reads; F3 is
+  // read whole, 3): 4 + 9 = 13. Then the sides of F1 and F2: 2 offsets + 3 corners each: 10.
+  assert.equal(c.costs['vertex-face-tables'].reads, 23);
+  // Independent faces: the same scan, comparing coordinates until one differs (v2 = (1,0),
+  // v3 = (1,2)): a corner at v1, v4 or v5 costs 1 read against each end (2), v2 3, v3 2 + 3 = 5.
+  // F1: 2 + 3 + 5, F2: 3 + 2 + 5, F3: 3 + 2 + 2; with the 4 offsets: 31. Sides of F1 and F2:
+  // 2 offsets + 3 corners x 3 coordinates each: 22.
+  assert.equal(c.costs['independent-faces'].reads, 53);
+  // Adjacency lists, partial adjacency lists, Foley's edge list: e3's two faces are stored
+  // with it (2), each face's side list is 2 offsets + 3 entries (10).
+  for (const rep of ['adjacency-lists', 'partial-adjacency-lists', 'edge-list']) assert.equal(c.costs[rep].reads, 12, rep);
+  // The writes of the winged edge are the assignments (flip: no entry written twice, no
+  // coordinate): the entries that differ between the slide's tables and the flipped ones
+  // (tests/helpers/lecture-slide.mjs FLIP_E3, by hand): v3's edge, F1's edge, and in e1..e5
+  // 3 + 2 + 6 + 2 + 3 fields = 18.
+  assert.equal(c.costs['winged-edge'].writes, 18);
+  // The face table: F1 (v1 v2 v3) becomes (v1 v2 v4) and F2's three corners are listed anew.
+  assert.equal(c.costs['vertex-face-tables'].writes, 4);
+}));
+
+test('apply(collapse e6, {costs: true}): the winged edge\'s writes are its assignments, an entry written twice counted twice, plus the coordinates that moved', () => withLecture((mesh) => {
+  const c = mesh.apply({ op: 'collapse-edge', e: 5, t: 0.5 }, { costs: true });
+  const assignments = c.steps.filter((s) => s.field !== 'firstCorner');
+  const written = new Set(assignments.map((s) => `${s.table}:${s.row}:${s.field}`));
+  assert.ok(written.size < assignments.length, 'collapse e6 writes one entry twice (e2\'s E:R)');
+  // v2 moves from (1, 0) to the middle of e6, (1.5, -0.5): x and y change, z stays 0.
+  assert.deepEqual(c.positions.map((p) => [p.vertex, p.after]), [[1, [1.5, -0.5, 0]]]);
+  assert.equal(c.costs['winged-edge'].writes, assignments.length + 2);
+}));
+
+test('editCostGrowth: the same flip on grids of 1k to 1M faces; the winged edge flat, the face table\'s search 4F + O(1), the smallest size equal to a real counted flip', () => {
+  const g = api.editCostGrowth('flip-edge', [22, 70, 224, 708]);
+  assert.deepEqual(g.sizes.map((s) => s.faces), [968, 9800, 100352, 1002528]);
+  const at = (rep, kind) => g.costs.map((c) => c[rep][kind]);
+  // The winged edge reads the records around the edge whatever the size: 2 + 7 + 7, as on the slide.
+  assert.deepEqual(at('winged-edge', 'reads'), [16, 16, 16, 16]);
+  assert.equal(new Set(at('winged-edge', 'writes')).size, 1);
+  // The face table's scan: F + 1 offsets and a triangle's 3 corners each (the wrap to the first
+  // corner is not read again), less at most one per face that has the edge (2 faces), then
+  // the two faces' sides (2 x 5): between 4F + 9 and 4F + 11.
+  g.sizes.forEach(({ faces }, k) => {
+    const r = at('vertex-face-tables', 'reads')[k];
+    assert.ok(r >= 4 * faces + 9 && r <= 4 * faces + 11, `F = ${faces}: ${r}`);
+  });
+  // The smallest size is the flip itself on a real grid: the middle vertex's edge to its right.
+  const n = 22;
+  withMesh(api.generateMesh('grid', { nx: n, ny: n }), (mesh) => {
+    const v = (n / 2) * (n + 1) + n / 2;
+    const edges = mesh.wingedEdgeArrays().edges; // 8 per edge: S, E, ...
+    const e = Array.from(mesh.edgesAroundVertex(v)).find((x) => edges[8 * x] + edges[8 * x + 1] === 2 * v + 1);
+    assert.notEqual(e, undefined);
+    const c = mesh.apply({ op: 'flip-edge', e }, { costs: true });
+    for (const rep of Object.keys(c.costs)) assert.deepEqual(c.costs[rep], g.costs[0][rep], rep);
+  });
+  assert.throws(() => api.editCostGrowth('split-face', [22]), { code: 'adjacent-corners' });
+  assert.throws(() => api.editCostGrowth('flip-edge', [21]), { code: 'invalid-argument' });
+});
 
 test('collapseEdge on a polygon mesh leaves a vertex of valence 2 between two quads, as joinFaces does', () => {
   //   v4 (-1,1)      v5 (1,1)      F1 = (v1 v2 v3), F2 = (v3 v2 v5 v4), F3 = (v3 v4 v6 v1). v3 has

@@ -166,10 +166,15 @@ function readChange(r, descriptor) {
     phases: Array.from(r.phases ?? []),
     rows: r.rows,
     positions,
-    ...(r.rewritten ? { rewritten: { ...r.rewritten } } : {}),
+    ...(r.costs ? { costs: costsOf(r.costs) } : {}),
     before: { ...r.before },
     after: { ...r.after },
   };
+}
+
+// {[representation]: {reads, writes}} as plain numbers (edit_costs.h).
+function costsOf(c) {
+  return Object.fromEntries(Object.entries(c).map(([rep, { reads, writes }]) => [rep, { reads, writes }]));
 }
 
 // A live mesh's handle, read through the class's private field (subdivision below, and the
@@ -445,12 +450,13 @@ export class Mesh {
   // [{field, before, after}]}] (per changed row), positions: [{vertex, before, after,
   // step}], before, after: {topology, geometry}}. New elements take the next numbers;
   // removed ones stay as gaps (gaps()) until compact().
-  // With {rewritten: true} the record also says how many stored entries each
-  // representation rewrote ({[representation]: entries}; the others are compared whole,
-  // O(mesh), so ask it for one edit, not for a replayed list).
-  apply(operation, { rewritten = false } = {}) {
+  // With {costs: true} the record also says what the edit cost each representation,
+  // costs: {[representation]: {reads, writes}} (edit_costs.h: the entries read to find what
+  // to change; the entries written, the winged edge's one per line of the playback). The
+  // others are compared whole, O(mesh): ask it for one edit, not for a replayed list.
+  apply(operation, { costs = false } = {}) {
     const [edit, values] = this.#operationValues(operation);
-    const r = unwrap(this.#raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), false, Boolean(rewritten)));
+    const r = unwrap(this.#raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), false, Boolean(costs)));
     this.#setVersion(r.after);
     return readChange(r, this.#edits);
   }
@@ -648,6 +654,19 @@ export function createMeshApi(raw) {
     // optional, default, choices, label}]}], tables, fields, stepStride, positionStride}:
     // what mesh.check(op) and mesh.apply(op) accept, one entry per operation.
     meshOperations,
+    // What operation `name` costs each representation on grids of n x n quads (F = 2 n²),
+    // one per n in `sizes` (even, 2..4000): {sizes: [{n, faces}], costs: [{[representation]:
+    // {reads, writes}}]}, measured by the core on small grids and exact at every size
+    // (edit_costs.h, edit_cost_growth). Refusals as check gives them (a triangle grid has
+    // no face to split: 'adjacent-corners').
+    editCostGrowth(name, sizes) {
+      if (!Array.isArray(sizes) || !sizes.every((n) => Number.isInteger(n) && n >= 2 && n <= 4000 && n % 2 === 0)) {
+        fail('invalid-argument', 'sizes must be even whole numbers of quads across, 2 to 4000');
+      }
+      editNamed(meshOperations, name);
+      const r = unwrap(raw.meshEditCostGrowth(String(name), Float64Array.from(sizes)));
+      return { sizes: r.sizes.map((s) => ({ n: s.n, faces: s.faces })), costs: r.costs.map(costsOf) };
+    },
     // Text -> {positions, faces}. Errors: 'parse-error', 'truncated-file',
     // 'index-out-of-range', 'coordinate-out-of-range', 'face-too-large', 'too-large' (more
     // vertices or faces than meshLimits; checkCounts: false lifts that) with error.line

@@ -32,6 +32,15 @@ struct OperationArgument {
 
 struct OperationImpl; // the check, the change (recorded or not) and the wording: euler_ops.cpp
 
+// What an operation must find before it changes anything (edit_costs.h counts what each
+// representation reads to find it): the queries of queries.h it asks of its first element.
+enum class Locate {
+    EdgeSides,        // faces-of-edge e, then edges-of-face of each face found
+    EdgeSidesAndEnds, // as EdgeSides, plus edges-around-vertex of both ends of e
+    FaceSides,        // edges-of-face f
+    VertexStar,       // edges-around-vertex v
+};
+
 struct OperationEntry {
     const char* name;     // "split-edge", ...
     const char* title;    // "Split edge"
@@ -42,6 +51,7 @@ struct OperationEntry {
     const char* describe;
     std::vector<OperationArgument> arguments; // the first names the element it starts from
     const OperationImpl* impl;
+    Locate locate;
 };
 
 // Every operation, in the order the edit panel shows them.

@@ -13,10 +13,11 @@ const LABEL = { vertex: vLabel, edge: eLabel, face: fLabel };
 
 /**
  * @typedef {{name: string, kind: string|null, optional: boolean, default: number, choices: string|null, label: string}} OperationArgument
- * @typedef {{name: string, title: string, counts: string, shortcut: string, describe: string, arguments: OperationArgument[]}} OperationEntry
+ * @typedef {{name: string, title: string, counts: string, shortcut: string, describe: string, finds?: string, arguments: OperationArgument[]}} OperationEntry
  * @typedef {{op: string, label: string, needs: string, key: string, counts: string,
  *   choices: OperationArgument[], numbers: OperationArgument[],
  *   what: (operation: Record<string, any>) => string,
+ *   finds: (operation: Record<string, any>) => string,
  *   make: (index: number, options: Record<string, number>) => Record<string, any>}} EditOp
  */
 
@@ -38,6 +39,9 @@ export function editOps(meshOperations) {
       choices: rest.filter((a) => a.kind && a.choices),
       numbers: rest.filter((a) => !a.kind),
       what: (operation) => describeOperation(o, operation),
+      // What the edit must find before it writes (the registry's `finds`: "the faces on both
+      // sides of e3 and their sides"), which the cost table's words name.
+      finds: (operation) => describeOperation({ ...o, describe: o.finds ?? '' }, operation),
       make: (index, options) => ({ op: o.name, [first.name]: index, ...Object.fromEntries(rest.map((a) => [a.name, options[a.name]])) }),
     };
   });

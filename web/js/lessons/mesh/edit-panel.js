@@ -4,12 +4,13 @@
 // not, from mesh.check), the last edit played back one pointer assignment at a time, the
 // counts and Euler's formula, and how many stored entries every representation rewrote.
 // Edits go into state.ops (edit-ops.js withEdit), so undo, links and reload keep them.
-import { h } from '../../app/dom.js';
+import { h, revealInBoxes } from '../../app/dom.js';
 import { createPlayer } from '../../app/player.js';
 import { editOps, withEdit } from './edit-ops.js';
 import { visibleSteps, stepText } from './edit-playback.js';
 import { vLabel, eLabel, fLabel } from './labels.js';
 import { exists, whyNot, goneNote, keptCorner } from './live-elements.js';
+import { createGrowthPlot } from './growth.js';
 
 const LABEL = { vertex: vLabel, edge: eLabel, face: fLabel };
 const REPRESENTATION_NAMES = {
@@ -20,6 +21,14 @@ const REPRESENTATION_NAMES = {
   'edge-list': 'Edge list',
   'winged-edge': 'Winged edge',
 };
+
+// The grids the cost of an edit is shown on: n x n quads, F = 2 n² triangles, about a
+// thousand, ten thousand, a hundred thousand and a million faces (n even: the core's
+// edit_cost_growth measures the same neighbourhood at every size).
+const COST_GRIDS = [22, 70, 224, 708];
+const COST_FACES = COST_GRIDS.map((n) => 2 * n * n);
+const count = (x) => x.toLocaleString('en');
+const listed = (names) => (names.length < 2 ? names.join('') : `${names.slice(0, -1).join(', ')} and ${names[names.length - 1]}`);
 
 // selection: the view's {hover, pick}; pick({kind, index}) makes an element the picked one.
 export function createEditPanel(ctx, selection, { pick }) {
@@ -72,9 +81,35 @@ export function createEditPanel(ctx, selection, { pick }) {
 
   const euler = h('p', { class: 'edit-euler', id: 'edit-euler', 'aria-live': 'polite' });
   const costs = h('table', { class: 'data-table edit-costs', id: 'edit-costs' });
+  const costNote = h('p', { class: 'edit-cost-note', id: 'edit-cost-note' });
+  const growth = createGrowthPlot(ctx, { id: 'edit-growth', faces: COST_FACES, yLabel: 'entries read + written',
+    caption: 'The same edit on grids of growing size: entries read + written by each representation (the core\'s counting reader)',
+    names: (rep) => REPRESENTATION_NAMES[rep] ?? rep });
+  const growthNote = h('p', { class: 'hint', id: 'edit-growth-note' });
+  // The series of one operation kind, once per panel (the core measures small grids and
+  // gives every size exactly: edit_costs.h); a refusal (no face of a triangle grid can be
+  // split) is kept as its message.
+  const growthByOp = new Map();
+  const growthOf = (op) => {
+    if (!growthByOp.has(op)) {
+      try {
+        const g = ctx.api.editCostGrowth(op, COST_GRIDS);
+        const series = {};
+        g.costs.forEach((c) => { for (const [rep, { reads, writes }] of Object.entries(c)) (series[rep] ??= []).push(reads + writes); });
+        growthByOp.set(op, { sizes: g.sizes, series, reads: g.costs.map((c) => Object.fromEntries(Object.entries(c).map(([rep, x]) => [rep, x.reads]))) });
+      } catch (err) {
+        growthByOp.set(op, { refused: /** @type {Error} */ (err).message });
+      }
+    }
+    return growthByOp.get(op);
+  };
   const phaseList = h('ol', { class: 'pseudocode edit-phases', id: 'edit-phases', 'aria-label': 'The algorithm of the last edit' });
   const stepList = h('ol', { class: 'pseudocode edit-steps', id: 'edit-steps', 'aria-label': 'Pointer assignments of the last edit' });
   const stepLabel = h('span', { class: 'walk-step', id: 'edit-step' });
+  // The assignment the player is at, in one line under its buttons: the player and this line
+  // sit at the top of the side column (panels.js), above the walk, which folds away while
+  // an edit plays, so the drawing, this line and the rewritten cell are on one screen.
+  const currentLine = h('p', { class: 'edit-current', id: 'edit-current', 'aria-live': 'polite' });
   const lastTitle = h('h3', { id: 'edit-last' }, 'Last edit');
 
   const player = createPlayer({
@@ -93,6 +128,16 @@ export function createEditPanel(ctx, selection, { pick }) {
   const playButton = tool('▶ Play', () => player.toggle(), 'Play the last edit assignment by assignment', 'edit-play');
   player.onChange(() => { playButton.textContent = player.playing ? '⏸ Pause' : '▶ Play'; playButton.setAttribute('aria-pressed', String(player.playing)); });
 
+  const controls = h('div', { class: 'walk-controls', role: 'group', 'aria-label': 'Edit player' },
+    tool('|◀ Before', () => player.restart(), 'Before the edit: no assignment made yet', 'edit-restart'),
+    tool('◀ Back', () => player.prev(), 'Previous assignment', 'edit-back'),
+    playButton,
+    tool('Step ▶', () => player.next(), 'Next assignment', 'edit-next'),
+    tool('After ▶|', () => player.end(), 'After the edit: every assignment made', 'edit-end'),
+    stepLabel);
+  const now = h('section', { class: 'edit-now', id: 'edit-now', 'aria-label': 'Playing the last edit', hidden: true },
+    h('h2', { class: 'edit-now-title', id: 'edit-now-title' }), controls, currentLine);
+
   const root = h('section', { class: 'walk-panel edit-panel', id: 'edit-panel', 'aria-labelledby': 'edit-title' },
     h('h2', { id: 'edit-title' }, 'Edit the mesh'),
     h('div', { class: 'walk-choice' }, h('label', {}, 'Pick ', kindSelect), number, picked),
@@ -101,16 +146,12 @@ export function createEditPanel(ctx, selection, { pick }) {
     reasons,
     euler,
     lastTitle,
-    h('div', { class: 'walk-controls', role: 'group', 'aria-label': 'Edit player' },
-      tool('|◀ Before', () => player.restart(), 'Before the edit: no assignment made yet', 'edit-restart'),
-      tool('◀ Back', () => player.prev(), 'Previous assignment', 'edit-back'),
-      playButton,
-      tool('Step ▶', () => player.next(), 'Next assignment', 'edit-next'),
-      tool('After ▶|', () => player.end(), 'After the edit: every assignment made', 'edit-end'),
-      stepLabel),
     phaseList,
     stepList,
-    costs);
+    costs,
+    costNote,
+    growth.root,
+    growthNote);
 
   // The operation of the state that pressing `op` makes now, or null when nothing fits.
   function operationFor(op) {
@@ -209,24 +250,65 @@ export function createEditPanel(ctx, selection, { pick }) {
     lastTitle.textContent = record ? `Last edit: ${EDIT_OP[record.op]?.what(model.lastEdit) ?? record.op} — ${steps.length} assignments`
       : model.lastEdit?.op === 'compact' ? 'Last edit: compact (every table renumbered without its gaps)' : 'Last edit: none yet';
     stepLabel.textContent = record ? `${shown} of ${steps.length}` : '';
-    for (const b of root.querySelectorAll('.walk-controls button')) b.disabled = !record;
+    now.hidden = !record;
+    now.firstElementChild.textContent = lastTitle.textContent;
+    currentLine.textContent = !record ? '' : shown === 0 ? 'Before the edit: no assignment made yet.'
+      : `${shown === steps.length ? 'Last assignment' : `Assignment ${shown}`}: ${stepText(steps[shown - 1])}${record.phases?.[steps[shown - 1].phase] ? ` (${record.phases[steps[shown - 1].phase]})` : ''}`;
+    for (const b of controls.querySelectorAll('button')) b.disabled = !record;
     // The algorithm's lines (the core's), the one that made the current assignment marked.
     const phase = shown > 0 ? steps[shown - 1].phase : -1;
     phaseList.replaceChildren(...(record?.phases ?? []).map((line, i) => h('li', { 'data-line': i, class: i === phase ? 'is-current' : '', 'aria-current': i === phase ? 'step' : null }, line)));
     stepList.replaceChildren(...steps.map((s, i) => h('li', { 'data-step': i, class: i < shown ? (i === shown - 1 ? 'is-current' : 'is-done') : '' }, stepText(s))));
     phaseList.hidden = !phaseList.children.length;
     stepList.hidden = !steps.length;
-    stepList.querySelector('.is-current')?.scrollIntoView?.({ block: 'nearest' });
+    // The current line within the list's own box only (the column scrolls to the table's
+    // rewritten cell, tabs.js; the page never scrolls).
+    const currentItem = stepList.querySelector('.is-current');
+    if (currentItem && !stepList.hidden) {
+      const r = currentItem.getBoundingClientRect();
+      const b = stepList.getBoundingClientRect();
+      if (r.top < b.top || r.bottom > b.bottom) stepList.scrollTop += r.top - b.top - (b.height - r.height) / 2;
+    }
+    refreshCosts(model, record);
+  }
+
+  // What the last edit cost each representation, in the lesson's words, and the same edit's
+  // cost against mesh size: the winged edge's flat, a table without adjacency searching.
+  function refreshCosts(model, record) {
     const cost = model.editCost;
-    if (!cost) { costs.replaceChildren(); return; }
+    costNote.hidden = growth.root.hidden = growthNote.hidden = !cost;
+    if (!cost || !record) { costs.replaceChildren(); return; }
     costs.replaceChildren(
-      h('caption', {}, 'Stored entries rewritten by the last edit'),
-      h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'representation'), h('th', { scope: 'col' }, 'entries'))),
-      h('tbody', {}, Object.entries(cost).map(([key, n]) => h('tr', { 'data-representation': key }, h('th', { scope: 'row' }, REPRESENTATION_NAMES[key] ?? key), h('td', {}, String(n))))));
+      h('caption', {}, 'What the last edit cost each representation: entries of its tables read to find what to change, and entries written'),
+      h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'representation'), h('th', { scope: 'col' }, 'read'), h('th', { scope: 'col' }, 'written'), h('th', { scope: 'col' }, 'read + written'))),
+      h('tbody', {}, Object.entries(cost).map(([key, c]) => h('tr', { 'data-representation': key },
+        h('th', { scope: 'row' }, REPRESENTATION_NAMES[key] ?? key), h('td', { 'data-cost': 'reads' }, count(c.reads)),
+        h('td', { 'data-cost': 'writes' }, count(c.writes)), h('td', {}, count(c.reads + c.writes))))));
+    const entry = EDIT_OP[record.op];
+    const finds = entry?.finds(model.lastEdit ?? {}) || 'what it changes';
+    const we = cost['winged-edge'];
+    const words = [`The winged edge wrote ${we.writes} entries (one per line of the playback above: ${visibleSteps(record).length} lines) and read ${we.reads} to find ${finds}: only the records around them.`];
+    const g = growthOf(record.op);
+    const last = COST_FACES.length - 1;
+    const searching = g.refused ? [] : Object.keys(cost).filter((rep) => g.reads[last][rep] > g.reads[0][rep]);
+    if (searching.length) {
+      const names = searching.map((rep) => `${REPRESENTATION_NAMES[rep].toLowerCase()} (${count(cost[rep].reads)} read, ${count(cost[rep].writes)} written)`);
+      words.push(`The ${listed(names)} had to search the whole mesh, all ${count(model.F)} faces, to find ${finds}: they store no way from one element to its neighbours.`,
+        `On a grid of ${count(COST_FACES[last])} faces the same edit reads ${listed(searching.map((rep) => `${count(g.reads[last][rep])} (${REPRESENTATION_NAMES[rep].toLowerCase()})`))}; the winged edge still reads ${count(g.reads[last]['winged-edge'])}.`);
+    } else if (!g.refused) {
+      words.push(`Every representation finds ${finds} from the element itself here, without a search: the cost does not grow with the mesh (chart below).`);
+    }
+    words.push('Written counts, for the winged edge, each assignment its algorithm made (an entry written twice is two); for the others, the entries that differ before and after.');
+    costNote.textContent = words.join(' ');
+    growth.root.hidden = Boolean(g.refused);
+    growthNote.textContent = g.refused ? `No chart against mesh size: on a grid of triangles ${g.refused}.` : `The winged edge's line is flat: its cost depends on the neighbourhood, not on F.${searching.length ? ' A searching representation\'s line climbs with F.' : ''}`;
+    if (!g.refused) growth.update(g);
   }
 
   return {
     root,
+    // The player and the current assignment (panels.js places it above the walk).
+    now,
     update(model) {
       const p = selection.pick;
       const gone = goneNote(selection, model);

@@ -8,13 +8,36 @@ import { EDGE_FIELDS, FIELD_HEADINGS, assignmentText } from '../../ui/mesh/assig
 
 export { EDGE_FIELDS };
 
-// The steps a person sees: the assignments of the three tables of lecture 000 (the face
-// table's bookkeeping field firstCorner, which no slide shows, is left out).
+// The vertex table's coordinate columns (x, y, z: cells 0..2 of a vertex's position).
+export const COORDINATES = ['x', 'y', 'z'];
+
+// The steps a person sees, one per entry the winged edge writes (the core's definition of
+// its writes, edit_costs.h playback_writes, counts the same lines): the assignments of the
+// three tables of lecture 000 in the algorithm's order (the face table's bookkeeping field
+// firstCorner, which no slide shows, is left out; an entry written twice is two lines), and
+// where the record sets a position, its coordinates: all three of a new vertex (it had
+// none: before is null), the ones a move changed.
 export function visibleSteps(record) {
-  return (record?.steps ?? []).filter((s) => Object.hasOwn(FIELD_HEADINGS, s.field));
+  const raw = record?.steps ?? [];
+  const added = new Set(record?.added?.vertices ?? []);
+  const byStep = new Map();
+  for (const p of record?.positions ?? []) {
+    const at = Math.min(p.step, raw.length);
+    const fresh = added.has(p.vertex);
+    const lines = COORDINATES.map((field, k) => ({ table: 'vertex', row: p.vertex, field, before: fresh ? null : p.before[k], after: p.after[k],
+      phase: (raw[at] ?? raw[at - 1])?.phase ?? -1, coordinate: true })).filter((c) => fresh || c.before !== c.after);
+    byStep.set(at, [...(byStep.get(at) ?? []), ...lines]);
+  }
+  const out = [];
+  for (let i = 0; i <= raw.length; i += 1) {
+    out.push(...(byStep.get(i) ?? []));
+    if (i < raw.length && Object.hasOwn(FIELD_HEADINGS, raw[i].field)) out.push(raw[i]);
+  }
+  return out;
 }
 
-// One line per step: "edge table, e9 · E:L: e3 → e10" (ui/mesh/assignments.js).
+// One line per step: "edge table, e9 · E:L: e3 → e10"; "vertex table, v6 · x: — → 1"
+// (ui/mesh/assignments.js).
 export const stepText = assignmentText;
 
 // The winged-edge arrays ({positions, vertexEdge, edges, faceEdge}, as wingedEdgeArrays
@@ -23,10 +46,11 @@ export const stepText = assignmentText;
 export function arraysAtStep(we, record, shown) {
   const steps = visibleSteps(record);
   if (shown >= steps.length) return we;
-  const out = { ...we, edges: Int32Array.from(we.edges), vertexEdge: Int32Array.from(we.vertexEdge), faceEdge: Int32Array.from(we.faceEdge) };
+  const out = { ...we, positions: Float64Array.from(we.positions), edges: Int32Array.from(we.edges), vertexEdge: Int32Array.from(we.vertexEdge), faceEdge: Int32Array.from(we.faceEdge) };
   for (let i = steps.length - 1; i >= shown; i -= 1) {
     const s = steps[i];
-    if (s.table === 'edge') out.edges[8 * s.row + EDGE_FIELDS.indexOf(s.field)] = s.before;
+    if (s.coordinate) { if (s.before !== null) out.positions[3 * s.row + COORDINATES.indexOf(s.field)] = s.before; }
+    else if (s.table === 'edge') out.edges[8 * s.row + EDGE_FIELDS.indexOf(s.field)] = s.before;
     else if (s.table === 'vertex') out.vertexEdge[s.row] = s.before;
     else out.faceEdge[s.row] = s.before;
   }

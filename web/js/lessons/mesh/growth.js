@@ -85,14 +85,15 @@ function drawGrowth(canvas, { sizes, series }, { colors, names, yLabel }) {
 }
 
 // The plot, its legend and its numbers as a table (the one windowed table every tab uses).
-// update(data) draws new series.
-export function createGrowthPlot(ctx, { id, caption, yLabel, names }) {
+// update(data) draws new series; `faces`: the mesh sizes the series are given at (the
+// query and storage grids by default).
+export function createGrowthPlot(ctx, { id, caption, yLabel, names, faces = GROWTH_SIZES.map((n) => 2 * n * n) }) {
   const canvas = h('canvas', { id: `${id}-plot`, class: 'growth-canvas', role: 'img', 'aria-label': caption });
   const legend = h('ul', { class: 'growth-legend', id: `${id}-legend` });
   let data = null;
   let rows = [];
   const table = createVirtualTable({ id: `${id}-table`, className: 'data-table growth-table', caption: `${yLabel} against the number of faces F`,
-    head: [['representation', ...GROWTH_SIZES.map((n) => `F = ${(2 * n * n).toLocaleString('en')}`)]],
+    head: [['representation', ...faces.map((f) => `F = ${f.toLocaleString('en')}`)]],
     rowLabel: (i) => names(rows[i][0]), rowAttributes: (i) => ({ 'data-representation': rows[i][0] }),
     row: (i) => rows[i][1].map((x) => x.toLocaleString('en')) });
   const details = h('details', { class: 'growth-numbers' }, h('summary', {}, 'The numbers'), table.root);

@@ -223,7 +223,7 @@ function compute(view, state, ctx) {
     lastEdit: lastEditOf(state.ops),
     editStep,
     editCount: state.ops.filter((o) => o.op !== 'move-vertex').length,
-    editCost: record?.rewritten ?? null,
+    editCost: record?.costs ?? null,
     gaps,
     gapLists: derived.gaps,
     vertexGap,

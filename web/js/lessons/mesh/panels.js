@@ -12,6 +12,7 @@ import { createRepresentationTabs } from './tabs.js';
 import { createEditPanel } from './edit-panel.js';
 import { createTurnControls, MAX_TILT } from '../../ui/turn-controls.js';
 import { exists, whyNot } from './live-elements.js';
+import { visibleSteps } from './edit-playback.js';
 
 const BIG_TABLES = 100000; // faces: from this size a new mesh's tables fill a task after its first frame
 
@@ -79,7 +80,10 @@ export function setupPanels(ctx, selection) {
   // screens; web/css/mesh.css), so the pseudocode and the highlighted row are on screen together.
   walk.placeUnderNarration(tabs.walkRow); // the row the walk reads, under its narration (phones)
   const rest = h('div', { class: 'panels-rest' }, edit.root, tabs.root);
-  ctx.panels.replaceChildren(report, walk.root, rest);
+  // The edit player sits above the walk: while an edit plays the walk folds to its title
+  // (web/css/mesh.css), so the player, its current assignment and the table's rewritten cell
+  // share the column with the drawing beside it.
+  ctx.panels.replaceChildren(report, edit.now, walk.root, rest);
   if (typeof ResizeObserver !== 'undefined') new ResizeObserver(() => tabs.revealAgain()).observe(rest);
 
   // ------------------------------------------------------------ canvas hover, click, rotate
@@ -176,6 +180,7 @@ export function setupPanels(ctx, selection) {
       shownSource = model.source;
       walk.update(model, s);
       edit.update(model);
+      ctx.panels.toggleAttribute('data-edit-playing', Boolean(model.lastOperation) && model.editStep < visibleSteps(model.lastOperation).length);
       // The tables of a newly chosen big mesh fill in a task of their own, after the frame
       // that shows it (no task over 50 ms when a million faces arrive).
       if (newMesh && model.F > BIG_TABLES) {

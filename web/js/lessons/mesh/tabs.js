@@ -11,7 +11,7 @@ import { createStoredEdgeControl } from './stored-edge.js';
 import { findDescriptor } from '../../core/tables.js';
 import { VERTEX_EDGE_COLUMN, FACE_EDGE_COLUMN } from '../../ui/mesh/walk.js';
 import { num, sub, NOTATION, headOf, rowCells, describedTable, createWingedTables } from '../../ui/mesh/tables.js';
-import { visibleSteps, rowsNotYetWritten, EDGE_FIELDS } from './edit-playback.js';
+import { visibleSteps, rowsNotYetWritten, EDGE_FIELDS, COORDINATES } from './edit-playback.js';
 import { queryTarget, whyNot } from './live-elements.js';
 
 const F = (i) => sub('F', i);
@@ -231,19 +231,24 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       const gapList = model.gapLists?.[`${kind === 'vertex' ? 'vertices' : kind === 'edge' ? 'edges' : 'faces'}`];
       if (gapList?.length) rows['is-gap'] = Array.from(gapList);
       tables[name].mark({ rows, read, compared });
+      // A table with nothing of the walk's or the player's marked forgets what it revealed, so
+      // a step back to a row it showed before reveals that row again.
+      if (!rows['is-highlighted'].length) delete revealed[name];
       if (reveal && selection.pick?.kind === kind) tables[name].reveal(selection.pick.index);
-      else if (frame && tab === 'winged' && rows['is-highlighted'].length) {
+      else if ((frame || inEdit) && tab === 'winged' && rows['is-highlighted'].length) {
         // The walk's (or the edit player's) row is scrolled into view when it moves, not on
         // every mark (a hover, a re-render): a person who scrolled the table keeps the place.
         const key = `${model.topology}:${model.version}:${model.walkKind}:${model.walkElement}:${model.stepIndex}:${model.editStep}:${tab}`;
         if (revealed[name] !== key) {
           revealed[name] = key;
-          const row = tables[name].reveal(frame.row);
-          // The walk's row is also brought into the side column's view (never the page's),
-          // so it is on screen at every step (on a projector too). Not the edit player's:
-          // its buttons sit below the tables and would move away from the pointer.
+          const row = tables[name].reveal(inEdit ? rows['is-highlighted'][0] : frame.row);
+          // The walk's row (or the edit player's) is also brought into the side column's view
+          // (never the page's), so it is on screen at every step (on a projector too); the edit
+          // player's buttons sit above the column (panels.js) and do not move with it. The
+          // edit's cell itself, not only its row, so a wide table shows its column too.
           const table = row?.closest('table') ?? null;
-          if (!inEdit) revealInBoxes(row, { context: table, inset: table?.tHead?.offsetHeight ?? 0 });
+          const cell = inEdit ? row?.querySelector('.is-read') ?? row : row;
+          revealInBoxes(cell, { context: table, inset: table?.tHead?.offsetHeight ?? 0 });
         }
       }
     }
@@ -262,7 +267,8 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
     const current = steps[model.editStep - 1];
     if (current && current.table === table && model.editStep < steps.length) {
       rows['is-highlighted'].push(current.row);
-      read.push([current.row, table === 'edge' ? 1 + EDGE_FIELDS.indexOf(current.field) : table === 'vertex' ? VERTEX_EDGE_COLUMN : FACE_EDGE_COLUMN]);
+      read.push([current.row, table === 'edge' ? 1 + EDGE_FIELDS.indexOf(current.field)
+        : current.coordinate ? 1 + COORDINATES.indexOf(current.field) : table === 'vertex' ? VERTEX_EDGE_COLUMN : FACE_EDGE_COLUMN]);
     }
   }
 

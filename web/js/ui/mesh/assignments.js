@@ -1,7 +1,8 @@
 // @ts-check
 // One pointer assignment of the winged-edge tables in the slides' words, for every playback
 // of assignments (an edit's change record in the mesh lesson, a subdivision step's
-// reconnection in the subdivision lesson): "edge table, e9 · E:L: e3 → e10". No DOM.
+// reconnection in the subdivision lesson): "edge table, e9 · E:L: e3 → e10", and an edit's
+// coordinates: "vertex table, v6 · x: — → 1". No DOM.
 // Offers: EDGE_FIELDS, FIELD_HEADINGS, assignmentText(step), columnOfField(table, field).
 // Needs: steps as the core gives them ({table, row, field, before, after}).
 import { vLabel, eLabel, fLabel } from '../element-labels.js';
@@ -15,8 +16,12 @@ const REFERS = { start: vLabel, end: vLabel, left: fLabel, right: fLabel, startL
 const ROW_LABEL = { vertex: vLabel, edge: eLabel, face: fLabel };
 const none = (label) => (x) => (x < 0 ? '—' : label(x));
 
-// One line per step: "edge table, e9 · E:L: e3 → e10" (— for none).
+const coordinate = (x) => (x === null ? '—' : String(Number(x.toFixed(6))));
+
+// One line per step: "edge table, e9 · E:L: e3 → e10" (— for none); a coordinate set by an
+// edit ({coordinate: true, field: 'x' | 'y' | 'z'}): "vertex table, v6 · x: — → 1".
 export function assignmentText(s) {
+  if (s.coordinate) return `vertex table, ${vLabel(s.row)} · ${s.field}: ${coordinate(s.before)} → ${coordinate(s.after)}`;
   const label = none(REFERS[s.field] ?? String);
   return `${s.table} table, ${ROW_LABEL[s.table](s.row)} · ${FIELD_HEADINGS[s.field]}: ${label(s.before)} → ${label(s.after)}`;
 }

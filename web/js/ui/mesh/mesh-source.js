@@ -45,7 +45,7 @@ function applyOne(mesh, operation, previous, newest) {
     mesh.compact();
     return null;
   }
-  return mesh.apply(operation, { rewritten: newest });
+  return mesh.apply(operation, { costs: newest });
 }
 
 export function createMeshSource() {

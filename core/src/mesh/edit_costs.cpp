@@ -1,0 +1,165 @@
+// What an edit costs each representation: reads through the queries' counting reader,
+// writes from the change record (winged edge) or by comparing tables (the others).
+#include "wingspline/mesh/edit_costs.h"
+
+#include "wingspline/error.h"
+#include "wingspline/mesh/generators.h"
+#include "wingspline/mesh/queries.h"
+#include "wingspline/mesh/tables.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+namespace wingspline::mesh {
+
+const char* locate_description(Locate locate) {
+    switch (locate) {
+    case Locate::EdgeSides: return "the faces on both sides of {e} and their sides";
+    case Locate::EdgeSidesAndEnds: return "the faces on both sides of {e}, their sides and the edges at both its ends";
+    case Locate::FaceSides: return "the sides of {f}";
+    case Locate::VertexStar: return "the edges around {v}";
+    }
+    return "";
+}
+
+std::array<int64_t, kRepresentationCount> edit_reads(const Operation& op, const WingedEdgeMesh& winged, const Representations& reps) {
+    std::array<int64_t, kRepresentationCount> reads{};
+    // Each representation answers with its own reader; the answers agree (test_representations),
+    // so the winged edge's answer says which elements to ask about next.
+    const auto ask = [&](QueryKind kind, int32_t element) {
+        const auto answers = answer_query(kind, element, reps, winged);
+        for (int r = 0; r < kRepresentationCount; ++r) reads[r] += static_cast<int64_t>(answers[r].entries_read);
+        return answers[static_cast<int>(Representation::WingedEdge)].answer;
+    };
+    const auto element = static_cast<int32_t>(op.args[0]);
+    switch (op.entry->locate) {
+    case Locate::EdgeSides:
+    case Locate::EdgeSidesAndEnds:
+        for (const int32_t f : ask(QueryKind::FacesOfEdge, element)) ask(QueryKind::EdgesOfFace, f);
+        if (op.entry->locate == Locate::EdgeSidesAndEnds) {
+            ask(QueryKind::EdgesAroundVertex, winged.edge(element).start);
+            ask(QueryKind::EdgesAroundVertex, winged.edge(element).end);
+        }
+        break;
+    case Locate::FaceSides: ask(QueryKind::EdgesOfFace, element); break;
+    case Locate::VertexStar: ask(QueryKind::EdgesAroundVertex, element); break;
+    }
+    return reads;
+}
+
+int64_t playback_writes(const ChangeRecord& change) {
+    int64_t writes = 0;
+    for (const AssignmentStep& s : change.steps) writes += s.field != "firstCorner";
+    const auto added = [&](int32_t v) {
+        return std::any_of(change.added_vertices.begin(), change.added_vertices.end(), [v](Vertex a) { return a.idx == v; });
+    };
+    for (const PositionChange& p : change.positions)
+        for (int k = 0; k < 3; ++k) writes += added(p.vertex) || p.before[k] != p.after[k];
+    return writes;
+}
+
+EditCosts edit_costs(const std::array<int64_t, kRepresentationCount>& reads, const ChangeRecord& change,
+                     const Representations& before_reps, const WingedEdgeMesh& after, const Representations& after_reps) {
+    const auto differing = rewritten_entries(change, before_reps, after, after_reps);
+    EditCosts out{};
+    for (int r = 0; r < kRepresentationCount; ++r) out[r] = {reads[r], differing[r]};
+    out[static_cast<int>(Representation::WingedEdge)].writes = playback_writes(change);
+    return out;
+}
+
+EditCosts measure_edit(WingedEdgeMesh& winged, const Operation& op) {
+    require_ok(winged.check(op));
+    RepresentationCache cache;
+    const auto reads = edit_reads(op, winged, cache.of(winged));
+    const std::unique_ptr<Representations> before = cache.take(winged);
+    const ChangeRecord change = winged.apply(op);
+    return edit_costs(reads, change, *before, winged, cache.of(winged));
+}
+
+// ---------------------------------------------------------------- cost against mesh size
+
+namespace {
+
+std::vector<int32_t> choices_of(const WingedEdgeMesh& w, const char* query, int32_t element) {
+    const std::string q = query;
+    if (q == "vertices-of-face") return w.vertices_of_face(element);
+    if (q == "vertices-around-vertex") return w.vertices_around_vertex(element);
+    if (q == "edges-around-vertex") return w.edges_around_vertex(element);
+    if (q == "edges-of-face") return w.edges_of_face(element);
+    throw Error("unknown-query", "no choices query '" + q + "'");
+}
+
+void require_even_grid(int32_t n) {
+    if (n < 2 || n % 2 != 0 || n > 4000)
+        throw Error("invalid-argument", "a cost grid has an even number of quads across, 2 to 4000, not " + std::to_string(n));
+}
+
+} // namespace
+
+Operation grid_operation(const OperationEntry& entry, const WingedEdgeMesh& grid, int32_t n) {
+    require_even_grid(n);
+    Operation op{&entry, {kNone, kNone, kNone, kNone}};
+    std::size_t chosen = 0;
+    for (std::size_t k = 0; k < entry.arguments.size(); ++k) {
+        const OperationArgument& a = entry.arguments[k];
+        if (k == 0) {
+            // The middle vertex (row n/2, column n/2), the edge from it to its right-hand
+            // neighbour, the face F/2 + n: the same neighbourhood at every even n.
+            const int32_t middle = (n / 2) * (n + 1) + n / 2;
+            int32_t right = kNone;
+            for (const int32_t e : grid.edges_around_vertex(middle))
+                if (grid.edge(e).start + grid.edge(e).end == 2 * middle + 1) right = e;
+            op.args[0] = a.kind == ElementKind::Vertex ? middle : a.kind == ElementKind::Edge ? right : grid.face_count() / 2 + n;
+        } else if (a.kind == ElementKind::None) {
+            op.args[k] = 0.5;
+        } else {
+            const std::vector<int32_t> list = choices_of(grid, a.choices, static_cast<int32_t>(op.args[0]));
+            op.args[k] = list.empty() ? kNone : list[std::min<std::size_t>(2 * chosen, list.size() - 1)];
+            ++chosen;
+        }
+    }
+    return op;
+}
+
+EditCosts measure_on_grid(const OperationEntry& entry, int32_t n) {
+    require_even_grid(n);
+    WingedEdgeMesh w = WingedEdgeMesh::build(grid(n, n));
+    return measure_edit(w, grid_operation(entry, w, n));
+}
+
+EditCostGrowth edit_cost_growth(const OperationEntry& entry, const std::vector<int32_t>& sizes) {
+    constexpr std::array<int32_t, 3> kFit{8, 16, 24};
+    constexpr int32_t kCheck = 32;
+    std::array<EditCosts, 3> measured;
+    for (std::size_t i = 0; i < kFit.size(); ++i) measured[i] = measure_on_grid(entry, kFit[i]);
+    // Through (8, y0), (16, y1), (24, y2): Newton's divided differences in steps of h = 8,
+    // exact in integers: y(n) = y0 + d1 (n - 8)/h + d2 (n - 8)(n - 16)/(2 h^2).
+    const auto at = [&](int64_t y0, int64_t y1, int64_t y2, int64_t n) {
+        const int64_t h = 8, d1 = y1 - y0, d2 = y2 - 2 * y1 + y0;
+        const int64_t twice = 2 * h * h * y0 + 2 * h * d1 * (n - 8) + d2 * (n - 8) * (n - 16);
+        if (twice % (2 * h * h) != 0) throw Error("internal-error", "the measured costs are not a whole-number quadratic in n");
+        return twice / (2 * h * h);
+    };
+    const auto evaluate = [&](int32_t n) {
+        EditCosts c{};
+        for (int r = 0; r < kRepresentationCount; ++r) {
+            c[r].reads = at(measured[0][r].reads, measured[1][r].reads, measured[2][r].reads, n);
+            c[r].writes = at(measured[0][r].writes, measured[1][r].writes, measured[2][r].writes, n);
+        }
+        return c;
+    };
+    if (!(evaluate(kCheck) == measure_on_grid(entry, kCheck)))
+        throw Error("internal-error", std::string(entry.name) + ": the counts on a 32 x 32 grid differ from the quadratic through 8, 16 and 24");
+    EditCostGrowth out;
+    for (const int32_t n : sizes) {
+        require_even_grid(n);
+        out.n.push_back(n);
+        out.faces.push_back(2 * static_cast<int64_t>(n) * n);
+        out.costs.push_back(evaluate(n));
+    }
+    return out;
+}
+
+} // namespace wingspline::mesh
