@@ -162,3 +162,43 @@ test('a version-2 state (before the reconnection\'s playback) opens with the fin
   assert.match(await page.textContent('#reconnect-step'), /^218 of 218$/);
   assert.deepEqual(page.problems, []);
 });
+
+// On a projector and a laptop the player, the assignment it names and the cell it wrote are
+// on screen and uncovered at every step (the side column scrolls to the cell below the
+// player, which stays at its top). Steps 1-40 (the halves, the first faces' new faces and
+// inner edges) and the last 12 (sides, vertex table) of the tetrahedron's 218.
+for (const [width, height, present] of [[1920, 1080, true], [1280, 720, false], [1280, 720, true]]) {
+  test(`the reconnection's cell, line and player stay in view at ${width} x ${height}${present ? ' presenting' : ''}`, async () => {
+    const page = await env.openLesson(url(), { viewport: { width, height } });
+    if (present) {
+      await page.click('[data-action=present]');
+      await page.waitForFunction(() => document.documentElement.hasAttribute('data-present'));
+    }
+    await page.waitForFunction(() => window.wingspline.model?.counts.faces === 4);
+    for (let k = 0; k < 3; k += 1) await page.click('#phase-next');
+    await page.waitForFunction(() => window.wingspline.state.phase === 4);
+    await page.click('#reconnect-restart');
+    const seen = () => page.evaluate(() => {
+      const look = (el) => {
+        if (!el) return null;
+        const r = el.getBoundingClientRect();
+        const top = document.elementFromPoint(r.left + r.width / 2, r.top + r.height / 2);
+        return { inside: r.width > 0 && r.left >= 0 && r.top >= 0 && r.right <= innerWidth && r.bottom <= innerHeight, uncovered: Boolean(top && (top === el || el.contains(top))) };
+      };
+      return { cell: look(document.querySelector('#tables-panel td.is-read')), line: look(document.getElementById('reconnect-current')), next: look(document.getElementById('reconnect-next')) };
+    });
+    const check = async (k) => {
+      await page.waitForFunction((n) => window.wingspline.state.reconnect === n, k);
+      await settle(page);
+      const s = await seen();
+      for (const what of ['cell', 'line', 'next']) assert.deepEqual(s[what], { inside: true, uncovered: true }, `step ${k}: the ${what} ${JSON.stringify(s)}`);
+    };
+    for (let k = 1; k <= 40; k += 1) { await page.click('#reconnect-next'); await check(k); }
+    await page.click('#reconnect-end');
+    await page.waitForFunction(() => window.wingspline.state.reconnect === 218);
+    await page.focus('#reconnect-back');
+    for (let k = 217; k >= 206; k -= 1) { await page.keyboard.press('Enter'); await check(k); }
+    await screenshot(page, `subdivision-reconnection-${width}${present ? '-present' : ''}`);
+    assert.deepEqual(page.problems, []);
+  });
+}

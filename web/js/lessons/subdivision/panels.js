@@ -3,7 +3,7 @@
 // phase player, the mask of the chosen new point (its old vertices and weights as the core
 // gave them), the counts, the winged-edge tables of what is shown and the curve beside it.
 // Everything shown comes from the model; the person's choices go back through ctx.commit.
-import { h } from '../../app/dom.js';
+import { h, revealInBoxes } from '../../app/dom.js';
 import { findDescriptor, columnHeading } from '../../core/tables.js';
 import { createVirtualTable } from '../../ui/virtual-table.js';
 import { createCurvePlot } from './curve-plot.js';
@@ -212,7 +212,7 @@ export function setupPanels(ctx, view) {
   const tablesPanel = h('section', { class: 'tables-panel', id: 'tables-panel', 'aria-labelledby': 'tables-title' },
     h('h2', { id: 'tables-title' }, 'Winged-edge tables of the mesh shown'), ...Object.values(tables).map((t) => t.root));
 
-  ctx.panels.replaceChildren(stepPanel, curvePanel, tablesPanel);
+  ctx.panels.replaceChildren(reconnection.playerBox, stepPanel, curvePanel, tablesPanel);
 
   function syncControls() {
     const s = state();
@@ -307,7 +307,12 @@ export function setupPanels(ctx, view) {
       for (const [name, t] of Object.entries(tables)) {
         const here = written?.name === name;
         t.mark(here ? { rows: { 'is-highlighted': [written.row] }, read: [[written.row, written.column]] } : {});
-        if (here) t.reveal(written.row);
+        if (!here) continue;
+        // The cell in view at every step: its table scrolled to the row, the side column (never
+        // the page) to the cell, below the sticky player, with the table's head when it fits.
+        const cellEl = t.reveal(written.row)?.children[written.column] ?? null;
+        // (the margin keeps the cell and the head clear of the player at the column's top).
+        revealInBoxes(cellEl, { context: t.table.tHead, margin: 8 + reconnection.coveredTop() });
       }
       explorerLink.update(model, s).catch((err) => ctx.message.error(`The link to the curve explorer could not be made: ${err.message}`, 'link-error'));
     },

@@ -39,16 +39,24 @@ export function createReconnectionPanel(ctx, { onStep }) {
     tool('Step ▶', () => player.next(), 'Next assignment', 'reconnect-next'),
     tool('After ▶|', () => player.end(), 'After the reconnection: every entry written', 'reconnect-end'),
     stepLabel);
-  const root = h('section', { class: 'reconnect-panel', id: 'reconnect-panel', 'aria-labelledby': 'reconnect-title', hidden: true },
-    h('h3', { id: 'reconnect-title' }, 'Reconnection, pointer by pointer'), note, controls, now, lines);
+  // The player and the current assignment: the lesson puts them at the top of the side
+  // column, where they stay (sticky, subdivision.css) while the column scrolls to the cell
+  // written, on a projector too; the lines and the note sit in the step panel.
+  const playerBox = h('section', { class: 'reconnect-player', id: 'reconnect-player', 'aria-labelledby': 'reconnect-title', hidden: true },
+    h('h2', { id: 'reconnect-title' }, 'Reconnection, pointer by pointer'), controls, now);
+  const root = h('div', { class: 'reconnect-panel', id: 'reconnect-panel', hidden: true }, note, lines);
 
   return {
     root,
+    playerBox,
     player,
+    // Pixels of the column's top the sticky player covers (for revealInBoxes).
+    coveredTop: () => (playerBox.hidden ? 0 : playerBox.getBoundingClientRect().height),
     update(model) {
       const r = model.reconnection;
       root.hidden = !r;
-      if (!r) { player.pause?.(); return; }
+      playerBox.hidden = !r || r.tooBig !== undefined;
+      if (!r) { if (player.playing) player.pause(); return; }
       if (r.tooBig !== undefined) {
         note.textContent = `The playback is offered for levels of up to 500 faces; this level has ${r.tooBig.toLocaleString('en')}. The tables show the next level as it is built.`;
         controls.hidden = true; now.textContent = ''; lines.replaceChildren();
