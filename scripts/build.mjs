@@ -1,6 +1,9 @@
 // Builds what serving the site needs, incrementally (CMake decides what is stale):
-//   build/wasm    the core + bindings -> wingspline-core.{js,wasm} (em++)
-//   dist/         the static site: web/ plus the wasm module under dist/wasm/
+//   build/wasm    the core + bindings -> wingspline-{mesh,curves,exercises}.{js,wasm}, a
+//                 module per lesson group and one for the exercise checkers (em++)
+//   dist/         the static site: web/ with its scripts and style sheets minified (esbuild:
+//                 whitespace, comments and local names; every file keeps its path and its
+//                 imports), plus the wasm modules under dist/wasm/
 // `npm start` and `npm test` run build(). The native build (build/native: the core, the
 // Catch2 tests and the native benchmark, g++) is buildNative(), run by what needs it: the
 // native test layer (scripts/lib/test-layers.mjs) and `npm run bench`; the sanitizer and
@@ -14,6 +17,7 @@ import { withBuildLock } from './lib/build-lock.mjs';
 import { writeServiceWorkerManifest } from './lib/site-manifest.mjs';
 import { lessonPage } from './lib/lesson-page.mjs';
 import { exerciseIndex } from './lib/exercise-index.mjs';
+import { transformSync } from 'esbuild';
 
 const jobs = ['-j', '2'];
 
@@ -36,16 +40,30 @@ export async function buildNative({ sanitize = false } = {}) {
     ...(sanitize ? ['-DWINGSPLINE_SANITIZE=ON'] : [])]));
 }
 
-// The shipped module (wingspline-core: what the site serves); with bench, also the bench
-// module (wingspline-core-bench: the same bindings and flags plus core/bench), which
-// `npm run bench` and the wasm tests of the benchmark's hooks load.
+// The shipped modules (wingspline-mesh, wingspline-curves, wingspline-exercises: what the site
+// serves, one per lesson group and one for the exercise checkers); with bench, also the bench module (wingspline-core-bench: every binding with
+// the same flags plus core/bench), which `npm run bench` and the wasm tests of the
+// benchmark's hooks load.
+export const SHIPPED_MODULES = ['wingspline-mesh', 'wingspline-curves', 'wingspline-exercises'];
 export async function buildWasm({ bench = false } = {}) {
   await cmakeBuild('wasm', (buildDir) => must('emcmake',
     ['cmake', '-S', repoRoot, '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release']),
-  ['wingspline-core', ...(bench ? ['wingspline-core-bench'] : [])]);
+  [...SHIPPED_MODULES, ...(bench ? ['wingspline-core-bench'] : [])]);
 }
 
-// Copies src into dst where size or mtime differ; removes what src no longer has.
+// What the site serves of a script or a style sheet: the same code without its comments,
+// whitespace and long local names (esbuild's minifier; names are kept for stack traces and
+// error names, and nothing is bundled, so every module keeps its path and its imports).
+// The lesson pages' budget (300 KB gzip each, docs/architecture.md "Module size") counts
+// what is served; the readable source stays in web/.
+function minified(name, text) {
+  const loader = name.endsWith('.css') ? 'css' : 'js';
+  return transformSync(text, { loader, minify: true, keepNames: true, legalComments: 'none', target: 'es2022' }).code;
+}
+const MINIFIED = /\.(m?js|css)$/;
+
+// Copies src into dst where size or mtime differ; removes what src no longer has. Scripts and
+// style sheets are written minified, with the source's mtime, and rewritten when it changes.
 // `keep`: names in dst written by other steps; `skip`: names in src that are not copied.
 function mirror(src, dst, keep = new Set(), skip = new Set()) {
   fs.mkdirSync(dst, { recursive: true });
@@ -59,6 +77,12 @@ function mirror(src, dst, keep = new Set(), skip = new Set()) {
     const st = fs.statSync(from);
     if (st.isDirectory()) {
       mirror(from, to);
+    } else if (MINIFIED.test(name)) {
+      const old = fs.existsSync(to) ? fs.statSync(to) : null;
+      if (!old || old.mtimeMs !== st.mtimeMs) {
+        fs.writeFileSync(to, minified(name, fs.readFileSync(from, 'utf8')));
+        fs.utimesSync(to, st.atime, st.mtime);
+      }
     } else {
       const old = fs.existsSync(to) ? fs.statSync(to) : null;
       if (!old || old.size !== st.size || old.mtimeMs < st.mtimeMs) {
@@ -89,7 +113,10 @@ async function assembleSiteNow() {
   }
   const wasmOut = path.join(dist, 'wasm');
   fs.mkdirSync(wasmOut, { recursive: true });
-  for (const file of ['wingspline-core.js', 'wingspline-core.wasm']) {
+  const shipped = SHIPPED_MODULES.flatMap((m) => [`${m}.js`, `${m}.wasm`]);
+  // A module no longer shipped (a renamed one) leaves dist/ too.
+  for (const name of fs.readdirSync(wasmOut)) if (!shipped.includes(name)) fs.rmSync(path.join(wasmOut, name), { force: true });
+  for (const file of shipped) {
     const from = path.join(repoRoot, 'build', 'wasm', file);
     const to = path.join(wasmOut, file);
     const old = fs.existsSync(to) ? fs.statSync(to) : null;

@@ -207,6 +207,7 @@
  * @typedef {{
  *   id: string,
  *   title: string,
+ *   core: ('mesh' | 'curves')[],
  *   stateVersion: number,
  *   exercise?: ExerciseSupport,
  *   schema: Object<string, any>,
