@@ -1,9 +1,10 @@
 // Builds what serving the site needs, incrementally (CMake decides what is stale):
-//   build/wasm    the core + bindings -> wingspline-{mesh,curves,exercises}.{js,wasm}, a
-//                 module per lesson group and one for the exercise checkers (em++)
+//   build/wasm    the core + bindings -> wingspline-{mesh,subdivision,curves,exercises}.{js,wasm},
+//                 a module per lesson group and one for the exercise checkers (em++)
 //   dist/         the static site: web/ with its scripts and style sheets minified (esbuild:
 //                 whitespace, comments and local names; every file keeps its path and its
-//                 imports), plus the wasm modules under dist/wasm/
+//                 imports), each lesson page's scripts bundled under dist/js/bundle/, and the
+//                 wasm modules under dist/wasm/
 // `npm start` and `npm test` run build(). The native build (build/native: the core, the
 // Catch2 tests and the native benchmark, g++) is buildNative(), run by what needs it: the
 // native test layer (scripts/lib/test-layers.mjs) and `npm run bench`; the sanitizer and
@@ -17,7 +18,7 @@ import { withBuildLock } from './lib/build-lock.mjs';
 import { writeServiceWorkerManifest } from './lib/site-manifest.mjs';
 import { lessonPage } from './lib/lesson-page.mjs';
 import { exerciseIndex } from './lib/exercise-index.mjs';
-import { transformSync } from 'esbuild';
+import { transformSync, build as esbuild } from 'esbuild';
 
 const jobs = ['-j', '2'];
 
@@ -40,11 +41,11 @@ export async function buildNative({ sanitize = false } = {}) {
     ...(sanitize ? ['-DWINGSPLINE_SANITIZE=ON'] : [])]));
 }
 
-// The shipped modules (wingspline-mesh, wingspline-curves, wingspline-exercises: what the site
+// The shipped modules (wingspline-mesh, -subdivision, -curves, -exercises: what the site
 // serves, one per lesson group and one for the exercise checkers); with bench, also the bench module (wingspline-core-bench: every binding with
 // the same flags plus core/bench), which `npm run bench` and the wasm tests of the
 // benchmark's hooks load.
-export const SHIPPED_MODULES = ['wingspline-mesh', 'wingspline-curves', 'wingspline-exercises'];
+export const SHIPPED_MODULES = ['wingspline-mesh', 'wingspline-subdivision', 'wingspline-curves', 'wingspline-exercises'];
 export async function buildWasm({ bench = false } = {}) {
   await cmakeBuild('wasm', (buildDir) => must('emcmake',
     ['cmake', '-S', repoRoot, '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release']),
@@ -96,7 +97,28 @@ function mirror(src, dst, keep = new Set(), skip = new Set()) {
 // title from the registry, so the pages cannot drift apart.
 async function lessonPages() {
   const { lessons } = await import(pathToFileURL(path.join(repoRoot, 'web', 'js', 'lessons', 'registry.js')).href);
-  return lessons.map((lesson) => ({ file: lesson.page, html: lessonPage(lesson) }));
+  return lessons.map((lesson) => ({ id: lesson.id, file: lesson.page, html: lessonPage({ ...lesson, script: `js/${BUNDLE_DIR}/${lesson.id}.js` }) }));
+}
+
+// Each lesson page runs one bundle of its module graph (dist/js/bundle/<id>.js), minified,
+// with the code the pages share in shared chunks and what a page imports on demand (the core's
+// parts, the exercise player and maker) in chunks of its own, fetched when needed: one file
+// compresses better than eighty, and a page's bytes are the budget's (docs/architecture.md,
+// "Module size"). The folder is two levels under dist/, as web/js/<folder>/ is, so the paths
+// the code builds from import.meta.url (the wasm modules, the service worker, the import
+// worker) point where they do from the unbundled files. The unbundled minified files stay in
+// dist/js/ for the package, the import worker and the other pages.
+const BUNDLE_DIR = 'bundle';
+async function bundleLessonPages(dist, pages) {
+  const outdir = path.join(dist, 'js', BUNDLE_DIR);
+  fs.rmSync(outdir, { recursive: true, force: true });
+  await esbuild({
+    entryPoints: Object.fromEntries(pages.map((p) => [p.id, path.join(repoRoot, 'web', 'js', 'lessons', p.id, 'page.js')])),
+    bundle: true, splitting: true, format: 'esm', outdir, chunkNames: 'chunk-[hash]',
+    minify: true, keepNames: true, legalComments: 'none', target: 'es2022', logLevel: 'warning',
+    // The wasm glue is built into dist/wasm/, not web/; Node's modules are only reached in Node.
+    external: ['../../wasm/*', 'node:*'],
+  });
 }
 
 export function assembleSite() {
@@ -107,6 +129,7 @@ async function assembleSiteNow() {
   const dist = path.join(repoRoot, 'dist');
   const pages = await lessonPages();
   mirror(path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.js', ...pages.map((p) => p.file)]), new Set(['templates']));
+  await bundleLessonPages(dist, pages);
   for (const { file, html } of pages) {
     const target = path.join(dist, file);
     if (!fs.existsSync(target) || fs.readFileSync(target, 'utf8') !== html) fs.writeFileSync(target, html);
@@ -121,7 +144,13 @@ async function assembleSiteNow() {
     const to = path.join(wasmOut, file);
     const old = fs.existsSync(to) ? fs.statSync(to) : null;
     const st = fs.statSync(from);
-    if (!old || old.size !== st.size || old.mtimeMs < st.mtimeMs) fs.copyFileSync(from, to);
+    if (file.endsWith('.js')) {
+      // Emscripten's glue, minified as the site's scripts are (its names kept: embind reads them).
+      if (!old || old.mtimeMs !== st.mtimeMs) {
+        fs.writeFileSync(to, minified(file, fs.readFileSync(from, 'utf8')));
+        fs.utimesSync(to, st.atime, st.mtime);
+      }
+    } else if (!old || old.size !== st.size || old.mtimeMs < st.mtimeMs) fs.copyFileSync(from, to);
   }
   const index = JSON.stringify(await exerciseIndex(repoRoot), null, 1) + '\n';
   fs.mkdirSync(path.join(dist, 'exercises'), { recursive: true });

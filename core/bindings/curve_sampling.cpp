@@ -1,13 +1,14 @@
 // Curve sampling: points and derivatives of a curve, its domain, the knot vector presets and
 // the subdivision of a control polygon (Chaikin, Lane-Riesenfeld). Linked into both the
-// curves and the mesh modules (CMakeLists.txt, WINGSPLINE_BINDINGS_sampling): the
+// curves and the subdivision modules (CMakeLists.txt, WINGSPLINE_BINDINGS_sampling): the
 // subdivision lesson draws a polygon's limit B-spline beside its meshes and loads only the
-// mesh module.
+// subdivision module.
 #include "boundary.h"
 #include "curve_spec.h"
 
 #include "wingspline/curves/curve.h"
 #include "wingspline/curves/knot_vectors.h"
+#include "wingspline/curves/segment.h"
 #include "wingspline/curves/subdivision.h"
 
 #include <string>

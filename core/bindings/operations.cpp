@@ -1,6 +1,7 @@
 // The mesh operations' registry (operations.h) as data: read by the mesh lesson's edit panel
 // and by the edit exercise's checker, so this file is linked into both the mesh and the
-// exercises modules (CMakeLists.txt, WINGSPLINE_BINDINGS_operations).
+// exercises modules, and the subdivision module that carries the mesh API (CMakeLists.txt,
+// WINGSPLINE_BINDINGS_operations).
 #include "boundary.h"
 
 #include "wingspline/mesh/operations.h"

@@ -11,7 +11,7 @@ import fs from 'node:fs/promises';
 import { unwrap, integerIn } from '../../../web/js/core/errors.js';
 import { meshInternals } from '../../../web/js/core/mesh-api.js';
 import { createApi } from '../../../web/js/core/api.js';
-import { createMeshPart } from '../../../web/js/core/mesh-part.js';
+import { createSubdivisionPart } from '../../../web/js/core/mesh-part.js';
 import { createCurvesPart } from '../../../web/js/core/curves-part.js';
 import { createExercisesPart } from '../../../web/js/core/exercises-part.js';
 
@@ -23,7 +23,7 @@ export function loadBenchCore() {
   loading ??= (async () => {
     const { default: create } = await import(MODULE.href);
     const raw = await create({ wasmBinary: await fs.readFile(WASM) });
-    const api = createApi({ mesh: raw, curves: raw, exercises: raw }, { mesh: createMeshPart, curves: createCurvesPart, exercises: createExercisesPart });
+    const api = createApi({ subdivision: raw, curves: raw, exercises: raw }, { subdivision: createSubdivisionPart, curves: createCurvesPart, exercises: createExercisesPart });
     return { api, hooks: benchHooks(raw) };
   })();
   return loading;

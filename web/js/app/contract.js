@@ -207,7 +207,7 @@
  * @typedef {{
  *   id: string,
  *   title: string,
- *   core: ('mesh' | 'curves')[],
+ *   core: ('mesh' | 'subdivision' | 'curves')[],
  *   stateVersion: number,
  *   exercise?: ExerciseSupport,
  *   schema: Object<string, any>,

@@ -1,20 +1,20 @@
 // @ts-check
 // The API object over started core modules: the one place the parts of the API are put
-// together. wingspline.js starts the shipped modules it was asked for ('mesh', 'curves',
-// 'exercises') with their JS parts (mesh-part.js, curves-part.js, exercises-part.js) and
+// together. wingspline.js starts the shipped modules it was asked for ('mesh', 'subdivision',
+// 'curves', 'exercises') with their JS parts (mesh-part.js, curves-part.js, exercises-part.js) and
 // calls this; the benchmark starts the bench module (every binding plus its timing entry
 // points) and hands it as every part, so its meshes are the product's. Not part of the
 // package's exports.
 import { unwrap, WingsplineError } from './errors.js';
 
 /**
- * @param {{ mesh?: any, curves?: any, exercises?: any }} parts each started module's embind
- *   functions, by part
- * @param {{ mesh?: (raw: any) => object, curves?: (raw: any) => object, exercises?: (raw: any) => object }} makers
- *   each part's API maker (createMeshPart, createCurvesPart, createExercisesPart), for the parts given
+ * @param {Record<string, any>} parts each started module's embind functions, by part ('mesh',
+ *   'subdivision', 'curves', 'exercises')
+ * @param {Record<string, (raw: any) => object>} makers each part's API maker (mesh-part.js,
+ *   curves-part.js, exercises-part.js), for the parts given
  */
 export function createApi(parts, makers) {
-  const raws = [...new Set([parts.mesh, parts.curves, parts.exercises].filter(Boolean))];
+  const raws = [...new Set(Object.values(parts).filter(Boolean))];
   if (raws.length === 0) throw new WingsplineError('invalid-argument', 'createApi needs at least one started module');
   // Both modules are built from one source and report its version (package.json); files from
   // two builds would disagree on it.
@@ -42,8 +42,6 @@ export function createApi(parts, makers) {
     // Every error code the API can give, with what it means (the core's one list, error_codes.h,
     // compiled into each module): [{code, group, meaning}], frozen.
     errorCodes: Object.freeze(unwrap(raws[0].errorCodes()).codes.map((/** @type {any} */ c) => Object.freeze({ code: c.code, group: c.group, meaning: c.meaning }))),
-    ...(parts.mesh ? makers.mesh?.(parts.mesh) : {}),
-    ...(parts.curves ? makers.curves?.(parts.curves) : {}),
-    ...(parts.exercises ? makers.exercises?.(parts.exercises) : {}),
+    ...Object.assign({}, ...Object.keys(parts).map((part) => makers[part](parts[part]))),
   });
 }

@@ -6,12 +6,13 @@
 // names stay private to this folder. It runs in Node too (the reference above declares
 // `process` and `node:fs/promises` for the type check).
 //
-// The core ships as three modules (docs/architecture.md, "Module size"): 'mesh' (meshes,
-// tables, walks, edits, mesh and polygon subdivision), 'curves' (curves, continuity,
-// comparison, surfaces) and 'exercises' (the checkers of every exercise kind). Each is
-// fetched only when asked for: loadWingspline() gives the whole API (every module); a lesson
-// page asks for its group only, loadWingspline({ parts: ['mesh'] }), and adds 'exercises'
-// when an exercise opens.
+// The core ships as four modules (docs/architecture.md, "Module size"): 'mesh' (meshes,
+// tables, walks, edits), 'subdivision' (the same with mesh subdivision and curve sampling),
+// 'curves' (curves, continuity, comparison, surfaces) and 'exercises' (the checkers of every
+// exercise kind). Each is fetched only when asked for: loadWingspline() gives the whole API;
+// a lesson page asks for its own part, loadWingspline({ parts: ['mesh'] }), and adds
+// 'exercises' when an exercise opens. 'subdivision' includes 'mesh': asked for both, only the
+// subdivision module is fetched (one module holds the meshes).
 import { WingsplineError } from './errors.js';
 import { createApi } from './api.js';
 
@@ -27,6 +28,12 @@ const PARTS = {
     url: new URL('../../wasm/wingspline-mesh.wasm', import.meta.url),
     glue: () => import('../../wasm/wingspline-mesh.js'),
     maker: () => import('./mesh-part.js').then((m) => m.createMeshPart),
+  },
+  subdivision: {
+    file: 'wasm/wingspline-subdivision.wasm',
+    url: new URL('../../wasm/wingspline-subdivision.wasm', import.meta.url),
+    glue: () => import('../../wasm/wingspline-subdivision.js'),
+    maker: () => import('./mesh-part.js').then((m) => m.createSubdivisionPart),
   },
   curves: {
     file: 'wasm/wingspline-curves.wasm',
@@ -135,7 +142,7 @@ function partList(parts) {
   if (!Array.isArray(parts) || parts.length === 0 || !parts.every((p) => Object.hasOwn(PARTS, p))) {
     throw new WingsplineError('invalid-argument', `parts must be a non-empty list of ${CORE_PARTS.map((p) => `'${p}'`).join(', ')}, not ${JSON.stringify(parts)?.slice(0, 60)}`);
   }
-  return CORE_PARTS.filter((p) => parts.includes(p));
+  return CORE_PARTS.filter((p) => parts.includes(p) && !(p === 'mesh' && parts.includes('subdivision')));
 }
 
 // Resolves to the API object over the parts asked for (all by default); every call with the

@@ -351,7 +351,7 @@ export const subdivisionLesson = {
   id: 'subdivision',
   title: 'Subdivision',
   // The core modules the page loads (docs/architecture.md, "Module size").
-  core: ['mesh'],
+  core: ['subdivision'],
   stateVersion: 2,
   exercise: subdivisionExercise,
   // Version 2 holds the curve's polygon (it was fixed before): a version-1 link gets it.
