@@ -69,7 +69,7 @@ test('npm pack builds first (prepack) and the tarball holds the built module, th
   assert.match(packLog, /prepack/, 'npm ran the prepack script');
   assert.match(packLog, /\[wingspline\] site assembled in dist\//, 'the prepack script built the site');
   for (const file of ['package.json', 'README.md', 'LICENSE', 'dist/js/core/wingspline.js', 'dist/js/core/mesh-api.js',
-    'dist/wasm/wingspline-core.js', 'dist/wasm/wingspline-core.wasm', 'dist/index.html', 'types/wingspline.d.ts', 'scripts/wingspline.mjs']) {
+    ...['mesh', 'subdivision', 'curves', 'exercises'].flatMap((m) => [`dist/wasm/wingspline-${m}.js`, `dist/wasm/wingspline-${m}.wasm`]), 'dist/index.html', 'types/wingspline.d.ts', 'scripts/wingspline.mjs']) {
     assert.ok(packed.includes(file), `${file} is in the tarball (it holds ${packed.length} files)`);
   }
   // (scripts/wingspline.mjs is the package's command, `npx wingspline grade`; no other script ships)

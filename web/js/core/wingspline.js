@@ -48,7 +48,7 @@ const PARTS = {
     maker: () => import('./exercises-part.js').then((m) => m.createExercisesPart),
   },
 };
-export const CORE_PARTS = Object.freeze(Object.keys(PARTS));
+const CORE_PARTS = Object.freeze(Object.keys(PARTS));
 
 let loading = null;
 
