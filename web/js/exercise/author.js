@@ -162,6 +162,8 @@ export async function openAuthorDialog({ ctx, lesson, view, message }) {
   async function run(action) {
     setChildren(problem);
     setChildren(result);
+    // The link of an earlier export is hidden until this one's is written: never a stale link.
+    linkBox.hidden = true;
     let exercise;
     try {
       exercise = build();
