@@ -1,12 +1,13 @@
-// The bench module and its hooks: build/wasm/wingspline-core-bench.{js,wasm} is the shipped
-// module's bindings, compiled once with the same flags, plus the benchmark's entry points
+// The bench module and its hooks: build/wasm/wingspline-core-bench.{js,wasm} is every binding
+// of the shipped modules, compiled once with the same flags, plus the benchmark's entry points
 // (core/bench/): timing loops inside the module, the every-ring walk of mesh_ring and the
-// edit tasks. The shipped module (dist/wasm) does not contain them and nothing in the
+// edit tasks. No shipped module (dist/wasm) contains them and nothing in the
 // package or the student API reaches them (tests/wasm/module/bench-hooks.test.mjs). Built
 // by `npm run bench` and by the wasm test layer (scripts/build.mjs, buildWasm({bench: true})).
 //   import { loadBenchCore } from '../../bench/wasm/bench-core.mjs';
 //   const { api, hooks } = await loadBenchCore();
-// `api` is the full API over the bench module (meshes for the hooks are built with it).
+// `api` is the full API over the bench module, handed as every part (meshes for the hooks are
+// built with it).
 import fs from 'node:fs/promises';
 import { unwrap, integerIn } from '../../../web/js/core/errors.js';
 import { meshInternals } from '../../../web/js/core/mesh-api.js';
