@@ -1,6 +1,10 @@
 // Builds what serving the site needs, incrementally (CMake decides what is stale):
-//   build/wasm    the core + bindings -> wingspline-core.{js,wasm} (em++)
-//   dist/         the static site: web/ plus the wasm module under dist/wasm/
+//   build/wasm    the core + bindings -> wingspline-{mesh,subdivision,curves,exercises}.{js,wasm},
+//                 a module per lesson group and one for the exercise checkers (em++)
+//   dist/         the static site: web/ with its scripts and style sheets minified (esbuild:
+//                 whitespace, comments and local names; every file keeps its path and its
+//                 imports), each lesson page's scripts bundled under dist/js/bundle/, and the
+//                 wasm modules under dist/wasm/
 // `npm start` and `npm test` run build(). The native build (build/native: the core, the
 // Catch2 tests and the native benchmark, g++) is buildNative(), run by what needs it: the
 // native test layer (scripts/lib/test-layers.mjs) and `npm run bench`; the sanitizer and
@@ -15,6 +19,7 @@ import { writeServiceWorkerManifest } from './lib/site-manifest.mjs';
 import { lessonPage } from './lib/lesson-page.mjs';
 import { exerciseIndex } from './lib/exercise-index.mjs';
 import { guidePages } from './lib/guides.mjs';
+import { transformSync, build as esbuild } from 'esbuild';
 
 const jobs = ['-j', '2'];
 
@@ -37,16 +42,30 @@ export async function buildNative({ sanitize = false } = {}) {
     ...(sanitize ? ['-DWINGSPLINE_SANITIZE=ON'] : [])]));
 }
 
-// The shipped module (wingspline-core: what the site serves); with bench, also the bench
-// module (wingspline-core-bench: the same bindings and flags plus core/bench), which
-// `npm run bench` and the wasm tests of the benchmark's hooks load.
+// The shipped modules (wingspline-mesh, -subdivision, -curves, -exercises: what the site
+// serves, one per lesson group and one for the exercise checkers); with bench, also the bench module (wingspline-core-bench: every binding with
+// the same flags plus core/bench), which `npm run bench` and the wasm tests of the
+// benchmark's hooks load.
+export const SHIPPED_MODULES = ['wingspline-mesh', 'wingspline-subdivision', 'wingspline-curves', 'wingspline-exercises'];
 export async function buildWasm({ bench = false } = {}) {
   await cmakeBuild('wasm', (buildDir) => must('emcmake',
     ['cmake', '-S', repoRoot, '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release']),
-  ['wingspline-core', ...(bench ? ['wingspline-core-bench'] : [])]);
+  [...SHIPPED_MODULES, ...(bench ? ['wingspline-core-bench'] : [])]);
 }
 
-// Copies src into dst where size or mtime differ; removes what src no longer has.
+// What the site serves of a script or a style sheet: the same code without its comments,
+// whitespace and long local names (esbuild's minifier; names are kept for stack traces and
+// error names, and nothing is bundled, so every module keeps its path and its imports).
+// The lesson pages' budget (300 KB gzip each, docs/architecture.md "Module size") counts
+// what is served; the readable source stays in web/.
+function minified(name, text) {
+  const loader = name.endsWith('.css') ? 'css' : 'js';
+  return transformSync(text, { loader, minify: true, keepNames: true, legalComments: 'none', target: 'es2022' }).code;
+}
+const MINIFIED = /\.(m?js|css)$/;
+
+// Copies src into dst where size or mtime differ; removes what src no longer has. Scripts and
+// style sheets are written minified, with the source's mtime, and rewritten when it changes.
 // `keep`: names in dst written by other steps; `skip`: names in src that are not copied.
 function mirror(src, dst, keep = new Set(), skip = new Set()) {
   fs.mkdirSync(dst, { recursive: true });
@@ -60,6 +79,12 @@ function mirror(src, dst, keep = new Set(), skip = new Set()) {
     const st = fs.statSync(from);
     if (st.isDirectory()) {
       mirror(from, to);
+    } else if (MINIFIED.test(name)) {
+      const old = fs.existsSync(to) ? fs.statSync(to) : null;
+      if (!old || old.mtimeMs !== st.mtimeMs) {
+        fs.writeFileSync(to, minified(name, fs.readFileSync(from, 'utf8')));
+        fs.utimesSync(to, st.atime, st.mtime);
+      }
     } else {
       const old = fs.existsSync(to) ? fs.statSync(to) : null;
       if (!old || old.size !== st.size || old.mtimeMs < st.mtimeMs) {
@@ -73,7 +98,28 @@ function mirror(src, dst, keep = new Set(), skip = new Set()) {
 // title from the registry, so the pages cannot drift apart.
 async function lessonPages() {
   const { lessons } = await import(pathToFileURL(path.join(repoRoot, 'web', 'js', 'lessons', 'registry.js')).href);
-  return lessons.map((lesson) => ({ file: lesson.page, html: lessonPage(lesson) }));
+  return lessons.map((lesson) => ({ id: lesson.id, file: lesson.page, html: lessonPage({ ...lesson, script: `js/${BUNDLE_DIR}/${lesson.id}.js` }) }));
+}
+
+// Each lesson page runs one bundle of its module graph (dist/js/bundle/<id>.js), minified,
+// with the code the pages share in shared chunks and what a page imports on demand (the core's
+// parts, the exercise player and maker) in chunks of its own, fetched when needed: one file
+// compresses better than eighty, and a page's bytes are the budget's (docs/architecture.md,
+// "Module size"). The folder is two levels under dist/, as web/js/<folder>/ is, so the paths
+// the code builds from import.meta.url (the wasm modules, the service worker, the import
+// worker) point where they do from the unbundled files. The unbundled minified files stay in
+// dist/js/ for the package, the import worker and the other pages.
+const BUNDLE_DIR = 'bundle';
+async function bundleLessonPages(dist, pages) {
+  const outdir = path.join(dist, 'js', BUNDLE_DIR);
+  fs.rmSync(outdir, { recursive: true, force: true });
+  await esbuild({
+    entryPoints: Object.fromEntries(pages.map((p) => [p.id, path.join(repoRoot, 'web', 'js', 'lessons', p.id, 'page.js')])),
+    bundle: true, splitting: true, format: 'esm', outdir, chunkNames: 'chunk-[hash]',
+    minify: true, keepNames: true, legalComments: 'none', target: 'es2022', logLevel: 'warning',
+    // The wasm glue is built into dist/wasm/, not web/; Node's modules are only reached in Node.
+    external: ['../../wasm/*', 'node:*'],
+  });
 }
 
 export function assembleSite() {
@@ -83,9 +129,12 @@ export function assembleSite() {
 async function assembleSiteNow() {
   const dist = path.join(repoRoot, 'dist');
   const pages = await lessonPages();
-  // The guides (dist/guide/, from docs/ by scripts/lib/guides.mjs) are pages like the lessons'.
-  pages.push(...guidePages());
-  mirror(path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.js', 'guide', ...pages.map((p) => p.file)]), new Set(['templates']));
+  // The guides (dist/guide/, from docs/ by scripts/lib/guides.mjs) are pages like the lessons'
+  // (their one page module is not bundled: it is not a lesson's).
+  const guides = guidePages();
+  mirror(path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.js', 'guide', ...pages.map((p) => p.file), ...guides.map((p) => p.file)]), new Set(['templates']));
+  await bundleLessonPages(dist, pages);
+  pages.push(...guides);
   fs.mkdirSync(path.join(dist, 'guide'), { recursive: true });
   for (const name of fs.readdirSync(path.join(dist, 'guide'))) {
     if (!pages.some((p) => p.file === `guide/${name}`)) fs.rmSync(path.join(dist, 'guide', name), { recursive: true, force: true });
@@ -96,12 +145,21 @@ async function assembleSiteNow() {
   }
   const wasmOut = path.join(dist, 'wasm');
   fs.mkdirSync(wasmOut, { recursive: true });
-  for (const file of ['wingspline-core.js', 'wingspline-core.wasm']) {
+  const shipped = SHIPPED_MODULES.flatMap((m) => [`${m}.js`, `${m}.wasm`]);
+  // A module no longer shipped (a renamed one) leaves dist/ too.
+  for (const name of fs.readdirSync(wasmOut)) if (!shipped.includes(name)) fs.rmSync(path.join(wasmOut, name), { force: true });
+  for (const file of shipped) {
     const from = path.join(repoRoot, 'build', 'wasm', file);
     const to = path.join(wasmOut, file);
     const old = fs.existsSync(to) ? fs.statSync(to) : null;
     const st = fs.statSync(from);
-    if (!old || old.size !== st.size || old.mtimeMs < st.mtimeMs) fs.copyFileSync(from, to);
+    if (file.endsWith('.js')) {
+      // Emscripten's glue, minified as the site's scripts are (its names kept: embind reads them).
+      if (!old || old.mtimeMs !== st.mtimeMs) {
+        fs.writeFileSync(to, minified(file, fs.readFileSync(from, 'utf8')));
+        fs.utimesSync(to, st.atime, st.mtime);
+      }
+    } else if (!old || old.size !== st.size || old.mtimeMs < st.mtimeMs) fs.copyFileSync(from, to);
   }
   const index = JSON.stringify(await exerciseIndex(repoRoot), null, 1) + '\n';
   fs.mkdirSync(path.join(dist, 'exercises'), { recursive: true });

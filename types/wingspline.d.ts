@@ -70,8 +70,20 @@ export class WingsplineError extends Error {
   line?: number;
 }
 
-/** Loads the wasm module once (the `.wasm` next to the glue: a file read in Node, a fetch in a page). */
-export function loadWingspline(): Promise<WingsplineApi>;
+/**
+ * The core's modules, one per lesson group: 'mesh' (meshes, tables, walks, edits),
+ * 'subdivision' (the same with mesh subdivision and curve sampling), 'curves', 'exercises'
+ * (the exercise checkers).
+ */
+export type CorePart = 'mesh' | 'subdivision' | 'curves' | 'exercises';
+
+/**
+ * Loads the wasm modules once each (the `.wasm` next to the glue: a file read in Node, a
+ * fetch in a page). Without options every part is loaded and every function below is there;
+ * with `parts` only those modules are fetched and the object holds only their functions
+ * (a lesson page asks for its own part). Unknown parts: 'invalid-argument'.
+ */
+export function loadWingspline(options?: { parts?: readonly CorePart[] }): Promise<WingsplineApi>;
 
 /** The check of an operation: allowed, or the refusal it would throw. */
 export type CheckResult = { ok: true } | { ok: false; code: WingsplineErrorCode; message: string };

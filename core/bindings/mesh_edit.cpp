@@ -1,5 +1,6 @@
 // Changing a mesh: every operation of the core's registry through one binding (meshEdit), its
-// change record as flat arrays, the registry itself as data, compact() and the gaps.
+// change record as flat arrays, compact() and the gaps. The registry itself as data is
+// operations.cpp (in the mesh and the exercises modules).
 #include "boundary.h"
 #include "mesh_access.h"
 #include "mesh_entry.h"
@@ -192,50 +193,6 @@ val mesh_gaps(int32_t handle) {
     });
 }
 
-// Read once by mesh-api.js: {operations: [{name, title, counts, shortcut, describe, finds
-// (what it must find before it writes, edit_costs.h), arguments: [{name, kind (null for a number), optional, default, choices, label}]}],
-// tables, fields, stepStride, positionStride}: the registry (operations.h) as data.
-val mesh_operation_descriptors() {
-    return guarded([] {
-        val ops = val::array();
-        const auto& all = operations();
-        for (std::size_t k = 0; k < all.size(); ++k) {
-            val args = val::array();
-            for (std::size_t j = 0; j < all[k].arguments.size(); ++j) {
-                const OperationArgument& a = all[k].arguments[j];
-                val one = val::object();
-                one.set("name", std::string(a.name));
-                one.set("kind", a.kind == ElementKind::None ? val::null() : val(std::string(element_kind_name(a.kind))));
-                one.set("optional", a.optional);
-                one.set("default", a.default_value);
-                one.set("choices", a.choices == nullptr ? val::null() : val(std::string(a.choices)));
-                one.set("label", std::string(a.label));
-                args.set(j, one);
-            }
-            val op = val::object();
-            op.set("name", std::string(all[k].name));
-            op.set("title", std::string(all[k].title));
-            op.set("counts", std::string(all[k].counts));
-            op.set("shortcut", std::string(all[k].shortcut));
-            op.set("describe", std::string(all[k].describe));
-            op.set("finds", std::string(locate_description(all[k].locate)));
-            op.set("arguments", args);
-            ops.set(k, op);
-        }
-        const auto names = [](const std::vector<const char*>& v) {
-            val out = val::array();
-            for (std::size_t k = 0; k < v.size(); ++k) out.set(k, std::string(v[k]));
-            return out;
-        };
-        val r = val::object();
-        r.set("operations", ops);
-        r.set("tables", names(change_tables()));
-        r.set("fields", names(change_fields()));
-        r.set("stepStride", 6);
-        r.set("positionStride", 8);
-        return r;
-    });
-}
 
 } // namespace
 } // namespace wingspline::bindings
@@ -247,5 +204,4 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh_edit) {
     emscripten::function("meshEditCostGrowth", &mesh_edit_cost_growth);
     emscripten::function("meshCompact", &mesh_compact);
     emscripten::function("meshGaps", &mesh_gaps);
-    emscripten::function("meshOperationDescriptors", &mesh_operation_descriptors);
 }

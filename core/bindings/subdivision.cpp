@@ -5,7 +5,6 @@
 #include "boundary.h"
 #include "mesh_access.h"
 
-#include "wingspline/curves/subdivision.h"
 #include "wingspline/mesh/limits.h"
 #include "wingspline/mesh/subdivision.h"
 
@@ -87,14 +86,6 @@ val mesh_limit_positions(int32_t handle, const std::string& scheme) {
     });
 }
 
-val curve_subdivide(const val& points, int32_t dim, const std::string& scheme, bool closed, int32_t steps) {
-    return guarded([&] {
-        val r = val::object();
-        r.set("points", to_typed_array(curves::subdivide_curve(to_doubles(points), dim,
-                                                               curves::curve_subdivision_from_name(scheme), closed, steps)));
-        return r;
-    });
-}
 
 } // namespace
 } // namespace wingspline::bindings
@@ -105,5 +96,4 @@ EMSCRIPTEN_BINDINGS(wingspline_subdivision) {
     emscripten::function("meshSubdivisionSteps", &mesh_subdivision_steps);
     emscripten::function("meshLimitPositions", &mesh_limit_positions);
     emscripten::function("meshReconnectionPlayback", &mesh_reconnection_playback);
-    emscripten::function("curveSubdivide", &curve_subdivide);
 }

@@ -8,8 +8,10 @@ import { repoRoot } from './run.mjs';
 
 const escapeHtml = (text) => String(text).replace(/[<>&"']/g, (c) => ({ '<': '&lt;', '>': '&gt;', '&': '&amp;', '"': '&quot;', "'": '&#39;' })[c]);
 
-export function lessonPage({ id, title }) {
+// script: the page's entry script; the site's pages run their bundle (scripts/build.mjs), the
+// test-only fixture its unbundled page.js.
+export function lessonPage({ id, title, script = `js/lessons/${id}/page.js` }) {
   const frame = fs.readFileSync(path.join(repoRoot, 'web', 'templates', 'lesson.html'), 'utf8')
     .replace(/<!-- The frame of every lesson page\.[\s\S]*?-->\n/, '');
-  return frame.replaceAll('{{id}}', escapeHtml(id)).replaceAll('{{title}}', escapeHtml(title));
+  return frame.replaceAll('{{id}}', escapeHtml(id)).replaceAll('{{title}}', escapeHtml(title)).replaceAll('{{script}}', escapeHtml(script));
 }

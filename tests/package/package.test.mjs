@@ -69,7 +69,7 @@ test('npm pack builds first (prepack) and the tarball holds the built module, th
   assert.match(packLog, /prepack/, 'npm ran the prepack script');
   assert.match(packLog, /\[wingspline\] site assembled in dist\//, 'the prepack script built the site');
   for (const file of ['package.json', 'README.md', 'LICENSE', 'dist/js/core/wingspline.js', 'dist/js/core/mesh-api.js',
-    'dist/wasm/wingspline-core.js', 'dist/wasm/wingspline-core.wasm', 'dist/index.html', 'types/wingspline.d.ts', 'scripts/wingspline.mjs']) {
+    ...['mesh', 'subdivision', 'curves', 'exercises'].flatMap((m) => [`dist/wasm/wingspline-${m}.js`, `dist/wasm/wingspline-${m}.wasm`]), 'dist/index.html', 'types/wingspline.d.ts', 'scripts/wingspline.mjs']) {
     assert.ok(packed.includes(file), `${file} is in the tarball (it holds ${packed.length} files)`);
   }
   // (scripts/wingspline.mjs is the package's command, `npx wingspline grade`; no other script ships)
@@ -107,26 +107,32 @@ test('installed, the package says where it comes from and exports its manifest a
   assert.ok(Array.isArray(manifest.keywords) && manifest.keywords.includes('webassembly') && manifest.keywords.includes('winged-edge'));
   assert.ok(typeof manifest.author === 'string' && manifest.author.length > 0);
   assert.ok(packed.includes('CHANGELOG.md'), 'the changelog is in the tarball');
+  // The core's modules (one per lesson group, docs/architecture.md "Module size"), each
+  // exported as its wasm file: found by import and by require, and each a valid module.
+  const modules = ['wingspline-mesh', 'wingspline-subdivision', 'wingspline-curves', 'wingspline-exercises'];
   fs.writeFileSync(path.join(app, 'resolve.mjs'), [
     "import { createRequire } from 'node:module';",
     "import { fileURLToPath } from 'node:url';",
     'const require = createRequire(import.meta.url);',
+    `const modules = ${JSON.stringify(modules)};`,
     'process.stdout.write(JSON.stringify({',
     "  manifest: fileURLToPath(import.meta.resolve('wingspline/package.json')),",
-    "  wasm: fileURLToPath(import.meta.resolve('wingspline/dist/wasm/wingspline-core.wasm')),",
     "  requiredManifest: require.resolve('wingspline/package.json'),",
-    "  requiredWasm: require.resolve('wingspline/dist/wasm/wingspline-core.wasm'),",
+    "  wasm: modules.map((m) => fileURLToPath(import.meta.resolve(`wingspline/dist/wasm/${m}.wasm`))),",
+    "  requiredWasm: modules.map((m) => require.resolve(`wingspline/dist/wasm/${m}.wasm`)),",
     '}));',
   ].join('\n'));
   const found = JSON.parse(execFileSync(process.execPath, ['resolve.mjs'], { cwd: app, encoding: 'utf8' }));
   const real = (file) => fs.realpathSync(file);
   assert.equal(real(found.manifest), real(path.join(installed, 'package.json')));
   assert.equal(real(found.requiredManifest), real(path.join(installed, 'package.json')));
-  assert.equal(real(found.wasm), real(path.join(installed, 'dist', 'wasm', 'wingspline-core.wasm')));
-  assert.equal(real(found.requiredWasm), real(found.wasm));
-  const wasm = fs.readFileSync(found.wasm);
-  assert.deepEqual([...wasm.subarray(0, 4)], [0x00, 0x61, 0x73, 0x6d], 'the exported file is a wasm module (\\0asm)');
-  assert.ok(WebAssembly.validate(wasm), 'and a valid one');
+  modules.forEach((m, i) => {
+    assert.equal(real(found.wasm[i]), real(path.join(installed, 'dist', 'wasm', `${m}.wasm`)));
+    assert.equal(real(found.requiredWasm[i]), real(found.wasm[i]));
+    const wasm = fs.readFileSync(found.wasm[i]);
+    assert.deepEqual([...wasm.subarray(0, 4)], [0x00, 0x61, 0x73, 0x6d], `${m}.wasm is a wasm module (\\0asm)`);
+    assert.ok(WebAssembly.validate(wasm), `${m}.wasm is a valid one`);
+  });
 });
 
 test('installed, the declarations reach a TypeScript student through the package\'s exports: a right use type-checks, a misuse does not', () => {

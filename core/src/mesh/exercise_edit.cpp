@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 #include <set>
-#include <sstream>
+#include <cstdio>
 
 namespace wingspline::mesh {
 namespace {
@@ -56,9 +56,10 @@ std::string describe(const Operation& op) {
         else if (a.kind == ElementKind::Edge) value = edge_label(i);
         else if (a.kind == ElementKind::Face) value = face_label(i);
         else {
-            std::ostringstream s;
-            s << op.args[k];
-            value = s.str();
+            // As an ostream prints it (%g), without <sstream>'s iostream and locale code.
+            char number[32];
+            std::snprintf(number, sizeof number, "%g", op.args[k]);
+            value = number;
         }
         const std::string key = std::string("{") + a.name + "}";
         const auto at = text.find(key);

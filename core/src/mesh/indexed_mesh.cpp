@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <sstream>
+#include <cstdio>
 
 namespace wingspline::mesh {
 
@@ -35,6 +35,14 @@ bool ValidationReport::has(const std::string& code) const {
 }
 
 namespace {
+// A number as an ostream prints it by default (%g: 6 significant digits, inf, nan), without
+// <sstream>: one ostringstream pulled 58 KB of iostream and locale code into the wasm module.
+std::string number_text(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return text;
+}
+
 std::string first_error_code(const ValidationReport& r) {
     const Problem* p = r.first_error();
     return p ? p->code : "invalid-mesh";
@@ -120,18 +128,15 @@ ValidationReport validate_indexed(const IndexedMesh& mesh) {
         for (int k = 0; k < 3; ++k) {
             const double c = mesh.positions[3 * v + k];
             if (!std::isfinite(c)) {
-                std::ostringstream m;
-                m << vertex_label(v) << " has a coordinate that is not a finite number (" << "xyz"[k] << " = " << c << ")";
-                out.push_back(make("non-finite-coordinate", m.str(), {v}));
+                out.push_back(make("non-finite-coordinate", vertex_label(v) + " has a coordinate that is not a finite number (" +
+                                   "xyz"[k] + " = " + number_text(c) + ")", {v}));
                 break;
             }
             if (std::abs(c) > kMaxCoordinate) {
                 // The one coordinate bound (limits.h): the state format's, and far inside
                 // what Newell's sums of pair products can hold without overflow.
-                std::ostringstream m;
-                m << vertex_label(v) << " has a coordinate beyond the limit of " << kMaxCoordinate << " in size ("
-                  << "xyz"[k] << " = " << c << ")";
-                out.push_back(make("coordinate-out-of-range", m.str(), {v}));
+                out.push_back(make("coordinate-out-of-range", vertex_label(v) + " has a coordinate beyond the limit of " +
+                                   number_text(kMaxCoordinate) + " in size (" + "xyz"[k] + " = " + number_text(c) + ")", {v}));
                 break;
             }
         }

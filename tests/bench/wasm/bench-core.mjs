@@ -1,16 +1,20 @@
-// The bench module and its hooks: build/wasm/wingspline-core-bench.{js,wasm} is the shipped
-// module's bindings, compiled once with the same flags, plus the benchmark's entry points
+// The bench module and its hooks: build/wasm/wingspline-core-bench.{js,wasm} is every binding
+// of the shipped modules, compiled once with the same flags, plus the benchmark's entry points
 // (core/bench/): timing loops inside the module, the every-ring walk of mesh_ring and the
-// edit tasks. The shipped module (dist/wasm) does not contain them and nothing in the
+// edit tasks. No shipped module (dist/wasm) contains them and nothing in the
 // package or the student API reaches them (tests/wasm/module/bench-hooks.test.mjs). Built
 // by `npm run bench` and by the wasm test layer (scripts/build.mjs, buildWasm({bench: true})).
 //   import { loadBenchCore } from '../../bench/wasm/bench-core.mjs';
 //   const { api, hooks } = await loadBenchCore();
-// `api` is the full API over the bench module (meshes for the hooks are built with it).
+// `api` is the full API over the bench module, handed as every part (meshes for the hooks are
+// built with it).
 import fs from 'node:fs/promises';
 import { unwrap, integerIn } from '../../../web/js/core/errors.js';
 import { meshInternals } from '../../../web/js/core/mesh-api.js';
 import { createApi } from '../../../web/js/core/api.js';
+import { createSubdivisionPart } from '../../../web/js/core/mesh-part.js';
+import { createCurvesPart } from '../../../web/js/core/curves-part.js';
+import { createExercisesPart } from '../../../web/js/core/exercises-part.js';
 
 const MODULE = new URL('../../../build/wasm/wingspline-core-bench.js', import.meta.url);
 const WASM = new URL('../../../build/wasm/wingspline-core-bench.wasm', import.meta.url);
@@ -20,7 +24,7 @@ export function loadBenchCore() {
   loading ??= (async () => {
     const { default: create } = await import(MODULE.href);
     const raw = await create({ wasmBinary: await fs.readFile(WASM) });
-    const api = createApi(raw);
+    const api = createApi({ subdivision: raw, curves: raw, exercises: raw }, { subdivision: createSubdivisionPart, curves: createCurvesPart, exercises: createExercisesPart });
     return { api, hooks: benchHooks(raw) };
   })();
   return loading;

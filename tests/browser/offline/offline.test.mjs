@@ -163,7 +163,7 @@ function readManifest(root) {
 test('every lesson page is in the offline manifest, with the SHA-256 of its bytes', () => {
   const dist = path.join(repoRoot, 'dist');
   const manifest = readManifest(dist);
-  for (const file of ['index.html', 'wasm/wingspline-core.wasm', 'wasm/wingspline-core.js', 'css/site.css', ...readyLessons.map((l) => l.page)]) {
+  for (const file of ['index.html', ...['mesh', 'subdivision', 'curves', 'exercises'].flatMap((m) => [`wasm/wingspline-${m}.wasm`, `wasm/wingspline-${m}.js`]), 'js/bundle/mesh.js', 'css/site.css', ...readyLessons.map((l) => l.page)]) {
     assert.ok(Object.hasOwn(manifest.files, file), `${file} is precached`);
   }
   for (const [file, sha256] of Object.entries(manifest.files)) {

@@ -27,9 +27,10 @@ test('no HTML parsing of strings anywhere in web/', () => {
 });
 
 test('no eval or Function constructor in the site scripts or the wasm glue', () => {
-  const glue = path.join(repoRoot, 'dist', 'wasm', 'wingspline-core.js');
+  const glue = ['mesh', 'subdivision', 'curves', 'exercises'].map((m) => path.join(repoRoot, 'dist', 'wasm', `wingspline-${m}.js`));
+  const bundles = fs.readdirSync(path.join(repoRoot, 'dist', 'js', 'bundle')).map((f) => path.join(repoRoot, 'dist', 'js', 'bundle', f));
   const hits = [];
-  for (const file of [...sources, glue]) {
+  for (const file of [...sources, ...glue, ...bundles]) {
     const text = fs.readFileSync(file, 'utf8');
     if (/\beval\s*\(|new\s+Function\s*\(/.test(text)) hits.push(path.relative(repoRoot, file));
   }

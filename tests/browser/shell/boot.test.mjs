@@ -9,7 +9,8 @@ import { useSiteAndBrowser } from '../../helpers/browser.mjs';
 import { readyLessons, trap } from '../../helpers/classroom.mjs';
 
 const env = useSiteAndBrowser();
-const WASM = '**/wasm/wingspline-core.wasm';
+// Every core module: the landing page loads the curves one, the first lesson its own.
+const WASM = '**/wasm/wingspline-*.wasm';
 const lessonPage = readyLessons[0].page;
 
 async function openWithWasm(file, answer) {
@@ -51,7 +52,7 @@ for (const file of ['index.html', lessonPage]) {
     test(`${file} with ${fault.name} says what is wrong and what to check`, async () => {
       const page = await openWithWasm(file, fault.answer);
       const text = await failureText(page, file);
-      assert.match(text, /The geometry core \(wasm\/wingspline-core\.wasm\) could not be loaded/);
+      assert.match(text, /The geometry core \(wasm\/wingspline-(mesh|curves)\.wasm\) could not be loaded/);
       assert.match(text, fault.reason);
       assert.match(text, /Check that the file is served, with type application\/wasm, and reload/);
       const everything = await page.evaluate(() => document.body.innerText);

@@ -209,6 +209,7 @@
  * @typedef {{
  *   id: string,
  *   title: string,
+ *   core: ('mesh' | 'subdivision' | 'curves')[],
  *   stateVersion: number,
  *   exercise?: ExerciseSupport,
  *   schema: Object<string, any>,

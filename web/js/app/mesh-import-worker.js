@@ -13,7 +13,7 @@ const post = (message, transfer = []) => /** @type {any} */ (self).postMessage(m
 self.addEventListener('message', async (event) => {
   const { file, format, name } = event.data;
   try {
-    const api = await loadWingspline();
+    const api = await loadWingspline({ parts: ['mesh'] });
     const r = await importMeshFile(api, file, { format, name, onProgress: (progress) => post({ type: 'progress', ...progress }) });
     let content = null;
     if (r.content) {

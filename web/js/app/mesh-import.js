@@ -101,7 +101,7 @@ export function createMeshImport({ message, contents, announceStatus, api = () =
     if (running) cancel();
     placeBox();
     return new Promise((resolve, reject) => {
-      const worker = new Worker(new URL('./mesh-import-worker.js', import.meta.url), { type: 'module', name: 'mesh-import' });
+      const worker = new Worker(new URL('../app/mesh-import-worker.js', import.meta.url), { type: 'module', name: 'mesh-import' });
       const job = { worker, name, cancelled: false, resolve, value: null };
       running = job;
       window.addEventListener('keydown', onKey, true);

@@ -82,7 +82,8 @@ export async function runLesson(lesson, { exercises = null, gpuRenderer = null }
 
   let api;
   try {
-    api = await loadWingspline();
+    // Only the core modules the lesson uses are fetched (lesson.core: 'mesh', 'curves').
+    api = await loadWingspline({ parts: lesson.core });
   } catch (err) {
     // A 'core-load-failed' error says what is wrong and what to check.
     message.error(errorText(err), err?.code);

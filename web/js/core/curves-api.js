@@ -8,75 +8,10 @@
 // core checks the values (finite, knots non-decreasing, weights positive, domain, ...) and
 // names the offending element in its message.
 import { unwrap, fail, isNumberArray } from './errors.js';
+import { EMPTY, CUBIC_BASES, MAX_SAMPLES, numbers, optionalNumbers, dimension, wholeNumber, finiteNumber, normalizeCurve, derivativeOrder } from './curve-spec.js';
+import { createCurveSamplingApi } from './curve-sampling-api.js';
 
-const EMPTY = new Float64Array(0);
-const CURVE_KINDS = ['bezier', 'bspline', 'nurbs', 'hermite', 'catmull-rom', 'cardinal', 'interpolation'];
-const CUBIC_BASES = ['hermite', 'bezier', 'bspline', 'catmull-rom'];
-const MAX_DERIVATIVE_ORDER = 21;
-const MAX_SAMPLES = 10_000_000;
-
-// A Float64Array view of numbers (no copy when it already is one). Values are checked in
-// the core, which names the bad entry; here only the type.
-function numbers(value, what) {
-  if (value instanceof Float64Array) return value;
-  if (!isNumberArray(value)) fail('invalid-argument', `${what} must be an array or typed array of numbers`);
-  return Float64Array.from(value);
-}
-
-function optionalNumbers(value, what) {
-  return value === undefined || value === null ? EMPTY : numbers(value, what);
-}
-
-function dimension(dim, what = 'dim') {
-  if (dim !== 2 && dim !== 3) fail('invalid-dimension', `${what} must be 2 or 3, not ${String(dim).slice(0, 20)}`);
-  return dim;
-}
-
-function wholeNumber(value, what, min, max, code = 'invalid-argument') {
-  if (!Number.isInteger(value) || value < min || value > max) {
-    fail(code, `${what} must be a whole number from ${min} to ${max}, not ${String(value).slice(0, 40)}`);
-  }
-  return value;
-}
-
-function finiteNumber(value, what) {
-  if (typeof value !== 'number') fail('invalid-argument', `${what} must be a number`);
-  if (!Number.isFinite(value)) fail('non-finite-input', `${what} is ${value}, not a finite number`);
-  return value;
-}
-
-// The curve spec the core reads: every field present, arrays as Float64Array.
-export function normalizeCurve(curve, what = 'curve') {
-  if (curve === null || typeof curve !== 'object') {
-    fail('invalid-argument', `${what} must be an object like { kind: 'bezier', dim: 2, points: [...] }`);
-  }
-  if (typeof curve.kind !== 'string' || !CURVE_KINDS.includes(curve.kind)) {
-    fail('unknown-curve-kind', `${what}.kind is ${JSON.stringify(curve.kind)?.slice(0, 40)}; expected one of ${CURVE_KINDS.join(', ')}`);
-  }
-  let degree = 0;
-  if (curve.degree !== undefined && curve.degree !== null) {
-    if (!Number.isInteger(curve.degree)) fail('degree-out-of-range', `${what}.degree must be a whole number, not ${String(curve.degree).slice(0, 40)}`);
-    degree = curve.degree;
-    if (degree < 1) fail('degree-out-of-range', `${what}.degree must be at least 1, not ${degree}`);
-  }
-  let tension = 0;
-  if (curve.tension !== undefined && curve.tension !== null) tension = finiteNumber(curve.tension, `${what}.tension`);
-  return {
-    kind: curve.kind,
-    dim: dimension(curve.dim, `${what}.dim`),
-    points: numbers(curve.points, `${what}.points`),
-    degree,
-    knots: optionalNumbers(curve.knots, `${what}.knots`),
-    weights: optionalNumbers(curve.weights, `${what}.weights`),
-    tangents: optionalNumbers(curve.tangents, `${what}.tangents`),
-    nodes: optionalNumbers(curve.nodes, `${what}.nodes`),
-    tension,
-  };
-}
-
-function derivativeOrder(order) {
-  return wholeNumber(order, 'the derivative order', 0, MAX_DERIVATIVE_ORDER);
-}
+export { normalizeCurve } from './curve-spec.js';
 
 function guaranteesOut(r) {
   return { parametric: r.parametric, geometric: r.geometric, joints: r.joints, interpolated: Array.from(r.interpolated) };
@@ -128,19 +63,8 @@ function planeMap(t) {
 }
 
 export function createCurvesApi(raw) {
-  function evaluate(curve, params, order, all, out) {
-    const spec = normalizeCurve(curve);
-    const u = numbers(params, 'params');
-    if (out !== undefined) {
-      const expected = u.length * spec.dim * (all ? order + 1 : 1);
-      if (!(out instanceof Float64Array) || out.length !== expected) {
-        fail('invalid-argument', `options.out must be a Float64Array of length ${expected}`);
-      }
-    }
-    return unwrap(raw.curveEvaluate(spec, u, order, all, out)).values;
-  }
-
   const api = {
+    ...createCurveSamplingApi(raw),
     // The row-major 4x4 basis matrix M of P(u) = [u^3 u^2 u 1] M G (lectures 000, 003);
     // lecture 001's Q(t) = G M T uses its transpose (segmentMatrices gives both).
     basisMatrix(kind, form = 'descending') {
@@ -159,40 +83,6 @@ export function createCurvesApi(raw) {
       return { constraints: r.constraints, matrix: r.matrix };
     },
 
-    // Points of the curve: Float64Array, values[dim*j + k] for params[j].
-    // options.out: a Float64Array of length dim * params.length to fill instead of
-    // allocating a new one (a lesson redrawing on every pointer move reuses its buffer).
-    /** @param {object} curve @param {ArrayLike<number>} params @param {{ out?: Float64Array }} [options] */
-    evaluateCurve(curve, params, { out } = {}) {
-      return evaluate(curve, params, 0, false, out);
-    },
-    // The derivative of `order` (1 = tangent vector P'(u), 2 = P''(u)); same layout and options.
-    /** @param {object} curve @param {ArrayLike<number>} params @param {number} [order] @param {{ out?: Float64Array }} [options] */
-    evaluateDerivative(curve, params, order = 1, { out } = {}) {
-      return evaluate(curve, params, derivativeOrder(order), false, out);
-    },
-    // Point and derivatives 1..maxOrder in one pass:
-    // values[(maxOrder+1)*dim*j + dim*k + c] is component c of the k-th derivative at params[j].
-    /** @param {object} curve @param {ArrayLike<number>} params @param {number} [maxOrder] @param {{ out?: Float64Array }} [options] */
-    evaluateWithDerivatives(curve, params, maxOrder = 1, { out } = {}) {
-      return evaluate(curve, params, derivativeOrder(maxOrder), true, out);
-    },
-    // { start, end, degree, controlPointCount, segmentCount }
-    curveDomain(curve) {
-      const r = unwrap(raw.curveDomain(normalizeCurve(curve)));
-      return { start: r.start, end: r.end, degree: r.degree, controlPointCount: r.controlPointCount, segmentCount: r.segmentCount };
-    },
-    // n evenly spaced parameters over the whole domain (first = start, last = end exactly)
-    // and the points there: { params, points } with points[dim*j + k].
-    sampleCurve(curve, n = 200) {
-      wholeNumber(n, 'the number of samples', 2, MAX_SAMPLES);
-      const spec = normalizeCurve(curve);
-      const d = unwrap(raw.curveDomain(spec));
-      const params = new Float64Array(n);
-      for (let j = 0; j < n; j += 1) params[j] = d.start + ((d.end - d.start) * j) / (n - 1);
-      params[n - 1] = d.end;
-      return { params, points: unwrap(raw.curveEvaluate(spec, params, 0, false, undefined)).values };
-    },
     // Blending functions (B = M T of lecture 001; Cox-de Boor N_i,p; NURBS R_i,p) of every
     // control item at every param: values[count*j + i]. Hermite: count = 2K, items 0..K-1
     // are the points p_i, K..2K-1 the tangents t_i. order > 0 gives their derivatives.
@@ -308,18 +198,6 @@ export function createCurvesApi(raw) {
     // B-splines count the non-empty knot spans, the end of the domain is in the last segment.
     segmentAt(curve, u) {
       return unwrap(raw.curveSegmentAt(normalizeCurve(curve), finiteNumber(u, 'u'))).segment;
-    },
-    // Knot vector presets (K + p + 1 values, Float64Array; new values rounded to 1e-9):
-    // clamped (p+1 zeros, interior j/(K-p), p+1 ones), uniform (t_j = j - p), unclamped
-    // (the same domain and interior knots, the ends spread with the neighbouring spacing).
-    clampedKnots(count, degree) {
-      return unwrap(raw.knotVector('clamped', wholeNumber(count, 'count', 1, 2 ** 31 - 1), wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'), EMPTY)).knots;
-    },
-    uniformKnots(count, degree) {
-      return unwrap(raw.knotVector('uniform', wholeNumber(count, 'count', 1, 2 ** 31 - 1), wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'), EMPTY)).knots;
-    },
-    unclampedKnots(knots, degree) {
-      return unwrap(raw.knotVector('unclamped', 0, wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'), numbers(knots, 'knots'))).knots;
     },
     isClampedKnots(knots, degree) {
       return unwrap(raw.knotsClamped(numbers(knots, 'knots'), wholeNumber(degree, 'degree', 1, 2 ** 31 - 1, 'degree-out-of-range'))).clamped;
@@ -582,16 +460,6 @@ export function createCurvesApi(raw) {
       }
       return out;
     },
-  };
-  // Subdivision of a control polygon (docs/api-curves.md "Subdivision"): 'chaikin'
-  // (corner cutting -> the uniform quadratic B-spline) or 'cubic-bspline' (Lane-Riesenfeld
-  // -> the uniform cubic B-spline), open or closed, `steps` times: Float64Array, dim per point.
-  /** @param {ArrayLike<number>} points @param {number} dim @param {{ scheme?: string, closed?: boolean, steps?: number }} [options] */
-  api.subdivideCurve = (points, dim, { scheme, closed = false, steps = 1 } = {}) => {
-    if (typeof scheme !== 'string') fail('unknown-scheme', "subdivideCurve needs a scheme: 'chaikin' or 'cubic-bspline'");
-    if (typeof closed !== 'boolean') fail('invalid-argument', 'closed must be true or false');
-    const p = numbers(points, 'points');
-    return unwrap(raw.curveSubdivide(p, dimension(dim), scheme, closed, wholeNumber(steps, 'steps', 0, 20))).points;
   };
   return api;
 }

@@ -571,7 +571,9 @@ function subdivisionArgs(mesh, options, what) {
   return { handle: handleOfMesh(mesh), scheme: o.scheme };
 }
 
-export function createMeshApi(raw) {
+// withSubdivision: the module carries mesh subdivision (wingspline-subdivision, the bench
+// module); the mesh lesson's module (wingspline-mesh) does not, and its API has no subdivide.
+export function createMeshApi(raw, { withSubdivision = true } = {}) {
   const { maxCoordinate, maxFaceCorners, maxVertices, maxFaces } = unwrap(raw.meshLimits());
   const meshLimits = Object.freeze({ maxCoordinate, maxFaceCorners, maxVertices, maxFaces });
   // Every table's descriptor (core/src/mesh/tables.cpp), read once: see tables.js.
@@ -712,6 +714,7 @@ export function createMeshApi(raw) {
       return indexedOutput(r, o.layout);
     },
   };
+  if (!withSubdivision) return meshApi;
   // A new mesh `steps` subdivision steps finer (the input is untouched). Numbering of one
   // step: old vertices keep 0..V-1, edge points V + e, Catmull-Clark face points V + E + f.
   // Errors: 'unknown-scheme', 'not-a-triangle-mesh' (Loop; names the face), 'mesh-has-gaps'

@@ -2,25 +2,59 @@
 /// <reference types="node" />
 // The one JavaScript entry to the Wingspline core: `import { loadWingspline } from
 // 'wingspline'` in Node, `import { loadWingspline } from './js/core/wingspline.js'` in a
-// page. It loads the wasm module once and returns a plain API object; the raw embind
+// page. It loads the wasm modules once each and returns a plain API object; the raw embind
 // names stay private to this folder. It runs in Node too (the reference above declares
 // `process` and `node:fs/promises` for the type check).
-import createWingsplineCore from '../../wasm/wingspline-core.js';
+//
+// The core ships as four modules (docs/architecture.md, "Module size"): 'mesh' (meshes,
+// tables, walks, edits), 'subdivision' (the same with mesh subdivision and curve sampling),
+// 'curves' (curves, continuity, comparison, surfaces) and 'exercises' (the checkers of every
+// exercise kind). Each is fetched only when asked for: loadWingspline() gives the whole API;
+// a lesson page asks for its own part, loadWingspline({ parts: ['mesh'] }), and adds
+// 'exercises' when an exercise opens. 'subdivision' includes 'mesh': asked for both, only the
+// subdivision module is fetched (one module holds the meshes).
 import { WingsplineError } from './errors.js';
 import { createApi } from './api.js';
 
 export { WingsplineError } from './errors.js';
 
-let loading = null;
-
 const isNode = typeof process !== 'undefined' && !!process.versions?.node && typeof window === 'undefined';
 
-// Where the site serves the core, as a person would look for it.
-const WASM_FILE = 'wasm/wingspline-core.wasm';
-const WASM_URL = new URL('../../wasm/wingspline-core.wasm', import.meta.url);
+// Each part: its wasm file as a person would look for it on the site, its glue and its JS
+// API maker, imported only when the part is asked for (a literal import() each).
+const PARTS = {
+  mesh: {
+    file: 'wasm/wingspline-mesh.wasm',
+    url: new URL('../../wasm/wingspline-mesh.wasm', import.meta.url),
+    glue: () => import('../../wasm/wingspline-mesh.js'),
+    maker: () => import('./mesh-part.js').then((m) => m.createMeshPart),
+  },
+  subdivision: {
+    file: 'wasm/wingspline-subdivision.wasm',
+    url: new URL('../../wasm/wingspline-subdivision.wasm', import.meta.url),
+    glue: () => import('../../wasm/wingspline-subdivision.js'),
+    maker: () => import('./mesh-part.js').then((m) => m.createSubdivisionPart),
+  },
+  curves: {
+    file: 'wasm/wingspline-curves.wasm',
+    url: new URL('../../wasm/wingspline-curves.wasm', import.meta.url),
+    glue: () => import('../../wasm/wingspline-curves.js'),
+    maker: () => import('./curves-part.js').then((m) => m.createCurvesPart),
+  },
+  exercises: {
+    file: 'wasm/wingspline-exercises.wasm',
+    url: new URL('../../wasm/wingspline-exercises.wasm', import.meta.url),
+    glue: () => import('../../wasm/wingspline-exercises.js'),
+    maker: () => import('./exercises-part.js').then((m) => m.createExercisesPart),
+  },
+};
+const CORE_PARTS = Object.freeze(Object.keys(PARTS));
 
-function coreLoadError(reason) {
-  return new WingsplineError('core-load-failed', `The geometry core (${WASM_FILE}) could not be loaded: ${reason}. `
+let loading = null;
+
+
+function coreLoadError(file, reason) {
+  return new WingsplineError('core-load-failed', `The geometry core (${file}) could not be loaded: ${reason}. `
     + 'Check that the file is served, with type application/wasm, and reload.');
 }
 
@@ -32,29 +66,29 @@ function plainReason(err) {
 
 // Fetches and compiles the wasm file ourselves (rather than in Emscripten's glue, which
 // aborts with its own wording), so a failure names the file and the reason.
-async function compileInBrowser() {
+async function compileInBrowser({ file, url }) {
   let response;
   try {
-    response = await fetch(WASM_URL, { credentials: 'same-origin' });
+    response = await fetch(url, { credentials: 'same-origin' });
   } catch (err) {
-    throw coreLoadError(`the request failed (${err.message}); the page may be offline or the server unreachable`);
+    throw coreLoadError(file, `the request failed (${err.message}); the page may be offline or the server unreachable`);
   }
   if (!response.ok) {
-    throw coreLoadError(`the server answered ${response.status}${response.statusText ? ` ${response.statusText}` : ''}`);
+    throw coreLoadError(file, `the server answered ${response.status}${response.statusText ? ` ${response.statusText}` : ''}`);
   }
   try {
     // Stream-compiled when served as application/wasm; any other type still compiles from the bytes.
     const streaming = /^application\/wasm\b/i.test(response.headers.get('content-type') ?? '');
     return streaming ? await WebAssembly.compileStreaming(response) : await WebAssembly.compile(await response.arrayBuffer());
   } catch (err) {
-    if (err instanceof WebAssembly.CompileError) throw coreLoadError(`the file is not valid WebAssembly (${err.message})`);
-    throw coreLoadError(`reading the file failed (${err.message})`);
+    if (err instanceof WebAssembly.CompileError) throw coreLoadError(file, `the file is not valid WebAssembly (${err.message})`);
+    throw coreLoadError(file, `reading the file failed (${err.message})`);
   }
 }
 
-function instantiateInBrowser(module) {
+function instantiateInBrowser(create, file, module) {
   return new Promise((resolve, reject) => {
-    createWingsplineCore({
+    create({
       instantiateWasm(imports, receive) {
         WebAssembly.instantiate(module, imports).then((instance) => {
           try {
@@ -62,29 +96,73 @@ function instantiateInBrowser(module) {
           } catch (err) {
             reject(err);
           }
-        }, (err) => reject(coreLoadError(`it does not fit this page's scripts (${err.message}); the site's files may come from different builds`)));
+        }, (err) => reject(coreLoadError(file, `it does not fit this page's scripts (${err.message}); the site's files may come from different builds`)));
         return {};
       },
     }).then(resolve, reject);
   });
 }
 
-async function instantiate() {
-  if (!isNode) return instantiateInBrowser(await compileInBrowser());
+async function instantiate(part) {
+  const { file, url, glue } = PARTS[part];
+  const script = glue().then((m) => m.default, (err) => {
+    throw coreLoadError(file, `its script (${file.replace(/\.wasm$/, '.js')}) could not be loaded (${err.message})`);
+  });
+  if (!isNode) {
+    // The glue and the wasm are fetched at once.
+    const [create, module] = await Promise.all([script, compileInBrowser(PARTS[part])]);
+    return instantiateInBrowser(create, file, module);
+  }
   // Emscripten 3.1.6's glue would call Node's fetch() on a file path; hand it the bytes.
   const { readFile } = await import('node:fs/promises');
-  return createWingsplineCore({ wasmBinary: await readFile(WASM_URL) });
+  const [create, wasmBinary] = await Promise.all([script, readFile(url)]);
+  return create({ wasmBinary });
 }
 
-// Resolves to the API object; every call after the first returns the same object.
-export function loadWingspline() {
+/** @type {Map<string, Promise<any>>} each part's started module, once */
+const started = new Map();
+/** @type {Map<string, Promise<any>>} the API object for each set of parts, once */
+const apis = new Map();
+
+function startPart(part) {
+  let loading = started.get(part);
   if (!loading) {
-    loading = instantiate().then(createApi).catch((err) => {
-      loading = null;
+    loading = instantiate(part).catch((err) => {
+      started.delete(part);
       if (err instanceof WingsplineError) throw err;
-      throw new WingsplineError('core-load-failed', `The geometry core (${WASM_FILE}) could not be started: ${plainReason(err)}. `
+      throw new WingsplineError('core-load-failed', `The geometry core (${PARTS[part].file}) could not be started: ${plainReason(err)}. `
         + 'Reload the page; if this happens again, the site\'s files may come from different builds.');
     });
+    started.set(part, loading);
   }
   return loading;
+}
+
+function partList(parts) {
+  if (!Array.isArray(parts) || parts.length === 0 || !parts.every((p) => Object.hasOwn(PARTS, p))) {
+    throw new WingsplineError('invalid-argument', `parts must be a non-empty list of ${CORE_PARTS.map((p) => `'${p}'`).join(', ')}, not ${JSON.stringify(parts)?.slice(0, 60)}`);
+  }
+  return CORE_PARTS.filter((p) => parts.includes(p) && !(p === 'mesh' && parts.includes('subdivision')));
+}
+
+// Resolves to the API object over the parts asked for (all by default); every call with the
+// same parts returns the same object, and each module is fetched and started once.
+/** @param {{ parts?: string[] }} [options] */
+export function loadWingspline({ parts = [...CORE_PARTS] } = {}) {
+  let wanted;
+  try {
+    wanted = partList(parts);
+  } catch (err) {
+    return Promise.reject(err);
+  }
+  const key = wanted.join('+');
+  let api = apis.get(key);
+  if (!api) {
+    api = Promise.all(wanted.map((p) => Promise.all([startPart(p), PARTS[p].maker()]))).then((started) => createApi(
+      Object.fromEntries(wanted.map((p, i) => [p, started[i][0]])),
+      Object.fromEntries(wanted.map((p, i) => [p, started[i][1]]))));
+    api.catch(() => apis.delete(key));
+    apis.set(key, api);
+  }
+  return api;
 }

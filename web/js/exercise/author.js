@@ -11,6 +11,7 @@ import { lessons } from '../lessons/registry.js';
 import { KINDS, TABLES, QUANTITIES, FEEDBACK_LEVELS, DEFAULT_HINT_AFTER, exerciseOf, parseExercise } from './format.js';
 import { readExerciseState, CREATE } from './player.js';
 import { exerciseUrl } from './link.js';
+import { loadWingspline } from '../core/wingspline.js';
 
 const lessonIds = lessons.map((l) => l.id);
 
@@ -49,13 +50,21 @@ function fieldsOf(kind, subject) {
 const VALUE_FIELDS = [...new Set(Object.values(QUANTITIES).flatMap((q) => q.fields))];
 
 /** @param {{ ctx: any, lesson: any, view: any, message: any }} parts */
-export function openAuthorDialog({ ctx, lesson, view, message }) {
+export async function openAuthorDialog({ ctx, lesson, view, message }) {
   const support = lesson.exercise;
   let subject;
   try {
     subject = support.subject(view, ctx.model, ctx.state, ctx);
   } catch (err) {
     message.warn(`No exercise can be made from this view: ${err.message}.`, { code: 'exercise-author-refused' });
+    return null;
+  }
+  // The lesson's core with the exercise checkers, which check the exercise as it is made.
+  let api;
+  try {
+    api = await loadWingspline({ parts: [...lesson.core, 'exercises'] });
+  } catch (err) {
+    message.warn(`No exercise can be made now: ${err.message}`, { code: 'exercise-author-refused' });
     return null;
   }
   const panels = [...document.querySelectorAll('#panels details.panel[id], #panels section[id]')]
@@ -81,7 +90,7 @@ export function openAuthorDialog({ ctx, lesson, view, message }) {
   let suggested = null; // the lesson's suggestion for the kind shown (an edit's: its state and operation)
 
   function fill(kind) {
-    const suggestion = support.suggest?.(kind, ctx.state, { api: ctx.api, subject }) ?? { check: { kind }, hide: [], question: '' };
+    const suggestion = support.suggest?.(kind, ctx.state, { api, subject }) ?? { check: { kind }, hide: [], question: '' };
     suggested = suggestion;
     inputs = new Map();
     const check = suggestion.check;
@@ -146,13 +155,15 @@ export function openAuthorDialog({ ctx, lesson, view, message }) {
     const read = parseExercise(stringifyExact(exercise), { lessonIds });
     readExerciseState(lesson, read);
     const asked = suggested?.state ? support.subject(view, ctx.model, suggested.state, ctx) : subject;
-    CREATE[kind]({ api: ctx.api, check: read.check, subject: () => asked, support, ctx });
+    CREATE[kind]({ api, check: read.check, subject: () => asked, support, ctx });
     return read;
   }
 
   async function run(action) {
     setChildren(problem);
     setChildren(result);
+    // The link of an earlier export is hidden until this one's is written: never a stale link.
+    linkBox.hidden = true;
     let exercise;
     try {
       exercise = build();

@@ -54,9 +54,9 @@ export function readExerciseState(lesson, exercise) {
 }
 
 /**
- * @param {{ ctx: any, lesson: any, view: () => any, exercise: any, key: string, hash?: string | null, loaded: { progress: any, problem: string | null, stuck?: boolean }, panels: HTMLElement, reset: () => void, initialState: any }} parts
+ * @param {{ api: any, ctx: any, lesson: any, view: () => any, exercise: any, key: string, hash?: string | null, loaded: { progress: any, problem: string | null, stuck?: boolean }, panels: HTMLElement, reset: () => void, initialState: any }} parts
  */
-export function mountExercise({ ctx, lesson, view, exercise, key, hash = null, loaded, panels, reset, initialState }) {
+export function mountExercise({ api, ctx, lesson, view, exercise, key, hash = null, loaded, panels, reset, initialState }) {
   const support = lesson.exercise;
   const { check } = exercise;
   // What the check is asked of. A question is about the exercise's drawing: its subject is
@@ -81,7 +81,7 @@ export function mountExercise({ ctx, lesson, view, exercise, key, hash = null, l
   let leaving = false; // Start again: the page reloads, nothing more is saved
   let saveTimer = 0;
 
-  const kind = CREATE[check.kind]({ api: ctx.api, check, subject, support, ctx });
+  const kind = CREATE[check.kind]({ api, check, subject, support, ctx });
   if (loaded.progress) kind.restore(progress.answer);
 
   const checkButton = h('button', { type: 'button', class: 'primary', id: 'exercise-check', onclick: () => runCheck() }, 'Check');

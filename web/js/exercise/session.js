@@ -11,11 +11,12 @@ import { progressKey, readProgress } from './progress.js';
 import { readExerciseState, mountExercise } from './player.js';
 import { readEnvelope } from '../app/share-link.js';
 import { exerciseHash } from './submission.js';
+import { loadWingspline } from '../core/wingspline.js';
 
 const lessonIds = lessons.map((l) => l.id);
 
 /**
- * @typedef {import('../app/contract.js').ExerciseOpening & { problem: string | null, exercise?: any, key?: string, hash?: string, loaded?: any, initialState?: any }} Session
+ * @typedef {import('../app/contract.js').ExerciseOpening & { problem: string | null, api?: any, exercise?: any, key?: string, hash?: string, loaded?: any, initialState?: any }} Session
  * @param {import('../app/contract.js').Lesson} lesson
  * @returns {Promise<Session | null>}
  */
@@ -35,6 +36,8 @@ export async function openExercise(lesson) {
   }
   try {
     const exercise = await loadLinkedExercise(link, { lessonIds });
+    // The lesson's core with the exercise checkers (the exercises module, fetched now).
+    const api = await loadWingspline({ parts: [...lesson.core, 'exercises'] });
     const initialState = readExerciseState(lesson, exercise);
     const key = await progressKey(exercise, { shipped: 'id' in link });
     const hash = await exerciseHash(exercise);
@@ -51,7 +54,7 @@ export async function openExercise(lesson) {
         // the kept drawing is not usable: the exercise's own is shown
       }
     }
-    Object.assign(session, { ready: true, shownOnStart: true, exercise, key, hash, loaded, initialState, restored: { state, source: 'exercise', problem: null, previous: null } });
+    Object.assign(session, { ready: true, shownOnStart: true, api, exercise, key, hash, loaded, initialState, restored: { state, source: 'exercise', problem: null, previous: null } });
   } catch (err) {
     session.refuse(err.message);
   }
@@ -68,7 +71,7 @@ export function startExercise(session, { ctx, lesson, view, panels, message, acc
     if (session.problem) message.warn(session.problem, { code: 'exercise-refused' });
     return null;
   }
-  const { exercise, key, hash, initialState, loaded } = session;
+  const { api, exercise, key, hash, initialState, loaded } = session;
   // The page's Reset, and the panel's "Back to the exercise's drawing": the exercise's
   // starting drawing as one undoable step; the drawing it replaces goes into the history.
   const reset = () => {
@@ -89,7 +92,7 @@ export function startExercise(session, { ctx, lesson, view, panels, message, acc
   ctx.ui.exercise = exercise.check.kind;
   let player;
   try {
-    player = mountExercise({ ctx, lesson, view, exercise, key, hash, loaded, panels, reset, initialState });
+    player = mountExercise({ api, ctx, lesson, view, exercise, key, hash, loaded, panels, reset, initialState });
   } catch (err) {
     delete document.documentElement.dataset.exercise;
     ctx.ui.exercise = null;

@@ -40,7 +40,8 @@ async function showCore() {
   const status = /** @type {HTMLElement} */ (document.querySelector('[data-core-status]'));
   const proof = document.getElementById('core-proof');
   try {
-    const api = await loadWingspline();
+    // The Hermite proof is curve maths: only the curves module is fetched.
+    const api = await loadWingspline({ parts: ['curves'] });
     const { constraints, matrix: mh } = api.hermiteFromConstraints();
     status.textContent = `Wingspline core ${api.version} is running (WebAssembly).`;
     status.dataset.state = 'ready';

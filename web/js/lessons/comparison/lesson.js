@@ -80,6 +80,8 @@ const handlesOf = (state) => [
 export const lesson = {
   id: 'comparison',
   title: 'Comparison lab',
+  // The core modules the page loads (docs/architecture.md, "Module size").
+  core: ['curves'],
   stateVersion: 4,
   exercise: comparisonExercise,
   // Version 2: the notation of the matrix panels; older links show decimals.

@@ -71,6 +71,8 @@ function handlesOf(state) {
 export const lesson = {
   id: 'continuity',
   title: 'Continuity lab',
+  // The core modules the page loads (docs/architecture.md, "Module size").
+  core: ['curves'],
   stateVersion: 1,
   exercise: continuityExercise,
   schema: {

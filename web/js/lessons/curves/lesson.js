@@ -27,6 +27,8 @@ const overlaySchema = object(Object.fromEntries(Object.keys(OVERLAYS).map((k) =>
 export const lesson = {
   id: 'curves',
   title: 'Curve explorer',
+  // The core modules the page loads (docs/architecture.md, "Module size").
+  core: ['curves'],
   stateVersion: 3,
   exercise: curvesExercise,
   // Version 2: the notation of the matrix panel; older links show decimals.

@@ -351,6 +351,8 @@ function importMesh(view, { value, problems }, state, name) {
 export const meshLesson = {
   id: 'mesh',
   title: 'Mesh representations',
+  // The core modules the page loads (docs/architecture.md, "Module size").
+  core: ['mesh'],
   stateVersion: 3,
   exercise: meshExercise,
   // Version 2 holds the mesh operations; a version 1 state had none. Version 3

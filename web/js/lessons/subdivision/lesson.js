@@ -390,6 +390,8 @@ const meshFile = (format) => ({
 export const subdivisionLesson = {
   id: 'subdivision',
   title: 'Subdivision',
+  // The core modules the page loads (docs/architecture.md, "Module size").
+  core: ['subdivision'],
   stateVersion: 3,
   exercise: subdivisionExercise,
   // Version 2 holds the curve's polygon (it was fixed before): a version-1 link gets it.

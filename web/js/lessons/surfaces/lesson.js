@@ -90,6 +90,8 @@ const wrapDegrees = (a) => ((((a + 180) % 360) + 360) % 360) - 180;
 export const lesson = {
   id: 'surfaces',
   title: 'Surface patches',
+  // The core modules the page loads (docs/architecture.md, "Module size").
+  core: ['curves'],
   stateVersion: 1,
   exercise: surfacesExercise,
   // The net's entries are 3D: its own inspector takes x, y and z; the shell's 2D

@@ -1,0 +1,18 @@
+// @ts-check
+// The mesh parts of the API. 'mesh' (wasm/wingspline-mesh): meshes, tables, walks, edits, as
+// the mesh lesson uses them. 'subdivision' (wasm/wingspline-subdivision): the same with mesh
+// subdivision and curve sampling, as the subdivision lesson uses them (a polygon's limit
+// B-spline beside its meshes); it is the mesh API of loadWingspline() with every part.
+// wingspline.js imports this file only when one of them is asked for.
+import { createMeshApi } from './mesh-api.js';
+import { createCurveSamplingApi } from './curve-sampling-api.js';
+
+/** @param {any} raw the mesh module's embind functions */
+export function createMeshPart(raw) {
+  return createMeshApi(raw, { withSubdivision: false });
+}
+
+/** @param {any} raw the subdivision module's embind functions */
+export function createSubdivisionPart(raw) {
+  return { ...createMeshApi(raw), ...createCurveSamplingApi(raw) };
+}
