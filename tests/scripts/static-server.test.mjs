@@ -213,13 +213,13 @@ test('prefix and overlays still hold, and nothing outside the folders is served'
 });
 
 test('the real wasm, when dist/ is built: compressed on the wire under 40% of its size, decoded byte for byte', async (t) => {
-  const wasm = path.join(repoRoot, 'dist', 'wasm', 'wingspline-core.wasm');
+  const wasm = path.join(repoRoot, 'dist', 'wasm', 'wingspline-mesh.wasm');
   if (!fs.existsSync(wasm)) { t.skip('dist/ is not built'); return; }
   const { server: s2, url } = await listen(createStaticServer(path.join(repoRoot, 'dist')));
   try {
     const bytes = fs.readFileSync(wasm);
     for (const enc of ['gzip', 'br']) {
-      const res = await request('/wasm/wingspline-core.wasm', { 'accept-encoding': enc }, { base: url });
+      const res = await request('/wasm/wingspline-mesh.wasm', { 'accept-encoding': enc }, { base: url });
       assert.equal(res.headers['content-encoding'], enc);
       assert.ok(res.body.length < MAX_COMPRESSED_SHARE * bytes.length, `${enc}: ${res.body.length} of ${bytes.length} bytes`);
       assert.ok(decode(res).equals(bytes));
