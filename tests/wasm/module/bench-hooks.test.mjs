@@ -57,9 +57,10 @@ test('the shipped module holds no benchmark entry point; the bench module holds 
     assert.ok(!shipped.includes(name), `the shipped module names ${name}`);
     assert.ok(benchWasm.includes(name), `the bench module lacks ${name}`);
   }
-  // the package exports the API only
+  // the package exports the API, its manifest and the wasm files, and no bench entry
   const pkg = JSON.parse(fs.readFileSync(new URL('../../../package.json', import.meta.url), 'utf8'));
-  assert.deepEqual(Object.keys(pkg.exports), ['.']);
+  assert.equal(pkg.exports['.'].default, './dist/js/core/wingspline.js');
+  assert.deepEqual(Object.keys(pkg.exports).filter((k) => /bench/i.test(k) || /bench/i.test(JSON.stringify(pkg.exports[k]))), []);
 });
 
 test('bench hooks: the ring walk visits 2E edges and sums the neighbours, counted from the edge table', () => {

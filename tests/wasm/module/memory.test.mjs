@@ -252,12 +252,16 @@ const cases = [
     ['invalid-element', () => lecture.collapseEdge(V_MISSING)], ['disposed', () => gone.compact()], ['disposed', () => gone.gaps()],
     ['unknown-format', () => lecture.format({ format: 'stl' })]]],
   // Subdivision of meshes and curves.
-  ['subdivide + dispose / subdivisionSteps / limitPositions', REDUCED, () => {
+  ['subdivide + dispose / subdivisionSteps / reconnectionPlayback / limitPositions', REDUCED, () => {
     api.subdivide(lecture, { scheme: 'catmull-clark', steps: 2 }).dispose();
     api.subdivisionSteps(lecture, { scheme: 'catmull-clark' });
+    api.reconnectionPlayback(lecture, { scheme: 'catmull-clark' });
     api.limitPositions(lecture, { scheme: 'catmull-clark' });
   }, [['too-large', () => api.subdivide(lecture, { scheme: 'catmull-clark', steps: 16 })], ['unknown-scheme', () => api.subdivisionSteps(lecture, { scheme: 'nope' })],
-    ['unknown-scheme', () => api.limitPositions(lecture, { scheme: 'nope' })]]],
+    ['unknown-scheme', () => api.reconnectionPlayback(lecture, { scheme: 'nope' })], ['unknown-scheme', () => api.limitPositions(lecture, { scheme: 'nope' })]]],
+  // An edit's cost against mesh size, measured by the core on small grids.
+  ['editCostGrowth', REDUCED, () => api.editCostGrowth('flip-edge', [4, 8]),
+    [['invalid-argument', () => api.editCostGrowth('flip-edge', [3])], ['unknown-operation', () => api.editCostGrowth('flip-edgy', [4])]]],
   ['subdivideCurve', REDUCED, () => api.subdivideCurve(geometry, 2, { scheme: 'cubic-bspline', closed: true, steps: 3 }),
     [['too-few-points', () => api.subdivideCurve(geometry.slice(0, 2), 2, { scheme: 'chaikin' })]]],
   ['memoryUsage / liveMeshCount', REDUCED, () => { api.memoryUsage(); api.liveMeshCount(); }, []],
