@@ -117,7 +117,7 @@ test('two tabs editing the same work: the later save is the work, the other is s
   for (let i = 0; i < 300 && !loser; i += 1) {
     if (await setAside(a)) loser = a; else if (await setAside(b)) loser = b; else await a.waitForTimeout(100);
   }
-  assert.ok(loser, 'one tab says its work was set aside');
+  assert.ok(loser, `one tab says its work was set aside: ${await a.evaluate(() => window.wingspline.message())} | ${await b.evaluate(() => window.wingspline.message())}`);
   const winner = loser === a ? b : a;
   assert.equal(await setAside(winner), false);
   assert.deepEqual(await points(loser), mine.get(winner), 'the set-aside tab now shows the current work');
