@@ -26,7 +26,10 @@ const jobs = ['-j', '2'];
 function cmakeBuild(dir, configure, targets = []) {
   const buildDir = path.join(repoRoot, 'build', dir);
   return withBuildLock(dir, async () => {
-    if (!fs.existsSync(path.join(buildDir, 'CMakeCache.txt'))) {
+    // Configured again when CMakeLists.txt changed since: a target it adds is unknown to the
+    // old build files, and `cmake --build --target` stops before re-running cmake itself.
+    const cache = path.join(buildDir, 'CMakeCache.txt');
+    if (!fs.existsSync(cache) || fs.statSync(path.join(repoRoot, 'CMakeLists.txt')).mtimeMs > fs.statSync(cache).mtimeMs) {
       log(`configuring build/${dir}`);
       await configure(buildDir);
     }
@@ -43,10 +46,11 @@ export async function buildNative({ sanitize = false } = {}) {
 }
 
 // The shipped modules (wingspline-mesh, -subdivision, -curves, -exercises: what the site
-// serves, one per lesson group and one for the exercise checkers); with bench, also the bench module (wingspline-core-bench: every binding with
+// serves, one per lesson group and one for the exercise checkers; -meshes: every mesh
+// binding, for the package's whole API, no page loads it); with bench, also the bench module (wingspline-core-bench: every binding with
 // the same flags plus core/bench), which `npm run bench` and the wasm tests of the
 // benchmark's hooks load.
-export const SHIPPED_MODULES = ['wingspline-mesh', 'wingspline-subdivision', 'wingspline-curves', 'wingspline-exercises'];
+export const SHIPPED_MODULES = ['wingspline-mesh', 'wingspline-subdivision', 'wingspline-meshes', 'wingspline-curves', 'wingspline-exercises'];
 export async function buildWasm({ bench = false } = {}) {
   await cmakeBuild('wasm', (buildDir) => must('emcmake',
     ['cmake', '-S', repoRoot, '-B', buildDir, '-DCMAKE_BUILD_TYPE=Release']),
@@ -60,7 +64,7 @@ export async function buildWasm({ bench = false } = {}) {
 // what is served; the readable source stays in web/.
 function minified(name, text) {
   const loader = name.endsWith('.css') ? 'css' : 'js';
-  return transformSync(text, { loader, minify: true, keepNames: true, legalComments: 'none', target: 'es2022' }).code;
+  return transformSync(text, { loader, minify: true, legalComments: 'none', target: 'es2022' }).code;
 }
 const MINIFIED = /\.(m?js|css)$/;
 
@@ -116,7 +120,7 @@ async function bundleLessonPages(dist, pages) {
   await esbuild({
     entryPoints: Object.fromEntries(pages.map((p) => [p.id, path.join(repoRoot, 'web', 'js', 'lessons', p.id, 'page.js')])),
     bundle: true, splitting: true, format: 'esm', outdir, chunkNames: 'chunk-[hash]',
-    minify: true, keepNames: true, legalComments: 'none', target: 'es2022', logLevel: 'warning',
+    minify: true, legalComments: 'none', target: 'es2022', logLevel: 'warning',
     // The wasm glue is built into dist/wasm/, not web/; Node's modules are only reached in Node.
     external: ['../../wasm/*', 'node:*'],
   });

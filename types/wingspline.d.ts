@@ -24,7 +24,7 @@ export type Vec3 = readonly [number, number, number] | readonly number[] | Float
  */
 export type WingsplineErrorCode =
   // loading and arguments (every part)
-  | 'core-load-failed' | 'internal-error' | 'out-of-memory' | 'invalid-argument' | 'disposed'
+  | 'core-load-failed' | 'part-not-loaded' | 'internal-error' | 'out-of-memory' | 'invalid-argument' | 'disposed'
   // mesh files
   | 'parse-error' | 'truncated-file' | 'line-too-long' | 'unknown-format' | 'index-out-of-range'
   // the mesh limits (meshLimits), wherever a mesh comes from: a file, a face set or an edit

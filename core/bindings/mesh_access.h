@@ -17,7 +17,8 @@ mesh::IndexedMesh indexed_from_arrays(const val& positions, const val& face_offs
 int32_t register_mesh(mesh::WingedEdgeMesh&& winged);
 // Pointer assignments as they cross (a change record's, a reconnection's): an Int32Array of
 // six per step [table, row, field, before, after, phase], table and field as indices into
-// meshOperationDescriptors().tables / .fields (mesh_edit.cpp).
+// meshOperationDescriptors().tables / .fields (defined in mesh_representations.cpp, which
+// every module with meshes links).
 val assignment_steps_array(const std::vector<mesh::AssignmentStep>& steps);
 
 } // namespace wingspline::bindings

@@ -1,6 +1,8 @@
 // Changing a mesh: every operation of the core's registry through one binding (meshEdit), its
-// change record as flat arrays, compact() and the gaps. The registry itself as data is
-// operations.cpp (in the mesh and the exercises modules).
+// change record as flat arrays, the cost of an edit against mesh size, and compact(). The
+// binding group `edit`, in the mesh lesson's module and not the subdivision lesson's, which
+// never edits (docs/architecture.md, "Module size"). The registry itself as data is
+// operations.cpp; the version and the gaps, which every mesh has, are mesh_representations.cpp.
 #include "boundary.h"
 #include "mesh_access.h"
 #include "mesh_entry.h"
@@ -15,22 +17,9 @@
 
 namespace wingspline::bindings {
 
-val assignment_steps_array(const std::vector<mesh::AssignmentStep>& steps) {
-    std::vector<int32_t> flat;
-    flat.reserve(6 * steps.size());
-    for (const mesh::AssignmentStep& s : steps)
-        flat.insert(flat.end(), {static_cast<int32_t>(s.table), s.row, mesh::change_field_index(s.field), s.before, s.after, s.phase});
-    return to_typed_array(flat);
-}
-
 namespace {
 
 using namespace wingspline::mesh;
-
-// {topology, geometry}: which state of the mesh this is (winged_edge.h, MeshVersion).
-val mesh_version(int32_t handle) {
-    return guarded([&] { return version_value(entry(handle).winged.version()); });
-}
 
 val element_list(const std::vector<Vertex>& vs, const std::vector<Edge>& es, const std::vector<Face>& fs) {
     const auto ints = [](const auto& hs) {
@@ -175,23 +164,6 @@ val mesh_compact(int32_t handle) {
     });
 }
 
-// The gaps: {vertices, edges, faces}, each the removed indices in increasing order.
-val mesh_gaps(int32_t handle) {
-    return guarded([&] {
-        const WingedEdgeMesh& w = entry(handle).winged;
-        const auto marked = [](const std::vector<char>& marks) {
-            std::vector<int32_t> out;
-            for (std::size_t i = 0; i < marks.size(); ++i)
-                if (marks[i]) out.push_back(static_cast<int32_t>(i));
-            return int_array(out);
-        };
-        val r = val::object();
-        r.set("vertices", marked(w.deleted_vertices()));
-        r.set("edges", marked(w.deleted_edges()));
-        r.set("faces", marked(w.deleted_faces()));
-        return r;
-    });
-}
 
 
 } // namespace
@@ -199,9 +171,7 @@ val mesh_gaps(int32_t handle) {
 
 EMSCRIPTEN_BINDINGS(wingspline_mesh_edit) {
     using namespace wingspline::bindings;
-    emscripten::function("meshVersion", &mesh_version);
     emscripten::function("meshEdit", &mesh_edit);
     emscripten::function("meshEditCostGrowth", &mesh_edit_cost_growth);
     emscripten::function("meshCompact", &mesh_compact);
-    emscripten::function("meshGaps", &mesh_gaps);
 }

@@ -1,13 +1,13 @@
 // The mesh operations' registry (operations.h) as data: read by the mesh lesson's edit panel
-// and by the edit exercise's checker, so this file is linked into both the mesh and the
-// exercises modules, and the subdivision module that carries the mesh API (CMakeLists.txt,
-// WINGSPLINE_BINDINGS_operations).
+// and by the edit exercise's checker, so this file is linked into the modules that edit
+// meshes and the exercises module (CMakeLists.txt, WINGSPLINE_BINDINGS_operations). Not
+// into the subdivision lesson's: the registry holds every operation's check and change, and
+// a module that names it carries them all. How a change record's steps cross (the tables and
+// fields they index) is mesh_representations.cpp's meshChangeFormat, in every mesh module.
 #include "boundary.h"
 
 #include "wingspline/mesh/edit_costs.h"
 #include "wingspline/mesh/operations.h"
-#include "wingspline/mesh/representations.h"
-#include "wingspline/mesh/tables.h"
 
 namespace wingspline::bindings {
 namespace {
@@ -16,8 +16,8 @@ using namespace wingspline::mesh;
 
 // Read once by mesh-api.js: {operations: [{name, title, counts, shortcut, describe, finds
 // (what it must find before it writes, edit_costs.h),
-// arguments: [{name, kind (null for a number), optional, default, choices, label}]}],
-// tables, fields, stepStride, positionStride}: the registry (operations.h) as data.
+// arguments: [{name, kind (null for a number), optional, default, choices, label}]}]}: the
+// registry (operations.h) as data.
 val mesh_operation_descriptors() {
     return guarded([] {
         val ops = val::array();
@@ -45,17 +45,8 @@ val mesh_operation_descriptors() {
             op.set("arguments", args);
             ops.set(k, op);
         }
-        const auto names = [](const std::vector<const char*>& v) {
-            val out = val::array();
-            for (std::size_t k = 0; k < v.size(); ++k) out.set(k, std::string(v[k]));
-            return out;
-        };
         val r = val::object();
         r.set("operations", ops);
-        r.set("tables", names(change_tables()));
-        r.set("fields", names(change_fields()));
-        r.set("stepStride", 6);
-        r.set("positionStride", 8);
         return r;
     });
 }

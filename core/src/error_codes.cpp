@@ -6,6 +6,7 @@ const std::vector<ErrorCodeInfo>& error_codes() {
     static const std::vector<ErrorCodeInfo> all = {
         // loading and arguments (every part)
         {"core-load-failed", "loading", "the wasm module could not be fetched, compiled or started (the message names the file and the reason)"},
+        {"part-not-loaded", "loading", "the core module was loaded without the part this call needs (the subdivision lesson's module does not edit meshes); the message names the part to load"},
         {"internal-error", "loading", "a failure the core did not expect; the message says what it was (please report it)"},
         {"out-of-memory", "loading", "the input is too large for the memory available to the page"},
         {"invalid-argument", "arguments", "a value of the wrong type, count or range (the message names it)"},

@@ -69,7 +69,7 @@ test('npm pack builds first (prepack) and the tarball holds the built module, th
   assert.match(packLog, /prepack/, 'npm ran the prepack script');
   assert.match(packLog, /\[wingspline\] site assembled in dist\//, 'the prepack script built the site');
   for (const file of ['package.json', 'README.md', 'LICENSE', 'dist/js/core/wingspline.js', 'dist/js/core/mesh-api.js',
-    ...['mesh', 'subdivision', 'curves', 'exercises'].flatMap((m) => [`dist/wasm/wingspline-${m}.js`, `dist/wasm/wingspline-${m}.wasm`]), 'dist/index.html', 'types/wingspline.d.ts', 'scripts/wingspline.mjs']) {
+    ...['mesh', 'subdivision', 'meshes', 'curves', 'exercises'].flatMap((m) => [`dist/wasm/wingspline-${m}.js`, `dist/wasm/wingspline-${m}.wasm`]), 'dist/index.html', 'types/wingspline.d.ts', 'scripts/wingspline.mjs']) {
     assert.ok(packed.includes(file), `${file} is in the tarball (it holds ${packed.length} files)`);
   }
   // (scripts/wingspline.mjs is the package's command, `npx wingspline grade`; no other script ships)
@@ -109,7 +109,7 @@ test('installed, the package says where it comes from and exports its manifest a
   assert.ok(packed.includes('CHANGELOG.md'), 'the changelog is in the tarball');
   // The core's modules (one per lesson group, docs/architecture.md "Module size"), each
   // exported as its wasm file: found by import and by require, and each a valid module.
-  const modules = ['wingspline-mesh', 'wingspline-subdivision', 'wingspline-curves', 'wingspline-exercises'];
+  const modules = ['wingspline-mesh', 'wingspline-subdivision', 'wingspline-meshes', 'wingspline-curves', 'wingspline-exercises'];
   fs.writeFileSync(path.join(app, 'resolve.mjs'), [
     "import { createRequire } from 'node:module';",
     "import { fileURLToPath } from 'node:url';",

@@ -12,7 +12,7 @@ import fs from 'node:fs/promises';
 import { unwrap, integerIn } from '../../../web/js/core/errors.js';
 import { meshInternals } from '../../../web/js/core/mesh-api.js';
 import { createApi } from '../../../web/js/core/api.js';
-import { createSubdivisionPart } from '../../../web/js/core/mesh-part.js';
+import { createMeshesPart } from '../../../web/js/core/mesh-part.js';
 import { createCurvesPart } from '../../../web/js/core/curves-part.js';
 import { createExercisesPart } from '../../../web/js/core/exercises-part.js';
 
@@ -24,7 +24,7 @@ export function loadBenchCore() {
   loading ??= (async () => {
     const { default: create } = await import(MODULE.href);
     const raw = await create({ wasmBinary: await fs.readFile(WASM) });
-    const api = createApi({ subdivision: raw, curves: raw, exercises: raw }, { subdivision: createSubdivisionPart, curves: createCurvesPart, exercises: createExercisesPart });
+    const api = createApi({ meshes: raw, curves: raw, exercises: raw }, { meshes: createMeshesPart, curves: createCurvesPart, exercises: createExercisesPart });
     return { api, hooks: benchHooks(raw) };
   })();
   return loading;

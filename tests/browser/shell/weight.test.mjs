@@ -28,15 +28,8 @@ async function coldLoad(url) {
   return { files, total: files.reduce((a, f) => a + f.gzip, 0), problems };
 }
 
-// Known to be over: the subdivision page measured 321,611 bytes on 2026-11-28 (309,270 before
-// the reconnection's playback; its module, 219 KB gzip,
-// carries the mesh edits and file reading it does not use, because it is also the package's
-// mesh API; docs/architecture.md, "Module size", says what is left to do). Still measured and
-// reported on every run; remove the entry once it fits.
-const OVER_BUDGET = { subdivision: 'the subdivision page is over the budget (321,611 bytes measured on 2026-11-28); see docs/architecture.md, "Module size"' };
-
 for (const entry of lessons.filter((l) => l.ready)) {
-  test(`the ${entry.id} lesson loads in ${BUDGET_GZIP_BYTES.toLocaleString('en')} bytes gzip or less, with its own core modules only`, { todo: OVER_BUDGET[entry.id] }, async () => {
+  test(`the ${entry.id} lesson loads in ${BUDGET_GZIP_BYTES.toLocaleString('en')} bytes gzip or less, with its own core modules only`, async () => {
     const { files, total, problems } = await coldLoad(new URL(entry.page, env.site.url).href);
     assert.deepEqual(problems, []);
     const largest = [...files].sort((a, b) => b.gzip - a.gzip).slice(0, 5).map((f) => `${f.path} ${f.gzip}`).join(', ');

@@ -1,7 +1,7 @@
 // @ts-check
 // The API object over started core modules: the one place the parts of the API are put
-// together. wingspline.js starts the shipped modules it was asked for ('mesh', 'subdivision',
-// 'curves', 'exercises') with their JS parts (mesh-part.js, curves-part.js, exercises-part.js) and
+// together. wingspline.js starts the shipped modules it was asked for ('mesh', 'subdivision'
+// or both as 'meshes', 'curves', 'exercises') with their JS parts (mesh-part.js, curves-part.js, exercises-part.js) and
 // calls this; the benchmark starts the bench module (every binding plus its timing entry
 // points) and hands it as every part, so its meshes are the product's. Not part of the
 // package's exports.
@@ -9,7 +9,7 @@ import { unwrap, WingsplineError } from './errors.js';
 
 /**
  * @param {Record<string, any>} parts each started module's embind functions, by part ('mesh',
- *   'subdivision', 'curves', 'exercises')
+ *   'subdivision', 'meshes', 'curves', 'exercises')
  * @param {Record<string, (raw: any) => object>} makers each part's API maker (mesh-part.js,
  *   curves-part.js, exercises-part.js), for the parts given
  */

@@ -136,7 +136,7 @@ function storageValue(s) {
   };
 }
 
-// A change record as the core sends it, read by the descriptor (meshOperationDescriptors):
+// A change record as the core sends it, read by the format (meshChangeFormat):
 // steps are `stepStride` int32 each [table, row, field, before, after, phase] naming
 // descriptor.tables / descriptor.fields; positions `positionStride` numbers each [vertex,
 // before xyz, after xyz, step].
@@ -455,8 +455,9 @@ export class Mesh {
   // to change; the entries written, the winged edge's one per line of the playback). The
   // others are compared whole, O(mesh): ask it for one edit, not for a replayed list.
   apply(operation, { costs = false } = {}) {
+    const raw = this.#editing();
     const [edit, values] = this.#operationValues(operation);
-    const r = unwrap(this.#raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), false, Boolean(costs)));
+    const r = unwrap(raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), false, Boolean(costs)));
     this.#setVersion(r.after);
     return readChange(r, this.#edits);
   }
@@ -464,9 +465,20 @@ export class Mesh {
   // check({op: 'flip-edge', e: 4}); the positional form check('flip-edge', 4) takes the
   // arguments in the registry's order (check('split-face', f, a, b)).
   check(operation, ...args) {
+    const raw = this.#editing();
     const [edit, values] = this.#operationValues(typeof operation === 'string' ? this.#positional(operation, args) : operation);
-    const r = unwrap(this.#raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), true, false));
+    const r = unwrap(raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), true, false));
     return r.allowed ? { ok: true } : { ok: false, code: r.code, message: r.message };
+  }
+
+  // The module's edit bindings: the subdivision lesson's module (wingspline-subdivision)
+  // has none, so that its page stays light (docs/architecture.md, "Module size").
+  #editing() {
+    if (typeof this.#raw.meshEdit !== 'function') {
+      fail('part-not-loaded', 'this mesh was built by the subdivision part of the core, which does not edit meshes: '
+        + "load the core with the mesh part, loadWingspline({ parts: ['mesh'] }) or loadWingspline(), to edit it");
+    }
+    return this.#raw;
   }
 
   #positional(name, args) {
@@ -495,7 +507,7 @@ export class Mesh {
   // Removes the gaps left by join-faces and collapse-edge: every table renumbered keeping
   // the order of what remains. Returns {vertices, edges, faces}: old index -> new (-1 = removed).
   compact() {
-    const r = unwrap(this.#raw.meshCompact(this.#live()));
+    const r = unwrap(this.#editing().meshCompact(this.#live()));
     this.#setVersion(r.version);
     return { vertices: r.renumbering.vertices, edges: r.renumbering.edges, faces: r.renumbering.faces };
   }
@@ -571,17 +583,22 @@ function subdivisionArgs(mesh, options, what) {
   return { handle: handleOfMesh(mesh), scheme: o.scheme };
 }
 
-// withSubdivision: the module carries mesh subdivision (wingspline-subdivision, the bench
-// module); the mesh lesson's module (wingspline-mesh) does not, and its API has no subdivide.
-export function createMeshApi(raw, { withSubdivision = true } = {}) {
+// withSubdivision: the module carries mesh subdivision (wingspline-subdivision,
+// wingspline-meshes, the bench module); the mesh lesson's module (wingspline-mesh) does not,
+// and its API has no subdivide. withEdits: the module edits meshes (all but
+// wingspline-subdivision, whose API has no editCostGrowth and whose meshes refuse apply,
+// check and compact with 'part-not-loaded').
+export function createMeshApi(raw, { withSubdivision = true, withEdits = true } = {}) {
   const { maxCoordinate, maxFaceCorners, maxVertices, maxFaces } = unwrap(raw.meshLimits());
   const meshLimits = Object.freeze({ maxCoordinate, maxFaceCorners, maxVertices, maxFaces });
   // Every table's descriptor (core/src/mesh/tables.cpp), read once: see tables.js.
   const tableDescriptors = deepFreeze(unwrap(raw.meshTableDescriptors()).tables);
-  // The operations' registry and the change record's wire form (core/src/mesh/euler_ops.cpp), read once.
-  const ops = unwrap(raw.meshOperationDescriptors());
+  // The operations' registry (none in a module that does not edit) and the change record's
+  // wire form (core/src/mesh/euler_ops.cpp), read once.
+  const format = unwrap(raw.meshChangeFormat());
   const meshOperations = deepFreeze({
-    operations: ops.operations, tables: ops.tables, fields: ops.fields, stepStride: ops.stepStride, positionStride: ops.positionStride,
+    operations: withEdits ? unwrap(raw.meshOperationDescriptors()).operations : [],
+    tables: format.tables, fields: format.fields, stepStride: format.stepStride, positionStride: format.positionStride,
   });
   function named(name, a = 0, b = 0) {
     return unwrap(raw.meshNamed(name, a, b));
@@ -654,21 +671,9 @@ export function createMeshApi(raw, { withSubdivision = true } = {}) {
     // The core's registry of operations (frozen): {operations: [{name, title, counts,
     // shortcut, describe, arguments: [{name, kind: 'vertex'|'edge'|'face'|null (a number),
     // optional, default, choices, label}]}], tables, fields, stepStride, positionStride}:
-    // what mesh.check(op) and mesh.apply(op) accept, one entry per operation.
+    // what mesh.check(op) and mesh.apply(op) accept, one entry per operation (none in the
+    // subdivision part, which does not edit).
     meshOperations,
-    // What operation `name` costs each representation on grids of n x n quads (F = 2 n²),
-    // one per n in `sizes` (even, 2..4000): {sizes: [{n, faces}], costs: [{[representation]:
-    // {reads, writes}}]}, measured by the core on small grids and exact at every size
-    // (edit_costs.h, edit_cost_growth). Refusals as check gives them (a triangle grid has
-    // no face to split: 'adjacent-corners').
-    editCostGrowth(name, sizes) {
-      if (!Array.isArray(sizes) || !sizes.every((n) => Number.isInteger(n) && n >= 2 && n <= 4000 && n % 2 === 0)) {
-        fail('invalid-argument', 'sizes must be even whole numbers of quads across, 2 to 4000');
-      }
-      editNamed(meshOperations, name);
-      const r = unwrap(raw.meshEditCostGrowth(String(name), Float64Array.from(sizes)));
-      return { sizes: r.sizes.map((s) => ({ n: s.n, faces: s.faces })), costs: r.costs.map(costsOf) };
-    },
     // Text -> {positions, faces}. Errors: 'parse-error', 'truncated-file',
     // 'index-out-of-range', 'coordinate-out-of-range', 'face-too-large', 'too-large' (more
     // vertices or faces than meshLimits; checkCounts: false lifts that) with error.line
@@ -714,6 +719,21 @@ export function createMeshApi(raw, { withSubdivision = true } = {}) {
       return indexedOutput(r, o.layout);
     },
   };
+  if (withEdits) {
+    // What operation `name` costs each representation on grids of n x n quads (F = 2 n²),
+    // one per n in `sizes` (even, 2..4000): {sizes: [{n, faces}], costs: [{[representation]:
+    // {reads, writes}}]}, measured by the core on small grids and exact at every size
+    // (edit_costs.h, edit_cost_growth). Refusals as check gives them (a triangle grid has
+    // no face to split: 'adjacent-corners').
+    meshApi.editCostGrowth = (name, sizes) => {
+      if (!Array.isArray(sizes) || !sizes.every((n) => Number.isInteger(n) && n >= 2 && n <= 4000 && n % 2 === 0)) {
+        fail('invalid-argument', 'sizes must be even whole numbers of quads across, 2 to 4000');
+      }
+      editNamed(meshOperations, name);
+      const r = unwrap(raw.meshEditCostGrowth(String(name), Float64Array.from(sizes)));
+      return { sizes: r.sizes.map((s) => ({ n: s.n, faces: s.faces })), costs: r.costs.map(costsOf) };
+    };
+  }
   if (!withSubdivision) return meshApi;
   // A new mesh `steps` subdivision steps finer (the input is untouched). Numbering of one
   // step: old vertices keep 0..V-1, edge points V + e, Catmull-Clark face points V + E + f.

@@ -6,13 +6,14 @@
 // names stay private to this folder. It runs in Node too (the reference above declares
 // `process` and `node:fs/promises` for the type check).
 //
-// The core ships as four modules (docs/architecture.md, "Module size"): 'mesh' (meshes,
-// tables, walks, edits), 'subdivision' (the same with mesh subdivision and curve sampling),
-// 'curves' (curves, continuity, comparison, surfaces) and 'exercises' (the checkers of every
-// exercise kind). Each is fetched only when asked for: loadWingspline() gives the whole API;
-// a lesson page asks for its own part, loadWingspline({ parts: ['mesh'] }), and adds
-// 'exercises' when an exercise opens. 'subdivision' includes 'mesh': asked for both, only the
-// subdivision module is fetched (one module holds the meshes).
+// The core ships in parts (docs/architecture.md, "Module size"): 'mesh' (meshes, tables,
+// walks, edits), 'subdivision' (meshes, tables, walks with mesh subdivision and curve
+// sampling; no edits), 'curves' (curves, continuity, comparison, surfaces) and 'exercises'
+// (the checkers of every exercise kind). Each is fetched only when asked for:
+// loadWingspline() gives the whole API; a lesson page asks for its own part,
+// loadWingspline({ parts: ['mesh'] }), and adds 'exercises' when an exercise opens. Asked for
+// both 'mesh' and 'subdivision', one module with every mesh binding is fetched instead
+// (wingspline-meshes: one module holds the meshes, so a mesh can be edited and subdivided).
 import { WingsplineError } from './errors.js';
 import { createApi } from './api.js';
 
@@ -35,6 +36,13 @@ const PARTS = {
     glue: () => import('../../wasm/wingspline-subdivision.js'),
     maker: () => import('./mesh-part.js').then((m) => m.createSubdivisionPart),
   },
+  // 'mesh' and 'subdivision' together (never asked for by this name).
+  meshes: {
+    file: 'wasm/wingspline-meshes.wasm',
+    url: new URL('../../wasm/wingspline-meshes.wasm', import.meta.url),
+    glue: () => import('../../wasm/wingspline-meshes.js'),
+    maker: () => import('./mesh-part.js').then((m) => m.createMeshesPart),
+  },
   curves: {
     file: 'wasm/wingspline-curves.wasm',
     url: new URL('../../wasm/wingspline-curves.wasm', import.meta.url),
@@ -48,7 +56,7 @@ const PARTS = {
     maker: () => import('./exercises-part.js').then((m) => m.createExercisesPart),
   },
 };
-const CORE_PARTS = Object.freeze(Object.keys(PARTS));
+const CORE_PARTS = Object.freeze(['mesh', 'subdivision', 'curves', 'exercises']);
 
 let loading = null;
 
@@ -139,10 +147,11 @@ function startPart(part) {
 }
 
 function partList(parts) {
-  if (!Array.isArray(parts) || parts.length === 0 || !parts.every((p) => Object.hasOwn(PARTS, p))) {
+  if (!Array.isArray(parts) || parts.length === 0 || !parts.every((p) => CORE_PARTS.includes(p))) {
     throw new WingsplineError('invalid-argument', `parts must be a non-empty list of ${CORE_PARTS.map((p) => `'${p}'`).join(', ')}, not ${JSON.stringify(parts)?.slice(0, 60)}`);
   }
-  return CORE_PARTS.filter((p) => parts.includes(p) && !(p === 'mesh' && parts.includes('subdivision')));
+  const both = parts.includes('mesh') && parts.includes('subdivision');
+  return [...(both ? ['meshes'] : []), ...CORE_PARTS.filter((p) => parts.includes(p) && !(both && (p === 'mesh' || p === 'subdivision')))];
 }
 
 // Resolves to the API object over the parts asked for (all by default); every call with the
