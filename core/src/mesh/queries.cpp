@@ -151,7 +151,9 @@ QueryAnswer vertex_face_tables_query(QueryKind kind, int32_t element, const Vert
         for (int32_t f = 0; f < F; ++f) {
             const int32_t begin = end;
             end = rd(off, f + 1);
-            visit(f, begin, end);
+            // A gap left by an edit has no corners: nothing more to read (its first corner
+            // would be the next face's, or past the table's end for the last face).
+            if (begin != end) visit(f, begin, end);
         }
     };
     switch (kind) {
