@@ -9,7 +9,8 @@ export const expectedTasks = [
     ['native', 'wasm'].map((build) => ({ task, build }))),
   ...['curve_bezier3_eval', 'curve_bspline_eval', 'curve_bspline_eval_d1', 'curve_nurbs_eval', 'curve_nurbs_eval_d1']
     .flatMap((task) => ['native', 'wasm'].map((build) => ({ task, build }))),
-  ...['ui_load', 'ui_drag', 'ui_traversal_step'].map((task) => ({ task, build: 'browser' })),
+  ...['ui_load', 'ui_drag'].map((task) => ({ task, build: 'browser' })),
+  { task: 'ui_walk_step', build: 'browser' }, // tests/bench/browser/walk.bench.mjs
   { task: 'ui_tab_switch', build: 'browser' }, // tests/bench/browser/tabs.bench.mjs
   { task: 'ui_import', build: 'browser' }, // tests/bench/browser/import.bench.mjs
   { task: 'ui_rotate', build: 'browser' }, // tests/bench/browser/rotate.bench.mjs

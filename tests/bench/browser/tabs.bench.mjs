@@ -2,7 +2,7 @@
 // sphere_100000 loaded (docs/benchmarks.md: 250 slices x 201 stacks), in headless Chromium. A switch
 // is the tab button's click (state change, recompute) plus the page's render callback that
 // updates the panels and redraws the canvas, and the style and layout that leaves (forced
-// and timed; the browser's paint is not included), bracketed by animation frames as in mesh.bench.mjs. `panels_ms` is the part
+// and timed; the browser's paint is not included), bracketed by animation frames (a callback queued before the click and one after). `panels_ms` is the part
 // spent in the lesson's update hook (the tabs themselves, without the canvas drawing).
 // Each repetition first moves vertex 0 a little, so the mesh has a new version and every
 // per-version cache is cold: "cold" is the first show of each tab on that version, "warm"

@@ -16,7 +16,7 @@ import { CanvasPainter } from '../../app/painter.js';
 import { eLabel } from '../element-labels.js';
 import { parseColour } from '../gl-mesh.js';
 import { faceCount, cornersOf, hasCorners, faceXY, frontFacing, edgeSeen } from './faces.js';
-import { LABEL_LIMIT, labelPlan, drawLabels } from './label-plan.js';
+import { LABEL_LIMIT, labelPlan, drawLabels, createLabelCache } from './label-plan.js';
 
 const CACHE_EDGES = 2000;        // from this size the still mesh is drawn once into a bitmap
 
@@ -120,9 +120,10 @@ function drawArrows(painter, model, state, colors) {
   }
 }
 
-// One per lesson view (setup): the picture of the last base drawing of a big mesh.
+// One per lesson view (setup): the picture of the last base drawing of a big mesh, and the
+// label candidates of the last scene and view (label-plan.js).
 export function createBaseCache() {
-  return { key: null, sceneKey: null, view: null, canvas: null, ms: 0, timer: 0, gpu: { viewKey: null, meshKey: null, timer: 0, proxyPending: false, uploading: null } };
+  return { key: null, sceneKey: null, view: null, canvas: null, ms: 0, timer: 0, gpu: { viewKey: null, meshKey: null, timer: 0, proxyPending: false, uploading: null }, labels: createLabelCache() };
 }
 const SLOW_BASE_MS = 30;     // a base picture slower than this is not redrawn while panning
 const SETTLE_MS = 200;       // ... but once the view has been still this long
@@ -313,7 +314,7 @@ function drawGpu(gl, gpu, model, state, ctx) {
 
 export function drawMesh(baseCache, selection, painter, model, state, ctx) {
   if (!model) return;
-  const plan = labelPlan(painter, model, state, touched(model, selection));
+  const plan = labelPlan(painter, model, state, touched(model, selection), baseCache.labels);
   const gl = painter instanceof CanvasPainter ? ctx.stage.gl() : null;
   if (gl) {
     painter.clearTransparent();

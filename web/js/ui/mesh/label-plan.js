@@ -2,8 +2,8 @@
 // Which labels of a mesh are drawn, and drawing them: the label plan. A small mesh is
 // labelled whole, as the slides are; a bigger one labels the elements the walk, an edit or
 // the pointer touches, and then as many others as fit on screen without overlapping.
-// Offers: LABEL_LIMIT, labelPlan(painter, model, state, forced) -> {vertices, faces, edges,
-//   forced, away}, drawLabels(painter, model, state, colors, plan).
+// Offers: LABEL_LIMIT, labelPlan(painter, model, state, forced, cache) -> {vertices, faces,
+//   edges, forced, away}, createLabelCache(), drawLabels(painter, model, state, colors, plan).
 // Needs: a painter (app/painter.js: t, scale, circle, text), a model with projected, V, F,
 //   faceOffsets, faceVertices, weShown.edges, mode3d, vertexGap/edgeGap (1 where an edit
 //   left a gap, or null), and the theme's colours (accent, ink, background, series).
@@ -67,7 +67,72 @@ function frontMarks(model, P) {
   return { face: front, vertex };
 }
 
-export function labelPlan(painter, model, state, forced = []) {
+// What a big mesh offers for labels in one view: whether it is too crowded to label, and
+// otherwise every element whose label would sit on screen and on a face turned towards the
+// viewer, with that screen point, in the order they are tried (vertices, faces, edges, each
+// by number). One pass over the mesh, kept while the scene and the view stay (`cache`): a
+// walk step, a hover or a pick changes only the forced labels, so the frame places labels
+// among these (about as many as fit on the screen, whatever the mesh's size) and reads no
+// other element. `sceneKey` names the mesh state, the projection and the view.
+function labelCandidates(model, P, t, scale) {
+  const w = t.width; const h = t.height;
+  const boxW = LABEL_BOX.w * scale; const boxH = LABEL_BOX.h * scale;
+  const E = model.weShown.edges.length / 8;
+  // Screen x = w/2 + (x - cx) zoom, y = h/2 - (y - cy) zoom (painter.js Transform), inline:
+  // a call per vertex that returns an array cost 30 ms a frame on a million faces. The
+  // crowding is first estimated from every k-th vertex (20,000 of them), so a zoomed-out
+  // big mesh costs no per-vertex work at all.
+  const ax = w / 2 - t.cx * t.zoom; const ay = h / 2 + t.cy * t.zoom; const z = t.zoom;
+  const stride = Math.max(1, Math.ceil(model.V / 20000));
+  let sampled = 0;
+  for (let v = 0; v < model.V; v += stride) {
+    const sx = ax + P[3 * v] * z; const sy = ay - P[3 * v + 1] * z;
+    if (sx >= 0 && sx <= w && sy >= 0 && sy <= h) sampled += 1;
+  }
+  if (sampled * stride * boxW * boxH > 0.5 * w * h) return { crowded: true };
+  const screen = new Float32Array(2 * model.V);
+  for (let v = 0; v < model.V; v += 1) { screen[2 * v] = ax + P[3 * v] * z; screen[2 * v + 1] = ay - P[3 * v + 1] * z; }
+  const front = frontMarks(model, P);
+  const away = vertexLabelDirections(model, P);
+  const onScreen = (x, y) => x >= 0 && x <= w && y >= 0 && y <= h;
+  const vertices = []; const faces = []; const edges = [];
+  for (let v = 0; v < model.V; v += 1) {
+    // A vertex label sits VERTEX_LABEL_PX beside its disc (drawLabels): its box is there.
+    const x = screen[2 * v] + VERTEX_LABEL_PX * scale * awayX(away, v); const y = screen[2 * v + 1] - VERTEX_LABEL_PX * scale * awayY(away, v);
+    if (onScreen(x, y) && !model.vertexGap?.[v] && (!front || front.vertex[v])) vertices.push(v, x, y);
+  }
+  const { faceOffsets: o, faceVertices: c } = model;
+  for (let f = 0; f < faceCount(model); f += 1) {
+    const n = o[f + 1] - o[f];
+    if (!n) continue;
+    let x = 0; let y = 0;
+    for (let i = o[f]; i < o[f + 1]; i += 1) { x += screen[2 * c[i]]; y += screen[2 * c[i] + 1]; }
+    x /= n; y /= n;
+    if (onScreen(x, y) && (!front || front.face[f])) faces.push(f, x, y);
+  }
+  const ends = model.weShown.edges;
+  for (let e = 0; e < E; e += 1) {
+    const a = ends[8 * e]; const b = ends[8 * e + 1];
+    if (a < 0 || b < 0) continue;
+    const x = (screen[2 * a] + screen[2 * b]) / 2; const y = (screen[2 * a + 1] + screen[2 * b + 1]) / 2;
+    if (onScreen(x, y) && !model.edgeGap?.[e] && (!front || edgeSeen(model, front.face, e))) edges.push(e, x, y);
+  }
+  return { crowded: false, away, vertices, faces, edges };
+}
+
+// The key of what labelCandidates read: the mesh as shown, its projection and the view.
+function sceneKeyOf(model, t, scale) {
+  return [model.source, model.topology, model.version, model.weShown === model.we ? 'all' : model.editStep, model.mode3d,
+    model.rotation?.join(','), t.cx, t.cy, t.zoom, t.width, t.height, scale].join('|');
+}
+
+/**
+ * Which labels a frame draws. `cache` (one per lesson view; createLabelCache) keeps a big
+ * mesh's candidates between frames of the same scene and view (labelCandidates).
+ * @param {any} painter @param {any} model @param {any} state
+ * @param {{ kind: string, index: number }[]} [forced] @param {{ key: string | null, candidates: any }} [cache]
+ */
+export function labelPlan(painter, model, state, forced = [], cache = createLabelCache()) {
   const P = model.projected;
   const t = painter.t;
   const scale = painter.scale ?? 1;
@@ -76,35 +141,6 @@ export function labelPlan(painter, model, state, forced = []) {
   // A mesh with at most LABEL_LIMIT elements of every kind (the slides' meshes) is labelled
   // whole; a bigger one by screen density.
   const small = model.V <= LABEL_LIMIT && model.F <= LABEL_LIMIT && E <= LABEL_LIMIT;
-  // Density first (no per-face work on a zoomed-out big mesh): how many vertices are on
-  // screen; if their labels would cover more than half of it, only the touched elements
-  // are labelled.
-  const w = t.width; const h = t.height;
-  const boxW = LABEL_BOX.w * scale; const boxH = LABEL_BOX.h * scale;
-  let screen = null;
-  let crowded = false;
-  if (!small) {
-    // Screen x = w/2 + (x - cx) zoom, y = h/2 - (y - cy) zoom (painter.js Transform), inline:
-    // a call per vertex that returns an array cost 30 ms a frame on a million faces. The
-    // crowding is first estimated from every k-th vertex (20,000 of them), so a zoomed-out
-    // big mesh costs no per-vertex work at all.
-    const ax = w / 2 - t.cx * t.zoom; const ay = h / 2 + t.cy * t.zoom; const z = t.zoom;
-    const stride = Math.max(1, Math.ceil(model.V / 20000));
-    let sampled = 0;
-    for (let v = 0; v < model.V; v += stride) {
-      const sx = ax + P[3 * v] * z; const sy = ay - P[3 * v + 1] * z;
-      if (sx >= 0 && sx <= w && sy >= 0 && sy <= h) sampled += 1;
-    }
-    crowded = sampled * stride * boxW * boxH > 0.5 * w * h;
-    if (!crowded) {
-      screen = new Float32Array(2 * model.V);
-      for (let v = 0; v < model.V; v += 1) { screen[2 * v] = ax + P[3 * v] * z; screen[2 * v + 1] = ay - P[3 * v + 1] * z; }
-    }
-  }
-  const front = crowded ? null : frontMarks(model, P);
-  const faceSeen = (f) => hasCorners(model, f) && (!front || front.face[f]);
-  const vertexSeen = (v) => !model.vertexGap?.[v] && (!front || front.vertex[v]);
-  const edgeOk = (e) => !model.edgeGap?.[e] && (!front || edgeSeen(model, front.face, e));
   const key = (kind, i) => `${kind}${i}`;
   for (const element of forced) {
     if (!element || element.index < 0) continue;
@@ -114,13 +150,22 @@ export function labelPlan(painter, model, state, forced = []) {
     list.push(element.index);
   }
   if (small) {
-    for (let v = 0; v < model.V; v += 1) if (vertexSeen(v) && !plan.forced.has(key('vertex', v))) plan.vertices.push(v);
-    for (let f = 0; f < faceCount(model); f += 1) if (faceSeen(f) && !plan.forced.has(key('face', f))) plan.faces.push(f);
-    for (let e = 0; e < E; e += 1) if (edgeOk(e) && !plan.forced.has(key('edge', e))) plan.edges.push(e);
+    const front = frontMarks(model, P);
+    for (let v = 0; v < model.V; v += 1) if (!model.vertexGap?.[v] && (!front || front.vertex[v]) && !plan.forced.has(key('vertex', v))) plan.vertices.push(v);
+    for (let f = 0; f < faceCount(model); f += 1) if (hasCorners(model, f) && (!front || front.face[f]) && !plan.forced.has(key('face', f))) plan.faces.push(f);
+    for (let e = 0; e < E; e += 1) if (!model.edgeGap?.[e] && (!front || edgeSeen(model, front.face, e)) && !plan.forced.has(key('edge', e))) plan.edges.push(e);
     return plan;
   }
-  if (crowded) return plan;
-  plan.away = vertexLabelDirections(model, P);
+  const sceneKey = sceneKeyOf(model, t, scale);
+  if (cache.key !== sceneKey) {
+    cache.key = sceneKey;
+    cache.candidates = labelCandidates(model, P, t, scale);
+  }
+  const candidates = cache.candidates;
+  if (candidates.crowded) return plan;
+  plan.away = candidates.away;
+  const w = t.width; const h = t.height;
+  const boxH = LABEL_BOX.h * scale;
   const placed = new Map();
   // Claims the box of a label of `chars` characters centred at (sx, sy) if it is on screen
   // and overlaps no box placed (`force`: claims it anyway, for the touched elements, which
@@ -145,41 +190,33 @@ export function labelPlan(painter, model, state, forced = []) {
     return true;
   };
   const at = (x, y) => t.toScreen(x, y);
-  // A vertex label sits VERTEX_LABEL_PX beside its disc (drawLabels): its box is there.
-  const vx = (v) => screen[2 * v] + VERTEX_LABEL_PX * scale * awayX(plan.away, v);
-  const vy = (v) => screen[2 * v + 1] - VERTEX_LABEL_PX * scale * awayY(plan.away, v);
-  const edgeMid = (e) => {
-    const a = model.weShown.edges[8 * e]; const b = model.weShown.edges[8 * e + 1];
-    return [(screen[2 * a] + screen[2 * b]) / 2, (screen[2 * a + 1] + screen[2 * b + 1]) / 2];
-  };
   // The touched elements' boxes first (they are drawn whatever the overlap).
-  for (const v of plan.vertices) fits(vx(v), vy(v), vLabel(v).length, true);
+  const offset = VERTEX_LABEL_PX * scale;
+  for (const v of plan.vertices) {
+    const [x, y] = at(P[3 * v], P[3 * v + 1]);
+    fits(x + offset * awayX(plan.away, v), y - offset * awayY(plan.away, v), vLabel(v).length, true);
+  }
   for (const f of plan.faces) if (hasCorners(model, f)) fits(...at(...centroid(cornersOf(model, f), P)), fLabel(f).length, true);
-  for (const e of plan.edges) if (model.weShown.edges[8 * e] >= 0 && model.weShown.edges[8 * e + 1] >= 0) fits(...edgeMid(e), eLabel(e).length, true);
-  // Only what is on screen is considered further (no work, no string, per element off it):
-  // a zoomed-in view of a million faces costs a pass over numbers only.
-  const onScreen = (x, y) => x >= 0 && x <= w && y >= 0 && y <= h;
-  for (let v = 0; v < model.V; v += 1) {
-    const x = vx(v); const y = vy(v);
-    if (onScreen(x, y) && vertexSeen(v) && !plan.forced.has(key('vertex', v)) && fits(x, y, labelChars(v))) plan.vertices.push(v);
+  for (const e of plan.edges) {
+    const a = model.weShown.edges[8 * e]; const b = model.weShown.edges[8 * e + 1];
+    if (a >= 0 && b >= 0) fits(...at((P[3 * a] + P[3 * b]) / 2, (P[3 * a + 1] + P[3 * b + 1]) / 2), eLabel(e).length, true);
   }
-  const { faceOffsets: o, faceVertices: c } = model;
-  for (let f = 0; f < faceCount(model); f += 1) {
-    const n = o[f + 1] - o[f];
-    if (!n) continue;
-    let x = 0; let y = 0;
-    for (let i = o[f]; i < o[f + 1]; i += 1) { x += screen[2 * c[i]]; y += screen[2 * c[i] + 1]; }
-    x /= n; y /= n;
-    if (onScreen(x, y) && faceSeen(f) && !plan.forced.has(key('face', f)) && fits(x, y, labelChars(f))) plan.faces.push(f);
-  }
-  const ends = model.weShown.edges;
-  for (let e = 0; e < E; e += 1) {
-    const a = ends[8 * e]; const b = ends[8 * e + 1];
-    if (a < 0 || b < 0) continue;
-    const x = (screen[2 * a] + screen[2 * b]) / 2; const y = (screen[2 * a + 1] + screen[2 * b + 1]) / 2;
-    if (onScreen(x, y) && edgeOk(e) && !plan.forced.has(key('edge', e)) && fits(x, y, labelChars(e))) plan.edges.push(e);
-  }
+  // Then the candidates on screen, in order: a pass over them only, never over the mesh.
+  const place = (list, kind, out) => {
+    for (let k = 0; k < list.length; k += 3) {
+      const i = list[k];
+      if (!plan.forced.has(key(kind, i)) && fits(list[k + 1], list[k + 2], labelChars(i))) out.push(i);
+    }
+  };
+  place(candidates.vertices, 'vertex', plan.vertices);
+  place(candidates.faces, 'face', plan.faces);
+  place(candidates.edges, 'edge', plan.edges);
   return plan;
+}
+
+// One per lesson view: the label candidates of the last scene and view (labelPlan).
+export function createLabelCache() {
+  return { key: null, candidates: null };
 }
 
 export function drawLabels(painter, model, state, colors, plan) {
