@@ -281,7 +281,7 @@ export interface ChangeRecord {
   /** Euler operations: the algorithm's lines; steps[i].phase indexes them. */
   phases?: string[];
   positions?: Array<{ vertex: number; before: number[]; after: number[]; step: number }>;
-  /** With apply(op, {costs: true}): the entries each representation read to find what to change and the entries it wrote. */
+  /** With apply(op, {costs: true}): the entries each representation read to find what to change and the entries it wrote; with {costs: 'winged-edge'}, the winged edge's alone. */
   costs?: Partial<Record<Representation, EditCost>>;
 }
 /**
@@ -374,6 +374,8 @@ export interface Mesh {
   dispose(): void;
   wingedEdge(): WingedEdgeTables;
   wingedEdgeArrays(): WingedEdgeArrays;
+  /** The faces as the winged edge holds them now (CSR), each from its first corner; a removed face has no corners. */
+  faceSet(): { faceOffsets: Int32Array; faceVertices: Int32Array };
   tables(representation: Representation, options?: { limit?: number; offset?: number }): Record<string, MeshTable>;
   edgesAroundVertex(v: number): Int32Array;
   facesAroundVertex(v: number): Int32Array;
@@ -400,7 +402,7 @@ export interface Mesh {
   setVertexEdge(v: number, e: number): ChangeRecord;
   checkSetFaceEdge(f: number, e: number): CheckResult;
   setFaceEdge(f: number, e: number): ChangeRecord;
-  apply(operation: MeshOperation, options?: { costs?: boolean }): ChangeRecord;
+  apply(operation: MeshOperation, options?: { costs?: boolean | 'winged-edge' }): ChangeRecord;
   splitEdge(e: number, t?: number): ChangeRecord;
   splitFace(f: number, a: number, b: number): ChangeRecord;
   joinFaces(e: number): ChangeRecord;

@@ -289,6 +289,19 @@ val mesh_format(val positions, val face_offsets, val face_vertices, const std::s
     });
 }
 
+// The faces as the winged edge holds them now, each from its first corner, a removed face
+// with no corners: {faceOffsets, faceVertices}, the face set the other representations are
+// derived from, read without deriving them (one walk around each face).
+val mesh_face_set(int32_t handle) {
+    return guarded([&] {
+        const IndexedMesh m = entry(handle).winged.face_set();
+        val r = val::object();
+        r.set("faceOffsets", to_typed_array(m.face_offsets));
+        r.set("faceVertices", to_typed_array(m.face_vertices));
+        return r;
+    });
+}
+
 // The edited mesh as a file: the live face set (gaps dropped, numbered as compact() would).
 val mesh_export(int32_t handle, const std::string& format) {
     return guarded([&] {
@@ -344,6 +357,7 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshValidateIndexed", &validate_indexed_mesh);
     emscripten::function("meshNamed", &named_mesh);
     emscripten::function("meshExport", &mesh_export);
+    emscripten::function("meshFaceSet", &mesh_face_set);
     emscripten::function("meshParse", &mesh_parse);
     emscripten::function("meshLimits", &mesh_limits);
     emscripten::function("meshFormat", &mesh_format);

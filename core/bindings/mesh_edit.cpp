@@ -77,14 +77,16 @@ val change_value(const ChangeRecord& c) {
 }
 
 // {[representation]: {reads, writes}}
+val cost_value(const EditCost& cost) {
+    val one = val::object();
+    one.set("reads", static_cast<double>(cost.reads));
+    one.set("writes", static_cast<double>(cost.writes));
+    return one;
+}
+
 val costs_value(const EditCosts& costs) {
     val out = val::object();
-    for (int k = 0; k < kRepresentationCount; ++k) {
-        val one = val::object();
-        one.set("reads", static_cast<double>(costs[k].reads));
-        one.set("writes", static_cast<double>(costs[k].writes));
-        out.set(representation_key(static_cast<Representation>(k)), one);
-    }
+    for (int k = 0; k < kRepresentationCount; ++k) out.set(representation_key(static_cast<Representation>(k)), cost_value(costs[k]));
     return out;
 }
 
@@ -121,7 +123,9 @@ val mesh_edit_cost_growth(const std::string& name, const val& sizes) {
 // entries written: the winged edge's from the change record, the others by comparing their
 // derivations before and after, which the cache hands over rather than copies; the lesson
 // asks it only for the edit a person just made).
-val mesh_edit(int32_t handle, const std::string& name, const val& args, bool check, bool cost) {
+// cost: 0 none; 1 every representation (the others derived before and after: O(mesh));
+// 2 the winged edge alone (reads from its queries, writes from the record: O(the edit)).
+val mesh_edit(int32_t handle, const std::string& name, const val& args, bool check, int32_t cost) {
     return guarded([&] {
         MeshEntry& me = entry(handle);
         WingedEdgeMesh& w = me.winged;
@@ -135,15 +139,23 @@ val mesh_edit(int32_t handle, const std::string& name, const val& args, bool che
             r.set("message", verdict.message);
             return r;
         }
+        require(cost >= 0 && cost <= 2, "invalid-argument", "cost must be 0 (none), 1 (every representation) or 2 (the winged edge)");
         std::unique_ptr<Representations> before_reps;
         std::array<int64_t, kRepresentationCount> reads{};
-        if (cost && w.check(op).ok) {
+        int64_t winged_reads = -1;
+        if (cost == 1 && w.check(op).ok) {
             reads = edit_reads(op, w, me.representations.of(w));
             before_reps = me.representations.take(w);
         }
+        if (cost == 2 && w.check(op).ok) winged_reads = winged_edit_reads(op, w);
         const ChangeRecord c = w.apply(op);
         val r = change_value(c);
         if (before_reps) r.set("costs", costs_value(edit_costs(reads, c, *before_reps, w, me.representations.of(w))));
+        if (winged_reads >= 0) {
+            val costs = val::object();
+            costs.set(representation_key(Representation::WingedEdge), cost_value({winged_reads, playback_writes(c)}));
+            r.set("costs", costs);
+        }
         return r;
     });
 }

@@ -24,15 +24,11 @@ const char* locate_description(Locate locate) {
     return "";
 }
 
-std::array<int64_t, kRepresentationCount> edit_reads(const Operation& op, const WingedEdgeMesh& winged, const Representations& reps) {
-    std::array<int64_t, kRepresentationCount> reads{};
-    // Each representation answers with its own reader; the answers agree (test_representations),
-    // so the winged edge's answer says which elements to ask about next.
-    const auto ask = [&](QueryKind kind, int32_t element) {
-        const auto answers = answer_query(kind, element, reps, winged);
-        for (int r = 0; r < kRepresentationCount; ++r) reads[r] += static_cast<int64_t>(answers[r].entries_read);
-        return answers[static_cast<int>(Representation::WingedEdge)].answer;
-    };
+namespace {
+
+// The queries `op` asks to find what it rewrites (its entry's Locate), each through `ask`,
+// which answers as the winged edge does and counts what it read.
+template <class Ask> void locate(const Operation& op, const WingedEdgeMesh& winged, Ask&& ask) {
     const auto element = static_cast<int32_t>(op.args[0]);
     switch (op.entry->locate) {
     case Locate::EdgeSides:
@@ -46,6 +42,29 @@ std::array<int64_t, kRepresentationCount> edit_reads(const Operation& op, const 
     case Locate::FaceSides: ask(QueryKind::EdgesOfFace, element); break;
     case Locate::VertexStar: ask(QueryKind::EdgesAroundVertex, element); break;
     }
+}
+
+} // namespace
+
+std::array<int64_t, kRepresentationCount> edit_reads(const Operation& op, const WingedEdgeMesh& winged, const Representations& reps) {
+    std::array<int64_t, kRepresentationCount> reads{};
+    // Each representation answers with its own reader; the answers agree (test_representations),
+    // so the winged edge's answer says which elements to ask about next.
+    locate(op, winged, [&](QueryKind kind, int32_t element) {
+        const auto answers = answer_query(kind, element, reps, winged);
+        for (int r = 0; r < kRepresentationCount; ++r) reads[r] += static_cast<int64_t>(answers[r].entries_read);
+        return answers[static_cast<int>(Representation::WingedEdge)].answer;
+    });
+    return reads;
+}
+
+int64_t winged_edit_reads(const Operation& op, const WingedEdgeMesh& winged) {
+    int64_t reads = 0;
+    locate(op, winged, [&](QueryKind kind, int32_t element) {
+        const QueryAnswer a = winged_edge_answer(kind, element, winged);
+        reads += static_cast<int64_t>(a.entries_read);
+        return a.answer;
+    });
     return reads;
 }
 

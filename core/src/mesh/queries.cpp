@@ -420,12 +420,23 @@ QueryKind query_kind(const std::string& name) {
                                      "or neighbours-of-face");
 }
 
-std::array<QueryAnswer, kRepresentationCount> answer_query(QueryKind kind, int32_t element,
-                                                           const Representations& reps,
-                                                           const WingedEdgeMesh& w) {
+namespace {
+void check_query_element(QueryKind kind, int32_t element, const WingedEdgeMesh& w) {
     const bool of_vertex = kind == QueryKind::FacesAroundVertex || kind == QueryKind::EdgesAroundVertex;
     const bool of_edge = kind == QueryKind::FacesOfEdge;
     require_ok(of_vertex ? w.check_element(Vertex(element)) : of_edge ? w.check_element(Edge(element)) : w.check_element(Face(element)));
+}
+} // namespace
+
+QueryAnswer winged_edge_answer(QueryKind kind, int32_t element, const WingedEdgeMesh& w) {
+    check_query_element(kind, element, w);
+    return winged_edge_query(kind, element, w);
+}
+
+std::array<QueryAnswer, kRepresentationCount> answer_query(QueryKind kind, int32_t element,
+                                                           const Representations& reps,
+                                                           const WingedEdgeMesh& w) {
+    check_query_element(kind, element, w);
     return {independent_faces_query(kind, element, reps.independent_faces, reps.corner_edge_names, w),
             vertex_face_tables_query(kind, element, reps.vertex_face_tables, reps.corner_edge_names, w),
             adjacency_lists_query(kind, element, reps.adjacency_lists),

@@ -329,3 +329,47 @@ test('a big picture drawn in pieces over frames equals the same picture drawn at
   assert.ok(coarse > 0.001, `the proxy differs from the whole mesh (${(100 * coarse).toFixed(3)}%)`);
   assert.deepEqual(page.problems, []);
 });
+
+test('an edit on a 104,000-face sphere: the winged edge\'s cost alone, said why, the chart beside it; the tables and the faces follow the edit as the core holds them', async () => {
+  const page = await openMesh();
+  assert.ok(await commit(page, { meshKind: 'sphere', sphere: { slices: 260, stacks: 201 } }));
+  await page.waitForFunction(() => window.wingspline.model?.F === 104000);
+  // Flip an edge of the middle ring with the edit panel's key, the edge picked as the pointer would.
+  const e = await page.evaluate(() => {
+    const m = window.wingspline.model;
+    const v = 1 + 99 * 260 + 130;
+    for (let e = 0; e < m.E; e += 1) if (m.we.edges[8 * e] === v && m.mesh.check({ op: 'flip-edge', e }).ok) return e;
+    return -1;
+  });
+  assert.ok(e >= 0);
+  await page.evaluate((edge) => { window.wingspline.view.selection.pick = { kind: 'edge', index: edge }; }, e);
+  await page.click('#walk-title');
+  await page.keyboard.press('f');
+  await page.waitForFunction(() => window.wingspline.state.ops.length === 1);
+  await page.waitForFunction(() => document.querySelector('#edit-cost-note')?.textContent.includes('only the winged edge is counted'));
+  const shown = await page.evaluate(() => ({
+    rows: [...document.querySelectorAll('#edit-costs tbody tr')].map((r) => r.dataset.representation),
+    reads: Number(document.querySelector('#edit-costs [data-cost=reads]').textContent),
+    note: document.querySelector('#edit-cost-note').textContent,
+    chart: !document.querySelector('#edit-growth')?.closest('[hidden]'),
+  }));
+  assert.deepEqual(shown.rows, ['winged-edge']);
+  // A flip finds the faces of its edge and their sides: 2 + 7 + 7 entries (the lecture's hand
+  // count, edit.test.mjs), whatever the mesh's size.
+  assert.equal(shown.reads, 16);
+  assert.match(shown.note, /104,000 faces/);
+  assert.match(shown.note, /search the whole mesh/);
+  assert.ok(shown.chart, 'the chart against mesh size is shown');
+  // What the page keeps (read again only where the edit wrote) is what the core holds.
+  const same = await page.evaluate(() => {
+    const m = window.wingspline.model;
+    const whole = m.mesh.wingedEdgeArrays();
+    const faces = m.mesh.faceSet();
+    const eq = (a, b) => a.length === b.length && a.every((x, i) => x === b[i]);
+    return eq(m.we.edges, whole.edges) && eq(m.we.vertexEdge, whole.vertexEdge) && eq(m.we.faceEdge, whole.faceEdge) && eq(m.we.positions, whole.positions)
+      && eq(m.faceOffsets, faces.faceOffsets) && eq(m.faceVertices, faces.faceVertices);
+  });
+  assert.ok(same);
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

@@ -365,3 +365,42 @@ test('collapseEdge on a polygon mesh leaves a vertex of valence 2 between two qu
     assert.equal(mesh.edgesAroundVertex(2).length, 2);
   });
 });
+
+test("apply(op, {costs: 'winged-edge'}): the winged edge's count alone equals its entry of the full count, on 400 random edits; flip e3 reads 16 and writes its playback's lines", () => {
+  withLecture((mesh) => {
+    const c = mesh.apply({ op: 'flip-edge', e: 2 }, { costs: 'winged-edge' });
+    assert.deepEqual(Object.keys(c.costs), ['winged-edge']);
+    // The hand count of the full test above: 2 + 7 + 7 reads; one write per assignment (a
+    // flip moves no vertex).
+    assert.equal(c.costs['winged-edge'].reads, 16);
+    assert.equal(c.costs['winged-edge'].writes, c.steps.filter((s) => s.field !== 'firstCorner').length);
+    assert.deepEqual(c.positions, []);
+  });
+  const ops = api.meshOperations.operations;
+  let compared = 0;
+  for (let seed = 1; seed <= 60 && compared < 400; seed += 1) {
+    const rnd = random(seed);
+    const input = [api.lectureExample(), api.generateMesh('cube'), api.generateMesh('sphere', { slices: 7, stacks: 5 }), api.generateMesh('grid', { nx: 3, ny: 4 })][seed % 4];
+    const a = api.buildMesh(input);
+    const b = api.buildMesh(input);
+    try {
+      for (let step = 0; step < 20; step += 1) {
+        const op = ops[Math.floor(rnd() * ops.length)];
+        const we = a.wingedEdgeArrays();
+        const total = { vertex: we.vertexEdge.length, edge: we.edges.length / 8, face: we.faceEdge.length };
+        const args = op.arguments.map((x) => (x.kind ? Math.floor(rnd() * total[x.kind]) : [0.5, 0.25][Math.floor(rnd() * 2)]));
+        const operation = { op: op.name, ...Object.fromEntries(op.arguments.map((x, i) => [x.name, args[i]])) };
+        if (!a.check(operation).ok) continue;
+        const full = a.apply(operation, { costs: true });
+        const alone = b.apply(operation, { costs: 'winged-edge' });
+        assert.deepEqual(alone.costs, { 'winged-edge': full.costs['winged-edge'] }, `seed ${seed} ${JSON.stringify(operation)}`);
+        compared += 1;
+      }
+    } finally {
+      a.dispose();
+      b.dispose();
+    }
+  }
+  assert.ok(compared >= 400, `compared ${compared}`);
+  withLecture((mesh) => assert.throws(() => mesh.apply({ op: 'flip-edge', e: 2 }, { costs: 'all' }), (e) => e.code === 'invalid-argument'));
+});

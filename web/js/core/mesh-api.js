@@ -454,10 +454,14 @@ export class Mesh {
   // costs: {[representation]: {reads, writes}} (edit_costs.h: the entries read to find what
   // to change; the entries written, the winged edge's one per line of the playback). The
   // others are compared whole, O(mesh): ask it for one edit, not for a replayed list.
+  // {costs: 'winged-edge'} counts the winged edge alone ({'winged-edge': {reads, writes}}),
+  // O(the edit): what a page does on a mesh too big to derive the others after every edit.
+  /** @param {any} operation @param {{ costs?: boolean | 'winged-edge' }} [options] */
   apply(operation, { costs = false } = {}) {
     const raw = this.#editing();
     const [edit, values] = this.#operationValues(operation);
-    const r = unwrap(raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), false, Boolean(costs)));
+    if (costs !== true && costs !== false && costs !== 'winged-edge') fail('invalid-argument', "costs must be true, false or 'winged-edge'");
+    const r = unwrap(raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), false, costs === 'winged-edge' ? 2 : costs ? 1 : 0));
     this.#setVersion(r.after);
     return readChange(r, this.#edits);
   }
@@ -467,7 +471,7 @@ export class Mesh {
   check(operation, ...args) {
     const raw = this.#editing();
     const [edit, values] = this.#operationValues(typeof operation === 'string' ? this.#positional(operation, args) : operation);
-    const r = unwrap(raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), true, false));
+    const r = unwrap(raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), true, 0));
     return r.allowed ? { ok: true } : { ok: false, code: r.code, message: r.message };
   }
 
@@ -515,6 +519,14 @@ export class Mesh {
   // The mesh as it is now as OFF or OBJ text: a file has no room for gaps, so its vertices
   // and faces are the live ones numbered in order (as compact() would number them).
   format({ format = 'off' } = {}) { return unwrap(this.#raw.meshExport(this.#live(), String(format))).text; }
+
+  // The faces as the winged edge holds them now: {faceOffsets, faceVertices} (Int32Array, CSR),
+  // each face from its first corner, a removed face with no corners (a gap keeps its number).
+  // The face set the other representations are derived from, without deriving them.
+  faceSet() {
+    const r = unwrap(this.#raw.meshFaceSet(this.#live()));
+    return { faceOffsets: r.faceOffsets, faceVertices: r.faceVertices };
+  }
 
   // The gaps: {vertices, edges, faces}, the removed indices (Int32Array, increasing).
   gaps() { return unwrap(this.#raw.meshGaps(this.#live())); }

@@ -44,6 +44,10 @@ const char* locate_description(Locate locate);
 // edit (`winged` and its representations `reps`). `op` must pass winged.check(op).
 std::array<int64_t, kRepresentationCount> edit_reads(const Operation& op, const WingedEdgeMesh& winged, const Representations& reps);
 
+// The winged edge's reads alone (edit_reads' winged-edge entry), without the other
+// representations: O(what it finds), for a mesh too big to derive them after every edit.
+int64_t winged_edit_reads(const Operation& op, const WingedEdgeMesh& winged);
+
 // The winged edge's writes: the lines of the edit's playback (see above).
 int64_t playback_writes(const ChangeRecord& change);
 

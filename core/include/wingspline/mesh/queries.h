@@ -30,6 +30,10 @@ struct QueryAnswer {
     std::size_t entries_read = 0;
 };
 
+// The winged edge's answer alone (answer_query's winged-edge entry), needing no other
+// representation. Throws as answer_query does.
+QueryAnswer winged_edge_answer(QueryKind kind, int32_t element, const WingedEdgeMesh& w);
+
 // All six answers in Representation order. Throws Error("invalid-element") when `element`
 // is not a vertex / face / edge of the mesh (as the kind requires).
 std::array<QueryAnswer, kRepresentationCount> answer_query(QueryKind kind, int32_t element,

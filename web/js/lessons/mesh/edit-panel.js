@@ -290,8 +290,15 @@ export function createEditPanel(ctx, selection, { pick }) {
     const words = [`The winged edge wrote ${we.writes} entries (one per line of the playback above: ${visibleSteps(record).length} lines) and read ${we.reads} to find ${finds}: only the records around them.`];
     const g = growthOf(record.op);
     const last = COST_FACES.length - 1;
-    const searching = g.refused ? [] : Object.keys(cost).filter((rep) => g.reads[last][rep] > g.reads[0][rep]);
-    if (searching.length) {
+    // On a big mesh the core counted the winged edge alone (ui/mesh/mesh-source.js,
+    // COUNTED_COSTS_FACES): the others are in the chart, measured on grids.
+    const alone = Object.keys(cost).length === 1;
+    const grows = g.refused ? [] : Object.keys(g.reads[0]).filter((rep) => g.reads[last][rep] > g.reads[0][rep]);
+    const searching = alone ? [] : grows.filter((rep) => rep in cost);
+    if (alone) {
+      words.push(`On a mesh of ${count(model.F)} faces only the winged edge is counted after each edit: counting the other representations means building them again before and after the edit, itself a pass over every face, the very cost the lesson warns about.`,
+        g.refused ? '' : `The chart below gives what the same edit costs each of them on grids up to ${count(COST_FACES[last])} faces${grows.length ? `: the ${listed(grows.map((rep) => REPRESENTATION_NAMES[rep].toLowerCase()))} search the whole mesh` : ''}.`);
+    } else if (searching.length) {
       const names = searching.map((rep) => `${REPRESENTATION_NAMES[rep].toLowerCase()} (${count(cost[rep].reads)} read, ${count(cost[rep].writes)} written)`);
       words.push(`The ${listed(names)} had to search the whole mesh, all ${count(model.F)} faces, to find ${finds}: they store no way from one element to its neighbours.`,
         `On a grid of ${count(COST_FACES[last])} faces the same edit reads ${listed(searching.map((rep) => `${count(g.reads[last][rep])} (${REPRESENTATION_NAMES[rep].toLowerCase()})`))}; the winged edge still reads ${count(g.reads[last]['winged-edge'])}.`);
@@ -299,9 +306,9 @@ export function createEditPanel(ctx, selection, { pick }) {
       words.push(`Every representation finds ${finds} from the element itself here, without a search: the cost does not grow with the mesh (chart below).`);
     }
     words.push('Written counts, for the winged edge, each assignment its algorithm made (an entry written twice is two); for the others, the entries that differ before and after.');
-    costNote.textContent = words.join(' ');
+    costNote.textContent = words.filter(Boolean).join(' ');
     growth.root.hidden = Boolean(g.refused);
-    growthNote.textContent = g.refused ? `No chart against mesh size: on a grid of triangles ${g.refused}.` : `The winged edge's line is flat: its cost depends on the neighbourhood, not on F.${searching.length ? ' A searching representation\'s line climbs with F.' : ''}`;
+    growthNote.textContent = g.refused ? `No chart against mesh size: on a grid of triangles ${g.refused}.` : `The winged edge's line is flat: its cost depends on the neighbourhood, not on F.${grows.length ? ' A searching representation\'s line climbs with F.' : ''}`;
     if (!g.refused) growth.update(g);
   }
 

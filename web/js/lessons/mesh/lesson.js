@@ -11,6 +11,7 @@ import { faceCsr } from '../../ui/mesh/mesh-choice.js';
 import { MESH_KINDS, MESH_SIZES, IMPORTED_CONTENT } from './choices.js';
 import { arraysAtStep, visibleSteps } from './edit-playback.js';
 import { normaliseSteps, walkFrames } from '../../ui/mesh/walk.js';
+import { followEdit } from '../../ui/mesh/winged-arrays.js';
 import { drawMesh, createBaseCache } from '../../ui/mesh/draw.js';
 import { LABEL_LIMIT } from '../../ui/mesh/label-plan.js';
 import { viewRotation, projectAll, unprojectDelta, facesAway, fitProjected } from '../../ui/mesh/view.js';
@@ -130,13 +131,21 @@ function createDerived() {
 }
 
 function wingedTables(derived, entry, keys) {
+  const previous = derived.source === keys.source ? derived.version : null;
   if (derived.topology !== keys.topology) {
     const sameSource = derived.source === keys.source;
     Object.assign(derived, { source: keys.source, topology: keys.topology, version: null, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, faces: null, gaps: null, lastChange: sameSource ? derived.lastChange : null });
   }
   if (derived.version !== keys.version) {
+    // One edit since the tables were read: only the rows its record names are read again
+    // (ui/mesh/winged-arrays.js); anything else (another mesh, undo, a move, a compact)
+    // reads them whole.
+    const record = entry.lastOperation;
+    const id = entry.mesh.id;
+    const follows = derived.we && record?.rows && previous === `${id}.${record.before.topology}.${record.before.geometry}`
+      && keys.version === `${id}.${record.after.topology}.${record.after.geometry}`;
     derived.version = keys.version;
-    derived.we = entry.mesh.wingedEdgeArrays();
+    derived.we = follows ? followEdit(derived.we, entry.mesh, record) : entry.mesh.wingedEdgeArrays();
     derived.planes = null;
     derived.reps = null;
     derived.storage = null;
@@ -166,7 +175,9 @@ function compute(view, state, ctx) {
   // After an edit the faces are the mesh's own (a removed face is a gap: no corners).
   const edited = entry.ops.length > 0;
   // Faces as CSR (ui/mesh/mesh-choice.js faceCsr); a removed face has no corners.
-  const csr = edited ? (derived.faces ??= faceCsr(entry.mesh.tables('vertex-face-tables').faces.arrays)) : entry.csr;
+  // Read from the winged edge (faceSet), not from the vertex and face tables, which would
+  // derive every other representation (seconds on a million faces).
+  const csr = edited ? (derived.faces ??= faceCsr(entry.mesh.faceSet())) : entry.csr;
   derived.gaps ??= edited ? entry.mesh.gaps() : { vertices: [], edges: [], faces: [] };
   const gaps = derived.gaps.vertices.length + derived.gaps.edges.length + derived.gaps.faces.length;
   const record = entry.lastOperation;

@@ -15,6 +15,7 @@
 //   setVertexPosition, compact).
 import { takeImportedMesh } from '../../app/mesh-import.js';
 import { sourceKey, sourceOf, faceCsr, createImportedKeys } from './mesh-choice.js';
+import { followPositions } from './winged-arrays.js';
 
 
 const POSITION_EPS = 0; // positions are compared exactly: the state holds the doubles the core got
@@ -34,8 +35,15 @@ const sameOp = (a, b) => {
   return ka.length === Object.keys(b).length && ka.every((k) => (Array.isArray(a[k]) ? Array.isArray(b[k]) && a[k].length === b[k].length && a[k].every((x, i) => x === b[k][i]) : a[k] === b[k]));
 };
 
+// Above this many faces the newest edit counts the winged edge's cost alone: counting the
+// other representations derives them before and after the edit (a pass over the whole mesh,
+// about a second at a million faces), the very cost the lesson warns about. What the same
+// edit costs them at every size is the edit panel's chart (edit_costs.h, edit_cost_growth).
+export const COUNTED_COSTS_FACES = 100_000;
+
 // One operation of the state on the live mesh; returns the change record the edit player
 // shows (a move keeps the previous one; compact has none: it renumbers everything).
+// `newest`: false, or how its cost is counted (apply's costs: true or 'winged-edge').
 function applyOne(mesh, operation, previous, newest) {
   if (operation.op === 'move-vertex') {
     mesh.setVertexPosition(operation.v, operation.p);
@@ -107,10 +115,18 @@ export function createMeshSource() {
     if (live.ops.length === ops.length) return;
     // Take the moves back first: the new operations run where the older ones left the mesh.
     applyMoves({ moved: [] });
+    // The positions before the moves follow each edit's record (the vertices it moved or
+    // added), not a copy of the whole table per edit; a compact renumbers everything.
+    let whole = false;
     for (let i = live.ops.length; i < ops.length; i += 1) {
       try {
         // The newest edit also counts what each representation rewrote (the panel shows it).
-        live.lastOperation = applyOne(live.mesh, ops[i], live.lastOperation, i === ops.length - 1);
+        const newest = i === ops.length - 1 && (live.csr.offsets.length - 1 > COUNTED_COSTS_FACES ? 'winged-edge' : true);
+        const record = applyOne(live.mesh, ops[i], live.lastOperation, newest);
+        if (ops[i].op === 'compact') whole = true;
+        else if (ops[i].op === 'move-vertex') live.base.set(ops[i].p, 3 * ops[i].v);
+        else if (!whole) live.base = followPositions(live.base, live.mesh, record);
+        live.lastOperation = record;
       } catch (err) {
         err.message = `Operation ${i + 1} (${ops[i].op}) was refused: ${err.message}`;
         live.base = Float64Array.from(live.mesh.wingedEdgeArrays().positions);
@@ -118,7 +134,7 @@ export function createMeshSource() {
       }
       live.ops.push(structuredClone(ops[i]));
     }
-    live.base = Float64Array.from(live.mesh.wingedEdgeArrays().positions);
+    if (whole) live.base = Float64Array.from(live.mesh.wingedEdgeArrays().positions);
   }
 
   return {

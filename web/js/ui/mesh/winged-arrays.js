@@ -1,0 +1,88 @@
+// @ts-check
+// The winged-edge tables as flat arrays (mesh.wingedEdgeArrays(): positions, vertexEdge,
+// edges, faceEdge, edgeFields), kept in step with the mesh after an edit by reading again only
+// the rows its change record names: the rows it rewrote, the elements it added and removed
+// and the vertices it moved. Copying the whole tables after every edit cost about 0.6 s on a
+// million faces; an edit touches a handful of rows (docs/benchmarks.md, "ui_edit").
+// Offers: followEdit(we, mesh, record) -> the arrays after the edit (the same arrays written
+//   in place when the added rows fit, otherwise new ones with room to grow);
+//   followPositions(positions, mesh, record) -> the positions alone, the same way.
+// Needs: the mesh (tables('winged-edge', {offset, limit}) reads rows through views of the
+//   core's own arrays) and its change record (mesh.apply: rows, added, removed, positions).
+
+/** @typedef {{ positions: Float64Array, vertexEdge: Int32Array, edges: Int32Array, faceEdge: Int32Array }} Room */
+/** @typedef {{ positions: Float64Array, vertexEdge: Int32Array, edges: Int32Array, faceEdge: Int32Array, edgeFields: string[], room?: Room }} WingedArrays */
+
+// A view of `n` entries of `buffer`, or a new buffer twice as big with the old entries when it
+// has no room (amortised: appending a row costs O(1)).
+function sized(buffer, n, used) {
+  if (n <= buffer.length) return buffer;
+  const bigger = new /** @type {any} */ (buffer.constructor)(Math.max(n, 2 * buffer.length, 64));
+  bigger.set(buffer.subarray(0, used));
+  return bigger;
+}
+
+/**
+ * @param {WingedArrays} we the arrays before the edit (as wingedEdgeArrays gave them, or as
+ *   this function returned them)
+ * @param {any} mesh the mesh after the edit
+ * @param {{ rows: { table: string, row: number }[], added: { vertices: ArrayLike<number>, edges: ArrayLike<number>, faces: ArrayLike<number> },
+ *   removed: { vertices: ArrayLike<number>, edges: ArrayLike<number>, faces: ArrayLike<number> }, positions: { vertex: number }[] }} record
+ * @returns {WingedArrays}
+ */
+export function followEdit(we, mesh, record) {
+  const rows = { vertex: new Set(), edge: new Set(), face: new Set() };
+  for (const r of record.rows) rows[r.table]?.add(r.row);
+  for (const [kind, list] of [['vertex', 'vertices'], ['edge', 'edges'], ['face', 'faces']]) {
+    for (const i of record.added[list]) rows[kind].add(i);
+    for (const i of record.removed[list]) rows[kind].add(i);
+  }
+  for (const p of record.positions) rows.vertex.add(p.vertex);
+  const V = Math.max(we.vertexEdge.length, ...[...rows.vertex].map((v) => v + 1));
+  const E = Math.max(we.edges.length / 8, ...[...rows.edge].map((e) => e + 1));
+  const F = Math.max(we.faceEdge.length, ...[...rows.face].map((f) => f + 1));
+  // Each array's room (a property the spread of `we` does not copy): the typed arrays the
+  // views are cut from.
+  const room = we.room ?? { positions: we.positions, vertexEdge: we.vertexEdge, edges: we.edges, faceEdge: we.faceEdge };
+  const grown = {
+    positions: sized(room.positions, 3 * V, we.positions.length),
+    vertexEdge: sized(room.vertexEdge, V, we.vertexEdge.length),
+    edges: sized(room.edges, 8 * E, we.edges.length),
+    faceEdge: sized(room.faceEdge, F, we.faceEdge.length),
+  };
+  const out = {
+    positions: grown.positions.subarray(0, 3 * V),
+    vertexEdge: grown.vertexEdge.subarray(0, V),
+    edges: grown.edges.subarray(0, 8 * E),
+    faceEdge: grown.faceEdge.subarray(0, F),
+    edgeFields: we.edgeFields,
+  };
+  Object.defineProperty(out, 'room', { value: grown, enumerable: false });
+  // One row of each table per read: the views make it a copy of that row only.
+  const read = (i) => mesh.tables('winged-edge', { offset: i, limit: 1 });
+  for (const v of rows.vertex) {
+    const { arrays } = read(v).vertices;
+    out.positions.set(arrays.positions, 3 * v);
+    out.vertexEdge[v] = arrays.vertexEdge[0];
+  }
+  for (const e of rows.edge) out.edges.set(read(e).edges.arrays.edges, 8 * e);
+  for (const f of rows.face) out.faceEdge[f] = read(f).faces.arrays.faceEdge[0];
+  return out;
+}
+
+/**
+ * The vertex positions (x, y, z per vertex) after an edit, from `positions` before it: the
+ * vertices the record moved or added read again from the core, the rest kept.
+ * @param {Float64Array & { room?: Float64Array }} positions @param {any} mesh the mesh after the edit
+ * @param {{ added: { vertices: ArrayLike<number> }, positions: { vertex: number }[] }} record
+ * @returns {Float64Array & { room?: Float64Array }}
+ */
+export function followPositions(positions, mesh, record) {
+  const touched = new Set([...record.positions.map((p) => p.vertex), ...Array.from(record.added.vertices)]);
+  const V = Math.max(positions.length / 3, ...[...touched].map((v) => v + 1));
+  const room = sized(positions.room ?? positions, 3 * V, positions.length);
+  const out = /** @type {Float64Array & { room?: Float64Array }} */ (room.subarray(0, 3 * V));
+  Object.defineProperty(out, 'room', { value: room, enumerable: false });
+  for (const v of touched) out.set(mesh.tables('winged-edge', { offset: v, limit: 1 }).vertices.arrays.positions, 3 * v);
+  return out;
+}
