@@ -28,7 +28,9 @@ test('a joint that is G1 but not C1 (legs 1 : 2): a wrong class is explained, th
   await page.locator('#exercise-parametric-1').focus();
   await page.keyboard.press('ArrowLeft');
   assert.equal(await page.locator('#exercise-parametric-0').isChecked(), true);
-  const reasons = await page.evaluate(() => window.wingspline.api.jointReasons().map((r) => r.id));
+  // The statements as the panel offers them (the core's jointReasons, read by the exercises
+  // part the session loaded, not the page's curves part).
+  const reasons = await page.$$eval('input[id^="exercise-why-"]', (inputs) => inputs.map((i) => i.id.slice('exercise-why-'.length)));
   for (const id of ['meet', 'same-direction']) {
     assert.ok(reasons.includes(id), id);
     await page.locator(`#exercise-why-${id}`).focus();
