@@ -243,10 +243,20 @@ export function createEditPanel(ctx, selection, { pick }) {
       ` · edits ${model.editCount}`;
   }
 
+  // What the playback and the costs last showed: a walk step, a hover or a pick updates the
+  // panels too, and must not rebuild the step list, the cost table and the chart (they change
+  // with the edit, the player's step, the mesh's size and the theme only).
+  let playbackShown = null;
+  let costsShown = null;
+  const same = (a, b) => a !== null && b !== null && a.length === b.length && a.every((x, i) => x === b[i]);
+
   function refreshPlayback(model) {
     const record = model.lastOperation;
     const steps = visibleSteps(record);
     const shown = shownSteps();
+    const key = [record, shown, model.lastEdit, model.F, ctx.colors];
+    if (same(key, playbackShown)) return;
+    playbackShown = key;
     lastTitle.textContent = record ? `Last edit: ${EDIT_OP[record.op]?.what(model.lastEdit) ?? record.op} — ${steps.length} assignments`
       : model.lastEdit?.op === 'compact' ? 'Last edit: compact (every table renumbered without its gaps)' : 'Last edit: none yet';
     stepLabel.textContent = record ? `${shown} of ${steps.length}` : '';
@@ -276,6 +286,9 @@ export function createEditPanel(ctx, selection, { pick }) {
   // cost against mesh size: the winged edge's flat, a table without adjacency searching.
   function refreshCosts(model, record) {
     const cost = model.editCost;
+    const key = [record, cost, model.lastEdit, model.F, ctx.colors];
+    if (same(key, costsShown)) return;
+    costsShown = key;
     costNote.hidden = growth.root.hidden = growthNote.hidden = !cost;
     if (!cost || !record) { costs.replaceChildren(); return; }
     costs.replaceChildren(
