@@ -316,3 +316,39 @@ describe('Classroom fixture: saved work this page cannot read', () => {
     assert.notEqual(await page.evaluate(() => localStorage.getItem('wingspline:fixture:state')), newer);
   });
 });
+
+describe('A reload during a write', () => {
+  test('keeps the edit made just before it, even with a link in the address bar this tab had not yet marked as its own', async () => {
+    const lesson = lessonsUnderTest[0];
+    const page = await env.openLesson(new URL(lesson.page, env.site.url).href);
+    await setView(page, awkwardView);
+    await page.evaluate(() => window.wingspline.flush());
+    // What a write under way leaves when the page goes (seen in CI at load 13): its state's
+    // link already in the address bar, not yet marked as this tab's own address.
+    await page.evaluate(() => { for (const k of Object.keys(sessionStorage)) if (k.endsWith(':own-code')) sessionStorage.removeItem(k); });
+    await page.evaluate((v) => window.wingspline.ctx.setView(v), tinyView);
+    await page.reload();
+    await waitReady(page);
+    assert.deepEqual((await stateBits(page)).view, bitsOf(tinyView), 'the edit made just before the reload');
+    assert.deepEqual(page.problems, []);
+  });
+
+  test('opens the saved work, not a link, when the reload started from an address this tab had written before the last save', async () => {
+    const lesson = lessonsUnderTest[0];
+    const page = await env.openLesson(new URL(lesson.page, env.site.url).href);
+    await setView(page, awkwardView);
+    await page.evaluate(() => window.wingspline.flush());
+    const earlier = await page.evaluate(() => window.location.hash);
+    await page.evaluate((v) => window.wingspline.ctx.setView(v), tinyView);
+    await page.evaluate(() => window.wingspline.flush());
+    assert.notEqual(await page.evaluate(() => window.location.hash), earlier);
+    // A reload asked for while the address was still the earlier one (the write then put the
+    // newer code there and saved): the address the page loads is the earlier, its own.
+    await page.evaluate((hash) => window.history.replaceState(null, '', hash), earlier);
+    await page.reload();
+    await waitReady(page);
+    assert.deepEqual((await stateBits(page)).view, bitsOf(tinyView), 'the saved work, with the last edit');
+    assert.doesNotMatch(await page.evaluate(() => window.wingspline.message()), /shared link/);
+    assert.deepEqual(page.problems, []);
+  });
+});

@@ -33,9 +33,32 @@ import { setAsideNow } from './work-history.js';
 const legacyPendingKey = (lesson) => `wingspline:${lesson.id}:pending`;
 // The longest JSON text written as a page goes away (a link code is about a third as long).
 const PAGEHIDE_MAX_CHARS = 2 * MAX_LINK_CHARS;
-// The link code this tab last put in its address bar (session storage survives a reload of
+// The link codes this tab last put in its address bar (session storage survives a reload of
 // the tab): an address that is this tab's own is not a link to open over newer saved work.
+// Several, not the last one only: a reload starts from the address it was asked at, and a
+// write under way may put (and keep) a newer code before the page goes away. Seen in CI at
+// load 13: the reload opened the previous code as a link over the edit just saved.
 const ownCodeKey = (lesson) => `wingspline:${lesson.id}:own-code`;
+const OWN_CODES = 8;
+function ownCodes(lesson) {
+  try {
+    const text = sessionStore()?.getItem(ownCodeKey(lesson)) ?? null;
+    if (text === null) return [];
+    // An earlier build kept one code as it was.
+    const list = text.startsWith('[') ? JSON.parse(text) : [text];
+    return Array.isArray(list) ? list.filter((c) => typeof c === 'string') : [];
+  } catch {
+    return [];
+  }
+}
+function addOwnCode(lesson, code) {
+  try {
+    const list = [code, ...ownCodes(lesson).filter((c) => c !== code)].slice(0, OWN_CODES);
+    sessionStore()?.setItem(ownCodeKey(lesson), JSON.stringify(list));
+  } catch {
+    // storage disabled
+  }
+}
 
 function sessionStore() {
   try {
@@ -135,7 +158,7 @@ export async function restoreState(lesson, { contents } = {}) {
     : saved?.problems.length ? `Part of your saved work was reset (${saved.problems[0]})` : null;
 
   // This tab's own address (a reload) or the saved work's own link is not a link to open.
-  const own = code !== null && (code === record?.code || code === sessionStore()?.getItem(ownCodeKey(lesson)));
+  const own = code !== null && (code === record?.code || ownCodes(lesson).includes(code));
   if (code !== null && !own) {
     try {
       const { state, problems } = await decodeState(lesson, code, { contents });
@@ -293,6 +316,11 @@ export function createPersister(lesson, {
       readDrawing = drawing;
       savedState = state;
       syncWrites += 1; // a write under way (back from the page cache) must not write its older state over this
+      // The address bar holds what this tab last put there: a write under way may have put its
+      // (older) state's link there without yet marking it as this tab's own. Marked now, a
+      // reload opens the work just written, not that link over it.
+      const shown = readHashCode();
+      if (shown !== null) addOwnCode(lesson, shown);
       if (pending === state) {
         pending = null;
         replacing = null;
@@ -410,7 +438,7 @@ export function createPersister(lesson, {
       // This tab's own address is the saved work's only once it is saved: a reload of an
       // address that could not be saved opens it as a link, over the older saved work.
       if (kept) {
-        try { sessionStore()?.setItem(ownCodeKey(lesson), code); } catch { /* storage disabled */ }
+        addOwnCode(lesson, code);
       }
     } finally {
       if (!kept && why && !replacing) replacing = why; // the next write keeps the replaced work
