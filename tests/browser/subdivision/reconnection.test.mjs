@@ -159,6 +159,8 @@ test('a version-2 state (before the reconnection\'s playback) opens with the fin
   await page.setInputFiles('#import-file', { name: 'old.json', mimeType: 'application/json', buffer: Buffer.from(file) });
   await page.waitForFunction(() => window.wingspline.state.phase === 4);
   assert.equal(await page.evaluate(() => window.wingspline.state.reconnect), -1);
+  // The player says so once the panels follow the state (a frame later, at load 13 in CI).
+  await page.waitForFunction(() => document.querySelector('#reconnect-step')?.textContent !== '', null, { timeout: 15000 });
   assert.match(await page.textContent('#reconnect-step'), /^218 of 218$/);
   assert.deepEqual(page.problems, []);
 });
