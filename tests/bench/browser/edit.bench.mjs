@@ -16,23 +16,14 @@
 // Each repetition starts from the sphere as generated (the state's edits cleared, not timed).
 // Never run by npm test.
 //   WINGSPLINE_EDIT_SITES=before=/tmp/dist-old,after=dist node tests/bench/browser/edit.bench.mjs
-import path from 'node:path';
 import { wants, report } from '../wasm/harness.mjs';
-import { startSite, launchBrowser, openPage, repoRoot } from '../../helpers/browser.mjs';
+import { benchSites } from './sites.mjs';
+import { startSite, launchBrowser, openPage } from '../../helpers/browser.mjs';
 import { chooseSphere } from '../../helpers/mesh-page.mjs';
 
 const TASK = 'ui_edit';
 const SPHERES = (process.env.WINGSPLINE_EDIT_SPHERES ?? '20x26x20,250x201x20,1000x501x5').split(',').map((s) => s.split('x').map(Number)); // slices x stacks x repetitions
 const OPERATIONS = ['flip-edge', 'split-edge', 'split-face', 'join-faces', 'collapse-edge', 'poke-face', 'split-vertex'];
-
-function sites() {
-  const spec = process.env.WINGSPLINE_EDIT_SITES;
-  if (!spec) return [{ label: '', root: path.join(repoRoot, 'dist') }];
-  return spec.split(',').map((entry) => {
-    const [label, dir] = entry.split('=');
-    return { label, root: path.resolve(repoRoot, dir) };
-  });
-}
 
 // In the page: one repetition of `op` (its set-up untimed), then its undo and redo.
 async function measureOne(page, op, r, repetitions) {
@@ -95,7 +86,7 @@ async function measureOne(page, op, r, repetitions) {
 
 const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
-for (const { label, root } of wants(TASK) ? sites() : []) {
+for (const { label, root } of wants(TASK) ? benchSites('WINGSPLINE_EDIT_SITES') : []) {
   const site = await startSite({ root });
   const browser = await launchBrowser();
   try {

@@ -11,9 +11,9 @@
 // Never run by npm test.
 //   WINGSPLINE_TAB_SITES=before=/tmp/dist-old,after=dist node tests/bench/browser/tabs.bench.mjs
 // measures several built sites in one run (default: this worktree's dist/).
-import path from 'node:path';
 import { wants, report } from '../wasm/harness.mjs';
-import { startSite, launchBrowser, openPage, repoRoot } from '../../helpers/browser.mjs';
+import { benchSites } from './sites.mjs';
+import { startSite, launchBrowser, openPage } from '../../helpers/browser.mjs';
 import { chooseSphere } from '../../helpers/mesh-page.mjs';
 
 const TASK = 'ui_tab_switch';
@@ -21,15 +21,6 @@ const REPETITIONS = 5;
 const SLICES = 250;
 const STACKS = 201;
 const FACES = 2 * SLICES * (STACKS - 1);
-
-function sites() {
-  const spec = process.env.WINGSPLINE_TAB_SITES;
-  if (!spec) return [{ label: '', root: path.join(repoRoot, 'dist') }];
-  return spec.split(',').map((entry) => {
-    const [label, dir] = entry.split('=');
-    return { label, root: path.resolve(repoRoot, dir) };
-  });
-}
 
 // sphere: docs/benchmarks.md's sphere_100000; otherwise the lecture mesh the page opens with (the
 // issue's yardstick: a switch on any mesh costs what it costs there).
@@ -99,7 +90,7 @@ async function measure(root, sphere) {
 }
 
 if (wants(TASK)) {
-  for (const [sphere, { label, root }] of [true, false].flatMap((x) => sites().map((site) => [x, site]))) {
+  for (const [sphere, { label, root }] of [true, false].flatMap((x) => benchSites('WINGSPLINE_TAB_SITES').map((site) => [x, site]))) {
     const { tabs, times, checksum } = await measure(root, sphere);
     const input = sphere ? `sphere_${FACES}` : 'lecture';
     const site = label ? { site: label } : {};

@@ -12,9 +12,9 @@
 // end starts again (Home, not timed). Never run by npm test.
 //   WINGSPLINE_WALK_SITES=before=/tmp/dist-old,after=dist node tests/bench/browser/walk.bench.mjs
 // measures several built sites in one run (default: this worktree's dist/).
-import path from 'node:path';
 import { wants, report } from '../wasm/harness.mjs';
-import { startSite, launchBrowser, openPage, repoRoot } from '../../helpers/browser.mjs';
+import { benchSites } from './sites.mjs';
+import { startSite, launchBrowser, openPage } from '../../helpers/browser.mjs';
 import { chooseSphere } from '../../helpers/mesh-page.mjs';
 
 const TASK = 'ui_walk_step';
@@ -58,16 +58,7 @@ function summary(times) {
   return { median_ms: sorted[Math.floor(sorted.length / 2)], p95_ms: sorted[Math.floor(0.95 * (sorted.length - 1))] };
 }
 
-function sites() {
-  const spec = process.env.WINGSPLINE_WALK_SITES;
-  if (!spec) return [{ label: '', root: path.join(repoRoot, 'dist') }];
-  return spec.split(',').map((entry) => {
-    const [label, dir] = entry.split('=');
-    return { label, root: path.resolve(repoRoot, dir) };
-  });
-}
-
-for (const { label, root } of wants(TASK) ? sites() : []) {
+for (const { label, root } of wants(TASK) ? benchSites('WINGSPLINE_WALK_SITES') : []) {
   const site = await startSite({ root });
   const browser = await launchBrowser();
   try {
