@@ -19,7 +19,6 @@ import { writeServiceWorkerManifest } from './lib/site-manifest.mjs';
 import { lessonPage } from './lib/lesson-page.mjs';
 import { exerciseIndex } from './lib/exercise-index.mjs';
 import { guidePages } from './lib/guides.mjs';
-import { transformSync, build as esbuild } from 'esbuild';
 
 const jobs = ['-j', '2'];
 
@@ -62,16 +61,18 @@ export async function buildWasm({ bench = false } = {}) {
 // error names, and nothing is bundled, so every module keeps its path and its imports).
 // The lesson pages' budget (300 KB gzip each, docs/architecture.md "Module size") counts
 // what is served; the readable source stays in web/.
-function minified(name, text) {
+// esbuild is a dev dependency that setup() installs, so it is imported when the site is
+// assembled, not when this file is: `npm test` on a clean clone imports this file first.
+function minified(esbuild, name, text) {
   const loader = name.endsWith('.css') ? 'css' : 'js';
-  return transformSync(text, { loader, minify: true, legalComments: 'none', target: 'es2022' }).code;
+  return esbuild.transformSync(text, { loader, minify: true, legalComments: 'none', target: 'es2022' }).code;
 }
 const MINIFIED = /\.(m?js|css)$/;
 
 // Copies src into dst where size or mtime differ; removes what src no longer has. Scripts and
 // style sheets are written minified, with the source's mtime, and rewritten when it changes.
 // `keep`: names in dst written by other steps; `skip`: names in src that are not copied.
-function mirror(src, dst, keep = new Set(), skip = new Set()) {
+function mirror(esbuild, src, dst, keep = new Set(), skip = new Set()) {
   fs.mkdirSync(dst, { recursive: true });
   const wanted = new Set(fs.readdirSync(src).filter((name) => !skip.has(name)));
   for (const name of fs.readdirSync(dst)) {
@@ -82,11 +83,11 @@ function mirror(src, dst, keep = new Set(), skip = new Set()) {
     const to = path.join(dst, name);
     const st = fs.statSync(from);
     if (st.isDirectory()) {
-      mirror(from, to);
+      mirror(esbuild, from, to);
     } else if (MINIFIED.test(name)) {
       const old = fs.existsSync(to) ? fs.statSync(to) : null;
       if (!old || old.mtimeMs !== st.mtimeMs) {
-        fs.writeFileSync(to, minified(name, fs.readFileSync(from, 'utf8')));
+        fs.writeFileSync(to, minified(esbuild, name, fs.readFileSync(from, 'utf8')));
         fs.utimesSync(to, st.atime, st.mtime);
       }
     } else {
@@ -114,10 +115,10 @@ async function lessonPages() {
 // worker) point where they do from the unbundled files. The unbundled minified files stay in
 // dist/js/ for the package, the import worker and the other pages.
 const BUNDLE_DIR = 'bundle';
-async function bundleLessonPages(dist, pages) {
+async function bundleLessonPages(esbuild, dist, pages) {
   const outdir = path.join(dist, 'js', BUNDLE_DIR);
   fs.rmSync(outdir, { recursive: true, force: true });
-  await esbuild({
+  await esbuild.build({
     entryPoints: Object.fromEntries(pages.map((p) => [p.id, path.join(repoRoot, 'web', 'js', 'lessons', p.id, 'page.js')])),
     bundle: true, splitting: true, format: 'esm', outdir, chunkNames: 'chunk-[hash]',
     minify: true, legalComments: 'none', target: 'es2022', logLevel: 'warning',
@@ -131,13 +132,14 @@ export function assembleSite() {
 }
 
 async function assembleSiteNow() {
+  const esbuild = await import('esbuild');
   const dist = path.join(repoRoot, 'dist');
   const pages = await lessonPages();
   // The guides (dist/guide/, from docs/ by scripts/lib/guides.mjs) are pages like the lessons'
   // (their one page module is not bundled: it is not a lesson's).
   const guides = guidePages();
-  mirror(path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.js', 'guide', ...pages.map((p) => p.file), ...guides.map((p) => p.file)]), new Set(['templates']));
-  await bundleLessonPages(dist, pages);
+  mirror(esbuild, path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.js', 'guide', ...pages.map((p) => p.file), ...guides.map((p) => p.file)]), new Set(['templates']));
+  await bundleLessonPages(esbuild, dist, pages);
   pages.push(...guides);
   fs.mkdirSync(path.join(dist, 'guide'), { recursive: true });
   for (const name of fs.readdirSync(path.join(dist, 'guide'))) {
@@ -160,7 +162,7 @@ async function assembleSiteNow() {
     if (file.endsWith('.js')) {
       // Emscripten's glue, minified as the site's scripts are (its names kept: embind reads them).
       if (!old || old.mtimeMs !== st.mtimeMs) {
-        fs.writeFileSync(to, minified(file, fs.readFileSync(from, 'utf8')));
+        fs.writeFileSync(to, minified(esbuild, file, fs.readFileSync(from, 'utf8')));
         fs.utimesSync(to, st.atime, st.mtime);
       }
     } else if (!old || old.size !== st.size || old.mtimeMs < st.mtimeMs) fs.copyFileSync(from, to);
