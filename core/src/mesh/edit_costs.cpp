@@ -2,6 +2,8 @@
 // writes from the change record (winged edge) or by comparing tables (the others).
 #include "wingspline/mesh/edit_costs.h"
 
+#include "cost_grids.h"
+
 #include "wingspline/error.h"
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/queries.h"
@@ -110,27 +112,16 @@ std::vector<int32_t> choices_of(const WingedEdgeMesh& w, const char* query, int3
     throw Error("unknown-query", "no choices query '" + q + "'");
 }
 
-void require_even_grid(int32_t n) {
-    if (n < 2 || n % 2 != 0 || n > 4000)
-        throw Error("invalid-argument", "a cost grid has an even number of quads across, 2 to 4000, not " + std::to_string(n));
-}
-
 } // namespace
 
 Operation grid_operation(const OperationEntry& entry, const WingedEdgeMesh& grid, int32_t n) {
-    require_even_grid(n);
+    cost_grids::require_even(n);
     Operation op{&entry, {kNone, kNone, kNone, kNone}};
     std::size_t chosen = 0;
     for (std::size_t k = 0; k < entry.arguments.size(); ++k) {
         const OperationArgument& a = entry.arguments[k];
         if (k == 0) {
-            // The middle vertex (row n/2, column n/2), the edge from it to its right-hand
-            // neighbour, the face F/2 + n: the same neighbourhood at every even n.
-            const int32_t middle = (n / 2) * (n + 1) + n / 2;
-            int32_t right = kNone;
-            for (const int32_t e : grid.edges_around_vertex(middle))
-                if (grid.edge(e).start + grid.edge(e).end == 2 * middle + 1) right = e;
-            op.args[0] = a.kind == ElementKind::Vertex ? middle : a.kind == ElementKind::Edge ? right : grid.face_count() / 2 + n;
+            op.args[0] = cost_grids::middle(a.kind, grid, n);
         } else if (a.kind == ElementKind::None) {
             op.args[k] = 0.5;
         } else {
@@ -143,29 +134,20 @@ Operation grid_operation(const OperationEntry& entry, const WingedEdgeMesh& grid
 }
 
 EditCosts measure_on_grid(const OperationEntry& entry, int32_t n) {
-    require_even_grid(n);
+    cost_grids::require_even(n);
     WingedEdgeMesh w = WingedEdgeMesh::build(grid(n, n));
     return measure_edit(w, grid_operation(entry, w, n));
 }
 
 EditCostGrowth edit_cost_growth(const OperationEntry& entry, const std::vector<int32_t>& sizes) {
-    constexpr std::array<int32_t, 3> kFit{8, 16, 24};
-    constexpr int32_t kCheck = 32;
+    using cost_grids::kCheck;
     std::array<EditCosts, 3> measured;
-    for (std::size_t i = 0; i < kFit.size(); ++i) measured[i] = measure_on_grid(entry, kFit[i]);
-    // Through (8, y0), (16, y1), (24, y2): Newton's divided differences in steps of h = 8,
-    // exact in integers: y(n) = y0 + d1 (n - 8)/h + d2 (n - 8)(n - 16)/(2 h^2).
-    const auto at = [&](int64_t y0, int64_t y1, int64_t y2, int64_t n) {
-        const int64_t h = 8, d1 = y1 - y0, d2 = y2 - 2 * y1 + y0;
-        const int64_t twice = 2 * h * h * y0 + 2 * h * d1 * (n - 8) + d2 * (n - 8) * (n - 16);
-        if (twice % (2 * h * h) != 0) throw Error("internal-error", "the measured costs are not a whole-number quadratic in n");
-        return twice / (2 * h * h);
-    };
+    for (std::size_t i = 0; i < cost_grids::kFit.size(); ++i) measured[i] = measure_on_grid(entry, cost_grids::kFit[i]);
     const auto evaluate = [&](int32_t n) {
         EditCosts c{};
         for (int r = 0; r < kRepresentationCount; ++r) {
-            c[r].reads = at(measured[0][r].reads, measured[1][r].reads, measured[2][r].reads, n);
-            c[r].writes = at(measured[0][r].writes, measured[1][r].writes, measured[2][r].writes, n);
+            c[r].reads = cost_grids::quadratic_at({measured[0][r].reads, measured[1][r].reads, measured[2][r].reads}, n);
+            c[r].writes = cost_grids::quadratic_at({measured[0][r].writes, measured[1][r].writes, measured[2][r].writes}, n);
         }
         return c;
     };
@@ -173,7 +155,7 @@ EditCostGrowth edit_cost_growth(const OperationEntry& entry, const std::vector<i
         throw Error("internal-error", std::string(entry.name) + ": the counts on a 32 x 32 grid differ from the quadratic through 8, 16 and 24");
     EditCostGrowth out;
     for (const int32_t n : sizes) {
-        require_even_grid(n);
+        cost_grids::require_even(n);
         out.n.push_back(n);
         out.faces.push_back(2 * static_cast<int64_t>(n) * n);
         out.costs.push_back(evaluate(n));

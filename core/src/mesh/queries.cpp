@@ -2,6 +2,9 @@
 // through a Reader that counts every entry it hands out.
 #include "wingspline/mesh/queries.h"
 
+#include "cost_grids.h"
+#include "wingspline/mesh/generators.h"
+
 #include <algorithm>
 
 namespace wingspline::mesh {
@@ -420,11 +423,23 @@ QueryKind query_kind(const std::string& name) {
                                      "or neighbours-of-face");
 }
 
+ElementKind query_element_kind(QueryKind kind) {
+    switch (kind) {
+    case QueryKind::FacesAroundVertex:
+    case QueryKind::EdgesAroundVertex: return ElementKind::Vertex;
+    case QueryKind::FacesOfEdge: return ElementKind::Edge;
+    case QueryKind::EdgesOfFace:
+    case QueryKind::NeighboursOfFace: return ElementKind::Face;
+    }
+    return ElementKind::None;
+}
+
 namespace {
 void check_query_element(QueryKind kind, int32_t element, const WingedEdgeMesh& w) {
-    const bool of_vertex = kind == QueryKind::FacesAroundVertex || kind == QueryKind::EdgesAroundVertex;
-    const bool of_edge = kind == QueryKind::FacesOfEdge;
-    require_ok(of_vertex ? w.check_element(Vertex(element)) : of_edge ? w.check_element(Edge(element)) : w.check_element(Face(element)));
+    const ElementKind of = query_element_kind(kind);
+    require_ok(of == ElementKind::Vertex ? w.check_element(Vertex(element))
+               : of == ElementKind::Edge ? w.check_element(Edge(element))
+                                         : w.check_element(Face(element)));
 }
 } // namespace
 
@@ -443,6 +458,39 @@ std::array<QueryAnswer, kRepresentationCount> answer_query(QueryKind kind, int32
             partial_adjacency_lists_query(kind, element, reps.partial_adjacency_lists),
             edge_list_query(kind, element, reps.edge_list),
             winged_edge_query(kind, element, w)};
+}
+
+// ---------------------------------------------------------------- cost against mesh size
+
+std::array<int64_t, kRepresentationCount> query_reads_on_grid(QueryKind kind, int32_t n) {
+    cost_grids::require_even(n);
+    const IndexedMesh faces = grid(n, n);
+    const WingedEdgeMesh w = WingedEdgeMesh::build(faces);
+    const Representations reps = build_representations(faces, w);
+    const auto answers = answer_query(kind, cost_grids::middle(query_element_kind(kind), w, n), reps, w);
+    std::array<int64_t, kRepresentationCount> reads{};
+    for (int r = 0; r < kRepresentationCount; ++r) reads[r] = static_cast<int64_t>(answers[r].entries_read);
+    return reads;
+}
+
+QueryCostGrowth query_cost_growth(QueryKind kind, const std::vector<int32_t>& sizes) {
+    for (const int32_t n : sizes) cost_grids::require_even(n);
+    std::array<std::array<int64_t, kRepresentationCount>, 3> measured;
+    for (std::size_t i = 0; i < cost_grids::kFit.size(); ++i) measured[i] = query_reads_on_grid(kind, cost_grids::kFit[i]);
+    const auto evaluate = [&](int32_t n) {
+        std::array<int64_t, kRepresentationCount> reads{};
+        for (int r = 0; r < kRepresentationCount; ++r) reads[r] = cost_grids::quadratic_at({measured[0][r], measured[1][r], measured[2][r]}, n);
+        return reads;
+    };
+    if (evaluate(cost_grids::kCheck) != query_reads_on_grid(kind, cost_grids::kCheck))
+        throw Error("internal-error", "query costs: the counts on a 32 x 32 grid differ from the quadratic through 8, 16 and 24");
+    QueryCostGrowth out;
+    for (const int32_t n : sizes) {
+        out.n.push_back(n);
+        out.faces.push_back(2 * static_cast<int64_t>(n) * n);
+        out.reads.push_back(evaluate(n));
+    }
+    return out;
 }
 
 } // namespace wingspline::mesh

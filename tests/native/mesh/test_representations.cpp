@@ -300,3 +300,40 @@ TEST_CASE("a gap left by an edit is read as a face with no corners: one offset, 
     }
     CHECK(tried > 0);
 }
+
+TEST_CASE("query_cost_growth equals real counted grids (968 and 9,800 faces here; 100,352 and 1,002,528 in [.big])", "[mesh][representations][queries]") {
+    constexpr int kWE = static_cast<int>(Representation::WingedEdge);
+    constexpr int kEL = static_cast<int>(Representation::EdgeList);
+    // The lecture's walks at the grid's middle elements (an interior vertex of valence 6, an
+    // interior edge, an interior triangle): the vertex's or face's edge, then per step the
+    // record, (the face or neighbour swept,) the next wing; faces of an edge: L and R.
+    const std::vector<std::pair<QueryKind, int64_t>> walks{
+        {QueryKind::FacesAroundVertex, 1 + 3 * 6}, {QueryKind::EdgesAroundVertex, 1 + 2 * 6},
+        {QueryKind::EdgesOfFace, 1 + 2 * 3},       {QueryKind::NeighboursOfFace, 1 + 3 * 3},
+        {QueryKind::FacesOfEdge, 2}};
+    for (const auto& [kind, winged_reads] : walks) {
+        INFO(static_cast<int>(kind));
+        const QueryCostGrowth g = query_cost_growth(kind, {22, 70});
+        CHECK(g.n == std::vector<int32_t>{22, 70});
+        CHECK(g.faces == std::vector<int64_t>{968, 9800});
+        CHECK(g.reads[0] == query_reads_on_grid(kind, 22));
+        CHECK(g.reads[1] == query_reads_on_grid(kind, 70));
+        CHECK(g.reads[0][kWE] == winged_reads);
+        CHECK(g.reads[1][kWE] == winged_reads);
+    }
+    // Foley's edge list must inspect every edge for a vertex's edges: it grows with E
+    // (E = 3n^2 + 2n on the grid), at least one read per edge at every size up to a million faces.
+    const QueryCostGrowth v = query_cost_growth(QueryKind::EdgesAroundVertex, {22, 70, 224, 708});
+    for (std::size_t i = 0; i < v.n.size(); ++i) {
+        const int64_t n = v.n[i];
+        CHECK(v.reads[i][kEL] >= 3 * n * n + 2 * n);
+    }
+    CHECK_THROWS_AS(query_cost_growth(QueryKind::FacesOfEdge, {21}), wingspline::Error);
+    CHECK_THROWS_AS(query_cost_growth(QueryKind::FacesOfEdge, {4002}), wingspline::Error);
+}
+
+TEST_CASE("query_cost_growth equals real counted grids of 100,352 and 1,002,528 faces", "[.big][mesh][representations][queries]") {
+    const QueryCostGrowth g = query_cost_growth(QueryKind::FacesAroundVertex, {224, 708});
+    CHECK(g.reads[0] == query_reads_on_grid(QueryKind::FacesAroundVertex, 224));
+    CHECK(g.reads[1] == query_reads_on_grid(QueryKind::FacesAroundVertex, 708));
+}

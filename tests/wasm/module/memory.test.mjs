@@ -260,6 +260,8 @@ const cases = [
   }, [['too-large', () => api.subdivide(lecture, { scheme: 'catmull-clark', steps: 16 })], ['unknown-scheme', () => api.subdivisionSteps(lecture, { scheme: 'nope' })],
     ['unknown-scheme', () => api.reconnectionPlayback(lecture, { scheme: 'nope' })], ['unknown-scheme', () => api.limitPositions(lecture, { scheme: 'nope' })]]],
   // An edit's cost against mesh size, measured by the core on small grids.
+  ['queryCostGrowth', REDUCED, () => api.queryCostGrowth('faces-around-vertex', [4, 8]),
+    [['invalid-argument', () => api.queryCostGrowth('edges-of-face', [5])], ['unknown-query', () => api.queryCostGrowth('faces-of-face', [4])]]],
   ['editCostGrowth', REDUCED, () => api.editCostGrowth('flip-edge', [4, 8]),
     [['invalid-argument', () => api.editCostGrowth('flip-edge', [3])], ['unknown-operation', () => api.editCostGrowth('flip-edgy', [4])]]],
   ['subdivideCurve', REDUCED, () => api.subdivideCurve(geometry, 2, { scheme: 'cubic-bspline', closed: true, steps: 3 }),

@@ -595,6 +595,15 @@ function subdivisionArgs(mesh, options, what) {
   return { handle: handleOfMesh(mesh), scheme: o.scheme };
 }
 
+// The grid sizes a cost against mesh size is asked at, as the core takes them: even whole
+// numbers of quads across, 2 to 4000.
+function costGridSizes(sizes) {
+  if (!Array.isArray(sizes) || !sizes.every((n) => Number.isInteger(n) && n >= 2 && n <= 4000 && n % 2 === 0)) {
+    fail('invalid-argument', 'sizes must be even whole numbers of quads across, 2 to 4000');
+  }
+  return Float64Array.from(sizes);
+}
+
 // withSubdivision: the module carries mesh subdivision (wingspline-subdivision,
 // wingspline-meshes, the bench module); the mesh lesson's module (wingspline-mesh) does not,
 // and its API has no subdivide. withEdits: the module edits meshes (all but
@@ -731,6 +740,15 @@ export function createMeshApi(raw, { withSubdivision = true, withEdits = true } 
       return indexedOutput(r, o.layout);
     },
   };
+  // What query `kind` (faces-around-vertex, ...) reads from each representation on grids of
+  // n x n quads (F = 2 n²), one per n in `sizes` (even, 2..4000), at the grid's middle
+  // element: {sizes: [{n, faces}], reads: [{[representation]: entries}]}, measured by the core
+  // on small grids and exact at every size (queries.h, query_cost_growth).
+  meshApi.queryCostGrowth = (kind, sizes) => {
+    const n = costGridSizes(sizes);
+    const r = unwrap(raw.meshQueryCostGrowth(String(kind), n));
+    return { sizes: r.sizes.map((s) => ({ n: s.n, faces: s.faces })), reads: r.reads.map((x) => ({ ...x })) };
+  };
   if (withEdits) {
     // What operation `name` costs each representation on grids of n x n quads (F = 2 n²),
     // one per n in `sizes` (even, 2..4000): {sizes: [{n, faces}], costs: [{[representation]:
@@ -738,11 +756,9 @@ export function createMeshApi(raw, { withSubdivision = true, withEdits = true } 
     // (edit_costs.h, edit_cost_growth). Refusals as check gives them (a triangle grid has
     // no face to split: 'adjacent-corners').
     meshApi.editCostGrowth = (name, sizes) => {
-      if (!Array.isArray(sizes) || !sizes.every((n) => Number.isInteger(n) && n >= 2 && n <= 4000 && n % 2 === 0)) {
-        fail('invalid-argument', 'sizes must be even whole numbers of quads across, 2 to 4000');
-      }
+      const n = costGridSizes(sizes);
       editNamed(meshOperations, name);
-      const r = unwrap(raw.meshEditCostGrowth(String(name), Float64Array.from(sizes)));
+      const r = unwrap(raw.meshEditCostGrowth(String(name), n));
       return { sizes: r.sizes.map((s) => ({ n: s.n, faces: s.faces })), costs: r.costs.map(costsOf) };
     };
   }

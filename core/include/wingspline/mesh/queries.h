@@ -11,9 +11,11 @@
 // corner numbering (Representations::corner_edge_names) are not reads of the representation
 // and are not counted. One entry = one element of one array (a double or an int32).
 #include "wingspline/mesh/representations.h"
+#include "wingspline/mesh/tables.h"
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -39,5 +41,31 @@ QueryAnswer winged_edge_answer(QueryKind kind, int32_t element, const WingedEdge
 std::array<QueryAnswer, kRepresentationCount> answer_query(QueryKind kind, int32_t element,
                                                            const Representations& reps,
                                                            const WingedEdgeMesh& winged);
+
+// ---------------------------------------------------------------- cost against mesh size
+
+// The element a query asks about: a vertex, an edge or a face.
+ElementKind query_element_kind(QueryKind kind);
+
+// Entries each representation reads to answer `kind` at the middle element of a real grid of
+// n x n quads (n even; the element edit_costs.h's grid_operation edits: the middle vertex,
+// the edge to its right, the face F/2 + n).
+std::array<int64_t, kRepresentationCount> query_reads_on_grid(QueryKind kind, int32_t n);
+
+// The same at each grid size in `sizes` (even n up to 4000, F = 2 n^2 up to 32 million):
+// measured on real grids at n = 8, 16, 24, each count fitted exactly by a + b n + c n^2
+// (a table scan reads a fixed number of entries per element; V, E, F are quadratics in n;
+// the walks read a constant), the fit checked against a fourth real grid (n = 32), then
+// evaluated. The lesson's chart shows a million faces without building a million-face mesh
+// and its six representations in the page; tests/native/mesh/test_queries.cpp checks the
+// values against real counted grids up to a million faces. Throws
+// Error("invalid-argument") for a size that is not such an n, Error("internal-error") when
+// the fourth grid disagrees.
+struct QueryCostGrowth {
+    std::vector<int32_t> n;     // quads across, per size
+    std::vector<int64_t> faces; // F = 2 n^2
+    std::vector<std::array<int64_t, kRepresentationCount>> reads;
+};
+QueryCostGrowth query_cost_growth(QueryKind kind, const std::vector<int32_t>& sizes);
 
 } // namespace wingspline::mesh

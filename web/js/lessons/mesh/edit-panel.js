@@ -10,7 +10,7 @@ import { editOps, withEdit } from './edit-ops.js';
 import { visibleSteps, stepText } from './edit-playback.js';
 import { vLabel, eLabel, fLabel } from './labels.js';
 import { exists, whyNot, goneNote, keptCorner } from './live-elements.js';
-import { createGrowthPlot } from './growth.js';
+import { createGrowthPlot, COST_GRIDS, COST_FACES } from './growth.js';
 
 const LABEL = { vertex: vLabel, edge: eLabel, face: fLabel };
 const REPRESENTATION_NAMES = {
@@ -22,11 +22,6 @@ const REPRESENTATION_NAMES = {
   'winged-edge': 'Winged edge',
 };
 
-// The grids the cost of an edit is shown on: n x n quads, F = 2 n² triangles, about a
-// thousand, ten thousand, a hundred thousand and a million faces (n even: the core's
-// edit_cost_growth measures the same neighbourhood at every size).
-const COST_GRIDS = [22, 70, 224, 708];
-const COST_FACES = COST_GRIDS.map((n) => 2 * n * n);
 const count = (x) => x.toLocaleString('en');
 const listed = (names) => (names.length < 2 ? names.join('') : `${names.slice(0, -1).join(', ')} and ${names[names.length - 1]}`);
 

@@ -1,33 +1,41 @@
 // @ts-check
-// Query cost and storage against mesh size: lecture 000's point that the winged
+// Query and edit cost, and storage, against mesh size: lecture 000's point that the winged
 // edge answers "faces around a vertex" in time proportional to the answer while a table
-// without adjacency scans the mesh, as a picture. The core answers every number: generated
-// grids of growing size (GROWTH_SIZES quads across, so F = 2 n^2 triangles), each asked the
-// query at its middle element (mesh.query: entries read per representation) and its
-// storage (mesh.storage: bytes per representation). The page only plots them, on log-log
-// axes, and lists them in a table for the keyboard and screen readers.
+// without adjacency scans the mesh, as a picture. The core answers every number: a query's
+// and an edit's reads at the middle element of grids of n x n quads (F = 2 n² triangles),
+// about a thousand to a million faces (COST_GRIDS; api.queryCostGrowth, api.editCostGrowth:
+// counted on small grids and exact at every size), and the storage of real grids of
+// GROWTH_SIZES (mesh.storage: bytes per representation). The page only plots them, on
+// log-log axes, and lists them in a table for the keyboard and screen readers.
 import { h } from '../../app/dom.js';
 import { plotLabels, plotFontPx } from '../../app/label-layout.js';
 import { createVirtualTable } from '../../ui/virtual-table.js';
 
+// n x n quads: about a thousand, ten thousand, a hundred thousand and a million faces (n even:
+// the core measures the same neighbourhood at every size).
+export const COST_GRIDS = [22, 70, 224, 708];
+export const COST_FACES = COST_GRIDS.map((n) => 2 * n * n);
 export const GROWTH_SIZES = [4, 8, 16, 32, 64, 128];
 
-// {sizes: [{n, faces}], series: {[representation]: number[]}} for one query kind, or for
-// storage (kind null): built once per page and kind (the meshes are freed at once).
-export function growthSeries(api, kind) {
+// {sizes: [{n, faces}], series: {[representation]: number[]}}: what a query kind reads on the
+// COST_GRIDS, from the core.
+export function querySeries(api, kind) {
+  const { sizes, reads } = api.queryCostGrowth(kind, COST_GRIDS);
+  const series = {};
+  for (const one of reads) for (const [rep, n] of Object.entries(one)) (series[rep] ??= []).push(n);
+  return { sizes, series };
+}
+
+// The same for storage in bytes, on real grids of GROWTH_SIZES, built once per page (the
+// meshes are freed at once).
+export function storageSeries(api) {
   const sizes = [];
   const series = {};
   for (const n of GROWTH_SIZES) {
     const mesh = api.buildMesh(api.generateMesh('grid', { nx: n, ny: n, layout: 'csr' }));
     try {
-      const { vertices, edges, faces } = mesh.counts();
-      sizes.push({ n, faces });
-      // The middle element of the grid: an interior vertex of valence 6, an interior edge,
-      // an interior face, whatever the size.
-      const element = { vertex: (n / 2) * (n + 1) + n / 2, face: faces / 2 + n, edge: Math.floor(edges / 2) };
-      const kindOf = kind?.endsWith('vertex') ? 'vertex' : kind === 'faces-of-edge' ? 'edge' : 'face';
-      const answers = kind ? mesh.query(kind, Math.min(element[kindOf], { vertex: vertices, face: faces, edge: edges }[kindOf] - 1)) : mesh.storage();
-      for (const [rep, a] of Object.entries(answers)) (series[rep] ??= []).push(kind ? a.entriesRead : a.bytes);
+      sizes.push({ n, faces: mesh.counts().faces });
+      for (const [rep, a] of Object.entries(mesh.storage())) (series[rep] ??= []).push(a.bytes);
     } finally {
       mesh.dispose();
     }

@@ -5,7 +5,7 @@
 // are virtual (virtual-table.js): a 100,000-face mesh only builds the rows in view, and the
 // adjacency rows ask the core only for those rows.
 import { h, revealInBoxes } from '../../app/dom.js';
-import { createGrowthPlot, growthSeries } from './growth.js';
+import { createGrowthPlot, querySeries, storageSeries, COST_FACES } from './growth.js';
 import { createVirtualTable, headRows } from '../../ui/virtual-table.js';
 import { createStoredEdgeControl } from './stored-edge.js';
 import { findDescriptor } from '../../core/tables.js';
@@ -287,7 +287,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   // The series against mesh size, once per page: storage, and each query kind's.
   const growth = new Map();
   const growthOf = (kind) => {
-    if (!growth.has(kind)) growth.set(kind, growthSeries(ctx.api, kind));
+    if (!growth.has(kind)) growth.set(kind, kind ? querySeries(ctx.api, kind) : storageSeries(ctx.api));
     return growth.get(kind);
   };
   function updateStorage() {
@@ -390,8 +390,8 @@ function createQueryPanel(ctx, growthOf) {
   const cheapestNote = h('p', { class: 'hint' });
   // Where this (small) mesh makes the winged edge look dear: said with the core's numbers.
   const smallNote = h('p', { class: 'hint', id: 'query-small-note' });
-  const queryGrowth = createGrowthPlot(ctx, { id: 'query-growth', yLabel: 'entries read',
-    caption: 'The same query against mesh size: the middle element of grids of 4 × 4 to 128 × 128 quads (the core\'s counts; log-log axes). A line that stays flat reads in proportion to the answer; a rising one scans the mesh.',
+  const queryGrowth = createGrowthPlot(ctx, { id: 'query-growth', yLabel: 'entries read', faces: COST_FACES,
+    caption: 'The same query against mesh size: the middle element of grids of 22 × 22 to 708 × 708 quads, each split into two triangles, about a thousand to a million faces (the core\'s counts; log-log axes). A line that stays flat reads in proportion to the answer; a rising one scans the mesh.',
     names: (rep) => PROS_CONS[rep]?.title ?? rep });
   result.append(table.root, cheapestNote, smallNote, queryGrowth.root);
   const removedNote = h('p', { class: 'hint', id: 'query-removed', 'aria-live': 'polite', hidden: true });
