@@ -121,7 +121,7 @@ async function bundleLessonPages(esbuild, dist, pages) {
   await esbuild.build({
     entryPoints: Object.fromEntries(pages.map((p) => [p.id, path.join(repoRoot, 'web', 'js', 'lessons', p.id, 'page.js')])),
     bundle: true, splitting: true, format: 'esm', outdir, chunkNames: 'chunk-[hash]',
-    minify: true, legalComments: 'none', target: 'es2022', logLevel: 'warning',
+    minify: false, legalComments: 'none', target: 'es2022', logLevel: 'warning',
     // The wasm glue is built into dist/wasm/, not web/; Node's modules are only reached in Node.
     external: ['../../wasm/*', 'node:*'],
   });

@@ -374,8 +374,8 @@ export interface Mesh {
   dispose(): void;
   wingedEdge(): WingedEdgeTables;
   wingedEdgeArrays(): WingedEdgeArrays;
-  /** The faces as the winged edge holds them now (CSR), each from its first corner; a removed face has no corners. */
-  faceSet(): { faceOffsets: Int32Array; faceVertices: Int32Array };
+  /** The faces as the winged edge holds them now (CSR), each from its first corner; a removed face has no corners. `faces`: only those face numbers, in the list's order. */
+  faceSet(options?: { faces?: ArrayLike<number> }): { faceOffsets: Int32Array; faceVertices: Int32Array };
   tables(representation: Representation, options?: { limit?: number; offset?: number }): Record<string, MeshTable>;
   edgesAroundVertex(v: number): Int32Array;
   facesAroundVertex(v: number): Int32Array;

@@ -701,19 +701,19 @@ IndexedMesh WingedEdgeMesh::face_set() const {
     out.face_offsets.reserve(face_edge_.size() + 1);
     out.face_vertices.reserve(2 * edges_.size()); // sides of all faces <= 2E
     for (int32_t f = 0; f < face_count(); ++f) {
-        if (is_deleted(Face(f))) { // a gap left by an edit: a face with no corners, so numbers stay
-            out.face_offsets.push_back(static_cast<int32_t>(out.face_vertices.size()));
-            continue;
-        }
-        const std::vector<int32_t> corners = vertices_of_face(f);
-        const auto first = face_first_corner_.empty()
-                               ? corners.begin()
-                               : std::find(corners.begin(), corners.end(), face_first_corner_[f]);
-        out.face_vertices.insert(out.face_vertices.end(), first, corners.end());
-        out.face_vertices.insert(out.face_vertices.end(), corners.begin(), first);
+        const std::vector<int32_t> corners = face_corners(f);
+        out.face_vertices.insert(out.face_vertices.end(), corners.begin(), corners.end());
         out.face_offsets.push_back(static_cast<int32_t>(out.face_vertices.size()));
     }
     return out;
+}
+
+std::vector<int32_t> WingedEdgeMesh::face_corners(int32_t f) const {
+    if (is_deleted(Face(f))) return {}; // a gap left by an edit: a face with no corners, so numbers stay
+    std::vector<int32_t> corners = vertices_of_face(f);
+    if (!face_first_corner_.empty())
+        std::rotate(corners.begin(), std::find(corners.begin(), corners.end(), face_first_corner_[f]), corners.end());
+    return corners;
 }
 
 IndexedMesh WingedEdgeMesh::live_face_set() const {

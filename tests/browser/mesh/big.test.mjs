@@ -373,3 +373,65 @@ test('an edit on a 104,000-face sphere: the winged edge\'s cost alone, said why,
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+test('edits on a 100,000-face sphere rewrite only what they touched in the GPU\'s buffers; the picture equals the mesh uploaded whole', async () => {
+  const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
+  // Every byte the page sends to a WebGL buffer, counted.
+  await context.addInitScript(() => {
+    window.glBytes = 0;
+    const proto = WebGL2RenderingContext.prototype;
+    const bufferData = proto.bufferData;
+    const bufferSubData = proto.bufferSubData;
+    proto.bufferData = function counted(target, data, ...rest) {
+      window.glBytes += typeof data === 'number' ? data : data?.byteLength ?? 0;
+      return bufferData.call(this, target, data, ...rest);
+    };
+    proto.bufferSubData = function counted(target, offset, data, srcOffset = 0, length = 0) {
+      window.glBytes += length ? length * data.BYTES_PER_ELEMENT : data.byteLength;
+      return bufferSubData.call(this, target, offset, data, srcOffset, length);
+    };
+  });
+  const page = await openLessonIn(context, `${env.site.url}mesh.html`);
+  assert.ok(await commit(page, { meshKind: 'sphere', sphere: SPHERE, mode3d: true }));
+  await page.waitForFunction(() => window.wingspline.model?.F === 100000);
+  const settled = () => page.waitForFunction(() => {
+    const gl = window.wingspline.ctx.stage.gl();
+    return gl.showing === 'whole' && !gl.busy && gl.meshKey?.includes(window.wingspline.model.version);
+  }, null, { timeout: 60000 });
+  await settled();
+  const wholeUpload = await page.evaluate(() => window.glBytes);
+  // Edges and a face of the middle ring, picked as the pointer would, edited by the panel's keys.
+  const { e, f } = await page.evaluate(() => {
+    const m = window.wingspline.model;
+    const v = 1 + 99 * 250 + 125;
+    const e = m.mesh.adjacency('edges-around-vertex', v)[0];
+    return { e, f: m.mesh.adjacency('faces-around-vertex', v + 4)[0] };
+  });
+  await page.click('#walk-title');
+  const sent = [];
+  for (const [kind, index, key] of [['edge', e, 'f'], ['edge', e, 's'], ['face', f, 'k']]) {
+    await page.evaluate(([k, i]) => { window.wingspline.view.selection.pick = { kind: k, index: i }; }, [kind, index]);
+    const before = await page.evaluate(() => ({ bytes: window.glBytes, ops: window.wingspline.state.ops.length }));
+    await page.keyboard.press(key);
+    await page.waitForFunction((n) => window.wingspline.state.ops.length === n + 1, before.ops);
+    await settled();
+    sent.push(await page.evaluate((b) => window.glBytes - b, before.bytes));
+  }
+  // A whole upload sends the positions (12 bytes a vertex) and the triangles (12 bytes each):
+  // over 2 MB here; an edit a few hundred bytes.
+  assert.ok(wholeUpload > 2e6, `the whole mesh: ${wholeUpload} bytes`);
+  assert.ok(sent.every((n) => n > 0 && n < 4096), `bytes sent per edit: ${sent.join(', ')}`);
+  // The followed picture, and the same mesh uploaded whole and drawn at the same view.
+  const followed = await stagePixels(page);
+  await page.evaluate(() => {
+    const m = window.wingspline.model;
+    const gl = window.wingspline.ctx.stage.gl();
+    gl.setMesh('uploaded whole', { positions: m.positions, faceOffsets: m.faceOffsets, faceVertices: m.faceVertices, edges: m.weShown.edges, edgeStride: 8, edgeGap: m.edgeGap, centre: m.centre });
+    gl.redraw();
+  });
+  const whole = await stagePixels(page);
+  const differ = differing(followed, whole, 2);
+  assert.ok(differ < 0.001, `followed and whole differ in ${(100 * differ).toFixed(3)}% of pixels`);
+  assert.deepEqual(page.problems, []);
+  await context.close();
+});

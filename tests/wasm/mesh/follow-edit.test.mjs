@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
-import { followEdit, followPositions } from '../../../web/js/ui/mesh/winged-arrays.js';
+import { followEdit, followPositions, followFaces } from '../../../web/js/ui/mesh/winged-arrays.js';
 import { random } from '../../helpers/seeded-random.mjs';
 
 const api = await loadWingspline({ parts: ['mesh'] });
@@ -30,7 +30,7 @@ function counting(mesh) {
   return { proxy, count };
 }
 
-test('2,000 random edits on six meshes: the followed arrays equal the core\'s tables read whole after every edit', () => {
+test('2,000 random edits on six meshes: the followed arrays and faces equal the core\'s tables and face set read whole after every edit', () => {
   const inputs = [api.lectureExample(), api.generateMesh('tetrahedron'), api.generateMesh('cube'), api.generateMesh('sphere', { slices: 8, stacks: 6 }),
     api.generateMesh('grid', { nx: 4, ny: 3 }), api.foleyExample()];
   const ops = api.meshOperations.operations;
@@ -41,6 +41,8 @@ test('2,000 random edits on six meshes: the followed arrays equal the core\'s ta
     try {
       let we = mesh.wingedEdgeArrays();
       let positions = Float64Array.from(we.positions);
+      const start = mesh.faceSet();
+      let csr = { offsets: start.faceOffsets, vertices: start.faceVertices };
       for (let step = 0; step < 40; step += 1) {
         const op = ops[Math.floor(rnd() * ops.length)];
         const k = mesh.counts();
@@ -53,6 +55,10 @@ test('2,000 random edits on six meshes: the followed arrays equal the core\'s ta
         const before = we.vertexEdge.length + we.edges.length + we.faceEdge.length;
         we = followEdit(we, mesh, record);
         positions = followPositions(positions, mesh, record);
+        const previous = [Array.from(csr.offsets), Array.from(csr.vertices)];
+        const followed = followFaces(csr, mesh, we, record);
+        assert.deepEqual([Array.from(csr.offsets), Array.from(csr.vertices)], previous, 'the faces before the edit are not written');
+        csr = followed;
         if (we.vertexEdge.length + we.edges.length + we.faceEdge.length > before) grew += 1;
         if (record.removed.vertices.length + record.removed.edges.length + record.removed.faces.length) gaps += 1;
         const whole = mesh.wingedEdgeArrays();
@@ -60,6 +66,8 @@ test('2,000 random edits on six meshes: the followed arrays equal the core\'s ta
         assert.deepEqual(flat(we), flat(whole), where);
         assert.deepEqual(Array.from(positions), Array.from(whole.positions), where);
         assert.deepEqual(we.edgeFields, whole.edgeFields);
+        const faces = mesh.faceSet();
+        assert.deepEqual([Array.from(csr.offsets), Array.from(csr.vertices)], [Array.from(faces.faceOffsets), Array.from(faces.faceVertices)], where);
       }
     } finally {
       mesh.dispose();
@@ -95,6 +103,43 @@ test('one edit reads the same rows of a 1,200-face and a 120,000-face sphere: th
   }
   assert.deepEqual(rowsRead[0], rowsRead[1], `rows read per edit: ${JSON.stringify(rowsRead)}`);
   assert.ok(rowsRead[1].every((n) => n < 40), JSON.stringify(rowsRead));
+});
+
+test('one edit reads again the same number of faces of a 1,200-face and a 120,000-face sphere', () => {
+  const facesRead = [];
+  for (const [slices, stacks] of [[30, 21], [300, 201]]) {
+    const mesh = api.buildMesh(api.generateMesh('sphere', { slices, stacks }));
+    try {
+      let we = mesh.wingedEdgeArrays();
+      const start = mesh.faceSet();
+      let csr = { offsets: start.faceOffsets, vertices: start.faceVertices };
+      const v = 1 + (Math.floor((stacks - 1) / 2) - 1) * slices + slices / 2;
+      const e = mesh.adjacency('edges-around-vertex', v)[0];
+      const f = mesh.adjacency('faces-around-vertex', v)[0];
+      const counts = [];
+      for (const operation of [{ op: 'flip-edge', e }, { op: 'split-edge', e, t: 0.5 }, { op: 'poke-face', f }, { op: 'collapse-edge', e, t: 0.5 }]) {
+        const record = mesh.apply(operation);
+        we = followEdit(we, mesh, record);
+        let read = 0;
+        const proxy = new Proxy(mesh, {
+          get(target, key) {
+            if (key === 'faceSet') return (options) => { read += options?.faces?.length ?? Infinity; return target.faceSet(options); };
+            const value = Reflect.get(target, key, target);
+            return typeof value === 'function' ? value.bind(target) : value;
+          },
+        });
+        csr = followFaces(csr, proxy, we, record);
+        counts.push(read);
+      }
+      const whole = mesh.faceSet();
+      assert.deepEqual([Array.from(csr.offsets), Array.from(csr.vertices)], [Array.from(whole.faceOffsets), Array.from(whole.faceVertices)]);
+      facesRead.push(counts);
+    } finally {
+      mesh.dispose();
+    }
+  }
+  assert.deepEqual(facesRead[0], facesRead[1], `faces read per edit: ${JSON.stringify(facesRead)}`);
+  assert.ok(facesRead[1].every((n) => n > 0 && n < 20), JSON.stringify(facesRead));
 });
 
 test('faceSet() is the vertex and face tables\' face list, read from the winged edge, after every one of 600 random edits (gaps as faces with no corners)', () => {

@@ -523,8 +523,17 @@ export class Mesh {
   // The faces as the winged edge holds them now: {faceOffsets, faceVertices} (Int32Array, CSR),
   // each face from its first corner, a removed face with no corners (a gap keeps its number).
   // The face set the other representations are derived from, without deriving them.
-  faceSet() {
-    const r = unwrap(this.#raw.meshFaceSet(this.#live()));
+  // faceSet({faces}): the same for the listed face numbers only, in the list's order (a
+  // removed face with no corners): what a page reads again for the faces an edit changed.
+  /** @param {{ faces?: ArrayLike<number> }} [options] */
+  faceSet({ faces } = {}) {
+    if (faces === undefined) {
+      const r = unwrap(this.#raw.meshFaceSet(this.#live()));
+      return { faceOffsets: r.faceOffsets, faceVertices: r.faceVertices };
+    }
+    if (!isNumberArray(faces)) fail('invalid-argument', 'faces must be an array of face numbers');
+    for (const f of Array.from(faces)) elementIndex(f, 'face');
+    const r = unwrap(this.#raw.meshFaceCorners(this.#live(), Float64Array.from(faces)));
     return { faceOffsets: r.faceOffsets, faceVertices: r.faceVertices };
   }
 

@@ -142,12 +142,13 @@ export function parseColour(css) {
   return [0.5, 0.5, 0.5];
 }
 
-// Fan triangle indices of every face that has corners (a removed face has none).
+// Fan triangle indices of every face that has corners (a removed face has none), and each
+// face's first triangle in them (faceTriangle[f] .. faceTriangle[f + 1]).
 function fanIndices(faceOffsets, faceVertices) {
-  let count = 0;
   const F = faceOffsets.length - 1;
-  for (let f = 0; f < F; f += 1) count += Math.max(0, faceOffsets[f + 1] - faceOffsets[f] - 2);
-  const index = new Uint32Array(3 * count);
+  const faceTriangle = new Int32Array(F + 1);
+  for (let f = 0; f < F; f += 1) faceTriangle[f + 1] = faceTriangle[f] + Math.max(0, faceOffsets[f + 1] - faceOffsets[f] - 2);
+  const index = new Uint32Array(3 * faceTriangle[F]);
   let k = 0;
   for (let f = 0; f < F; f += 1) {
     const start = faceOffsets[f]; const end = faceOffsets[f + 1];
@@ -156,7 +157,32 @@ function fanIndices(faceOffsets, faceVertices) {
       k += 3;
     }
   }
-  return index;
+  return { index, faceTriangle };
+}
+
+// WebGL 2 always restarts primitives at the largest index (PRIMITIVE_RESTART_FIXED_INDEX):
+// a triangle or line of these indices is not drawn, whatever the other indices do.
+const RESTART = 0xffffffff;
+
+// The room followMesh has before a buffer must grow: vertices and triangles.
+const ROOM_VERTICES = 4096;
+const ROOM_TRIANGLES = 8192;
+
+// `array` and `extra` more entries of `value`.
+function padded(array, extra, value) {
+  const out = new /** @type {any} */ (array.constructor)(array.length + extra);
+  out.set(array);
+  out.fill(value, array.length);
+  return out;
+}
+
+// A typed array with room for n entries: `room` itself, or a new one twice as big holding
+// its first `used` entries (amortised: growing by one costs O(1)).
+function withRoom(room, n, used) {
+  if (n <= room.length) return room;
+  const bigger = new /** @type {any} */ (room.constructor)(Math.max(n, 2 * room.length, 1024));
+  bigger.set(room.subarray(0, used));
+  return bigger;
 }
 
 // Positions as float32 relative to `centre`; returns them and the largest distance from it.
@@ -197,6 +223,9 @@ export function createGlMesh(canvas) {
   let closed = false;   // no boundary edge: a face turned away is hidden, not drawn (lit mode)
   let outward = true;   // ... and its faces wound counter-clockwise seen from outside
   let pendingLines = null; // the mesh data whose edge lines are not made yet
+  // The shown mesh's buffers as the CPU wrote them, for followMesh: {relative, index,
+  // faceTriangle, faceSlot: {start, count} per face once followed, lines, capacity}.
+  let shown = null;
 
   function fill(set, relative, index, lines, normals = null) {
     gl.bindVertexArray(set.vao);
@@ -225,20 +254,24 @@ export function createGlMesh(canvas) {
   let job = null;         // a big picture being drawn over frames: {signature, triangles, edges, started}
   const target = { fbo: null, colour: null, depth: null, width: 0, height: 0 };
 
+  // Edge e's line at lines[2e], or restart indices (nothing drawn) for an edge not drawn (a
+  // gap, or one an edit player's step has not written yet).
+  function writeLine(lines, { edges, edgeStride, edgeGap }, e) {
+    const s0 = edges[edgeStride * e]; const t0 = edges[edgeStride * e + 1];
+    const drawn = !edgeGap?.[e] && s0 >= 0 && t0 >= 0;
+    lines[2 * e] = drawn ? s0 : RESTART; lines[2 * e + 1] = drawn ? t0 : RESTART;
+  }
+
   function makeLines() {
-    const { edges, edgeStride, edgeGap } = pendingLines;
+    const data = pendingLines;
     pendingLines = null;
-    const E = edges.length / edgeStride;
+    const E = data.edges.length / data.edgeStride;
     const lines = new Uint32Array(2 * E);
-    let n = 0;
-    for (let e = 0; e < E; e += 1) {
-      const s0 = edges[edgeStride * e]; const t0 = edges[edgeStride * e + 1];
-      if (edgeGap?.[e] || s0 < 0 || t0 < 0) continue;
-      lines[n] = s0; lines[n + 1] = t0; n += 2;
-    }
+    for (let e = 0; e < E; e += 1) writeLine(lines, data, e);
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, full.edges);
-    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, lines.subarray(0, n), gl.STATIC_DRAW);
-    full.edgeCount = n / 2;
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, lines, gl.STATIC_DRAW);
+    full.edgeCount = E;
+    if (shown) { shown.lines = lines; shown.capacity.lines = lines.length; }
   }
 
   // The offscreen framebuffer a big picture is drawn into, at the canvas's size.
@@ -349,7 +382,7 @@ export function createGlMesh(canvas) {
       const { positions, faceOffsets, faceVertices, edges, edgeStride } = data;
       const c = data.centre.slice();
       const r = relativeTo(positions, c);
-      const index = fanIndices(faceOffsets, faceVertices);
+      const { index, faceTriangle } = fanIndices(faceOffsets, faceVertices);
       // Closed (no edge without a face on each side) and wound counter-clockwise seen from
       // outside (positive signed volume, the sum of p0 . (p1 x p2) over the fan triangles):
       // then the faces turned away are hidden and need not be drawn; wound the other way,
@@ -365,7 +398,7 @@ export function createGlMesh(canvas) {
         const a = 3 * index[t]; const b = 3 * index[t + 1]; const d = 3 * index[t + 2];
         volume += q[a] * (q[b + 1] * q[d + 2] - q[b + 2] * q[d + 1]) + q[a + 1] * (q[b + 2] * q[d] - q[b] * q[d + 2]) + q[a + 2] * (q[b] * q[d + 1] - q[b + 1] * q[d]);
       }
-      return { key, data, centre: c, relative: r.relative, radius: r.radius, index, closed: isClosed, outward: volume >= 0 };
+      return { key, data, centre: c, relative: r.relative, radius: r.radius, index, faceTriangle, closed: isClosed, outward: volume >= 0 };
     },
 
     /** Uploads a prepared mesh (prepareMesh), unless it is the one shown. */
@@ -374,10 +407,120 @@ export function createGlMesh(canvas) {
       ({ centre, radius, closed, outward } = prepared);
       // The edge lines are made when first drawn (a zoomed-out big mesh never draws them).
       pendingLines = prepared.data;
-      fill(full, prepared.relative, prepared.index, new Uint32Array(0), prepared.data.normals ?? null);
+      // Room for the vertices and triangles of a few thousand edits (followMesh), uploaded
+      // with the mesh so that they do not make the buffers grow (a mesh with its own normals
+      // is not followed: it is uploaded whole).
+      const followed = !prepared.data.normals;
+      const relative = followed ? padded(prepared.relative, 3 * ROOM_VERTICES, 0) : prepared.relative;
+      const index = followed ? padded(prepared.index, 3 * ROOM_TRIANGLES, RESTART) : prepared.index;
+      fill(full, relative, index, new Uint32Array(0), prepared.data.normals ?? null);
+      full.triangleCount = prepared.index.length / 3;
+      shown = followed ? {
+        relative, index, faceTriangle: prepared.faceTriangle,
+        faceSlot: null, lines: null, capacity: { positions: relative.length, index: index.length, lines: 0 },
+      } : null;
       meshKey = prepared.key;
       proxyKey = null;
       lastDrawn = null;
+    },
+
+    /**
+     * The mesh after a local change, from the one shown: `follow` names the faces, vertices
+     * and edges that changed (an edit's record; an edit player's step changes edges alone)
+     * and `from(key)` says whether the shown mesh's key is one it starts from. Rewrites only
+     * their entries in the GPU's buffers (bufferSubData), so an edit of a million-face mesh
+     * costs what it touched; a face whose triangles no longer fit its place is moved to the
+     * end (its place left as empty triangles), and a buffer without room is made twice as big
+     * (amortised O(1)). Returns false, changing nothing, when the shown mesh is not one it
+     * follows (setMesh then uploads it whole).
+     * @param {string} key @param {GlMeshData} data
+     * @param {{ from: (key: string) => boolean, faces: Iterable<number>, vertices: Iterable<number>, edges: Iterable<number> }} follow
+     */
+    followMesh(key, data, follow) {
+      if (key === meshKey) return true;
+      if (!shown || !meshKey || !follow.from(meshKey)) return false;
+      const V = data.positions.length / 3;
+      const F = data.faceOffsets.length - 1;
+      // Positions: the vertices it moved or added, relative to the centre the mesh was shown about.
+      const grownPositions = 3 * V > shown.capacity.positions;
+      shown.relative = withRoom(shown.relative, 3 * V, shown.relative.length);
+      for (const v of follow.vertices) {
+        if (v >= V) continue;
+        for (let k = 0; k < 3; k += 1) shown.relative[3 * v + k] = data.positions[3 * v + k] - centre[k];
+        radius = Math.max(radius, Math.hypot(shown.relative[3 * v], shown.relative[3 * v + 1], shown.relative[3 * v + 2]));
+      }
+      gl.bindBuffer(gl.ARRAY_BUFFER, full.positions);
+      if (grownPositions) {
+        shown.capacity.positions = shown.relative.length;
+        gl.bufferData(gl.ARRAY_BUFFER, shown.relative, gl.STATIC_DRAW);
+      } else {
+        for (const v of follow.vertices) if (v < V) gl.bufferSubData(gl.ARRAY_BUFFER, 12 * v, shown.relative, 3 * v, 3);
+      }
+      // Triangles: each face's fan where it was when it fits, otherwise at the end.
+      shown.faceSlot ??= { start: Int32Array.from(shown.faceTriangle.subarray(0, -1)), count: Int32Array.from(shown.faceTriangle.subarray(1), (end, f) => end - shown.faceTriangle[f]) };
+      const slot = shown.faceSlot;
+      if (F > slot.start.length) {
+        const start = withRoom(slot.start, F, slot.start.length); const count = withRoom(slot.count, F, slot.count.length);
+        start.fill(0, slot.start.length); count.fill(0, slot.count.length);
+        shown.faceSlot = { start, count };
+      }
+      const { start, count } = shown.faceSlot;
+      let used = full.triangleCount;
+      const written = [];
+      for (const f of follow.faces) {
+        if (f >= F) continue;
+        const a = data.faceOffsets[f]; const b = data.faceOffsets[f + 1];
+        const n = Math.max(0, b - a - 2);
+        if (n > count[f]) {
+          // Its old place becomes empty (restart indices: nothing drawn).
+          shown.index.fill(RESTART, 3 * start[f], 3 * (start[f] + count[f]));
+          written.push([start[f], count[f]]);
+          shown.index = withRoom(shown.index, 3 * (used + n), 3 * used);
+          start[f] = used; count[f] = n; used += n;
+        }
+        let k = 3 * start[f];
+        for (let i = a + 1; i + 1 < b; i += 1) {
+          shown.index[k] = data.faceVertices[a]; shown.index[k + 1] = data.faceVertices[i]; shown.index[k + 2] = data.faceVertices[i + 1];
+          k += 3;
+        }
+        shown.index.fill(RESTART, k, 3 * (start[f] + count[f]));
+        written.push([start[f], count[f]]);
+      }
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, full.triangles);
+      if (shown.index.length > shown.capacity.index) {
+        shown.capacity.index = shown.index.length;
+        gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, shown.index, gl.STATIC_DRAW);
+      } else {
+        for (const [t, n] of written) if (n) gl.bufferSubData(gl.ELEMENT_ARRAY_BUFFER, 12 * t, shown.index, 3 * t, 3 * n);
+      }
+      full.triangleCount = used;
+      // Edge lines: one place per edge (an edge not drawn is an empty line), once made.
+      if (shown.lines) {
+        const E = data.edges.length / data.edgeStride;
+        const grownLines = 2 * E > shown.capacity.lines;
+        shown.lines = withRoom(shown.lines, 2 * E, 2 * full.edgeCount);
+        shown.lines.fill(RESTART, 2 * full.edgeCount, 2 * E);
+        const touched = [...follow.edges].filter((e) => e < E);
+        for (const e of touched) writeLine(shown.lines, data, e);
+        gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, full.edges);
+        if (grownLines) {
+          shown.capacity.lines = shown.lines.length;
+          gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, shown.lines, gl.STATIC_DRAW);
+        } else {
+          for (let e = full.edgeCount; e < E; e += 1) gl.bufferSubData(gl.ELEMENT_ARRAY_BUFFER, 8 * e, shown.lines, 2 * e, 2);
+          for (const e of touched) gl.bufferSubData(gl.ELEMENT_ARRAY_BUFFER, 8 * e, shown.lines, 2 * e, 2);
+        }
+        full.edgeCount = E;
+      } else {
+        pendingLines = data;
+      }
+      // The proxy (a coarse stand-in while the view moves or a big picture is drawn over
+      // frames) is kept: made again it would cost a pass over the whole mesh per edit, and the
+      // few triangles an edit changed are too small to change it.
+      if (proxyKey === meshKey) proxyKey = key;
+      meshKey = key;
+      lastDrawn = null;
+      return true;
     },
 
     /** Uploads the mesh when `key` (mesh id and version) differs from the last one. */

@@ -335,6 +335,9 @@ public:
     // build time or by set_face_edge changes where the walk starts, not the face set). The
     // other representations are derived from this (representations.h, RepresentationCache).
     IndexedMesh face_set() const;
+    // One face of face_set(): its corners from its first corner; none for a removed face.
+    // O(the face's sides): what a page reads again for the faces an edit changed.
+    std::vector<int32_t> face_corners(int32_t f) const;
     // The face set without the gaps an edit left (face_set() lists a removed face with no
     // corners and keeps a removed vertex's position): live vertices and faces numbered in
     // order, as compact() would number them. What a file gets (OFF/OBJ have no room for gaps).

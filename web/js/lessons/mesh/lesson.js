@@ -11,7 +11,7 @@ import { faceCsr } from '../../ui/mesh/mesh-choice.js';
 import { MESH_KINDS, MESH_SIZES, IMPORTED_CONTENT } from './choices.js';
 import { arraysAtStep, visibleSteps } from './edit-playback.js';
 import { normaliseSteps, walkFrames } from '../../ui/mesh/walk.js';
-import { followEdit } from '../../ui/mesh/winged-arrays.js';
+import { followEdit, followFaces, followRows } from '../../ui/mesh/winged-arrays.js';
 import { drawMesh, createBaseCache } from '../../ui/mesh/draw.js';
 import { LABEL_LIMIT } from '../../ui/mesh/label-plan.js';
 import { viewRotation, projectAll, unprojectDelta, facesAway, fitProjected } from '../../ui/mesh/view.js';
@@ -132,9 +132,10 @@ function createDerived() {
 
 function wingedTables(derived, entry, keys) {
   const previous = derived.source === keys.source ? derived.version : null;
+  const previousGaps = derived.gaps;
   if (derived.topology !== keys.topology) {
     const sameSource = derived.source === keys.source;
-    Object.assign(derived, { source: keys.source, topology: keys.topology, version: null, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, faces: null, gaps: null, lastChange: sameSource ? derived.lastChange : null });
+    Object.assign(derived, { source: keys.source, topology: keys.topology, version: null, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, faces: sameSource ? derived.faces : null, follow: null, gaps: null, lastChange: sameSource ? derived.lastChange : null });
   }
   if (derived.version !== keys.version) {
     // One edit since the tables were read: only the rows its record names are read again
@@ -146,10 +147,28 @@ function wingedTables(derived, entry, keys) {
       && keys.version === `${id}.${record.after.topology}.${record.after.geometry}`;
     derived.version = keys.version;
     derived.we = follows ? followEdit(derived.we, entry.mesh, record) : entry.mesh.wingedEdgeArrays();
+    // The faces the same way: only those the edit changed are read again. Faces depend on
+    // the topology alone; before the first change of it they are the source's own.
+    const beforeTopology = record ? `${id}.${record.before.topology}` : null;
+    const before = derived.faces?.topology === beforeTopology ? derived.faces : record?.before.topology === 0 ? entry.csr : null;
+    derived.follow = null;
+    if (follows && before) {
+      const followed = followFaces(before, entry.mesh, derived.we, record);
+      derived.faces = { offsets: followed.offsets, vertices: followed.vertices, topology: keys.topology };
+      derived.follow = { from: previous, faces: followed.touched };
+    } else if (derived.faces?.topology !== keys.topology) {
+      derived.faces = null;
+    }
+    // The gaps likewise: the ones before and the elements the edit removed (numbers are
+    // never reused); the marks per element are made again only when there are gaps.
+    derived.gaps = follows && previousGaps ? mergedGaps(previousGaps, record.removed) : null;
+    derived.gapMarks = null;
     derived.planes = null;
     derived.reps = null;
     derived.storage = null;
-    derived.centre = null;
+    // After a followed edit the view keeps turning about the centre it had (the edit moved a
+    // few vertices; the whole mesh is not measured again).
+    if (!derived.follow) derived.centre = null;
     derived.faceNormals = null;
     derived.sideKey = null;
   }
@@ -177,7 +196,7 @@ function compute(view, state, ctx) {
   // Faces as CSR (ui/mesh/mesh-choice.js faceCsr); a removed face has no corners.
   // Read from the winged edge (faceSet), not from the vertex and face tables, which would
   // derive every other representation (seconds on a million faces).
-  const csr = edited ? (derived.faces ??= faceCsr(entry.mesh.faceSet())) : entry.csr;
+  const csr = edited ? (derived.faces ??= { ...faceCsr(entry.mesh.faceSet()), topology: keys.topology }) : entry.csr;
   derived.gaps ??= edited ? entry.mesh.gaps() : { vertices: [], edges: [], faces: [] };
   const gaps = derived.gaps.vertices.length + derived.gaps.edges.length + derived.gaps.faces.length;
   const record = entry.lastOperation;
@@ -186,14 +205,17 @@ function compute(view, state, ctx) {
   const V = we.vertexEdge.length;
   const F = we.faceEdge.length;
   const E = we.edges.length / 8;
+  derived.gapMarks ??= gaps ? { vertex: marks(V, derived.gaps.vertices), edge: marks(E, derived.gaps.edges) } : null;
   const walkKind = state.walk;
   const walkElement = walkKind === 'vertex' ? Math.min(state.vertex, V - 1) : Math.min(state.face, F - 1);
   // 1 where a removed element left its number (drawing and picking skip it); null: no gaps.
-  const vertexGap = gaps ? marks(V, derived.gaps.vertices) : null;
+  // Made once per mesh version.
+  const vertexGap = derived.gapMarks?.vertex ?? null;
   // While the edit player is inside an edit the picture shows the tables as they stood: an
-  // edge whose S or E is not written yet is not drawn (like a gap).
+  // edge whose S or E is not written yet is not drawn (like a gap). Only the edit's edges
+  // can be so.
   const weShown = record && editStep < editSteps ? arraysAtStep(we, record, editStep) : we;
-  const edgeGap = gaps || weShown !== we ? unwritten(weShown, E, gaps ? marks(E, derived.gaps.edges) : new Uint8Array(E)) : null;
+  const edgeGap = weShown !== we ? unwritten(weShown, recordEdges(record), derived.gapMarks?.edge.slice() ?? new Uint8Array(E)) : derived.gapMarks?.edge ?? null;
   const current = weShown !== we && editStep > 0 ? visibleSteps(record)[editStep - 1] : null;
   const removed = walkKind === 'vertex' ? vertexGap?.[walkElement] : csr.offsets[walkElement + 1] === csr.offsets[walkElement];
   const frames = walkElement >= 0 && !removed ? stepsOf(derived, entry, walkKind, walkElement) : [];
@@ -201,11 +223,21 @@ function compute(view, state, ctx) {
   const R = viewRotation(state);
   const viewKey = `${keys.version}:${state.mode3d}:${R.join(',')}`;
   if (derived.viewKey !== viewKey) {
-    let zExtent = 0;
-    for (let v = 0; v < V; v += 1) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
     derived.centre ??= entry.mesh.boundingBox().centre;
     // In 2D the positions are shown exactly as they are ((p - c) + c would round them).
-    Object.assign(derived, { viewKey, zExtent, projected: projectAll(we.positions, R, state.mode3d ? derived.centre : [0, 0, 0]) });
+    const about = state.mode3d ? derived.centre : [0, 0, 0];
+    if (derived.follow && derived.viewKey === `${derived.follow.from}:${state.mode3d}:${R.join(',')}`) {
+      // The same view of the mesh before the edit: only the vertices it moved or added.
+      const touched = [...record.positions.map((p) => p.vertex), ...Array.from(record.added.vertices)];
+      const projected = followRows(derived.projected, 3, V, touched, (v) => projectAll(we.positions.subarray(3 * v, 3 * v + 3), R, about));
+      let zExtent = derived.zExtent;
+      for (const v of touched) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
+      Object.assign(derived, { viewKey, zExtent, projected });
+    } else {
+      let zExtent = 0;
+      for (let v = 0; v < V; v += 1) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
+      Object.assign(derived, { viewKey, zExtent, projected: projectAll(we.positions, R, about) });
+    }
   }
   // Seen from behind: the walked vertex's normal (faces around it, by area) or the walked
   // face's normal, both from the core, points away from the viewer.
@@ -258,9 +290,22 @@ function compute(view, state, ctx) {
   return model;
 }
 
-function unwritten(weShown, E, out) {
-  for (let e = 0; e < E; e += 1) if (weShown.edges[8 * e] < 0 || weShown.edges[8 * e + 1] < 0) out[e] = 1;
+function unwritten(weShown, edges, out) {
+  for (const e of edges) if (e < out.length && (weShown.edges[8 * e] < 0 || weShown.edges[8 * e + 1] < 0)) out[e] = 1;
   return out;
+}
+
+// The edges an edit's record names: rewritten, added, removed.
+function recordEdges(record) {
+  const edges = new Set([...Array.from(record.added.edges), ...Array.from(record.removed.edges)]);
+  for (const r of record.rows) if (r.table === 'edge') edges.add(r.row);
+  return edges;
+}
+
+// The gaps after an edit: those before it and the elements it removed, increasing.
+function mergedGaps(before, removed) {
+  const merge = (a, b) => Int32Array.from(new Set([...Array.from(a), ...Array.from(b)])).sort();
+  return { vertices: merge(before.vertices, removed.vertices), edges: merge(before.edges, removed.edges), faces: merge(before.faces, removed.faces) };
 }
 
 function marks(n, list) {

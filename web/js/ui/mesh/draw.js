@@ -238,6 +238,32 @@ function touched(model, selection) {
   return out.filter((x) => x && ['vertex', 'edge', 'face'].includes(x.kind) && Number.isInteger(x.index));
 }
 
+// What changed from a picture the GPU may show to this model's (gl.followMesh): the last
+// edit's faces (those the lesson read again), the vertices it moved, added or removed and
+// the edges it rewrote, added or removed, from the mesh as it was before the edit (any step
+// of its player: the key's last field) or from another step of this edit's player (its edges
+// alone changed what is drawn). The key's fields: source|topology|version|step.
+function followOf(model) {
+  const record = model.lastOperation;
+  const follow = model.derived?.follow;
+  const none = { from: () => false, faces: [], vertices: [], edges: [] };
+  if (!record?.rows) return none;
+  const edges = new Set([...Array.from(record.added.edges), ...Array.from(record.removed.edges)]);
+  for (const r of record.rows) if (r.table === 'edge') edges.add(r.row);
+  const vertexList = [...record.positions.map((p) => p.vertex), ...Array.from(record.added.vertices), ...Array.from(record.removed.vertices)];
+  const versionOf = (key) => key.split('|').at(-2);
+  const sameSource = (key) => key.startsWith(`${model.source}|`);
+  // From the mesh before the edit: only when the lesson followed it (its faces read again).
+  const fromBefore = follow && follow.from !== model.version ? follow.from : null;
+  return {
+    from: (key) => sameSource(key) && (versionOf(key) === model.version || versionOf(key) === fromBefore),
+    // (From another step of the same version only the edges differ.)
+    faces: fromBefore ? follow.faces : [],
+    vertices: vertexList,
+    edges,
+  };
+}
+
 // The style of the GPU picture: what drawBase draws as paths, as one draw call each.
 // A big mesh in 3D is a lit nearest surface; its edges (2D or 3D) are drawn while they are at
 // least EDGE_SPACING_PX apart on screen on average (closer, they would be a grey blur). While the
@@ -255,6 +281,8 @@ function drawGpu(gl, gpu, model, state, ctx) {
     positions: model.positions, faceOffsets: model.faceOffsets, faceVertices: model.faceVertices,
     edges: model.weShown.edges, edgeStride: 8, edgeGap: model.edgeGap, centre,
   };
+  // A local change (an edit, a step of its player) rewrites what it touched in the GPU's buffers.
+  if (gl.meshKey !== key && gl.followMesh(key, data, followOf(model))) gpu.uploading = null;
   if (gl.meshKey !== key && model.faceVertices.length > 3 * PROXY_FROM) {
     // A new big mesh is prepared and uploaded in tasks of their own (about 25 and 20 ms for a
     // million faces here), not in the frame that updates the panels; meanwhile the

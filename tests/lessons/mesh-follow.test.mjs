@@ -1,0 +1,129 @@
+// The mesh lesson after an edit reads again only what the edit changed (the faces, the
+// projected positions and the gaps follow the change record: ui/mesh/winged-arrays.js), and
+// what it shows equals what a whole read of the core gives: driven through its compute hook
+// in Node over the real core.
+//  * thousands of random edits on small meshes, in 2D and 3D: after each, the model's faces
+//    equal mesh.faceSet(), its projected positions equal projectAll of the core's positions,
+//    its gap marks equal mesh.gaps();
+//  * on spheres of 1,200 and 120,000 faces the same edits read no whole table of the core
+//    (faceSet(), wingedEdgeArrays(), gaps(), boundingBox(), normals(), a table without a
+//    limit) and the same number of faces again at both sizes.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { loadWingspline } from 'wingspline';
+import { random } from '../helpers/seeded-random.mjs';
+import { meshLesson, createMeshView } from '../../web/js/lessons/mesh/lesson.js';
+import { editOps, withEdit } from '../../web/js/lessons/mesh/edit-ops.js';
+import { projectAll } from '../../web/js/ui/mesh/view.js';
+
+const api = await loadWingspline();
+const EDIT_OPS = editOps(api.meshOperations);
+const operationOf = (entry, index, a, b) => entry.make(index, {
+  ...Object.fromEntries(entry.numbers.map((n) => [n.name, 0.5])),
+  ...(entry.choices.length === 2 ? { [entry.choices[0].name]: a, [entry.choices[1].name]: b } : {}),
+});
+
+// An edit the core accepts on the model's mesh at a random element, or null.
+function anEdit(rnd, model) {
+  const total = { vertex: model.V, edge: model.E, face: model.F };
+  for (let tries = 0; tries < 30; tries += 1) {
+    const entry = EDIT_OPS[Math.floor(rnd() * EDIT_OPS.length)];
+    const index = Math.floor(rnd() * total[entry.needs]);
+    let a = 0; let b = 0;
+    if (entry.choices.length === 2) {
+      try {
+        const list = Array.from(model.mesh.adjacency(entry.choices[0].choices, index));
+        a = list[0]; b = list[Math.min(2, list.length - 1)];
+      } catch { continue; }
+    }
+    const operation = operationOf(entry, index, a, b);
+    if (model.mesh.check(operation).ok) return operation;
+  }
+  return null;
+}
+
+test('after each of 1,500 random edits the followed faces, projection and gaps equal a whole read of the core', () => {
+  let edits = 0; let withGaps = 0; let grew = 0;
+  for (let seed = 1; seed <= 60 && edits < 1500; seed += 1) {
+    const rnd = random(seed);
+    const view = createMeshView();
+    const ctx = { api };
+    let state = { ...meshLesson.defaultState(), meshKind: ['sphere', 'cube', 'grid', 'lecture'][seed % 4], sphere: { slices: 7, stacks: 5 }, grid: { nx: 4, ny: 3 }, mode3d: seed % 2 === 0 };
+    let model = meshLesson.compute(view, state, ctx);
+    for (let step = 0; step < 30; step += 1) {
+      const operation = anEdit(rnd, model);
+      if (!operation) break;
+      const F = model.F;
+      state = withEdit(state, operation);
+      model = meshLesson.compute(view, state, ctx);
+      edits += 1;
+      if (model.F > F) grew += 1;
+      const where = `seed ${seed} step ${step} ${JSON.stringify(operation)}`;
+      const faces = model.mesh.faceSet();
+      assert.deepEqual([Array.from(model.faceOffsets), Array.from(model.faceVertices)], [Array.from(faces.faceOffsets), Array.from(faces.faceVertices)], where);
+      const positions = model.mesh.wingedEdgeArrays().positions;
+      const expected = projectAll(positions, model.rotation, state.mode3d ? model.centre : [0, 0, 0]);
+      assert.deepEqual(Array.from(model.projected), Array.from(expected), where);
+      const gaps = model.mesh.gaps();
+      assert.deepEqual([Array.from(model.gapLists.vertices), Array.from(model.gapLists.edges), Array.from(model.gapLists.faces)], [Array.from(gaps.vertices), Array.from(gaps.edges), Array.from(gaps.faces)], where);
+      const vertexMarks = Array.from({ length: model.V }, (_, v) => (gaps.vertices.includes(v) ? 1 : 0));
+      assert.deepEqual(Array.from(model.vertexGap ?? new Uint8Array(model.V)), vertexMarks, where);
+      if (gaps.vertices.length + gaps.edges.length + gaps.faces.length) withGaps += 1;
+    }
+  }
+  assert.ok(edits >= 1500 && withGaps > 200 && grew > 200, `edits ${edits}, with gaps ${withGaps}, grew ${grew}`);
+});
+
+// The api with every mesh it builds counted: the calls that read a whole table.
+function countingApi() {
+  const whole = { count: 0, calls: [] };
+  const facesRead = [];
+  const counted = (mesh) => new Proxy(mesh, {
+    get(target, key) {
+      const value = Reflect.get(target, key, target);
+      if (typeof value !== 'function') return value;
+      return (...args) => {
+        const wholeRead = ['wingedEdgeArrays', 'gaps', 'boundingBox', 'normals', 'storage', 'representations'].includes(String(key))
+          || (key === 'faceSet' && !args[0]?.faces) || (key === 'tables' && args[1]?.limit === undefined);
+        if (wholeRead) { whole.count += 1; whole.calls.push(String(key)); }
+        if (key === 'faceSet' && args[0]?.faces) facesRead.push(args[0].faces.length);
+        return value.apply(target, args);
+      };
+    },
+  });
+  return { api: { ...api, buildMesh: (...args) => counted(api.buildMesh(...args)) }, whole, facesRead };
+}
+
+test('an edit on a 120,000-face sphere reads no whole table and as many faces as on a 1,200-face sphere', () => {
+  const perSize = [];
+  for (const [slices, stacks] of [[30, 21], [300, 201]]) {
+    const counting = countingApi();
+    const view = createMeshView();
+    const ctx = { api: counting.api };
+    let state = { ...meshLesson.defaultState(), meshKind: 'sphere', sphere: { slices, stacks }, mode3d: true };
+    let model = meshLesson.compute(view, state, ctx);
+    const v = 1 + (Math.floor((stacks - 1) / 2) - 1) * slices + slices / 2;
+    const e = model.mesh.adjacency('edges-around-vertex', v)[0];
+    const f = model.mesh.adjacency('faces-around-vertex', v)[0];
+    const elsewhere = model.mesh.adjacency('edges-around-vertex', v + 3)[0];
+    // The first edit reads the faces once as the mesh then is (the source's faces are the
+    // unedited mesh's); what is counted is each edit after it.
+    state = withEdit(state, { op: 'flip-edge', e });
+    model = meshLesson.compute(view, state, ctx);
+    const reads = [];
+    for (const operation of [{ op: 'split-edge', e, t: 0.5 }, { op: 'poke-face', f }, { op: 'flip-edge', e: elsewhere }, { op: 'collapse-edge', e: elsewhere, t: 0.5 }]) {
+      counting.whole.count = 0; counting.whole.calls = []; counting.facesRead.length = 0;
+      state = withEdit(state, operation);
+      model = meshLesson.compute(view, state, ctx);
+      assert.equal(counting.whole.count, 0, `${JSON.stringify(operation)} read whole: ${counting.whole.calls.join(', ')}`);
+      reads.push(counting.facesRead.reduce((a, b) => a + b, 0));
+    }
+    const faces = model.mesh.faceSet();
+    assert.deepEqual([Array.from(model.faceOffsets), Array.from(model.faceVertices)], [Array.from(faces.faceOffsets), Array.from(faces.faceVertices)]);
+    perSize.push({ faces: model.F, reads });
+    model.mesh.dispose();
+  }
+  assert.ok(perSize[1].faces > 100 * perSize[0].faces / 2, JSON.stringify(perSize));
+  assert.deepEqual(perSize[0].reads, perSize[1].reads, JSON.stringify(perSize));
+  assert.ok(perSize[1].reads.every((n) => n > 0 && n < 20), JSON.stringify(perSize));
+});
