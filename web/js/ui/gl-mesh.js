@@ -164,6 +164,16 @@ function fanIndices(faceOffsets, faceVertices) {
 // a triangle or line of these indices is not drawn, whatever the other indices do.
 const RESTART = 0xffffffff;
 
+// Each face's place in the triangles, from fanIndices' faceTriangle: its first triangle and
+// how many it has room for.
+function faceSlots(faceTriangle) {
+  const F = faceTriangle.length - 1;
+  const start = faceTriangle.slice(0, F);
+  const count = new Int32Array(F);
+  for (let f = 0; f < F; f += 1) count[f] = faceTriangle[f + 1] - faceTriangle[f];
+  return { start, count };
+}
+
 // The room followMesh has before a buffer must grow: vertices and triangles.
 const ROOM_VERTICES = 4096;
 const ROOM_TRIANGLES = 8192;
@@ -457,7 +467,7 @@ export function createGlMesh(canvas) {
         for (const v of follow.vertices) if (v < V) gl.bufferSubData(gl.ARRAY_BUFFER, 12 * v, shown.relative, 3 * v, 3);
       }
       // Triangles: each face's fan where it was when it fits, otherwise at the end.
-      shown.faceSlot ??= { start: Int32Array.from(shown.faceTriangle.subarray(0, -1)), count: Int32Array.from(shown.faceTriangle.subarray(1), (end, f) => end - shown.faceTriangle[f]) };
+      shown.faceSlot ??= faceSlots(shown.faceTriangle);
       const slot = shown.faceSlot;
       if (F > slot.start.length) {
         const start = withRoom(slot.start, F, slot.start.length); const count = withRoom(slot.count, F, slot.count.length);

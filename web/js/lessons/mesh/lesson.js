@@ -153,7 +153,9 @@ function wingedTables(derived, entry, keys) {
     const before = derived.faces?.topology === beforeTopology ? derived.faces : record?.before.topology === 0 ? entry.csr : null;
     derived.follow = null;
     if (follows && before) {
-      const followed = followFaces(before, entry.mesh, derived.we, record);
+      // The lesson's own faces are rewritten in place where the layout allows (the source's
+      // faces, before the first edit, never are).
+      const followed = followFaces(before, entry.mesh, derived.we, record, { own: before !== entry.csr });
       derived.faces = { offsets: followed.offsets, vertices: followed.vertices, topology: keys.topology };
       derived.follow = { from: previous, faces: followed.touched };
     } else if (derived.faces?.topology !== keys.topology) {

@@ -102,8 +102,13 @@ export function followRows(table, stride, n, touched, rowOf) {
   return out;
 }
 
+// out[i] = from[i] + delta for i in [start, end).
+function shifted(out, from, start, end, delta) {
+  for (let i = start; i < end; i += 1) out[i] = from[i] + delta;
+}
+
 /**
- * The faces as CSR after an edit, from `csr` before it (never written): the faces whose
+ * The faces as CSR after an edit, from `csr` before it: the faces whose
  * corners the edit can have changed read again from the core (mesh.faceSet({faces})), the
  * others' corners copied. Those faces: the face rows it rewrote, the faces it added or
  * removed, and the faces on either side of every edge it rewrote, added or removed (a face
@@ -116,10 +121,13 @@ export function followRows(table, stride, n, touched, rowOf) {
  * @param {WingedArrays} we its winged-edge arrays
  * @param {{ rows: { table: string, row: number }[], added: { edges: ArrayLike<number>, faces: ArrayLike<number> },
  *   removed: { edges: ArrayLike<number>, faces: ArrayLike<number> } }} record
+ * @param {{ own?: boolean }} [options] own: `csr`'s arrays may be written (they are the caller's,
+ *   read by nothing that needs the faces before the edit)
  * @returns {{ offsets: Int32Array, vertices: Int32Array, touched: Int32Array }} `touched`: the
- *   faces read again, increasing
+ *   faces read again, increasing; the arrays are `csr`'s own, rewritten, when `own` and every
+ *   face kept its number of corners, otherwise new
  */
-export function followFaces(csr, mesh, we, record) {
+export function followFaces(csr, mesh, we, record, { own = false } = {}) {
   const F = we.faceEdge.length;
   const faces = new Set([...Array.from(record.added.faces), ...Array.from(record.removed.faces)]);
   const edges = new Set([...Array.from(record.added.edges), ...Array.from(record.removed.edges)]);
@@ -138,33 +146,36 @@ export function followFaces(csr, mesh, we, record) {
   const sides = (f) => (f < oldF ? csr.offsets[f + 1] - csr.offsets[f] : 0);
   let total = csr.offsets[Math.min(oldF, F)];
   for (let i = 0; i < touched.length; i += 1) total += fresh.faceOffsets[i + 1] - fresh.faceOffsets[i] - sides(touched[i]);
+  // Every face keeps its number of corners (a flip, a move of an edge's end): the corners are
+  // written in place when the arrays are the caller's own to write.
+  if (own && F === oldF && total === csr.vertices.length && touched.every((t, i) => fresh.faceOffsets[i + 1] - fresh.faceOffsets[i] === sides(t))) {
+    for (let i = 0; i < touched.length; i += 1) csr.vertices.set(fresh.faceVertices.subarray(fresh.faceOffsets[i], fresh.faceOffsets[i + 1]), csr.offsets[touched[i]]);
+    return { offsets: csr.offsets, vertices: csr.vertices, touched };
+  }
   const offsets = new Int32Array(F + 1);
   const vertices = new Int32Array(total);
   // Runs of untouched faces are copied whole, their offsets shifted by what the touched faces
-  // before them gained or lost.
+  // before them gained or lost (a plain loop over the run; a copy where nothing shifted).
   let f = 0;
   let at = 0;
-  const copyUpTo = (end) => {
-    if (end <= f) return;
+  for (let i = 0; i <= touched.length; i += 1) {
+    const end = i < touched.length ? touched[i] : F;
     const top = Math.min(end, oldF);
     if (top > f) {
-      const delta = at - csr.offsets[f];
-      vertices.set(csr.vertices.subarray(csr.offsets[f], csr.offsets[top]), at);
-      for (let g = f; g < top; g += 1) offsets[g + 1] = csr.offsets[g + 1] + delta;
+      const from = csr.offsets[f];
+      const delta = at - from;
+      vertices.set(csr.vertices.subarray(from, csr.offsets[top]), at);
+      if (delta === 0) offsets.set(csr.offsets.subarray(f + 1, top + 1), f + 1);
+      else shifted(offsets, csr.offsets, f + 1, top + 1, delta);
       at = offsets[top];
     }
-    for (let g = top; g < end; g += 1) offsets[g + 1] = at; // a new face the record did not name: none
-    f = end;
-  };
-  for (let i = 0; i < touched.length; i += 1) {
-    const t = touched[i];
-    copyUpTo(t);
+    for (let g = Math.max(top, f); g < end; g += 1) offsets[g + 1] = at; // a new face the record did not name: none
+    if (i === touched.length) break;
     const corners = fresh.faceVertices.subarray(fresh.faceOffsets[i], fresh.faceOffsets[i + 1]);
     vertices.set(corners, at);
     at += corners.length;
-    offsets[t + 1] = at;
-    f = t + 1;
+    offsets[end + 1] = at;
+    f = end + 1;
   }
-  copyUpTo(F);
   return { offsets, vertices, touched };
 }
