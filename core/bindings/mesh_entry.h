@@ -6,6 +6,7 @@
 
 #include "wingspline/mesh/indexed_mesh.h"
 #include "wingspline/mesh/representations.h"
+#include "wingspline/mesh/view_geometry.h"
 #include "wingspline/mesh/winged_edge.h"
 
 #include <cstdint>
@@ -17,9 +18,13 @@ namespace wingspline::bindings {
 // (RepresentationCache): derived from the winged edge's current face set on first use and
 // again whenever the mesh's version moved on, so a mesh's wasm memory is the winged edge's
 // own until a lesson asks for the others, and no operation leaves a stale copy.
+// A big mesh also keeps its pick grid (view_geometry.h), made on the first pick at a view and
+// again when the mesh or the view direction changed: a pointer moving over a still view asks
+// it many times.
 struct MeshEntry {
     mesh::WingedEdgeMesh winged;
     mesh::RepresentationCache representations;
+    mesh::PickGrid pick_grid;
 };
 
 // The entry of a live handle; throws Error("disposed") for a disposed or unknown one.

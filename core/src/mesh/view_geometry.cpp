@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -74,60 +76,66 @@ double segment_distance(double px, double py, double ax, double ay, double bx, d
 
 } // namespace
 
-PickResult pick_faces(const WingedEdgeMesh& mesh, const glm::dvec3& point, const glm::dvec3& towards, double radius,
-                      int32_t max_near) {
-    if (!finite(point)) throw Error("invalid-argument", "the picking point must have finite coordinates");
+namespace {
+
+// The view frame: n towards the viewer, (a, b) the view plane, a x b = n, so a face whose
+// corners run counter-clockwise in (a, b) is turned towards the viewer.
+struct ViewFrame {
+    glm::dvec3 n, a, b;
+};
+
+ViewFrame view_frame(const glm::dvec3& towards) {
     if (!finite(towards)) throw Error("invalid-argument", "the view direction must have finite components");
     const double big = std::max({std::abs(towards.x), std::abs(towards.y), std::abs(towards.z)});
     if (!(big > 0)) throw Error("invalid-argument", "the view direction is (0, 0, 0): it must point from the mesh to the viewer");
-    if (!(radius >= 0) || !std::isfinite(radius))
-        throw Error("invalid-argument", "the picking radius must be a finite number >= 0 (world units)");
-    if (max_near < 0) throw Error("invalid-argument", "the number of nearby faces asked for must be >= 0");
-    // The view frame: n towards the viewer, (a, b) the view plane, a x b = n, so a face whose
-    // corners run counter-clockwise in (a, b) is turned towards the viewer.
     const glm::dvec3 n = glm::normalize(towards / big);
     const glm::dvec3 helper = std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     const glm::dvec3 a = glm::normalize(glm::cross(helper, n));
-    const glm::dvec3 b = glm::cross(n, a);
-    const double qx = glm::dot(point, a), qy = glm::dot(point, b);
-    // Every vertex in the view frame once, relative to the point (a vertex is a corner of
-    // about six faces).
-    const int32_t V = mesh.vertex_count();
-    std::vector<double> vx(static_cast<std::size_t>(V)), vy(static_cast<std::size_t>(V));
-    for (int32_t v = 0; v < V; ++v) {
-        const glm::dvec3 p = mesh.position(v);
-        vx[static_cast<std::size_t>(v)] = glm::dot(p, a) - qx, vy[static_cast<std::size_t>(v)] = glm::dot(p, b) - qy;
-    }
-    // One pass over the edges. The line of sight passes through a face when the half-line
-    // from the point along +a crosses the face's sides an odd number of times (the
-    // crossing-number test, half-open in y so a corner on the half-line counts once); each
-    // side crossed toggles both faces of the edge. A side within the radius makes both its
-    // faces near, at the side's distance.
-    const int32_t F = mesh.face_count();
-    std::vector<char> odd(static_cast<std::size_t>(F), 0);
+    return {n, a, glm::cross(n, a)};
+}
+
+void check_pick(const glm::dvec3& point, double radius, int32_t max_near) {
+    if (!finite(point)) throw Error("invalid-argument", "the picking point must have finite coordinates");
+    if (!(radius >= 0) || !std::isfinite(radius))
+        throw Error("invalid-argument", "the picking radius must be a finite number >= 0 (world units)");
+    if (max_near < 0) throw Error("invalid-argument", "the number of nearby faces asked for must be >= 0");
+}
+
+// The pick itself, over the edges `each_edge` hands out in increasing order (every live edge,
+// or those a PickGrid found near the line; the answer is the same when those include every
+// edge the half-line crosses or the radius reaches), a vertex's view-plane coordinates
+// relative to the point from `at(v)`.
+template <class EachEdge, class At>
+PickResult pick_over(const WingedEdgeMesh& mesh, const glm::dvec3& n, EachEdge&& each_edge, At&& at, double radius, int32_t max_near) {
+    // The line of sight passes through a face when the half-line from the point along +a
+    // crosses the face's sides an odd number of times (the crossing-number test, half-open
+    // in y so a corner on the half-line counts once); each side crossed toggles both faces of
+    // the edge. A side within the radius makes both its faces near, at the side's distance.
+    std::unordered_map<int32_t, char> odd;
+    const auto is_odd = [&](int32_t f) {
+        const auto it = odd.find(f);
+        return it != odd.end() && it->second;
+    };
     std::vector<int32_t> toggled;
     std::vector<std::pair<int32_t, double>> close; // (face, distance of one of its sides)
-    const std::vector<EdgeRecord>& edges = mesh.edges();
-    const int32_t E = static_cast<int32_t>(edges.size());
-    for (int32_t e = 0; e < E; ++e) {
-        if (mesh.is_deleted(Edge(e))) continue;
-        const EdgeRecord& r = edges[static_cast<std::size_t>(e)];
-        const double xs = vx[static_cast<std::size_t>(r.start)], ys = vy[static_cast<std::size_t>(r.start)];
-        const double xt = vx[static_cast<std::size_t>(r.end)], yt = vy[static_cast<std::size_t>(r.end)];
+    each_edge([&](const EdgeRecord& r) {
+        const auto [xs, ys] = at(r.start);
+        const auto [xt, yt] = at(r.end);
         if ((ys > 0) != (yt > 0) && xs + (0 - ys) * (xt - xs) / (yt - ys) > 0) {
             for (const int32_t f : {r.left, r.right}) {
                 if (f == kNone) continue;
-                if (!odd[static_cast<std::size_t>(f)]) toggled.push_back(f);
-                odd[static_cast<std::size_t>(f)] ^= 1;
+                char& o = odd[f];
+                if (!o) toggled.push_back(f);
+                o ^= 1;
             }
         }
         if (std::min(xs, xt) > radius || std::max(xs, xt) < -radius || std::min(ys, yt) > radius || std::max(ys, yt) < -radius)
-            continue;
+            return;
         const double d = segment_distance(0, 0, xs, ys, xt, yt);
-        if (d > radius) continue;
+        if (d > radius) return;
         for (const int32_t f : {r.left, r.right})
             if (f != kNone) close.push_back({f, d});
-    }
+    });
     // The faces passed through: the nearest to the viewer is the one seen. Its depth where
     // the line meets it: the fan triangle (0, i, i+1) containing the point, by barycentric
     // coordinates (for a non-planar face, the triangle nearest containing it).
@@ -135,13 +143,14 @@ PickResult pick_faces(const WingedEdgeMesh& mesh, const glm::dvec3& point, const
     double best_depth = -std::numeric_limits<double>::infinity();
     std::vector<int32_t> c;
     for (const int32_t f : toggled) {
-        if (!odd[static_cast<std::size_t>(f)]) continue;
+        if (!is_odd(f)) continue;
         corners_of(mesh, f, c);
         double depth = -std::numeric_limits<double>::infinity();
         for (std::size_t i = 1; i + 1 < c.size(); ++i) {
-            const double x0 = vx[static_cast<std::size_t>(c[0])], y0 = vy[static_cast<std::size_t>(c[0])];
-            const double x1 = vx[static_cast<std::size_t>(c[i])] - x0, y1 = vy[static_cast<std::size_t>(c[i])] - y0;
-            const double x2 = vx[static_cast<std::size_t>(c[i + 1])] - x0, y2 = vy[static_cast<std::size_t>(c[i + 1])] - y0;
+            const auto [x0, y0] = at(c[0]);
+            const auto [xi, yi] = at(c[i]);
+            const auto [xj, yj] = at(c[i + 1]);
+            const double x1 = xi - x0, y1 = yi - y0, x2 = xj - x0, y2 = yj - y0;
             const double det = x1 * y2 - x2 * y1;
             if (det == 0) continue;
             const double w1 = (-x0 * y2 + x2 * y0) / det, w2 = (x1 * -y0 + x0 * y1) / det;
@@ -161,11 +170,14 @@ PickResult pick_faces(const WingedEdgeMesh& mesh, const glm::dvec3& point, const
     for (std::size_t i = 0; i < close.size(); ++i) {
         if (i > 0 && close[i].first == close[i - 1].first) continue; // the nearest side of each face
         const int32_t f = close[i].first;
-        if (f == result.face || odd[static_cast<std::size_t>(f)] || mesh.is_deleted(Face(f))) continue;
+        if (f == result.face || is_odd(f) || mesh.is_deleted(Face(f))) continue;
         corners_of(mesh, f, c);
         double area2 = 0; // twice the signed area in the view plane
-        for (std::size_t k = 0, j = c.size() - 1; k < c.size(); j = k++)
-            area2 += vx[static_cast<std::size_t>(c[j])] * vy[static_cast<std::size_t>(c[k])] - vx[static_cast<std::size_t>(c[k])] * vy[static_cast<std::size_t>(c[j])];
+        for (std::size_t k = 0, j = c.size() - 1; k < c.size(); j = k++) {
+            const auto [xj, yj] = at(c[j]);
+            const auto [xk, yk] = at(c[k]);
+            area2 += xj * yk - xk * yj;
+        }
         if (area2 > 0) near.push_back({f, close[i].second});
     }
     std::stable_sort(near.begin() + (result.face >= 0 ? 1 : 0), near.end(),
@@ -173,6 +185,139 @@ PickResult pick_faces(const WingedEdgeMesh& mesh, const glm::dvec3& point, const
     if (near.size() > static_cast<std::size_t>(max_near)) near.resize(static_cast<std::size_t>(max_near));
     result.near = std::move(near);
     return result;
+}
+
+} // namespace
+
+PickResult pick_faces(const WingedEdgeMesh& mesh, const glm::dvec3& point, const glm::dvec3& towards, double radius,
+                      int32_t max_near) {
+    check_pick(point, radius, max_near);
+    const ViewFrame frame = view_frame(towards);
+    const double qx = glm::dot(point, frame.a), qy = glm::dot(point, frame.b);
+    // Every vertex in the view frame once, relative to the point (a vertex is a corner of
+    // about six faces).
+    const int32_t V = mesh.vertex_count();
+    std::vector<double> vx(static_cast<std::size_t>(V)), vy(static_cast<std::size_t>(V));
+    for (int32_t v = 0; v < V; ++v) {
+        const glm::dvec3 p = mesh.position(v);
+        vx[static_cast<std::size_t>(v)] = glm::dot(p, frame.a) - qx, vy[static_cast<std::size_t>(v)] = glm::dot(p, frame.b) - qy;
+    }
+    const std::vector<EdgeRecord>& edges = mesh.edges();
+    const auto every_edge = [&](auto&& visit) {
+        for (int32_t e = 0; e < static_cast<int32_t>(edges.size()); ++e)
+            if (!mesh.is_deleted(Edge(e))) visit(edges[static_cast<std::size_t>(e)]);
+    };
+    const auto at = [&](int32_t v) { return std::pair<double, double>{vx[static_cast<std::size_t>(v)], vy[static_cast<std::size_t>(v)]}; };
+    return pick_over(mesh, frame.n, every_edge, at, radius, max_near);
+}
+
+// ---------------------------------------------------------------- the pick grid
+
+bool PickGrid::fits(const WingedEdgeMesh& mesh, const glm::dvec3& towards) const {
+    return built_ && version_ == mesh.version() && towards_ == towards && vertices_ == mesh.vertex_count();
+}
+
+void PickGrid::build(const WingedEdgeMesh& mesh, const glm::dvec3& towards) {
+    const ViewFrame frame = view_frame(towards);
+    built_ = false;
+    n_ = frame.n, a_ = frame.a, b_ = frame.b;
+    const int32_t V = mesh.vertex_count();
+    pa_.assign(static_cast<std::size_t>(V), 0.0);
+    pb_.assign(static_cast<std::size_t>(V), 0.0);
+    double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
+    for (int32_t v = 0; v < V; ++v) {
+        const glm::dvec3 p = mesh.position(v);
+        pa_[static_cast<std::size_t>(v)] = glm::dot(p, a_), pb_[static_cast<std::size_t>(v)] = glm::dot(p, b_);
+        if (mesh.is_deleted(Vertex(v))) continue;
+        xmin = std::min(xmin, pa_[static_cast<std::size_t>(v)]), xmax = std::max(xmax, pa_[static_cast<std::size_t>(v)]);
+        ymin = std::min(ymin, pb_[static_cast<std::size_t>(v)]), ymax = std::max(ymax, pb_[static_cast<std::size_t>(v)]);
+    }
+    const std::vector<EdgeRecord>& edges = mesh.edges();
+    const auto E = static_cast<int32_t>(edges.size());
+    // About one live edge per cell: a square grid over the mesh's extent in the view plane.
+    int64_t live = 0;
+    for (int32_t e = 0; e < E; ++e) live += !mesh.is_deleted(Edge(e));
+    if (!(xmin <= xmax)) xmin = xmax = ymin = ymax = 0;
+    const double w = std::max(xmax - xmin, 1e-300), hgt = std::max(ymax - ymin, 1e-300);
+    const double cells = std::max<double>(1.0, static_cast<double>(live));
+    h_ = std::max(std::sqrt(w * hgt / cells), std::max(w, hgt) / 4096.0);
+    x0_ = xmin, y0_ = ymin;
+    nx_ = std::clamp(static_cast<int32_t>(std::floor(w / h_)) + 1, 1, 4096);
+    ny_ = std::clamp(static_cast<int32_t>(std::floor(hgt / h_)) + 1, 1, 4096);
+    // Each live edge in every cell its box in the view plane covers (counting, then filling).
+    cell_start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
+    const auto range = [&](const EdgeRecord& r, int32_t& c0, int32_t& c1, int32_t& r0, int32_t& r1) {
+        const double xs = pa_[static_cast<std::size_t>(r.start)], xt = pa_[static_cast<std::size_t>(r.end)];
+        const double ys = pb_[static_cast<std::size_t>(r.start)], yt = pb_[static_cast<std::size_t>(r.end)];
+        c0 = column(std::min(xs, xt)), c1 = column(std::max(xs, xt));
+        r0 = row(std::min(ys, yt)), r1 = row(std::max(ys, yt));
+    };
+    for (int32_t e = 0; e < E; ++e) {
+        if (mesh.is_deleted(Edge(e))) continue;
+        int32_t c0, c1, r0, r1;
+        range(edges[static_cast<std::size_t>(e)], c0, c1, r0, r1);
+        for (int32_t y = r0; y <= r1; ++y)
+            for (int32_t x = c0; x <= c1; ++x) ++cell_start_[static_cast<std::size_t>(y) * nx_ + x + 1];
+    }
+    for (std::size_t i = 1; i < cell_start_.size(); ++i) cell_start_[i] += cell_start_[i - 1];
+    cell_edges_.assign(static_cast<std::size_t>(cell_start_.back()), 0);
+    std::vector<int32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+    for (int32_t e = 0; e < E; ++e) {
+        if (mesh.is_deleted(Edge(e))) continue;
+        int32_t c0, c1, r0, r1;
+        range(edges[static_cast<std::size_t>(e)], c0, c1, r0, r1);
+        for (int32_t y = r0; y <= r1; ++y)
+            for (int32_t x = c0; x <= c1; ++x) cell_edges_[static_cast<std::size_t>(fill[static_cast<std::size_t>(y) * nx_ + x]++)] = e;
+    }
+    version_ = mesh.version();
+    towards_ = towards;
+    vertices_ = V;
+    built_ = true;
+}
+
+int32_t PickGrid::column(double x) const {
+    return std::clamp(static_cast<int32_t>(std::floor((x - x0_) / h_)), 0, nx_ - 1);
+}
+
+int32_t PickGrid::row(double y) const {
+    return std::clamp(static_cast<int32_t>(std::floor((y - y0_) / h_)), 0, ny_ - 1);
+}
+
+PickResult PickGrid::pick(const WingedEdgeMesh& mesh, const glm::dvec3& point, double radius, int32_t max_near) const {
+    check_pick(point, radius, max_near);
+    if (!built_) throw Error("internal-error", "the pick grid is used before it was built");
+    const double qx = glm::dot(point, a_), qy = glm::dot(point, b_);
+    // The edges the answer can depend on: those whose box meets the half-line from the point
+    // along +a (the crossings) or the square of side 2 radius about it (the near ones). The
+    // cells are found with a margin: a coordinate's cell is computed from its absolute value,
+    // the tests on values relative to the point.
+    const double margin = 1e-9 * h_ * (nx_ + ny_);
+    std::vector<int32_t> found;
+    const auto take = [&](int32_t c0, int32_t c1, int32_t r0, int32_t r1) {
+        for (int32_t y = r0; y <= r1; ++y)
+            for (int32_t x = c0; x <= c1; ++x) {
+                const std::size_t cell = static_cast<std::size_t>(y) * nx_ + x;
+                found.insert(found.end(), cell_edges_.begin() + cell_start_[cell], cell_edges_.begin() + cell_start_[cell + 1]);
+            }
+    };
+    const double gx1 = x0_ + h_ * nx_, gy1 = y0_ + h_ * ny_;
+    if (qy + margin >= y0_ && qy - margin <= gy1 && qx - margin <= gx1) take(column(qx - margin), nx_ - 1, row(qy - margin), row(qy + margin));
+    if (qx + radius + margin >= x0_ && qx - radius - margin <= gx1 && qy + radius + margin >= y0_ && qy - radius - margin <= gy1)
+        take(column(qx - radius - margin), column(qx + radius + margin), row(qy - radius - margin), row(qy + radius + margin));
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    const std::vector<EdgeRecord>& edges = mesh.edges();
+    const auto some_edges = [&](auto&& visit) {
+        for (const int32_t e : found) visit(edges[static_cast<std::size_t>(e)]);
+    };
+    const auto at = [&](int32_t v) {
+        return std::pair<double, double>{pa_[static_cast<std::size_t>(v)] - qx, pb_[static_cast<std::size_t>(v)] - qy};
+    };
+    return pick_over(mesh, n_, some_edges, at, radius, max_near);
+}
+
+std::size_t PickGrid::bytes() const {
+    return sizeof(double) * (pa_.capacity() + pb_.capacity()) + sizeof(int32_t) * (cell_start_.capacity() + cell_edges_.capacity());
 }
 
 DisplayProxy display_proxy(const WingedEdgeMesh& mesh, int32_t target_triangles) {
