@@ -12,6 +12,8 @@ export const expectedTasks = [
   ...['ui_load', 'ui_drag'].map((task) => ({ task, build: 'browser' })),
   { task: 'ui_walk_step', build: 'browser' }, // tests/bench/browser/walk.bench.mjs
   { task: 'ui_edit', build: 'browser' }, // tests/bench/browser/edit.bench.mjs
+  { task: 'ui_hover', build: 'browser' }, // tests/bench/browser/hover.bench.mjs
+  { task: 'ui_pick', build: 'browser' }, // tests/bench/browser/hover.bench.mjs
   { task: 'ui_tab_switch', build: 'browser' }, // tests/bench/browser/tabs.bench.mjs
   { task: 'ui_import', build: 'browser' }, // tests/bench/browser/import.bench.mjs
   { task: 'ui_rotate', build: 'browser' }, // tests/bench/browser/rotate.bench.mjs

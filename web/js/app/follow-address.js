@@ -32,8 +32,15 @@ export function createAddressFollower({ lesson, store, persister, contents, mess
   }
 
   let following = null;
-  async function followAddress() {
-    const code = readHashCode();
+  // The code of the last address that came (hashchange, popstate; a fragment pasted fires
+  // both): a link that came while another was read wins over it. The page's own writes of
+  // the address (replaceState) fire neither, so a write of the work shown before the link,
+  // landing while the link is read or before its event is handled, does not hide the link.
+  let latest = null;
+  /** @param {string} url the address that came (a hashchange's newURL) */
+  async function followAddress(url) {
+    const code = readHashCode(new URL(url).hash);
+    latest = code;
     if (code === null || code === persister.lastCode || code === following) return;
     following = code;
     const refuse = (err) => {
@@ -48,7 +55,7 @@ export function createAddressFollower({ lesson, store, persister, contents, mess
         refuse(err);
         return;
       }
-      if (readHashCode() !== code) return; // another address came meanwhile
+      if (latest !== code) return; // another address came meanwhile
       const previous = store.state;
       if (accept(read.state, 'link', refuse)) offerPrevious(previous, read.problem);
     } finally {
@@ -72,7 +79,9 @@ export function createAddressFollower({ lesson, store, persister, contents, mess
     offerPrevious,
     /** Follows every later change of the address (hashchange, back and forward). */
     listen() {
-      const follow = () => (opensAfresh() ? reloadKeeping() : followAddress());
+      const follow = (/** @type {Event} */ event) => {
+        return opensAfresh() ? reloadKeeping() : followAddress(event instanceof HashChangeEvent ? event.newURL : window.location.href);
+      };
       window.addEventListener('hashchange', follow);
       window.addEventListener('popstate', follow);
     },

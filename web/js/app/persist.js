@@ -77,8 +77,8 @@ export function isFramed() {
   }
 }
 
-export function readHashCode() {
-  const params = new URLSearchParams(window.location.hash.slice(1));
+export function readHashCode(hash = window.location.hash) {
+  const params = new URLSearchParams(hash.slice(1));
   return params.get('s');
 }
 
