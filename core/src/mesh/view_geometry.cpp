@@ -234,12 +234,14 @@ void PickGrid::build(const WingedEdgeMesh& mesh, const glm::dvec3& towards) {
     }
     const std::vector<EdgeRecord>& edges = mesh.edges();
     const auto E = static_cast<int32_t>(edges.size());
-    // About one live edge per cell: a square grid over the mesh's extent in the view plane.
+    // About eight live edges per cell (a coarser grid builds faster: each edge is in one or two
+    // cells; a pick then reads a few thousand edges at a million faces): square cells over the
+    // mesh's extent in the view plane.
     int64_t live = 0;
     for (int32_t e = 0; e < E; ++e) live += !mesh.is_deleted(Edge(e));
     if (!(xmin <= xmax)) xmin = xmax = ymin = ymax = 0;
     const double w = std::max(xmax - xmin, 1e-300), hgt = std::max(ymax - ymin, 1e-300);
-    const double cells = std::max<double>(1.0, static_cast<double>(live));
+    const double cells = std::max<double>(1.0, static_cast<double>(live) / 8.0);
     h_ = std::max(std::sqrt(w * hgt / cells), std::max(w, hgt) / 4096.0);
     x0_ = xmin, y0_ = ymin;
     nx_ = std::clamp(static_cast<int32_t>(std::floor(w / h_)) + 1, 1, 4096);

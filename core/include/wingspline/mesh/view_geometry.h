@@ -47,7 +47,7 @@ PickResult pick_faces(const WingedEdgeMesh& mesh, const glm::dvec3& point, const
                       int32_t max_near);
 
 // The same pick, many times at one view of a big mesh: the vertices' coordinates in the view
-// plane and a uniform grid of the edges' boxes there (about one edge per cell), made once per
+// plane and a uniform grid of the edges' boxes there (about eight edges per cell), made once per
 // mesh version and view direction (build: O(V + E)); each pick then reads the edges in the
 // cells along its half-line and within its radius, O(sqrt(E)) for an even mesh instead of
 // O(V + E), and answers exactly as pick_faces (tests/native/mesh/test_picking.cpp compares
