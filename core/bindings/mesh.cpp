@@ -291,38 +291,29 @@ val mesh_format(val positions, val face_offsets, val face_vertices, const std::s
 
 // The faces as the winged edge holds them now, each from its first corner, a removed face
 // with no corners: {faceOffsets, faceVertices}, the face set the other representations are
-// derived from, read without deriving them (one walk around each face).
-val mesh_face_set(int32_t handle) {
+// derived from, read without deriving them (one walk around each face). `all`: every face;
+// otherwise the faces listed (any order, each a face number of the mesh, removed or not), so
+// that a page follows an edit by reading again only the faces it changed. Refuses a number
+// that is no face ('invalid-element').
+val mesh_face_set(int32_t handle, const val& faces, bool all) {
     return guarded([&] {
-        const IndexedMesh m = entry(handle).winged.face_set();
+        const WingedEdgeMesh& w = entry(handle).winged;
+        IndexedMesh m;
+        if (all) {
+            m = w.face_set();
+        } else {
+            const std::vector<double> list = to_doubles(faces);
+            for (const double x : list) {
+                if (!(x >= 0 && x < w.face_count() && x == static_cast<double>(static_cast<int32_t>(x))))
+                    throw Error("invalid-element", "the face list names a face this mesh does not have");
+                const std::vector<int32_t> corners = w.face_corners(static_cast<int32_t>(x));
+                m.face_vertices.insert(m.face_vertices.end(), corners.begin(), corners.end());
+                m.face_offsets.push_back(static_cast<int32_t>(m.face_vertices.size()));
+            }
+        }
         val r = val::object();
         r.set("faceOffsets", to_typed_array(m.face_offsets));
         r.set("faceVertices", to_typed_array(m.face_vertices));
-        return r;
-    });
-}
-
-// The same for the faces listed (any order, each a face number of the mesh, removed or
-// not): {faceOffsets, faceVertices} over the list, so that a page follows an edit by reading
-// again only the faces it changed. Refuses a number that is no face ('invalid-element').
-val mesh_face_corners(int32_t handle, const val& faces) {
-    return guarded([&] {
-        const WingedEdgeMesh& w = entry(handle).winged;
-        const std::vector<double> list = to_doubles(faces);
-        std::vector<int32_t> offsets{0};
-        std::vector<int32_t> vertices;
-        for (std::size_t i = 0; i < list.size(); ++i) {
-            const double x = list[i];
-            if (!(x >= 0 && x < w.face_count() && x == static_cast<double>(static_cast<int32_t>(x))))
-                throw Error("invalid-element", "entry " + std::to_string(i) + " of the face list is not a face number of this mesh (0 to " +
-                                                   std::to_string(w.face_count() - 1) + ")");
-            const std::vector<int32_t> corners = w.face_corners(static_cast<int32_t>(x));
-            vertices.insert(vertices.end(), corners.begin(), corners.end());
-            offsets.push_back(static_cast<int32_t>(vertices.size()));
-        }
-        val r = val::object();
-        r.set("faceOffsets", to_typed_array(offsets));
-        r.set("faceVertices", to_typed_array(vertices));
         return r;
     });
 }
@@ -383,7 +374,6 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh) {
     emscripten::function("meshNamed", &named_mesh);
     emscripten::function("meshExport", &mesh_export);
     emscripten::function("meshFaceSet", &mesh_face_set);
-    emscripten::function("meshFaceCorners", &mesh_face_corners);
     emscripten::function("meshParse", &mesh_parse);
     emscripten::function("meshLimits", &mesh_limits);
     emscripten::function("meshFormat", &mesh_format);

@@ -8,6 +8,7 @@
 #include "mesh_entry.h"
 
 #include "wingspline/mesh/edit_costs.h"
+#include "wingspline/mesh/queries.h"
 #include "wingspline/mesh/operations.h"
 #include "wingspline/mesh/representations.h"
 #include "wingspline/mesh/tables.h"
@@ -88,6 +89,33 @@ val costs_value(const EditCosts& costs) {
     val out = val::object();
     for (int k = 0; k < kRepresentationCount; ++k) out.set(representation_key(static_cast<Representation>(k)), cost_value(costs[k]));
     return out;
+}
+
+// {sizes: [{n, faces}], reads: [{[key]: entries}]}: a query's reads against mesh size
+// (queries.h, query_cost_growth), on grids of n x n quads for each n in `sizes`.
+val mesh_query_cost_growth(const std::string& kind, const val& sizes) {
+    return guarded([&] {
+        const QueryKind k = query_kind(kind);
+        std::vector<int32_t> n;
+        for (const double x : to_doubles(sizes)) n.push_back(static_cast<int32_t>(x));
+        const QueryCostGrowth g = query_cost_growth(k, n);
+        val list = val::array();
+        val reads = val::array();
+        for (std::size_t i = 0; i < g.n.size(); ++i) {
+            val size = val::object();
+            size.set("n", g.n[i]);
+            size.set("faces", static_cast<double>(g.faces[i]));
+            list.set(i, size);
+            val one = val::object();
+            for (int r = 0; r < kRepresentationCount; ++r)
+                one.set(representation_key(static_cast<Representation>(r)), static_cast<double>(g.reads[i][r]));
+            reads.set(i, one);
+        }
+        val out = val::object();
+        out.set("sizes", list);
+        out.set("reads", reads);
+        return out;
+    });
 }
 
 // The operation `name` on grids of n x n quads, one per size (edit_cost_growth):
@@ -185,5 +213,6 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh_edit) {
     using namespace wingspline::bindings;
     emscripten::function("meshEdit", &mesh_edit);
     emscripten::function("meshEditCostGrowth", &mesh_edit_cost_growth);
+    emscripten::function("meshQueryCostGrowth", &mesh_query_cost_growth);
     emscripten::function("meshCompact", &mesh_compact);
 }

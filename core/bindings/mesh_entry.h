@@ -33,6 +33,8 @@ const mesh::Representations& representations_of(MeshEntry& m);
 val version_value(const mesh::MeshVersion& v);
 val int_array(const std::vector<int32_t>& v);
 val report_value(const mesh::ValidationReport& report);
+// {face, near: Int32Array, distance: Float64Array}: a pick's answer (mesh_geometry.cpp).
+val pick_value(const mesh::PickResult& p);
 // A missing element or a gap left by an edit, refused as the mesh's own operations refuse
 // them (WingedEdgeMesh::check_element).
 void require_vertex(const mesh::WingedEdgeMesh& w, int32_t v);

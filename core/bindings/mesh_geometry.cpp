@@ -9,6 +9,17 @@
 #include "wingspline/mesh/winged_edge.h"
 
 namespace wingspline::bindings {
+
+val pick_value(const mesh::PickResult& p) {
+    std::vector<int32_t> faces;
+    std::vector<double> distances;
+    for (const mesh::PickNear& n : p.near) faces.push_back(n.face), distances.push_back(n.distance);
+    val r = val::object();
+    r.set("face", p.face);
+    r.set("near", to_typed_array(faces));
+    r.set("distance", to_typed_array(distances));
+    return r;
+}
 namespace {
 
 using namespace wingspline::mesh;
@@ -75,32 +86,12 @@ val mesh_bounding_box(int32_t handle) {
     });
 }
 
-// From this many edges a pick goes through the mesh's pick grid (one pass over the mesh per
-// view, then a few cells per pick); below it the pass itself is quicker than a grid.
-constexpr std::size_t kPickGridFromEdges = 30000;
-
 // {face, near: Int32Array, distance: Float64Array}: the faces seen along `towards` through
 // `point` (view_geometry.h pick_faces): the nearest hit face (-1: none) and the
 // faces within `radius` of the line of sight, the hit face first.
 val mesh_pick(int32_t handle, double px, double py, double pz, double tx, double ty, double tz, double radius, int32_t max_near) {
     return guarded([&] {
-        MeshEntry& m = entry(handle);
-        const glm::dvec3 towards{tx, ty, tz};
-        PickResult p;
-        if (m.winged.edges().size() < kPickGridFromEdges) {
-            p = pick_faces(m.winged, {px, py, pz}, towards, radius, max_near);
-        } else {
-            if (!m.pick_grid.fits(m.winged, towards)) m.pick_grid.build(m.winged, towards);
-            p = m.pick_grid.pick(m.winged, {px, py, pz}, radius, max_near);
-        }
-        std::vector<int32_t> faces;
-        std::vector<double> distances;
-        for (const PickNear& n : p.near) faces.push_back(n.face), distances.push_back(n.distance);
-        val r = val::object();
-        r.set("face", p.face);
-        r.set("near", to_typed_array(faces));
-        r.set("distance", to_typed_array(distances));
-        return r;
+        return pick_value(pick_faces(entry(handle).winged, {px, py, pz}, {tx, ty, tz}, radius, max_near));
     });
 }
 

@@ -85,33 +85,6 @@ val mesh_query(int32_t handle, const std::string& kind, int32_t element) {
     });
 }
 
-// {sizes: [{n, faces}], reads: [{[key]: entries}]}: a query's reads against mesh size
-// (queries.h, query_cost_growth), on grids of n x n quads for each n in `sizes`.
-val mesh_query_cost_growth(const std::string& kind, const val& sizes) {
-    return guarded([&] {
-        const QueryKind k = query_kind(kind);
-        std::vector<int32_t> n;
-        for (const double x : to_doubles(sizes)) n.push_back(static_cast<int32_t>(x));
-        const QueryCostGrowth g = query_cost_growth(k, n);
-        val list = val::array();
-        val reads = val::array();
-        for (std::size_t i = 0; i < g.n.size(); ++i) {
-            val size = val::object();
-            size.set("n", g.n[i]);
-            size.set("faces", static_cast<double>(g.faces[i]));
-            list.set(i, size);
-            val one = val::object();
-            for (int r = 0; r < kRepresentationCount; ++r)
-                one.set(representation_key(static_cast<Representation>(r)), static_cast<double>(g.reads[i][r]));
-            reads.set(i, one);
-        }
-        val out = val::object();
-        out.set("sizes", list);
-        out.set("reads", reads);
-        return out;
-    });
-}
-
 // {bytes, perFace}: the winged-edge tables' own size.
 val mesh_bytes(int32_t handle) {
     return guarded([&] {
@@ -172,7 +145,6 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh_representations) {
     emscripten::function("meshStorage", &mesh_storage);
     emscripten::function("meshTables", &mesh_tables);
     emscripten::function("meshQuery", &mesh_query);
-    emscripten::function("meshQueryCostGrowth", &mesh_query_cost_growth);
     emscripten::function("meshVersion", &mesh_version);
     emscripten::function("meshGaps", &mesh_gaps);
     emscripten::function("meshChangeFormat", &mesh_change_format);

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -105,17 +104,15 @@ void check_pick(const glm::dvec3& point, double radius, int32_t max_near) {
 // or those a PickGrid found near the line; the answer is the same when those include every
 // edge the half-line crosses or the radius reaches), a vertex's view-plane coordinates
 // relative to the point from `at(v)`.
+// `odd`: one entry per face, all 0 on entry; the faces it toggled are set back to 0 on return.
 template <class EachEdge, class At>
-PickResult pick_over(const WingedEdgeMesh& mesh, const glm::dvec3& n, EachEdge&& each_edge, At&& at, double radius, int32_t max_near) {
+PickResult pick_over(const WingedEdgeMesh& mesh, const glm::dvec3& n, EachEdge&& each_edge, At&& at, double radius, int32_t max_near,
+                     std::vector<char>& odd) {
     // The line of sight passes through a face when the half-line from the point along +a
     // crosses the face's sides an odd number of times (the crossing-number test, half-open
     // in y so a corner on the half-line counts once); each side crossed toggles both faces of
     // the edge. A side within the radius makes both its faces near, at the side's distance.
-    std::unordered_map<int32_t, char> odd;
-    const auto is_odd = [&](int32_t f) {
-        const auto it = odd.find(f);
-        return it != odd.end() && it->second;
-    };
+    const auto is_odd = [&](int32_t f) { return odd[static_cast<std::size_t>(f)] != 0; };
     std::vector<int32_t> toggled;
     std::vector<std::pair<int32_t, double>> close; // (face, distance of one of its sides)
     each_edge([&](const EdgeRecord& r) {
@@ -124,7 +121,7 @@ PickResult pick_over(const WingedEdgeMesh& mesh, const glm::dvec3& n, EachEdge&&
         if ((ys > 0) != (yt > 0) && xs + (0 - ys) * (xt - xs) / (yt - ys) > 0) {
             for (const int32_t f : {r.left, r.right}) {
                 if (f == kNone) continue;
-                char& o = odd[f];
+                char& o = odd[static_cast<std::size_t>(f)];
                 if (!o) toggled.push_back(f);
                 o ^= 1;
             }
@@ -184,6 +181,7 @@ PickResult pick_over(const WingedEdgeMesh& mesh, const glm::dvec3& n, EachEdge&&
                      [](const PickNear& l, const PickNear& r) { return l.distance < r.distance; });
     if (near.size() > static_cast<std::size_t>(max_near)) near.resize(static_cast<std::size_t>(max_near));
     result.near = std::move(near);
+    for (const int32_t f : toggled) odd[static_cast<std::size_t>(f)] = 0;
     return result;
 }
 
@@ -208,7 +206,8 @@ PickResult pick_faces(const WingedEdgeMesh& mesh, const glm::dvec3& point, const
             if (!mesh.is_deleted(Edge(e))) visit(edges[static_cast<std::size_t>(e)]);
     };
     const auto at = [&](int32_t v) { return std::pair<double, double>{vx[static_cast<std::size_t>(v)], vy[static_cast<std::size_t>(v)]}; };
-    return pick_over(mesh, frame.n, every_edge, at, radius, max_near);
+    std::vector<char> odd(static_cast<std::size_t>(mesh.face_count()), 0);
+    return pick_over(mesh, frame.n, every_edge, at, radius, max_near, odd);
 }
 
 // ---------------------------------------------------------------- the pick grid
@@ -285,7 +284,7 @@ int32_t PickGrid::row(double y) const {
     return std::clamp(static_cast<int32_t>(std::floor((y - y0_) / h_)), 0, ny_ - 1);
 }
 
-PickResult PickGrid::pick(const WingedEdgeMesh& mesh, const glm::dvec3& point, double radius, int32_t max_near) const {
+PickResult PickGrid::pick(const WingedEdgeMesh& mesh, const glm::dvec3& point, double radius, int32_t max_near) {
     check_pick(point, radius, max_near);
     if (!built_) throw Error("internal-error", "the pick grid is used before it was built");
     const double qx = glm::dot(point, a_), qy = glm::dot(point, b_);
@@ -315,11 +314,12 @@ PickResult PickGrid::pick(const WingedEdgeMesh& mesh, const glm::dvec3& point, d
     const auto at = [&](int32_t v) {
         return std::pair<double, double>{pa_[static_cast<std::size_t>(v)] - qx, pb_[static_cast<std::size_t>(v)] - qy};
     };
-    return pick_over(mesh, n_, some_edges, at, radius, max_near);
+    odd_.resize(static_cast<std::size_t>(mesh.face_count()), 0); // all 0 between picks
+    return pick_over(mesh, n_, some_edges, at, radius, max_near, odd_);
 }
 
 std::size_t PickGrid::bytes() const {
-    return sizeof(double) * (pa_.capacity() + pb_.capacity()) + sizeof(int32_t) * (cell_start_.capacity() + cell_edges_.capacity());
+    return sizeof(double) * (pa_.capacity() + pb_.capacity()) + sizeof(int32_t) * (cell_start_.capacity() + cell_edges_.capacity()) + odd_.capacity();
 }
 
 DisplayProxy display_proxy(const WingedEdgeMesh& mesh, int32_t target_triangles) {

@@ -35,6 +35,7 @@ test('a part carries its own functions only', async () => {
   for (const name of ['buildMesh', 'subdivide', 'limitPositions', 'sampleCurve', 'uniformKnots', 'subdivideCurve']) assert.equal(typeof subdivision[name], 'function', name);
   assert.equal(subdivision.segmentMatrices, undefined);
   assert.equal(subdivision.editCostGrowth, undefined, 'the subdivision lesson\'s module does not edit');
+  assert.equal(subdivision.queryCostGrowth, undefined, 'nor draws the mesh lesson\'s cost charts');
   assert.deepEqual(subdivision.meshOperations.operations, [], 'nor carries the registry');
   assert.deepEqual([subdivision.meshOperations.tables, subdivision.meshOperations.fields], [mesh.meshOperations.tables, mesh.meshOperations.fields],
     'a playback\'s steps read the same in both');

@@ -401,7 +401,10 @@ export class Mesh {
     const t = vector3(towards, 'towards');
     integerIn(max, 'max', 0, 1024);
     if (typeof radius !== 'number') fail('invalid-argument', 'radius must be a number >= 0 (world units)');
-    const r = unwrap(this.#raw.meshPick(this.#live(), p[0], p[1], p[2], t[0], t[1], t[2], radius, max));
+    // A module that edits meshes carries the big-mesh pick grid (the same answer, a few cells
+    // per pick once made for the view); the subdivision lesson's picks by the whole pass.
+    const pickIn = this.#raw.meshPickGrid ?? this.#raw.meshPick;
+    const r = unwrap(pickIn(this.#live(), p[0], p[1], p[2], t[0], t[1], t[2], radius, max));
     return { face: r.face, near: Array.from(r.near, (face, i) => ({ face, distance: r.distance[i] })) };
   }
 
@@ -528,12 +531,12 @@ export class Mesh {
   /** @param {{ faces?: ArrayLike<number> }} [options] */
   faceSet({ faces } = {}) {
     if (faces === undefined) {
-      const r = unwrap(this.#raw.meshFaceSet(this.#live()));
+      const r = unwrap(this.#raw.meshFaceSet(this.#live(), null, true));
       return { faceOffsets: r.faceOffsets, faceVertices: r.faceVertices };
     }
     if (!isNumberArray(faces)) fail('invalid-argument', 'faces must be an array of face numbers');
     for (const f of Array.from(faces)) elementIndex(f, 'face');
-    const r = unwrap(this.#raw.meshFaceCorners(this.#live(), Float64Array.from(faces)));
+    const r = unwrap(this.#raw.meshFaceSet(this.#live(), Float64Array.from(faces), false));
     return { faceOffsets: r.faceOffsets, faceVertices: r.faceVertices };
   }
 
@@ -616,7 +619,7 @@ function costGridSizes(sizes) {
 // withSubdivision: the module carries mesh subdivision (wingspline-subdivision,
 // wingspline-meshes, the bench module); the mesh lesson's module (wingspline-mesh) does not,
 // and its API has no subdivide. withEdits: the module edits meshes (all but
-// wingspline-subdivision, whose API has no editCostGrowth and whose meshes refuse apply,
+// wingspline-subdivision, whose API has no editCostGrowth nor queryCostGrowth and whose meshes refuse apply,
 // check and compact with 'part-not-loaded').
 export function createMeshApi(raw, { withSubdivision = true, withEdits = true } = {}) {
   const { maxCoordinate, maxFaceCorners, maxVertices, maxFaces } = unwrap(raw.meshLimits());
@@ -749,16 +752,16 @@ export function createMeshApi(raw, { withSubdivision = true, withEdits = true } 
       return indexedOutput(r, o.layout);
     },
   };
-  // What query `kind` (faces-around-vertex, ...) reads from each representation on grids of
-  // n x n quads (F = 2 n²), one per n in `sizes` (even, 2..4000), at the grid's middle
-  // element: {sizes: [{n, faces}], reads: [{[representation]: entries}]}, measured by the core
-  // on small grids and exact at every size (queries.h, query_cost_growth).
-  meshApi.queryCostGrowth = (kind, sizes) => {
-    const n = costGridSizes(sizes);
-    const r = unwrap(raw.meshQueryCostGrowth(String(kind), n));
-    return { sizes: r.sizes.map((s) => ({ n: s.n, faces: s.faces })), reads: r.reads.map((x) => ({ ...x })) };
-  };
   if (withEdits) {
+    // What query `kind` (faces-around-vertex, ...) reads from each representation on grids of
+    // n x n quads (F = 2 n²), one per n in `sizes` (even, 2..4000), at the grid's middle
+    // element: {sizes: [{n, faces}], reads: [{[representation]: entries}]}, measured by the core
+    // on small grids and exact at every size (queries.h, query_cost_growth).
+    meshApi.queryCostGrowth = (kind, sizes) => {
+      const n = costGridSizes(sizes);
+      const r = unwrap(raw.meshQueryCostGrowth(String(kind), n));
+      return { sizes: r.sizes.map((s) => ({ n: s.n, faces: s.faces })), reads: r.reads.map((x) => ({ ...x })) };
+    };
     // What operation `name` costs each representation on grids of n x n quads (F = 2 n²),
     // one per n in `sizes` (even, 2..4000): {sizes: [{n, faces}], costs: [{[representation]:
     // {reads, writes}}]}, measured by the core on small grids and exact at every size

@@ -59,7 +59,7 @@ public:
     // Throws as pick_faces for a bad direction.
     void build(const WingedEdgeMesh& mesh, const glm::dvec3& towards);
     // `mesh` must be the one it was built for, unchanged (fits). Throws as pick_faces.
-    PickResult pick(const WingedEdgeMesh& mesh, const glm::dvec3& point, double radius, int32_t max_near) const;
+    PickResult pick(const WingedEdgeMesh& mesh, const glm::dvec3& point, double radius, int32_t max_near);
     std::size_t bytes() const;
 
 private:
@@ -74,6 +74,7 @@ private:
     double x0_ = 0, y0_ = 0, h_ = 1;
     int32_t nx_ = 1, ny_ = 1;
     std::vector<int32_t> cell_start_, cell_edges_; // CSR: the edges of cell (row y, column x) at y nx + x
+    std::vector<char> odd_;                        // per face, the crossings' parity during a pick (0 between picks)
 };
 
 // A lighter picture of a big mesh for drawing while the view moves: vertex
