@@ -9,7 +9,7 @@
 //   WINGSPLINE_HOVER_SITES=before=/tmp/dist-old,after=dist node tests/bench/browser/hover.bench.mjs
 // measures several built sites in one run (default: this worktree's dist/).
 import { wants, report } from '../wasm/harness.mjs';
-import { benchSites } from './sites.mjs';
+import { benchSites, msSummary } from './sites.mjs';
 import { startSite, launchBrowser, openPage } from '../../helpers/browser.mjs';
 import { chooseSphere } from '../../helpers/mesh-page.mjs';
 
@@ -17,10 +17,6 @@ const MOVES = 200;
 const CLICKS = 50;
 const [SLICES, STACKS] = (process.env.WINGSPLINE_HOVER_SPHERE ?? '1000x501').split('x').map(Number);
 
-function summary(times) {
-  const sorted = [...times].sort((a, b) => a - b);
-  return { median_ms: sorted[Math.floor(sorted.length / 2)], p95_ms: sorted[Math.floor(0.95 * (sorted.length - 1))] };
-}
 
 // The pointer events at canvas points, timed in the page: {first, times, checksum}.
 function pointerTimes(page, { count, click }) {
@@ -65,11 +61,11 @@ if (wants('ui_hover') || wants('ui_pick')) {
         const view = mode3d ? '3d' : '2d';
         if (wants('ui_hover')) {
           const { first, times, checksum } = await pointerTimes(page, { count: MOVES, click: false });
-          report({ task: 'ui_hover', build: 'browser', input, view, ...(label ? { site: label } : {}), n: 1, seconds: times, checksum, unit: 'ms', first_ms: first, ...summary(times) });
+          report({ task: 'ui_hover', build: 'browser', input, view, ...(label ? { site: label } : {}), n: 1, seconds: times, checksum, unit: 'ms', first_ms: first, ...msSummary(times) });
         }
         if (wants('ui_pick')) {
           const { first, times, checksum } = await pointerTimes(page, { count: CLICKS, click: true });
-          report({ task: 'ui_pick', build: 'browser', input, view, ...(label ? { site: label } : {}), n: 1, seconds: times, checksum, unit: 'ms', first_ms: first, ...summary(times) });
+          report({ task: 'ui_pick', build: 'browser', input, view, ...(label ? { site: label } : {}), n: 1, seconds: times, checksum, unit: 'ms', first_ms: first, ...msSummary(times) });
         }
       }
       if (page.problems.length) throw new Error(page.problems.join('\n'));

@@ -13,3 +13,9 @@ export function benchSites(variable) {
     return { label, root: path.resolve(repoRoot, dir) };
   });
 }
+
+// Median and p95 of a list of times (ms).
+export function msSummary(times) {
+  const sorted = [...times].sort((a, b) => a - b);
+  return { median_ms: sorted[Math.floor(sorted.length / 2)], p95_ms: sorted[Math.floor(0.95 * (sorted.length - 1))] };
+}

@@ -13,7 +13,7 @@
 //   WINGSPLINE_WALK_SITES=before=/tmp/dist-old,after=dist node tests/bench/browser/walk.bench.mjs
 // measures several built sites in one run (default: this worktree's dist/).
 import { wants, report } from '../wasm/harness.mjs';
-import { benchSites } from './sites.mjs';
+import { benchSites, msSummary } from './sites.mjs';
 import { startSite, launchBrowser, openPage } from '../../helpers/browser.mjs';
 import { chooseSphere } from '../../helpers/mesh-page.mjs';
 
@@ -53,10 +53,6 @@ async function walkSteps(page, walk, element) {
   }, STEPS);
 }
 
-function summary(times) {
-  const sorted = [...times].sort((a, b) => a - b);
-  return { median_ms: sorted[Math.floor(sorted.length / 2)], p95_ms: sorted[Math.floor(0.95 * (sorted.length - 1))] };
-}
 
 for (const { label, root } of wants(TASK) ? benchSites('WINGSPLINE_WALK_SITES') : []) {
   const site = await startSite({ root });
@@ -73,7 +69,7 @@ for (const { label, root } of wants(TASK) ? benchSites('WINGSPLINE_WALK_SITES') 
       if (input.slices) await chooseSphere(page, input.slices, input.stacks, { timeout: 240000 });
       for (const [walk, element] of [['vertex', input.vertex], ['face', input.face]]) {
         const { times, checksum } = await walkSteps(page, walk, element);
-        report({ task: TASK, build: 'browser', input: input.name, walk, ...(label ? { site: label } : {}), n: 1, seconds: times, checksum, unit: 'ms', ...summary(times) });
+        report({ task: TASK, build: 'browser', input: input.name, walk, ...(label ? { site: label } : {}), n: 1, seconds: times, checksum, unit: 'ms', ...msSummary(times) });
       }
     }
     if (page.problems.length) throw new Error(page.problems.join('\n'));

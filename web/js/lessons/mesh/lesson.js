@@ -11,7 +11,7 @@ import { faceCsr } from '../../ui/mesh/mesh-choice.js';
 import { MESH_KINDS, MESH_SIZES, IMPORTED_CONTENT } from './choices.js';
 import { arraysAtStep, visibleSteps } from './edit-playback.js';
 import { normaliseSteps, walkFrames } from '../../ui/mesh/walk.js';
-import { followEdit, followFaces, followRows } from '../../ui/mesh/winged-arrays.js';
+import { followEdit, followFaces, followRows, recordEdges } from '../../ui/mesh/winged-arrays.js';
 import { drawMesh, createBaseCache } from '../../ui/mesh/draw.js';
 import { LABEL_LIMIT } from '../../ui/mesh/label-plan.js';
 import { viewRotation, projectAll, unprojectDelta, facesAway, fitProjected } from '../../ui/mesh/view.js';
@@ -295,13 +295,6 @@ function compute(view, state, ctx) {
 function unwritten(weShown, edges, out) {
   for (const e of edges) if (e < out.length && (weShown.edges[8 * e] < 0 || weShown.edges[8 * e + 1] < 0)) out[e] = 1;
   return out;
-}
-
-// The edges an edit's record names: rewritten, added, removed.
-function recordEdges(record) {
-  const edges = new Set([...Array.from(record.added.edges), ...Array.from(record.removed.edges)]);
-  for (const r of record.rows) if (r.table === 'edge') edges.add(r.row);
-  return edges;
 }
 
 // The gaps after an edit: those before it and the elements it removed, increasing.

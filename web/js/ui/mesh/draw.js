@@ -17,6 +17,7 @@ import { eLabel } from '../element-labels.js';
 import { parseColour } from '../gl-mesh.js';
 import { faceCount, cornersOf, hasCorners, faceXY, frontFacing, edgeSeen } from './faces.js';
 import { LABEL_LIMIT, labelPlan, drawLabels, createLabelCache } from './label-plan.js';
+import { recordEdges } from './winged-arrays.js';
 
 const CACHE_EDGES = 2000;        // from this size the still mesh is drawn once into a bitmap
 
@@ -248,8 +249,7 @@ function followOf(model) {
   const follow = model.derived?.follow;
   const none = { from: () => false, faces: [], vertices: [], edges: [] };
   if (!record?.rows) return none;
-  const edges = new Set([...Array.from(record.added.edges), ...Array.from(record.removed.edges)]);
-  for (const r of record.rows) if (r.table === 'edge') edges.add(r.row);
+  const edges = recordEdges(record);
   const vertexList = [...record.positions.map((p) => p.vertex), ...Array.from(record.added.vertices), ...Array.from(record.removed.vertices)];
   const versionOf = (key) => key.split('|').at(-2);
   const sameSource = (key) => key.startsWith(`${model.source}|`);

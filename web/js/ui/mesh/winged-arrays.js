@@ -8,7 +8,8 @@
 //   in place when the added rows fit, otherwise new ones with room to grow);
 //   followPositions(positions, mesh, record) -> the positions alone, the same way;
 //   followRows(table, stride, n, touched, rowOf) -> any per-row table the same way (the
-//   projected positions); followFaces(csr, mesh, we, record) -> the faces as CSR.
+//   projected positions); followFaces(csr, mesh, we, record) -> the faces as CSR;
+//   recordEdges(record) -> the edges a record names.
 // Needs: the mesh (tables('winged-edge', {offset, limit}) reads rows through views of the
 //   core's own arrays) and its change record (mesh.apply: rows, added, removed, positions).
 
@@ -108,6 +109,17 @@ function shifted(out, from, start, end, delta) {
 }
 
 /**
+ * The edges an edit's record names: the rows it rewrote, the edges it added and removed.
+ * @param {{ rows: { table: string, row: number }[], added: { edges: ArrayLike<number> }, removed: { edges: ArrayLike<number> } }} record
+ * @returns {Set<number>}
+ */
+export function recordEdges(record) {
+  const edges = new Set([...Array.from(record.added.edges), ...Array.from(record.removed.edges)]);
+  for (const r of record.rows) if (r.table === 'edge') edges.add(r.row);
+  return edges;
+}
+
+/**
  * The faces as CSR after an edit, from `csr` before it: the faces whose
  * corners the edit can have changed read again from the core (mesh.faceSet({faces})), the
  * others' corners copied. Those faces: the face rows it rewrote, the faces it added or
@@ -130,12 +142,8 @@ function shifted(out, from, start, end, delta) {
 export function followFaces(csr, mesh, we, record, { own = false } = {}) {
   const F = we.faceEdge.length;
   const faces = new Set([...Array.from(record.added.faces), ...Array.from(record.removed.faces)]);
-  const edges = new Set([...Array.from(record.added.edges), ...Array.from(record.removed.edges)]);
-  for (const r of record.rows) {
-    if (r.table === 'face') faces.add(r.row);
-    else if (r.table === 'edge') edges.add(r.row);
-  }
-  for (const e of edges) {
+  for (const r of record.rows) if (r.table === 'face') faces.add(r.row);
+  for (const e of recordEdges(record)) {
     const left = we.edges[8 * e + 2]; const right = we.edges[8 * e + 3];
     if (left >= 0) faces.add(left);
     if (right >= 0) faces.add(right);
