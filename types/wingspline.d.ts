@@ -43,7 +43,7 @@ export type WingsplineErrorCode =
   // changing a mesh
   | 'unknown-operation' | 'invalid-parameter' | 'same-vertex' | 'not-a-corner' | 'not-a-neighbour' | 'adjacent-corners' | 'edge-exists'
   | 'boundary-edge' | 'same-face' | 'faces-touch-elsewhere' | 'would-duplicate-face' | 'not-triangles'
-  | 'would-pinch' | 'hole-too-small' | 'degenerate-vertex' | 'link-condition' | 'link-condition-face'
+  | 'would-pinch' | 'hole-too-small' | 'degenerate-vertex' | 'link-condition' | 'link-condition-face' | 'cannot-undo'
   // subdivision
   | 'unknown-scheme' | 'not-a-triangle-mesh' | 'mesh-has-gaps'
   // checking a student's tables (exercise kind 1) and walk steps (kind 2)
@@ -417,6 +417,13 @@ export interface Mesh {
   check(op: MeshOperationName, ...args: number[]): CheckResult;
   /** One adjacency query by the core's name (the registry's `choices`). */
   adjacency(kind: AdjacencyKind, element: number): Int32Array;
+  /**
+   * Takes back the newest edit apply() made (up to the last 1,000; compact() forgets them):
+   * the mesh before it, row for row, and its version again. The record's op is 'undo'; its
+   * `added` are the elements live again, its `removed` the edit's new elements, gone (not
+   * gaps). Throws 'cannot-undo' when there is none.
+   */
+  undo(): ChangeRecord;
   /** Removes the gaps; old index -> new (-1 = removed). */
   compact(): { vertices: ArrayLike<number>; edges: ArrayLike<number>; faces: ArrayLike<number> };
   format(options?: { format?: MeshFileFormat }): string;

@@ -1,5 +1,6 @@
 // Changing a mesh: every operation of the core's registry through one binding (meshEdit), its
-// change record as flat arrays, the cost of an edit against mesh size, and compact(). The
+// change record as flat arrays, undo of the newest edits, the cost of an edit against mesh
+// size, and compact(). The
 // binding group `edit`, in the mesh lesson's module and not the subdivision lesson's, which
 // never edits (docs/architecture.md, "Module size"). The registry itself as data is
 // operations.cpp; the version and the gaps, which every mesh has, are mesh_representations.cpp.
@@ -176,7 +177,7 @@ val mesh_edit(int32_t handle, const std::string& name, const val& args, bool che
             before_reps = me.representations.take(w);
         }
         if (cost == 2 && w.check(op).ok) winged_reads = winged_edit_reads(op, w);
-        const ChangeRecord c = w.apply(op);
+        ChangeRecord c = w.apply(op);
         val r = change_value(c);
         if (before_reps) r.set("costs", costs_value(edit_costs(reads, c, *before_reps, w, me.representations.of(w))));
         if (winged_reads >= 0) {
@@ -184,14 +185,33 @@ val mesh_edit(int32_t handle, const std::string& name, const val& args, bool che
             costs.set(representation_key(Representation::WingedEdge), cost_value({winged_reads, playback_writes(c)}));
             r.set("costs", costs);
         }
+        if (c.changed()) {
+            if (me.undoable.size() == kUndoRecords) me.undoable.clear(); // older edits: undone by building again
+            me.undoable.push_back(std::make_unique<ChangeRecord>(std::move(c)));
+        }
         return r;
+    });
+}
+
+// Takes back the newest edit meshEdit made (WingedEdgeMesh::undo) and returns the undo's
+// record, shaped as meshEdit's; refuses "cannot-undo" (nothing changed) when there is none
+// or something else changed the mesh since.
+val mesh_undo(int32_t handle) {
+    return guarded([&] {
+        MeshEntry& me = entry(handle);
+        if (me.undoable.empty()) throw Error("cannot-undo", "there is no edit to take back: the mesh is as it was built (or compacted)");
+        const ChangeRecord u = me.winged.undo(*me.undoable.back());
+        me.undoable.pop_back();
+        return change_value(u);
     });
 }
 
 // {renumbering: {vertices, edges, faces} (old -> new, -1 = removed), version}
 val mesh_compact(int32_t handle) {
     return guarded([&] {
-        WingedEdgeMesh& w = entry(handle).winged;
+        MeshEntry& me = entry(handle);
+        WingedEdgeMesh& w = me.winged;
+        me.undoable.clear(); // every number moved: no record names the mesh's rows any more
         const Renumbering map = w.compact();
         val renumbering = val::object();
         renumbering.set("vertices", int_array(map.vertices));
@@ -215,4 +235,5 @@ EMSCRIPTEN_BINDINGS(wingspline_mesh_edit) {
     emscripten::function("meshEditCostGrowth", &mesh_edit_cost_growth);
     emscripten::function("meshQueryCostGrowth", &mesh_query_cost_growth);
     emscripten::function("meshCompact", &mesh_compact);
+    emscripten::function("meshUndo", &mesh_undo);
 }

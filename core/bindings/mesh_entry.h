@@ -10,6 +10,7 @@
 #include "wingspline/mesh/winged_edge.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace wingspline::bindings {
@@ -21,11 +22,15 @@ namespace wingspline::bindings {
 // A big mesh also keeps its pick grid (view_geometry.h), made on the first pick at a view and
 // again when the mesh or the view direction changed: a pointer moving over a still view asks
 // it many times.
+// The records of its newest edits (meshEdit), newest last, are what meshUndo takes back
+// (WingedEdgeMesh::undo): at most kUndoRecords, the oldest dropped first.
 struct MeshEntry {
     mesh::WingedEdgeMesh winged;
     mesh::RepresentationCache representations;
     mesh::PickGrid pick_grid;
+    std::vector<std::unique_ptr<mesh::ChangeRecord>> undoable;
 };
+inline constexpr std::size_t kUndoRecords = 1000;
 
 // The entry of a live handle; throws Error("disposed") for a disposed or unknown one.
 MeshEntry& entry(int32_t handle);

@@ -74,6 +74,7 @@ const std::vector<ErrorCodeInfo>& error_codes() {
         {"degenerate-vertex", "changing a mesh", "collapse-edge: a vertex would keep two edges between the same two triangles"},
         {"link-condition", "changing a mesh", "collapse-edge: a vertex joined to both ends but not across a triangle on the edge"},
         {"link-condition-face", "changing a mesh", "collapse-edge: another face holds both ends"},
+        {"cannot-undo", "changing a mesh", "undo: the change is not the mesh's newest (another came after it, or there is none to take back)"},
         // subdivision
         {"unknown-scheme", "subdivision", "a scheme other than 'loop' or 'catmull-clark' (curves: 'chaikin' or 'cubic')"},
         {"not-a-triangle-mesh", "subdivision", "Loop's scheme on a mesh with a face that is not a triangle"},

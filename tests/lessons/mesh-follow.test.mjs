@@ -5,9 +5,12 @@
 //  * thousands of random edits on small meshes, in 2D and 3D: after each, the model's faces
 //    equal mesh.faceSet(), its projected positions equal projectAll of the core's positions,
 //    its gap marks equal mesh.gaps();
-//  * on spheres of 1,200 and 120,000 faces the same edits read no whole table of the core
-//    (faceSet(), wingedEdgeArrays(), gaps(), boundingBox(), normals(), a table without a
-//    limit) and the same number of faces again at both sizes.
+//  * the same after going back to an earlier state (undo: the core takes the edits back from
+//    their records) and editing on from there;
+//  * on spheres of 1,200 and 120,000 faces the same edits, and undoing them, read no whole
+//    table of the core (faceSet(), wingedEdgeArrays(), gaps(), boundingBox(), normals(), a
+//    table without a limit), build no mesh, and read the same number of faces again at both
+//    sizes.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
@@ -42,23 +45,39 @@ function anEdit(rnd, model) {
   return null;
 }
 
-test('after each of 1,500 random edits the followed faces, projection and gaps equal a whole read of the core', () => {
-  let edits = 0; let withGaps = 0; let grew = 0;
-  for (let seed = 1; seed <= 60 && edits < 1500; seed += 1) {
+test('after each of 1,500 random edits and 500 undos the followed tables, faces, projection and gaps equal a whole read of the core', () => {
+  let edits = 0; let withGaps = 0; let grew = 0; let undos = 0; let undoneEdits = 0;
+  for (let seed = 1; seed <= 60 && (edits < 1500 || undos < 500); seed += 1) {
     const rnd = random(seed);
     const view = createMeshView();
     const ctx = { api };
     let state = { ...meshLesson.defaultState(), meshKind: ['sphere', 'cube', 'grid', 'lecture'][seed % 4], sphere: { slices: 7, stacks: 5 }, grid: { nx: 4, ny: 3 }, mode3d: seed % 2 === 0 };
     let model = meshLesson.compute(view, state, ctx);
-    for (let step = 0; step < 30; step += 1) {
-      const operation = anEdit(rnd, model);
-      if (!operation) break;
-      const F = model.F;
-      state = withEdit(state, operation);
-      model = meshLesson.compute(view, state, ctx);
-      edits += 1;
-      if (model.F > F) grew += 1;
-      const where = `seed ${seed} step ${step} ${JSON.stringify(operation)}`;
+    const mesh = model.mesh;
+    const earlier = [];
+    for (let step = 0; step < 40; step += 1) {
+      let where;
+      if (earlier.length && rnd() < 0.3) {
+        // Back to an earlier state, one or more edits back (the shell's undo), then on from there.
+        const k = 1 + Math.floor(rnd() * Math.min(3, earlier.length));
+        state = earlier.splice(earlier.length - k, k)[0];
+        model = meshLesson.compute(view, state, ctx);
+        undos += 1; undoneEdits += k;
+        where = `seed ${seed} step ${step} undo ${k}`;
+        assert.equal(model.mesh, mesh, `${where}: the mesh was not built again`);
+      } else {
+        const operation = anEdit(rnd, model);
+        if (!operation) break;
+        const F = model.F;
+        earlier.push(state);
+        state = withEdit(state, operation);
+        model = meshLesson.compute(view, state, ctx);
+        edits += 1;
+        if (model.F > F) grew += 1;
+        where = `seed ${seed} step ${step} ${JSON.stringify(operation)}`;
+      }
+      const we = model.mesh.wingedEdgeArrays();
+      for (const key of ['positions', 'vertexEdge', 'edges', 'faceEdge']) assert.deepEqual(Array.from(model.we[key]), Array.from(we[key]), `${where}: ${key}`);
       const faces = model.mesh.faceSet();
       assert.deepEqual([Array.from(model.faceOffsets), Array.from(model.faceVertices)], [Array.from(faces.faceOffsets), Array.from(faces.faceVertices)], where);
       const positions = model.mesh.wingedEdgeArrays().positions;
@@ -71,7 +90,7 @@ test('after each of 1,500 random edits the followed faces, projection and gaps e
       if (gaps.vertices.length + gaps.edges.length + gaps.faces.length) withGaps += 1;
     }
   }
-  assert.ok(edits >= 1500 && withGaps > 200 && grew > 200, `edits ${edits}, with gaps ${withGaps}, grew ${grew}`);
+  assert.ok(edits >= 1500 && withGaps > 200 && grew > 200 && undos >= 500 && undoneEdits > undos, `edits ${edits}, with gaps ${withGaps}, grew ${grew}, undos ${undos} of ${undoneEdits} edits`);
 });
 
 // The api with every mesh it builds counted: the calls that read a whole table.
@@ -91,10 +110,11 @@ function countingApi() {
       };
     },
   });
-  return { api: { ...api, buildMesh: (...args) => counted(api.buildMesh(...args)) }, whole, facesRead };
+  const built = { count: 0 };
+  return { api: { ...api, buildMesh: (...args) => { built.count += 1; return counted(api.buildMesh(...args)); } }, whole, facesRead, built };
 }
 
-test('an edit on a 120,000-face sphere reads no whole table and as many faces as on a 1,200-face sphere', () => {
+test('an edit and its undo on a 120,000-face sphere read no whole table and as many faces as on a 1,200-face sphere', () => {
   const perSize = [];
   for (const [slices, stacks] of [[30, 21], [300, 201]]) {
     const counting = countingApi();
@@ -111,15 +131,28 @@ test('an edit on a 120,000-face sphere reads no whole table and as many faces as
     state = withEdit(state, { op: 'flip-edge', e });
     model = meshLesson.compute(view, state, ctx);
     const reads = [];
+    const states = [state];
     for (const operation of [{ op: 'split-edge', e, t: 0.5 }, { op: 'poke-face', f }, { op: 'flip-edge', e: elsewhere }, { op: 'collapse-edge', e: elsewhere, t: 0.5 }]) {
       counting.whole.count = 0; counting.whole.calls = []; counting.facesRead.length = 0;
       state = withEdit(state, operation);
+      states.push(state);
       model = meshLesson.compute(view, state, ctx);
       assert.equal(counting.whole.count, 0, `${JSON.stringify(operation)} read whole: ${counting.whole.calls.join(', ')}`);
       reads.push(counting.facesRead.reduce((a, b) => a + b, 0));
     }
     const faces = model.mesh.faceSet();
     assert.deepEqual([Array.from(model.faceOffsets), Array.from(model.faceVertices)], [Array.from(faces.faceOffsets), Array.from(faces.faceVertices)]);
+    // Undo, one edit at a time back to the first (the shell gives the earlier state back).
+    counting.built.count = 0;
+    for (let k = states.length - 2; k >= 0; k -= 1) {
+      counting.whole.count = 0; counting.whole.calls = []; counting.facesRead.length = 0;
+      model = meshLesson.compute(view, states[k], ctx);
+      assert.equal(counting.whole.count, 0, `undo to state ${k} read whole: ${counting.whole.calls.join(', ')}`);
+      reads.push(counting.facesRead.reduce((a, b) => a + b, 0));
+    }
+    assert.equal(counting.built.count, 0, 'no mesh was built again to undo');
+    const back = model.mesh.faceSet();
+    assert.deepEqual([Array.from(model.faceOffsets), Array.from(model.faceVertices)], [Array.from(back.faceOffsets), Array.from(back.faceVertices)]);
     perSize.push({ faces: model.F, reads });
     model.mesh.dispose();
   }

@@ -24,6 +24,8 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <string_view>
+#include <utility>
 
 namespace wingspline::mesh {
 
@@ -58,6 +60,7 @@ struct NoRecorder {
     void step(MeshTable, int32_t, const char*, int32_t, int32_t) {}
     void phase(const char*) {}
     void position(int32_t, const glm::dvec3&, const glm::dvec3&) { moved = true; }
+    void began_first_corners() {}
     void added(Vertex) {}
     void added(Edge) {}
     void added(Face) {}
@@ -79,6 +82,7 @@ struct Recording {
     void position(int32_t v, const glm::dvec3& before, const glm::dvec3& after) {
         c.positions.push_back({v, before, after, c.steps.size()});
     }
+    void began_first_corners() { c.began_first_corners = true; }
     void added(Vertex v) { c.added_vertices.push_back(v); }
     void added(Edge e) { c.added_edges.push_back(e); }
     void added(Face f) { c.added_faces.push_back(f); }
@@ -613,6 +617,13 @@ template <class Recorder> struct Editor {
 };
 } // namespace
 
+// Undo is rare and not hot: kept out of line, so the page's module carries one copy.
+#if defined(__GNUC__) || defined(__clang__)
+#define WINGSPLINE_NOINLINE __attribute__((noinline))
+#else
+#define WINGSPLINE_NOINLINE
+#endif
+
 // The row bookkeeping shared by the operations (new rows at the end, gaps marked), as
 // member functions of the friend so they can reach the private tables.
 struct EulerRows {
@@ -642,21 +653,130 @@ struct EulerRows {
         rec.added(Face(f));
         return f;
     }
-    static void mark(std::vector<char>& marks, std::size_t count, int32_t i) {
+    static void mark(std::vector<char>& marks, int32_t& marked, std::size_t count, int32_t i) {
         if (marks.empty()) marks.assign(count, 0);
         marks[i] = 1;
+        ++marked;
     }
     template <class R> static void remove(WingedEdgeMesh& m, Vertex v, R& rec) {
-        mark(m.vertex_deleted_, m.vertex_edge_.size(), v.idx);
+        mark(m.vertex_deleted_, m.deleted_count_[0], m.vertex_edge_.size(), v.idx);
         rec.removed(v);
     }
     template <class R> static void remove(WingedEdgeMesh& m, Edge e, R& rec) {
-        mark(m.edge_deleted_, m.edges_.size(), e.idx);
+        mark(m.edge_deleted_, m.deleted_count_[1], m.edges_.size(), e.idx);
         rec.removed(e);
     }
     template <class R> static void remove(WingedEdgeMesh& m, Face f, R& rec) {
-        mark(m.face_deleted_, m.face_edge_.size(), f.idx);
+        mark(m.face_deleted_, m.deleted_count_[2], m.face_edge_.size(), f.idx);
         rec.removed(f);
+    }
+    // ------------------------------------------------------------ undo
+    // The cell a change record's field names (nullptr: none), for undo.
+    WINGSPLINE_NOINLINE static int32_t* cell(WingedEdgeMesh& m, MeshTable t, int32_t row, const std::string& field) {
+        if (t == MeshTable::Vertex) return field == "edge" && row < m.vertex_count() ? &m.vertex_edge_[row] : nullptr;
+        if (t == MeshTable::Face) {
+            if (row >= m.face_count()) return nullptr;
+            if (field == "edge") return &m.face_edge_[row];
+            return field == "firstCorner" && !m.face_first_corner_.empty() ? &m.face_first_corner_[row] : nullptr;
+        }
+        if (row >= m.edge_count()) return nullptr;
+        EdgeRecord& r = m.edges_[row];
+        int32_t* const cells[] = {&r.start, &r.end, &r.left, &r.right, &r.start_left, &r.start_right, &r.end_left, &r.end_right};
+        const int k = change_field_index(field) - 1; // change_fields(): "edge", then the edge table's eight
+        return k >= 0 && k < 8 ? cells[k] : nullptr;
+    }
+    // How many rows a table had before the change: its new rows, the last ones, go. kNone
+    // when the elements it added are not the table's last rows.
+    // (An operation adds each element once, so k of them in the last k rows are those rows.)
+    template <class H> static int32_t rows_before(const std::vector<H>& added, int32_t count) {
+        const int32_t before = count - static_cast<int32_t>(added.size());
+        for (const H& h : added)
+            if (h.idx < before || h.idx >= count) return kNone;
+        return before;
+    }
+    template <class H> static bool all_marked(const std::vector<char>& marks, const std::vector<H>& removed, int32_t before) {
+        return std::all_of(removed.begin(), removed.end(), [&](H h) { return h.idx < before && !marks.empty() && marks[h.idx]; });
+    }
+    template <class H> static void unmark(std::vector<char>& marks, int32_t& marked, const std::vector<H>& removed) {
+        for (const H& h : removed) marks[h.idx] = 0;
+        marked -= static_cast<int32_t>(removed.size());
+        if (marked == 0) marks.clear(); // no gap left: no marks, as before the first removal
+    }
+    // Why `c` cannot be taken back (empty: it can).
+    WINGSPLINE_NOINLINE static std::string undo_refusal(const WingedEdgeMesh& m, const ChangeRecord& c) {
+        if (!c.changed()) return "it changed nothing";
+        if (c.after.topology != m.version_.topology) return "another change came after it";
+        const int32_t n[3] = {rows_before(c.added_vertices, m.vertex_count()), rows_before(c.added_edges, m.edge_count()),
+                              rows_before(c.added_faces, m.face_count())};
+        if (n[0] == kNone || n[1] == kNone || n[2] == kNone) return "its new elements are not the last rows";
+        if (!all_marked(m.vertex_deleted_, c.removed_vertices, n[0]) || !all_marked(m.edge_deleted_, c.removed_edges, n[1]) ||
+            !all_marked(m.face_deleted_, c.removed_faces, n[2]))
+            return "an element it removed is not a gap";
+        WingedEdgeMesh& w = const_cast<WingedEdgeMesh&>(m); // cell() only reads here
+        for (const RowChange& r : c.rows)
+            for (const FieldChange& f : r.fields) {
+                const int32_t* x = cell(w, r.table, r.row, f.field);
+                if (x == nullptr ? r.row < n[static_cast<int>(r.table)] : *x != f.after) return element_label(r.table, r.row) + "'s " + f.field + " changed after it";
+            }
+        for (const PositionChange& p : c.positions)
+            if (p.vertex < n[0] && m.position(p.vertex) != last_position(c, p.vertex)) return element_label(MeshTable::Vertex, p.vertex) + " moved after it";
+        return {};
+    }
+    static CheckResult check_undo(const WingedEdgeMesh& m, const ChangeRecord& c) {
+        const std::string why = undo_refusal(m, c);
+        if (why.empty()) return CheckResult::accept();
+        return CheckResult::refuse("cannot-undo", "cannot take back " + c.op + ": " + why + " (only the mesh's newest change can be taken back)");
+    }
+    // Where the change left v (its last position change), and where v was before it (its first).
+    static glm::dvec3 last_position(const ChangeRecord& c, int32_t v) {
+        glm::dvec3 p{0.0};
+        for (const PositionChange& x : c.positions)
+            if (x.vertex == v) p = x.after;
+        return p;
+    }
+    static ChangeRecord undo(WingedEdgeMesh& m, const ChangeRecord& c) {
+        require_ok(check_undo(m, c));
+        ChangeRecord u;
+        u.op = "undo";
+        u.before = m.version_;
+        const int32_t V = rows_before(c.added_vertices, m.vertex_count()), E = rows_before(c.added_edges, m.edge_count()),
+                      F = rows_before(c.added_faces, m.face_count());
+        const int32_t n[3] = {V, E, F};
+        for (const RowChange& r : c.rows) {
+            RowChange back{r.table, r.row, {}};
+            for (const FieldChange& f : r.fields) {
+                int32_t* x = cell(m, r.table, r.row, f.field);
+                if (x == nullptr || r.row >= n[static_cast<int>(r.table)]) continue;
+                *x = f.before;
+                back.fields.push_back({f.field, f.after, f.before});
+            }
+            if (!back.fields.empty()) u.rows.push_back(std::move(back));
+        }
+        // The vertices it moved, each to where it was before its first move.
+        for (const PositionChange& p : c.positions) {
+            if (p.vertex >= V || std::any_of(u.positions.begin(), u.positions.end(), [&](const PositionChange& q) { return q.vertex == p.vertex; })) continue;
+            const glm::dvec3 now = m.position(p.vertex);
+            if (now == p.before) continue;
+            m.positions_[3 * p.vertex] = p.before.x, m.positions_[3 * p.vertex + 1] = p.before.y, m.positions_[3 * p.vertex + 2] = p.before.z;
+            u.positions.push_back({p.vertex, now, p.before, 0});
+        }
+        if (!c.removed_vertices.empty()) unmark(m.vertex_deleted_, m.deleted_count_[0], c.removed_vertices);
+        if (!c.removed_edges.empty()) unmark(m.edge_deleted_, m.deleted_count_[1], c.removed_edges);
+        if (!c.removed_faces.empty()) unmark(m.face_deleted_, m.deleted_count_[2], c.removed_faces);
+        if (c.began_first_corners) m.face_first_corner_.clear(); // every face listed from its walk's start again
+        // The tables end where they ended before (erase from the end: nothing moves).
+        const auto cut = [](auto& v, std::size_t n) { if (n < v.size()) v.erase(v.begin() + static_cast<std::ptrdiff_t>(n), v.end()); };
+        cut(m.positions_, 3 * static_cast<std::size_t>(V));
+        cut(m.vertex_edge_, V), cut(m.edges_, E), cut(m.face_edge_, F), cut(m.face_first_corner_, F);
+        cut(m.vertex_deleted_, V), cut(m.edge_deleted_, E), cut(m.face_deleted_, F);
+        u.added_vertices = c.removed_vertices, u.added_edges = c.removed_edges, u.added_faces = c.removed_faces;
+        u.removed_vertices = c.added_vertices, u.removed_edges = c.added_edges, u.removed_faces = c.added_faces;
+        // The state before the change, by its own version; the geometry by a new number when
+        // a position moved since the change (the positions are not that state's exactly).
+        m.version_.topology = c.before.topology;
+        m.version_.geometry = m.version_.geometry == c.after.geometry ? c.before.geometry : ++m.used_.geometry;
+        u.after = m.version_;
+        return u;
     }
     // face_set() lists a face from its first corner once face edges were chosen; a face
     // that lost that corner (or is new) is listed from where its walk starts.
@@ -680,8 +800,8 @@ struct EulerRows {
         change_of(rec);
         const bool changed = !c.steps.empty() || !c.positions.empty() || !c.added_vertices.empty() || !c.added_edges.empty() ||
                              !c.added_faces.empty() || !c.removed_vertices.empty() || !c.removed_edges.empty() || !c.removed_faces.empty();
-        if (changed) ++m.version_.topology;
-        if (!c.positions.empty()) ++m.version_.geometry;
+        if (changed) m.version_.topology = ++m.used_.topology;
+        if (!c.positions.empty()) m.version_.geometry = ++m.used_.geometry;
         c.after = m.version_;
         aggregate_rows(c);
         return c;
@@ -689,8 +809,8 @@ struct EulerRows {
     template <class Change> static void run_unrecorded(WingedEdgeMesh& m, Change change_of) {
         NoRecorder rec;
         change_of(rec);
-        ++m.version_.topology;
-        if (rec.moved) ++m.version_.geometry;
+        m.version_.topology = ++m.used_.topology;
+        if (rec.moved) m.version_.geometry = ++m.used_.geometry;
     }
     template <class R> static void set_position(WingedEdgeMesh& m, int32_t v, const glm::dvec3& p, R& rec) {
         const glm::dvec3 before = m.position(v);
@@ -1085,7 +1205,9 @@ template <class R> static void change_poke_face(WingedEdgeMesh& m, Face f_, R& r
         // until now every face was listed from where its walk starts.
         if (m.face_first_corner_.empty()) {
             m.face_first_corner_.resize(m.face_edge_.size());
-            for (int32_t g = 0; g < m.face_count(); ++g) m.face_first_corner_[g] = m.walk_start_corner(g);
+            // (A gap has no corners: none, until an undo makes it a face again.)
+            for (int32_t g = 0; g < m.face_count(); ++g) m.face_first_corner_[g] = m.is_deleted(Face(g)) ? kNone : m.walk_start_corner(g);
+            rec.began_first_corners();
         }
         rec.phase("f's row in the face table stores e");
         w.set_face_edge(f.idx, e.idx);
@@ -1218,7 +1340,7 @@ template <class Op> WINGSPLINE_FLATTEN bool apply_op_unrecorded(WingedEdgeMesh& 
     return true;
 }
 template <class Op> const OperationImpl* impl_of() {
-    static const OperationImpl impl{&check_op<Op>, &apply_op<Op>, &apply_op_unrecorded<Op>};
+    static const OperationImpl impl{&check_op<Op>, &apply_op<Op>};
     return &impl;
 }
 } // namespace
@@ -1275,8 +1397,24 @@ ChangeRecord WingedEdgeMesh::apply(const Operation& op) {
     if (op.entry == nullptr) throw Error("unknown-operation", "an operation needs a name (operations.h)");
     return op.entry->impl->apply(*this, op);
 }
-bool apply_unrecorded(WingedEdgeMesh& mesh, const Operation& op) { return op.entry->impl->apply_unrecorded(mesh, op); }
-UnrecordedRun unrecorded_run(const OperationEntry& entry) { return entry.impl->apply_unrecorded; }
+CheckResult WingedEdgeMesh::check_undo(const ChangeRecord& change) const { return EulerRows::check_undo(*this, change); }
+ChangeRecord WingedEdgeMesh::undo(const ChangeRecord& change) { return EulerRows::undo(*this, change); }
+// The unrecorded runs by name, apart from the registry: only the benchmarks and the tests
+// reach them, so the linker leaves them (about 20 KB of flattened code) out of the page's
+// modules, which apply() alone.
+UnrecordedRun unrecorded_run(const OperationEntry& entry) {
+    static const std::pair<std::string_view, UnrecordedRun> runs[] = {
+        {"split-edge", &apply_op_unrecorded<SplitEdge>},       {"flip-edge", &apply_op_unrecorded<FlipEdge>},
+        {"collapse-edge", &apply_op_unrecorded<CollapseEdge>}, {"join-faces", &apply_op_unrecorded<JoinFaces>},
+        {"split-face", &apply_op_unrecorded<SplitFace>},       {"poke-face", &apply_op_unrecorded<PokeFace>},
+        {"split-vertex", &apply_op_unrecorded<SplitVertex>},   {"set-vertex-edge", &apply_op_unrecorded<SetVertexEdge>},
+        {"set-face-edge", &apply_op_unrecorded<SetFaceEdge>},
+    };
+    for (const auto& [name, run] : runs)
+        if (name == entry.name) return run;
+    throw Error("unknown-operation", std::string(entry.name) + " has no unrecorded run");
+}
+bool apply_unrecorded(WingedEdgeMesh& mesh, const Operation& op) { return unrecorded_run(*op.entry)(mesh, op); }
 
 void WingedEdgeMesh::reserve(int32_t vertices, int32_t edges, int32_t faces) {
     positions_.reserve(3 * static_cast<std::size_t>(vertices));

@@ -6,11 +6,12 @@
 
 namespace wingspline::mesh {
 
-// An entry's check, change and wording (the registry's `impl`, euler_ops.cpp).
+// An entry's check and its recorded change (the registry's `impl`, euler_ops.cpp). The
+// unrecorded run is not in it: looked up by name (unrecorded_run), it stays out of every
+// module that does not ask for it.
 struct OperationImpl {
     CheckResult (*check)(const WingedEdgeMesh&, const Operation&);
     ChangeRecord (*apply)(WingedEdgeMesh&, const Operation&);
-    bool (*apply_unrecorded)(WingedEdgeMesh&, const Operation&);
 };
 
 bool apply_unrecorded(WingedEdgeMesh& mesh, const Operation& op);

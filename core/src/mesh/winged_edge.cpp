@@ -516,7 +516,7 @@ void WingedEdgeMesh::set_position(int32_t v, const glm::dvec3& p) {
     positions_[3 * v] = p.x;
     positions_[3 * v + 1] = p.y;
     positions_[3 * v + 2] = p.z;
-    ++version_.geometry;
+    version_.geometry = ++used_.geometry;
 }
 
 // ------------------------------------------------------------------ the change model
@@ -607,9 +607,10 @@ Renumbering WingedEdgeMesh::compact() {
     edges_.resize(E);
     face_edge_.resize(F);
     if (!face_first_corner_.empty()) face_first_corner_.resize(F);
-    if (!vertex_deleted_.empty()) ++version_.geometry; // the positions moved up
+    if (!vertex_deleted_.empty()) version_.geometry = ++used_.geometry; // the positions moved up
     vertex_deleted_.clear(), edge_deleted_.clear(), face_deleted_.clear();
-    ++version_.topology;
+    deleted_count_ = {};
+    version_.topology = ++used_.topology;
     return map;
 }
 

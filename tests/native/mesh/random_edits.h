@@ -2,7 +2,8 @@
 // Random edits for the native tests: the meshes they start from (closed, open, polygons)
 // and one random call of an operation of the registry (operations.h), its arguments drawn
 // by kind (an element argument after the first mostly among its `choices`). The Euler tests
-// (test_mesh_euler.cpp) and the edit exercise's tests (test_exercise_edit.cpp) share them.
+// (test_mesh_euler.cpp), the edit exercise's tests (test_exercise_edit.cpp) and the undo tests
+// (test_undo.cpp) share them, and a snapshot of everything a mesh holds.
 #include "wingspline/mesh/generators.h"
 #include "wingspline/mesh/operations.h"
 #include "wingspline/mesh/winged_edge.h"
@@ -85,6 +86,38 @@ inline Call random_call(const WingedEdgeMesh& w, std::mt19937& rng) {
         }
     }
     return c;
+}
+
+// ---------------------------------------------------------------- snapshots
+// Everything a WingedEdgeMesh holds, read through its public interface: the tables, the face
+// set, the gap marks and the version.
+struct Snapshot {
+    std::vector<double> positions;
+    std::vector<int32_t> vertex_edge, edges, face_edge, face_set_offsets, face_set_vertices;
+    std::vector<char> dv, de, df;
+    MeshVersion version;
+    // The same tables, face set and gaps, whatever the version.
+    bool same_tables(const Snapshot& o) const {
+        return positions == o.positions && vertex_edge == o.vertex_edge && edges == o.edges && face_edge == o.face_edge &&
+               face_set_offsets == o.face_set_offsets && face_set_vertices == o.face_set_vertices && dv == o.dv && de == o.de &&
+               df == o.df;
+    }
+    bool operator==(const Snapshot& o) const { return same_tables(o) && version == o.version; }
+};
+
+inline Snapshot snapshot(const WingedEdgeMesh& w) {
+    Snapshot s;
+    s.positions = w.positions();
+    s.vertex_edge = w.vertex_edges();
+    for (const EdgeRecord& r : w.edges())
+        s.edges.insert(s.edges.end(), {r.start, r.end, r.left, r.right, r.start_left, r.start_right, r.end_left, r.end_right});
+    s.face_edge = w.face_edges();
+    const IndexedMesh fs = w.face_set();
+    s.face_set_offsets = fs.face_offsets;
+    s.face_set_vertices = fs.face_vertices;
+    s.dv = w.deleted_vertices(), s.de = w.deleted_edges(), s.df = w.deleted_faces();
+    s.version = w.version();
+    return s;
 }
 
 struct Fixture {

@@ -232,6 +232,63 @@ test('random seeded operation sequences: valid, Euler, rebuilt from the file, re
   assert.ok(accepted > 1000 && refused > 300, `accepted ${accepted}, refused ${refused}`);
 });
 
+test('mesh.undo() takes the edits back newest first: every earlier mesh again, its version, gaps and validate() clean; none left is refused', () => {
+  const inputs = [api.lectureExample(), api.generateMesh('cube'), api.generateMesh('sphere', { slices: 6, stacks: 5 }), api.generateMesh('grid', { nx: 3, ny: 3 })];
+  const ops = api.meshOperations.operations;
+  let undone = 0;
+  let withGaps = 0;
+  for (let seed = 1; seed <= 80; seed += 1) {
+    const rnd = random(seed);
+    withMesh(inputs[seed % inputs.length], (mesh) => {
+      const states = [];
+      for (let step = 0; step < 20; step += 1) {
+        const op = ops[Math.floor(rnd() * ops.length)];
+        const k = mesh.counts();
+        const total = { vertex: k.vertices, edge: k.edges, face: k.faces };
+        const args = op.arguments.map((a) => (a.kind ? Math.floor(rnd() * total[a.kind]) : 0.5));
+        if (!mesh.check(op.name, ...args).ok) continue;
+        const before = snapshot(mesh);
+        const change = mesh.apply({ op: op.name, ...Object.fromEntries(op.arguments.map((a, i) => [a.name, args[i]])) });
+        if (change.after.topology !== change.before.topology) states.push({ before, change });
+        // Now and then take a run of edits back.
+        while (states.length && rnd() < 0.25) {
+          const { before: was, change: c } = states.pop();
+          const u = mesh.undo();
+          const where = `seed ${seed} step ${step} undo ${c.op}`;
+          assert.equal(snapshot(mesh), was, where);
+          assert.deepEqual(errors(mesh), [], where);
+          assert.deepEqual(mesh.version, c.before, where);
+          assert.deepEqual(mesh.version, mesh.coreVersion(), where);
+          assert.equal(u.op, 'undo');
+          assert.deepEqual([Array.from(u.removed.vertices), Array.from(u.removed.edges), Array.from(u.removed.faces)],
+            [Array.from(c.added.vertices), Array.from(c.added.edges), Array.from(c.added.faces)], where);
+          assert.deepEqual([Array.from(u.added.edges), Array.from(u.added.faces)], [Array.from(c.removed.edges), Array.from(c.removed.faces)], where);
+          if (c.removed.edges.length) withGaps += 1;
+          undone += 1;
+        }
+      }
+      while (states.length) {
+        const { before: was } = states.pop();
+        mesh.undo();
+        assert.equal(snapshot(mesh), was);
+        undone += 1;
+      }
+      const before = snapshot(mesh);
+      assert.throws(() => mesh.undo(), (e) => e.code === 'cannot-undo' && /no edit to take back/.test(e.message));
+      assert.equal(snapshot(mesh), before);
+    });
+  }
+  assert.ok(undone > 400 && withGaps > 30, `undone ${undone}, with gaps ${withGaps}`);
+});
+
+test('mesh.undo() after compact() is refused: the renumbering forgot the records', () => withLecture((mesh) => {
+  mesh.apply({ op: 'collapse-edge', e: 3 });
+  mesh.compact();
+  const before = snapshot(mesh);
+  assert.throws(() => mesh.undo(), (e) => e.code === 'cannot-undo');
+  assert.equal(snapshot(mesh), before);
+}));
+
 test('the benchmark hook flips what the public API flips (docs/benchmarks.md mesh_edit_flip) and leaves the mesh alone', async () => {
   const { loadBenchCore } = await import('../../bench/wasm/bench-core.mjs');
   const bench = await loadBenchCore();

@@ -244,14 +244,15 @@ const cases = [
     const lecture = api.buildMesh(api.lectureExample());
     try {
       lecture.check('flip-edge', 4); lecture.flipEdge(4); lecture.splitEdge(2); lecture.splitFace(0, 5, 0); lecture.joinFaces(7);
-      lecture.pokeFace(2); lecture.collapseEdge(8, 0); lecture.gaps(); lecture.format(); lecture.compact();
+      lecture.pokeFace(2); lecture.undo(); lecture.pokeFace(2); lecture.collapseEdge(8, 0);
+      lecture.gaps(); lecture.format(); lecture.compact();
     } finally {
       lecture.dispose();
     }
   }, [['unknown-operation', () => lecture.check('flip-edgy', 0)], ['boundary-edge', () => lecture.flipEdge(0)], ['invalid-parameter', () => lecture.splitEdge(2, 1.5)],
     ['adjacent-corners', () => lecture.splitFace(0, 0, 1)], ['boundary-edge', () => lecture.joinFaces(0)], ['invalid-element', () => lecture.pokeFace(V_MISSING)],
     ['invalid-element', () => lecture.collapseEdge(V_MISSING)], ['disposed', () => gone.compact()], ['disposed', () => gone.gaps()],
-    ['unknown-format', () => lecture.format({ format: 'stl' })]]],
+    ['unknown-format', () => lecture.format({ format: 'stl' })], ['cannot-undo', () => { const fresh = api.buildMesh(tetra); try { fresh.undo(); } finally { fresh.dispose(); } }], ['disposed', () => gone.undo()]]],
   // Subdivision of meshes and curves.
   ['subdivide + dispose / subdivisionSteps / reconnectionPlayback / limitPositions', REDUCED, () => {
     api.subdivide(lecture, { scheme: 'catmull-clark', steps: 2 }).dispose();

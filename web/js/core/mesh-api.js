@@ -511,6 +511,19 @@ export class Mesh {
   collapseEdge(e, t = 0.5) { return this.apply({ op: 'collapse-edge', e, t }); }
   pokeFace(f) { return this.apply({ op: 'poke-face', f }); }
 
+  // Takes back the newest edit apply() made (the core's undo from its change record, O(the
+  // edit)): the mesh is the one before it, row for row, gaps included, and its version that
+  // mesh's version again. Returns the undo's record, shaped as apply's: op 'undo', rows (each
+  // field as the edit left it, before, and as it is again, after), added (the elements live
+  // again), removed (the elements the edit added, gone: the tables end where they ended
+  // before it, not gaps), positions (the vertices moved back), no steps. Up to the last 1,000
+  // edits, newest first; compact() forgets them. Refuses 'cannot-undo' when there is none.
+  undo() {
+    const r = unwrap(this.#editing().meshUndo(this.#live()));
+    this.#setVersion(r.after);
+    return readChange(r, this.#edits);
+  }
+
   // Removes the gaps left by join-faces and collapse-edge: every table renumbered keeping
   // the order of what remains. Returns {vertices, edges, faces}: old index -> new (-1 = removed).
   compact() {

@@ -426,7 +426,7 @@ export function createGlMesh(canvas) {
       fill(full, relative, index, new Uint32Array(0), prepared.data.normals ?? null);
       full.triangleCount = prepared.index.length / 3;
       shown = followed ? {
-        relative, index, faceTriangle: prepared.faceTriangle,
+        relative, index, faceTriangle: prepared.faceTriangle, faces: prepared.faceTriangle.length - 1,
         faceSlot: null, lines: null, capacity: { positions: relative.length, index: index.length, lines: 0 },
       } : null;
       meshKey = prepared.key;
@@ -477,6 +477,13 @@ export function createGlMesh(canvas) {
       const { start, count } = shown.faceSlot;
       let used = full.triangleCount;
       const written = [];
+      // Faces past the end now (an undo cut the tables to where they ended): nothing drawn.
+      for (let f = F; f < shown.faces; f += 1) {
+        shown.index.fill(RESTART, 3 * start[f], 3 * (start[f] + count[f]));
+        written.push([start[f], count[f]]);
+        count[f] = 0;
+      }
+      shown.faces = F;
       for (const f of follow.faces) {
         if (f >= F) continue;
         const a = data.faceOffsets[f]; const b = data.faceOffsets[f + 1];

@@ -101,8 +101,11 @@ using Face = Handle<struct FaceTag>;
 
 // Two counters that say which state of a mesh a cache was derived from. topology moves on
 // with every change of the connectivity tables (vertex edge, edge table, face edge),
-// geometry with every change of a position. Each moves by exactly one per call that
-// changed something, never when a call changed nothing or was refused.
+// geometry with every change of a position, each to the next number the mesh never used
+// (one more than the last, unless an undo came between), never when a call changed nothing
+// or was refused. Two equal versions of one mesh are the same tables: undo gives back the
+// version of the state it restores (the geometry too when no position moved since the
+// change), so a cache of that state is right again, and a new change never reuses a number.
 struct MeshVersion {
     uint32_t topology = 0;
     uint32_t geometry = 0;
@@ -182,6 +185,9 @@ struct ChangeRecord {
     // edge's row: S, E, L, R and its four wings"); each step names the line that made it.
     std::vector<std::string> phases;
     MeshVersion before, after;
+    // The change began the list of faces' first corners (set-face-edge on a mesh whose faces
+    // were all listed from their walks' starts): undo ends it.
+    bool began_first_corners = false;
     bool changed() const { return before != after; }
 };
 
@@ -278,6 +284,23 @@ public:
     CheckResult check(const Operation& op) const;
     ChangeRecord apply(const Operation& op);
 
+    // Takes back the newest change, from the record apply() returned for it: every row it
+    // rewrote gets its values from before the change, the elements it added go (the tables
+    // end where they ended before it, so the same change made again gives the same numbers),
+    // those it removed are live again, the vertices it moved go back. The mesh is then the
+    // one before the change row for row, its gaps included (validate() clean), in O(the
+    // change), where building the mesh again and replaying every other change was O(mesh).
+    // check_undo(change) refuses "cannot-undo" when the record is not the newest change: the
+    // topology is not the one it left (change.after.topology), a field it wrote or a
+    // position it set holds something else now, or its new elements are not the last rows.
+    // The version is the one before the change again (MeshVersion); the geometry is a new
+    // number instead when a position moved since the change. Returns the undo's own
+    // record: op "undo", rows with each field as the change left it (before) and as it is
+    // again (after), added = the elements live again, removed = the elements gone (rows that
+    // no longer exist, not gaps), positions = the vertices moved back; no steps.
+    CheckResult check_undo(const ChangeRecord& change) const;
+    ChangeRecord undo(const ChangeRecord& change);
+
     // Room for this many elements in all, so that a run of operations does not reallocate.
     void reserve(int32_t vertices, int32_t edges, int32_t faces);
 
@@ -370,6 +393,10 @@ private:
     std::vector<int32_t> face_first_corner_;
     MeshVersion version_;
     std::vector<char> vertex_deleted_, edge_deleted_, face_deleted_; // see is_deleted()
+    // How many marks each of those holds (vertex, edge, face): undo() drops a mark vector
+    // whose last mark it took back, so a mesh whose gaps were all undone has none, as before.
+    std::array<int32_t, 3> deleted_count_{};
+    MeshVersion used_; // the highest numbers version_ has had (a change takes the next)
 
     friend class WingedEdgeBuild;
     friend struct EulerAccess;  // euler_ops.cpp: the operations' checks,

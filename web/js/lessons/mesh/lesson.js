@@ -138,32 +138,48 @@ function wingedTables(derived, entry, keys) {
     Object.assign(derived, { source: keys.source, topology: keys.topology, version: null, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, faces: sameSource ? derived.faces : null, follow: null, gaps: null, lastChange: sameSource ? derived.lastChange : null });
   }
   if (derived.version !== keys.version) {
-    // One edit since the tables were read: only the rows its record names are read again
-    // (ui/mesh/winged-arrays.js); anything else (another mesh, undo, a move, a compact)
-    // reads them whole.
-    const record = entry.lastOperation;
+    // The edits and undos since the tables were read (entry.changes, in order: the undos
+    // first): only the rows their records name are read again (ui/mesh/winged-arrays.js),
+    // from the mesh as it is now; anything else (another mesh, a move, a compact) reads them
+    // whole.
+    const chain = entry.changes ?? [];
     const id = entry.mesh.id;
-    const follows = derived.we && record?.rows && previous === `${id}.${record.before.topology}.${record.before.geometry}`
-      && keys.version === `${id}.${record.after.topology}.${record.after.geometry}`;
+    const key = (v) => `${id}.${v.topology}.${v.geometry}`;
+    const follows = Boolean(derived.we) && chain.length > 0 && previous === key(chain[0].before) && keys.version === key(chain[chain.length - 1].after)
+      && chain.every((c, i) => c.rows && (i === 0 || key(chain[i - 1].after) === key(c.before)));
     derived.version = keys.version;
-    derived.we = follows ? followEdit(derived.we, entry.mesh, record) : entry.mesh.wingedEdgeArrays();
-    // The faces the same way: only those the edit changed are read again. Faces depend on
-    // the topology alone; before the first change of it they are the source's own.
-    const beforeTopology = record ? `${id}.${record.before.topology}` : null;
-    const before = derived.faces?.topology === beforeTopology ? derived.faces : record?.before.topology === 0 ? entry.csr : null;
+    derived.we = follows ? chain.reduce((we, c) => followEdit(we, entry.mesh, c), derived.we) : entry.mesh.wingedEdgeArrays();
+    // The faces the same way: only those the changes can have changed are read again (a face
+    // whose corners changed is beside an edge its last change rewrote, in the mesh as it is
+    // now: followFaces on the records together). Faces depend on the topology alone; at the
+    // topology the mesh was built with they are the source's own.
+    const beforeTopology = follows ? `${id}.${chain[0].before.topology}` : null;
+    const before = !follows ? null : derived.faces?.topology === beforeTopology ? derived.faces : chain[0].before.topology === 0 ? entry.csr : null;
     derived.follow = null;
-    if (follows && before) {
+    if (before) {
       // The lesson's own faces are rewritten in place where the layout allows (the source's
-      // faces, before the first edit, never are).
-      const followed = followFaces(before, entry.mesh, derived.we, record, { own: before !== entry.csr });
+      // faces never are).
+      const all = (part, list) => chain.flatMap((c) => Array.from(c[part][list]));
+      const together = {
+        rows: chain.flatMap((c) => c.rows),
+        added: { vertices: all('added', 'vertices'), edges: all('added', 'edges'), faces: all('added', 'faces') },
+        removed: { vertices: all('removed', 'vertices'), edges: all('removed', 'edges'), faces: all('removed', 'faces') },
+      };
+      const followed = followFaces(before, entry.mesh, derived.we, together, { own: before !== entry.csr });
       derived.faces = { offsets: followed.offsets, vertices: followed.vertices, topology: keys.topology };
-      derived.follow = { from: previous, faces: followed.touched };
+      derived.follow = {
+        from: previous,
+        faces: followed.touched,
+        vertices: [...chain.flatMap((c) => c.positions.map((p) => p.vertex)), ...together.added.vertices, ...together.removed.vertices],
+        edges: recordEdges(together),
+      };
     } else if (derived.faces?.topology !== keys.topology) {
       derived.faces = null;
     }
-    // The gaps likewise: the ones before and the elements the edit removed (numbers are
-    // never reused); the marks per element are made again only when there are gaps.
-    derived.gaps = follows && previousGaps ? mergedGaps(previousGaps, record.removed) : null;
+    // The gaps likewise: the ones before, with the elements an edit removed and without
+    // those an undo made live again; the marks per element are made again only when there
+    // are gaps.
+    derived.gaps = follows && previousGaps ? chain.reduce(followGaps, previousGaps) : null;
     derived.gapMarks = null;
     derived.planes = null;
     derived.reps = null;
@@ -230,10 +246,10 @@ function compute(view, state, ctx) {
     const about = state.mode3d ? derived.centre : [0, 0, 0];
     if (derived.follow && derived.viewKey === `${derived.follow.from}:${state.mode3d}:${R.join(',')}`) {
       // The same view of the mesh before the edit: only the vertices it moved or added.
-      const touched = [...record.positions.map((p) => p.vertex), ...Array.from(record.added.vertices)];
+      const touched = derived.follow.vertices;
       const projected = followRows(derived.projected, 3, V, touched, (v) => projectAll(we.positions.subarray(3 * v, 3 * v + 3), R, about));
       let zExtent = derived.zExtent;
-      for (const v of touched) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
+      for (const v of touched) if (v < V) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
       Object.assign(derived, { viewKey, zExtent, projected });
     } else {
       let zExtent = 0;
@@ -298,9 +314,17 @@ function unwritten(weShown, edges, out) {
 }
 
 // The gaps after an edit: those before it and the elements it removed, increasing.
-function mergedGaps(before, removed) {
-  const merge = (a, b) => Int32Array.from(new Set([...Array.from(a), ...Array.from(b)])).sort();
-  return { vertices: merge(before.vertices, removed.vertices), edges: merge(before.edges, removed.edges), faces: merge(before.faces, removed.faces) };
+// The gaps after one change, from those before it (increasing lists): an edit's removed
+// elements join them; an undo's live-again elements (its `added`) leave them.
+function followGaps(before, record) {
+  const undo = record.op === 'undo';
+  const next = (a, b) => {
+    const changed = new Set(Array.from(b));
+    const kept = undo ? Array.from(a).filter((i) => !changed.has(i)) : [...new Set([...Array.from(a), ...changed])];
+    return Int32Array.from(kept).sort();
+  };
+  const by = undo ? record.added : record.removed;
+  return { vertices: next(before.vertices, by.vertices), edges: next(before.edges, by.edges), faces: next(before.faces, by.faces) };
 }
 
 function marks(n, list) {

@@ -248,18 +248,19 @@ function followOf(model) {
   const record = model.lastOperation;
   const follow = model.derived?.follow;
   const none = { from: () => false, faces: [], vertices: [], edges: [] };
-  if (!record?.rows) return none;
-  const edges = recordEdges(record);
-  const vertexList = [...record.positions.map((p) => p.vertex), ...Array.from(record.added.vertices), ...Array.from(record.removed.vertices)];
+  if (!record?.rows && !follow) return none;
   const versionOf = (key) => key.split('|').at(-2);
   const sameSource = (key) => key.startsWith(`${model.source}|`);
-  // From the mesh before the edit: only when the lesson followed it (its faces read again).
+  // From the mesh before the edits and undos: only when the lesson followed them (their
+  // faces read again).
   const fromBefore = follow && follow.from !== model.version ? follow.from : null;
+  // (From another step of the edit player at the same version only the edit's edges differ.)
+  const edges = record?.rows ? recordEdges(record) : new Set();
+  if (fromBefore) for (const e of follow.edges) edges.add(e);
   return {
     from: (key) => sameSource(key) && (versionOf(key) === model.version || versionOf(key) === fromBefore),
-    // (From another step of the same version only the edges differ.)
     faces: fromBefore ? follow.faces : [],
-    vertices: vertexList,
+    vertices: fromBefore ? follow.vertices : [],
     edges,
   };
 }

@@ -6,10 +6,17 @@
 // Moved vertices are applied with setVertexPosition, which reports per representation how
 // many stored entries had to change (lecture 000: independent faces rewrite every copy).
 // The state's operations (state.ops, e.g. {op: 'set-vertex-edge', v, e}) are replayed on
-// the built mesh in order; a list that is not the applied list plus new operations at its
-// end (undo, a link) rebuilds the mesh and replays it. Nothing here counts versions: the
-// mesh does (mesh.id, mesh.version), and every cache is keyed on them (cacheKeys below).
-// Offers: createMeshSource() -> { sync(state, api) -> {entry, changes}, live }, cacheKeys(entry).
+// the built mesh in order. When the list differs from the applied one after a common start
+// (undo, redo, another edit after an undo), the applied operations after it are taken back
+// by the core's undo, newest first (O(the edits): mesh.undo() from each edit's record), and
+// the new ones applied; only when that cannot be (a compact renumbered everything, the core
+// kept no record) is the mesh built again and every operation replayed (O(mesh)). Nothing
+// here counts versions: the mesh does (mesh.id, mesh.version), and every cache is keyed on
+// them (cacheKeys below).
+// Offers: createMeshSource() -> { sync(state, api) -> {entry, changes}, live }, cacheKeys(entry);
+//   entry.changes: the change records of the last sync's edits and undos, in order (what
+//   changed the tables: a lesson follows them rather than reading every row again);
+//   entry.lastOperation: the record of the newest edit of the state (the edit player's).
 // Needs: a state with a mesh choice (mesh-choice.js), `moved: [{v, p}]` and `ops` (the
 //   lesson's checked operations, {op, ...}); the JS API (api.buildMesh, mesh.apply,
 //   setVertexPosition, compact).
@@ -75,7 +82,9 @@ export function createMeshSource() {
     // A fresh import's mesh was built in steps by the import (app/mesh-import.js).
     const mesh = (state.meshKind === 'file' && !force ? takeImportedMesh(state.imported) : null) ?? api.buildMesh(spec);
     const previous = live;
-    live = { key, mesh, base: positions, csr, applied: new Map(), ops: [], lastOperation: null };
+    // done[i]: what operation i left: its record (a move keeps the one before) and, for a
+    // move, where the vertex was (what undoing it puts back).
+    live = { key, mesh, base: positions, csr, applied: new Map(), ops: [], done: [], lastOperation: null, changes: [] };
     previous?.mesh.dispose();
     return live;
   }
@@ -102,16 +111,47 @@ export function createMeshSource() {
     return changes;
   }
 
-  // Brings the mesh's operations to state.ops: new ones at the end are applied; any other
-  // difference rebuilds the mesh and replays them all. Operations run on the positions the
+  // Takes the applied operations back to the first n by the core's undo, newest first;
+  // false (the mesh part-way back: the caller builds it again) when one cannot be: a compact
+  // (it renumbered everything), an edit whose record the core no longer keeps.
+  function undoTo(n) {
+    if (live.ops.slice(n).some((o) => o.op === 'compact')) return false;
+    applyMoves({ moved: [] });
+    while (live.ops.length > n) {
+      const operation = live.ops[live.ops.length - 1];
+      const done = live.done[live.done.length - 1];
+      if (operation.op === 'move-vertex') {
+        live.mesh.setVertexPosition(operation.v, done.from);
+        live.base.set(done.from, 3 * operation.v);
+      } else {
+        let record;
+        try { record = live.mesh.undo(); } catch { return false; }
+        live.base = followPositions(live.base, live.mesh, record);
+        live.changes.push(record);
+      }
+      live.ops.pop();
+      live.done.pop();
+    }
+    live.lastOperation = live.done.at(-1)?.record ?? null;
+    return true;
+  }
+
+  // Brings the mesh's operations to state.ops: after the start both lists share, the applied
+  // ones are taken back (undoTo) and the new ones applied. Operations run on the positions the
   // operations before them left (state.moved is applied after all of them, so a lesson
   // that changes the topology first turns its pending moves into move-vertex operations:
   // see the mesh lesson's edit-ops.js withEdit). A refused operation changed nothing in the core (checked mutators) and
   // its error names it; live.ops stays what was applied.
   function applyOps(state, api) {
     const ops = state.ops ?? [];
-    const prefix = live.ops.length <= ops.length && live.ops.every((o, i) => sameOp(o, ops[i]));
-    if (!prefix) build(state, api, true);
+    live.changes = [];
+    let common = 0;
+    while (common < live.ops.length && common < ops.length && sameOp(live.ops[common], ops[common])) common += 1;
+    if (common < live.ops.length && !undoTo(common)) build(state, api, true);
+    // The newest edit left after an undo shows its cost as when it was made: an edit replayed
+    // from a link was not counted, so it is taken back and made again, counted (O(the edit)).
+    if (ops.length === live.ops.length && live.lastOperation && !live.lastOperation.costs && live.ops.at(-1)?.op !== 'move-vertex'
+      && live.ops.at(-1)?.op !== 'compact' && undoTo(live.ops.length - 1) === false) build(state, api, true);
     if (live.ops.length === ops.length) return;
     // Take the moves back first: the new operations run where the older ones left the mesh.
     applyMoves({ moved: [] });
@@ -122,11 +162,14 @@ export function createMeshSource() {
       try {
         // The newest edit also counts what each representation rewrote (the panel shows it).
         const newest = i === ops.length - 1 && (live.csr.offsets.length - 1 > COUNTED_COSTS_FACES ? 'winged-edge' : true);
+        const from = ops[i].op === 'move-vertex' ? Array.from(live.base.subarray(3 * ops[i].v, 3 * ops[i].v + 3)) : null;
         const record = applyOne(live.mesh, ops[i], live.lastOperation, newest);
         if (ops[i].op === 'compact') whole = true;
         else if (ops[i].op === 'move-vertex') live.base.set(ops[i].p, 3 * ops[i].v);
         else if (!whole) live.base = followPositions(live.base, live.mesh, record);
+        if (record && ops[i].op !== 'move-vertex') live.changes.push(record);
         live.lastOperation = record;
+        live.done.push({ record, from });
       } catch (err) {
         err.message = `Operation ${i + 1} (${ops[i].op}) was refused: ${err.message}`;
         live.base = Float64Array.from(live.mesh.wingedEdgeArrays().positions);

@@ -5,7 +5,8 @@
 // and the vertices it moved. Copying the whole tables after every edit cost about 0.6 s on a
 // million faces; an edit touches a handful of rows (docs/benchmarks.md, "ui_edit").
 // Offers: followEdit(we, mesh, record) -> the arrays after the edit (the same arrays written
-//   in place when the added rows fit, otherwise new ones with room to grow);
+//   in place when the added rows fit, otherwise new ones with room to grow), or after an undo
+//   (mesh.undo()'s record: the rows it wrote back, the tables cut to where they ended);
 //   followPositions(positions, mesh, record) -> the positions alone, the same way;
 //   followRows(table, stride, n, touched, rowOf) -> any per-row table the same way (the
 //   projected positions); followFaces(csr, mesh, we, record) -> the faces as CSR;
@@ -15,6 +16,15 @@
 
 /** @typedef {{ positions: Float64Array, vertexEdge: Int32Array, edges: Int32Array, faceEdge: Int32Array }} Room */
 /** @typedef {{ positions: Float64Array, vertexEdge: Int32Array, edges: Int32Array, faceEdge: Int32Array, edgeFields: string[], room?: Room }} WingedArrays */
+
+// How many rows table `list` ('vertices', 'edges', 'faces') has after a change, from `n`
+// before it: an edit's new elements are rows at the end; an undo's removed ones were the
+// last rows (the table ends where it ended before the edit it took back).
+function rowsAfter(n, record, list) {
+  const removed = Array.from(record.removed[list]);
+  if (record.op === 'undo') return removed.length ? Math.min(...removed) : n;
+  return Math.max(n, ...Array.from(record.added[list], (i) => i + 1));
+}
 
 // A view of `n` entries of `buffer`, or a new buffer twice as big with the old entries when it
 // has no room (amortised: appending a row costs O(1)).
@@ -29,7 +39,7 @@ function sized(buffer, n, used) {
  * @param {WingedArrays} we the arrays before the edit (as wingedEdgeArrays gave them, or as
  *   this function returned them)
  * @param {any} mesh the mesh after the edit
- * @param {{ rows: { table: string, row: number }[], added: { vertices: ArrayLike<number>, edges: ArrayLike<number>, faces: ArrayLike<number> },
+ * @param {{ op: string, rows: { table: string, row: number }[], added: { vertices: ArrayLike<number>, edges: ArrayLike<number>, faces: ArrayLike<number> },
  *   removed: { vertices: ArrayLike<number>, edges: ArrayLike<number>, faces: ArrayLike<number> }, positions: { vertex: number }[] }} record
  * @returns {WingedArrays}
  */
@@ -41,9 +51,9 @@ export function followEdit(we, mesh, record) {
     for (const i of record.removed[list]) rows[kind].add(i);
   }
   for (const p of record.positions) rows.vertex.add(p.vertex);
-  const V = Math.max(we.vertexEdge.length, ...[...rows.vertex].map((v) => v + 1));
-  const E = Math.max(we.edges.length / 8, ...[...rows.edge].map((e) => e + 1));
-  const F = Math.max(we.faceEdge.length, ...[...rows.face].map((f) => f + 1));
+  const V = rowsAfter(we.vertexEdge.length, record, 'vertices');
+  const E = rowsAfter(we.edges.length / 8, record, 'edges');
+  const F = rowsAfter(we.faceEdge.length, record, 'faces');
   // Each array's room (a property the spread of `we` does not copy): the typed arrays the
   // views are cut from.
   const room = we.room ?? { positions: we.positions, vertexEdge: we.vertexEdge, edges: we.edges, faceEdge: we.faceEdge };
@@ -63,26 +73,28 @@ export function followEdit(we, mesh, record) {
   Object.defineProperty(out, 'room', { value: grown, enumerable: false });
   // One row of each table per read: the views make it a copy of that row only.
   const read = (i) => mesh.tables('winged-edge', { offset: i, limit: 1 });
+  // (An undo's removed rows are past the end: there is nothing to read.)
   for (const v of rows.vertex) {
+    if (v >= V) continue;
     const { arrays } = read(v).vertices;
     out.positions.set(arrays.positions, 3 * v);
     out.vertexEdge[v] = arrays.vertexEdge[0];
   }
-  for (const e of rows.edge) out.edges.set(read(e).edges.arrays.edges, 8 * e);
-  for (const f of rows.face) out.faceEdge[f] = read(f).faces.arrays.faceEdge[0];
+  for (const e of rows.edge) if (e < E) out.edges.set(read(e).edges.arrays.edges, 8 * e);
+  for (const f of rows.face) if (f < F) out.faceEdge[f] = read(f).faces.arrays.faceEdge[0];
   return out;
 }
 
 /**
- * The vertex positions (x, y, z per vertex) after an edit, from `positions` before it: the
+ * The vertex positions (x, y, z per vertex) after an edit or an undo, from `positions` before it: the
  * vertices the record moved or added read again from the core, the rest kept.
  * @param {Float64Array & { room?: Float64Array }} positions @param {any} mesh the mesh after the edit
- * @param {{ added: { vertices: ArrayLike<number> }, positions: { vertex: number }[] }} record
+ * @param {{ op: string, added: { vertices: ArrayLike<number> }, removed: { vertices: ArrayLike<number> }, positions: { vertex: number }[] }} record
  * @returns {Float64Array & { room?: Float64Array }}
  */
 export function followPositions(positions, mesh, record) {
   const touched = new Set([...record.positions.map((p) => p.vertex), ...Array.from(record.added.vertices)]);
-  const V = Math.max(positions.length / 3, ...[...touched].map((v) => v + 1));
+  const V = rowsAfter(positions.length / 3, record, 'vertices');
   return followRows(positions, 3, V, touched, (v) => mesh.tables('winged-edge', { offset: v, limit: 1 }).vertices.arrays.positions);
 }
 
