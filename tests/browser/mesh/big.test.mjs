@@ -374,7 +374,7 @@ test('an edit on a 104,000-face sphere: the winged edge\'s cost alone, said why,
   await page.context().close();
 });
 
-test('edits on a 100,000-face sphere rewrite only what they touched in the GPU\'s buffers; the picture equals the mesh uploaded whole', async () => {
+test('edits and their undo on a 100,000-face sphere rewrite only what they touched in the GPU\'s buffers; the picture equals the mesh uploaded whole', async () => {
   const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
   // Every byte the page sends to a WebGL buffer, counted.
   await context.addInitScript(() => {
@@ -417,10 +417,22 @@ test('edits on a 100,000-face sphere rewrite only what they touched in the GPU\'
     await settled();
     sent.push(await page.evaluate((b) => window.glBytes - b, before.bytes));
   }
+  // Undo twice (the poke and the split go; the core takes them back from their records): the
+  // mesh is not built again and the buffers follow the same way.
+  const meshId = await page.evaluate(() => window.wingspline.model.mesh.id);
+  for (let k = 0; k < 2; k += 1) {
+    const before = await page.evaluate(() => ({ bytes: window.glBytes, ops: window.wingspline.state.ops.length }));
+    await page.keyboard.press('Control+z');
+    await page.waitForFunction((n) => window.wingspline.state.ops.length === n - 1, before.ops);
+    await settled();
+    sent.push(await page.evaluate((b) => window.glBytes - b, before.bytes));
+  }
+  assert.equal(await page.evaluate(() => window.wingspline.model.mesh.id), meshId, 'undo kept the mesh');
+  assert.equal(await page.evaluate(() => window.wingspline.model.F), 100000);
   // A whole upload sends the positions (12 bytes a vertex) and the triangles (12 bytes each):
-  // over 2 MB here; an edit a few hundred bytes.
+  // over 2 MB here; an edit or an undo a few hundred bytes.
   assert.ok(wholeUpload > 2e6, `the whole mesh: ${wholeUpload} bytes`);
-  assert.ok(sent.every((n) => n > 0 && n < 4096), `bytes sent per edit: ${sent.join(', ')}`);
+  assert.ok(sent.every((n) => n > 0 && n < 4096), `bytes sent per edit and undo: ${sent.join(', ')}`);
   // The followed picture, and the same mesh uploaded whole and drawn at the same view.
   const followed = await stagePixels(page);
   await page.evaluate(() => {
