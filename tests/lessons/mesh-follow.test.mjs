@@ -18,6 +18,7 @@ import { random } from '../helpers/seeded-random.mjs';
 import { meshLesson, createMeshView } from '../../web/js/lessons/mesh/lesson.js';
 import { editOps, withEdit } from '../../web/js/lessons/mesh/edit-ops.js';
 import { projectAll } from '../../web/js/ui/mesh/view.js';
+import { arraysAtStep, visibleSteps } from '../../web/js/lessons/mesh/edit-playback.js';
 
 const api = await loadWingspline();
 const EDIT_OPS = editOps(api.meshOperations);
@@ -45,8 +46,8 @@ function anEdit(rnd, model) {
   return null;
 }
 
-test('after each of 1,500 random edits and 500 undos the followed tables, faces, projection and gaps equal a whole read of the core', () => {
-  let edits = 0; let withGaps = 0; let grew = 0; let undos = 0; let undoneEdits = 0;
+test('after each of 1,500 random edits and 500 undos the followed tables, faces, projection and gaps, and the edit player\'s tables at 1,000 steps, equal a whole read of the core', () => {
+  let edits = 0; let withGaps = 0; let grew = 0; let undos = 0; let undoneEdits = 0; let played = 0;
   for (let seed = 1; seed <= 60 && (edits < 1500 || undos < 500); seed += 1) {
     const rnd = random(seed);
     const view = createMeshView();
@@ -88,9 +89,22 @@ test('after each of 1,500 random edits and 500 undos the followed tables, faces,
       const vertexMarks = Array.from({ length: model.V }, (_, v) => (gaps.vertices.includes(v) ? 1 : 0));
       assert.deepEqual(Array.from(model.vertexGap ?? new Uint8Array(model.V)), vertexMarks, where);
       if (gaps.vertices.length + gaps.edges.length + gaps.faces.length) withGaps += 1;
+      // The edit player stepped back and forth: the tables it shows equal the final ones with
+      // the later assignments taken back (arraysAtStep, the copy it replaces).
+      const lines = visibleSteps(model.lastOperation).length;
+      if (lines && rnd() < 0.5) {
+        for (let k = 0; k < 3; k += 1) {
+          const shown = Math.floor(rnd() * (lines + 1));
+          model = meshLesson.compute(view, { ...state, editStep: shown }, ctx);
+          const reference = arraysAtStep(model.we, model.lastOperation, shown);
+          for (const key of ['positions', 'vertexEdge', 'edges', 'faceEdge']) assert.deepEqual(Array.from(model.weShown[key]), Array.from(reference[key]), `${where}: step ${shown} ${key}`);
+          played += 1;
+        }
+        model = meshLesson.compute(view, state, ctx);
+      }
     }
   }
-  assert.ok(edits >= 1500 && withGaps > 200 && grew > 200 && undos >= 500 && undoneEdits > undos, `edits ${edits}, with gaps ${withGaps}, grew ${grew}, undos ${undos} of ${undoneEdits} edits`);
+  assert.ok(edits >= 1500 && withGaps > 200 && grew > 200 && undos >= 500 && undoneEdits > undos && played > 1000, `edits ${edits}, with gaps ${withGaps}, grew ${grew}, undos ${undos} of ${undoneEdits} edits, player steps ${played}`);
 });
 
 // The api with every mesh it builds counted: the calls that read a whole table.
@@ -142,6 +156,10 @@ test('an edit and its undo on a 120,000-face sphere read no whole table and as m
     }
     const faces = model.mesh.faceSet();
     assert.deepEqual([Array.from(model.faceOffsets), Array.from(model.faceVertices)], [Array.from(faces.faceOffsets), Array.from(faces.faceVertices)]);
+    // The edit player's steps move one set of arrays (no copy of the tables per step).
+    const shownArrays = [0, 3, 1].map((shown) => meshLesson.compute(view, { ...state, editStep: shown }, ctx).weShown);
+    assert.ok(shownArrays.every((a) => a.edges === shownArrays[0].edges && a.positions === shownArrays[0].positions && a.edges !== model.we.edges));
+    model = meshLesson.compute(view, state, ctx);
     // Undo, one edit at a time back to the first (the shell gives the earlier state back).
     counting.built.count = 0;
     for (let k = states.length - 2; k >= 0; k -= 1) {

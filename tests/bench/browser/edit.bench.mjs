@@ -1,7 +1,7 @@
 // ui_edit (docs/benchmarks.md): each operation of the mesh lesson's edit panel, and its undo
 // and redo, from the command to the frame drawn with every table updated, on sphere_1000,
 // sphere_100000 and sphere_1000000, in ms (median of REPETITIONS per operation; 5 on the
-// million faces, where an undo rebuilds the mesh), headless Chromium.
+// million faces, where each repetition's set-up is slow), headless Chromium.
 // The command is the commit the edit panel makes (the state with the operation added, as
 // edit-ops.js withEdit writes it); undo and redo are Ctrl+Z and Ctrl+Y. Timed: the command
 // itself plus the animation frame that follows, from the frame's start to a callback queued

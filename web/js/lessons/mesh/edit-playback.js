@@ -57,6 +57,45 @@ export function arraysAtStep(we, record, shown) {
   return out;
 }
 
+// One visible step's value (`before` or `after`) written into the arrays.
+function writeStep(arrays, s, value) {
+  if (s.coordinate) { if (value !== null) arrays.positions[3 * s.row + COORDINATES.indexOf(s.field)] = value; }
+  else if (s.table === 'edge') arrays.edges[8 * s.row + EDGE_FIELDS.indexOf(s.field)] = value;
+  else if (s.table === 'vertex') arrays.vertexEdge[s.row] = value;
+  else arrays.faceEdge[s.row] = value;
+}
+
+/**
+ * The same tables as arraysAtStep, kept from one step to the next: a second set of the
+ * winged-edge arrays (`played`, made once by copying `we`), moved to step `shown` by the
+ * assignments between the step it was at and that one, O(the steps between); arraysAtStep
+ * copies every array at every step, O(mesh): 60 MB at a million faces. `played.record` is
+ * the record it plays (null: the arrays equal the tables after the last change; a lesson
+ * brings them there with playedToEnd before it follows an edit into them).
+ * @param {{ arrays: any, record: any, at: number } | null} played @param {any} we the tables after the edit
+ * @param {any} record @param {number} shown
+ * @returns {{ arrays: any, record: any, at: number }}
+ */
+export function playedArrays(played, we, record, shown) {
+  const steps = visibleSteps(record);
+  if (!played) {
+    const copy = (a) => /** @type {any} */ (new a.constructor(a));
+    played = { arrays: { ...we, positions: copy(we.positions), edges: copy(we.edges), vertexEdge: copy(we.vertexEdge), faceEdge: copy(we.faceEdge) }, record: null, at: 0 };
+  }
+  if (played.record !== record) Object.assign(played, { record, at: steps.length });
+  const target = Math.max(0, Math.min(shown, steps.length));
+  while (played.at > target) { played.at -= 1; writeStep(played.arrays, steps[played.at], steps[played.at].before); }
+  while (played.at < target) { writeStep(played.arrays, steps[played.at], steps[played.at].after); played.at += 1; }
+  return played;
+}
+
+// The played arrays brought to the end of the record they play (the tables after it).
+export function playedToEnd(played) {
+  if (played?.record) playedArrays(played, null, played.record, Infinity);
+  if (played) played.record = null;
+  return played;
+}
+
 // The rows the record added that no step up to `shown` has written yet: they are not there
 // yet in the picture of the tables at that step.
 export function rowsNotYetWritten(record, shown) {

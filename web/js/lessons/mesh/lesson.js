@@ -9,7 +9,7 @@ import { importedMesh } from '../../app/imported-mesh.js';
 import { createMeshSource, cacheKeys } from '../../ui/mesh/mesh-source.js';
 import { faceCsr } from '../../ui/mesh/mesh-choice.js';
 import { MESH_KINDS, MESH_SIZES, IMPORTED_CONTENT } from './choices.js';
-import { arraysAtStep, visibleSteps } from './edit-playback.js';
+import { playedArrays, playedToEnd, visibleSteps } from './edit-playback.js';
 import { normaliseSteps, walkFrames } from '../../ui/mesh/walk.js';
 import { followEdit, followFaces, followRows, recordEdges } from '../../ui/mesh/winged-arrays.js';
 import { drawMesh, createBaseCache } from '../../ui/mesh/draw.js';
@@ -127,7 +127,7 @@ export function createMeshView() {
 // Per-topology and per-version caches (keyed on the mesh's id and version, cacheKeys), so a
 // traversal step costs one frame lookup. One per lesson view (setup).
 function createDerived() {
-  return { topology: null, version: null, viewKey: null, projected: null, zExtent: 0, we: null, counts: null, steps: new Map(), planes: null, lastChange: null };
+  return { topology: null, version: null, viewKey: null, projected: null, zExtent: 0, we: null, played: null, counts: null, steps: new Map(), planes: null, lastChange: null };
 }
 
 function wingedTables(derived, entry, keys) {
@@ -149,6 +149,10 @@ function wingedTables(derived, entry, keys) {
       && chain.every((c, i) => c.rows && (i === 0 || key(chain[i - 1].after) === key(c.before)));
     derived.version = keys.version;
     derived.we = follows ? chain.reduce((we, c) => followEdit(we, entry.mesh, c), derived.we) : entry.mesh.wingedEdgeArrays();
+    // The edit player's tables (edit-playback.js playedArrays) follow the same way, from the
+    // end of the edit they played; after a whole read they are made again when next played.
+    if (follows && derived.played) derived.played.arrays = chain.reduce((a, c) => followEdit(a, entry.mesh, c), playedToEnd(derived.played).arrays);
+    else derived.played = null;
     // The faces the same way: only those the changes can have changed are read again (a face
     // whose corners changed is beside an edge its last change rewrote, in the mesh as it is
     // now: followFaces on the records together). Faces depend on the topology alone; at the
@@ -232,7 +236,7 @@ function compute(view, state, ctx) {
   // While the edit player is inside an edit the picture shows the tables as they stood: an
   // edge whose S or E is not written yet is not drawn (like a gap). Only the edit's edges
   // can be so.
-  const weShown = record && editStep < editSteps ? arraysAtStep(we, record, editStep) : we;
+  const weShown = record && editStep < editSteps ? (derived.played = playedArrays(derived.played, we, record, editStep)).arrays : we;
   const edgeGap = weShown !== we ? unwritten(weShown, recordEdges(record), derived.gapMarks?.edge.slice() ?? new Uint8Array(E)) : derived.gapMarks?.edge ?? null;
   const current = weShown !== we && editStep > 0 ? visibleSteps(record)[editStep - 1] : null;
   const removed = walkKind === 'vertex' ? vertexGap?.[walkElement] : csr.offsets[walkElement + 1] === csr.offsets[walkElement];
