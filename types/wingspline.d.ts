@@ -390,7 +390,8 @@ export interface Mesh {
   faceEdgeSteps(f: number): FaceEdgeStep[];
   counts(): MeshCounts;
   planes(): FacePlane[];
-  planeArrays(): { cross: Float64Array; crossCorners: Int32Array; newell: Float64Array; residual: Float64Array };
+  /** The planes as flat arrays; with {offset, limit} of those faces alone (O(their sides)). */
+  planeArrays(options?: { offset?: number; limit?: number }): { cross: Float64Array; crossCorners: Int32Array; newell: Float64Array; residual: Float64Array; normals: Float64Array };
   /** Newell unit normals, 3 per face; `into` (3F numbers) is filled and returned. */
   normals(options?: { into?: Float64Array | null }): Float64Array;
   boundingBox(): { min: number[]; max: number[]; centre: number[] };

@@ -29,23 +29,28 @@ using namespace wingspline::mesh;
 // given: the other representations' vertex and face tables when built (the JS Mesh builds
 // them first when faceEdges were chosen), otherwise read back from the winged edge, which
 // with the default face edges is the same face set.
-val mesh_planes(int32_t handle) {
+// limit < 0: every face (through the face set); otherwise faces offset .. offset + limit - 1.
+val mesh_planes(int32_t handle, int32_t offset, int32_t limit) {
     return guarded([&] {
         // The faces as given: face_set() lists each face from its first corner.
-        const auto planes = face_planes(entry(handle).winged);
-        std::vector<double> cross, newell, residual;
+        const WingedEdgeMesh& w = entry(handle).winged;
+        const auto planes = limit < 0 ? face_planes(w) : face_planes(w, offset, limit);
+        std::vector<double> cross, newell, residual, normals;
         std::vector<int32_t> corners;
         for (const auto& p : planes) {
             corners.insert(corners.end(), p.cross_corners.begin(), p.cross_corners.end());
             cross.insert(cross.end(), {p.cross.x, p.cross.y, p.cross.z, p.cross.w});
             newell.insert(newell.end(), {p.newell.x, p.newell.y, p.newell.z, p.newell.w});
             residual.push_back(p.residual);
+            const glm::dvec3 n = p.unit_normal();
+            normals.insert(normals.end(), {n.x, n.y, n.z});
         }
         val r = val::object();
         r.set("cross", to_typed_array(cross));
         r.set("crossCorners", to_typed_array(corners));
         r.set("newell", to_typed_array(newell));
         r.set("residual", to_typed_array(residual));
+        r.set("normals", to_typed_array(normals));
         return r;
     });
 }

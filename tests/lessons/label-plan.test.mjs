@@ -51,9 +51,11 @@ function counted(array, counter) {
 function modelOf(g, counter) {
   const edges = counted(g.edges, counter);
   const we = { edges };
+  // In 2D the positions are shown as they are: the projection is the positions.
+  const projected = counted(g.projected, counter);
   return {
-    source: 'grid', topology: 1, version: 1, editStep: -1, mode3d: false, rotation: [1, 0, 0, 0, 1, 0, 0, 0, 1],
-    projected: counted(g.projected, counter), faceOffsets: counted(g.faceOffsets, counter), faceVertices: counted(g.faceVertices, counter),
+    source: 'grid', topology: 1, version: 1, editStep: -1, mode3d: false, rotation: [1, 0, 0, 0, 1, 0, 0, 0, 1], centre: [0, 0, 0],
+    positions: projected, projected, points: projected, faceOffsets: counted(g.faceOffsets, counter), faceVertices: counted(g.faceVertices, counter),
     we, weShown: we, V: g.V, F: g.F, vertexGap: null, edgeGap: null,
   };
 }

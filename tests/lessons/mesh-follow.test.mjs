@@ -178,3 +178,25 @@ test('an edit and its undo on a 120,000-face sphere read no whole table and as m
   assert.deepEqual(perSize[0].reads, perSize[1].reads, JSON.stringify(perSize));
   assert.ok(perSize[1].reads.every((n) => n > 0 && n < 20), JSON.stringify(perSize));
 });
+
+test('a turn of the view on a 200,000-face sphere projects no vertex until one is read; the few read and the whole projection equal projectAll of the core\'s positions', () => {
+  const view = createMeshView();
+  const ctx = { api };
+  let state = { ...meshLesson.defaultState(), meshKind: 'sphere', sphere: { slices: 500, stacks: 201 }, mode3d: true };
+  let model = meshLesson.compute(view, state, ctx);
+  assert.ok(model.V > 100_000, `V = ${model.V}`);
+  for (let turn = 1; turn <= 3; turn += 1) {
+    state = { ...state, rotation: { yaw: 0.6 + 0.1 * turn, pitch: 0.45 - 0.05 * turn } };
+    model = meshLesson.compute(view, state, ctx);
+    assert.equal(view.derived.projected, null, `turn ${turn}: nothing projected yet`);
+    const expected = projectAll(model.mesh.wingedEdgeArrays().positions, model.rotation, model.centre);
+    const P = model.points;
+    for (const v of [0, 1, 777, model.V - 1]) {
+      for (let k = 0; k < 3; k += 1) assert.equal(P[3 * v + k], expected[3 * v + k], `turn ${turn} v${v + 1}`);
+    }
+    assert.equal(view.derived.projected, null, `turn ${turn}: a few points read, the whole not made`);
+    assert.deepEqual(Array.from(model.projected), Array.from(expected), `turn ${turn}: the whole projection`);
+    assert.equal(model.points, model.projected, 'once made, the points are the whole array');
+  }
+  model.mesh.dispose();
+});

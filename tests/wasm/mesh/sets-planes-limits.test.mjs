@@ -6,6 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
+import { random } from '../../helpers/seeded-random.mjs';
 
 const api = await loadWingspline();
 const REPS = ['independent-faces', 'vertex-face-tables', 'adjacency-lists', 'partial-adjacency-lists', 'edge-list', 'winged-edge'];
@@ -43,6 +44,37 @@ test('planes(): cross product from the face\'s own first three corners, reported
     } finally {
       mesh.dispose();
     }
+  }
+});
+
+test('planeArrays({offset, limit}): any range of faces equals the same rows of the whole; the normals are Newell\'s unit normals; a range past the faces is refused', () => {
+  const mesh = api.buildMesh(api.generateMesh('sphere', { slices: 12, stacks: 6 }));
+  try {
+    mesh.apply({ op: 'join-faces', e: 20 }); // a gap and a quad among the triangles
+    const whole = mesh.planeArrays();
+    const normals = mesh.normals();
+    const F = whole.residual.length;
+    const rnd = random(7);
+    for (let k = 0; k < 200; k += 1) {
+      const offset = Math.floor(rnd() * F);
+      const limit = Math.floor(rnd() * (F - offset + 1));
+      const part = mesh.planeArrays({ offset, limit });
+      assert.deepEqual(Array.from(part.cross), Array.from(whole.cross.subarray(4 * offset, 4 * (offset + limit))), `${offset}+${limit} cross`);
+      assert.deepEqual(Array.from(part.newell), Array.from(whole.newell.subarray(4 * offset, 4 * (offset + limit))), `${offset}+${limit} newell`);
+      assert.deepEqual(Array.from(part.residual), Array.from(whole.residual.subarray(offset, offset + limit)));
+      assert.deepEqual(Array.from(part.crossCorners), Array.from(whole.crossCorners.subarray(3 * offset, 3 * (offset + limit))));
+    }
+    // Unit length, and the direction of mesh.normals() (the faces' walk order may differ in
+    // the last bits: within 1e-12 of unit vectors).
+    for (let f = 0; f < F; f += 1) {
+      const n = whole.normals.subarray(3 * f, 3 * f + 3);
+      if (whole.residual[f] === 0 && n[0] === 0 && n[1] === 0 && n[2] === 0) continue; // the gap
+      for (let k = 0; k < 3; k += 1) assert.ok(Math.abs(n[k] - normals[3 * f + k]) < 1e-12, `F${f + 1}`);
+    }
+    assert.throws(() => mesh.planeArrays({ offset: F - 1, limit: 2 }), (e) => e.code === 'invalid-element' && new RegExp(`it has ${F}\\)`).test(e.message));
+    assert.throws(() => mesh.planeArrays({ offset: -1, limit: 2 }), (e) => e.code === 'invalid-argument');
+  } finally {
+    mesh.dispose();
   }
 });
 

@@ -358,7 +358,7 @@ export class Mesh {
   // [A, B, C, D], residual}]. The cross product uses the face's own first three corners (as
   // given, whatever its stored face edge), named in crossCorners.
   planes() {
-    const r = unwrap(this.#raw.meshPlanes(this.#live()));
+    const r = unwrap(this.#raw.meshPlanes(this.#live(), 0, -1));
     return Array.from(r.residual, (residual, f) => ({
       cross: Array.from(r.cross.subarray(4 * f, 4 * f + 4)),
       crossCorners: Array.from(r.crossCorners.subarray(3 * f, 3 * f + 3)),
@@ -370,9 +370,15 @@ export class Mesh {
   // The same planes as flat typed arrays, nothing converted per face: {cross, newell
   // (Float64Array, 4 per face: A B C D), crossCorners (Int32Array, 3 per face), residual
   // (Float64Array, 1 per face)}; a table reads only the rows it shows.
-  planeArrays() {
-    const { cross, crossCorners, newell, residual } = unwrap(this.#raw.meshPlanes(this.#live()));
-    return { cross, crossCorners, newell, residual };
+  // planeArrays({offset, limit}): faces offset .. offset + limit - 1 alone (O(their sides):
+  // the planes table asks for the rows it shows), each array's entries for the first face
+  // first; with `normals` (Float64Array, 3 per face: Newell's unit normal).
+  planeArrays({ offset = 0, limit = -1 } = {}) {
+    if (limit !== -1 && !(Number.isInteger(offset) && Number.isInteger(limit) && offset >= 0 && limit >= 0)) {
+      fail('invalid-argument', 'planeArrays({offset, limit}) needs whole numbers, offset >= 0 and limit >= 0');
+    }
+    const { cross, crossCorners, newell, residual, normals } = unwrap(this.#raw.meshPlanes(this.#live(), offset, limit));
+    return { cross, crossCorners, newell, residual, normals };
   }
 
   // Newell unit normals, normals[3*f + k], in a new Float64Array, or copied into `into`

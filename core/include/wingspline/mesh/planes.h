@@ -5,6 +5,7 @@
 #include "wingspline/mesh/winged_edge.h"
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -17,6 +18,12 @@ struct FacePlane {
     std::array<int32_t, 3> cross_corners; // the vertices used as P1, P2, P3 (so a lesson can show them)
     glm::dvec4 newell; // (A, B, C) = Newell's sums (half the cross product for a triangle); D through the centroid
     double residual;   // max distance of a vertex from the Newell plane (same units as positions)
+    // Newell's unit normal (A, B, C) / |(A, B, C)|; (0, 0, 0) for a degenerate face.
+    glm::dvec3 unit_normal() const {
+        const glm::dvec3 n(newell);
+        const double len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+        return len > 0 ? n / len : glm::dvec3(0.0);
+    }
 };
 
 // Newell's (A, B, C) of the polygon corners[0..n) with positions[3*v + k].
@@ -31,6 +38,10 @@ std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh, const std::vector
 // The same with each face read back from the winged edge (from its stored edge): the faces
 // as given only when the mesh was built with the default face edges.
 std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh);
+// The planes of faces first .. first + count - 1 alone (each face as face_set() lists it,
+// read by face_corners: O(their sides), whatever the mesh's size): what a table shows for
+// the rows in view. Throws Error("invalid-element") for a range outside the faces.
+std::vector<FacePlane> face_planes(const WingedEdgeMesh& mesh, int32_t first, int32_t count);
 // Unit normals by Newell's method, normals[3*f + k]; a degenerate face gets (0, 0, 0).
 void newell_normals(const WingedEdgeMesh& mesh, std::vector<double>& normals);
 // The same into out[0 .. 3F), which the caller owns (no allocation, no zero fill).

@@ -244,22 +244,32 @@ function compute(view, state, ctx) {
   const frame = frames[Math.min(state.step, frames.length - 1)] ?? null;
   const R = viewRotation(state);
   const viewKey = `${keys.version}:${state.mode3d}:${R.join(',')}`;
+  // The largest |z| (is the mesh flat?), per mesh version: after a followed edit from the
+  // vertices it moved or added, otherwise over every vertex.
+  if (derived.zVersion !== keys.version) {
+    if (derived.follow && derived.zVersion === derived.follow.from) {
+      for (const v of derived.follow.vertices) if (v < V) derived.zExtent = Math.max(derived.zExtent, Math.abs(we.positions[3 * v + 2]));
+    } else {
+      let zExtent = 0;
+      for (let v = 0; v < V; v += 1) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
+      derived.zExtent = zExtent;
+    }
+    derived.zVersion = keys.version;
+  }
   if (derived.viewKey !== viewKey) {
     derived.centre ??= entry.mesh.boundingBox().centre;
     // In 2D the positions are shown exactly as they are ((p - c) + c would round them).
     const about = state.mode3d ? derived.centre : [0, 0, 0];
-    if (derived.follow && derived.viewKey === `${derived.follow.from}:${state.mode3d}:${R.join(',')}`) {
+    if (derived.follow && derived.projected && derived.viewKey === `${derived.follow.from}:${state.mode3d}:${R.join(',')}`) {
       // The same view of the mesh before the edit: only the vertices it moved or added.
-      const touched = derived.follow.vertices;
-      const projected = followRows(derived.projected, 3, V, touched, (v) => projectAll(we.positions.subarray(3 * v, 3 * v + 3), R, about));
-      let zExtent = derived.zExtent;
-      for (const v of touched) if (v < V) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
-      Object.assign(derived, { viewKey, zExtent, projected });
+      const projected = followRows(derived.projected, 3, V, derived.follow.vertices, (v) => projectAll(we.positions.subarray(3 * v, 3 * v + 3), R, about));
+      Object.assign(derived, { viewKey, projected });
     } else {
-      let zExtent = 0;
-      for (let v = 0; v < V; v += 1) zExtent = Math.max(zExtent, Math.abs(we.positions[3 * v + 2]));
-      Object.assign(derived, { viewKey, zExtent, projected: projectAll(we.positions, R, about) });
+      // Every vertex turned by the view when first read (model.projected): a turn of a big
+      // mesh drawn by the GPU reads a few vertices only (model.points), not all of them.
+      Object.assign(derived, { viewKey, projected: null });
     }
+    derived.projection = { R, about, positions: we.positions };
   }
   // Seen from behind: the walked vertex's normal (faces around it, by area) or the walked
   // face's normal, both from the core, points away from the viewer.
@@ -275,7 +285,19 @@ function compute(view, state, ctx) {
     topology: keys.topology,
     version: keys.version,
     positions: we.positions,
-    projected: derived.projected,
+    // Every vertex turned by the view (x, y, depth per vertex), made when first read.
+    get projected() {
+      const { R: r, about, positions } = derived.projection;
+      derived.projected ??= projectAll(positions, r, about);
+      return derived.projected;
+    },
+    // The same for reading a few vertices (a walk, a highlight, a pick's candidates): the
+    // whole array once made or on a small mesh, otherwise each vertex turned when read.
+    get points() {
+      if (derived.projected || V <= LAZY_PROJECTION_FROM) return this.projected;
+      const { R: r, about, positions } = derived.projection;
+      return lazyPoints((v) => projectAll(positions.subarray(3 * v, 3 * v + 3), r, about));
+    },
     rotation: R,
     faceOffsets: csr.offsets,
     faceVertices: csr.vertices,
@@ -310,6 +332,27 @@ function compute(view, state, ctx) {
   // ever ask the core about elements it has.
   dropStale(view.selection, model);
   return model;
+}
+
+// From this many vertices a turn of the view does not project every vertex at once (about
+// 40 ms at a million faces): what a frame draws over the GPU's picture reads few of them.
+// (Up to it, every vertex has a handle to drag: all are read anyway.)
+const LAZY_PROJECTION_FROM = 20_000;
+
+// Reads like the projected array (p[3v], p[3v + 1], p[3v + 2]), each vertex turned when
+// first read.
+function lazyPoints(project) {
+  const turned = new Map();
+  return new Proxy({}, {
+    get(_, key) {
+      const i = Number(key);
+      if (!Number.isInteger(i) || i < 0) return undefined;
+      const v = Math.floor(i / 3);
+      let p = turned.get(v);
+      if (!p) { p = project(v); turned.set(v, p); }
+      return p[i - 3 * v];
+    },
+  });
 }
 
 function unwritten(weShown, edges, out) {
@@ -367,7 +410,7 @@ function zoomToWalk(view, model, state, ctx) {
   view.walkZoomKey = key;
   if (first) return;
   // The ring: the ends of every edge the whole walk meets (its last frame), in the view plane.
-  const P = model.projected;
+  const P = model.points;
   let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
   for (const e of model.frames[model.frames.length - 1].order) {
     for (const v of [model.we.edges[8 * e], model.we.edges[8 * e + 1]]) {

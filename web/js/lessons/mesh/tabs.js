@@ -19,6 +19,11 @@ const F = (i) => sub('F', i);
 // tables, read as typed arrays, are never cut).
 export const REPRESENTATION_ROWS = 3000;
 const REPRESENTATION_BLOCKS_KEPT = 8;
+// Rows of the planes table asked of the core at a time; faces measured per task for the
+// largest residual (about 10 ms each here).
+const PLANE_BLOCK = 256;
+const PLANE_SCAN = 20_000;
+const count = (n) => n.toLocaleString('en');
 
 // Lectures 000 (✓/✗ bullets) and 003 (polygon list / vertex list / edge list), quoted.
 export const PROS_CONS = {
@@ -122,9 +127,10 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
     planes: table({ id: 'plane-table', kind: 'face', caption: 'Ax + By + Cz + D = 0 per face',
       head: [[{ text: '', colspan: 1 }, { text: 'cross product P₁P₂ × P₁P₃ (001)', colspan: 4 }, { text: 'Newell (003)', colspan: 4 }, { text: '', colspan: 2 }],
         ['', 'A', 'B', 'C', 'D', 'A', 'B', 'C', 'D', 'unit normal (Newell)', 'planarity residual']],
-      rowLabel: F, row: (f) => {
-        // Read from the core's flat arrays (planeArrays, once per mesh version): only the rows in view.
-        const { cross, newell, residual, normals: n } = model.derived.planes;
+      rowLabel: F, row: (face) => {
+        // Read from the core's flat arrays, a block of rows at a time as they come into view
+        // (planeArrays({offset, limit}), once per mesh version).
+        const { cross, newell, residual, normals: n, at: f } = planeRow(face);
         const four = (a) => [num(a[4 * f]), num(a[4 * f + 1]), num(a[4 * f + 2]), num(a[4 * f + 3])];
         return [...four(cross), ...four(newell), `(${num(n[3 * f], 3)}, ${num(n[3 * f + 1], 3)}, ${num(n[3 * f + 2], 3)})`, num(residual[f], 3)];
       } }),
@@ -300,19 +306,45 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   }
 
 
-  function ensurePlanes() {
-    // Whole-mesh figures once per mesh version (lesson.js resets derived.planes), not per
-    // tab switch: the planes and normals as the core's arrays, and the largest residual.
-    if (!model.derived.planes) {
-      const planes = model.mesh.planeArrays();
-      let worst = 0;
-      for (const r of planes.residual) worst = Math.max(worst, r);
-      model.derived.planes = { ...planes, normals: model.mesh.normals(), worst };
-    }
-    const { worst } = model.derived.planes;
+  // The planes of the faces in blocks of PLANE_BLOCK rows, each asked of the core when a row
+  // of it is first shown, once per mesh version (lesson.js resets derived.planes): showing
+  // the tab costs the rows in view, not a pass over every face (0.6 s at a million faces).
+  function planeRow(f) {
+    const planes = model.derived.planes;
+    const b = Math.floor(f / PLANE_BLOCK);
+    if (!planes.blocks.has(b)) planes.blocks.set(b, model.mesh.planeArrays({ offset: b * PLANE_BLOCK, limit: Math.min(PLANE_BLOCK, model.F - b * PLANE_BLOCK) }));
+    return { ...planes.blocks.get(b), at: f - b * PLANE_BLOCK };
+  }
+
+  // The largest residual, a whole-mesh figure: measured in pieces of PLANE_SCAN faces, one
+  // task each, after the tab is shown (the note says how far it has got); a new mesh version
+  // stops the scan of the old one.
+  function scanPlanes(planes) {
+    const piece = () => {
+      if (model.derived.planes !== planes || planes.scanned >= model.F) return;
+      const limit = Math.min(PLANE_SCAN, model.F - planes.scanned);
+      for (const r of model.mesh.planeArrays({ offset: planes.scanned, limit }).residual) planes.worst = Math.max(planes.worst, r);
+      planes.scanned += limit;
+      showPlaneNote();
+      if (planes.scanned < model.F) setTimeout(piece, 0);
+    };
+    piece();
+  }
+
+  function showPlaneNote() {
+    const { worst, scanned } = model.derived.planes;
+    const so = scanned < model.F ? `so far ${num(worst, 3)}, measured over ${count(scanned)} of ${count(model.F)} faces` : num(worst, 3);
     planeNote.textContent = model.is3dMesh
-      ? `Largest planarity residual: ${num(worst, 3)} (0 for planar faces). The cross product uses only the first three vertices; Newell averages over all of them.`
+      ? `Largest planarity residual: ${so} (0 for planar faces). The cross product uses only the first three vertices; Newell averages over all of them.`
       : 'This mesh lies in the plane z = 0, so every normal is ±(0, 0, 1): choose the tetrahedron, cube or sphere, or drag in the 3D view, to see real planes.';
+  }
+
+  function ensurePlanes() {
+    if (!model.derived.planes) {
+      model.derived.planes = { blocks: new Map(), worst: 0, scanned: 0 };
+      if (model.is3dMesh) scanPlanes(model.derived.planes);
+    }
+    showPlaneNote();
   }
 
   return {

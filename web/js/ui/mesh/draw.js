@@ -171,14 +171,14 @@ function drawBaseCached(baseCache, painter, model, state, ctx, plan) {
 }
 
 function highlightEdge(painter, model, e, style) {
-  const P = model.projected;
+  const P = model.points;
   const s = model.weShown.edges[8 * e]; const t = model.weShown.edges[8 * e + 1];
   painter.line(P[3 * s], P[3 * s + 1], P[3 * t], P[3 * t + 1], style);
 }
 
 function drawElement(painter, model, element, colors, strong) {
   if (!element || (element.kind === 'edge' && model.edgeGap?.[element.index])) return;
-  const P = model.projected;
+  const P = model.points;
   const colour = colors.series[2];
   if (element.kind === 'vertex') painter.circle(P[3 * element.index], P[3 * element.index + 1], strong ? 11 : 9, { stroke: colour, width: 3 });
   if (element.kind === 'edge') highlightEdge(painter, model, element.index, { stroke: colour, width: strong ? 7 : 5, alpha: 0.8 });
@@ -192,7 +192,7 @@ const FOUND_LABELLED = 48;
 function drawWalk(painter, model, state, colors) {
   const frame = model.frame;
   if (!frame) return;
-  const P = model.projected;
+  const P = model.points;
   const found = colors.series[1];
   const current = colors.series[4];
   if (model.walkKind === 'vertex') {

@@ -74,7 +74,7 @@ function frontMarks(model, P) {
 // walk step, a hover or a pick changes only the forced labels, so the frame places labels
 // among these (about as many as fit on the screen, whatever the mesh's size) and reads no
 // other element. `sceneKey` names the mesh state, the projection and the view.
-function labelCandidates(model, P, t, scale) {
+function labelCandidates(model, t, scale) {
   const w = t.width; const h = t.height;
   const boxW = LABEL_BOX.w * scale; const boxH = LABEL_BOX.h * scale;
   const E = model.weShown.edges.length / 8;
@@ -83,13 +83,19 @@ function labelCandidates(model, P, t, scale) {
   // crowding is first estimated from every k-th vertex (20,000 of them), so a zoomed-out
   // big mesh costs no per-vertex work at all.
   const ax = w / 2 - t.cx * t.zoom; const ay = h / 2 + t.cy * t.zoom; const z = t.zoom;
+  // The sample is turned here from the positions (R (p - c) + c, view.js projectAll), so a
+  // turn of a crowded big mesh projects 20,000 vertices, not all of them.
   const stride = Math.max(1, Math.ceil(model.V / 20000));
+  const R = model.rotation; const X = model.positions;
+  const [cx, cy, cz] = model.mode3d ? model.centre : [0, 0, 0];
   let sampled = 0;
   for (let v = 0; v < model.V; v += stride) {
-    const sx = ax + P[3 * v] * z; const sy = ay - P[3 * v + 1] * z;
+    const x = X[3 * v] - cx; const y = X[3 * v + 1] - cy; const zz = X[3 * v + 2] - cz;
+    const sx = ax + (R[0] * x + R[1] * y + R[2] * zz + cx) * z; const sy = ay - (R[3] * x + R[4] * y + R[5] * zz + cy) * z;
     if (sx >= 0 && sx <= w && sy >= 0 && sy <= h) sampled += 1;
   }
   if (sampled * stride * boxW * boxH > 0.5 * w * h) return { crowded: true };
+  const P = model.projected;
   const screen = new Float32Array(2 * model.V);
   for (let v = 0; v < model.V; v += 1) { screen[2 * v] = ax + P[3 * v] * z; screen[2 * v + 1] = ay - P[3 * v + 1] * z; }
   const front = frontMarks(model, P);
@@ -133,7 +139,9 @@ function sceneKeyOf(model, t, scale) {
  * @param {{ kind: string, index: number }[]} [forced] @param {{ key: string | null, candidates: any }} [cache]
  */
 export function labelPlan(painter, model, state, forced = [], cache = createLabelCache()) {
-  const P = model.projected;
+  // A few vertices read (model.points); labelCandidates reads every vertex when the mesh is
+  // not crowded on screen.
+  const P = model.points;
   const t = painter.t;
   const scale = painter.scale ?? 1;
   const plan = { vertices: [], faces: [], edges: [], forced: new Set(), away: null };
@@ -159,7 +167,7 @@ export function labelPlan(painter, model, state, forced = [], cache = createLabe
   const sceneKey = sceneKeyOf(model, t, scale);
   if (cache.key !== sceneKey) {
     cache.key = sceneKey;
-    cache.candidates = labelCandidates(model, P, t, scale);
+    cache.candidates = labelCandidates(model, t, scale);
   }
   const candidates = cache.candidates;
   if (candidates.crowded) return plan;
@@ -220,7 +228,7 @@ export function createLabelCache() {
 }
 
 export function drawLabels(painter, model, state, colors, plan) {
-  const P = model.projected;
+  const P = model.points;
   // Every vertex of a mesh of up to LABEL_LIMIT vertices has its disc (a handle to drag);
   // the labelled ones get theirs below.
   if (model.V <= LABEL_LIMIT) {

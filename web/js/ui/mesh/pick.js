@@ -14,9 +14,9 @@ import { faceCount, cornersOf } from './faces.js';
 const VERTEX_PICK_PX = 8;
 const CORE_PICK_EDGES = 2000; // from this size the core finds the candidates
 export function pickElement(model, x, y, zoom) {
-  const P = model.projected;
   const E = model.weShown.edges.length / 8;
   if (E > CORE_PICK_EDGES) return pickInCore(model, x, y, zoom);
+  const P = model.projected;
   const tolerance = 6 / zoom;
   let best = null;
   let bestD = tolerance;
@@ -55,7 +55,7 @@ function pickInCore(model, x, y, zoom) {
   const point = [R[0] * dx + R[3] * dy + R[6] * dz + c[0], R[1] * dx + R[4] * dy + R[7] * dz + c[1], R[2] * dx + R[5] * dy + R[8] * dz + c[2]];
   const { face, near } = model.mesh.pick(point, [R[6], R[7], R[8]], { radius: VERTEX_PICK_PX / zoom, max: 12 });
   if (!near.length) return null;
-  const P = model.projected;
+  const P = model.points;
   let best = null;
   let bestD = VERTEX_PICK_PX;
   for (const { face: f } of near) {
