@@ -96,13 +96,15 @@ test('two tabs editing the same work: the later save is the work, the other is s
   }
   // Both tabs edit the same saved work before either has saved (within the debounce), as
   // two windows side by side do; whichever saves later is the current work.
-  const edit = (page, i, dy) => page.evaluate(([i, dy]) => { const w = window.wingspline; const h = w.handles()[i]; w.ctx.commit(w.hooks.moveHandle(w.view, w.state, h.id, h.world.x, h.world.y + dy, w.model)); }, [i, dy]);
+  // Each edit returns the tab's points as it left them, in the same task: on a loaded machine
+  // a debounced save can land before a later read, and the other tab take its work already.
+  const edit = (page, i, dy) => page.evaluate(([i, dy]) => { const w = window.wingspline; const h = w.handles()[i]; w.ctx.commit(w.hooks.moveHandle(w.view, w.state, h.id, h.world.x, h.world.y + dy, w.model)); return w.state.points; }, [i, dy]);
   // (Both also miss each other's saves while they edit, so a slow machine, where one tab's
   // save can land before the other's edit, still meets the clash at the later write.)
   await deafen(a);
   await deafen(b);
-  await Promise.all([edit(a, 1, 0.5), edit(b, 2, -0.5)]);
-  const mine = new Map([[a, await points(a)], [b, await points(b)]]);
+  const [editedA, editedB] = await Promise.all([edit(a, 1, 0.5), edit(b, 2, -0.5)]);
+  const mine = new Map([[a, editedA], [b, editedB]]);
   assert.notDeepEqual(mine.get(a), mine.get(b));
   await Promise.all([settle(a), settle(b)]);
   // Both are shown again and look at the saved work.
