@@ -2,9 +2,10 @@
 // The package's command (`npx wingspline ...`). One command today:
 //   wingspline grade [--out DIR] FILES_OR_FOLDERS...
 // grades students' submission files against the lecturer's exercise files with the core
-// (web/js/exercise/grade.js), and writes gradebook.csv and gradebook.md. Each file is taken
-// for what it holds (an exercise file, or else a submission), so the order of the arguments
-// does not matter; a folder is searched for .json files (an LMS's bulk download, unzipped).
+// (web/js/exercise/grade.js), and writes gradebook.csv, gradebook.md and gradebook-totals.csv. The exercise files
+// come first: after the first submission, an exercise file is in the uploads, where a student
+// could have put it, so it is a row of the gradebook and never an exercise. A folder is
+// searched for .json files (an LMS's bulk download, unzipped).
 // docs/exercises.md, "Handing in and grading", shows the whole flow.
 //
 // It runs from the package (node_modules/wingspline/scripts/wingspline.mjs) and from a built
@@ -15,9 +16,11 @@ import path from 'node:path';
 const HELP = `Usage: wingspline grade [--out DIR] EXERCISES... SUBMISSIONS...
 
 Grades Wingspline submission files against exercise files: every answer is checked
-again by the core. Files may be given in any order, or as folders (searched for .json
-files, e.g. an assignment's downloaded submissions, unzipped). Writes gradebook.csv and
-gradebook.md into DIR (default: the current folder).
+again by the core. Give the exercise files first, then the submissions; either may be
+folders (searched for .json files, e.g. an assignment's downloaded submissions,
+unzipped). An exercise file among the submissions is listed, never used. Writes
+gradebook.csv, gradebook.md and gradebook-totals.csv (one row per submission file)
+into DIR (default: the current folder).
 
   --out DIR    where to write the gradebook (created if missing)
   --help       this text
@@ -75,23 +78,25 @@ async function grade(args) {
   if (!names.length) fail('no .json file found in the folders given');
 
   const { loadWingspline } = await import('../dist/js/core/wingspline.js');
-  const { gradeFiles, gradebookCsv, gradebookMarkdown, RESULTS } = await import('../dist/js/exercise/grade.js');
+  const { gradeFiles, gradebookCsv, gradebookMarkdown, gradebookTotalsCsv, RESULTS } = await import('../dist/js/exercise/grade.js');
   const { GRADERS } = await import('../dist/js/exercise/graders.js');
   const { LESSON_OBJECTS } = await import('../dist/js/lessons/all.js');
   const api = await loadWingspline();
   const files = names.map((name) => ({ name, size: fs.statSync(name).size, read: () => fs.readFileSync(name, 'utf8') }));
   const { rows, exercises, problems } = await gradeFiles({ api, files, lessons: LESSON_OBJECTS, graders: GRADERS });
   for (const p of problems) process.stderr.write(`wingspline: ${p}\n`);
-  if (!exercises.length) fail('no exercise file could be used: give the exercise files (format "wingspline-exercise") as well as the submissions', 1);
+  if (!exercises.length) fail('no exercise file could be used: give the exercise files (format "wingspline-exercise") first, then the submissions', 1);
 
   fs.mkdirSync(outDir, { recursive: true });
   const csvPath = path.join(outDir, 'gradebook.csv');
   const mdPath = path.join(outDir, 'gradebook.md');
   fs.writeFileSync(csvPath, gradebookCsv(rows));
   fs.writeFileSync(mdPath, gradebookMarkdown(rows, { exercises, problems, app: api.version }));
+  const totalsPath = path.join(outDir, 'gradebook-totals.csv');
+  fs.writeFileSync(totalsPath, gradebookTotalsCsv(rows, exercises.length));
   const submissions = new Set(rows.map((r) => r.file)).size;
   const right = rows.filter((r) => r.result === RESULTS.right).length;
-  process.stdout.write(`Graded ${submissions} submission file${submissions === 1 ? '' : 's'} against ${exercises.length} exercise${exercises.length === 1 ? '' : 's'}: ${right} of ${rows.length} answers right.\nWrote ${csvPath} and ${mdPath}.\n`);
+  process.stdout.write(`Graded ${submissions} submission file${submissions === 1 ? '' : 's'} against ${exercises.length} exercise${exercises.length === 1 ? '' : 's'}: ${right} of ${rows.length} answers right.\nWrote ${csvPath}, ${mdPath} and ${totalsPath}.\n`);
 }
 
 const [command, ...rest] = process.argv.slice(2);

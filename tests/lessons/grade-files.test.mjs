@@ -1,15 +1,15 @@
 // The submission file and the gradebook's files, in Node: what a damaged, edited or hostile
 // file becomes (a named row or a named refusal, never a crash), and that the CSV a spreadsheet
 // opens runs nothing and reads back as written (parsed by the tests' own RFC 4180 reader,
-// tests/helpers/csv.mjs). The grading of answers by the core, kind by kind, is tests/lessons/grade-answers.test.mjs
-// and, from the packed tarball, tests/package/grade-cli.test.mjs.
+// tests/helpers/csv.mjs). The grading of answers by the core, kind by kind, is tests/lessons/exercise-grade.test.mjs
+// and, from the packed tarball, tests/package/package.test.mjs.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from 'wingspline';
 import {
   readSubmission, makeSubmission, SubmissionError, exerciseHash, MAX_SUBMISSION_BYTES,
 } from '../../web/js/exercise/submission.js';
-import { gradeFiles, gradebookCsv, gradebookMarkdown, csvCell, markdownCell, COLUMNS, RESULTS } from '../../web/js/exercise/grade.js';
+import { gradeFiles, gradebookCsv, gradebookMarkdown, gradebookTotalsCsv, csvCell, markdownCell, COLUMNS, RESULTS } from '../../web/js/exercise/grade.js';
 import { LESSON_OBJECTS } from '../../web/js/lessons/all.js';
 import { parseExercise } from '../../web/js/exercise/format.js';
 import fs from 'node:fs';
@@ -129,4 +129,69 @@ test('an exercise file that cannot be used is named, and the others are still gr
   assert.equal(exercises.length, 1);
   assert.equal(problems.length, 1);
   assert.match(problems[0], /^bad-exercise\.json: this exercise cannot be used: .*origami/);
+});
+
+test('the exercise files come first: one among the submissions neither replaces nor adds an exercise, and has its row', async () => {
+  const real = galleryText('comparison-hermite-mg');
+  const forged = JSON.parse(real);
+  forged.question = `${forged.question} (forged)`;
+  const bonus = { ...forged, id: 'bonus-exercise' };
+  const sub = await makeSubmission({ student: 'Mallory', app: '0.1.0', entries: [] });
+  const { rows, exercises } = await gradeFiles({ api, lessons: LESSON_OBJECTS, graders: {},
+    files: [file('ex.json', real), file('mallory.json', JSON.stringify(sub)), file('forged.json', JSON.stringify(forged)), file('bonus.json', JSON.stringify(bonus))] });
+  assert.equal(exercises.length, 1);
+  assert.equal(exercises[0].exercise.question, JSON.parse(real).question, 'the lecturer\'s copy is the one graded against');
+  const by = Object.fromEntries(rows.map((r) => [r.file, r]));
+  assert.equal(by['forged.json'].result, RESULTS.exerciseAmongSubmissions);
+  assert.equal(by['bonus.json'].result, RESULTS.exerciseAmongSubmissions);
+  assert.ok(!rows.some((r) => r.exercise === 'bonus-exercise'));
+  // The uploads given first: no exercise at all (the command then says to give them first).
+  const first = await gradeFiles({ api, lessons: LESSON_OBJECTS, graders: {}, files: [file('mallory.json', JSON.stringify(sub)), file('ex.json', real)] });
+  assert.equal(first.exercises.length, 0);
+  assert.equal(first.rows.find((r) => r.file === 'ex.json').result, RESULTS.exerciseAmongSubmissions);
+});
+
+test('a file that cannot be read from the disk is a row naming it; the others are graded', async () => {
+  const sub = await makeSubmission({ student: 'Grace', app: '0.1.0', entries: [] });
+  const locked = { name: 'locked.json', size: 100, read: () => { throw new Error('EACCES: permission denied'); } };
+  const { rows } = await gradeFiles({ api, lessons: LESSON_OBJECTS, graders: {},
+    files: [file('ex.json', galleryText('mesh-walk-around-v2')), locked, file('grace.json', JSON.stringify(sub))] });
+  const by = Object.fromEntries(rows.map((r) => [r.file, r]));
+  assert.equal(by['locked.json'].result, RESULTS.damaged);
+  assert.match(by['locked.json'].reason, /cannot be read from the disk: EACCES/);
+  assert.equal(by['grace.json'].result, RESULTS.missing);
+});
+
+test('an entry with no answer is "not answered" (score 0); an answer the check cannot read is "could not be graded" (no score)', async () => {
+  const text = galleryText('comparison-hermite-mg');
+  const exercise = parseExercise(text, { lessonIds });
+  const hash = await exerciseHash(exercise);
+  const sub = await makeSubmission({ student: 'Ada', app: '0.1.0', entries: [{ id: exercise.id, hash, progress: { status: 'started', checks: 0, answer: '' } }] });
+  const one = await gradeFiles({ api, lessons: LESSON_OBJECTS, graders: { value: () => assert.fail('an empty answer is not checked') },
+    files: [file('ex.json', text), file('ada.json', JSON.stringify(sub))] });
+  assert.equal(one.rows[0].result, RESULTS.unanswered);
+  assert.equal(one.rows[0].score, 0);
+  const answered = await makeSubmission({ student: 'Ada', app: '0.1.0', entries: [{ id: exercise.id, hash, progress: { status: 'started', checks: 1, answer: '1' } }] });
+  const two = await gradeFiles({ api, lessons: LESSON_OBJECTS, graders: { [exercise.check.kind]: () => { throw new Error('the answer has no cells'); } },
+    files: [file('ex.json', text), file('ada.json', JSON.stringify(answered))] });
+  assert.equal(two.rows[0].result, RESULTS.ungradable);
+  assert.match(two.rows[0].reason, /the answer could not be checked: the answer has no cells/);
+  assert.equal(two.rows[0].score, '');
+  // A kind this grader has no check for.
+  const three = await gradeFiles({ api, lessons: LESSON_OBJECTS, graders: {}, files: [file('ex.json', text), file('ada.json', JSON.stringify(answered))] });
+  assert.equal(three.rows[0].result, RESULTS.ungradable);
+  assert.match(three.rows[0].reason, /has no check for the kind/);
+});
+
+test('the totals: one row per submission file, right of the exercises graded, as a percent', () => {
+  const rows = [
+    { file: 'a.json', student: 'Ada', score: 1 }, { file: 'a.json', student: 'Ada', score: 0 }, { file: 'a.json', student: 'Ada', score: 1 },
+    { file: 'b.json', student: '=1+1', score: '' },
+  ];
+  const table = parseCsv(gradebookTotalsCsv(rows, 3));
+  assert.deepEqual(table, [
+    ['submission file', 'student (as typed, unverified)', 'right', 'of', 'percent'],
+    ['a.json', 'Ada', '2', '3', '66.7'],
+    ['b.json', "'=1+1", '0', '3', '0'],
+  ]);
 });

@@ -228,11 +228,19 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
     entry('comparison-hermite-mg', String(mg), { hash: sha('an older version') })] }));
   fs.writeFileSync(path.join(uploads, 'zed', 'b-cut.json'), submissionText({ student: 'Zed', exercises: [] }).slice(0, 60));
   fs.writeFileSync(path.join(uploads, 'zed', 'c-huge.json'), ' '.repeat(5 * 1024 * 1024));
+  // Mallory uploads exercise files: one with the id of the lecturer's M G exercise whose answer
+  // is now 3, one of a new id. Neither replaces nor adds an exercise: each is a row.
+  fs.mkdirSync(path.join(uploads, 'mallory'), { recursive: true });
+  const forged = JSON.parse(galleryFile('comparison-hermite-mg'));
+  forged.question = `${forged.question} (forged)`;
+  forged.state.points[0][0] += (3 - mg) / 2; // the first entry of M G is then 3
+  fs.writeFileSync(path.join(uploads, 'mallory', 'comparison-hermite-mg.json'), JSON.stringify(forged));
+  fs.writeFileSync(path.join(uploads, 'mallory', 'bonus.json'), JSON.stringify({ ...forged, id: 'bonus-exercise' }));
 
   const out = path.join(work, 'grades');
   const r = spawnSync('npx', ['--offline', 'wingspline', 'grade', 'homework-3', 'uploads', '--out', out], { cwd: work, encoding: 'utf8' });
   assert.equal(r.status, 0, r.stderr);
-  assert.match(r.stdout, /Graded 6 submission files against 4 exercises: 4 of 18 answers right/);
+  assert.match(r.stdout, /Graded 8 submission files against 4 exercises: 4 of 20 answers right/);
   const rows = csvObjects(fs.readFileSync(path.join(out, 'gradebook.csv'), 'utf8'));
   const at = (file, exercise) => rows.find((x) => x['submission file'].endsWith(file) && x.exercise === exercise);
   const ada = at('ada.json', 'comparison-hermite-mg');
@@ -264,6 +272,19 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
   assert.equal(at('a-other-version.json', 'comparison-hermite-mg').result, 'answered a different version');
   assert.equal(rows.filter((x) => x['submission file'].endsWith('b-cut.json'))[0].result, 'damaged file');
   assert.match(rows.filter((x) => x['submission file'].endsWith('c-huge.json'))[0].reason, /5\.0 MB; a submission is at most 4\.0 MB/);
+  for (const name of ['mallory/comparison-hermite-mg.json', 'mallory/bonus.json']) {
+    const mine = rows.filter((x) => x['submission file'].endsWith(name));
+    assert.equal(mine.length, 1, `${name}: one row`);
+    assert.equal(mine[0].result, 'an exercise file among the submissions');
+  }
+  assert.ok(!rows.some((x) => x.exercise === 'bonus-exercise'), 'an uploaded exercise adds no exercise');
+  // The totals, one row per submission file, for the course's gradebook.
+  const totals = csvObjects(fs.readFileSync(path.join(out, 'gradebook-totals.csv'), 'utf8'));
+  const adaTotal = totals.find((x) => x['submission file'].endsWith('ada.json'));
+  assert.deepEqual([adaTotal.right, adaTotal.of, adaTotal.percent], ['4', '4', '100']);
+  const bobTotal = totals.find((x) => x['submission file'].endsWith('bob.json'));
+  assert.deepEqual([bobTotal.right, bobTotal.of, bobTotal.percent], ['0', '4', '0']);
+  assert.equal(totals.length, 8);
   // No cell of the CSV starts with a character a spreadsheet would run.
   for (const row of rows) for (const [k, v] of Object.entries(row)) assert.ok(!/^[=+\-@]/.test(v), `${k}: ${v}`);
   const md = fs.readFileSync(path.join(out, 'gradebook.md'), 'utf8');

@@ -20,10 +20,12 @@ export const COLUMNS = Object.freeze([
   ['title', 'title'],
   ['result', 'result'],
   ['score', 'score'],
-  ['checks', 'checks'],
-  ['hints', 'hints shown'],
-  ['worked', 'worked answer seen'],
-  ['feedback', 'feedback level'],
+  // What the student's browser recorded: the file says so, and a student who edits the file
+  // can change it (its digest is no secret), so the headings say where the figures come from.
+  ['checks', 'checks (as the file says)'],
+  ['hints', 'hints shown (as the file says)'],
+  ['worked', 'worked answer seen (as the file says)'],
+  ['feedback', 'feedback level (as the file says)'],
   ['note', 'note'],
   ['reason', 'reason'],
 ]);
@@ -39,6 +41,7 @@ export const RESULTS = Object.freeze({
   ungradable: 'could not be graded',
   damaged: 'damaged file',
   tooLarge: 'file too large',
+  exerciseAmongSubmissions: 'an exercise file among the submissions',
 });
 
 const MAX_REASON_CHARS = 2000;
@@ -53,8 +56,11 @@ const sizeWords = (bytes) => (bytes >= 1024 * 1024 ? `${(bytes / (1024 * 1024)).
  */
 
 /**
- * Sorts files by what they hold (an exercise or anything else, which is taken for a student's
- * submission: the uploads are the files that may be damaged), reading each once.
+ * Sorts files by what they hold, in the order given (`grade EXERCISES... SUBMISSIONS...`):
+ * the exercise files come first; anything else is taken for a student's submission (the
+ * uploads are the files that may be damaged). An exercise file after the first submission is
+ * in the uploads, where a student could have put it: it never adds or replaces an exercise,
+ * and has a row of its own. Each file is read once; one that cannot be read is a row too.
  * @param {GradeFile[]} files
  */
 async function sortFiles(files) {
@@ -65,14 +71,22 @@ async function sortFiles(files) {
       submissions.push({ name: file.name, size: file.size, text: null });
       continue;
     }
-    const text = String(await file.read());
+    let text;
+    try {
+      text = String(await file.read());
+    } catch (err) {
+      submissions.push({ name: file.name, size: file.size, text: null, unreadable: String(err?.message ?? err) });
+      continue;
+    }
     let format = null;
     try {
       format = JSON.parse(text)?.format ?? null;
     } catch {
       // not JSON: a damaged submission row says so
     }
-    (format === 'wingspline-exercise' ? exercises : submissions).push({ name: file.name, size: file.size, text });
+    if (format !== 'wingspline-exercise') submissions.push({ name: file.name, size: file.size, text });
+    else if (submissions.length) submissions.push({ name: file.name, size: file.size, text, exercise: true });
+    else exercises.push({ name: file.name, size: file.size, text });
   }
   return { exercises, submissions };
 }
@@ -110,6 +124,10 @@ export async function gradeFiles({ api, files, lessons, graders }) {
 
 async function gradeSubmission({ api, file, exercises, lessons, graders }) {
   const fileRow = (result, reason) => row({ file: file.name, result, reason });
+  if (file.unreadable !== undefined) return [fileRow(RESULTS.damaged, `the file cannot be read from the disk: ${file.unreadable}`)];
+  if (file.exercise) {
+    return [fileRow(RESULTS.exerciseAmongSubmissions, 'an exercise file given after the first submission (in the uploads): it is neither graded nor used as an exercise; give the exercise files first')];
+  }
   if (file.text === null) {
     return [fileRow(RESULTS.tooLarge, `the file is ${sizeWords(file.size)}; a submission is at most ${sizeWords(MAX_SUBMISSION_BYTES)}, so it was not read`)];
   }
@@ -219,6 +237,23 @@ export function csvCell(value) {
 export function gradebookCsv(rows) {
   const lines = [COLUMNS.map(([, heading]) => csvCell(heading)).join(',')];
   for (const r of rows) lines.push(COLUMNS.map(([key]) => csvCell(r[key])).join(','));
+  return `${lines.join('\r\n')}\r\n`;
+}
+
+// One row per submission file: the figure to carry into a course's gradebook (docs/exercises.md
+// says how with Moodle and Canvas). `of` is the number of exercises graded against.
+export const TOTAL_COLUMNS = Object.freeze([
+  ['file', 'submission file'], ['student', 'student (as typed, unverified)'], ['right', 'right'], ['of', 'of'], ['percent', 'percent'],
+]);
+/** @param {any[]} rows @param {number} exerciseCount */
+export function gradebookTotalsCsv(rows, exerciseCount) {
+  const lines = [TOTAL_COLUMNS.map(([, heading]) => csvCell(heading)).join(',')];
+  for (const f of [...new Set(rows.map((r) => r.file))]) {
+    const mine = rows.filter((r) => r.file === f);
+    const right = mine.filter((r) => r.score === 1).length;
+    const total = { file: f, student: mine[0].student, right, of: exerciseCount, percent: exerciseCount ? Math.round((1000 * right) / exerciseCount) / 10 : 0 };
+    lines.push(TOTAL_COLUMNS.map(([key]) => csvCell(total[key])).join(','));
+  }
   return `${lines.join('\r\n')}\r\n`;
 }
 
