@@ -48,8 +48,7 @@ async function edit(page, kind, number, op, corners = null) {
 const stepOf = (page) => page.$eval('#edit-step', (el) => el.textContent.split(' of ').map(Number));
 
 // Where the three things a student must see are, and whether each is the topmost element at
-// its centre; the cell only while the player is inside the edit (after its last assignment
-// the tables are the final ones, nothing marked).
+// its centre; the cell is the one the assignment line names, at every step up to the last.
 function boxes(page) {
   return page.evaluate(() => {
     const seen = (el) => {
@@ -63,12 +62,33 @@ function boxes(page) {
         box: [Math.round(r.left), Math.round(r.top), Math.round(r.right), Math.round(r.bottom)],
       };
     };
-    const cell = document.querySelector('#tab-panel-winged td.is-read, .mesh-tabpanel:not([hidden]) td.is-read');
+    // The cell the line names ("Assignment 3: edge table, e9 · E:L: e3 → e10"): its table,
+    // the row whose header reads e9, the column whose header reads E:L. It must be the cell
+    // marked as read.
+    const line = document.getElementById('edit-current')?.textContent ?? '';
+    const named = /(vertex|edge|face) table, (\S+) · (\S+?): /.exec(line);
+    let cell = null;
+    let marked = false;
+    if (named) {
+      const table = document.getElementById(`we-${named[1]}-table`);
+      // A column's name as the line writes it: the edge table's two head rows give "S:L"
+      // (group S over its column L), "S" (a column under no group); a one-row head its text.
+      const headRows = [...(table?.tHead?.rows ?? [])];
+      const groups = [];
+      if (headRows.length > 1) for (const th of headRows[0].cells) for (let k = 0; k < th.colSpan; k += 1) groups.push(th.textContent.trim());
+      const names = [...(headRows.at(-1)?.cells ?? [])].map((th, k) => (groups[k] ? `${groups[k]}:` : '') + th.textContent.trim());
+      const row = [...(table?.tBodies[0]?.rows ?? [])].find((tr) => tr.cells[0]?.textContent.trim().split(' ')[0] === named[2]);
+      const column = names.indexOf(named[3].trim());
+      cell = row && column >= 0 ? row.cells[column] ?? null : null;
+      marked = Boolean(cell?.classList.contains('is-read'));
+    }
     return {
       drawing: seen(document.getElementById('stage')),
       line: seen(document.getElementById('edit-current')),
       cell: seen(cell),
-      lineText: document.getElementById('edit-current')?.textContent ?? '',
+      named: named ? named.slice(1) : null,
+      marked,
+      lineText: line,
       scrolled: window.scrollY,
     };
   });
@@ -81,9 +101,10 @@ async function checkStep(page, where) {
   assert.ok(b.drawing.inside && b.drawing.uncovered, `${where} step ${k}: the drawing in view ${JSON.stringify(b.drawing)}`);
   assert.ok(b.line.inside && b.line.uncovered, `${where} step ${k}: the assignment line in view ${JSON.stringify(b.line)}`);
   if (k >= 1) assert.match(b.lineText, /table, /, `${where} step ${k}: the line names the table written`);
-  if (k >= 1 && k < n) {
-    assert.ok(b.cell, `${where} step ${k}: a rewritten cell is marked`);
-    assert.ok(b.cell.inside && b.cell.uncovered, `${where} step ${k}: the rewritten cell in view ${JSON.stringify(b.cell)}`);
+  if (k >= 1) {
+    assert.ok(b.cell, `${where} step ${k} of ${n}: the cell the line names (${JSON.stringify(b.named)}) is drawn`);
+    assert.ok(b.marked, `${where} step ${k} of ${n}: the cell the line names (${JSON.stringify(b.named)}) is the one marked`);
+    assert.ok(b.cell.inside && b.cell.uncovered, `${where} step ${k} of ${n}: the rewritten cell in view ${JSON.stringify(b.cell)}`);
   }
 }
 

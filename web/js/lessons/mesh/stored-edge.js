@@ -57,15 +57,18 @@ export function createStoredEdgeControl(ctx) {
       root.hidden = false;
       const stored = frames[0].current; // the walk starts at the stored edge
       const what = kind === 'vertex' ? vLabel(element) : fLabel(element);
-      if (!shown || shown.kind !== kind || shown.element !== element || shown.stored !== stored || shown.key !== model.topology) {
-        const edges = [...frames[0].order].sort((a, b) => a - b);
+      // Redrawn when what it offers changed, not on every edit elsewhere in the mesh.
+      const edges = [...frames[0].order].sort((a, b) => a - b);
+      const key = edges.join(',');
+      if (!shown || shown.kind !== kind || shown.element !== element || shown.stored !== stored || shown.key !== key) {
         label.textContent = `Edge stored for ${what}:`;
         select.replaceChildren(...edges.map((e) => h('option', { value: String(e) }, eLabel(e))));
         select.value = String(stored);
-        shown = { kind, element, stored, key: model.topology };
+        shown = { kind, element, stored, key };
       }
       const last = describeOperation(model.lastOperation);
-      note.textContent = `The ${kind} table stores one of ${what}'s ${edgesWord(kind)}; the walk starts there. Choose another to change the table row (undo restores it).${last ? ` Last change: ${last}.` : ''}`;
+      const text = `The ${kind} table stores one of ${what}'s ${edgesWord(kind)}; the walk starts there. Choose another to change the table row (undo restores it).${last ? ` Last change: ${last}.` : ''}`;
+      if (note.textContent !== text) note.textContent = text;
     },
   };
 }

@@ -184,6 +184,8 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   const counts = { vertex: () => model.V, edge: () => model.E, face: () => model.F };
   const drawnVersion = {};
   const revealed = {}; // table name -> the walk position whose row it last scrolled into view
+  const revealedEdit = {}; // table name -> the edit player's position when it last revealed
+  const revealedWhat = {}; // table name -> 'edit' or 'walk': which of the two it last revealed
 
   // The row the walk reads at this step, with its table's head, right under the walk's
   // narration (panels.js): on a phone the tables are far below the walk's buttons, so the
@@ -210,7 +212,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   }
 
   // Walk marks (current row, the column read) plus the hovered and picked element.
-  function markElements({ reveal = false } = {}) {
+  function markElements({ reveal = false, again = false } = {}) {
     if (!model) return;
     const frame = model.frame;
     const tab = ctx.state.tab;
@@ -232,28 +234,36 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
           if (frame.compared !== null) compared.push([frame.row, frame.compared]);
         }
       }
-      if (tab === 'winged') markEdit(name, kind, rows, read);
+      const editCell = tab === 'winged' ? markEdit(name, kind, rows, read, inEdit) : null;
       // A number a removed element left (until compact): its row stays, struck through.
       const gapList = model.gapLists?.[`${kind === 'vertex' ? 'vertices' : kind === 'edge' ? 'edges' : 'faces'}`];
       if (gapList?.length) rows['is-gap'] = Array.from(gapList);
       tables[name].mark({ rows, read, compared });
       // A table with nothing of the walk's or the player's marked forgets what it revealed, so
       // a step back to a row it showed before reveals that row again.
-      if (!rows['is-highlighted'].length) delete revealed[name];
+      if (!rows['is-highlighted'].length && !editCell) { delete revealed[name]; delete revealedEdit[name]; }
       if (reveal && selection.pick?.kind === kind) tables[name].reveal(selection.pick.index);
-      else if ((frame || inEdit) && tab === 'winged' && rows['is-highlighted'].length) {
+      else if ((frame || editCell) && tab === 'winged' && (rows['is-highlighted'].length || editCell)) {
         // The walk's (or the edit player's) row is scrolled into view when it moves, not on
         // every mark (a hover, a re-render): a person who scrolled the table keeps the place.
+        // The edit's cell while the edit plays, and once more when the player reaches its last
+        // assignment (the line reads "Last assignment: ..."); the walk's row when the walk moves.
         const key = `${model.topology}:${model.version}:${model.walkKind}:${model.walkElement}:${model.stepIndex}:${model.editStep}:${tab}`;
+        const editKey = `${model.version}:${model.editStep}`;
         if (revealed[name] !== key) {
+          const editMoved = revealedEdit[name] !== editKey;
           revealed[name] = key;
-          const row = tables[name].reveal(inEdit ? rows['is-highlighted'][0] : frame.row);
+          revealedEdit[name] = editKey;
+          // Revealing again after the column changed size shows what was shown before it.
+          const toEdit = Boolean(editCell && (inEdit || editMoved || !frame || (again && revealedWhat[name] === 'edit')));
+          revealedWhat[name] = toEdit ? 'edit' : 'walk';
+          const row = tables[name].reveal(toEdit ? editCell[0] : frame.row);
           // The walk's row (or the edit player's) is also brought into the side column's view
           // (never the page's), so it is on screen at every step (on a projector too); the edit
           // player's buttons sit above the column (panels.js) and do not move with it. The
           // edit's cell itself, not only its row, so a wide table shows its column too.
           const table = row?.closest('table') ?? null;
-          const cell = inEdit ? row?.querySelector('.is-read') ?? row : row;
+          const cell = toEdit ? row?.children[editCell[1]] ?? row : row;
           revealInBoxes(cell, { context: table, inset: table?.tHead?.offsetHeight ?? 0 });
         }
       }
@@ -262,20 +272,25 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
 
   // The edit player (edit-panel.js): the cell the current assignment wrote, the rows the
   // last edit changed, and the rows it adds that are not written yet.
-  function markEdit(name, kind, rows, read) {
+  // The edit player's marks in winged-edge table `name`: the rows written so far and those
+  // still to be written, and the current assignment's cell (its row highlighted while the edit
+  // plays; at the last step only the cell, beside the walk's row). Returns that cell
+  // [row, column] when it is in this table.
+  function markEdit(name, kind, rows, read, inEdit) {
     const record = model.lastOperation;
     const steps = visibleSteps(record);
-    if (!steps.length) return;
+    if (!steps.length) return null;
     const table = { wingedVertex: 'vertex', wingedEdge: 'edge', wingedFace: 'face' }[name];
     rows['is-edited'] = [];
     rows['is-pending'] = rowsNotYetWritten(record, model.editStep)[kind] ?? [];
     for (let i = 0; i < model.editStep; i += 1) if (steps[i].table === table) rows['is-edited'].push(steps[i].row);
     const current = steps[model.editStep - 1];
-    if (current && current.table === table && model.editStep < steps.length) {
-      rows['is-highlighted'].push(current.row);
-      read.push([current.row, table === 'edge' ? 1 + EDGE_FIELDS.indexOf(current.field)
-        : current.coordinate ? 1 + COORDINATES.indexOf(current.field) : table === 'vertex' ? VERTEX_EDGE_COLUMN : FACE_EDGE_COLUMN]);
-    }
+    if (!current || current.table !== table) return null;
+    const cell = [current.row, table === 'edge' ? 1 + EDGE_FIELDS.indexOf(current.field)
+      : current.coordinate ? 1 + COORDINATES.indexOf(current.field) : table === 'vertex' ? VERTEX_EDGE_COLUMN : FACE_EDGE_COLUMN];
+    if (inEdit) rows['is-highlighted'].push(current.row);
+    read.push(cell);
+    return cell;
   }
 
   function describeChange(change) {
@@ -355,7 +370,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
     // a longer narration): the walk's row is brought into view again.
     revealAgain() {
       for (const name of Object.keys(revealed)) delete revealed[name];
-      markElements();
+      markElements({ again: true });
     },
     update(next, state) {
       model = next;
