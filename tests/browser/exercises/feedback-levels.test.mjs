@@ -78,6 +78,14 @@ const KINDS = {
     wrong: (page) => page.locator('#exercise-value').fill('0.4'),
     keyboardTarget: (page) => page.locator('#exercise-value'),
   },
+  // The value kind on the issue's own example: lecture 003's Hermite M_H G, first row, first
+  // column, for the gallery's points: 2 P0x - 2 P1x + R0x + R1x = 1.4 (the package test works it
+  // from the file); 3 typed. Its feedback once said "3 is 1.6 from ... = 1.4".
+  'value (Hermite M G)': {
+    id: 'comparison-hermite-mg', scope: 'feedback', right: ['1.4', '1.6'],
+    wrong: (page) => page.locator('#exercise-value').fill('3'),
+    keyboardTarget: (page) => page.locator('#exercise-value'),
+  },
   edit: {
     // The rows flip e3 rewrites, worked by hand (FLIP_E3), with e3's S:L typed e2 (it is e5).
     id: 'mesh-edit-flip-e3', scope: 'feedback', right: ['e5'],
@@ -102,6 +110,18 @@ const KINDS = {
       await page.locator('#exercise-count-faces').fill('24');
     },
     keyboardTarget: (page) => page.locator('#exercise-count-edges'),
+  },
+  // The subdivide kind's mask question: Loop's edge point of the interior edge e2 is 3/8, 3/8 of
+  // its ends and 1/8, 1/8 of the opposite corners (lecture 000's masks); the boundary mask with
+  // one row v2 1/2 is given.
+  'subdivide (mask)': {
+    id: 'subdivision-loop-edge-point-e2', scope: 'feedback', right: ['3/8', '1/8', '0.375', '0.125'],
+    wrong: async (page) => {
+      await page.locator('label[for="exercise-mask-edge-boundary"]').click();
+      await page.locator('#exercise-weights tbody input').nth(0).fill('v2');
+      await page.locator('#exercise-weights tbody input').nth(1).fill('1/2');
+    },
+    keyboardTarget: (page) => page.locator('#exercise-weights tbody input').nth(1),
   },
   property: {
     id: 'curves-through-a-point', scope: 'feedback', right: [],
