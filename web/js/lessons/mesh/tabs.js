@@ -217,6 +217,9 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
     const frame = model.frame;
     const tab = ctx.state.tab;
     showWalkRow(frame, model.lastOperation && model.editStep < visibleSteps(model.lastOperation).length);
+    // Every table's marks are written first and the rows scrolled into view after, so the
+    // layout is read once for all tables, not once per table between their marks.
+    const reveals = [];
     for (const name of tabTables[tab] ?? []) {
       const kind = tableKind[name];
       const rows = { 'is-hovered': [], 'is-picked': [], 'is-highlighted': [] };
@@ -242,7 +245,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       // A table with nothing of the walk's or the player's marked forgets what it revealed, so
       // a step back to a row it showed before reveals that row again.
       if (!rows['is-highlighted'].length && !editCell) { delete revealed[name]; delete revealedEdit[name]; }
-      if (reveal && selection.pick?.kind === kind) tables[name].reveal(selection.pick.index);
+      if (reveal && selection.pick?.kind === kind) reveals.push(() => tables[name].reveal(selection.pick.index));
       else if ((frame || editCell) && tab === 'winged' && (rows['is-highlighted'].length || editCell)) {
         // The walk's (or the edit player's) row is scrolled into view when it moves, not on
         // every mark (a hover, a re-render): a person who scrolled the table keeps the place.
@@ -257,22 +260,24 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
           // Revealing again after the column changed size shows what was shown before it.
           const toEdit = Boolean(editCell && (inEdit || editMoved || !frame || (again && revealedWhat[name] === 'edit')));
           revealedWhat[name] = toEdit ? 'edit' : 'walk';
-          const row = tables[name].reveal(toEdit ? editCell[0] : frame.row);
-          // The walk's row (or the edit player's) is also brought into the side column's view
-          // (never the page's), so it is on screen at every step (on a projector too); the edit
-          // player's buttons sit above the column (panels.js) and do not move with it. The
-          // edit's cell itself, not only its row, so a wide table shows its column too.
-          const table = row?.closest('table') ?? null;
-          const cell = toEdit ? row?.children[editCell[1]] ?? row : row;
-          revealInBoxes(cell, { context: table, inset: table?.tHead?.offsetHeight ?? 0 });
+          const target = toEdit ? editCell : [frame.row, null];
+          reveals.push(() => {
+            const row = tables[name].reveal(target[0]);
+            // The walk's row (or the edit player's) is also brought into the side column's view
+            // (never the page's), so it is on screen at every step (on a projector too); the edit
+            // player's buttons sit above the column (panels.js) and do not move with it. The
+            // edit's cell itself, not only its row, so a wide table shows its column too.
+            const table = row?.closest('table') ?? null;
+            const cell = target[1] !== null ? row?.children[target[1]] ?? row : row;
+            revealInBoxes(cell, { context: table, inset: table?.tHead?.offsetHeight ?? 0 });
+          });
         }
       }
     }
+    for (const run of reveals) run();
   }
 
-  // The edit player (edit-panel.js): the cell the current assignment wrote, the rows the
-  // last edit changed, and the rows it adds that are not written yet.
-  // The edit player's marks in winged-edge table `name`: the rows written so far and those
+  // The edit player's marks (edit-panel.js) in winged-edge table `name`: the rows written so far and those
   // still to be written, and the current assignment's cell (its row highlighted while the edit
   // plays; at the last step only the cell, beside the walk's row). Returns that cell
   // [row, column] when it is in this table.
