@@ -36,7 +36,7 @@ export type WingsplineErrorCode =
   | 'face-first-corner-not-on-face'
   // structure invariants (mesh.validate())
   | 'invalid-reference' | 'edge-without-face' | 'wing-mismatch' | 'face-edge-not-incident'
-  | 'vertex-edge-not-incident' | 'open-vertex-ring' | 'open-face-loop'
+  | 'vertex-edge-not-incident' | 'open-vertex-ring' | 'open-face-loop' | 'half-edge-broken'
   // queries, tables, representations
   | 'unknown-query' | 'invalid-element' | 'deleted-element' | 'mismatched-face-set' | 'representations-not-built'
   | 'unknown-representation' | 'unknown-table' | 'unknown-column' | 'unknown-mesh' | 'unknown-task'
