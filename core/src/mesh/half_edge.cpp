@@ -2,6 +2,7 @@
 // rules in half_edge.h, so that a build and an update write the same values.
 #include "wingspline/mesh/half_edge.h"
 
+#include <initializer_list>
 #include <string>
 
 namespace wingspline::mesh {
@@ -18,8 +19,6 @@ int32_t arriving(const WingedEdgeMesh& w, int32_t x, int32_t v) {
     if (x == kNone) return kNone;
     return w.edge(x).end == v ? 2 * x : 2 * x + 1;
 }
-
-std::string half_edge_label(int32_t h) { return "h" + std::to_string(h + 1); }
 
 } // namespace
 
@@ -113,13 +112,11 @@ void HalfEdgeMesh::update(const WingedEdgeMesh& w, const ChangeRecord& c) {
         face(r.right);
     };
     for (const RowChange& row : c.rows) {
+        // A vertex or face that lost an edge is reached without the edge's old values: the
+        // edges next to it in its fan or loop changed their wings (named, and it is at their
+        // end or on their side), or it was removed (named).
         if (row.table == MeshTable::Edge) {
             edge(row.row);
-            // The ends and sides the edge had before: their fans and loops lost it.
-            for (const FieldChange& f : row.fields) {
-                if (f.field == "start" || f.field == "end") vertex(f.before);
-                if (f.field == "left" || f.field == "right") face(f.before);
-            }
         } else if (row.table == MeshTable::Vertex) {
             vertex(row.row);
         } else {
@@ -160,68 +157,90 @@ std::vector<HalfEdgeStep> HalfEdgeMesh::face_walk(int32_t f) const {
     return steps;
 }
 
+namespace {
+
+// A problem's message from a pattern whose %h, %v, %e, %f, %n take the next number as a
+// half-edge, vertex, edge, face (or "the boundary" for none) label or a plain count; one
+// call per message keeps the module small (docs/architecture.md, "Module size").
+std::string say(const char* pattern, std::initializer_list<int32_t> numbers) {
+    std::string out;
+    const int32_t* x = numbers.begin();
+    for (const char* c = pattern; *c; ++c) {
+        if (*c != '%' || c[1] == '\0') {
+            out += *c;
+            continue;
+        }
+        const char kind = *++c;
+        const int32_t i = *x++;
+        if (kind == 'f' && i == kNone) {
+            out += "the boundary";
+            continue;
+        }
+        if (i == kNone && kind != 'n') {
+            out += "none";
+            continue;
+        }
+        if (kind != 'n') out += kind == 'h' ? 'h' : kind == 'v' ? 'v' : kind == 'e' ? 'e' : 'F';
+        out += std::to_string(kind == 'n' ? int64_t{i} : int64_t{i} + 1);
+    }
+    return out;
+}
+
+} // namespace
+
 ValidationReport HalfEdgeMesh::validate(const WingedEdgeMesh& w) const {
     ValidationReport report;
     // At most this many problems: past the first few a student learns nothing more.
     constexpr std::size_t kMaxProblems = 20;
-    const auto problem = [&](std::string message, std::vector<int32_t> vertices, std::vector<int32_t> edges,
-                             std::vector<int32_t> faces) {
-        if (report.problems.size() < kMaxProblems)
-            report.problems.push_back({"half-edge-broken", Severity::Error, std::move(message), std::move(vertices),
-                                       std::move(edges), std::move(faces)});
+    // The element a problem is about: a vertex, the edge of a half-edge, or a face.
+    const auto problem = [&](std::string message, MeshTable table, int32_t element) {
+        if (report.problems.size() >= kMaxProblems) return;
+        Problem p{"half-edge-broken", Severity::Error, std::move(message), {}, {}, {}};
+        if (element != kNone) (table == MeshTable::Vertex ? p.vertices : table == MeshTable::Edge ? p.edges : p.faces).push_back(element);
+        report.problems.push_back(std::move(p));
     };
     const int32_t H = halfedge_count(), V = vertex_count(), F = face_count();
     if (H != 2 * w.edge_count() || V != w.vertex_count() || F != w.face_count()) {
-        problem("the half-edge tables hold " + std::to_string(H) + " half-edges, " + std::to_string(V) + " vertices and " +
-                    std::to_string(F) + " faces; the mesh has " + std::to_string(2 * w.edge_count()) + ", " +
-                    std::to_string(w.vertex_count()) + " and " + std::to_string(w.face_count()),
-                {}, {}, {});
+        problem(say("the half-edge tables hold %n half-edges, %n vertices and %n faces; the mesh has %n, %n and %n",
+                    {H, V, F, 2 * w.edge_count(), w.vertex_count(), w.face_count()}),
+                MeshTable::Edge, kNone);
         return report;
     }
     const auto in = [](int32_t x, int32_t n) { return x >= 0 && x < n; };
     for (int32_t h = 0; h < H; ++h) {
-        const std::string name = half_edge_label(h);
         const int32_t e = edge_of_half_edge(h);
         if (w.is_deleted(Edge(e))) {
             if (origin_[h] != kNone || face_[h] != kNone || next_[h] != kNone || prev_[h] != kNone)
-                problem(name + " belongs to " + edge_label(e) + ", which an edit removed, but its row is not empty", {}, {e}, {});
+                problem(say("%h belongs to %e, which an edit removed, but its row is not empty", {h, e}), MeshTable::Edge, e);
             continue;
         }
+        // twin(twin(h)) = h and twin(h) != h hold by the numbering; the pair must join two vertices.
         if (twin(twin(h)) != h || twin(h) == h || !in(origin_[h], V) || origin_[h] == origin_[twin(h)]) {
-            problem(name + " and its twin " + half_edge_label(twin(h)) + " do not run between two different vertices", {},
-                    {e}, {});
+            problem(say("%h and its twin %h do not run between two different vertices", {h, twin(h)}), MeshTable::Edge, e);
             continue;
         }
         const int32_t n = next_[h], p = prev_[h];
         if (!in(n, H) || !in(p, H)) {
-            problem(name + " has no next or no prev half-edge", {origin_[h]}, {e}, {});
+            problem(say("%h has no next or no prev half-edge", {h}), MeshTable::Edge, e);
             continue;
         }
         if (prev_[n] != h || next_[p] != h)
-            problem("next and prev are not inverse at " + name + ": next is " + half_edge_label(n) + ", whose prev is " +
-                        half_edge_label(prev_[n]) + "; prev is " + half_edge_label(p) + ", whose next is " +
-                        half_edge_label(next_[p]),
-                    {}, {e}, {});
+            problem(say("next and prev are not inverse at %h: next is %h, whose prev is %h; prev is %h, whose next is %h",
+                        {h, n, prev_[n], p, next_[p]}),
+                    MeshTable::Edge, e);
         if (origin_[n] != target(h))
-            problem(name + " ends at " + vertex_label(target(h)) + " but its next, " + half_edge_label(n) + ", starts at " +
-                        vertex_label(origin_[n]),
-                    {target(h)}, {e, edge_of_half_edge(n)}, {});
+            problem(say("%h ends at %v but its next, %h, starts at %v", {h, target(h), n, origin_[n]}), MeshTable::Edge, e);
         if (face_[n] != face_[h])
-            problem(name + " and its next, " + half_edge_label(n) + ", lie on different faces (" +
-                        (face_[h] == kNone ? std::string("the boundary") : face_label(face_[h])) + " and " +
-                        (face_[n] == kNone ? std::string("the boundary") : face_label(face_[n])) + ")",
-                    {}, {e, edge_of_half_edge(n)}, {});
+            problem(say("%h and its next, %h, lie on different faces (%f and %f)", {h, n, face_[h], face_[n]}), MeshTable::Edge, e);
     }
     for (int32_t v = 0; v < V; ++v) {
         const int32_t h = vertex_halfedge_[v];
         if (w.is_deleted(Vertex(v)) || w.vertex_edge(v) == kNone) {
-            if (h != kNone) problem(vertex_label(v) + " has no edges, but its half-edge is " + half_edge_label(h), {v}, {}, {});
+            if (h != kNone) problem(say("%v has no edges, but its half-edge is %h", {v, h}), MeshTable::Vertex, v);
             continue;
         }
         if (!in(h, H) || origin_[h] != v) {
-            problem(vertex_label(v) + "'s half-edge " + (in(h, H) ? half_edge_label(h) : std::string("(none)")) +
-                        " does not start at it",
-                    {v}, {}, {});
+            problem(say("%v's half-edge %h does not start at it", {v, in(h, H) ? h : kNone}), MeshTable::Vertex, v);
             continue;
         }
         bool on_boundary = false;
@@ -230,47 +249,50 @@ ValidationReport HalfEdgeMesh::validate(const WingedEdgeMesh& w) const {
             on_boundary = on_boundary || r.left == kNone || r.right == kNone;
         }
         if (on_boundary && face_[h] != kNone)
-            problem(vertex_label(v) + " is on the boundary, but its half-edge " + half_edge_label(h) +
-                        " is not a boundary half-edge (a walk from it would not meet the whole fan)",
-                    {v}, {}, {});
+            problem(say("%v is on the boundary, but its half-edge %h is not a boundary half-edge (a walk from it would not "
+                        "meet the whole fan)",
+                        {v, h}),
+                    MeshTable::Vertex, v);
     }
     for (int32_t f = 0; f < F; ++f) {
         const int32_t h = face_halfedge_[f];
         if (w.is_deleted(Face(f))) {
-            if (h != kNone) problem(face_label(f) + " was removed by an edit, but its half-edge is " + half_edge_label(h), {}, {}, {f});
+            if (h != kNone) problem(say("%f was removed by an edit, but its half-edge is %h", {f, h}), MeshTable::Face, f);
             continue;
         }
         if (!in(h, H) || face_[h] != f) {
-            problem(face_label(f) + "'s half-edge does not lie on it", {}, {}, {f});
+            problem(say("%f's half-edge does not lie on it", {f}), MeshTable::Face, f);
             continue;
         }
-        const std::size_t corners = w.face_corners(f).size();
-        std::size_t sides = 0;
+        const int32_t corners = static_cast<int32_t>(w.face_corners(f).size());
+        int32_t sides = 0;
         int32_t x = h;
         do {
             ++sides;
             x = next_[x];
-        } while (in(x, H) && x != h && sides <= static_cast<std::size_t>(H));
-        if (x != h || sides != corners)
-            problem(face_label(f) + " has " + std::to_string(corners) + " corners, but the next-loop from " +
-                        half_edge_label(h) + (x != h ? " does not close" : " has " + std::to_string(sides) + " sides"),
-                    {}, {}, {f});
+        } while (in(x, H) && x != h && sides <= H);
+        if (x != h)
+            problem(say("%f has %n corners, but the next-loop from %h does not close", {f, corners, h}), MeshTable::Face, f);
+        else if (sides != corners)
+            problem(say("%f has %n corners, but the next-loop from %h has %n sides", {f, corners, h, sides}), MeshTable::Face, f);
     }
     return report;
 }
 
 Storage HalfEdgeMesh::storage() const {
-    return {{{"half-edge origin", origin_.size(), sizeof(int32_t)},
-             {"half-edge face", face_.size(), sizeof(int32_t)},
-             {"half-edge next", next_.size(), sizeof(int32_t)},
-             {"half-edge prev", prev_.size(), sizeof(int32_t)},
-             {"vertex half-edge", vertex_halfedge_.size(), sizeof(int32_t)},
-             {"face half-edge", face_halfedge_.size(), sizeof(int32_t)}}};
+    // The names and the arrays in one order; each array's entries are its real size.
+    const char* names[] = {"half-edge origin", "half-edge face", "half-edge next", "half-edge prev", "vertex half-edge", "face half-edge"};
+    const std::vector<int32_t>* arrays[] = {&origin_, &face_, &next_, &prev_, &vertex_halfedge_, &face_halfedge_};
+    Storage s;
+    for (int i = 0; i < 6; ++i) s.arrays.push_back({names[i], arrays[i]->size(), sizeof(int32_t)});
+    return s;
 }
 
 Storage half_edge_storage(const HalfEdgeMesh& h, const WingedEdgeMesh& w) {
-    Storage s = h.storage();
-    s.arrays.insert(s.arrays.begin(), ArrayStorage{"vertex coordinates", w.positions().size(), sizeof(double)});
+    Storage own = h.storage();
+    Storage s;
+    s.arrays.push_back({"vertex coordinates", w.positions().size(), sizeof(double)});
+    for (ArrayStorage& a : own.arrays) s.arrays.push_back(std::move(a));
     return s;
 }
 

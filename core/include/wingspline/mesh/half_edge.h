@@ -45,6 +45,7 @@ struct HalfEdgeStep {
     int32_t read = kNone; // prev[halfedge] around a vertex, next[halfedge] along a face
     int32_t next = kNone; // twin(read) around a vertex, read along a face
 };
+static_assert(sizeof(HalfEdgeStep) == 3 * sizeof(int32_t), "a walk crosses the boundary as 3 int32 per step");
 
 class HalfEdgeMesh {
 public:
