@@ -21,7 +21,11 @@ function contentKey(c) {
   if (c === null || c === undefined || c === false) return '';
   if (Array.isArray(c)) return c.map(contentKey).join('\u0001');
   if (typeof c !== 'object') return `t${String(c)}`;
-  if (c.nodeType === 1) return `e${/** @type {Element} */ (c).outerHTML}`;
+  if (c.nodeType === 1) {
+    // An element by its tag, its attributes and its children (no serialising of markup).
+    const el = /** @type {Element} */ (c);
+    return `e${el.localName}(${Array.from(el.attributes, (a) => `${a.name}=${a.value}`).join(' ')})[${Array.from(el.childNodes, contentKey).join('\u0001')}]`;
+  }
   if (c.nodeType === 11) return Array.from(/** @type {DocumentFragment} */ (c).childNodes, contentKey).join('\u0001');
   return `t${c.textContent}`;
 }
