@@ -2,10 +2,10 @@
 // The package's command (`npx wingspline ...`). One command today:
 //   wingspline grade [--out DIR] FILES_OR_FOLDERS...
 // grades students' submission files against the lecturer's exercise files with the core
-// (web/js/exercise/grade.js), and writes gradebook.csv, gradebook.md and gradebook-totals.csv. The exercise files
-// come first: after the first submission, an exercise file is in the uploads, where a student
-// could have put it, so it is a row of the gradebook and never an exercise. A folder is
-// searched for .json files (an LMS's bulk download, unzipped).
+// (web/js/exercise/grade.js), and writes gradebook.csv, gradebook.md and gradebook-totals.csv.
+// The exercise files come first: after the first submission, an exercise file is in the
+// uploads, where a student could have put it, so it is a row of the gradebook and never an
+// exercise. A folder is searched for .json files (an LMS's bulk download, unzipped).
 // docs/exercises.md, "Handing in and grading", shows the whole flow.
 //
 // It runs from the package (node_modules/wingspline/scripts/wingspline.mjs) and from a built

@@ -233,11 +233,28 @@ export function csvCell(value) {
   return /[",\r\n]/.test(s) ? `"${s.replace(/"/g, '""')}"` : s;
 }
 
-/** The gradebook as CSV (RFC 4180, CRLF line ends, a header row). */
-export function gradebookCsv(rows) {
-  const lines = [COLUMNS.map(([, heading]) => csvCell(heading)).join(',')];
-  for (const r of rows) lines.push(COLUMNS.map(([key]) => csvCell(r[key])).join(','));
+// CSV (RFC 4180, CRLF line ends, a header row) of `rows` under `columns` ([key, heading]).
+function csvOf(columns, rows) {
+  const lines = [columns.map(([, heading]) => csvCell(heading)).join(',')];
+  for (const r of rows) lines.push(columns.map(([key]) => csvCell(r[key])).join(','));
   return `${lines.join('\r\n')}\r\n`;
+}
+
+/** The gradebook as CSV, one row per submission file and exercise. */
+export function gradebookCsv(rows) {
+  return csvOf(COLUMNS, rows);
+}
+
+// Per submission file, in the rows' order: {file, student, right, of, percent}, `of` being
+// the number of exercises graded against (the totals CSV and the Markdown summary).
+function totalsPerFile(rows, exerciseCount) {
+  const byFile = new Map();
+  for (const r of rows) {
+    if (!byFile.has(r.file)) byFile.set(r.file, { file: r.file, student: r.student, right: 0, of: exerciseCount, percent: 0 });
+    if (r.score === 1) byFile.get(r.file).right += 1;
+  }
+  for (const t of byFile.values()) t.percent = exerciseCount ? Math.round((1000 * t.right) / exerciseCount) / 10 : 0;
+  return [...byFile.values()];
 }
 
 // One row per submission file: the figure to carry into a course's gradebook (docs/exercises.md
@@ -247,14 +264,7 @@ export const TOTAL_COLUMNS = Object.freeze([
 ]);
 /** @param {any[]} rows @param {number} exerciseCount */
 export function gradebookTotalsCsv(rows, exerciseCount) {
-  const lines = [TOTAL_COLUMNS.map(([, heading]) => csvCell(heading)).join(',')];
-  for (const f of [...new Set(rows.map((r) => r.file))]) {
-    const mine = rows.filter((r) => r.file === f);
-    const right = mine.filter((r) => r.score === 1).length;
-    const total = { file: f, student: mine[0].student, right, of: exerciseCount, percent: exerciseCount ? Math.round((1000 * right) / exerciseCount) / 10 : 0 };
-    lines.push(TOTAL_COLUMNS.map(([key]) => csvCell(total[key])).join(','));
-  }
-  return `${lines.join('\r\n')}\r\n`;
+  return csvOf(TOTAL_COLUMNS, totalsPerFile(rows, exerciseCount));
 }
 
 // Markdown cells: one line, every character Markdown or HTML would read escaped.
@@ -269,19 +279,16 @@ export function markdownCell(value) {
  * @param {any[]} rows @param {{ exercises: any[], problems: string[], app: string }} about
  */
 export function gradebookMarkdown(rows, { exercises, problems, app }) {
-  const files = [...new Set(rows.map((r) => r.file))];
+  const totals = totalsPerFile(rows, exercises.length);
   const out = [
     '# Gradebook',
     '',
-    `Graded by Wingspline ${markdownCell(app)}: every answer checked again by the core. ${plural(exercises.length, 'exercise')}, ${plural(files.length, 'submission file')}. Names are as the students typed them; they are not verified.`,
+    `Graded by Wingspline ${markdownCell(app)}: every answer checked again by the core. ${plural(exercises.length, 'exercise')}, ${plural(totals.length, 'submission file')}. Names are as the students typed them; they are not verified.`,
     '',
   ];
   if (problems.length) out.push('## Exercise files left out', '', ...problems.map((p) => `- ${markdownCell(p)}`), '');
   out.push('## Per file', '', '| submission file | student | right | of |', '| --- | --- | --- | --- |');
-  for (const f of files) {
-    const mine = rows.filter((r) => r.file === f);
-    out.push(`| ${markdownCell(f)} | ${markdownCell(mine[0].student)} | ${mine.filter((r) => r.score === 1).length} | ${exercises.length} |`);
-  }
+  for (const t of totals) out.push(`| ${markdownCell(t.file)} | ${markdownCell(t.student)} | ${t.right} | ${t.of} |`);
   out.push('', '## Every answer', '', `| ${COLUMNS.map(([, h]) => markdownCell(h)).join(' | ')} |`, `| ${COLUMNS.map(() => '---').join(' | ')} |`);
   for (const r of rows) out.push(`| ${COLUMNS.map(([key]) => markdownCell(r[key])).join(' | ')} |`);
   return `${out.join('\n')}\n`;

@@ -277,10 +277,10 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
     for (const run of reveals) run();
   }
 
-  // The edit player's marks (edit-panel.js) in winged-edge table `name`: the rows written so far and those
-  // still to be written, and the current assignment's cell (its row highlighted while the edit
-  // plays; at the last step only the cell, beside the walk's row). Returns that cell
-  // [row, column] when it is in this table.
+  // The edit player's marks (edit-panel.js) in winged-edge table `name`: the rows written so
+  // far and those still to be written, and the current assignment's cell (its row highlighted
+  // while the edit plays; at the last step only the cell, beside the walk's row). Returns that
+  // cell [row, column] when it is in this table.
   function markEdit(name, kind, rows, read, inEdit) {
     const record = model.lastOperation;
     const steps = visibleSteps(record);
