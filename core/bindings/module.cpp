@@ -1,11 +1,10 @@
-// Module-level bindings: version and the cubic basis matrices. Mesh and curve bindings live
-// in their own translation units next to this one and follow boundary.h.
+// Module-level bindings, in every module: version, memory use and the error codes. Mesh
+// and curve bindings live in their own translation units next to this one and follow
+// boundary.h.
 #include "boundary.h"
-#include "rational.h"
 
 #include <malloc.h>
 
-#include "wingspline/curves/basis_matrix.h"
 #include "wingspline/error_codes.h"
 #include "wingspline/version.h"
 
@@ -13,31 +12,6 @@ namespace wingspline::bindings {
 namespace {
 
 val core_version() { return val(std::string(wingspline::version())); }
-
-// basis_matrix(kind) -> {ok, matrix: Float64Array(16) row-major, rational: the slide's
-// fraction and integers}
-// form: 'descending' (000, 003), 'ascending' (002) or 'transposed' (001).
-val basis_matrix(const std::string& kind, const std::string& form) {
-    return guarded([&] {
-        const auto m = curves::basis_matrix(curves::parse_basis_kind(kind), curves::parse_matrix_form(form));
-        val r = val::object();
-        r.set("matrix", to_typed_array(m.data(), m.size()));
-        r.set("rational", rational_value(std::vector<double>(m.begin(), m.end())));
-        return r;
-    });
-}
-
-// hermite_from_constraints() -> the inverse of the lecture's constraint matrix, computed.
-val hermite_from_constraints() {
-    return guarded([] {
-        const auto m = curves::inverse(curves::hermite_constraint_matrix());
-        const auto c = curves::hermite_constraint_matrix();
-        val r = val::object();
-        r.set("constraints", to_typed_array(c.data(), c.size()));
-        r.set("matrix", to_typed_array(m.data(), m.size()));
-        return r;
-    });
-}
 
 // {linearBytes: size of the wasm memory, heapInUse: bytes malloc has handed out}
 val memory_usage() {
@@ -71,8 +45,6 @@ val error_codes() {
 
 EMSCRIPTEN_BINDINGS(wingspline_module) {
     emscripten::function("version", &wingspline::bindings::core_version);
-    emscripten::function("basisMatrix", &wingspline::bindings::basis_matrix);
-    emscripten::function("hermiteFromConstraints", &wingspline::bindings::hermite_from_constraints);
     emscripten::function("memoryUsage", &wingspline::bindings::memory_usage);
     emscripten::function("errorCodes", &wingspline::bindings::error_codes);
 }
