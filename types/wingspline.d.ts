@@ -36,7 +36,7 @@ export type WingsplineErrorCode =
   | 'face-first-corner-not-on-face'
   // structure invariants (mesh.validate())
   | 'invalid-reference' | 'edge-without-face' | 'wing-mismatch' | 'face-edge-not-incident'
-  | 'vertex-edge-not-incident' | 'open-vertex-ring' | 'open-face-loop'
+  | 'vertex-edge-not-incident' | 'open-vertex-ring' | 'open-face-loop' | 'half-edge-broken'
   // queries, tables, representations
   | 'unknown-query' | 'invalid-element' | 'deleted-element' | 'mismatched-face-set' | 'representations-not-built'
   | 'unknown-representation' | 'unknown-table' | 'unknown-column' | 'unknown-mesh' | 'unknown-task'
@@ -346,6 +346,49 @@ export interface FaceEdgeStep {
   column: 'endLeft' | 'startRight';
   next: number;
 }
+/**
+ * The half-edge view (docs/api-mesh.md, "The half-edge view"): edge e gives half-edge 2e = S -> E
+ * (face: e's left) and 2e + 1 = E -> S (face: e's right); twin(h) = h ^ 1. -1 = none: a
+ * boundary half-edge's face, every field of a gap left by an edit.
+ */
+export interface HalfEdgeRow {
+  origin: number;
+  /** origin of the twin (not stored). */
+  target: number;
+  face: number;
+  next: number;
+  prev: number;
+  twin: number;
+}
+export interface HalfEdgeTables {
+  halfedges: HalfEdgeRow[];
+  /** One outgoing half-edge per vertex; on the boundary the boundary one (its face is -1). */
+  vertices: Array<{ halfedge: number }>;
+  faces: Array<{ halfedge: number }>;
+}
+/** The half-edge tables as flat arrays: rows offset .. offset + limit - 1 of each table. */
+export interface HalfEdgeArrays {
+  offset: number;
+  /** Full row counts. */
+  halfedges: number;
+  vertices: number;
+  faces: number;
+  /** origin[h - offset] is half-edge h's; one entry per half-edge of the window. */
+  origin: Int32Array;
+  face: Int32Array;
+  next: Int32Array;
+  prev: Int32Array;
+  vertexHalfedge: Int32Array;
+  faceHalfedge: Int32Array;
+}
+/** One step of a half-edge walk: the field read at `halfedge`, its value, and where the walk goes. */
+export interface HalfEdgeStep {
+  halfedge: number;
+  /** prev around a vertex (next = twin(read)), next along a face (next = read). */
+  column: 'prev' | 'next';
+  read: number;
+  next: number;
+}
 export interface MeshCounts {
   vertices: number;
   edges: number;
@@ -436,6 +479,17 @@ export interface Mesh {
   query(kind: QueryKind, element: number): Record<Representation, { answer: Int32Array; entriesRead: number }>;
   bytes(): number;
   validate(): ValidationReport;
+  /** The half-edge view as rows (-1 = none). */
+  halfEdge(): HalfEdgeTables;
+  /** The half-edge view as Int32Arrays, a window of rows of each table (default: all). */
+  halfEdgeArrays(options?: { offset?: number; limit?: number }): HalfEdgeArrays;
+  /** Around v counter-clockwise, h -> twin(prev(h)), from v's half-edge or `start` (a half-edge leaving v). */
+  halfEdgeTraversalSteps(v: number, options?: { start?: number }): HalfEdgeStep[];
+  /** Along face f, h -> next(h), from the face's half-edge. */
+  halfEdgeFaceSteps(f: number): HalfEdgeStep[];
+  /** A lecture query on the half-edge arrays, with the entries read. */
+  halfEdgeQuery(kind: QueryKind, element: number): { answer: Int32Array; entriesRead: number };
+  halfEdgeStorage(): StorageOfRepresentation;
 }
 
 export interface MeshBuildJob {

@@ -9,6 +9,7 @@
 #include "mesh_entry.h"
 
 #include "wingspline/mesh/edit_costs.h"
+#include "wingspline/mesh/half_edge.h"
 #include "wingspline/mesh/queries.h"
 #include "wingspline/mesh/operations.h"
 #include "wingspline/mesh/representations.h"
@@ -22,6 +23,14 @@ namespace wingspline::bindings {
 namespace {
 
 using namespace wingspline::mesh;
+
+// Keeps the half-edge view in step with `change` when it showed the state the change started
+// from (O(the change)); otherwise it stays stale and is made again when next asked for.
+void follow_half_edge(MeshEntry& me, const ChangeRecord& change) {
+    if (!me.half_edge || !change.changed() || me.half_edge_topology != change.before.topology) return;
+    me.half_edge->update(me.winged, change);
+    me.half_edge_topology = me.winged.version().topology;
+}
 
 val element_list(const std::vector<Vertex>& vs, const std::vector<Edge>& es, const std::vector<Face>& fs) {
     const auto ints = [](const auto& hs) {
@@ -178,6 +187,7 @@ val mesh_edit(int32_t handle, const std::string& name, const val& args, bool che
         }
         if (cost == 2 && w.check(op).ok) winged_reads = winged_edit_reads(op, w);
         ChangeRecord c = w.apply(op);
+        follow_half_edge(me, c);
         val r = change_value(c);
         if (before_reps) r.set("costs", costs_value(edit_costs(reads, c, *before_reps, w, me.representations.of(w))));
         if (winged_reads >= 0) {
@@ -202,6 +212,7 @@ val mesh_undo(int32_t handle) {
         if (me.undoable.empty()) throw Error("cannot-undo", "there is no edit to take back: the mesh is as it was built (or compacted)");
         const ChangeRecord u = me.winged.undo(*me.undoable.back());
         me.undoable.pop_back();
+        follow_half_edge(me, u);
         return change_value(u);
     });
 }

@@ -4,6 +4,7 @@
 // value builders every mesh binding uses.
 #include "boundary.h"
 
+#include "wingspline/mesh/half_edge.h"
 #include "wingspline/mesh/indexed_mesh.h"
 #include "wingspline/mesh/representations.h"
 #include "wingspline/mesh/view_geometry.h"
@@ -24,11 +25,17 @@ namespace wingspline::bindings {
 // it many times.
 // The records of its newest edits (meshEdit), newest last, are what meshUndo takes back
 // (WingedEdgeMesh::undo): at most kUndoRecords, the oldest dropped first.
+// The half-edge view (half_edge.h) is made on first use for the topology version it shows
+// (half_edge_topology); an edit or an undo made while it is current updates it from the
+// change record, O(the edit) (mesh_edit.cpp); any other topology change (compact) leaves
+// it stale, and it is made again on the next use (mesh_half_edge.cpp).
 struct MeshEntry {
     mesh::WingedEdgeMesh winged;
     mesh::RepresentationCache representations;
     mesh::PickGrid pick_grid;
     std::vector<std::unique_ptr<mesh::ChangeRecord>> undoable;
+    std::unique_ptr<mesh::HalfEdgeMesh> half_edge;
+    uint32_t half_edge_topology = 0;
 };
 inline constexpr std::size_t kUndoRecords = 1000;
 
@@ -38,6 +45,9 @@ const mesh::Representations& representations_of(MeshEntry& m);
 val version_value(const mesh::MeshVersion& v);
 val int_array(const std::vector<int32_t>& v);
 val report_value(const mesh::ValidationReport& report);
+// {entries, bytes, arrays: [{name, entries, bytesPerEntry}]}: one representation's storage
+// (mesh_representations.cpp), as meshStorage gives each.
+val storage_value(const mesh::Storage& s);
 // {face, near: Int32Array, distance: Float64Array}: a pick's answer (mesh_geometry.cpp).
 val pick_value(const mesh::PickResult& p);
 // A missing element or a gap left by an edit, refused as the mesh's own operations refuse

@@ -23,6 +23,23 @@ val assignment_steps_array(const std::vector<mesh::AssignmentStep>& steps) {
     return to_typed_array(flat);
 }
 
+val storage_value(const mesh::Storage& s) {
+    val arrays = val::array();
+    for (std::size_t i = 0; i < s.arrays.size(); ++i) {
+        const mesh::ArrayStorage& a = s.arrays[i];
+        val item = val::object();
+        item.set("name", a.name);
+        item.set("entries", static_cast<double>(a.entries));
+        item.set("bytesPerEntry", static_cast<double>(a.bytes_per_entry));
+        arrays.set(i, item);
+    }
+    val one = val::object();
+    one.set("entries", static_cast<double>(s.entries()));
+    one.set("bytes", static_cast<double>(s.bytes()));
+    one.set("arrays", arrays);
+    return one;
+}
+
 namespace {
 
 using namespace wingspline::mesh;
@@ -33,22 +50,7 @@ val mesh_storage(int32_t handle) {
         MeshEntry& m = entry(handle);
         const auto all = representation_storage(representations_of(m), m.winged);
         val out = val::object();
-        for (int r = 0; r < kRepresentationCount; ++r) {
-            val arrays = val::array();
-            for (std::size_t i = 0; i < all[r].arrays.size(); ++i) {
-                const ArrayStorage& a = all[r].arrays[i];
-                val item = val::object();
-                item.set("name", a.name);
-                item.set("entries", static_cast<double>(a.entries));
-                item.set("bytesPerEntry", static_cast<double>(a.bytes_per_entry));
-                arrays.set(i, item);
-            }
-            val one = val::object();
-            one.set("entries", static_cast<double>(all[r].entries()));
-            one.set("bytes", static_cast<double>(all[r].bytes()));
-            one.set("arrays", arrays);
-            out.set(representation_key(static_cast<Representation>(r)), one);
-        }
+        for (int r = 0; r < kRepresentationCount; ++r) out.set(representation_key(static_cast<Representation>(r)), storage_value(all[r]));
         val r = val::object();
         r.set("storage", out);
         return r;

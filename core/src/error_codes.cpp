@@ -43,6 +43,7 @@ const std::vector<ErrorCodeInfo>& error_codes() {
         {"vertex-edge-not-incident", "structure invariants", "a vertex table entry that does not touch its vertex"},
         {"open-vertex-ring", "structure invariants", "a walk around a vertex that does not come back to its start"},
         {"open-face-loop", "structure invariants", "a walk along a face that does not come back to its start"},
+        {"half-edge-broken", "structure invariants", "a half-edge row that breaks a rule of the half-edge structure"},
         // queries, tables, representations
         {"unknown-query", "queries and tables", "an adjacency or cost query by a name the core does not know"},
         {"invalid-element", "queries and tables", "an index that names no element (\"there is no e8: the mesh has edges e1 to e7\")"},

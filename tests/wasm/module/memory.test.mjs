@@ -225,6 +225,13 @@ const cases = [
     [['invalid-argument', () => lecture.pick([1, 0.5, 0], [0, 0, 0])], ['invalid-argument', () => lecture.displayProxy(0)]]],
   ['mesh.query', REDUCED, () => lecture.query('faces-around-vertex', 1),
     [['invalid-element', () => lecture.query('faces-around-vertex', V_MISSING)], ['unknown-query', () => lecture.query('faces-of-vertex', 1)]]],
+  // The half-edge view, made once per topology version and kept in the mesh's entry.
+  ['mesh half-edge view', REDUCED, () => {
+    lecture.halfEdge(); lecture.halfEdgeArrays({ offset: 2, limit: 4 }); lecture.halfEdgeTraversalSteps(1); lecture.halfEdgeFaceSteps(1);
+    lecture.halfEdgeQuery('edges-of-face', 1); lecture.halfEdgeStorage();
+  }, [['disposed', () => gone.halfEdge()], ['invalid-argument', () => lecture.halfEdgeArrays({ offset: -1 })],
+    ['invalid-element', () => lecture.halfEdgeTraversalSteps(V_MISSING)], ['invalid-element', () => lecture.halfEdgeFaceSteps(V_MISSING)],
+    ['invalid-element', () => lecture.halfEdgeQuery('edges-of-face', V_MISSING)], ['disposed', () => gone.halfEdgeStorage()]]],
   ['hooks.timeNormalsInCore', REDUCED, () => hooks.timeNormalsInCore(lecture, 1), [['invalid-argument', () => hooks.timeNormalsInCore(lecture, 0)]]],
   // The measurements the lessons ask the core for.
   ['convexHull / mapPoints / maxDistance', REDUCED, () => { api.convexHull(geometry, 2); api.mapPoints(geometry, 2, { kind: 'perspective', px: 0.01 }); api.maxDistance(geometry, geometry, 2); },

@@ -601,6 +601,93 @@ export class Mesh {
     const r = unwrap(this.#raw.meshValidate(this.#live()));
     return { ok: r.valid, problems: r.problems };
   }
+
+  // ---------------------------------------------------------------- the half-edge view
+  // The half-edge structure derived from the winged edge (docs/api-mesh.md, "The half-edge
+  // view"): edge e gives half-edge 2e = S -> E (face: e's left) and 2e + 1 = E -> S (face: its
+  // right); twin(h) = h ^ 1. The core keeps it per topology version and updates it with every
+  // edit and undo, O(the edit); -1 = none (a boundary half-edge's face; every field of a gap).
+
+  // Every row as plain values: {halfedges: [{origin, target, face, next, prev, twin}],
+  // vertices: [{halfedge}], faces: [{halfedge}]}.
+  halfEdge() {
+    const r = this.#halfEdgeArrays(0, -1);
+    const halfedges = Array.from(r.origin, (origin, h) => ({
+      origin, target: r.origin[h ^ 1], face: r.face[h], next: r.next[h], prev: r.prev[h], twin: h ^ 1,
+    }));
+    // A gap's twin is a gap too: its row says none everywhere, the twin included.
+    for (const row of halfedges) if (row.origin === -1) row.twin = -1;
+    return {
+      halfedges,
+      vertices: Array.from(r.vertexHalfedge, (halfedge) => ({ halfedge })),
+      faces: Array.from(r.faceHalfedge, (halfedge) => ({ halfedge })),
+    };
+  }
+
+  // The same as flat Int32Arrays, rows offset .. offset + limit - 1 of each table (default:
+  // every row): {offset, halfedges, vertices, faces (the full row counts), origin, face,
+  // next, prev (one entry per half-edge: origin[h - offset] is half-edge h's),
+  // vertexHalfedge, faceHalfedge (one per vertex / face of the same window)}. The target is
+  // origin[twin]; twin(h) = h ^ 1 is not stored.
+  halfEdgeArrays({ offset = 0, limit = -1 } = {}) {
+    integerIn(offset, 'offset', 0, INT32_MAX);
+    if (limit !== -1) integerIn(limit, 'limit', 0, INT32_MAX);
+    return { offset, ...this.#halfEdgeArrays(offset, limit) };
+  }
+
+  #halfEdgeArrays(offset, limit) {
+    const { ok, ...r } = unwrap(this.#halfEdgeRaw().meshHalfEdge(this.#live(), 'arrays', 0, offset, limit));
+    return r;
+  }
+
+  // The walk around v in half-edge terms, counter-clockwise: h -> twin(prev(h)), from v's own
+  // half-edge (on the boundary its boundary half-edge, so the walk meets the whole fan) or from
+  // `start`, a half-edge leaving v. One step per half-edge: {halfedge, column: 'prev', read:
+  // prev(halfedge), next: twin of it}. Empty for an isolated vertex.
+  halfEdgeTraversalSteps(v, { start = -1 } = {}) {
+    elementIndex(v, 'vertex');
+    if (start !== -1) integerIn(start, 'start', 0, INT32_MAX);
+    return halfEdgeSteps(unwrap(this.#halfEdgeRaw().meshHalfEdge(this.#live(), 'vertex-walk', v, start, 0)), 'prev');
+  }
+
+  // The walk along face f: h -> next(h) from the face's half-edge; {halfedge, column: 'next',
+  // read: next(halfedge), next} per step.
+  halfEdgeFaceSteps(f) {
+    elementIndex(f, 'face');
+    return halfEdgeSteps(unwrap(this.#halfEdgeRaw().meshHalfEdge(this.#live(), 'face-walk', f, -1, 0)), 'next');
+  }
+
+  // One lecture query (QUERY_KINDS) answered on the half-edge arrays: {answer: Int32Array,
+  // entriesRead} counted as query() counts each representation's reads (twin and a
+  // half-edge's edge are arithmetic, not reads). The vertex queries go CCW from v's half-edge.
+  halfEdgeQuery(kind, element) {
+    if (!QUERY_KINDS.includes(kind)) fail('unknown-query', `unknown query '${String(kind).slice(0, 40)}'; use ${QUERY_KINDS.join(', ')}`);
+    elementIndex(element, kind.endsWith('vertex') ? 'vertex' : kind.endsWith('edge') ? 'edge' : 'face');
+    const { answer, entriesRead } = unwrap(this.#halfEdgeRaw().meshHalfEdge(this.#live(), kind, element, 0, 0));
+    return { answer, entriesRead };
+  }
+
+  // Its storage as storage() gives each representation's: vertex coordinates, then origin,
+  // face, next, prev (one int32 per half-edge each), vertex half-edge, face half-edge.
+  halfEdgeStorage() {
+    return storageValue(unwrap(this.#halfEdgeRaw().meshHalfEdge(this.#live(), 'storage', 0, 0, 0)));
+  }
+
+  // The half-edge bindings are in the modules that edit meshes (the mesh lesson's, and the
+  // whole mesh API), which keep the view in step with each edit.
+  #halfEdgeRaw() {
+    if (typeof this.#raw.meshHalfEdge !== 'function') {
+      fail('part-not-loaded', 'the half-edge view is in the mesh part of the core, not the subdivision part: '
+        + "load the core with the mesh part, loadWingspline({ parts: ['mesh'] }) or loadWingspline()");
+    }
+    return this.#raw;
+  }
+}
+
+// A half-edge walk as the core sends it (steps: 3 int32 per step, [halfedge, read, next]) as
+// one record per step.
+function halfEdgeSteps({ steps }, column) {
+  return Array.from({ length: steps.length / 3 }, (_, i) => ({ halfedge: steps[3 * i], column, read: steps[3 * i + 1], next: steps[3 * i + 2] }));
 }
 
 // For the benchmark's hooks (tests/bench/wasm/bench-core.mjs), which call the bench module's
