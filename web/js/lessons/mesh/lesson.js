@@ -21,7 +21,7 @@ import { vLabel, fLabel, eLabel } from './labels.js';
 import { meshExercise } from './exercise.js';
 import { dropStale } from './live-elements.js';
 
-export const TABS = ['winged', 'faces', 'vertex-face', 'adjacency', 'edge-list', 'queries', 'storage', 'planes'];
+export const TABS = ['winged', 'faces', 'vertex-face', 'adjacency', 'edge-list', 'half-edge', 'queries', 'storage', 'planes'];
 export const QUERY_KINDS = ['faces-around-vertex', 'edges-around-vertex', 'edges-of-face', 'neighbours-of-face', 'faces-of-edge'];
 // The state format's bounds on an imported mesh: app/limits.js, which equals the core's file
 // limits (api.meshLimits; tests/wasm/mesh-trust.test.mjs checks that they agree).
@@ -135,7 +135,7 @@ function wingedTables(derived, entry, keys) {
   const previousGaps = derived.gaps;
   if (derived.topology !== keys.topology) {
     const sameSource = derived.source === keys.source;
-    Object.assign(derived, { source: keys.source, topology: keys.topology, version: null, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, storage: null, queryKey: null, query: null, faces: sameSource ? derived.faces : null, follow: null, gaps: null, lastChange: sameSource ? derived.lastChange : null });
+    Object.assign(derived, { source: keys.source, topology: keys.topology, version: null, counts: entry.mesh.counts(), steps: new Map(), planes: null, reps: null, halfEdge: null, storage: null, queryKey: null, query: null, faces: sameSource ? derived.faces : null, follow: null, gaps: null, lastChange: sameSource ? derived.lastChange : null });
   }
   if (derived.version !== keys.version) {
     // The edits and undos since the tables were read (entry.changes, in order: the undos

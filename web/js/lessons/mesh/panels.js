@@ -18,7 +18,7 @@ const BIG_TABLES = 100000; // faces: from this size a new mesh's tables fill a t
 
 const TAB_LABELS = {
   winged: 'Winged edge', faces: 'Independent faces', 'vertex-face': 'Vertex & face tables', adjacency: 'Adjacency lists',
-  'edge-list': 'Edge list (Foley)', queries: 'Queries', storage: 'Storage', planes: 'Planes & normals',
+  'edge-list': 'Edge list (Foley)', 'half-edge': 'Half-edge', queries: 'Queries', storage: 'Storage', planes: 'Planes & normals',
 };
 
 // selection: the view's hovered and picked element ({kind, index} or null), owned by the

@@ -13,6 +13,7 @@ import { VERTEX_EDGE_COLUMN, FACE_EDGE_COLUMN } from '../../ui/mesh/walk.js';
 import { num, sub, NOTATION, headOf, rowCells, describedTable, createWingedTables } from '../../ui/mesh/tables.js';
 import { visibleSteps, rowsNotYetWritten, EDGE_FIELDS, COORDINATES } from './edit-playback.js';
 import { queryTarget, whyNot } from './live-elements.js';
+import { createHalfEdgeTab } from './half-edge.js';
 
 const F = (i) => sub('F', i);
 // Representation tables longer than this show their first rows and say so (the winged-edge
@@ -37,6 +38,9 @@ export const PROS_CONS = {
     cons: ['which edges are incident to a vertex is not easy: all edges must be inspected (001)', 'takes up a lot of storage (003)'] },
   'winged-edge': { title: 'Winged edge', pros: ['all adjacencies in O(1) time', 'little extra storage', 'fixed-size records', 'supports polygonal faces'],
     cons: ['mesh needs to be oriented'] },
+  // Beyond the lectures: what the libraries a student meets next store (the half-edge tab).
+  'half-edge': { title: 'Half-edge (beyond the lectures)', pros: ['all adjacencies in O(1) time, as the winged edge', 'a step never asks which side of an edge it is on: next and prev belong to the face', 'fixed-size records; supports polygonal faces'],
+    cons: ['two records per edge', 'mesh needs to be oriented'] },
 };
 
 const SHORT_NAMES = {
@@ -137,6 +141,16 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   };
 
   // ------------------------------------------------------------ fill the panels
+  // The half-edge tab's tables: a half-edge row hovers and picks its edge (both its rows marked).
+  const halfEdgeTab = createHalfEdgeTab(ctx, {
+    model: () => model, selection,
+    table: (spec) => (spec.kind === 'halfedge'
+      ? { kind: 'halfedge', ...createVirtualTable({ onRowEnter: (i) => hoverRow('edge')(i >> 1), onRowLeave: leave, onRowClick: (i) => pickRow('edge')(i >> 1), ...spec }) }
+      : table(spec)),
+  });
+  Object.assign(tables, { heHalfedge: halfEdgeTab.tables.halfedges, heVertex: halfEdgeTab.tables.vertices, heFace: halfEdgeTab.tables.faces });
+  panels['half-edge'].append(halfEdgeTab.root);
+
   const changeNote = (id) => h('p', { class: 'change-note', id, 'aria-live': 'polite' });
   const notes = { faces: changeNote('change-independent'), vf: changeNote('change-vertex-face'), winged: changeNote('change-winged') };
   const storedEdge = createStoredEdgeControl(ctx);
@@ -179,9 +193,10 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   const tabTables = {
     winged: ['wingedVertex', 'wingedEdge', 'wingedFace'], faces: ['independent'], 'vertex-face': ['vfVertex', 'vfFace'],
     adjacency: ['adjVertex', 'adjEdge', 'adjFace', 'partialVertex', 'partialEdge', 'partialFace'], 'edge-list': ['foleyVertex', 'foleyEdge', 'foleyPolygon'], planes: ['planes'],
+    'half-edge': ['heHalfedge', 'heVertex', 'heFace'],
   };
   const tableKind = Object.fromEntries(Object.entries(tables).map(([name, t]) => [name, t.kind]));
-  const counts = { vertex: () => model.V, edge: () => model.E, face: () => model.F };
+  const counts = { vertex: () => model.V, edge: () => model.E, face: () => model.F, ...halfEdgeTab.counts };
   const drawnVersion = {};
   const revealed = {}; // table name -> the walk position whose row it last scrolled into view
   const revealedEdit = {}; // table name -> the edit player's position when it last revealed
@@ -227,6 +242,9 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       const compared = [];
       if (selection.hover?.kind === kind) rows['is-hovered'].push(selection.hover.index);
       if (selection.pick?.kind === kind) rows['is-picked'].push(selection.pick.index);
+      // A half-edge table marks both halves of the hovered or picked edge.
+      if (kind === 'halfedge' && selection.hover?.kind === 'edge') rows['is-hovered'].push(2 * selection.hover.index, 2 * selection.hover.index + 1);
+      if (kind === 'halfedge' && selection.pick?.kind === 'edge') rows['is-picked'].push(2 * selection.pick.index, 2 * selection.pick.index + 1);
       // While the edit player is inside an edit, its cell is the one marked, not the walk's.
       const inEdit = model.lastOperation && model.editStep < visibleSteps(model.lastOperation).length;
       if (frame && tab === 'winged' && !inEdit) {
@@ -239,8 +257,8 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       }
       const editCell = tab === 'winged' ? markEdit(name, kind, rows, read, inEdit) : null;
       // A number a removed element left (until compact): its row stays, struck through.
-      const gapList = model.gapLists?.[`${kind === 'vertex' ? 'vertices' : kind === 'edge' ? 'edges' : 'faces'}`];
-      if (gapList?.length) rows['is-gap'] = Array.from(gapList);
+      const gapList = model.gapLists?.[`${kind === 'vertex' ? 'vertices' : kind === 'edge' || kind === 'halfedge' ? 'edges' : 'faces'}`];
+      if (gapList?.length) rows['is-gap'] = kind === 'halfedge' ? Array.from(gapList).flatMap((e) => [2 * e, 2 * e + 1]) : Array.from(gapList);
       tables[name].mark({ rows, read, compared });
       // A table with nothing of the walk's or the player's marked forgets what it revealed, so
       // a step back to a row it showed before reveals that row again.
@@ -275,6 +293,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       }
     }
     for (const run of reveals) run();
+    if (tab === 'half-edge') halfEdgeTab.update(model);
   }
 
   // The edit player's marks (edit-panel.js) in winged-edge table `name`: the rows written so
@@ -319,7 +338,8 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   function updateStorage() {
     storageGrowth.update(growthOf(null));
     const c = model.counts;
-    if (!model.derived.storage) model.derived.storage = model.mesh.storage(); // once per mesh version
+    // Once per mesh version; the half-edge's from its own view of the same mesh.
+    if (!model.derived.storage) model.derived.storage = { ...model.mesh.storage(), 'half-edge': model.mesh.halfEdgeStorage() };
     storageRows = Object.entries(model.derived.storage);
     storageCounts.textContent = `V = ${c.vertices}, E = ${c.edges}, F = ${c.faces}; boundary edges ${c.boundaryEdges}, boundary loops ${c.boundaryLoops}; Euler characteristic V − E + F = ${c.euler}.`;
     storageTable.refresh(storageRows.length);
@@ -471,7 +491,7 @@ function createQueryPanel(ctx, growthOf) {
       const key = `${model.topology}:${q}:${index}`;
       if (model.derived.queryKey !== key) {
         model.derived.queryKey = key;
-        model.derived.query = model.mesh.query(q, index);
+        model.derived.query = { ...model.mesh.query(q, index), 'half-edge': model.mesh.halfEdgeQuery(q, index) };
       }
       const answers = model.derived.query;
       answerLetter = letter;

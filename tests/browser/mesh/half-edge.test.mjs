@@ -1,0 +1,133 @@
+// The half-edge tab of the mesh lesson, driven as a person would (the tab by keyboard, a
+// half-edge row by pointer, an edge by its number), on the lecture's mesh. Every expected
+// value is worked by hand below from the slide's winged-edge tables (lecture 000) and the
+// numbering the page states (eₖ gives h₂ₖ₋₁ = S → E on its left face and h₂ₖ = E → S on its
+// right), never read from the page or the core.
+//
+// The slide: e1 v1→v3 (L none, R F1; wings e2 e2 e4 e3), e2 v1→v2 (F1, none; e1 e1 e3 e6),
+// e3 v2→v3 (F1, F2; e2 e5 e1 e4), e4 v3→v4 (none, F2; e1 e3 e7 e5), e5 v2→v4 (F2, F3; e3 e6
+// e4 e7), e6 v2→v5 (F3, none; e5 e2 e7 e7), e7 v4→v5 (none, F3; e4 e5 e6 e6).
+// By hand: next(h₂ₖ₋₁) is the half-edge of E:L that starts at E; prev(h₂ₖ₋₁) the half-edge of
+// S:L that ends at S; next(h₂ₖ) the half-edge of S:R that starts at S; prev(h₂ₖ) the half-edge
+// of E:R that ends at E. So:
+//   h5 (e3, v2→v3, F1): next = e1 from v3 = h2, prev = e2 into v2 = h3, twin h6;
+//   h6 (e3, v3→v2, F2): next = e5 from v2 = h9, prev = e4 into v3 = h8, twin h5;
+//   h1 (e1, v1→v3, boundary): next = e4 from v3 = h7; the boundary loop h1 h7 h13 h12 h4
+//   (v1 v3 v4 v5 v2), so prev(h1) = h4.
+// A boundary vertex stores its boundary half-edge: v1 h1, v2 h4, v3 h7, v4 h13, v5 h12.
+// Around v2 from e6 (the slide's walk e6, e5, e3, e2): h11 (e6 from v2), prev = h10, twin h9
+// (e5), prev(h9) = h6, twin h5 (e3), prev(h5) = h3, twin h4 (e2).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+
+const env = useSiteAndBrowser();
+const settle = (page) => page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+
+async function openHalfEdgeTab(viewport = { width: 1280, height: 800 }) {
+  const page = await env.openPage(`${env.site.url}mesh.html`, { viewport });
+  await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
+  // By keyboard: the tab list's arrows from the winged edge to the half-edge tab.
+  await page.focus('#tab-winged');
+  await page.click('#tab-winged');
+  const order = await page.$$eval('[role=tab]', (tabs) => tabs.map((t) => t.id));
+  for (let k = order.indexOf('tab-winged'); k < order.indexOf('tab-half-edge'); k += 1) await page.keyboard.press('ArrowRight');
+  await page.waitForFunction(() => document.querySelector('#tab-half-edge')?.getAttribute('aria-selected') === 'true');
+  await settle(page);
+  return page;
+}
+
+const rowOf = (page, table, label) => page.$eval(`#${table}`, (t, want) => {
+  const tr = [...t.tBodies[0].rows].find((r) => r.cells[0].textContent.trim() === want);
+  return tr ? [...tr.cells].slice(1).map((c) => c.textContent.trim()) : null;
+}, label);
+
+test('the half-edge tables of the lecture mesh, worked by hand from the slide', async () => {
+  const page = await openHalfEdgeTab();
+  //                                    origin target face  next  prev  twin
+  assert.deepEqual(await rowOf(page, 'he-halfedge-table', 'h5'), ['v2', 'v3', 'F1', 'h2', 'h3', 'h6']);
+  assert.deepEqual(await rowOf(page, 'he-halfedge-table', 'h6'), ['v3', 'v2', 'F2', 'h9', 'h8', 'h5']);
+  assert.deepEqual(await rowOf(page, 'he-halfedge-table', 'h1'), ['v1', 'v3', '—', 'h7', 'h4', 'h2']);
+  assert.equal(await page.$$eval('#he-halfedge-table tbody tr[data-row]', (r) => r.length), 14, '2E = 14 half-edges');
+  for (const [v, he] of [['v1', 'h1'], ['v2', 'h4'], ['v3', 'h7'], ['v4', 'h13'], ['v5', 'h12']]) {
+    assert.deepEqual(await rowOf(page, 'he-vertex-table', v), [he], `${v}'s half-edge is its boundary one`);
+  }
+  // A face's half-edge lies on the face.
+  for (const f of ['F1', 'F2', 'F3']) {
+    const [he] = await rowOf(page, 'he-face-table', f);
+    assert.equal((await rowOf(page, 'he-halfedge-table', he))[2], f, `${f}'s half-edge ${he} is on ${f}`);
+  }
+  // The walk around v2 (the lesson's walk) in half-edge terms meets the slide's ring.
+  const walk = await page.$$eval('#he-walk tbody tr', (rows) => rows.map((r) => [...r.cells].map((c) => c.textContent.trim())));
+  assert.deepEqual(walk.map((r) => r[1]), ['h11', 'h9', 'h5', 'h4']);
+  assert.deepEqual(walk.map((r) => r[4]), ['e6', 'e5', 'e3', 'e2']);
+  assert.deepEqual(walk.map((r) => r[5]), ['e6', 'e5', 'e3', 'e2'], 'the winged-edge walk, step for step');
+  assert.match(walk[0][2], /^prev\(h11\) = h10$/);
+  assert.match(await page.textContent('#he-walk-note'), /the same edges in the same order/);
+  assert.deepEqual(page.problems, []);
+});
+
+test('the correspondence: a half-edge row picked by pointer shows its edge\'s winged-edge row as half-edge expressions', async () => {
+  const page = await openHalfEdgeTab();
+  // h6 is e3's E → S half: a click picks e3.
+  await page.click('#he-halfedge-table tr[data-row="5"] th');
+  await page.waitForFunction(() => /Edge e3 in both structures/.test(document.querySelector('#he-correspondence-title')?.textContent ?? ''));
+  const rows = await page.$$eval('#he-correspondence tbody tr', (trs) => trs.map((r) => [...r.cells].map((c) => c.textContent.trim())));
+  assert.deepEqual(rows.map((r) => r[0]), ['S', 'E', 'L', 'R', 'S:L', 'S:R', 'E:L', 'E:R']);
+  // Stored (the slide's e3 row) and the value of each expression, by hand above.
+  assert.deepEqual(rows.map((r) => r[1]), ['v2', 'v3', 'F1', 'F2', 'e2', 'e5', 'e1', 'e4']);
+  assert.deepEqual(rows.map((r) => r[3]), ['v2', 'v3', 'F1', 'F2', 'e2 (h3)', 'e5 (h9)', 'e1 (h2)', 'e4 (h8)']);
+  assert.equal(rows[4][2], 'edge of prev(h)');
+  // Both halves of the picked edge are marked in the half-edge table.
+  assert.deepEqual(await page.$$eval('#he-halfedge-table tr.is-picked', (trs) => trs.map((r) => r.cells[0].textContent.trim())), ['h5', 'h6']);
+  await screenshot(page, 'half-edge-tab-1280');
+  assert.deepEqual(page.problems, []);
+});
+
+test('after a flip of e3 (and its undo) the half-edge rows and the correspondence follow the winged edge', async () => {
+  const page = await openHalfEdgeTab();
+  await page.selectOption('#edit-kind', 'edge');
+  await page.fill('#edit-element', '3');
+  await page.press('#edit-element', 'Enter');
+  await page.waitForFunction(() => document.querySelector('#edit-picked')?.textContent === 'Picked: e3');
+  await page.click('button[data-op="flip-edge"]');
+  await page.waitForFunction(() => window.wingspline.state.ops.length === 1);
+  await page.click('#tab-half-edge');
+  await settle(page);
+  // The flip turns e3 into the other diagonal of the quad v1 v2 v4 v3: the slide's tables
+  // after it (lecture 000's flip, tests/helpers/lecture-slide.mjs FLIP_E3) have e3 = v4 → v1.
+  const h5 = await rowOf(page, 'he-halfedge-table', 'h5');
+  assert.deepEqual(h5.slice(0, 2), ['v4', 'v1']);
+  assert.equal(h5[5], 'h6');
+  // The correspondence of e3, picked by its S → E row.
+  await page.click('#he-halfedge-table tr[data-row="4"] th');
+  await page.waitForFunction(() => /Edge e3 in both/.test(document.querySelector('#he-correspondence-title')?.textContent ?? ''));
+  const rows = await page.$$eval('#he-correspondence tbody tr', (trs) => trs.map((r) => [...r.cells].map((c) => c.textContent.trim())));
+  for (const r of rows) assert.equal(r[3].split(' ')[0], r[1], `${r[0]}: the expression's value is what the winged edge stores`);
+  assert.deepEqual(rows.slice(0, 2).map((r) => r[1]), ['v4', 'v1']);
+  await page.evaluate(() => document.activeElement?.blur());
+  await page.keyboard.press('Control+z');
+  await page.waitForFunction(() => window.wingspline.state.ops.length === 0);
+  await settle(page);
+  assert.deepEqual(await rowOf(page, 'he-halfedge-table', 'h5'), ['v2', 'v3', 'F1', 'h2', 'h3', 'h6']);
+  assert.deepEqual(page.problems, []);
+});
+
+test('storage and queries list the half-edge beside the lecture\'s representations', async () => {
+  const page = await env.openPage(`${env.site.url}mesh.html`);
+  await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
+  await page.click('#tab-storage');
+  await settle(page);
+  // V = 5, E = 7, F = 3: 3V coordinates (8 bytes) and, as int32, origin, face, next and prev
+  // per half-edge (4 x 2E) and one half-edge per vertex and per face: 15 + 56 + 5 + 3 = 79
+  // entries, 15 x 8 + 64 x 4 = 376 bytes.
+  const cells = await page.$eval('#storage-table tr[data-representation="half-edge"]', (tr) => [...tr.cells].map((c) => c.textContent.trim()));
+  assert.equal(cells[1], '79');
+  assert.equal(cells[2], '376');
+  await page.click('#tab-queries');
+  await settle(page);
+  // Faces around v2 (the lesson's first query): the slide's three faces, whichever the first.
+  const answer = await page.$eval('#query-table tr[data-representation="half-edge"]', (tr) => tr.cells[1].textContent.trim());
+  assert.deepEqual(answer.split(', ').sort(), ['F1', 'F2', 'F3']);
+  assert.deepEqual(page.problems, []);
+});
