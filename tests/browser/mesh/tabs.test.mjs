@@ -259,3 +259,69 @@ test('the queries and storage tabs plot the core\'s figures against mesh size; t
   assert.deepEqual(page.problems, []);
 });
 
+// What an edit touches is what the tables redraw: a row whose text did not change keeps its
+// element (no layout or paint for it), a row whose text changed is drawn anew. Checked for
+// every step of a flip's playback and for its undo, on the 20,000-face sphere's three
+// winged-edge tables, by comparing each drawn row's text and element before and after.
+test('a flip played step by step and undone redraws exactly the table rows whose text changed', async () => {
+  const page = await openSphere();
+  await showTab(page, 'winged');
+  // An edge whose row is drawn, so its rewrites are in view: the middle drawn row of the edge table.
+  const e = await page.$eval('#we-edge-table', (table) => {
+    const rows = [...table.tBodies[0].querySelectorAll('tr[data-row]')];
+    const m = window.wingspline.model.mesh;
+    const drawn = rows.map((r) => Number(r.dataset.row));
+    return drawn.slice(Math.floor(drawn.length / 2)).find((i) => m.check({ op: 'flip-edge', e: i }).ok);
+  });
+  assert.ok(Number.isInteger(e), 'a drawn edge can be flipped');
+  await page.selectOption('#edit-kind', 'edge');
+  await page.fill('#edit-element', String(e + 1));
+  await page.press('#edit-element', 'Enter');
+  await page.waitForFunction((want) => document.querySelector('#edit-picked')?.textContent === want, `Picked: e${e + 1}`);
+  // Each drawn row of the three tables: its text, and the element itself kept in the page.
+  const snapshot = () => page.evaluate(() => {
+    window.__rows ??= new Map();
+    const out = {};
+    for (const id of ['we-vertex-table', 'we-edge-table', 'we-face-table']) {
+      for (const tr of document.querySelectorAll(`#${id} tbody tr[data-row]`)) {
+        const key = `${id}:${tr.dataset.row}`;
+        const seen = window.__rows.get(key);
+        out[key] = { text: tr.textContent, same: seen?.el === tr, before: seen?.text ?? null };
+        window.__rows.set(key, { el: tr, text: tr.textContent });
+      }
+    }
+    return out;
+  });
+  const check = (rows, where) => {
+    let changed = 0;
+    for (const [key, r] of Object.entries(rows)) {
+      if (r.before === null) continue; // scrolled into the window now: new by necessity
+      if (r.text !== r.before) { changed += 1; assert.equal(r.same, false, `${where}: ${key} changed its text and is drawn anew`); }
+      else assert.equal(r.same, true, `${where}: ${key} kept its text and its element`);
+    }
+    return changed;
+  };
+  await snapshot();
+  await page.click('button[data-op="flip-edge"]');
+  await page.waitForFunction(() => window.wingspline.state.ops.length === 1);
+  await page.click('#edit-restart');
+  await page.waitForFunction(() => document.querySelector('#edit-step')?.textContent.startsWith('0 of'));
+  await settle(page);
+  await snapshot();
+  const n = Number((await page.textContent('#edit-step')).match(/of (\d+)/)[1]);
+  let changedInAll = 0;
+  for (let k = 1; k <= n; k += 1) {
+    await page.click('#edit-next');
+    await page.waitForFunction((want) => document.querySelector('#edit-step')?.textContent.startsWith(`${want} of`), k);
+    await settle(page);
+    changedInAll += check(await snapshot(), `step ${k} of ${n}`);
+  }
+  // The flip rewrote rows in view (the flipped edge's own row at least), so the check saw change.
+  assert.ok(changedInAll >= 1, `rows changed while the flip played (${changedInAll})`);
+  await page.evaluate(() => document.activeElement?.blur());
+  await page.keyboard.press('Control+z');
+  await page.waitForFunction(() => window.wingspline.state.ops.length === 0);
+  await settle(page);
+  assert.ok(check(await snapshot(), 'undo') >= 1, 'the undo changed rows in view');
+  assert.deepEqual(page.problems, []);
+});

@@ -11,6 +11,12 @@ const WINDOW_MARGIN = 12;
 const FALLBACK_ROW_PX = 26;
 const SCROLL_KEYS = new Set(['Home', 'End', 'PageUp', 'PageDown', 'ArrowUp', 'ArrowDown', ' ']);
 
+// What a cell shows, as text that differs when the cell would be drawn differently: a cell is
+// what h() takes as a child (a string, a number, a node, or a list of them); an element by its
+// tag, attributes and children (no markup strings).
+const contentKey = (c) => (c == null || c === false ? '' : Array.isArray(c) ? c.map(contentKey).join('\u0001')
+  : typeof c !== 'object' ? `t${c}` : `${c.localName}(${Array.from(c.attributes ?? [], (a) => `${a.name}=${a.value}`)})[${Array.from(c.childNodes, contentKey)}]${c.nodeType === 3 ? c.data : ''}`);
+
 // The header rows of a table: `head` is a list of rows, each a list of cells, a cell a string
 // or {text, colspan, rowspan, scope, class}. Row k is row k + 1 of the whole table for
 // assistive technology (aria-rowindex). Also used for a lone row shown with its table's head
@@ -66,10 +72,24 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
   let useSeen = false;
   const readGeometry = () => ({ top: scroller.scrollTop, height: scroller.clientHeight, scrollHeight: scroller.scrollHeight });
 
-  function cellsOf(i) {
+  // The rows drawn, by index, each with the text it was drawn from: new data (an edit, a walk
+  // step) rebuilds only the rows whose text changed, so the browser lays out and paints those
+  // rows, not every row in view (the page's cost of an edit stays the edit's size).
+  let drawn = new Map(); // row -> {el, key}
+  const keyOf = (i, label, cells) => JSON.stringify([rowAttributes?.(i) ?? null, contentKey(label), cells.map(contentKey)]);
+
+  function rowFor(i) {
     const cells = row(i);
+    const label = rowLabel(i);
+    const key = keyOf(i, label, cells);
+    const old = drawn.get(i);
+    if (old?.key === key) return old;
+    return { el: cellsOf(i, label, cells), key };
+  }
+
+  function cellsOf(i, label, cells) {
     const rowEl = h('tr', { ...rowAttributes?.(i), 'data-row': i, 'aria-rowindex': head.length + i + 1 },
-      h('th', { scope: 'row' }, rowLabel(i)),
+      h('th', { scope: 'row' }, label),
       cells.map((c, k) => h('td', { class: cellClasses[k] || undefined }, c)));
     for (const name of rowMarks.get(i) ?? []) rowEl.classList.add(name);
     for (const col of reads.get(i) ?? []) rowEl.children[col]?.classList.add('is-read');
@@ -83,8 +103,8 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
       first = 0;
       last = count - 1;
       const rows = [];
-      for (let i = 0; i < count; i += 1) rows.push(cellsOf(i));
-      tbody.replaceChildren(...rows);
+      for (let i = 0; i < count; i += 1) rows.push(rowFor(i));
+      place(rows, []);
       return;
     }
     // The scroll geometry: after a scroll (or a jump) read now, when the layout is fresh; for
@@ -104,21 +124,38 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
     first = Math.max(0, (atEnd ? count - shown : Math.floor(top / rowPx)) - WINDOW_MARGIN);
     last = atEnd ? count - 1 : Math.min(count - 1, Math.ceil((top + height) / rowPx) + WINDOW_MARGIN);
     const rows = [];
-    for (let i = first; i <= last; i += 1) rows.push(cellsOf(i));
-    // The spacers span the table's real columns (the widest of the header and the rows drawn).
-    const span = rows.reduce((n, r) => Math.max(n, r.children.length), headColumns);
-    const spacer = (px) => {
-      const tr = h('tr', { class: 'spacer', 'aria-hidden': 'true' }, h('td', { colspan: span, class: 'spacer-cell' }));
-      tr.firstChild.style.height = `${px}px`;
-      return tr;
-    };
-    tbody.replaceChildren(spacer(first * rowPx), ...rows, spacer((count - 1 - last) * rowPx));
+    for (let i = first; i <= last; i += 1) rows.push(rowFor(i));
+    place(rows, [first * rowPx, (count - 1 - last) * rowPx]);
     if (atEnd) scroller.scrollTop = scroller.scrollHeight; // stays at the bottom if the rows are taller than rowPx
     if (!measured) {
       // One layout read, the first time: every row has the same height (CSS).
       const sample = tbody.children[1];
       if (sample?.offsetHeight) { rowPx = sample.offsetHeight; measured = true; renderWindow(); }
     }
+  }
+
+  // Puts `rows` ({el, key} in order) in the body, between two spacer rows of the given heights
+  // when `spacers` has them. Rows kept from the last drawing stay where they are when the order
+  // is the same (the common case: new data, same window); only replaced rows are swapped.
+  let spacerRows = null;
+  function place(rows, spacers) {
+    const span = rows.reduce((n, r) => Math.max(n, r.el.children.length), headColumns);
+    const wantSpacers = spacers.length === 2;
+    const same = rows.length === drawn.size && (spacerRows !== null) === wantSpacers
+      && (!wantSpacers || spacerRows.every((tr) => tr.firstChild.colSpan === span))
+      && rows.every((r, k) => drawn.get(first + k)?.el.parentNode === tbody);
+    if (same) {
+      rows.forEach((r, k) => {
+        const old = drawn.get(first + k);
+        if (old.el !== r.el) old.el.replaceWith(r.el);
+      });
+    } else {
+      spacerRows = wantSpacers ? [0, 1].map(() => h('tr', { class: 'spacer', 'aria-hidden': 'true' }, h('td', { colspan: span, class: 'spacer-cell' }))) : null;
+      const els = rows.map((r) => r.el);
+      tbody.replaceChildren(...(spacerRows ? [spacerRows[0], ...els, spacerRows[1]] : els));
+    }
+    if (spacerRows) spacerRows.forEach((tr, k) => { const px = `${spacers[k]}px`; if (tr.firstChild.style.height !== px) tr.firstChild.style.height = px; });
+    drawn = new Map(rows.map((r, k) => [first + k, r]));
   }
 
   // The keys that scroll a focused table are the table's: the page's shortcuts (the walk's
@@ -149,7 +186,7 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
   tbody.addEventListener('click', (event) => { const i = rowOf(event); if (i !== null) onRowClick?.(i); });
 
   function rowElement(i) {
-    return tbody.querySelector(`tr[data-row="${i}"]`);
+    return drawn.get(i)?.el ?? null;
   }
 
   return {
