@@ -131,3 +131,65 @@ test('storage and queries list the half-edge beside the lecture\'s representatio
   assert.deepEqual(answer.split(', ').sort(), ['F1', 'F2', 'F3']);
   assert.deepEqual(page.problems, []);
 });
+
+// The walk around v2 from e6, by hand (header): h11, then prev(h11) = h10 and twin h9; prev(h9)
+// = h6, twin h5; prev(h5) = h3, twin h4; prev(h4) = h12 (the boundary loop h1 h7 h13 h12 h4),
+// twin h11 = h0. One read per step here; the winged-edge walk reads two (the S test, the wing).
+test('the walk in half-edge terms plays with the walk player, by keyboard and pointer: row, pseudocode line, cell read, reads counted', async () => {
+  const page = await openHalfEdgeTab();
+  await page.evaluate(() => document.activeElement?.blur());
+  await page.keyboard.press('Home');
+  await settle(page);
+  const now = () => page.textContent('#he-walk-now');
+  const lines = () => page.$$eval('#he-walk-code li.is-current', (lis) => lis.map((li) => li.dataset.line));
+  const marked = () => page.$$eval('#he-halfedge-table tr.is-highlighted', (trs) => trs.map((r) => [r.cells[0].textContent.trim(), [...r.cells].findIndex((c) => c.classList.contains('is-read')), r.querySelector('.is-read')?.textContent.trim() ?? null]));
+  const walkRow = () => page.$$eval('#he-walk tbody tr.is-highlighted', (trs) => trs.map((r) => r.cells[1].textContent.trim()));
+  assert.deepEqual(await lines(), ['0']);
+  assert.match(await now(), /^Start at h11\. Reads so far: 1 here, 1 in the winged-edge walk\.$/);
+  assert.deepEqual(await marked(), []);
+  const expected = [['h11', 'h10', 'h9', 'e6'], ['h9', 'h6', 'h5', 'e5'], ['h5', 'h3', 'h4', 'e3'], ['h4', 'h12', 'h11', 'e2']];
+  for (const [k, [he, prev, twin, edge]] of expected.entries()) {
+    // Steps 1 and 3 by the keyboard (n, PageDown), 2 and 4 by the player's button.
+    if (k % 2 === 0) await page.keyboard.press(k === 0 ? 'n' : 'PageDown');
+    else await page.getByRole('button', { name: 'Step forward (→ or PageDown)' }).click();
+    await settle(page);
+    assert.deepEqual(await lines(), ['1', '2'], `step ${k + 1}: the Repeat body is the current line`);
+    assert.deepEqual(await walkRow(), [he]);
+    // Column 5 of the half-edge table is prev: the cell read, holding prev(h).
+    assert.deepEqual(await marked(), [[he, 5, prev]], `step ${k + 1}`);
+    assert.equal(await now(), `Step ${k + 1}: report ${edge}; read prev(${he}) = ${prev}; its twin is ${twin}. Reads so far: ${k + 2} here, ${2 * k + 3} in the winged-edge walk.`);
+  }
+  await page.keyboard.press('n');
+  await settle(page);
+  assert.deepEqual(await lines(), ['4']);
+  assert.match(await now(), /^Back at h11 = h₀: 4 edges met\. Reads so far: 5 here, 9 in the winged-edge walk\.$/);
+  assert.deepEqual(await marked(), []);
+  // Back one step (b): the fourth step again.
+  await page.keyboard.press('b');
+  await settle(page);
+  assert.deepEqual(await marked(), [['h4', 5, 'h12']]);
+  assert.deepEqual(page.problems, []);
+});
+
+test('a half-edge row picked by pointer names the four winged-edge fields it replaces; an edge picked by keyboard names none', async () => {
+  const page = await openHalfEdgeTab();
+  const replaced = () => page.$$eval('#he-correspondence tbody tr.is-highlighted', (trs) => trs.map((r) => r.dataset.field));
+  // h6 = e3's E → S half (on F2): E (its origin), R (its face), S:R (next), E:R (prev).
+  await page.click('#he-halfedge-table tr[data-row="5"] th');
+  await page.waitForFunction(() => /^h6 /.test(document.querySelector('#he-correspondence-note')?.textContent ?? ''));
+  assert.equal(await page.textContent('#he-correspondence-note'), 'h6 (E → S, on the right face) replaces the winged-edge fields E, R, S:R, E:R: its origin, its face, and the edges of prev and next; the other four are its twin\'s.');
+  assert.deepEqual(await replaced(), ['end', 'right', 'startRight', 'endRight']);
+  // h5 = e3's S → E half (on F1): S, L, S:L (prev), E:L (next).
+  await page.click('#he-halfedge-table tr[data-row="4"] th');
+  await page.waitForFunction(() => /^h5 /.test(document.querySelector('#he-correspondence-note')?.textContent ?? ''));
+  assert.deepEqual(await replaced(), ['start', 'left', 'startLeft', 'endLeft']);
+  // e5 picked by its number (keyboard): the edge, not a half: both halves' fields, none marked.
+  await page.focus('#edit-element');
+  await page.keyboard.press('Control+a');
+  await page.keyboard.type('5');
+  await page.keyboard.press('Enter');
+  await page.waitForFunction(() => /Edge e5 in both/.test(document.querySelector('#he-correspondence-title')?.textContent ?? ''));
+  assert.deepEqual(await replaced(), []);
+  assert.match(await page.textContent('#he-correspondence-note'), /^Pick an edge/);
+  assert.deepEqual(page.problems, []);
+});

@@ -38,6 +38,9 @@ const V = (i) => (i >= 0 ? sub('v', i) : '—');
 const F = (i) => (i >= 0 ? sub('F', i) : '—');
 const E = (i) => (i >= 0 ? sub('e', i) : '—');
 const LABEL = { vertex: V, face: F, edge: E };
+// A table wider than a phone's side column scrolls sideways in its own box (focusable, so
+// the keyboard scrolls it too).
+const scrolling = (table, label) => h('div', { class: 'he-scroll', tabindex: 0, role: 'region', 'aria-label': label }, table);
 
 /**
  * @param {any} ctx
@@ -66,7 +69,7 @@ export function createHalfEdgeTab(ctx, { table, model, selection }) {
   };
 
   const tables = {
-    halfedges: table({ id: 'he-halfedge-table', kind: 'halfedge', caption: 'Half-edges: eₖ gives h₂ₖ₋₁ = S → E and h₂ₖ = E → S',
+    halfedges: table({ id: 'he-halfedge-table', kind: 'halfedge', onPick: (i) => { pickedHalf = i; }, caption: 'Half-edges: eₖ gives h₂ₖ₋₁ = S → E and h₂ₖ = E → S',
       head: [['', 'origin', 'target', 'face', 'next', 'prev', 'twin']],
       rowLabel: (i) => sub('h', i),
       row: (i) => {
@@ -78,6 +81,10 @@ export function createHalfEdgeTab(ctx, { table, model, selection }) {
     faces: table({ id: 'he-face-table', kind: 'face', caption: 'Faces: one of their half-edges each',
       head: [['', 'half-edge']], rowLabel: (i) => sub('F', i), row: (i) => { const { block, k } = blockAt(i); return [H(block.faceHalfedge[k])]; } }),
   };
+
+  // The half-edge row picked last (its edge is the lesson's pick): the correspondence names
+  // the winged-edge fields that half-edge replaces. -1: an edge was picked, not a half.
+  let pickedHalf = -1;
 
   // The correspondence: which edge it shows, and its rows.
   const heading = h('h3', { id: 'he-correspondence-title' });
@@ -101,7 +108,16 @@ export function createHalfEdgeTab(ctx, { table, model, selection }) {
       body.replaceChildren();
       return;
     }
-    note.textContent = 'Pick an edge (or a half-edge row) to compare another. The wing X:Y is the other edge at vertex X of the face on side Y; in half-edge terms it is the edge of the half-edge before or after h (or its twin) around that face.';
+    // A half-edge row picked (of this edge): the four fields it stands for, its own or its twin's.
+    const half = pickedHalf >> 1 === e && selection.pick?.kind === 'edge' && selection.pick.index === e ? (pickedHalf & 1 ? 't' : 'h') : null;
+    const replaced = half ? EDGE_FIELDS.filter((field) => CORRESPONDENCE[field][1] === half) : [];
+    if (half) {
+      const he = 2 * e + (half === 't' ? 1 : 0);
+      note.replaceChildren(...H(he), half === 'h' ? ' (S → E, on the left face)' : ' (E → S, on the right face)', ' replaces the winged-edge fields ',
+        replaced.map((f) => HEADINGS[f]).join(', '), ': its origin, its face, and the edges of prev and next; the other four are its twin\'s.');
+    } else {
+      note.textContent = 'Pick an edge (or a half-edge row) to compare another. The wing X:Y is the other edge at vertex X of the face on side Y; in half-edge terms it is the edge of the half-edge before or after h (or its twin) around that face.';
+    }
     const we = m.weShown ?? m.we;
     body.replaceChildren(...EDGE_FIELDS.map((field, k) => {
       const [expression, which, array, kind] = CORRESPONDENCE[field];
@@ -110,7 +126,8 @@ export function createHalfEdgeTab(ctx, { table, model, selection }) {
       const stored = we.edges[8 * e + k];
       const label = LABEL[kind];
       const via = kind === 'edge' ? [' (', ...H(read), ')'] : [];
-      return h('tr', { 'data-field': field, class: stored === value ? undefined : 'is-mismatch' },
+      const classes = [stored === value ? '' : 'is-mismatch', replaced.includes(field) ? 'is-highlighted' : ''].filter(Boolean).join(' ');
+      return h('tr', { 'data-field': field, class: classes || undefined },
         h('th', { scope: 'row' }, HEADINGS[field]), h('td', {}, label(stored)),
         h('td', {}, expression), h('td', {}, label(value), ...via));
     }));
@@ -119,24 +136,37 @@ export function createHalfEdgeTab(ctx, { table, model, selection }) {
   // The walk of the walk panel, in half-edge terms, from the same first edge: around v,
   // h -> twin(prev(h)) (counter-clockwise, as the winged-edge walk); along F, h -> next(h).
   // Beside each step, the edge the winged-edge walk met at that step: the same ring both ways.
+  // It plays with the walk panel's player: frame 0 is the start, frame k (1..n) the k-th
+  // edge met, frame n + 1 the end; the row, the line of the pseudocode and the cell read
+  // (halfEdgeWalkMark, marked by tabs.js in the half-edge table) follow the frame.
   const walkTitle = h('h3', { id: 'he-walk-title' });
   const walkNote = h('p', { class: 'hint', id: 'he-walk-note' });
+  const walkCode = h('ol', { class: 'pseudocode', id: 'he-walk-code', 'aria-label': 'The half-edge walk\'s pseudocode' });
+  const walkNow = h('p', { class: 'walk-text', id: 'he-walk-now', 'aria-live': 'polite' });
   const walkBody = h('tbody', {});
   const walkTable = h('table', { class: 'data-table', id: 'he-walk', 'aria-labelledby': 'he-walk-title' },
     h('thead', {}, h('tr', {}, ['step', 'half-edge h', 'reads', 'next half-edge', 'its edge', 'winged-edge walk'].map((t) => h('th', { scope: 'col' }, t)))), walkBody);
   let walkKey = '';
+  /** @type {{ steps: any[], vertexWalk: boolean } | null} */
+  let walk = null;
   function updateWalk(m) {
     const order = m.frames?.[0]?.order ?? [];
     const key = `${m.topology}:${m.walkKind}:${m.walkElement}:${order[0] ?? -1}`;
-    if (key === walkKey) return;
-    walkKey = key;
+    if (key !== walkKey) {
+      walkKey = key;
+      walk = buildWalk(m, order);
+    }
+    showWalkFrame(m);
+  }
+  function buildWalk(m, order) {
     const vertexWalk = m.walkKind === 'vertex';
     const element = m.walkElement;
     if (element < 0 || !order.length) {
       walkTitle.textContent = 'The walk in half-edge terms';
       walkNote.textContent = 'Choose a vertex or a face in the walk panel: its walk is shown here in half-edge terms.';
       walkBody.replaceChildren();
-      return;
+      walkCode.replaceChildren();
+      return null;
     }
     const we = m.we;
     // The half-edge of the winged walk's first edge that leaves v (around a vertex) or lies on F.
@@ -147,22 +177,65 @@ export function createHalfEdgeTab(ctx, { table, model, selection }) {
     walkTitle.replaceChildren(vertexWalk ? 'Around ' : 'Along ', ...(vertexWalk ? V(element) : F(element)),
       vertexWalk ? ' in half-edge terms: h → twin(prev(h)), counter-clockwise' : ' in half-edge terms: h → next(h)');
     const same = steps.length === order.length && steps.every((st, k) => st.halfedge >> 1 === order[k]);
-    walkNote.textContent = `${steps.length} steps, one read each (${vertexWalk ? 'prev' : 'next'}; the twin is the other half of the same edge, found without a read)${same ? ': the same edges in the same order as the winged-edge walk.' : '. The face walk starts from the face\'s own half-edge, so it may meet the same edges from another first one.'}`;
-    walkBody.replaceChildren(...steps.map((st, k) => h('tr', { class: (st.halfedge >> 1) === order[k] ? undefined : 'is-mismatch' },
+    walkNote.textContent = `${steps.length} steps, one read each (${vertexWalk ? 'prev' : 'next'}; the twin is the other half of the same edge, found without a read)${same ? ': the same edges in the same order as the winged-edge walk.' : '. The face walk starts from the face\'s own half-edge, so it may meet the same edges from another first one.'}${vertexWalk ? ' next(twin(h)) turns the other way: clockwise.' : ''}`;
+    // A label's nodes are placed once: a fresh one for every place it is shown.
+    const name = () => (vertexWalk ? V(element) : F(element));
+    walkCode.replaceChildren(...(vertexWalk
+      ? [['Initialize: h₀ ← the half-edge of e₀ that leaves ', ...name(), ' (origin(h) = ', ...name(), ')'], ['Repeat: report edge(h)'],
+        ['  h ← twin(prev(h))  (one read: prev; twin(h) is h\'s pair)'], ['While: h ≠ h₀'], ['Done: all edges around ', ...name(), ', CCW']]
+      : [['Initialize: h₀ ← halfedge(', ...name(), ')  (one read: the face table)'], ['Repeat: report edge(h)'],
+        ['  h ← next(h)  (one read: next)'], ['While: h ≠ h₀'], ['Done: all edges of ', ...name(), ', CCW']]
+    ).map((parts, k) => h('li', { 'data-line': String(k) }, ...parts)));
+    walkBody.replaceChildren(...steps.map((st, k) => h('tr', { 'data-step': String(k + 1), class: (st.halfedge >> 1) === order[k] ? undefined : 'is-mismatch' },
       h('th', { scope: 'row' }, String(k + 1)), h('td', {}, ...H(st.halfedge)),
       h('td', {}, `${st.column}(`, ...H(st.halfedge), ') = ', ...H(st.read)),
       h('td', {}, ...[H(st.next)].flat(), vertexWalk ? [' = twin(', ...H(st.read), ')'] : []),
       h('td', {}, ...E(st.halfedge >> 1)), h('td', {}, ...[E(order[k] ?? -1)].flat()))));
+    return { steps, vertexWalk };
+  }
+  // Which step frame m.frame is (0 the start, 1..n the edges, n + 1 the end).
+  const stepOf = (m) => (m.frame ? (m.frame.done ? m.frame.order.length + 1 : m.frame.foundCount) : -1);
+  function showWalkFrame(m) {
+    if (!walk) { walkNow.textContent = ''; return; }
+    const k = stepOf(m);
+    const n = walk.steps.length;
+    const line = k <= 0 ? 0 : k > n ? 4 : 2;
+    for (const li of walkCode.children) li.classList.toggle('is-current', li.getAttribute('data-line') === String(line) || (line === 2 && li.getAttribute('data-line') === '1'));
+    for (const tr of walkBody.rows) {
+      const here = tr.getAttribute('data-step') === String(k);
+      tr.classList.toggle('is-highlighted', here);
+      if (here) tr.setAttribute('aria-current', 'step'); else tr.removeAttribute('aria-current');
+    }
+    // Reads so far: the start's one, then one per step (the winged edge reads two per step:
+    // the S (or L) test and the wing).
+    const reads = 1 + Math.min(Math.max(k, 0), n);
+    const wingedReads = 1 + 2 * Math.min(Math.max(k, 0), n);
+    const st = walk.steps[k - 1];
+    const what = k <= 0 ? ['Start at ', ...H(walk.steps[0]?.halfedge ?? -1), '.']
+      : k > n ? [`Back at `, ...H(walk.steps[0].halfedge), ` = h₀: ${n} edges met.`]
+        : ['Step ', String(k), ': report ', ...E(st.halfedge >> 1), '; read ', `${st.column}(`, ...H(st.halfedge), ') = ', ...H(st.read),
+          ...(walk.vertexWalk ? ['; its twin is ', ...H(st.next)] : []), '.'];
+    walkNow.replaceChildren(...what, ` Reads so far: ${reads} here, ${wingedReads} in the winged-edge walk.`);
+  }
+
+  // The cell the walk reads at this frame, for tabs.js to mark in the half-edge table
+  // (columns: 1 origin, 2 target, 3 face, 4 next, 5 prev, 6 twin), or null.
+  function walkMark(m) {
+    const k = stepOf(m);
+    const st = walk?.steps[k - 1];
+    if (!st) return null;
+    return { row: st.halfedge, read: st.column === 'prev' ? 5 : 4 };
   }
 
   const root = h('div', { class: 'half-edge-tab' },
     h('p', { class: 'hint' }, 'The half-edge structure (OpenMesh, pmp-library, CGAL, geometry-central; beyond the lectures), from the same mesh: each edge is two directed half-edges, one per side. A half-edge stores its origin vertex, its face (none on the boundary), the next and the previous half-edge around that face; its twin is the other half of its edge. A boundary half-edge\'s next and prev follow the boundary loop; a vertex stores one outgoing half-edge (on the boundary, the boundary one), a face one of its half-edges.'),
-    heading, note, correspondence, walkTitle, walkNote, walkTable, tables.halfedges.root, tables.vertices.root, tables.faces.root);
+    heading, note, scrolling(correspondence, 'The correspondence table'), walkTitle, walkNote, walkCode, walkNow, scrolling(walkTable, 'The walk in half-edge terms'), tables.halfedges.root, tables.vertices.root, tables.faces.root);
 
   return {
     root,
     tables,
     counts: { halfedge: () => 2 * model().E },
+    walkMark,
     update(m) { updateCorrespondence(m); updateWalk(m); },
   };
 }

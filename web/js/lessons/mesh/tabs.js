@@ -145,7 +145,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   const halfEdgeTab = createHalfEdgeTab(ctx, {
     model: () => model, selection,
     table: (spec) => (spec.kind === 'halfedge'
-      ? { kind: 'halfedge', ...createVirtualTable({ onRowEnter: (i) => hoverRow('edge')(i >> 1), onRowLeave: leave, onRowClick: (i) => pickRow('edge')(i >> 1), ...spec }) }
+      ? { kind: 'halfedge', ...createVirtualTable({ onRowEnter: (i) => hoverRow('edge')(i >> 1), onRowLeave: leave, onRowClick: (i) => { spec.onPick?.(i); pickRow('edge')(i >> 1); }, ...spec }) }
       : table(spec)),
   });
   Object.assign(tables, { heHalfedge: halfEdgeTab.tables.halfedges, heVertex: halfEdgeTab.tables.vertices, heFace: halfEdgeTab.tables.faces });
@@ -235,6 +235,8 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
     // Every table's marks are written first and the rows scrolled into view after, so the
     // layout is read once for all tables, not once per table between their marks.
     const reveals = [];
+    // The half-edge tab first: the cell its walk reads at this frame comes from it.
+    if (tab === 'half-edge') halfEdgeTab.update(model);
     for (const name of tabTables[tab] ?? []) {
       const kind = tableKind[name];
       const rows = { 'is-hovered': [], 'is-picked': [], 'is-highlighted': [] };
@@ -247,14 +249,23 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       if (kind === 'halfedge' && selection.pick?.kind === 'edge') rows['is-picked'].push(2 * selection.pick.index, 2 * selection.pick.index + 1);
       // While the edit player is inside an edit, its cell is the one marked, not the walk's.
       const inEdit = model.lastOperation && model.editStep < visibleSteps(model.lastOperation).length;
+      // The walk's row in this table, if the frame reads one of its rows.
+      let walkRow = null;
       if (frame && tab === 'winged' && !inEdit) {
         const walkTable = frame.table === 'edge' ? 'wingedEdge' : frame.table === 'vertex' ? 'wingedVertex' : 'wingedFace';
         if (walkTable === name) {
-          rows['is-highlighted'].push(frame.row);
+          walkRow = frame.row;
           if (frame.read !== null) read.push([frame.row, frame.read]);
           if (frame.compared !== null) compared.push([frame.row, frame.compared]);
         }
       }
+      // The same walk in half-edge terms: the half-edge whose prev (or next) it reads.
+      const heRead = frame && tab === 'half-edge' && !inEdit && kind === 'halfedge' ? halfEdgeTab.walkMark(model) : null;
+      if (heRead) {
+        walkRow = heRead.row;
+        read.push([heRead.row, heRead.read]);
+      }
+      if (walkRow !== null) rows['is-highlighted'].push(walkRow);
       const editCell = tab === 'winged' ? markEdit(name, kind, rows, read, inEdit) : null;
       // A number a removed element left (until compact): its row stays, struck through.
       const gapList = model.gapLists?.[`${kind === 'vertex' ? 'vertices' : kind === 'edge' || kind === 'halfedge' ? 'edges' : 'faces'}`];
@@ -264,7 +275,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       // a step back to a row it showed before reveals that row again.
       if (!rows['is-highlighted'].length && !editCell) { delete revealed[name]; delete revealedEdit[name]; }
       if (reveal && selection.pick?.kind === kind) reveals.push(() => tables[name].reveal(selection.pick.index));
-      else if ((frame || editCell) && tab === 'winged' && (rows['is-highlighted'].length || editCell)) {
+      else if ((frame || editCell) && (tab === 'winged' || tab === 'half-edge') && (rows['is-highlighted'].length || editCell)) {
         // The walk's (or the edit player's) row is scrolled into view when it moves, not on
         // every mark (a hover, a re-render): a person who scrolled the table keeps the place.
         // The edit's cell while the edit plays, and once more when the player reaches its last
@@ -278,7 +289,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
           // Revealing again after the column changed size shows what was shown before it.
           const toEdit = Boolean(editCell && (inEdit || editMoved || !frame || (again && revealedWhat[name] === 'edit')));
           revealedWhat[name] = toEdit ? 'edit' : 'walk';
-          const target = toEdit ? editCell : [frame.row, null];
+          const target = toEdit ? editCell : [walkRow ?? frame.row, null];
           reveals.push(() => {
             const row = tables[name].reveal(target[0]);
             // The walk's row (or the edit player's) is also brought into the side column's view
@@ -293,7 +304,6 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       }
     }
     for (const run of reveals) run();
-    if (tab === 'half-edge') halfEdgeTab.update(model);
   }
 
   // The edit player's marks (edit-panel.js) in winged-edge table `name`: the rows written so
