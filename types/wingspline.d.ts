@@ -866,8 +866,8 @@ export interface WingsplineApi {
   readonly meshLimits: MeshLimits;
   readonly tableDescriptors: readonly TableDescriptor[];
   readonly meshOperations: MeshOperationsDescriptor;
-  /** Query `kind` at the middle element of grids of n x n quads (F = 2 n²), one per even n of `sizes` (2..4000): the entries each representation reads. */
-  queryCostGrowth(kind: QueryKind, sizes: number[]): { sizes: Array<{ n: number; faces: number }>; reads: Array<Record<Representation, number>> };
+  /** Query `kind` at the middle element of grids of n x n quads (F = 2 n²), one per even n of `sizes` (2..4000): the entries each representation reads, and the half-edge view's (`'half-edge'`). */
+  queryCostGrowth(kind: QueryKind, sizes: number[]): { sizes: Array<{ n: number; faces: number }>; reads: Array<Record<Representation | 'half-edge', number>> };
   /** Operation `name` on grids of n x n quads (F = 2 n²), one per even n of `sizes`: what it costs each representation. */
   editCostGrowth(name: MeshOperation['op'], sizes: number[]): { sizes: Array<{ n: number; faces: number }>; costs: Array<Record<Representation, EditCost>> };
   parseMesh(text: string, options: ParseMeshOptions & { layout: 'csr' }): FaceSetCsr;

@@ -119,6 +119,7 @@ val mesh_query_cost_growth(const std::string& kind, const val& sizes) {
             val one = val::object();
             for (int r = 0; r < kRepresentationCount; ++r)
                 one.set(representation_key(static_cast<Representation>(r)), static_cast<double>(g.reads[i][r]));
+            one.set("half-edge", static_cast<double>(g.half_edge_reads[i]));
             reads.set(i, one);
         }
         val out = val::object();

@@ -4,6 +4,7 @@
 
 #include "cost_grids.h"
 #include "wingspline/mesh/generators.h"
+#include "wingspline/mesh/half_edge.h"
 
 #include <algorithm>
 
@@ -473,22 +474,36 @@ std::array<int64_t, kRepresentationCount> query_reads_on_grid(QueryKind kind, in
     return reads;
 }
 
+int64_t half_edge_query_reads_on_grid(QueryKind kind, int32_t n) {
+    cost_grids::require_even(n);
+    const WingedEdgeMesh w = WingedEdgeMesh::build(grid(n, n));
+    const HalfEdgeMesh h = HalfEdgeMesh::build(w);
+    return static_cast<int64_t>(half_edge_answer(kind, cost_grids::middle(query_element_kind(kind), w, n), h, w).entries_read);
+}
+
 QueryCostGrowth query_cost_growth(QueryKind kind, const std::vector<int32_t>& sizes) {
     for (const int32_t n : sizes) cost_grids::require_even(n);
     std::array<std::array<int64_t, kRepresentationCount>, 3> measured;
-    for (std::size_t i = 0; i < cost_grids::kFit.size(); ++i) measured[i] = query_reads_on_grid(kind, cost_grids::kFit[i]);
+    std::array<int64_t, 3> measured_half_edge{};
+    for (std::size_t i = 0; i < cost_grids::kFit.size(); ++i) {
+        measured[i] = query_reads_on_grid(kind, cost_grids::kFit[i]);
+        measured_half_edge[i] = half_edge_query_reads_on_grid(kind, cost_grids::kFit[i]);
+    }
     const auto evaluate = [&](int32_t n) {
         std::array<int64_t, kRepresentationCount> reads{};
         for (int r = 0; r < kRepresentationCount; ++r) reads[r] = cost_grids::quadratic_at({measured[0][r], measured[1][r], measured[2][r]}, n);
         return reads;
     };
-    if (evaluate(cost_grids::kCheck) != query_reads_on_grid(kind, cost_grids::kCheck))
+    const auto evaluate_half_edge = [&](int32_t n) { return cost_grids::quadratic_at(measured_half_edge, n); };
+    if (evaluate(cost_grids::kCheck) != query_reads_on_grid(kind, cost_grids::kCheck) ||
+        evaluate_half_edge(cost_grids::kCheck) != half_edge_query_reads_on_grid(kind, cost_grids::kCheck))
         throw Error("internal-error", "query costs: the counts on a 32 x 32 grid differ from the quadratic through 8, 16 and 24");
     QueryCostGrowth out;
     for (const int32_t n : sizes) {
         out.n.push_back(n);
         out.faces.push_back(2 * static_cast<int64_t>(n) * n);
         out.reads.push_back(evaluate(n));
+        out.half_edge_reads.push_back(evaluate_half_edge(n));
     }
     return out;
 }

@@ -13,6 +13,7 @@
 #include "wingspline/mesh/winged_edge.h"
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -238,6 +239,107 @@ TEST_CASE("half-edge: update() equals a fresh build after thousands of random ed
     INFO("edits " << edits << ", undos " << undos);
     CHECK(edits >= 2000);
     CHECK(undos >= 1000);
+}
+
+namespace {
+// Meshes the shared fixtures lack: a grid of quads with two holes (three boundary loops),
+// a fan of 50 triangles around one vertex (valence 51, on the boundary), and a closed fan of
+// 50 triangles plus a 50-gon cap (an interior vertex of valence 50 and a 50-sided face).
+std::vector<Fixture> harder_fixtures() {
+    IndexedMesh holes;
+    constexpr int kN = 7;
+    for (int y = 0; y <= kN; ++y)
+        for (int x = 0; x <= kN; ++x) holes.add_vertex(x, y, 0);
+    for (int y = 0; y < kN; ++y)
+        for (int x = 0; x < kN; ++x) {
+            if ((x == 2 && y == 2) || (x == 4 && y == 4)) continue; // the two holes
+            const int32_t a = y * (kN + 1) + x;
+            holes.add_face({a, a + 1, a + kN + 2, a + kN + 1});
+        }
+    IndexedMesh cone;
+    constexpr int kK = 50;
+    const int32_t apex = cone.add_vertex(0, 0, 1);
+    for (int i = 0; i < kK; ++i) cone.add_vertex(std::cos(2 * M_PI * i / kK), std::sin(2 * M_PI * i / kK), 0);
+    std::vector<int32_t> cap;
+    for (int i = 0; i < kK; ++i) {
+        cone.add_face({apex, 1 + i, 1 + (i + 1) % kK});
+        cap.push_back(1 + (kK - i) % kK); // the cap's corners, CCW seen from below
+    }
+    cone.add_face(cap.data(), static_cast<int32_t>(cap.size()));
+    std::vector<Fixture> out;
+    out.push_back({"two holes", WingedEdgeMesh::build(holes)});
+    out.push_back({"fan of 50", WingedEdgeMesh::build(open_fan(50))});
+    out.push_back({"cone of 50 and its cap", WingedEdgeMesh::build(cone)});
+    return out;
+}
+
+// The boundary loops of the winged edge, counted independently of the half-edge view: edges
+// with a missing face, joined end to start.
+int boundary_loops(const WingedEdgeMesh& w) {
+    std::vector<std::pair<int32_t, int32_t>> sides; // (from, to) along the boundary, face on the left missing
+    for (const EdgeRecord& r : w.edges()) {
+        if (r.start == kNone) continue;
+        if (r.left == kNone) sides.push_back({r.start, r.end});
+        if (r.right == kNone) sides.push_back({r.end, r.start});
+    }
+    std::vector<int32_t> next_of(w.vertex_count(), kNone);
+    for (const auto& [a, b] : sides) next_of[a] = b;
+    std::vector<char> seen(w.vertex_count(), 0);
+    int loops = 0;
+    for (const auto& [a, b] : sides) {
+        if (seen[a]) continue;
+        ++loops;
+        for (int32_t v = a; v != kNone && !seen[v]; v = next_of[v]) seen[v] = 1;
+    }
+    return loops;
+}
+} // namespace
+
+TEST_CASE("half-edge: several boundary loops, valence 50 and a 50-gon, through random edits", "[mesh][half-edge]") {
+    const std::vector<int> expected_loops = {3, 1, 0};
+    std::size_t edits = 0;
+    std::vector<Fixture> start = harder_fixtures();
+    for (std::size_t k = 0; k < start.size(); ++k) {
+        INFO(start[k].name);
+        const HalfEdgeMesh h0 = HalfEdgeMesh::build(start[k].mesh);
+        require_valid(h0, start[k].mesh);
+        // Each boundary loop is one next-cycle of boundary half-edges.
+        int cycles = 0;
+        std::vector<char> seen(h0.halfedge_count(), 0);
+        for (int32_t x = 0; x < h0.halfedge_count(); ++x) {
+            if (!h0.is_boundary(x) || seen[x]) continue;
+            ++cycles;
+            for (int32_t y = x; !seen[y]; y = h0.next(y)) {
+                REQUIRE(h0.is_boundary(y));
+                seen[y] = 1;
+            }
+        }
+        CHECK(cycles == expected_loops[k]);
+        CHECK(boundary_loops(start[k].mesh) == expected_loops[k]);
+        // Every vertex's walk meets exactly its valence, counted from the edge table.
+        std::vector<int> valence(start[k].mesh.vertex_count(), 0);
+        for (const EdgeRecord& r : start[k].mesh.edges()) ++valence[r.start], ++valence[r.end];
+        for (int32_t v = 0; v < h0.vertex_count(); ++v) CHECK(static_cast<int>(h0.vertex_walk(v).size()) == valence[v]);
+        for (uint32_t seed = 1; seed <= 8; ++seed) {
+            std::vector<Fixture> again = harder_fixtures();
+            WingedEdgeMesh& w = again[k].mesh;
+            HalfEdgeMesh h = HalfEdgeMesh::build(w);
+            std::mt19937 rng(100 + seed);
+            for (int round = 0; round < 150; ++round) {
+                const Operation op = operation_of(random_call(w, rng));
+                if (!w.check(op).ok) continue;
+                const ChangeRecord c = w.apply(op);
+                if (!c.changed()) continue;
+                INFO("seed " << seed << " round " << round << " " << c.op);
+                h.update(w, c);
+                REQUIRE(h == HalfEdgeMesh::build(w));
+                require_valid(h, w);
+                ++edits;
+            }
+        }
+    }
+    INFO("edits " << edits);
+    CHECK(edits >= 1000);
 }
 
 TEST_CASE("half-edge: the walks meet the winged-edge walks' edges in the same order", "[mesh][half-edge]") {

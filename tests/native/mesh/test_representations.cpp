@@ -321,6 +321,19 @@ TEST_CASE("query_cost_growth equals real counted grids (968 and 9,800 faces here
         CHECK(g.reads[0][kWE] == winged_reads);
         CHECK(g.reads[1][kWE] == winged_reads);
     }
+    // The half-edge view at the same elements: the vertex's (face's) half-edge, then per step
+    // (the face or the twin's face swept,) one prev (next); faces of an edge: face(2e), face(2e+1).
+    // One read per step fewer than the winged edge, which first tests which side it is on.
+    const std::vector<std::pair<QueryKind, int64_t>> half_edge_walks{
+        {QueryKind::FacesAroundVertex, 1 + 2 * 6}, {QueryKind::EdgesAroundVertex, 1 + 6},
+        {QueryKind::EdgesOfFace, 1 + 3},           {QueryKind::NeighboursOfFace, 1 + 2 * 3},
+        {QueryKind::FacesOfEdge, 2}};
+    for (const auto& [kind, reads] : half_edge_walks) {
+        INFO(static_cast<int>(kind));
+        const QueryCostGrowth g = query_cost_growth(kind, {22, 70, 224, 708});
+        CHECK(g.half_edge_reads == std::vector<int64_t>{reads, reads, reads, reads});
+        CHECK(half_edge_query_reads_on_grid(kind, 22) == reads);
+    }
     // Foley's edge list must inspect every edge for a vertex's edges: it grows with E
     // (E = 3n^2 + 2n on the grid), at least one read per edge at every size up to a million faces.
     const QueryCostGrowth v = query_cost_growth(QueryKind::EdgesAroundVertex, {22, 70, 224, 708});

@@ -171,3 +171,15 @@ test('the subdivision part has no half-edge view: part-not-loaded', async () => 
     mesh.dispose();
   }
 });
+
+// The cost chart's half-edge line: at the middle vertex of the triangulated grid (valence 6)
+// the half-edge reads the vertex's half-edge, then per step face(h) and prev(h): 1 + 2 x 6 = 13
+// at every size; the winged edge also tests which side it is on: 1 + 3 x 6 = 19.
+test('queryCostGrowth: the half-edge reads stay flat from a thousand to a million faces', () => {
+  const { sizes, reads } = api.queryCostGrowth('faces-around-vertex', [22, 708]);
+  assert.deepEqual(sizes.map((s) => s.faces), [968, 1002528]);
+  assert.deepEqual(reads.map((r) => r['half-edge']), [13, 13]);
+  assert.deepEqual(reads.map((r) => r['winged-edge']), [19, 19]);
+  // Edges of a triangle: the face's half-edge, then three nexts.
+  assert.deepEqual(api.queryCostGrowth('edges-of-face', [22]).reads[0]['half-edge'], 4);
+});

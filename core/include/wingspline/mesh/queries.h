@@ -51,6 +51,9 @@ ElementKind query_element_kind(QueryKind kind);
 // n x n quads (n even; the element edit_costs.h's grid_operation edits: the middle vertex,
 // the edge to its right, the face F/2 + n).
 std::array<int64_t, kRepresentationCount> query_reads_on_grid(QueryKind kind, int32_t n);
+// The same for the half-edge view of that grid (half_edge.h, half_edge_answer): beyond the
+// lectures, beside the six.
+int64_t half_edge_query_reads_on_grid(QueryKind kind, int32_t n);
 
 // The same at each grid size in `sizes` (even n up to 4000, F = 2 n^2 up to 32 million):
 // measured on real grids at n = 8, 16, 24, each count fitted exactly by a + b n + c n^2
@@ -65,6 +68,7 @@ struct QueryCostGrowth {
     std::vector<int32_t> n;     // quads across, per size
     std::vector<int64_t> faces; // F = 2 n^2
     std::vector<std::array<int64_t, kRepresentationCount>> reads;
+    std::vector<int64_t> half_edge_reads; // the half-edge view's, fitted and checked the same way
 };
 QueryCostGrowth query_cost_growth(QueryKind kind, const std::vector<int32_t>& sizes);
 

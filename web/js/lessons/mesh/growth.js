@@ -5,7 +5,7 @@
 // and an edit's reads at the middle element of grids of n x n quads (F = 2 n² triangles),
 // about a thousand to a million faces (COST_GRIDS; api.queryCostGrowth, api.editCostGrowth:
 // counted on small grids and exact at every size), and the storage of real grids of
-// GROWTH_SIZES (mesh.storage: bytes per representation). The page only plots them, on
+// GROWTH_SIZES (mesh.storage and mesh.halfEdgeStorage: bytes per representation). The page only plots them, on
 // log-log axes, and lists them in a table for the keyboard and screen readers.
 import { h } from '../../app/dom.js';
 import { plotLabels, plotFontPx } from '../../app/label-layout.js';
@@ -35,7 +35,7 @@ export function storageSeries(api) {
     const mesh = api.buildMesh(api.generateMesh('grid', { nx: n, ny: n, layout: 'csr' }));
     try {
       sizes.push({ n, faces: mesh.counts().faces });
-      for (const [rep, a] of Object.entries(mesh.storage())) (series[rep] ??= []).push(a.bytes);
+      for (const [rep, a] of Object.entries({ ...mesh.storage(), 'half-edge': mesh.halfEdgeStorage() })) (series[rep] ??= []).push(a.bytes);
     } finally {
       mesh.dispose();
     }
