@@ -832,6 +832,23 @@ export type EditFindingCode = 'blank' | 'unknown-label' | 'removed-element' | 'w
   | 'not-incident' | 'not-on-face' | 'removed' | 'kept' | 'new-removed' | 'blank-label' | 'used-label' | 'duplicate-label';
 /** As MeshTableFinding: index is the row's position in its table of the answer; field 'removed' or 'label' for those marks. */
 export interface EditFinding extends Omit<MeshTableFinding, 'code'> { code: EditFindingCode }
+/** The half-edge edit exercise's answer: cells 4 per half-edge row (origin, face, next, prev), 1 per vertex or face row (its half-edge); labels empty. */
+export interface HalfEdgeEditAnswer { vertices: EditTableAnswer; halfedges: EditTableAnswer; faces: EditTableAnswer }
+export interface HalfEdgeEditQuestion {
+  /** Per table, the rows of the half-edge view the operation changes, existing then new (0-based, ascending). */
+  rows: { vertices: number[]; halfedges: number[]; faces: number[] };
+  /** Per table, the row count before the operation: a row at or past it is new, numbered as the core numbers it. */
+  beforeCount: { vertices: number; halfedges: number; faces: number };
+  operation: string;
+}
+export type HalfEdgeEditFindingCode = 'blank' | 'wrong-origin' | 'wrong-face' | 'wrong-next' | 'wrong-prev' | 'not-leaving' | 'not-on-face' | 'removed' | 'kept';
+export interface HalfEdgeEditCheck {
+  correct: boolean;
+  /** table 'edge' for a half-edge row; field 'origin', 'face', 'next', 'prev', 'halfedge' or 'removed'. */
+  findings: Array<Omit<MeshTableFinding, 'code'> & { code: HalfEdgeEditFindingCode }>;
+  /** The right answer: the view's own values after the operation. */
+  worked: { vertices: { cells: number[]; removed: boolean[]; labels: number[] }; halfedges: { cells: number[]; removed: boolean[]; labels: number[] }; faces: { cells: number[]; removed: boolean[]; labels: number[] } };
+}
 export interface EditCheck {
   correct: boolean;
   findings: EditFinding[];
@@ -909,6 +926,10 @@ export interface WingsplineApi {
   editQuestion(mesh: WalkExerciseMesh, edits: ReadonlyArray<MeshOperation>, operation: MeshOperation): EditQuestion;
   /** Checks an edit exercise's answer against the operation's change record (new elements under any labels). */
   checkEditAnswer(mesh: WalkExerciseMesh, edits: ReadonlyArray<MeshOperation>, operation: MeshOperation, answer: EditAnswer): EditCheck;
+  /** The same edit in half-edge terms: the rows of the half-edge view it changes (docs/exercises.md). */
+  halfEdgeEditQuestion(mesh: WalkExerciseMesh, edits: ReadonlyArray<MeshOperation>, operation: MeshOperation): HalfEdgeEditQuestion;
+  /** Checks a half-edge edit answer against the view after the operation. */
+  checkHalfEdgeEditAnswer(mesh: WalkExerciseMesh, edits: ReadonlyArray<MeshOperation>, operation: MeshOperation, answer: HalfEdgeEditAnswer): HalfEdgeEditCheck;
 
   // ---- curves (docs/api-curves.md)
   /** form: 'descending' (lectures 000, 003; the default), 'ascending' (002) or 'transposed' (001). */

@@ -7,6 +7,7 @@
 #include "exercise_shared.h"
 
 #include "wingspline/mesh/exercise_edit.h"
+#include "wingspline/mesh/exercise_half_edge_edit.h"
 
 namespace wingspline::bindings {
 namespace {
@@ -14,6 +15,8 @@ namespace {
 using namespace wingspline::mesh;
 
 const char* const kTableKeys[3] = {"vertices", "edges", "faces"};
+// The half-edge edit exercise's tables (exercise_half_edge_edit.h): the Edge slot holds half-edges.
+const char* const kHalfEdgeTableKeys[3] = {"vertices", "halfedges", "faces"};
 
 // {name: 'compact'} is the lesson's Compact step among the edits (Operation{}, exercise_edit.h).
 Operation operation_value(const val& op) {
@@ -44,10 +47,10 @@ WingedEdgeMesh before_mesh(const val& positions, const val& face_offsets, const 
     return edited_exercise_mesh(m, options, list);
 }
 
-EditAnswer answer_value(const val& answer) {
+EditAnswer answer_value(const val& answer, const char* const* keys = kTableKeys) {
     EditAnswer a;
     for (int t = 0; t < 3; ++t) {
-        const val table = answer[kTableKeys[t]];
+        const val table = answer[keys[t]];
         a.tables[t].cells = to_ints(table["cells"]);
         const std::vector<int32_t> removed = to_ints(table["removed"]);
         a.tables[t].removed.assign(removed.begin(), removed.end());
@@ -56,7 +59,7 @@ EditAnswer answer_value(const val& answer) {
     return a;
 }
 
-val answer_object(const EditAnswer& a) {
+val answer_object(const EditAnswer& a, const char* const* keys = kTableKeys) {
     val r = val::object();
     for (int t = 0; t < 3; ++t) {
         val table = val::object();
@@ -64,7 +67,7 @@ val answer_object(const EditAnswer& a) {
         std::vector<int32_t> removed(a.tables[t].removed.begin(), a.tables[t].removed.end());
         table.set("removed", to_typed_array(removed));
         table.set("labels", to_typed_array(a.tables[t].labels));
-        r.set(kTableKeys[t], table);
+        r.set(keys[t], table);
     }
     return r;
 }
@@ -103,10 +106,45 @@ val check_edit_value(const val& positions, const val& face_offsets, const val& f
     });
 }
 
+// The same in half-edge terms: {rows: {vertices, halfedges, faces}, beforeCount: {...}, operation}
+val half_edge_edit_question_value(const val& positions, const val& face_offsets, const val& face_vertices, const val& edges,
+                                  const val& vertex_edges, const val& face_edges, const val& edits, const val& op) {
+    return guarded([&] {
+        const WingedEdgeMesh before = before_mesh(positions, face_offsets, face_vertices, edges, vertex_edges, face_edges, edits);
+        const HalfEdgeEditQuestion q = half_edge_edit_question(before, question_operation(op));
+        val rows = val::object(), counts = val::object();
+        for (int t = 0; t < 3; ++t) {
+            rows.set(kHalfEdgeTableKeys[t], to_typed_array(q.rows[t]));
+            counts.set(kHalfEdgeTableKeys[t], q.before_count[t]);
+        }
+        val r = val::object();
+        r.set("rows", rows);
+        r.set("beforeCount", counts);
+        r.set("operation", q.operation);
+        return r;
+    });
+}
+
+// {findings, worked}: the answer's tables {vertices, halfedges, faces}, cells 4 per half-edge row.
+val check_half_edge_edit_value(const val& positions, const val& face_offsets, const val& face_vertices, const val& edges,
+                               const val& vertex_edges, const val& face_edges, const val& edits, const val& op, const val& answer) {
+    return guarded([&] {
+        const WingedEdgeMesh before = before_mesh(positions, face_offsets, face_vertices, edges, vertex_edges, face_edges, edits);
+        const Operation operation = question_operation(op);
+        const EditCheck c = check_half_edge_edit_answer(before, operation, answer_value(answer, kHalfEdgeTableKeys));
+        val r = val::object();
+        r.set("findings", findings_value(c.findings));
+        r.set("worked", answer_object(worked_half_edge_edit_answer(before, operation), kHalfEdgeTableKeys));
+        return r;
+    });
+}
+
 } // namespace
 } // namespace wingspline::bindings
 
 EMSCRIPTEN_BINDINGS(wingspline_exercise_edit) {
+    emscripten::function("exerciseHalfEdgeEditQuestion", &wingspline::bindings::half_edge_edit_question_value);
+    emscripten::function("exerciseCheckHalfEdgeEdit", &wingspline::bindings::check_half_edge_edit_value);
     emscripten::function("exerciseEditQuestion", &wingspline::bindings::edit_question_value);
     emscripten::function("exerciseCheckEdit", &wingspline::bindings::check_edit_value);
 }

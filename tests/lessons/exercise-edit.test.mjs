@@ -242,3 +242,44 @@ test('an exercise made from an imported mesh carries the mesh inline and opens w
   assert.deepEqual(q.added, { vertices: 0, edges: 0, faces: 0 });
   assert.ok(q.rows.edges.includes(2));
 });
+
+// The gallery's flip of e3 in half-edge terms (check.structure "half-edge"), through the same
+// grade function the grader uses. By hand (tests/native/mesh/test_exercise_half_edge_edit.cpp):
+// after the flip F1 = h3 h9 h5, F2 = h2 h6 h8; rows h2 h3 h5 h6 h8 h9 change and F1's half-edge.
+const HALF_EDGE_FLIP_E3 = {
+  halfedges: [['v3', 'F2', 'h6', 'h8'], ['v1', 'F1', 'h9', 'h5'], ['v4', 'F1', 'h3', 'h9'], ['v1', 'F2', 'h8', 'h2'], ['v4', 'F2', 'h2', 'h6'], ['v2', 'F1', 'h5', 'h3']],
+  vertices: [],
+  faces: [['h5']],
+};
+test('mesh-half-edge-flip-e3: the half-edge rows worked by hand are right; every wrong cell is named without its value; the worked answer lists them', () => {
+  const { exercise, subject } = opened('mesh-half-edge-flip-e3');
+  assert.deepEqual(exercise.check, { kind: 'edit', op: { op: 'flip-edge', e: 3 }, structure: 'half-edge' });
+  const answer = Object.fromEntries(Object.entries(HALF_EDGE_FLIP_E3).map(([t, rows]) => [t, { cells: rows.map((r) => [...r]), removed: rows.map(() => false), labels: [] }]));
+  const right = gradeEdit({ api, check: exercise.check, subject, answer });
+  assert.deepEqual(right.findings, []);
+  assert.equal(right.correct, true);
+  const rowLabels = { halfedges: ['h2', 'h3', 'h5', 'h6', 'h8', 'h9'], faces: ['F1'] };
+  let named = 0;
+  for (const t of ['halfedges', 'faces']) {
+    answer[t].cells.forEach((row, i) => row.forEach((good, k) => {
+      const wrong = structuredClone(answer);
+      // A label of the right kind that is surely wrong: h1 is on the boundary, on no face of these rows.
+      const ref = t === 'faces' ? 'h' : ['v', 'F', 'h', 'h'][k];
+      wrong[t].cells[i][k] = ref === 'F' ? (good === 'F3' ? 'F1' : 'F3') : good === `${ref}1` ? `${ref}2` : `${ref}1`;
+      const r = gradeEdit({ api, check: exercise.check, subject, answer: wrong });
+      assert.equal(r.correct, false);
+      assert.equal(r.findings.length, 1, JSON.stringify(r.findings));
+      assert.match(r.findings[0].text, new RegExp(`^Row ${rowLabels[t][i]}, column ${t === 'faces' ? 'half-edge' : ['origin', 'face', 'next', 'prev'][k]}`));
+      const said = r.findings[0].text.replace(new RegExp(`Row ${rowLabels[t][i]}|next\\(${rowLabels[t][i]}\\)|prev\\(${rowLabels[t][i]}\\)|${rowLabels[t][i]} |flip e3`, 'g'), '');
+      if (t !== 'faces') assert.doesNotMatch(said, new RegExp(`\\b${good}\\b`), r.findings[0].text);
+      assert.equal(typeof r.findings[0].hint, 'string');
+      named += 1;
+    }));
+  }
+  assert.equal(named, 25);
+  // Unreadable shapes are "could not be read", never an exception.
+  assert.equal(gradeEdit({ api, check: exercise.check, subject, answer: { halfedges: {} } }).incomplete, true);
+  const lines = workedEdit({ api, check: exercise.check, subject }).lines;
+  assert.equal(lines[0], 'After flip e3:');
+  assert.ok(lines.includes('h8: origin v4, face F2, next h2, prev h6'), lines.join('\n'));
+});

@@ -28,10 +28,15 @@ function editMeshArguments(mesh, registry, edits, operation) {
   return [Float64Array.from(positions), faceOffsets, faceVertices, ...walkNumbering(mesh), before, asValue(operation)];
 }
 
-function editAnswer(answer) {
-  if (answer === null || typeof answer !== 'object') fail('invalid-answer', 'the answer to an edit is {vertices, edges, faces}');
+// The half-edge edit exercise's tables (exercise_half_edge_edit.h): cells 4 per half-edge row
+// (origin, face, next, prev), 1 per vertex or face row (its half-edge); labels stay empty (the
+// new elements take the core's numbers).
+const HALF_EDGE_EDIT_TABLES = Object.freeze(['vertices', 'halfedges', 'faces']);
+
+function editAnswer(answer, tables = EDIT_TABLES) {
+  if (answer === null || typeof answer !== 'object') fail('invalid-answer', `the answer to an edit is {${tables.join(', ')}}`);
   const out = {};
-  for (const key of EDIT_TABLES) {
+  for (const key of tables) {
     const t = answer[key];
     if (t === null || typeof t !== 'object') fail('invalid-answer', `the answer's ${key} must be {cells, removed, labels}`);
     const removed = Array.isArray(t.removed) ? t.removed.map((x) => (x ? 1 : 0)) : t.removed;
@@ -44,7 +49,7 @@ function editAnswer(answer) {
   return out;
 }
 
-const plainEditAnswer = (w) => Object.fromEntries(EDIT_TABLES.map((key) => [key, {
+const plainEditAnswer = (w, tables = EDIT_TABLES) => Object.fromEntries(tables.map((key) => [key, {
   cells: Array.from(w[key].cells), removed: Array.from(w[key].removed, (x) => x !== 0), labels: Array.from(w[key].labels),
 }]));
 
@@ -74,6 +79,29 @@ export function createExerciseEditApi(raw) {
       const r = unwrap(raw.exerciseCheckEdit(...args, editAnswer(answer)));
       const findings = plainFindings(r.findings);
       return { correct: findings.length === 0, findings, worked: plainEditAnswer(r.worked) };
+    },
+    // The same edit in half-edge terms: the rows of the half-edge view (origin, face, next,
+    // prev per half-edge; one half-edge per vertex and per face) that `operation` changes,
+    // existing then new, 0-based and ascending, and each table's row count before (a row at or
+    // past it is new, numbered as the core numbers it): {rows: {vertices, halfedges, faces},
+    // beforeCount: {vertices, halfedges, faces}, operation}. Errors as editQuestion's.
+    halfEdgeEditQuestion(mesh, edits, operation) {
+      const r = unwrap(raw.exerciseHalfEdgeEditQuestion(...editMeshArguments(mesh, operations(), edits, operation)));
+      return {
+        rows: Object.fromEntries(HALF_EDGE_EDIT_TABLES.map((key) => [key, Array.from(r.rows[key])])),
+        beforeCount: { vertices: r.beforeCount.vertices, halfedges: r.beforeCount.halfedges, faces: r.beforeCount.faces },
+        operation: r.operation,
+      };
+    },
+    // Checks an answer to it ({vertices, halfedges, faces}, each {cells, removed, labels: []}):
+    // {correct, findings (table 'edge' for a half-edge row), worked}. A vertex's half-edge is
+    // right when it leaves the vertex (a boundary one on the boundary), a face's when it lies on
+    // the face. Errors as checkEditAnswer's.
+    checkHalfEdgeEditAnswer(mesh, edits, operation, answer) {
+      const args = editMeshArguments(mesh, operations(), edits, operation);
+      const r = unwrap(raw.exerciseCheckHalfEdgeEdit(...args, editAnswer(answer, HALF_EDGE_EDIT_TABLES)));
+      const findings = plainFindings(r.findings);
+      return { correct: findings.length === 0, findings, worked: plainEditAnswer(r.worked, HALF_EDGE_EDIT_TABLES) };
     },
   };
 }

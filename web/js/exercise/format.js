@@ -112,7 +112,7 @@ const CHECKS = {
     kind: oneOf('subdivide'), scheme: oneOf('loop', 'catmull-clark'), ask: oneOf('mask', 'counts'),
     point: object({ type: oneOf('vertex', 'edge', 'face'), element: ordinal }), steps: integer({ min: 1, max: 4 }),
   }, ['point', 'steps']],
-  edit: [{ kind: oneOf('edit'), op: (v, path) => readEditOperation(v, path) }, []],
+  edit: [{ kind: oneOf('edit'), op: (v, path) => readEditOperation(v, path), structure: oneOf('winged-edge', 'half-edge') }, ['structure']],
 };
 
 // Kind subdivide: a mask question names its new point (and no steps: it is about one step);

@@ -15,6 +15,8 @@ import { h, setChildren } from '../../app/dom.js';
 import { ExerciseError } from '../format.js';
 import { refuseLargeMesh, replayEdits } from '../subjects.js';
 import { readLabel, label, BLANK } from './table.js';
+import { gradeHalfEdgeEdit, workedHalfEdgeEdit, createHalfEdgeEditKind } from './edit-half-edge.js';
+import { readCards, restoreCards, markCards, clearCards, columnArrows } from './edit-cards.js';
 
 const TABLES = /** @type {const} */ (['vertices', 'edges', 'faces']);
 const REF = /** @type {Record<string, 'vertex' | 'edge' | 'face'>} */ ({ vertices: 'vertex', edges: 'edge', faces: 'face' });
@@ -158,6 +160,7 @@ function groupBlanks(findings) {
  * @returns {{ correct: boolean, partial?: boolean, incomplete?: boolean, findings: Array<{ text: string, hint?: string }>, note?: string }}
  */
 export function gradeEdit({ api, check, subject, answer }) {
+  if (check.structure === 'half-edge') return gradeHalfEdgeEdit({ api, check, subject, answer, operationOf });
   const q = questionOf(api, check, subject);
   if (!fits(answer, q)) return UNREADABLE;
   const typed = TABLES.some((t) => answer[t].removed.some(Boolean) || answer[t].labels.some((x) => x.trim())
@@ -178,6 +181,7 @@ export function gradeEdit({ api, check, subject, answer }) {
  * @param {{ api: any, check: any, subject: any }} parts
  */
 export function workedEdit({ api, check, subject }) {
+  if (check.structure === 'half-edge') return workedHalfEdgeEdit({ api, check, subject, operationOf });
   const q = questionOf(api, check, subject);
   const numbers = Object.fromEntries(TABLES.map((t) => [t, {
     cells: Array(rowCount(q, t) * width(t)).fill(BLANK), removed: Array(rowCount(q, t)).fill(false), labels: Array(q.added[t]).fill(BLANK),
@@ -204,6 +208,8 @@ function workedLines(q, w) {
 
 /** @param {any} parts */
 export function createEditKind({ api, check, subject }) {
+  // The same operation asked in half-edge terms (structure "half-edge"): edit-half-edge.js.
+  if (check.structure === 'half-edge') return createHalfEdgeEditKind({ api, check, subject, operationOf });
   const asked = subject();
   const q = questionOf(api, check, asked);
   // The rows as they read before the operation, for reading beside the answer.
@@ -255,55 +261,33 @@ export function createEditKind({ api, check, subject }) {
     }
     root.append(section);
   }
-  // Up and down move to the same column of the row above or below (a grid, by keyboard).
-  root.addEventListener('keydown', (event) => {
-    const el = event.target;
-    if (!(el instanceof HTMLInputElement) || (event.key !== 'ArrowUp' && event.key !== 'ArrowDown')) return;
-    const all = /** @type {HTMLInputElement[]} */ ([...root.querySelectorAll(`input[data-col="${el.dataset.col}"]`)]);
-    const next = all[all.indexOf(el) + (event.key === 'ArrowDown' ? 1 : -1)];
-    if (next) { event.preventDefault(); next.focus(); }
-  });
-
-  function answer() {
-    return Object.fromEntries(TABLES.map((t) => [t, inputs[t]
-      ? { cells: inputs[t].cells.map((row) => row.map((i) => i.value)), removed: inputs[t].removed.map((i) => i.checked), labels: inputs[t].labels.map((i) => i.value) }
-      : { cells: [], removed: [], labels: [] }]));
-  }
+  columnArrows(root);
+  const answer = () => readCards(TABLES, inputs);
 
   return {
     root,
     answer,
     restore(saved) {
-      if (!fits(saved, q)) return;
-      for (const t of TABLES) {
-        if (!inputs[t]) continue;
-        saved[t].cells.forEach((row, i) => row.forEach((v, k) => { inputs[t].cells[i][k].value = v; }));
-        saved[t].removed.forEach((v, i) => { inputs[t].removed[i].checked = v; });
-        saved[t].labels.forEach((v, n) => { inputs[t].labels[n].value = v; });
-      }
+      if (fits(saved, q)) restoreCards(TABLES, inputs, saved);
     },
     check() {
       const result = gradeEdit({ api, check, subject: asked, answer: answer() });
       // Mark the cells named (by their row and column), so they can be found at a glance.
-      for (const input of root.querySelectorAll('input[aria-invalid]')) input.removeAttribute('aria-invalid');
+      const named = [];
       if (!result.correct && !result.incomplete) {
         const read = readAnswer(answer(), q);
         if (!read.problems.length) {
           for (const f of api.checkEditAnswer(asked.loaded, asked.edits ?? [], q.op, read.answer).findings) {
             const t = f.table === 'vertex' ? 'vertices' : f.table === 'edge' ? 'edges' : 'faces';
-            const k = f.field === 'label' ? 'label' : f.field === 'removed' ? 'removed' : String(t === 'edges' ? EDGE_FIELDS.indexOf(f.field) : 0);
-            root.querySelector(`input[data-table="${t}"][data-row="${f.index}"][data-col="${k}"]`)?.setAttribute('aria-invalid', 'true');
+            named.push([t, f.index, f.field === 'label' ? 'label' : f.field === 'removed' ? 'removed' : String(t === 'edges' ? EDGE_FIELDS.indexOf(f.field) : 0)]);
           }
         }
       }
+      markCards(root, named);
       return result;
     },
     worked() { return workedEdit({ api, check, subject: asked }); },
-    reset() {
-      for (const input of root.querySelectorAll('input')) {
-        if (input instanceof HTMLInputElement) { input.value = ''; input.checked = false; input.removeAttribute('aria-invalid'); }
-      }
-    },
+    reset() { clearCards(root); },
   };
 }
 

@@ -15,10 +15,10 @@ export const BLANK = -2;
 
 // How each table names elements: the slides' v1, e1, F1 and "none"; lecture 001's edge list
 // writes V1, E1, P1 and λ.
-const NAMES = { vertex: 'v', edge: 'e', face: 'F', none: 'none' };
+const NAMES = { vertex: 'v', edge: 'e', face: 'F', halfedge: 'h', none: 'none' };
 const TABLE_NAMES = { 'edge-list': { vertex: 'V', edge: 'E', face: 'P', none: 'λ' } };
 const namesOf = (table) => ({ ...NAMES, ...TABLE_NAMES[table] });
-const REF_NAME = { vertex: 'a vertex', edge: 'an edge', face: 'a face' };
+const REF_NAME = { vertex: 'a vertex', edge: 'an edge', face: 'a face', halfedge: 'a half-edge' };
 const NONE_WORDS = new Set(['none', '-', '—', '–', 'λ', 'nil', 'null']);
 
 // Each exercise table is one or more of the core's tables (api.tableDescriptors, the one
@@ -57,7 +57,7 @@ const labelIn = (names, ref, i) => (i === NONE ? names.none : i === BLANK ? '' :
 
 /**
  * Reads one typed label: {value} (0-based, NONE, BLANK) or {problem}.
- * @param {string} raw @param {'vertex'|'edge'|'face'} ref @param {number} count @param {boolean} allowNone
+ * @param {string} raw @param {'vertex'|'edge'|'face'|'halfedge'} ref @param {number} count @param {boolean} allowNone
  */
 export function readLabel(raw, ref, count, allowNone, names = NAMES) {
   const PREFIX = names;
@@ -67,7 +67,7 @@ export function readLabel(raw, ref, count, allowNone, names = NAMES) {
     return allowNone ? { value: NONE } : { problem: `"${s}": this column always names ${REF_NAME[ref]}` };
   }
   const m = /^([a-zA-Z]?)\s*(\d{1,7})$/.exec(s);
-  const letters = { vertex: 'vV', edge: 'eE', face: 'fFpP' }[ref];
+  const letters = { vertex: 'vV', edge: 'eE', face: 'fFpP', halfedge: 'hH' }[ref];
   if (!m || (m[1] !== '' && !letters.includes(m[1]))) return { problem: `"${s.slice(0, 20)}" is not ${REF_NAME[ref]} (write ${PREFIX[ref]}1 to ${PREFIX[ref]}${count}${allowNone ? `, or ${names.none}` : ''})` };
   const n = Number(m[2]);
   if (n < 1 || n > count) return { problem: `"${s}" is not ${REF_NAME[ref]} of this mesh (${PREFIX[ref]}1 to ${PREFIX[ref]}${count})` };
