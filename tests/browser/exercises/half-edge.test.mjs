@@ -138,3 +138,30 @@ test('made at level worked, the half-edge walk\'s worked answer lists each step 
   const lines = await page.locator('#exercise-worked li').allInnerTexts();
   assert.deepEqual(lines.map((l) => l.split(':')[0]), ['h4 → h11', 'h11 → h9', 'h9 → h5', 'h5 → h4']);
 });
+
+test('made from the Half-edge tab: the dialog suggests the half-edge table and the half-edge walk, and both play', async () => {
+  const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
+  const page = await context.newPage();
+  await page.goto(`${env.site.url}mesh.html`);
+  await page.waitForSelector('body[data-ready="true"]');
+  await page.locator('#tab-half-edge').click();
+  await page.locator('[data-action="make-exercise"]').click();
+  const played = async (kind) => {
+    await page.locator('#author-kind').selectOption(kind);
+    await page.locator('#author-copy-link').click();
+    await page.waitForSelector('#author-link:not([hidden])');
+    assert.equal(await page.locator('.author-problem').innerText(), '');
+    const p = await context.newPage();
+    await p.goto(await page.locator('#author-link').inputValue());
+    await p.waitForSelector('#exercise-panel');
+    return p;
+  };
+  const table = await played('table');
+  assert.equal(await page.locator('#author-field-table').inputValue(), 'half-edge');
+  assert.equal(await table.locator('.exercise-grid input[aria-label="h1 origin"]').count(), 1);
+  await table.close();
+  const walk = await played('walk');
+  assert.equal(await page.locator('#author-field-structure').inputValue(), 'half-edge');
+  assert.match(await walk.locator('.exercise-walk-path').innerText(), /h\d+ → \?/);
+  assert.ok(await walk.locator('#exercise-walk-typed').isVisible());
+});
