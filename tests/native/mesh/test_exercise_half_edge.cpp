@@ -5,6 +5,8 @@
 // random; and the half-edge walk against the walk rules applied to those tables.
 #include <catch2/catch.hpp>
 
+#include "exercise_fixtures.h"
+
 #include "wingspline/error.h"
 #include "wingspline/mesh/exercise_half_edge.h"
 #include "wingspline/mesh/generators.h"
@@ -106,13 +108,7 @@ HalfEdgeTableResult mark(const IndexedMesh& m, const HalfEdgeAnswer& a) {
     return mark_half_edge_answer(m.face_offsets, m.face_vertices, m.vertex_count(), a);
 }
 
-std::vector<IndexedMesh> fixtures() {
-    std::vector<IndexedMesh> m = {lecture_example().mesh, foley_example().mesh, cube(), tetrahedron(), uv_sphere(5, 4)};
-    for (int n = 1; n <= 6; ++n) m.push_back(open_fan(n));
-    for (int nx = 1; nx <= 4; ++nx)
-        for (int ny = 1; ny <= 3; ++ny) m.push_back(grid(nx, ny));
-    return m;
-}
+std::vector<IndexedMesh> fixtures() { return wingspline::test_exercises::exercise_fixtures(); }
 
 // Random meshes for the property tests: grids, fans and spheres of random sizes, or a fixture.
 IndexedMesh random_mesh(std::mt19937& rng) {
