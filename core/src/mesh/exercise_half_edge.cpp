@@ -206,6 +206,7 @@ void word_findings(const Checker& c, std::vector<AnswerFinding>& findings) {
                         (f.code == "blank"          ? std::string("it is blank")
                          : f.code == "not-boundary" ? "this half-edge leaves " + v + " but is not on the boundary"
                          : f.code == "unknown-label" ? std::string("it names a row the table does not have")
+                         : f.given == kNone          ? "none, but half-edges leave " + v
                                                       : "this half-edge does not leave " + v) +
                         ". Re-read: a vertex stores one half-edge whose origin is the vertex; on the boundary, the one whose face is "
                         "none, so that a walk around the vertex from it meets every edge there.";
@@ -233,7 +234,7 @@ void word_findings(const Checker& c, std::vector<AnswerFinding>& findings) {
         std::string rule, hint;
         if (f.field == "origin") {
             rule = "origin(h) is the vertex h leaves; h and twin(h) lie on one edge, each leaving one of its ends";
-            hint = "Find the edge this half-edge runs along and the face on its left: it leaves the end from which that face is on its left.";
+            hint = "Find the edge h runs along and the face on its left (or the boundary): walking along h with that face on your left, you start at origin(h).";
         } else if (f.field == "face") {
             rule = "face(h) is the face on the left of h as it runs from its origin (faces go counter-clockwise); none where that side is the boundary";
             hint = "Walk along h from its origin: the face on your left is face(h), none if your left is outside the mesh.";
@@ -331,8 +332,8 @@ WalkStepCheck check_half_edge_walk_step(const WingedEdgeMesh& mesh, bool around_
                   (given == kBlank ? std::string(": no half-edge is picked") : ": that is not the half-edge the walk reaches next") +
                   ". Re-read the rule: " + rule + "; the walk ends when it comes back to the half-edge it started from.";
     out.hint = around_face ? "Stand where " + from + " ends, inside " + name + ": the side of " + name + " that leaves there is next(" + from + ")."
-                           : "First find prev(" + from + "): the half-edge of " + from + "'s face that ends at " + name +
-                                 "; then take the other half of its edge.";
+                           : "First find prev(" + from + "): the half-edge of the same face as " + from + " (or of the boundary loop) that ends at " +
+                                 name + "; then take the other half of its edge.";
     return out;
 }
 
