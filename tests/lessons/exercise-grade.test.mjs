@@ -152,6 +152,19 @@ test('half-edge table: the slide\'s half-edge tables in the slide\'s numbering a
   assert.equal(worked.lines[9], 'Half-edges, h10: origin v2, face F1, next h13, prev h12, twin h9');
 });
 
+test('half-edge table with given columns: origin and twin come filled in as the Half-edge tab numbers the half-edges (the slide\'s), and the rest typed in that numbering is right', () => {
+  const { subject } = opened('mesh-half-edge-table-lecture');
+  const check = { kind: 'table', table: 'half-edge', given: ['origin', 'twin'] };
+  const slide = halfEdgeTyped([...Array(14).keys()].map((i) => i + 1));
+  const typed = Object.fromEntries(Object.entries(slide).filter(([key]) => !/:(origin|twin)$/.test(key)));
+  assert.deepEqual(gradeTable({ api, check, subject, answer: typed }), { correct: true, findings: [] });
+  // The given cells are the slide's: the worked table keeps them (h1 = v1 -> v3, its twin h2).
+  assert.match(workedTable({ api, check, subject, answer: typed }).lines[0], /^Half-edges, h1: origin v1, face none, next h7, prev h4, twin h2$/);
+  // The same rows typed in another numbering no longer fit the given origins and twins.
+  const other = Object.fromEntries(Object.entries(halfEdgeTyped([...Array(14).keys()].map((i) => 14 - i))).filter(([key]) => !/:(origin|twin)$/.test(key)));
+  assert.equal(gradeTable({ api, check, subject, answer: other }).correct, false);
+});
+
 test('half-edge walk: around v2 from h4 replayed from its picks (h11 h9 h5 h4, worked by hand); a wrong pick names the step and the rule, never the half-edge', () => {
   const { check, subject } = opened('mesh-half-edge-walk-around-v2');
   assert.equal(check.structure, 'half-edge');
