@@ -758,18 +758,21 @@ export interface SubdivideFinding { code: string; row: number; vertex: number; c
 export interface SubdivideCheck { correct: boolean; findings: SubdivideFinding[] }
 
 /** The tables checkMeshTableAnswer checks (exercise kind 1). */
-export type MeshExerciseTable = 'winged-edge' | 'faces' | 'edge-list' | 'adjacency';
+export type MeshExerciseTable = 'winged-edge' | 'faces' | 'edge-list' | 'adjacency' | 'half-edge';
 /** Lecture 000's face table: per face (the mesh's numbering) its corners, counter-clockwise, any first. -2 = blank. */
 export interface FacesAnswer { faces: ReadonlyArray<NumberList> }
 /** Lecture 001's edge list: 4 per row (V1 V2 P1 P2; -1 = λ, -2 = blank) and per polygon the student's edge (row) numbers. */
 export interface EdgeListAnswer { edges: NumberList; polygons: ReadonlyArray<NumberList> }
 /** Lecture 000's adjacency lists, per vertex its neighbours (any order). */
 export interface AdjacencyAnswer { vertexVertices: ReadonlyArray<NumberList> }
+/** The half-edge table: 5 per row (origin face next prev twin; rows are the student's half-edges, any numbering), per vertex and per face one row (0-based; -1 = none, -2 = blank). */
+export interface HalfEdgeAnswer { halfedges: NumberList; vertexHalfedges: NumberList; faceHalfedges: NumberList }
 export interface MeshTableAnswers {
   'winged-edge': WingedEdgeAnswer;
   faces: FacesAnswer;
   'edge-list': EdgeListAnswer;
   adjacency: AdjacencyAnswer;
+  'half-edge': HalfEdgeAnswer;
 }
 /** The right answer in the answer's own shape (plain arrays), in the student's numbering where rows match. */
 export interface MeshTableWorked {
@@ -777,14 +780,16 @@ export interface MeshTableWorked {
   faces: { faces: number[][] };
   'edge-list': { edges: number[]; polygons: number[][] };
   adjacency: { vertexVertices: number[][] };
+  'half-edge': { halfedges: number[]; vertexHalfedges: number[]; faceHalfedges: number[] };
 }
 export type MeshTableFindingCode = WingedEdgeFindingCode | 'clockwise' | 'wrong-vertex' | 'wrong-order' | 'missing-vertex'
-  | 'extra-vertex' | 'not-adjacent';
+  | 'extra-vertex' | 'not-adjacent' | 'wrong-origin' | 'wrong-next' | 'wrong-prev' | 'wrong-twin' | 'not-outgoing' | 'not-boundary';
 /** One thing wrong: as WingedEdgeFinding, plus index, the position in a list column (-1: a fixed column, or an item missing). */
 export interface MeshTableFinding {
-  table: ElementKind;
+  /** The kind of row; 'halfedge' for a row of the half-edge table. */
+  table: ElementKind | 'halfedge';
   row: number;
-  /** The column as the table descriptors name it: 'vertices' (faces, adjacency), 'v1' | 'v2' | 'p1' | 'p2' | 'edges' (edge list), or a winged-edge field. */
+  /** The column as the table descriptors name it: 'vertices' (faces, adjacency), 'v1' | 'v2' | 'p1' | 'p2' | 'edges' (edge list), a winged-edge field, or 'origin' | 'face' | 'next' | 'prev' | 'twin' | 'halfedge' (half-edge table). */
   field: string;
   index: number;
   given: number;
@@ -809,6 +814,8 @@ export interface WalkStepQuestion {
   element: number;
   step: number;
   given: number;
+  /** 'half-edge': the half-edge walk (around v h -> twin(prev(h)), along f h -> next(h)); given and expected are half-edges. Default 'winged-edge'. */
+  structure?: 'winged-edge' | 'half-edge';
 }
 /** The edit exercise: one table of the answer, the listed rows then the new rows (docs/exercises.md, kind edit). */
 export interface EditTableAnswer {
@@ -857,6 +864,8 @@ export interface EditCheck {
 }
 export interface WalkStepCheck {
   correct: boolean;
+  /** The edge (half-edge) the step starts from: the walk's element k - 1, shown to the student. */
+  from: number;
   /** The edge the lecture's rule reads (0-based). */
   expected: number;
   /** expected is the walk's first edge again: the walk is closed. */

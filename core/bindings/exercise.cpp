@@ -1,4 +1,5 @@
-// Exercise bindings: checking a student's winged-edge table. The mesh crosses as
+// Exercise bindings: checking a student's winged-edge table (and the other tables, the
+// half-edge table, the walks). The mesh crosses as
 // CSR (faceOffsets: F + 1 entries, faceVertices) with its vertex count; the answer as flat
 // Int32 arrays: edges[8*r + k] (k: S E L R S:L S:R E:L E:R of the student's row r),
 // vertexEdges[v], faceEdges[f]; -1 = none, -2 = blank. Findings leave as plain objects.
@@ -6,6 +7,7 @@
 #include "exercise_shared.h"
 
 #include "wingspline/mesh/exercise_check.h"
+#include "wingspline/mesh/exercise_half_edge.h"
 #include "wingspline/mesh/exercise_tables.h"
 #include "wingspline/mesh/exercise_walk.h"
 
@@ -87,21 +89,47 @@ val check_table(const val& face_offsets, const val& face_vertices, int32_t verte
     });
 }
 
-// A walk step (exercise_walk.h) on the mesh built from the faces with the slide's numbering
-// when given: edges = [S, E] per edge (flat), vertexEdges, faceEdges (each may be empty).
+// A walk step (exercise_walk.h; the half-edge walk's, exercise_half_edge.h, when half_edge) on
+// the mesh built from the faces with the slide's numbering when given: edges = [S, E] per edge
+// (flat), vertexEdges, faceEdges (each may be empty).
 val check_walk(const val& face_offsets, const val& face_vertices, int32_t vertex_count, const val& edges, const val& vertex_edges,
-               const val& face_edges, bool around_face, int32_t element, int32_t step, int32_t given) {
+               const val& face_edges, bool around_face, int32_t element, int32_t step, int32_t given, bool half_edge) {
     return guarded([&] {
         const BuildOptions options = numbering_options(edges, vertex_edges, face_edges);
         const WingedEdgeMesh mesh = exercise_mesh(to_ints(face_offsets), to_ints(face_vertices), vertex_count, options);
-        const WalkStepCheck c = check_walk_step(mesh, around_face, element, step, given);
+        const WalkStepCheck c = half_edge ? check_half_edge_walk_step(mesh, around_face, element, step, given)
+                                          : check_walk_step(mesh, around_face, element, step, given);
         val r = val::object();
         r.set("correct", c.correct);
+        r.set("from", c.from);
         r.set("expected", c.expected);
         r.set("done", c.done);
         r.set("reason", c.reason);
         r.set("message", c.message);
         r.set("hint", c.hint);
+        return r;
+    });
+}
+
+// The half-edge table (exercise_half_edge.h): halfEdges[5*r + k] (k: origin face next prev twin
+// of the student's row r), vertexHalfedges[v], faceHalfedges[f]. Returns {findings, worked:
+// {halfedges, vertexHalfedges, faceHalfedges}, rowHalfedges}.
+// The slide's numbering (edges, vertexEdges, faceEdges as check_walk takes them) only orders
+// the worked answer's rows where the answer identifies none.
+val check_half_edge(const val& face_offsets, const val& face_vertices, int32_t vertex_count, const val& edges, const val& vertex_edges,
+                    const val& face_edges, const val& halfedges, const val& vertex_halfedges, const val& face_halfedges) {
+    return guarded([&] {
+        const HalfEdgeTableResult m = mark_half_edge_answer(to_ints(face_offsets), to_ints(face_vertices), vertex_count,
+                                                            {to_ints(halfedges), to_ints(vertex_halfedges), to_ints(face_halfedges)},
+                                                            numbering_options(edges, vertex_edges, face_edges));
+        val w = val::object();
+        w.set("halfedges", to_typed_array(m.worked.halfedges));
+        w.set("vertexHalfedges", to_typed_array(m.worked.vertex_halfedges));
+        w.set("faceHalfedges", to_typed_array(m.worked.face_halfedges));
+        val r = val::object();
+        r.set("findings", findings_value(m.check.findings));
+        r.set("worked", w);
+        r.set("rowHalfedges", to_typed_array(m.row_halfedge));
         return r;
     });
 }
@@ -114,4 +142,5 @@ EMSCRIPTEN_BINDINGS(wingspline_exercise) {
     emscripten::function("exerciseWorkedWingedEdge", &wingspline::bindings::worked_answer);
     emscripten::function("exerciseCheckTable", &wingspline::bindings::check_table);
     emscripten::function("exerciseCheckWalkStep", &wingspline::bindings::check_walk);
+    emscripten::function("exerciseCheckHalfEdge", &wingspline::bindings::check_half_edge);
 }

@@ -57,3 +57,17 @@ export const FLIP_E3 = {
   faces: [['e3']],
 };
 
+
+// Lecture 000's mesh as half-edges, worked out by hand from the slide's edge table above: edge
+// e_k gives h(2k-1) = S -> E (its face L) and h(2k) = E -> S (its face R); the boundary loop
+// v1 -> v3 -> v4 -> v5 -> v2 -> v1 is h1, h7, h13, h12, h4. Rows h1..h14: origin, face, next,
+// prev, twin. Every vertex is on the boundary and stores its boundary half-edge; each face
+// stores the side along it of the edge the slide's face table gives (e1 -> h2, e3 -> h6, e5 -> h10).
+export const SLIDE_HALF_EDGES = Object.freeze([
+  ['v1', 'none', 'h7', 'h4', 'h2'], ['v3', 'F1', 'h3', 'h5', 'h1'], ['v1', 'F1', 'h5', 'h2', 'h4'], ['v2', 'none', 'h1', 'h12', 'h3'],
+  ['v2', 'F1', 'h2', 'h3', 'h6'], ['v3', 'F2', 'h9', 'h8', 'h5'], ['v3', 'none', 'h13', 'h1', 'h8'], ['v4', 'F2', 'h6', 'h9', 'h7'],
+  ['v2', 'F2', 'h8', 'h6', 'h10'], ['v4', 'F3', 'h11', 'h14', 'h9'], ['v2', 'F3', 'h14', 'h10', 'h12'], ['v5', 'none', 'h4', 'h13', 'h11'],
+  ['v4', 'none', 'h12', 'h7', 'h14'], ['v5', 'F3', 'h10', 'h11', 'h13'],
+].map((r) => Object.freeze(r)));
+export const SLIDE_HALF_EDGE_VERTICES = Object.freeze(['h1', 'h4', 'h7', 'h13', 'h12']);
+export const SLIDE_HALF_EDGE_FACES = Object.freeze(['h2', 'h6', 'h10']);

@@ -26,7 +26,7 @@ import { lesson as continuityLesson } from '../../web/js/lessons/continuity/less
 import { lesson as comparisonLesson } from '../../web/js/lessons/comparison/lesson.js';
 import { lesson as surfacesLesson } from '../../web/js/lessons/surfaces/lesson.js';
 import { subdivisionLesson } from '../../web/js/lessons/subdivision/lesson.js';
-import { slideRows, SLIDE_VERTEX_EDGES, SLIDE_FACE_EDGES, slideWalk } from '../helpers/lecture-slide.mjs';
+import { slideRows, SLIDE_VERTEX_EDGES, SLIDE_FACE_EDGES, slideWalk, SLIDE_HALF_EDGES, SLIDE_HALF_EDGE_VERTICES, SLIDE_HALF_EDGE_FACES } from '../helpers/lecture-slide.mjs';
 
 const api = await loadWingspline();
 const LESSONS = Object.fromEntries([meshLesson, curvesLesson, continuityLesson, comparisonLesson, surfacesLesson, subdivisionLesson].map((l) => [l.id, l]));
@@ -115,6 +115,68 @@ test('walk: the slide\'s walk around v2 replayed from its picks; a wrong pick na
   assert.equal(gradeWalk({ api, check, subject, answer: { picks: [picks[0], wrongEdge, ...picks.slice(1)] } }).correct, true);
   assert.equal(gradeWalk({ api, check, subject, answer: { picks: [0] } }).incomplete, true);
   assert.equal(gradeWalk({ api, check, subject, answer: { picks: [] } }).incomplete, true);
+});
+
+// The slide's half-edge tables (worked by hand) as typed, with the rows renumbered by `order`
+// (student row r is the slide's half-edge order[r], 1-based).
+function halfEdgeTyped(order) {
+  const rename = (x) => (/^h\d+$/.test(x) ? `h${order.indexOf(Number(x.slice(1))) + 1}` : x);
+  const fields = ['origin', 'face', 'next', 'prev', 'twin'];
+  const answer = {};
+  order.forEach((k, r) => SLIDE_HALF_EDGES[k - 1].forEach((v, c) => { answer[`halfedge:${r}:${fields[c]}`] = rename(v); }));
+  SLIDE_HALF_EDGE_VERTICES.forEach((x, v) => { answer[`vertex:${v}:halfedge`] = rename(x); });
+  SLIDE_HALF_EDGE_FACES.forEach((x, f) => { answer[`face:${f}:halfedge`] = rename(x); });
+  return answer;
+}
+
+test('half-edge table: the slide\'s half-edge tables in the slide\'s numbering and renumbered are right; a wrong cell is named without its value', () => {
+  const { check, subject } = opened('mesh-half-edge-table-lecture');
+  assert.equal(check.table, 'half-edge');
+  const slide = [...Array(14).keys()].map((i) => i + 1);
+  assert.deepEqual(gradeTable({ api, check, subject, answer: halfEdgeTyped(slide) }), { correct: true, findings: [] });
+  const backwards = [...slide].reverse();
+  const answer = halfEdgeTyped(backwards);
+  assert.deepEqual(gradeTable({ api, check, subject, answer }), { correct: true, findings: [] });
+  // Row h10 here is the slide's h5 (v2 -> v3 on F1): its twin is the slide's h6, here h9; write h8.
+  assert.equal(answer['halfedge:9:twin'], 'h9');
+  const r = gradeTable({ api, check, subject, answer: { ...answer, 'halfedge:9:twin': 'h8' } });
+  assert.equal(r.findings.length, 1);
+  assert.match(r.findings[0].text, /^Row h10, column twin: this is not twin\(h10\)\. Re-read: twin\(h\) is the other half of h's edge/);
+  assert.doesNotMatch(`${r.findings[0].text} ${r.findings[0].hint}`, /\bh9\b/);
+  // Typed labels that do not read are said before any check.
+  const unreadable = gradeTable({ api, check, subject, answer: { ...answer, 'halfedge:0:next': 'e3' } });
+  assert.equal(unreadable.incomplete, true);
+  assert.match(unreadable.findings[0].text, /^h1 next: "e3" is not a half-edge/);
+  // The worked table, in the student's numbering.
+  const worked = workedTable({ api, check, subject, answer });
+  assert.equal(worked.lines[9], 'Half-edges, h10: origin v2, face F1, next h13, prev h12, twin h9');
+});
+
+test('half-edge table with given columns: origin and twin come filled in as the Half-edge tab numbers the half-edges (the slide\'s), and the rest typed in that numbering is right', () => {
+  const { subject } = opened('mesh-half-edge-table-lecture');
+  const check = { kind: 'table', table: 'half-edge', given: ['origin', 'twin'] };
+  const slide = halfEdgeTyped([...Array(14).keys()].map((i) => i + 1));
+  const typed = Object.fromEntries(Object.entries(slide).filter(([key]) => !/:(origin|twin)$/.test(key)));
+  assert.deepEqual(gradeTable({ api, check, subject, answer: typed }), { correct: true, findings: [] });
+  // The given cells are the slide's: the worked table keeps them (h1 = v1 -> v3, its twin h2).
+  assert.match(workedTable({ api, check, subject, answer: typed }).lines[0], /^Half-edges, h1: origin v1, face none, next h7, prev h4, twin h2$/);
+  // The same rows typed in another numbering no longer fit the given origins and twins.
+  const other = Object.fromEntries(Object.entries(halfEdgeTyped([...Array(14).keys()].map((i) => 14 - i))).filter(([key]) => !/:(origin|twin)$/.test(key)));
+  assert.equal(gradeTable({ api, check, subject, answer: other }).correct, false);
+});
+
+test('half-edge walk: around v2 from h4 replayed from its picks (h11 h9 h5 h4, worked by hand); a wrong pick names the step and the rule, never the half-edge', () => {
+  const { check, subject } = opened('mesh-half-edge-walk-around-v2');
+  assert.equal(check.structure, 'half-edge');
+  assert.equal(gradeWalk({ api, check, subject, answer: { picks: [11, 9, 5, 4] } }).correct, true);
+  const wrong = gradeWalk({ api, check, subject, answer: { picks: [11, 10] } }); // h10: the twin of the right h9
+  assert.deepEqual([wrong.correct, wrong.partial], [false, true]);
+  assert.match(wrong.findings[0].text, /^Step 2, from h11: that is not the half-edge the walk reaches next/);
+  assert.doesNotMatch(`${wrong.findings[0].text} ${wrong.findings[0].hint}`, /\bh9\b/);
+  assert.equal(gradeWalk({ api, check, subject, answer: { picks: [15] } }).incomplete, true); // 14 half-edges
+  assert.deepEqual(workedWalk({ api, check, subject }).lines.map((l) => l.split(':')[0]), ['h4 → h11', 'h11 → h9', 'h9 → h5', 'h5 → h4']);
+  const along = opened('mesh-half-edge-walk-along-f2');
+  assert.equal(gradeWalk({ api, ...along, answer: { picks: [9, 8, 6] } }).correct, true); // from h6: h9, h8, back to h6
 });
 
 test('walk: progress kept in the old shape {known} opens as the right picks it stood for (fixture)', () => {

@@ -11,6 +11,7 @@ import {
 } from '../../web/js/exercise/submission.js';
 import { gradeFiles, gradebookCsv, gradebookMarkdown, gradebookTotalsCsv, csvCell, markdownCell, COLUMNS, RESULTS } from '../../web/js/exercise/grade.js';
 import { LESSON_OBJECTS } from '../../web/js/lessons/all.js';
+import { GRADERS } from '../../web/js/exercise/graders.js';
 import { parseExercise } from '../../web/js/exercise/format.js';
 import fs from 'node:fs';
 import { parseCsv } from '../helpers/csv.mjs';
@@ -194,4 +195,29 @@ test('the totals: one row per submission file, right of the exercises graded, as
     ['a.json', 'Ada', '2', '3', '66.7'],
     ['b.json', "'=1+1", '0', '3', '0'],
   ]);
+});
+
+test('the grader grades the half-edge exercises: a right walk and a wrong table, by the core, as the page would', async () => {
+  // Around v2 from h4, twin(prev(h)) gives h11, h9, h5 and back to h4 (worked by hand from
+  // lecture 000's half-edge table, tests/helpers/lecture-slide.mjs); the table typed with
+  // nothing but h1's origin, which is wrong, so it is graded wrong, naming the row and column.
+  const walkText = galleryText('mesh-half-edge-walk-around-v2');
+  const tableText = galleryText('mesh-half-edge-table-lecture');
+  const walkExercise = parseExercise(walkText, { lessonIds });
+  const tableExercise = parseExercise(tableText, { lessonIds });
+  const sub = await makeSubmission({
+    student: 'Ada', app: '0.1.0', entries: [
+      { id: walkExercise.id, hash: await exerciseHash(walkExercise), progress: { status: 'solved', checks: 4, answer: { picks: [11, 9, 5, 4] } } },
+      { id: tableExercise.id, hash: await exerciseHash(tableExercise), progress: { status: 'solved', checks: 1, answer: { 'halfedge:0:origin': 'v2' } } },
+    ],
+  });
+  const { rows } = await gradeFiles({ api, lessons: LESSON_OBJECTS, graders: GRADERS,
+    files: [file('walk.json', walkText), file('table.json', tableText), file('ada.json', JSON.stringify(sub))] });
+  const by = Object.fromEntries(rows.map((r) => [r.exercise, r]));
+  assert.equal(by['mesh-half-edge-walk-around-v2'].result, RESULTS.right);
+  assert.equal(by['mesh-half-edge-walk-around-v2'].score, 1);
+  assert.equal(by['mesh-half-edge-table-lecture'].result, RESULTS.wrong);
+  assert.equal(by['mesh-half-edge-table-lecture'].score, 0);
+  assert.match(by['mesh-half-edge-table-lecture'].reason, /Row h1, column origin: /);
+  assert.match(by['mesh-half-edge-table-lecture'].note, /the file says solved; the check says not/);
 });

@@ -29,6 +29,7 @@ WalkStepCheck check_walk_step(const WingedEdgeMesh& mesh, bool around_face, int3
                 std::to_string(step));
     const int32_t from = edges[step - 1];
     WalkStepCheck out;
+    out.from = from;
     out.expected = next[step - 1];
     out.done = out.expected == edges[0];
     out.correct = given == out.expected;

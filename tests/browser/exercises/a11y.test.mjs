@@ -20,7 +20,7 @@ async function audit(page) {
 }
 
 const ONE_PER_KIND = ['mesh-winged-edge-slide', 'mesh-walk-around-v2', 'continuity-classify-g1', 'curves-bernstein-half', 'curves-through-a-point',
-  'mesh-edit-flip-e3'];
+  'mesh-edit-flip-e3', 'mesh-half-edge-table-lecture', 'mesh-half-edge-walk-around-v2'];
 
 for (const scheme of ['light', 'dark']) {
   test(`axe (${scheme}): the gallery`, async () => {
@@ -48,6 +48,7 @@ for (const scheme of ['light', 'dark']) {
       if (await first.count()) await first.fill('q');
       if (await page.locator('#exercise-value').count()) await page.locator('#exercise-value').fill('0.2');
       if (await page.locator('#exercise-edge-1').count()) await page.locator('label[for="exercise-edge-1"]').click();
+      if (await page.locator('#exercise-halfedge-1').count()) await page.locator('label[for="exercise-halfedge-1"]').click();
       await page.locator('#exercise-check').click();
       await page.locator('#exercise-show-worked').click();
       assert.deepEqual(await audit(page), [], 'after a check and the worked answer');

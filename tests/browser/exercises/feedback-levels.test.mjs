@@ -12,7 +12,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { useSiteAndBrowser } from '../../helpers/browser.mjs';
 import { exerciseAt } from '../../helpers/exercise-levels.mjs';
-import { slideRows, SLIDE_VERTEX_EDGES, SLIDE_FACE_EDGES, slideWalk, FLIP_E3 } from '../../helpers/lecture-slide.mjs';
+import { slideRows, SLIDE_VERTEX_EDGES, SLIDE_FACE_EDGES, slideWalk, FLIP_E3, SLIDE_HALF_EDGES, SLIDE_HALF_EDGE_VERTICES, SLIDE_HALF_EDGE_FACES } from '../../helpers/lecture-slide.mjs';
 
 const env = useSiteAndBrowser();
 const feedback = (page) => page.locator('#exercise-feedback').innerText();
@@ -41,6 +41,17 @@ async function fillSlideTable(page) {
   for (const [label, value] of cells) await page.locator(`.exercise-grid input[aria-label="${label}"]`).fill(label === WRONG_CELL.label ? WRONG_CELL.typed : value);
 }
 
+// The half-edge tables of the slide's mesh (worked by hand) with h5's next written h6 (it is h2).
+const WRONG_HALF_EDGE_CELL = { label: 'h5 next', typed: 'h6', right: 'h2' };
+async function fillSlideHalfEdgeTable(page) {
+  const heads = ['origin', 'face', 'next', 'prev', 'twin'];
+  const cells = [];
+  SLIDE_HALF_EDGES.forEach((row, r) => row.forEach((v, k) => cells.push([`h${r + 1} ${heads[k]}`, v])));
+  SLIDE_HALF_EDGE_VERTICES.forEach((x, v) => cells.push([`v${v + 1} half-edge`, x]));
+  SLIDE_HALF_EDGE_FACES.forEach((x, f) => cells.push([`F${f + 1} half-edge`, x]));
+  for (const [label, value] of cells) await page.locator(`.exercise-grid input[aria-label="${label}"]`).fill(label === WRONG_HALF_EDGE_CELL.label ? WRONG_HALF_EDGE_CELL.typed : value);
+}
+
 const walk = slideWalk('vertex', 'v2'); // e6, e5, e3, e2
 const WRONG_EDGE = 7; // the first step's answer is e5
 
@@ -60,6 +71,24 @@ const KINDS = {
       await page.locator('#exercise-edge-1').focus();
       await page.keyboard.press('ArrowLeft');
       assert.equal(await page.locator(`#exercise-edge-${WRONG_EDGE}`).isChecked(), true);
+      await page.keyboard.press('Enter');
+    },
+  },
+  // The half-edge tables (the table kind's half-edge table).
+  'table (half-edge)': {
+    id: 'mesh-half-edge-table-lecture', scope: 'feedback', right: [WRONG_HALF_EDGE_CELL.right],
+    wrong: (page) => fillSlideHalfEdgeTable(page),
+    keyboardTarget: (page) => page.locator(`.exercise-grid input[aria-label="${WRONG_HALF_EDGE_CELL.label}"]`),
+  },
+  // The half-edge walk around v2 from h4: twin(prev(h4)) = twin(h12) = h11 (worked by hand).
+  'walk (half-edge)': {
+    id: 'mesh-half-edge-walk-around-v2', scope: 'feedback', right: ['h11'],
+    wrong: (page) => page.locator('label[for="exercise-halfedge-12"]').click(),
+    // Keyboard: the radio group from h1, ArrowLeft wraps to h14 (wrong too), Enter.
+    keyboard: async (page) => {
+      await page.locator('#exercise-halfedge-1').focus();
+      await page.keyboard.press('ArrowLeft');
+      assert.equal(await page.locator('#exercise-halfedge-14').isChecked(), true);
       await page.keyboard.press('Enter');
     },
   },
@@ -148,7 +177,7 @@ for (const [name, kind] of Object.entries(KINDS)) {
     await kind.wrong(page);
     await checkByPointer(page);
     await checkByKeyboard(page, kind);
-    if (name === 'walk') { await kind.wrong(page); await checkByPointer(page); }
+    if (name.startsWith('walk')) { await kind.wrong(page); await checkByPointer(page); }
     const said = await feedback(page);
     assert.match(said, /^Not yet/, said);
     assert.doesNotMatch(said, /Hint:/);
@@ -194,7 +223,7 @@ for (const [name, kind] of Object.entries(KINDS)) {
     // By keyboard: focus the button, Enter.
     await page.locator('#exercise-show-worked').focus();
     await page.keyboard.press('Enter');
-    const shown = name === 'table'
+    const shown = name.startsWith('table')
       ? await page.locator('.exercise-worked table').count()
       : await page.locator('#exercise-worked li').count();
     assert.ok(shown >= 1, `${name}: the worked answer shows`);

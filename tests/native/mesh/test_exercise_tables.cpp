@@ -4,6 +4,8 @@
 // face), independently of the core.
 #include <catch2/catch.hpp>
 
+#include "exercise_fixtures.h"
+
 #include "wingspline/error.h"
 #include "wingspline/mesh/exercise_tables.h"
 #include "wingspline/mesh/exercise_walk.h"
@@ -75,13 +77,7 @@ struct Ref {
     }
 };
 
-std::vector<IndexedMesh> fixtures() {
-    std::vector<IndexedMesh> m = {lecture_example().mesh, foley_example().mesh, cube(), tetrahedron(), uv_sphere(5, 4)};
-    for (int n = 1; n <= 6; ++n) m.push_back(open_fan(n));
-    for (int nx = 1; nx <= 4; ++nx)
-        for (int ny = 1; ny <= 3; ++ny) m.push_back(grid(nx, ny));
-    return m;
-}
+std::vector<IndexedMesh> fixtures() { return wingspline::test_exercises::exercise_fixtures(); }
 
 ListAnswer list_answer(const std::vector<std::vector<int32_t>>& rows) {
     ListAnswer a;

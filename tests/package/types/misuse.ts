@@ -105,7 +105,7 @@ export async function misuse(): Promise<void> {
   // @ts-expect-error an edge list's answer has polygons, not faces
   api.checkMeshTableAnswer({ faces: slide.faces, vertexCount: 5 }, 'edge-list', { faces: [] });
   // @ts-expect-error no such table
-  api.checkMeshTableAnswer({ faces: slide.faces, vertexCount: 5 }, 'half-edge', { faces: [] });
+  api.checkMeshTableAnswer({ faces: slide.faces, vertexCount: 5 }, 'quad-edge', { faces: [] });
   const step = api.checkWalkStep(slide, { around: 'vertex', element: 1, step: 1, given: 4 });
   const closed: boolean = step.done;
   // @ts-expect-error a walk goes around a vertex or a face, not an edge

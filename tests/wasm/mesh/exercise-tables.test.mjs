@@ -158,7 +158,7 @@ test('winged-edge through checkMeshTableAnswer: the worked answer in the answer\
 });
 
 test('checkMeshTableAnswer errors: unknown-table, invalid-answer naming the row and field', () => {
-  assert.equal(codeOf(() => api.checkMeshTableAnswer(mesh, 'half-edge', {})), 'unknown-table');
+  assert.equal(codeOf(() => api.checkMeshTableAnswer(mesh, 'quad-edge', {})), 'unknown-table');
   assert.equal(codeOf(() => api.checkMeshTableAnswer(mesh, 'faces', null)), 'invalid-answer');
   assert.equal(codeOf(() => api.checkMeshTableAnswer(mesh, 'faces', { faces: [[0, 1, 2], [1, 3, 2]] })), 'invalid-answer');
   let err;

@@ -147,7 +147,7 @@
  *   refresh(): void,
  *   message: MessageLine,
  *   keymap: Keymap,
- *   ui: { selected: string | null, hover: string | null, hoverPoint: number[] | null, present: boolean, exercise: string | null },
+ *   ui: { selected: string | null, hover: string | null, hoverPoint: number[] | null, present: boolean, exercise: string | null, exerciseStructure?: string | null },
  *   stage: Stage,
  *   readonly colors: { background: string, ink: string, muted: string, highlight: string, series: string[], [name: string]: any },
  *   panels: HTMLElement,

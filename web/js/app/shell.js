@@ -108,8 +108,9 @@ export async function runLesson(lesson, { exercises = null, gpuRenderer = null }
   // A link that replaced saved work is one undoable step: Undo brings the work back.
   const store = createStore(restored.previous ?? restored.state);
   if (restored.previous) store.replace(restored.state, 'link');
-  // ui.exercise: the kind of the exercise the page shows (a lesson hides what would answer it).
-  const ui = { selected: null, hover: null, hoverPoint: null, present: isPresenting(), exercise: null };
+  // ui.exercise: the kind of the exercise the page shows (a lesson hides what would answer it);
+  // ui.exerciseStructure: the structure its walk is predicted on ('half-edge'), else null.
+  const ui = { selected: null, hover: null, hoverPoint: null, present: isPresenting(), exercise: null, exerciseStructure: null };
   /** The lesson's view: what its setup returned, handed back to every later hook. */
   let view = {};
   let model = null;

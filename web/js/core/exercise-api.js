@@ -52,7 +52,7 @@ function answerArguments(mesh, answer) {
 
 // ---- checkMeshTableAnswer and checkWalkStep (exercise kinds 1 and 2; docs/api-mesh.md,
 // "Checking a student's ..."). A malformed answer is 'invalid-answer' naming the row and field.
-const MESH_TABLES = Object.freeze(['winged-edge', 'faces', 'edge-list', 'adjacency']);
+const MESH_TABLES = Object.freeze(['winged-edge', 'faces', 'edge-list', 'adjacency', 'half-edge']);
 
 function answerCell(x, what) {
   if (!Number.isInteger(x) || x > INT32_MAX || x < -INT32_MAX) {
@@ -90,6 +90,7 @@ function listRows({ offsets, cells }) {
 
 const COLUMNS_8 = ['start', 'end', 'left', 'right', 'startLeft', 'startRight', 'endLeft', 'endRight'];
 const COLUMNS_4 = ['v1', 'v2', 'p1', 'p2'];
+const COLUMNS_HALF_EDGE = ['origin', 'face', 'next', 'prev', 'twin'];
 const vertexRow = (v) => (v === null ? 'vertex' : `vertex v${v + 1}`);
 const faceRow = (f) => (f === null ? 'face' : `face F${f + 1}`);
 // The winged-edge answer's cells, each named by its row and field.
@@ -150,7 +151,8 @@ export function createExerciseApi(raw) {
       return { edges: r.edges, vertexEdges: r.vertexEdges, faceEdges: r.faceEdges };
     },
     // One entry point for every table of kind 1: table 'winged-edge' | 'faces' | 'edge-list' |
-    // 'adjacency'. Returns {correct, findings: [{table, row, field, index, given, expected,
+    // 'adjacency' | 'half-edge' (answer {halfedges: 5 per row, origin face next prev twin,
+    // vertexHalfedges, faceHalfedges}; rows are the student's half-edges, any numbering). Returns {correct, findings: [{table, row, field, index, given, expected,
     // code, reason, message, hint}], worked} with worked the right answer in the answer's own shape (the
     // student's numbering where rows match). Errors: 'unknown-table', 'invalid-answer'
     // (naming the row and field), 'invalid-faces' or the mesh's validation code.
@@ -171,6 +173,20 @@ export function createExerciseApi(raw) {
           correct: findings.length === 0,
           findings,
           worked: { edges: Array.from(w.edges), vertexEdges: Array.from(w.vertexEdges), faceEdges: Array.from(w.faceEdges) },
+        };
+      }
+      if (table === 'half-edge') {
+        // The half-edge table (docs/api-mesh.md, "Checking a student's half-edge table"): the
+        // rows are the student's half-edges, so a finding's table is 'halfedge' for them.
+        const r = unwrap(raw.exerciseCheckHalfEdge(...meshArgs, ...walkNumbering(mesh),
+          flatAnswer(answer.halfedges, 'halfedges', (i) => `halfedges: row h${Math.floor(i / 5) + 1}, ${COLUMNS_HALF_EDGE[i % 5]}`),
+          flatAnswer(answer.vertexHalfedges, 'vertexHalfedges', (i) => `vertexHalfedges: ${vertexRow(i)}`),
+          flatAnswer(answer.faceHalfedges, 'faceHalfedges', (i) => `faceHalfedges: ${faceRow(i)}`)));
+        const findings = plainFindings(r.findings).map((f) => (f.table === 'edge' ? { ...f, table: 'halfedge' } : f));
+        return {
+          correct: findings.length === 0,
+          findings,
+          worked: { halfedges: Array.from(r.worked.halfedges), vertexHalfedges: Array.from(r.worked.vertexHalfedges), faceHalfedges: Array.from(r.worked.faceHalfedges) },
         };
       }
       let flat = new Int32Array(0);
@@ -194,21 +210,27 @@ export function createExerciseApi(raw) {
     // (from 1) asks for the walk's edge k, edges 0..k-1 shown; the walk is the core's
     // (mesh.traversalSteps / faceEdgeSteps on the mesh built from these faces, with the
     // mesh's edges / vertexEdges / faceEdges numbering when given, as lectureExample()
-    // returns them). Returns {correct, expected, done, reason, message, hint} (message and
-    // hint: value-free, '' for a right step). Errors: 'invalid-argument',
+    // returns them). Returns {correct, from, expected, done, reason, message, hint} (message and
+    // hint: value-free, '' for a right step; from: the edge or half-edge step k starts from). Errors: 'invalid-argument',
     // 'index-out-of-range' (no such vertex or face), 'no-walk' (a vertex on no face),
     // 'invalid-step'.
+    // structure 'half-edge' (default 'winged-edge') walks the half-edges instead: around a
+    // vertex h -> twin(prev(h)), along a face h -> next(h), from the vertex's (face's)
+    // half-edge; given and expected are half-edges (2e = S -> E, 2e + 1 = E -> S of edge e).
     checkWalkStep(mesh, question) {
       if (question === null || typeof question !== 'object') fail('invalid-argument', 'expected the step {around, element, step, given}');
-      const { around, element, step, given } = question;
+      const { around, element, step, given, structure = 'winged-edge' } = question;
       if (around !== 'vertex' && around !== 'face') {
         fail('invalid-argument', `around must be 'vertex' or 'face', not ${JSON.stringify(around)?.slice(0, 40)}`);
+      }
+      if (structure !== 'winged-edge' && structure !== 'half-edge') {
+        fail('invalid-argument', `structure must be 'winged-edge' or 'half-edge', not ${JSON.stringify(structure)?.slice(0, 40)}`);
       }
       integerIn(element, 'element', -INT32_MAX, INT32_MAX);
       integerIn(step, 'step', -INT32_MAX, INT32_MAX);
       integerIn(given, 'given', -INT32_MAX, INT32_MAX);
-      const r = unwrap(raw.exerciseCheckWalkStep(...exerciseMesh(mesh), ...walkNumbering(mesh), around === 'face', element, step, given));
-      return { correct: r.correct, expected: r.expected, done: r.done, reason: r.reason, message: r.message, hint: r.hint };
+      const r = unwrap(raw.exerciseCheckWalkStep(...exerciseMesh(mesh), ...walkNumbering(mesh), around === 'face', element, step, given, structure === 'half-edge'));
+      return { correct: r.correct, from: r.from, expected: r.expected, done: r.done, reason: r.reason, message: r.message, hint: r.hint };
     },
   };
 }

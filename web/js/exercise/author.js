@@ -8,7 +8,7 @@ import { h, setChildren } from '../app/dom.js';
 import { download } from '../app/file-io.js';
 import { stringifyExact } from '../app/share-link.js';
 import { lessons } from '../lessons/registry.js';
-import { KINDS, TABLES, QUANTITIES, FEEDBACK_LEVELS, DEFAULT_HINT_AFTER, exerciseOf, parseExercise } from './format.js';
+import { KINDS, TABLES, WALK_STRUCTURES, QUANTITIES, FEEDBACK_LEVELS, DEFAULT_HINT_AFTER, exerciseOf, parseExercise } from './format.js';
 import { readExerciseState, CREATE } from './player.js';
 import { exerciseUrl } from './link.js';
 import { loadWingspline } from '../core/wingspline.js';
@@ -25,7 +25,10 @@ function fieldsOf(kind, subject) {
       { name: 'given', label: 'Columns given (comma-separated: start, end, left, …; empty for none)', type: 'list' }];
   }
   if (kind === 'edit') return []; // the operation is the lesson's last edit (its suggestion)
-  if (kind === 'walk') return [pick('around', 'Walk', { vertex: 'around a vertex', face: 'along a face' }), num('element', 'Vertex or face number (1-based)', { min: 1, step: 1 })];
+  if (kind === 'walk') {
+    return [pick('around', 'Walk', { vertex: 'around a vertex', face: 'along a face' }), num('element', 'Vertex or face number (1-based)', { min: 1, step: 1 }),
+      pick('structure', 'Structure walked', WALK_STRUCTURES)];
+  }
   if (kind === 'joint') return [num('joint', 'Joint (1 = the first)', { min: 1, step: 1 })];
   if (kind === 'subdivide') {
     return [pick('scheme', 'Scheme (the drawing\'s)', { loop: 'Loop', 'catmull-clark': 'Catmull-Clark' }), pick('ask', 'Ask', { mask: 'the mask and weights of a new point', counts: 'the counts V, E, F after the step' }),
@@ -133,6 +136,7 @@ export async function openAuthorDialog({ ctx, lesson, view, message }) {
       else check[name] = value;
     }
     if (kind === 'subdivide') delete check[check.ask === 'counts' ? 'point' : 'steps'];
+    if (kind === 'walk' && check.structure === 'winged-edge') delete check.structure; // the default, as files written before it read
     if (kind === 'value') for (const name of VALUE_FIELDS) if (!QUANTITIES[check.quantity]?.fields.includes(name)) delete check[name];
     if (kind === 'property') {
       if (property.x !== undefined || property.y !== undefined) { property.point = [property.x, property.y]; delete property.x; delete property.y; }

@@ -36,7 +36,12 @@ export const TABLES = Object.freeze({
   faces: { label: 'the face table (each face lists its vertices)', columns: [] },
   'edge-list': { label: 'the edge list (E = V₁, V₂, P₁, P₂) and the polygon table', columns: ['v1', 'v2', 'p1', 'p2'] },
   adjacency: { label: 'the adjacency lists (the vertices next to each vertex)', columns: [] },
+  'half-edge': { label: 'the half-edge tables (half-edge, vertex and face tables)', columns: ['origin', 'face', 'next', 'prev', 'twin', 'vertexHalfedge', 'faceHalfedge'] },
 });
+
+// The structures a walk can be predicted on: the winged edge's edges (the lecture's walk) or
+// the half-edges (around a vertex h -> twin(prev(h)), along a face h -> next(h)).
+export const WALK_STRUCTURES = Object.freeze({ 'winged-edge': 'the winged edge (edges)', 'half-edge': 'the half-edge structure (half-edges)' });
 
 // What kind 4 can ask, and the fields each needs (written as the lectures write them).
 export const QUANTITIES = Object.freeze({
@@ -57,7 +62,7 @@ export const PROPERTIES = Object.freeze({
 // (its `exercise.kinds`, app/contract.js).
 export const KINDS = Object.freeze({
   table: { label: 'Fill in a table' },
-  walk: { label: 'Predict the next edge of a walk' },
+  walk: { label: 'Predict the next edge (or half-edge) of a walk' },
   joint: { label: 'Classify a joint (Cᵏ and Gᵏ) and say why' },
   value: { label: 'Compute a value by hand' },
   property: { label: 'Move control points until a property holds' },
@@ -100,7 +105,7 @@ const order = integer({ min: -1, max: 3 });
 // The fields of `check`, per kind (optional ones listed).
 const CHECKS = {
   table: [{ kind: oneOf('table'), table: oneOf(...Object.keys(TABLES)), given: list(text({ maxLength: 20 }), { max: 12 }) }, ['given']],
-  walk: [{ kind: oneOf('walk'), around: oneOf('vertex', 'face'), element: ordinal }, []],
+  walk: [{ kind: oneOf('walk'), around: oneOf('vertex', 'face'), element: ordinal, structure: oneOf(...Object.keys(WALK_STRUCTURES)) }, ['structure']],
   joint: [{ kind: oneOf('joint'), joint: ordinal }, []],
   value: [{
     kind: oneOf('value'), quantity: oneOf(...Object.keys(QUANTITIES)), tolerance: positive,

@@ -90,12 +90,14 @@ export function startExercise(session, { ctx, lesson, view, panels, message, acc
   }
   document.documentElement.dataset.exercise = exercise.check.kind;
   ctx.ui.exercise = exercise.check.kind;
+  ctx.ui.exerciseStructure = exercise.check.structure ?? null;
   let player;
   try {
     player = mountExercise({ api, ctx, lesson, view, exercise, key, hash, loaded, panels, reset, initialState });
   } catch (err) {
     delete document.documentElement.dataset.exercise;
     ctx.ui.exercise = null;
+    ctx.ui.exerciseStructure = null;
     for (const el of panels.querySelectorAll('[data-exercise-hidden]')) delete /** @type {HTMLElement} */ (el).dataset.exerciseHidden;
     message.warn(`This exercise could not be opened: ${err.message}. Showing your own work instead.`, { code: 'exercise-refused' });
     return null;

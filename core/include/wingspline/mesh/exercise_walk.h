@@ -16,6 +16,7 @@ namespace wingspline::mesh {
 
 struct WalkStepCheck {
     bool correct = false;
+    int32_t from = kNone;     // the edge the step starts from (the walk's edge k-1), shown to the student
     int32_t expected = kNone; // the edge the rule reads (0-based mesh edge)
     bool done = false;        // expected is the walk's first edge: the walk is closed
     std::string reason;       // the rule applied to this step, with 1-based labels (v2, e5, F1)

@@ -4,6 +4,9 @@
 // F2, "none" or λ for no face), may number the edges their own way and walk each edge either
 // way: the core's checker (api.checkMeshTableAnswer) checks the structure the answer
 // describes and names each mistake. Given columns come filled in from the lesson's own tables.
+// The half-edge table (table: 'half-edge') is one more table of this kind, not a kind of its
+// own: the same grids of typed labels (h5 for a half-edge), the same answer and progress
+// shape, the same checking by the core with any numbering of its rows.
 import { h, setChildren } from '../../app/dom.js';
 import { ExerciseError, TABLES } from '../format.js';
 import { refuseLargeMesh } from '../subjects.js';
@@ -33,8 +36,21 @@ const PARTS = {
   adjacency: [['adjacency-lists', 'vertices', ['vertices']]],
 };
 
-/** @returns {Array<{ table: string, representation: string, name: string, title: string, rows: number, rowRef: 'vertex'|'edge'|'face', rowName: (r: number) => string, columns: Array<{ field: string, head: string, ref: 'vertex'|'edge'|'face', list: boolean, none: boolean }> }>} */
+// The half-edge table (docs/api-mesh.md, "The half-edge view"), headed as the mesh lesson's
+// Half-edge tab heads it; the target is not a column (it is the twin's origin), nor stored.
+// A vertex on no face stores none; every other cell names something.
+const he = (field, ref, none = false) => ({ field, head: field, ref, list: false, none });
+const HALF_EDGE_GRIDS = [
+  { table: 'halfedge', name: 'halfedges', title: 'Half-edges', columns: [he('origin', 'vertex'), he('face', 'face', true), he('next', 'halfedge'), he('prev', 'halfedge'), he('twin', 'halfedge')] },
+  { table: 'vertex', name: 'vertices', title: 'Vertices: one outgoing half-edge each', columns: [{ ...he('halfedge', 'halfedge', true), head: 'half-edge' }] },
+  { table: 'face', name: 'faces', title: 'Faces: one of their half-edges each', columns: [{ ...he('halfedge', 'halfedge'), head: 'half-edge' }] },
+];
+
+/** @returns {Array<{ table: string, representation: string, name: string, title: string, rows: number, rowRef: 'vertex'|'edge'|'face'|'halfedge', rowName: (r: number) => string, columns: Array<{ field: string, head: string, ref: 'vertex'|'edge'|'face'|'halfedge', list: boolean, none: boolean }> }>} */
 function gridsOf(api, table, counts) {
+  if (table === 'half-edge') {
+    return HALF_EDGE_GRIDS.map((g) => ({ ...g, representation: 'half-edge', rows: counts[g.table], rowRef: /** @type {any} */ (g.table), rowName: (r) => `${NAMES[g.table]}${r + 1}` }));
+  }
   return PARTS[table].map(([representation, name, only]) => {
     const d = api.tableDescriptors.find((x) => x.representation === representation && x.name === name);
     const columns = d.columns.filter((c) => c.refers && (!only || only.includes(c.name))).map((c) => ({
@@ -85,18 +101,20 @@ function tableModel(api, check, subject) {
   const own = {}; // the lesson's own rows, by the grid's row kind
   try {
     const we = built.wingedEdge();
-    const counts = { vertex: we.vertices.length, edge: we.edges.length, face: we.faces.length };
+    const counts = { vertex: we.vertices.length, edge: we.edges.length, face: we.faces.length, halfedge: 2 * we.edges.length };
     grids = gridsOf(api, check.table, counts);
-    for (const grid of grids) own[grid.table] = built.tables(grid.representation)[grid.name].rows();
-    for (const kind of ['vertex', 'edge', 'face']) own[`${kind}Count`] = counts[kind];
+    if (check.table === 'half-edge') Object.assign(own, halfEdgeRows(api, mesh, counts));
+    else for (const grid of grids) own[grid.table] = built.tables(grid.representation)[grid.name].rows();
+    for (const kind of ['vertex', 'edge', 'face', 'halfedge']) own[`${kind}Count`] = counts[kind];
   } finally {
     built.dispose();
   }
   const given = new Set(check.given ?? []);
   const names = namesOf(check.table);
   // A column the exercise gives, in format.js's names (the winged edge's vertex and face
-  // tables' one column: vertexEdge, faceEdge).
-  const givenName = (grid, column) => (check.table === 'winged-edge' && grid.table !== 'edge' ? `${grid.table}Edge` : column.field);
+  // tables' one column: vertexEdge, faceEdge; the half-edge table's: vertexHalfedge, faceHalfedge).
+  const givenName = (grid, column) => (check.table === 'winged-edge' && grid.table !== 'edge' ? `${grid.table}Edge`
+    : check.table === 'half-edge' && grid.table !== 'halfedge' ? `${grid.table}Halfedge` : column.field);
   /** The cells in order: key `${table}:${row}:${field}`, its grid and column, its given value (null: to fill in). */
   const cells = [];
   for (const grid of grids) {
@@ -108,6 +126,21 @@ function tableModel(api, check, subject) {
     }
   }
   return { mesh, grids, names, cells, countOf: (ref) => own[`${ref}Count`] };
+}
+
+// The half-edge table in the lesson's own numbering (edge e gives h(2e+1), h(2e+2); what the
+// Half-edge tab shows), for the columns an exercise gives (and the walk's choices): the core's
+// worked answer of a blank table, whose rows nothing identifies, is that numbering. From the exercises module, so the
+// table works in any lesson with a mesh.
+export function halfEdgeRows(api, mesh, counts) {
+  const blank = (n) => new Array(n).fill(BLANK);
+  const w = api.checkMeshTableAnswer(mesh, 'half-edge', { halfedges: blank(5 * counts.halfedge), vertexHalfedges: blank(counts.vertex), faceHalfedges: blank(counts.face) }).worked;
+  const fields = ['origin', 'face', 'next', 'prev', 'twin'];
+  return {
+    halfedge: Array.from({ length: counts.halfedge }, (_, r) => Object.fromEntries(fields.map((f, k) => [f, w.halfedges[5 * r + k]]))),
+    vertex: w.vertexHalfedges.map((x) => ({ halfedge: x })),
+    face: w.faceHalfedges.map((x) => ({ halfedge: x })),
+  };
 }
 
 // The answer (typed text per cell key) as the checker takes it; problems of reading as
@@ -127,7 +160,8 @@ function readTable(model, check, textOf) {
       }
       return out;
     }
-    const r = readLabel(raw, x.column.ref, countOf(x.column.ref), Boolean(x.column.none) || x.column.ref === 'edge', names);
+    // (none is read where a column names an edge or half-edge, so the core says why it is wrong)
+    const r = readLabel(raw, x.column.ref, countOf(x.column.ref), Boolean(x.column.none) || x.column.ref === 'edge' || x.column.ref === 'halfedge', names);
     if (r.problem) { problems.push({ key: x.key, text: `${x.name}: ${r.problem}.` }); return BLANK; }
     return r.value;
   };
@@ -137,6 +171,7 @@ function readTable(model, check, textOf) {
   };
   let value;
   if (check.table === 'winged-edge') value = { edges: rowsOf('edge').flat(), vertexEdges: rowsOf('vertex').flat(), faceEdges: rowsOf('face').flat() };
+  else if (check.table === 'half-edge') value = { halfedges: rowsOf('halfedge').flat(), vertexHalfedges: rowsOf('vertex').flat(), faceHalfedges: rowsOf('face').flat() };
   else if (check.table === 'faces') value = { faces: rowsOf('face').map((r) => r[0]) };
   else if (check.table === 'edge-list') value = { edges: rowsOf('edge').flat(), polygons: rowsOf('face').map((r) => r[0]) };
   else value = { vertexVertices: rowsOf('vertex').map((r) => r[0]) };
@@ -196,7 +231,9 @@ function workedRows(api, check, model, answer) {
   const { value } = readTable(model, check, textOf);
   const worked = api.checkMeshTableAnswer(model.mesh, check.table, value).worked;
   return model.grids.map((grid) => {
-    const flat = { edge: worked.edges, vertex: check.table === 'winged-edge' ? worked.vertexEdges : worked.vertexVertices, face: check.table === 'winged-edge' ? worked.faceEdges : check.table === 'edge-list' ? worked.polygons : worked.faces }[grid.table];
+    const flat = check.table === 'half-edge'
+      ? { halfedge: worked.halfedges, vertex: worked.vertexHalfedges, face: worked.faceHalfedges }[grid.table]
+      : { edge: worked.edges, vertex: check.table === 'winged-edge' ? worked.vertexEdges : worked.vertexVertices, face: check.table === 'winged-edge' ? worked.faceEdges : check.table === 'edge-list' ? worked.polygons : worked.faces }[grid.table];
     const width = grid.columns.length;
     const rows = Array.from({ length: grid.rows }, (_, r) => grid.columns.map((c, k) => {
       const v = c.list ? flat[r] : flat[width * r + k];
@@ -226,7 +263,7 @@ export function createTableKind({ api, check, subject }) {
   const cellByKey = new Map(model.cells.map((x) => [x.key, x]));
   const root = h('div', { class: 'exercise-tables' });
   for (const grid of grids) {
-    const head = h('tr', {}, h('th', { scope: 'col' }, grid.rowRef), grid.columns.map((c) => h('th', { scope: 'col' }, c.head)));
+    const head = h('tr', {}, h('th', { scope: 'col' }, grid.rowRef === 'halfedge' ? 'half-edge' : grid.rowRef), grid.columns.map((c) => h('th', { scope: 'col' }, c.head)));
     const body = [];
     for (let r = 0; r < grid.rows; r += 1) {
       const rowName = grid.rowName(r);

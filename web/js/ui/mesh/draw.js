@@ -189,7 +189,9 @@ function drawElement(painter, model, element, colors, strong) {
 // valence 40,000 would ask 80,000 labels per frame, and no screen shows more than a few dozen.
 const FOUND_LABELLED = 48;
 
-function drawWalk(painter, model, state, colors) {
+// elementOnly: the walk's vertex (face) alone, without its edges (a half-edge walk being
+// predicted starts on a half-edge of another edge than the winged walk's first).
+function drawWalk(painter, model, state, colors, elementOnly = false) {
   const frame = model.frame;
   if (!frame) return;
   const P = model.points;
@@ -201,6 +203,7 @@ function drawWalk(painter, model, state, colors) {
   } else {
     painter.polygon(faceXY(model, P, model.walkElement), { fill: found, alpha: 0.18 });
   }
+  if (elementOnly) return;
   if (frame.current >= 0 && !frame.done) highlightEdge(painter, model, frame.current, { stroke: current, width: 11, alpha: 0.55 });
   const zoom = state.view.zoom;
   const labelledFrom = Math.max(0, frame.foundCount - FOUND_LABELLED);
@@ -354,8 +357,9 @@ export function drawMesh(baseCache, selection, painter, model, state, ctx) {
     drawBaseCached(baseCache, painter, model, state, ctx, plan);
   }
   // While a table is filled in, the walk is not drawn: its first edge is the vertex (face)
-  // table's entry, an answer. A walk being predicted shows its start only (mesh/exercise.js).
-  if (!ctx.ui?.exercise || ctx.ui.exercise === 'walk') drawWalk(painter, model, state, ctx.colors);
+  // table's entry, an answer. A walk being predicted shows its start only (mesh/exercise.js);
+  // a half-edge walk its vertex or face only (the winged walk's first edge is not its start).
+  if (!ctx.ui?.exercise || ctx.ui.exercise === 'walk') drawWalk(painter, model, state, ctx.colors, ctx.ui?.exerciseStructure === 'half-edge');
   drawElement(painter, model, selection.hover, ctx.colors, false);
   drawElement(painter, model, selection.pick, ctx.colors, true);
   // The edit player: the row the current assignment writes, on the canvas too.
