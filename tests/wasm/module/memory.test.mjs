@@ -114,6 +114,14 @@ const cases = [
       ['unknown-scheme', () => api.subdivisionCounts(exerciseMesh, { scheme: 'nope' })]]],
   ['checkWalkStep', REDUCED, () => api.checkWalkStep(api.lectureExample(), { around: 'vertex', element: 1, step: 1, given: 4 }),
     [['invalid-step', () => api.checkWalkStep(exerciseMesh, { around: 'vertex', element: 1, step: 9, given: 4 })]]],
+  ['halfEdgeEditQuestion + checkHalfEdgeEditAnswer', REDUCED,
+    () => {
+      const q = api.halfEdgeEditQuestion(api.lectureExample(), [], { op: 'flip-edge', e: 2 });
+      const blank = (rows, width) => ({ cells: Array(rows.length * width).fill(-2), removed: rows.map(() => false), labels: [] });
+      api.checkHalfEdgeEditAnswer(api.lectureExample(), [], { op: 'flip-edge', e: 2 }, { vertices: blank(q.rows.vertices, 1), halfedges: blank(q.rows.halfedges, 4), faces: blank(q.rows.faces, 1) });
+    },
+    [['deleted-element', () => api.halfEdgeEditQuestion(api.lectureExample(), [{ op: 'collapse-edge', e: 3 }], { op: 'flip-edge', e: 3 })],
+      ['invalid-answer', () => api.checkHalfEdgeEditAnswer(api.lectureExample(), [], { op: 'flip-edge', e: 2 }, { vertices: { cells: [], removed: [], labels: [] }, halfedges: { cells: [], removed: [], labels: [] }, faces: { cells: [], removed: [], labels: [] } })]]],
   ['editQuestion + checkEditAnswer', REDUCED,
     () => { api.editQuestion(api.lectureExample(), [], { op: 'flip-edge', e: 2 }); api.checkEditAnswer(api.lectureExample(), [], { op: 'set-face-edge', f: 0, e: 1 }, { vertices: { cells: [], removed: [], labels: [] }, edges: { cells: [], removed: [], labels: [] }, faces: { cells: [1], removed: [false], labels: [] } }); },
     [['deleted-element', () => api.editQuestion(api.lectureExample(), [{ op: 'collapse-edge', e: 3 }], { op: 'flip-edge', e: 3 })],
