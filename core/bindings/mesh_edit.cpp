@@ -26,9 +26,15 @@ using namespace wingspline::mesh;
 
 // Keeps the half-edge view in step with `change` when it showed the state the change started
 // from (O(the change)); otherwise it stays stale and is made again when next asked for.
+// What it changed there is kept for meshHalfEdge's "change" (mesh_entry.h).
 void follow_half_edge(MeshEntry& me, const ChangeRecord& change) {
+    HalfEdgeChange& kept = me.half_edge_change;
+    kept.entries.clear();
+    kept.winged_assignments = 0;
+    for (const AssignmentStep& s : change.steps) kept.winged_assignments += s.field != "firstCorner";
+    kept.followed = !change.changed() || (me.half_edge && me.half_edge_topology == change.before.topology);
     if (!me.half_edge || !change.changed() || me.half_edge_topology != change.before.topology) return;
-    me.half_edge->update(me.winged, change);
+    me.half_edge->update(me.winged, change, &kept.entries);
     me.half_edge_topology = me.winged.version().topology;
 }
 
