@@ -32,8 +32,9 @@ void follow_half_edge(MeshEntry& me, const ChangeRecord& change) {
     kept.entries.clear();
     kept.winged_assignments = 0;
     for (const AssignmentStep& s : change.steps) kept.winged_assignments += s.field != "firstCorner";
-    kept.followed = !change.changed() || (me.half_edge && me.half_edge_topology == change.before.topology);
-    if (!me.half_edge || !change.changed() || me.half_edge_topology != change.before.topology) return;
+    const bool current = me.half_edge && me.half_edge_topology == change.before.topology;
+    kept.followed = current || !change.changed();
+    if (!current || !change.changed()) return;
     me.half_edge->update(me.winged, change, &kept.entries);
     me.half_edge_topology = me.winged.version().topology;
 }
