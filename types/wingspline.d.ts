@@ -283,6 +283,29 @@ export interface ChangeRecord {
   positions?: Array<{ vertex: number; before: number[]; after: number[]; step: number }>;
   /** With apply(op, {costs: true}): the entries each representation read to find what to change and the entries it wrote; with {costs: 'winged-edge'}, the winged edge's alone. */
   costs?: Partial<Record<Representation, EditCost>>;
+  /** With apply(op, {halfEdge: true}): the same edit in half-edge terms (lastHalfEdgeChange()). */
+  halfEdge?: HalfEdgeChange | null;
+}
+/**
+ * One entry of the half-edge tables an edit changed, shaped as a winged-edge step. `step`:
+ * the winged-edge step (index into ChangeRecord.steps) that first names its edge, vertex or
+ * face, -1 when none does; `phase`: that step's line, -1 without one.
+ */
+export interface HalfEdgeAssignment {
+  table: 'halfedge' | 'vertex' | 'face';
+  row: number;
+  /** origin, face, next, prev of a half-edge; halfedge of a vertex or face (the twin is h ^ 1, never written). */
+  field: 'origin' | 'face' | 'next' | 'prev' | 'halfedge';
+  before: number;
+  after: number;
+  step: number;
+  phase: number;
+}
+/** An edit in half-edge terms: each changed entry once, and the entries each structure wrote. */
+export interface HalfEdgeChange {
+  steps: HalfEdgeAssignment[];
+  /** 'winged-edge': its pointer assignments (an entry written twice counts twice); 'half-edge': steps.length. */
+  written: { 'winged-edge': number; 'half-edge': number };
 }
 /**
  * One operation of the core's registry (api.meshOperations) as a lesson state holds it, its
@@ -446,7 +469,7 @@ export interface Mesh {
   setVertexEdge(v: number, e: number): ChangeRecord;
   checkSetFaceEdge(f: number, e: number): CheckResult;
   setFaceEdge(f: number, e: number): ChangeRecord;
-  apply(operation: MeshOperation, options?: { costs?: boolean | 'winged-edge' }): ChangeRecord;
+  apply(operation: MeshOperation, options?: { costs?: boolean | 'winged-edge'; halfEdge?: boolean }): ChangeRecord;
   splitEdge(e: number, t?: number): ChangeRecord;
   splitFace(f: number, a: number, b: number): ChangeRecord;
   joinFaces(e: number): ChangeRecord;
@@ -490,6 +513,8 @@ export interface Mesh {
   /** A lecture query on the half-edge arrays, with the entries read. */
   halfEdgeQuery(kind: QueryKind, element: number): { answer: Int32Array; entriesRead: number };
   halfEdgeStorage(): StorageOfRepresentation;
+  /** The newest edit or undo in half-edge terms; null when the view was not current then. */
+  lastHalfEdgeChange(change?: ChangeRecord | null): HalfEdgeChange | null;
 }
 
 export interface MeshBuildJob {

@@ -26,9 +26,16 @@ using namespace wingspline::mesh;
 
 // Keeps the half-edge view in step with `change` when it showed the state the change started
 // from (O(the change)); otherwise it stays stale and is made again when next asked for.
+// What it changed there is kept for meshHalfEdge's "change" (mesh_entry.h).
 void follow_half_edge(MeshEntry& me, const ChangeRecord& change) {
-    if (!me.half_edge || !change.changed() || me.half_edge_topology != change.before.topology) return;
-    me.half_edge->update(me.winged, change);
+    HalfEdgeChange& kept = me.half_edge_change;
+    kept.entries.clear();
+    kept.winged_assignments = 0;
+    for (const AssignmentStep& s : change.steps) kept.winged_assignments += s.field != "firstCorner";
+    const bool current = me.half_edge && me.half_edge_topology == change.before.topology;
+    kept.followed = current || !change.changed();
+    if (!current || !change.changed()) return;
+    me.half_edge->update(me.winged, change, &kept.entries);
     me.half_edge_topology = me.winged.version().topology;
 }
 

@@ -28,7 +28,15 @@ namespace wingspline::bindings {
 // The half-edge view (half_edge.h) is made on first use for the topology version it shows
 // (half_edge_topology); an edit or an undo made while it is current updates it from the
 // change record, O(the edit) (mesh_edit.cpp); any other topology change (compact) leaves
-// it stale, and it is made again on the next use (mesh_half_edge.cpp).
+// it stale, and it is made again on the next use (mesh_half_edge.cpp). What the newest edit
+// or undo changed in it is kept (half_edge_change, with the winged edge's pointer
+// assignments counted beside it) until the next one; followed = false when the view was not
+// current then, so nothing is known.
+struct HalfEdgeChange {
+    bool followed = false;
+    std::vector<mesh::HalfEdgeAssignment> entries;
+    int64_t winged_assignments = 0;
+};
 struct MeshEntry {
     mesh::WingedEdgeMesh winged;
     mesh::RepresentationCache representations;
@@ -36,6 +44,7 @@ struct MeshEntry {
     std::vector<std::unique_ptr<mesh::ChangeRecord>> undoable;
     std::unique_ptr<mesh::HalfEdgeMesh> half_edge;
     uint32_t half_edge_topology = 0;
+    HalfEdgeChange half_edge_change;
 };
 inline constexpr std::size_t kUndoRecords = 1000;
 

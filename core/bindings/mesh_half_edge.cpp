@@ -47,6 +47,11 @@ val window(const std::vector<int32_t>& column, int32_t first, int32_t rows) {
 //    (along face `element`): {steps: Int32Array, 3 per step: steps[3*i + {0, 1, 2}] = the
 //    half-edge, the value read there (prev or next), the half-edge the step goes to}.
 //  * "storage": {entries, bytes, arrays: [{name, entries, bytesPerEntry}]} (half_edge_storage).
+//  * "change": what the newest edit or undo changed in the view (mesh_entry.h,
+//    HalfEdgeChange): {followed (false: the view was not current then, nothing known),
+//    entries: Int32Array, 6 per entry: entries[6*i + {0..5}] = table (HalfEdgeTable), row,
+//    field (HalfEdgeField), before, after, the winged-edge step it follows (-1: none),
+//    wingedAssignments: the winged edge's pointer assignments in the same edit}.
 //  * a query of queries.h ("faces-around-vertex", ...) about `element`: {answer: Int32Array,
 //    entriesRead} on the half-edge arrays.
 val mesh_half_edge(int32_t handle, const std::string& kind, int32_t element, int32_t a, int32_t b) {
@@ -66,6 +71,11 @@ val mesh_half_edge(int32_t handle, const std::string& kind, int32_t element, int
             r.set("prev", window(h.prevs(), a, b));
             r.set("vertexHalfedge", window(h.vertex_halfedges(), a, b));
             r.set("faceHalfedge", window(h.face_halfedges(), a, b));
+        } else if (kind == "change") {
+            const HalfEdgeChange& c = me.half_edge_change;
+            r.set("followed", c.followed);
+            r.set("entries", to_typed_array(reinterpret_cast<const int32_t*>(c.entries.data()), 6 * c.entries.size()));
+            r.set("wingedAssignments", static_cast<double>(c.winged_assignments));
         } else if (kind == "vertex-walk" || kind == "face-walk") {
             const bool around_vertex = kind == "vertex-walk";
             if (around_vertex) require_vertex(me.winged, element);

@@ -86,26 +86,67 @@ HalfEdgeMesh HalfEdgeMesh::build(const WingedEdgeMesh& w) {
     return m;
 }
 
-void HalfEdgeMesh::update(const WingedEdgeMesh& w, const ChangeRecord& c) {
+void HalfEdgeMesh::update(const WingedEdgeMesh& w, const ChangeRecord& c, std::vector<HalfEdgeAssignment>* written) {
+    std::vector<int32_t>* const columns[4] = {&origin_, &face_, &next_, &prev_}; // in HalfEdgeField's order
+    int32_t step = kNone; // the step the rows now written are attributed to
+    const auto log = [&](HalfEdgeTable t, int32_t row, HalfEdgeField f, int32_t before, int32_t after) {
+        if (written && before != after) written->push_back({t, row, f, before, after, step});
+    };
+    // Rows an undo drops from the end leave their values for none.
+    if (written) {
+        for (int32_t x = 2 * w.edge_count(); x < halfedge_count(); ++x)
+            for (int k = 0; k < 4; ++k) log(HalfEdgeTable::HalfEdge, x, static_cast<HalfEdgeField>(k), (*columns[k])[x], kNone);
+        for (int32_t v = w.vertex_count(); v < vertex_count(); ++v) log(HalfEdgeTable::Vertex, v, HalfEdgeField::HalfEdge, vertex_halfedge_[v], kNone);
+        for (int32_t f = w.face_count(); f < face_count(); ++f) log(HalfEdgeTable::Face, f, HalfEdgeField::HalfEdge, face_halfedge_[f], kNone);
+    }
     resize(w);
     const int32_t V = w.vertex_count(), E = w.edge_count(), F = w.face_count();
+    // Each write compared with what the row held: a row written again logs nothing more, so
+    // every entry is logged once, with its first before and (the winged edge being final
+    // already) its last after.
+    const auto own_edge = [&](int32_t e) {
+        if (e < 0 || e >= E) return; // an undo's removed rows: gone with the resize
+        int32_t old[2][4];
+        for (int s = 0; s < 2; ++s)
+            for (int k = 0; k < 4; ++k) old[s][k] = (*columns[k])[2 * e + s];
+        write_edge(w, e);
+        for (int s = 0; s < 2; ++s)
+            for (int k = 0; k < 4; ++k) log(HalfEdgeTable::HalfEdge, 2 * e + s, static_cast<HalfEdgeField>(k), old[s][k], (*columns[k])[2 * e + s]);
+    };
     const auto vertex = [&](int32_t v) {
-        if (v >= 0 && v < V) write_vertex(w, v);
+        if (v < 0 || v >= V) return;
+        const int32_t old = vertex_halfedge_[v];
+        write_vertex(w, v);
+        log(HalfEdgeTable::Vertex, v, HalfEdgeField::HalfEdge, old, vertex_halfedge_[v]);
     };
     const auto face = [&](int32_t f) {
-        if (f >= 0 && f < F) write_face(w, f);
+        if (f < 0 || f >= F) return;
+        const int32_t old = face_halfedge_[f];
+        write_face(w, f);
+        log(HalfEdgeTable::Face, f, HalfEdgeField::HalfEdge, old, face_halfedge_[f]);
     };
+    // First the elements the winged-edge steps name, in the order they first name them (a
+    // named element's own rows; the search for repeats is the logging's: nothing changes).
+    if (written) {
+        for (std::size_t i = 0; i < c.steps.size(); ++i) {
+            const AssignmentStep& a = c.steps[i];
+            step = static_cast<int32_t>(i);
+            if (a.table == MeshTable::Edge) own_edge(a.row);
+            else if (a.table == MeshTable::Vertex) vertex(a.row);
+            else face(a.row);
+        }
+        step = kNone;
+    }
     // An edge's rows depend on its own row and on its wings' S and E; the wing relation is
     // symmetric (x follows e in a face exactly when e precedes x there), so the rows that
     // can read a changed edge are those of its wings. Its ends' fans and its sides' faces
     // changed with it.
     const auto edge = [&](int32_t e) {
-        if (e < 0 || e >= E) return; // an undo's removed rows: gone with the resize
-        write_edge(w, e);
+        if (e < 0 || e >= E) return;
+        own_edge(e);
         if (w.is_deleted(Edge(e))) return;
         const EdgeRecord& r = w.edge(e);
-        for (const int32_t x : {r.start_left, r.start_right, r.end_left, r.end_right})
-            if (x >= 0 && x < E) write_edge(w, x);
+        for (const int32_t x : {r.start_left, r.start_right, r.end_left, r.end_right}) own_edge(x);
         vertex(r.start);
         vertex(r.end);
         face(r.left);

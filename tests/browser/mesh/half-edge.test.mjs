@@ -37,6 +37,18 @@ async function openHalfEdgeTab(viewport = { width: 1280, height: 800 }) {
   return page;
 }
 
+// The half-edge tab open, e3 picked by its number and flipped with the edit panel's button.
+async function flipE3OnHalfEdgeTab() {
+  const page = await openHalfEdgeTab();
+  await page.selectOption('#edit-kind', 'edge');
+  await page.fill('#edit-element', '3');
+  await page.press('#edit-element', 'Enter');
+  await page.waitForFunction(() => document.querySelector('#edit-picked')?.textContent === 'Picked: e3');
+  await page.click('button[data-op="flip-edge"]');
+  await page.waitForFunction(() => window.wingspline.state.ops.length === 1);
+  return page;
+}
+
 const rowOf = (page, table, label) => page.$eval(`#${table}`, (t, want) => {
   const tr = [...t.tBodies[0].rows].find((r) => r.cells[0].textContent.trim() === want);
   return tr ? [...tr.cells].slice(1).map((c) => c.textContent.trim()) : null;
@@ -85,13 +97,7 @@ test('the correspondence: a half-edge row picked by pointer shows its edge\'s wi
 });
 
 test('after a flip of e3 (and its undo) the half-edge rows and the correspondence follow the winged edge', async () => {
-  const page = await openHalfEdgeTab();
-  await page.selectOption('#edit-kind', 'edge');
-  await page.fill('#edit-element', '3');
-  await page.press('#edit-element', 'Enter');
-  await page.waitForFunction(() => document.querySelector('#edit-picked')?.textContent === 'Picked: e3');
-  await page.click('button[data-op="flip-edge"]');
-  await page.waitForFunction(() => window.wingspline.state.ops.length === 1);
+  const page = await flipE3OnHalfEdgeTab();
   await page.click('#tab-half-edge');
   await settle(page);
   // The flip turns e3 into the other diagonal of the quad v1 v2 v4 v3: the slide's tables
@@ -191,5 +197,88 @@ test('a half-edge row picked by pointer names the four winged-edge fields it rep
   await page.waitForFunction(() => /Edge e5 in both/.test(document.querySelector('#he-correspondence-title')?.textContent ?? ''));
   assert.deepEqual(await replaced(), []);
   assert.match(await page.textContent('#he-correspondence-note'), /^Pick an edge/);
+  assert.deepEqual(page.problems, []);
+});
+
+// Flip e3 in half-edge terms, by hand from the rows above and the flipped slide (e3 = v4 → v1,
+// F1 = v1 v2 v4 on its left, F2 = v4 v3 v1 on its right; lecture-slide.mjs FLIP_E3):
+//   h5 (e3, now v4 → v1 on F1): origin v2 → v4, next h2 → h3, prev h3 → h9;
+//   h6 (now v1 → v4 on F2): origin v3 → v1, next h9 → h8, prev h8 → h2;
+//   h2 (e1, v3 → v1, now on F2): face F1 → F2, next h3 → h6, prev h5 → h8;
+//   h3 (e2, v1 → v2 on F1): next h5 → h9, prev h2 → h5;   h8 (e4, v4 → v3 on F2): next h6 → h2, prev h9 → h6;
+//   h9 (e5, v2 → v4, now on F1): face F2 → F1, next h8 → h5, prev h6 → h3;
+//   F1 stores e3, whose S → E lies on it: h2 → h5. Every vertex keeps its boundary half-edge.
+// 17 entries; the winged edge writes 18 (tests/wasm/mesh/edit.test.mjs counts them by hand).
+// Cells as [table, row, column (1 origin, 3 face, 4 next, 5 prev; 1 a vertex's or face's
+// half-edge)] -> [before, after].
+const FLIP_E3_CELLS = {
+  'he-halfedge-table h5 1': ['v2', 'v4'], 'he-halfedge-table h5 4': ['h2', 'h3'], 'he-halfedge-table h5 5': ['h3', 'h9'],
+  'he-halfedge-table h6 1': ['v3', 'v1'], 'he-halfedge-table h6 4': ['h9', 'h8'], 'he-halfedge-table h6 5': ['h8', 'h2'],
+  'he-halfedge-table h2 3': ['F1', 'F2'], 'he-halfedge-table h2 4': ['h3', 'h6'], 'he-halfedge-table h2 5': ['h5', 'h8'],
+  'he-halfedge-table h3 4': ['h5', 'h9'], 'he-halfedge-table h3 5': ['h2', 'h5'],
+  'he-halfedge-table h8 4': ['h6', 'h2'], 'he-halfedge-table h8 5': ['h9', 'h6'],
+  'he-halfedge-table h9 3': ['F2', 'F1'], 'he-halfedge-table h9 4': ['h8', 'h5'], 'he-halfedge-table h9 5': ['h6', 'h3'],
+  'he-face-table F1 1': ['h2', 'h5'],
+};
+
+test('flip e3 played back in half-edge terms, by keyboard and pointer: each hand-worked cell marked once, as it is assigned; the counts of both structures', async () => {
+  const page = await flipE3OnHalfEdgeTab();
+  await settle(page);
+  assert.match(await page.textContent('#edit-written'), /winged edge 18, half-edge 17\b/);
+  // Before the edit: the half-edge tables of the slide (worked at the top of this file).
+  await page.click('#edit-restart');
+  await page.waitForFunction(() => document.querySelector('#edit-step')?.textContent === '0 of 17');
+  assert.deepEqual(await rowOf(page, 'he-halfedge-table', 'h5'), ['v2', 'v3', 'F1', 'h2', 'h3', 'h6']);
+  assert.deepEqual(await rowOf(page, 'he-face-table', 'F1'), ['h2']);
+  const cellText = (key) => page.evaluate((k) => {
+    const [id, label, column] = k.split(' ');
+    const tr = [...document.getElementById(id).tBodies[0].rows].find((r) => r.cells[0].textContent.trim() === label);
+    return tr.cells[Number(column)].textContent.trim();
+  }, key);
+  for (const [key, [before]] of Object.entries(FLIP_E3_CELLS)) assert.equal(await cellText(key), before, `${key} before the flip`);
+  const marked = () => page.$$eval('#he-halfedge-table td.is-read, #he-vertex-table td.is-read, #he-face-table td.is-read',
+    (cells) => cells.map((c) => `${c.closest('table').id} ${c.parentElement.children[0].textContent.trim()} ${[...c.parentElement.children].indexOf(c)}`));
+  const seen = [];
+  for (let k = 1; k <= 17; k += 1) {
+    // Odd steps by keyboard (Enter on the focused Step button), even ones by pointer.
+    if (k % 2) {
+      await page.focus('#edit-next');
+      await page.keyboard.press('Enter');
+    } else {
+      await page.click('#edit-next');
+    }
+    await page.waitForFunction((want) => document.querySelector('#edit-step')?.textContent === `${want} of 17`, k);
+    await settle(page);
+    // One cell marked while the edit plays; at its last step the walk's cell (around v2) is
+    // marked again beside it, as on the winged-edge tab.
+    const cells = await marked();
+    if (k < 17) assert.equal(cells.length, 1, `step ${k}: one cell is being assigned`);
+    const fresh = cells.filter((c) => c in FLIP_E3_CELLS && !seen.includes(c));
+    assert.equal(fresh.length, 1, `step ${k}: one cell the flip changes, not assigned before: ${cells}`);
+    const [key] = fresh;
+    seen.push(key);
+    // The cell shows its new value, and the step's line says the same.
+    const [before, after] = FLIP_E3_CELLS[key];
+    assert.equal(await cellText(key), after, `step ${k}: ${key}`);
+    const field = { 1: key.startsWith('he-halfedge') ? 'origin' : 'half-edge', 3: 'face', 4: 'next', 5: 'prev' }[key.split(' ')[2]];
+    const [, row] = key.split(' ');
+    // (followed by the winged-edge line it follows, in brackets, when there is one)
+    assert.match(await page.textContent('#edit-current'), new RegExp(`: [a-z-]+ table, ${row} · ${field}: ${before} → ${after}( \\(|$)`));
+    // The cell is scrolled into the side column's view.
+    const inView = await page.evaluate((k) => {
+      const [id, label, column] = k.split(' ');
+      const tr = [...document.getElementById(id).tBodies[0].rows].find((r) => r.cells[0].textContent.trim() === label);
+      const r = tr.cells[Number(column)].getBoundingClientRect();
+      return r.top >= 0 && r.bottom <= window.innerHeight;
+    }, key);
+    assert.ok(inView, `step ${k}: ${key} is in view`);
+    if (k === 6) await screenshot(page, 'half-edge-edit-playback-1280');
+  }
+  assert.equal(seen.length, Object.keys(FLIP_E3_CELLS).length, 'every hand-worked cell was assigned');
+  // The rows after the flip, by hand above.
+  assert.deepEqual(await rowOf(page, 'he-halfedge-table', 'h5'), ['v4', 'v1', 'F1', 'h3', 'h9', 'h6']);
+  // The winged-edge tab plays the same edit's 18 assignments.
+  await page.click('#tab-winged');
+  await page.waitForFunction(() => / of 18$/.test(document.querySelector('#edit-step')?.textContent ?? ''));
   assert.deepEqual(page.problems, []);
 });

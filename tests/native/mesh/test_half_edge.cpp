@@ -446,3 +446,171 @@ TEST_CASE("half-edge: the lecture's queries give the other representations' answ
     const WingedEdgeMesh w = lecture();
     CHECK_THROWS_AS(half_edge_answer(QueryKind::EdgesOfFace, 3, HalfEdgeMesh::build(w), w), wingspline::Error);
 }
+
+// ---------------------------------------------------------------- an edit in half-edge terms
+
+namespace {
+
+// The six columns of a view as plain arrays, to replay a record on.
+struct Tables {
+    std::vector<int32_t> columns[4]; // origin, face, next, prev: in HalfEdgeField's order
+    std::vector<int32_t> vertex, face;
+    explicit Tables(const HalfEdgeMesh& h)
+        : columns{h.origins(), h.faces(), h.nexts(), h.prevs()}, vertex(h.vertex_halfedges()), face(h.face_halfedges()) {}
+    int32_t& at(const HalfEdgeAssignment& a) {
+        if (a.table == HalfEdgeTable::Vertex) return vertex.at(a.row);
+        if (a.table == HalfEdgeTable::Face) return face.at(a.row);
+        return columns[static_cast<int>(a.field)].at(a.row);
+    }
+    // Rows the edit added start empty (kNone in every field), as the view's arrays grow.
+    void grow_to(const HalfEdgeMesh& h) {
+        for (auto& c : columns) c.resize(std::max(c.size(), h.origins().size()), kNone);
+        vertex.resize(std::max(vertex.size(), h.vertex_halfedges().size()), kNone);
+        face.resize(std::max(face.size(), h.face_halfedges().size()), kNone);
+    }
+    void shrink_to(const HalfEdgeMesh& h) {
+        for (auto& c : columns) c.resize(h.origins().size());
+        vertex.resize(h.vertex_halfedges().size());
+        face.resize(h.face_halfedges().size());
+    }
+    bool operator==(const HalfEdgeMesh& h) const {
+        return columns[0] == h.origins() && columns[1] == h.faces() && columns[2] == h.nexts() && columns[3] == h.prevs() &&
+               vertex == h.vertex_halfedges() && face == h.face_halfedges();
+    }
+};
+
+// Replays `record` on the view `before`: every entry's before must be what the row holds
+// then (so no entry is listed twice), and after must differ from it.
+Tables replay(const HalfEdgeMesh& before, const HalfEdgeMesh& after, const std::vector<HalfEdgeAssignment>& record) {
+    Tables t(before);
+    t.grow_to(after);
+    for (const HalfEdgeAssignment& a : record) {
+        INFO("table " << static_cast<int>(a.table) << " row " << a.row << " field " << static_cast<int>(a.field));
+        int32_t& cell = t.at(a);
+        CHECK(cell == a.before);
+        CHECK(a.before != a.after);
+        cell = a.after;
+    }
+    // Rows an undo dropped: the record left them empty first.
+    for (const auto& c : t.columns)
+        for (std::size_t x = after.origins().size(); x < c.size(); ++x) CHECK(c[x] == kNone);
+    t.shrink_to(after);
+    return t;
+}
+
+// Entries attributed to a winged-edge step come first, in the steps' order, and that step
+// names the entry's element (an edge of a half-edge row, the vertex, the face).
+void require_followable(const std::vector<HalfEdgeAssignment>& record, const ChangeRecord& c) {
+    int32_t last = 0;
+    bool reached = false;
+    for (const HalfEdgeAssignment& a : record) {
+        if (a.step == kNone) { reached = true; continue; }
+        REQUIRE(!reached);
+        REQUIRE(a.step >= last);
+        last = a.step;
+        const AssignmentStep& s = c.steps.at(a.step);
+        const MeshTable named = a.table == HalfEdgeTable::HalfEdge ? MeshTable::Edge : a.table == HalfEdgeTable::Vertex ? MeshTable::Vertex : MeshTable::Face;
+        CHECK(s.table == named);
+        CHECK(s.row == (a.table == HalfEdgeTable::HalfEdge ? edge_of_half_edge(a.row) : a.row));
+    }
+}
+
+} // namespace
+
+TEST_CASE("half-edge record: flip e3 of the lecture mesh, worked out by hand", "[mesh][half-edge]") {
+    // kLectureRows against kFlippedRows above, entry by entry (1-based labels): the rows of
+    // e1, e4 and e6, e7 stay; e2's S -> E (h3) gets a new next and prev (F1 is now v1 v2 v4);
+    // e3's both halves (h5, h6) turn to v4 -> v1 and v1 -> v4; e4's E -> S (h8) and e5's
+    // S -> E (h9, now on F1) follow; e1's E -> S (h2) is now on F2. F1 stores e3 now, on whose
+    // left it lies, so its half-edge is e3's S -> E, h5; F2 keeps h6, every vertex its own.
+    struct Entry {
+        HalfEdgeTable table;
+        const char* row;
+        HalfEdgeField field;
+        const char* before;
+        const char* after;
+    };
+    using T = HalfEdgeTable;
+    using Fd = HalfEdgeField;
+    const std::vector<Entry> by_hand = {
+        {T::HalfEdge, "h2", Fd::Face, "F1", "F2"}, {T::HalfEdge, "h2", Fd::Next, "h3", "h6"}, {T::HalfEdge, "h2", Fd::Prev, "h5", "h8"},
+        {T::HalfEdge, "h3", Fd::Next, "h5", "h9"}, {T::HalfEdge, "h3", Fd::Prev, "h2", "h5"},
+        {T::HalfEdge, "h5", Fd::Origin, "v2", "v4"}, {T::HalfEdge, "h5", Fd::Next, "h2", "h3"}, {T::HalfEdge, "h5", Fd::Prev, "h3", "h9"},
+        {T::HalfEdge, "h6", Fd::Origin, "v3", "v1"}, {T::HalfEdge, "h6", Fd::Next, "h9", "h8"}, {T::HalfEdge, "h6", Fd::Prev, "h8", "h2"},
+        {T::HalfEdge, "h8", Fd::Next, "h6", "h2"}, {T::HalfEdge, "h8", Fd::Prev, "h9", "h6"},
+        {T::HalfEdge, "h9", Fd::Face, "F2", "F1"}, {T::HalfEdge, "h9", Fd::Next, "h8", "h5"}, {T::HalfEdge, "h9", Fd::Prev, "h6", "h3"},
+        {T::Face, "F1", Fd::HalfEdge, "h2", "h5"},
+    };
+    WingedEdgeMesh w = lecture();
+    HalfEdgeMesh h = HalfEdgeMesh::build(w);
+    const HalfEdgeMesh before = h;
+    const ChangeRecord c = w.apply(flip(2));
+    std::vector<HalfEdgeAssignment> record;
+    h.update(w, c, &record);
+    require_rows(h, kFlippedRows, kLectureVertices, kFlippedFaces);
+    REQUIRE(record.size() == by_hand.size()); // 17 entries: 16 half-edge fields and F1's half-edge
+    for (const Entry& e : by_hand) {
+        INFO(e.row << " field " << static_cast<int>(e.field));
+        const auto found = std::find_if(record.begin(), record.end(), [&](const HalfEdgeAssignment& a) {
+            return a.table == e.table && a.row == label(e.row) && a.field == e.field;
+        });
+        REQUIRE(found != record.end());
+        CHECK(found->before == label(e.before));
+        CHECK(found->after == label(e.after));
+    }
+    // Grouped as the winged-edge record names the edges: e3's two halves first (the flip's
+    // first line rewrites e3's row), and each half-edge's fields together.
+    require_followable(record, c);
+    CHECK(edge_of_half_edge(record.front().row) == 2);
+    CHECK(replay(before, h, record) == h);
+    // The record without the view's rows: an update without it writes the same view.
+    HalfEdgeMesh quiet = before;
+    quiet.update(w, c);
+    CHECK(quiet == h);
+}
+
+TEST_CASE("half-edge record: every operation on random meshes, replayed on the view before, gives the view after", "[mesh][half-edge]") {
+    std::vector<int> applied(kOps, 0);
+    std::size_t undos = 0;
+    for (uint32_t seed = 1; seed <= 32; ++seed) {
+        std::vector<Fixture> all = fixtures();
+        Fixture& fx = all[seed % all.size()];
+        WingedEdgeMesh& w = fx.mesh;
+        HalfEdgeMesh h = HalfEdgeMesh::build(w);
+        std::mt19937 rng(seed * 7919);
+        std::vector<ChangeRecord> history;
+        for (int round = 0; round < 200; ++round) {
+            INFO(fx.name << " seed " << seed << " round " << round);
+            const HalfEdgeMesh before = h;
+            std::vector<HalfEdgeAssignment> record;
+            if (!history.empty() && rng() % 5 == 0) {
+                const ChangeRecord u = w.undo(history.back());
+                history.pop_back();
+                h.update(w, u, &record);
+                ++undos;
+            } else {
+                const Call call = random_call(w, rng);
+                const Operation op = operation_of(call);
+                if (!w.check(op).ok) continue;
+                ChangeRecord c = w.apply(op);
+                if (!c.changed()) continue;
+                INFO(c.op);
+                h.update(w, c, &record);
+                require_followable(record, c);
+                ++applied[call.op];
+                history.push_back(std::move(c));
+            }
+            // Computed independently: the view built afresh from the winged edge after the edit.
+            const HalfEdgeMesh fresh = HalfEdgeMesh::build(w);
+            REQUIRE(h == fresh);
+            REQUIRE(replay(before, fresh, record) == fresh);
+        }
+    }
+    for (int op = 0; op < kOps; ++op) {
+        INFO(op_name(op));
+        const std::string name = op_name(op);
+        for (const char* edit : {"flip-edge", "split-edge", "split-face", "join-faces", "collapse-edge", "poke-face", "split-vertex"})
+            if (name == edit) CHECK(applied[op] >= 20);
+    }
+    CHECK(undos >= 400);
+}

@@ -183,3 +183,114 @@ test('queryCostGrowth: the half-edge reads stay flat from a thousand to a millio
   // Edges of a triangle: the face's half-edge, then three nexts.
   assert.deepEqual(api.queryCostGrowth('edges-of-face', [22]).reads[0]['half-edge'], 4);
 });
+
+// ---------------------------------------------------------------- an edit in half-edge terms
+
+// The half-edge tables as plain arrays (one per field), to replay a record on.
+function tablesOf(mesh) {
+  const a = mesh.halfEdgeArrays();
+  return {
+    halfedge: { origin: Array.from(a.origin), face: Array.from(a.face), next: Array.from(a.next), prev: Array.from(a.prev) },
+    vertex: { halfedge: Array.from(a.vertexHalfedge) },
+    face: { halfedge: Array.from(a.faceHalfedge) },
+  };
+}
+
+// Replays `steps` on `before`: each entry's before is what its cell holds then and its after
+// differs; rows the edit added start at -1; rows beyond `after`'s (an undo's) are dropped.
+function replay(before, after, steps) {
+  const t = structuredClone(before);
+  for (const [table, fields] of Object.entries(after)) {
+    for (const [field, column] of Object.entries(fields)) while (t[table][field].length < column.length) t[table][field].push(-1);
+  }
+  for (const s of steps) {
+    assert.equal(t[s.table][s.field][s.row], s.before, `${s.table} ${s.row} ${s.field}: before`);
+    assert.notEqual(s.after, s.before);
+    t[s.table][s.field][s.row] = s.after;
+  }
+  for (const [table, fields] of Object.entries(after)) for (const [field, column] of Object.entries(fields)) t[table][field].length = column.length;
+  return t;
+}
+
+// Flip e3 of the lecture mesh: LECTURE against FLIPPED above, entry by entry (table row field
+// before after, 1-based): e3's two halves turn round, e1's E -> S moves to F2, e5's S -> E to
+// F1, and the next/prev around F1 and F2 follow; F1 now stores e3, whose S -> E is on it.
+const FLIP_E3 = [
+  'halfedge h2 face F1 F2', 'halfedge h2 next h3 h6', 'halfedge h2 prev h5 h8',
+  'halfedge h3 next h5 h9', 'halfedge h3 prev h2 h5',
+  'halfedge h5 origin v2 v4', 'halfedge h5 next h2 h3', 'halfedge h5 prev h3 h9',
+  'halfedge h6 origin v3 v1', 'halfedge h6 next h9 h8', 'halfedge h6 prev h8 h2',
+  'halfedge h8 next h6 h2', 'halfedge h8 prev h9 h6',
+  'halfedge h9 face F2 F1', 'halfedge h9 next h8 h5', 'halfedge h9 prev h6 h3',
+  'face F1 halfedge h2 h5',
+];
+
+test('apply(op, {halfEdge: true}): flip e3 of the lecture mesh in half-edge terms, worked out by hand', () => {
+  withMesh(api.lectureExample(), (mesh) => {
+    const change = mesh.apply({ op: 'flip-edge', e: 2 }, { halfEdge: true });
+    const { steps, written } = change.halfEdge;
+    const key = (s) => `${s.table} ${s.row} ${s.field}`;
+    const byHand = FLIP_E3.map((line) => {
+      const [table, row, field, before, after] = line.split(' ');
+      return { table, row: label(row), field, before: label(before), after: label(after) };
+    });
+    assert.deepEqual(steps.map((s) => ({ table: s.table, row: s.row, field: s.field, before: s.before, after: s.after })).sort((a, b) => key(a).localeCompare(key(b))),
+      byHand.sort((a, b) => key(a).localeCompare(key(b))));
+    assert.equal(written['half-edge'], 17);
+    assert.equal(written['winged-edge'], change.steps.filter((s) => s.field !== 'firstCorner').length);
+    // Each entry follows the winged-edge step that first names its element, in the steps' order.
+    let last = 0;
+    for (const s of steps) {
+      if (s.step < 0) { assert.equal(s.phase, -1); continue; }
+      assert.ok(s.step >= last);
+      last = s.step;
+      const named = change.steps[s.step];
+      assert.equal(named.table, s.table === 'halfedge' ? 'edge' : s.table);
+      assert.equal(named.row, s.table === 'halfedge' ? s.row >> 1 : s.row);
+      assert.equal(s.phase, named.phase);
+    }
+    // The rows of one half-edge come together, origin before face before next before prev.
+    const order = ['origin', 'face', 'next', 'prev', 'halfedge'];
+    steps.forEach((s, i) => {
+      const p = steps[i - 1];
+      if (p && p.table === s.table && p.row === s.row) assert.ok(order.indexOf(p.field) < order.indexOf(s.field));
+    });
+    assert.deepEqual(mesh.lastHalfEdgeChange(change), change.halfEdge);
+  });
+});
+
+test('every operation, replayed in half-edge terms on the view before, gives the view after', () => {
+  const operations = [
+    () => ({ op: 'flip-edge', e: 7 }), () => ({ op: 'split-edge', e: 9, t: 0.25 }), () => ({ op: 'join-faces', e: 12 }),
+    () => ({ op: 'collapse-edge', e: 20 }), () => ({ op: 'poke-face', f: 5 }),
+    (m) => { const c = m.adjacency('vertices-of-face', 3); return { op: 'split-face', f: 3, a: c[0], b: c[2] }; },
+    (m) => { const n = m.adjacency('vertices-around-vertex', 8); return { op: 'split-vertex', v: 8, a: n[0], b: n[2] }; },
+  ];
+  // split-face needs a face with two corners not joined by a side: the cube's quads.
+  for (const [i, make] of operations.entries()) {
+    withMesh(i === 5 ? api.generateMesh('cube') : api.generateMesh('grid', { nx: 4, ny: 4 }), (mesh) => {
+      const before = tablesOf(mesh);
+      const operation = make(mesh);
+      assert.ok(mesh.check(operation).ok, `${operation.op} applies`);
+      const change = mesh.apply(operation, { halfEdge: true });
+      assert.ok(change.halfEdge.steps.length > 0, operation.op);
+      const after = tablesOf(mesh);
+      assert.deepEqual(replay(before, after, change.halfEdge.steps), after, operation.op);
+      assert.equal(change.halfEdge.written['half-edge'], change.halfEdge.steps.length);
+      // Taken back: the undo's own record leads back to the view before.
+      mesh.undo();
+      assert.deepEqual(replay(after, tablesOf(mesh), mesh.lastHalfEdgeChange().steps), before, `undo ${operation.op}`);
+    });
+  }
+});
+
+test('lastHalfEdgeChange(): null when the view was not kept at the edit', () => {
+  withMesh(api.lectureExample(), (mesh) => {
+    const change = mesh.apply({ op: 'flip-edge', e: 2 });
+    assert.equal(change.halfEdge, undefined);
+    assert.equal(mesh.lastHalfEdgeChange(change), null);
+    mesh.halfEdge(); // kept from now on: the next edit is followed
+    const next = mesh.apply({ op: 'flip-edge', e: 2 });
+    assert.ok(mesh.lastHalfEdgeChange(next).steps.length > 0);
+  });
+});

@@ -465,14 +465,19 @@ export class Mesh {
   // others are compared whole, O(mesh): ask it for one edit, not for a replayed list.
   // {costs: 'winged-edge'} counts the winged edge alone ({'winged-edge': {reads, writes}}),
   // O(the edit): what a page does on a mesh too big to derive the others after every edit.
-  /** @param {any} operation @param {{ costs?: boolean | 'winged-edge' }} [options] */
-  apply(operation, { costs = false } = {}) {
+  // With {halfEdge: true} it also says what the edit changed in the half-edge view:
+  // halfEdge, as lastHalfEdgeChange() gives it (the view is made first if it is not current,
+  // O(mesh) once; every later edit updates it, O(the edit)).
+  /** @param {any} operation @param {{ costs?: boolean | 'winged-edge', halfEdge?: boolean }} [options] */
+  apply(operation, { costs = false, halfEdge = false } = {}) {
     const raw = this.#editing();
     const [edit, values] = this.#operationValues(operation);
     if (costs !== true && costs !== false && costs !== 'winged-edge') fail('invalid-argument', "costs must be true, false or 'winged-edge'");
+    if (halfEdge) this.#halfEdgeArrays(0, 0);
     const r = unwrap(raw.meshEdit(this.#live(), edit.name, Float64Array.from(values), false, costs === 'winged-edge' ? 2 : costs ? 1 : 0));
     this.#setVersion(r.after);
-    return readChange(r, this.#edits);
+    const change = readChange(r, this.#edits);
+    return halfEdge ? { ...change, halfEdge: this.lastHalfEdgeChange(change) } : change;
   }
 
   // check({op: 'flip-edge', e: 4}); the positional form check('flip-edge', 4) takes the
@@ -667,6 +672,29 @@ export class Mesh {
     return { answer, entriesRead };
   }
 
+  // The newest edit or undo in half-edge terms, shaped as its winged-edge steps: {steps:
+  // [{table: 'halfedge' | 'vertex' | 'face', row, field: 'origin' | 'face' | 'next' | 'prev'
+  // (a half-edge's) | 'halfedge' (a vertex's or face's), before, after, step, phase}], written:
+  // {'winged-edge': its pointer assignments, 'half-edge': steps.length}}. Each entry whose value
+  // changed, once; -1 for none (a gap's fields, a row before the edit added it). In an order a
+  // student can follow: per step of the winged-edge record, the first time it names an edge,
+  // vertex or face, that element's rows (an edge's: 2e then 2e + 1); `step` is that step's index
+  // in `change.steps` and `phase` its line; then the rows that read a changed neighbour (step
+  // -1). Null when the view was not current at the edit (apply's {halfEdge: true} makes it so).
+  // `change`: the record it belongs to, for the phases (optional).
+  lastHalfEdgeChange(change = null) {
+    const r = unwrap(this.#halfEdgeRaw().meshHalfEdge(this.#live(), 'change', 0, 0, 0));
+    if (!r.followed) return null;
+    const e = r.entries;
+    const steps = [];
+    for (let k = 0; k + 6 <= e.length; k += 6) {
+      const step = e[k + 5];
+      steps.push({ table: HALF_EDGE_TABLES[e[k]], row: e[k + 1], field: HALF_EDGE_FIELDS[e[k + 2]], before: e[k + 3], after: e[k + 4],
+        step, phase: change?.steps[step]?.phase ?? -1 });
+    }
+    return { steps, written: { 'winged-edge': r.wingedAssignments, 'half-edge': steps.length } };
+  }
+
   // Its storage as storage() gives each representation's: vertex coordinates, then origin,
   // face, next, prev (one int32 per half-edge each), vertex half-edge, face half-edge.
   halfEdgeStorage() {
@@ -683,6 +711,10 @@ export class Mesh {
     return this.#raw;
   }
 }
+
+// The core's HalfEdgeTable and HalfEdgeField (half_edge.h) by number; 6 int32 per entry.
+const HALF_EDGE_TABLES = Object.freeze(['halfedge', 'vertex', 'face']);
+const HALF_EDGE_FIELDS = Object.freeze(['origin', 'face', 'next', 'prev', 'halfedge']);
 
 // A half-edge walk as the core sends it (steps: 3 int32 per step, [halfedge, read, next]) as
 // one record per step.

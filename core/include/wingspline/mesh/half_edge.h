@@ -47,6 +47,24 @@ struct HalfEdgeStep {
 };
 static_assert(sizeof(HalfEdgeStep) == 3 * sizeof(int32_t), "a walk crosses the boundary as 3 int32 per step");
 
+// One entry of the half-edge tables an edit changed, shaped as the winged edge's
+// AssignmentStep: table[row].field went from before to after (kNone for a gap or a row the
+// edit added). The twin is not a field: it is h ^ 1 whatever the edit.
+enum class HalfEdgeTable : int32_t { HalfEdge, Vertex, Face };
+enum class HalfEdgeField : int32_t { Origin, Face, Next, Prev, HalfEdge }; // HalfEdge: a vertex's or face's one
+struct HalfEdgeAssignment {
+    HalfEdgeTable table = HalfEdgeTable::HalfEdge;
+    int32_t row = kNone;
+    HalfEdgeField field = HalfEdgeField::Origin;
+    int32_t before = kNone;
+    int32_t after = kNone;
+    // The winged-edge record's step (index into ChangeRecord::steps) that first names the
+    // row's edge, vertex or face; kNone when no step names it (a row that reads a changed
+    // neighbour: a wing's next or prev, the half-edge of a vertex at a changed edge's end).
+    int32_t step = kNone;
+};
+static_assert(sizeof(HalfEdgeAssignment) == 6 * sizeof(int32_t), "a half-edge record crosses the boundary as 6 int32 per entry");
+
 class HalfEdgeMesh {
 public:
     // The view of `w` as it is now, O(V + E + F).
@@ -56,7 +74,13 @@ public:
     // names and of their wings, the ends of those edges, the faces on their sides, the
     // vertices and faces it names), grows the arrays for new elements and shrinks them when
     // an undo removed the last rows: O(the edit). The result equals build(w).
-    void update(const WingedEdgeMesh& w, const ChangeRecord& change);
+    // `written` (if given) receives every entry whose value changed, each once with its
+    // first before and last after, in an order a student can follow: per step of the
+    // winged-edge record, the first time it names an element, that element's rows (an edge:
+    // origin, face, next, prev of 2e, then of 2e + 1); then the rows reached through a
+    // neighbour; rows an undo dropped from the end go to kNone. Replayed on the view
+    // before, it gives the view after.
+    void update(const WingedEdgeMesh& w, const ChangeRecord& change, std::vector<HalfEdgeAssignment>* written = nullptr);
 
     int32_t halfedge_count() const { return static_cast<int32_t>(origin_.size()); }
     int32_t vertex_count() const { return static_cast<int32_t>(vertex_halfedge_.size()); }

@@ -1,13 +1,15 @@
 // @ts-check
 // "Edit the mesh": the picked vertex, edge or face (canvas, table row, touch or
 // the number fields here), the operations that apply to it (each enabled or saying why
-// not, from mesh.check), the last edit played back one pointer assignment at a time, the
-// counts and Euler's formula, and how many stored entries every representation rewrote.
+// not, from mesh.check), the last edit played back one pointer assignment at a time (on the
+// half-edge tab, one half-edge entry at a time), the counts and Euler's formula, how many
+// pointer entries the winged edge and the half-edge wrote, and how many stored entries
+// every representation rewrote.
 // Edits go into state.ops (edit-ops.js withEdit), so undo, links and reload keep them.
 import { h, revealInBoxes } from '../../app/dom.js';
 import { createPlayer } from '../../app/player.js';
 import { editOps, withEdit } from './edit-ops.js';
-import { visibleSteps, stepText } from './edit-playback.js';
+import { visibleSteps, playbackSteps, playbackStepText } from './edit-playback.js';
 import { vLabel, eLabel, fLabel } from './labels.js';
 import { exists, whyNot, goneNote, keptCorner } from './live-elements.js';
 import { createGrowthPlot, COST_GRIDS, COST_FACES } from './growth.js';
@@ -106,15 +108,17 @@ export function createEditPanel(ctx, selection, { pick }) {
   // an edit plays, so the drawing, this line and the rewritten cell are on one screen.
   const currentLine = h('p', { class: 'edit-current', id: 'edit-current', 'aria-live': 'polite' });
   const lastTitle = h('h3', { id: 'edit-last' }, 'Last edit');
+  // The pointer entries each structure wrote in the last edit (the core's count of each).
+  const written = h('p', { class: 'edit-written', id: 'edit-written' });
 
   const player = createPlayer({
-    count: () => visibleSteps(ctx.model?.lastOperation).length + 1,
+    count: () => playbackSteps(ctx.model?.lastOperation, state().tab).length + 1,
     getStep: () => shownSteps(),
     onStep: (i) => ctx.commit({ ...state(), editStep: i }, { history: false }),
     stepsPerSecond: 2,
   });
   const shownSteps = () => {
-    const n = visibleSteps(ctx.model?.lastOperation).length;
+    const n = playbackSteps(ctx.model?.lastOperation, state().tab).length;
     const s = state().editStep;
     return s < 0 || s > n ? n : s;
   };
@@ -141,6 +145,7 @@ export function createEditPanel(ctx, selection, { pick }) {
     reasons,
     euler,
     lastTitle,
+    written,
     phaseList,
     stepList,
     costs,
@@ -247,23 +252,29 @@ export function createEditPanel(ctx, selection, { pick }) {
 
   function refreshPlayback(model) {
     const record = model.lastOperation;
-    const steps = visibleSteps(record);
+    const steps = playbackSteps(record, state().tab);
     const shown = shownSteps();
-    const key = [record, shown, model.lastEdit, model.F, ctx.colors];
+    const key = [record, shown, model.lastEdit, model.F, ctx.colors, model.halfEdgePlayback];
     if (same(key, playbackShown)) return;
     playbackShown = key;
-    lastTitle.textContent = record ? `Last edit: ${EDIT_OP[record.op]?.what(model.lastEdit) ?? record.op} — ${steps.length} assignments`
+    // On the half-edge tab the player plays the same edit in half-edge terms.
+    const what = model.halfEdgePlayback ? `${steps.length} half-edge entries` : `${steps.length} assignments`;
+    lastTitle.textContent = record ? `Last edit: ${EDIT_OP[record.op]?.what(model.lastEdit) ?? record.op} — ${what}`
       : model.lastEdit?.op === 'compact' ? 'Last edit: compact (every table renumbered without its gaps)' : 'Last edit: none yet';
     stepLabel.textContent = record ? `${shown} of ${steps.length}` : '';
     now.hidden = !record;
     now.firstElementChild.textContent = lastTitle.textContent;
     currentLine.textContent = !record ? '' : shown === 0 ? 'Before the edit: no assignment made yet.'
-      : `${shown === steps.length ? 'Last assignment' : `Assignment ${shown}`}: ${stepText(steps[shown - 1])}${record.phases?.[steps[shown - 1].phase] ? ` (${record.phases[steps[shown - 1].phase]})` : ''}`;
+      : `${shown === steps.length ? 'Last assignment' : `Assignment ${shown}`}: ${playbackStepText(steps[shown - 1])}${record.phases?.[steps[shown - 1].phase] ? ` (${record.phases[steps[shown - 1].phase]})` : ''}`;
     for (const b of controls.querySelectorAll('button')) b.disabled = !record;
     // The algorithm's lines (the core's), the one that made the current assignment marked.
     const phase = shown > 0 ? steps[shown - 1].phase : -1;
     phaseList.replaceChildren(...(record?.phases ?? []).map((line, i) => h('li', { 'data-line': i, class: i === phase ? 'is-current' : '', 'aria-current': i === phase ? 'step' : null }, line)));
-    stepList.replaceChildren(...steps.map((s, i) => h('li', { 'data-step': i, class: i < shown ? (i === shown - 1 ? 'is-current' : 'is-done') : '' }, stepText(s))));
+    stepList.replaceChildren(...steps.map((s, i) => h('li', { 'data-step': i, class: i < shown ? (i === shown - 1 ? 'is-current' : 'is-done') : '' }, playbackStepText(s))));
+    const counted = record?.halfEdge?.written;
+    written.hidden = !counted;
+    written.textContent = counted ? `Pointer entries written: winged edge ${count(counted['winged-edge'])}, half-edge ${count(counted['half-edge'])}`
+      + ' (the winged edge counts each assignment its algorithm made, the half-edge each entry that changed; the Half-edge tab plays them one at a time).' : '';
     phaseList.hidden = !phaseList.children.length;
     stepList.hidden = !steps.length;
     // The current line within the list's own box only (the column scrolls to the table's

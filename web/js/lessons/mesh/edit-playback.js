@@ -2,9 +2,11 @@
 // Playing an edit back one pointer assignment at a time. The core's change record
 // lists every assignment in the order its algorithm made them ({table, row, field, before,
 // after}); this file turns them into frames and into the winged-edge tables as they stood
-// after frame k (the final tables with the later assignments taken back). No geometry and
-// no topology is decided here: every number is one the core wrote.
+// after frame k (the final tables with the later assignments taken back); on the half-edge
+// tab, the same edit's half-edge entries (the core's second record, mesh.apply's halfEdge).
+// No geometry and no topology is decided here: every number is one the core wrote.
 import { EDGE_FIELDS, FIELD_HEADINGS, assignmentText } from '../../ui/mesh/assignments.js';
+import { vLabel, fLabel } from '../../ui/element-labels.js';
 
 export { EDGE_FIELDS };
 
@@ -25,7 +27,7 @@ export function visibleSteps(record) {
     const at = Math.min(p.step, raw.length);
     const fresh = added.has(p.vertex);
     const lines = COORDINATES.map((field, k) => ({ table: 'vertex', row: p.vertex, field, before: fresh ? null : p.before[k], after: p.after[k],
-      phase: (raw[at] ?? raw[at - 1])?.phase ?? -1, coordinate: true })).filter((c) => fresh || c.before !== c.after);
+      phase: (raw[at] ?? raw[at - 1])?.phase ?? -1, coordinate: true, at })).filter((c) => fresh || c.before !== c.after);
     byStep.set(at, [...(byStep.get(at) ?? []), ...lines]);
   }
   const out = [];
@@ -108,4 +110,64 @@ export function rowsNotYetWritten(record, shown) {
     edge: pending('edge', record?.added?.edges),
     face: pending('face', record?.added?.faces),
   };
+}
+
+// ---------------------------------------------------------------- in half-edge terms
+// The same edit as the core states it in the half-edge tables (mesh.apply's halfEdge:
+// {table: 'halfedge' | 'vertex' | 'face', row, field, before, after, step, phase}, each
+// changed entry once); the player plays these on the half-edge tab.
+export function halfEdgeSteps(record) {
+  return record?.halfEdge?.steps ?? [];
+}
+
+// The steps the edit player plays on tab `tab`: the half-edge record's on the half-edge tab
+// (when the edit has one), the winged edge's everywhere else.
+export function playbackSteps(record, tab) {
+  return tab === 'half-edge' && record?.halfEdge ? halfEdgeSteps(record) : visibleSteps(record);
+}
+
+// How many winged-edge steps the picture shows while the half-edge playback has made `shown`
+// entries: up to the winged-edge step the last one made follows (its `step`, an index into
+// record.steps), every one for an entry that follows none; none before the first. O(the edit).
+export function wingedStepAt(record, shown) {
+  const steps = halfEdgeSteps(record);
+  const all = visibleSteps(record);
+  if (shown <= 0 || !steps.length) return shown <= 0 ? 0 : all.length;
+  const follows = steps[Math.min(shown, steps.length) - 1].step;
+  if (follows < 0) return all.length;
+  const rawIndex = new Map((record.steps ?? []).map((x, i) => [x, i]));
+  let n = 0;
+  for (const line of all) {
+    if ((line.coordinate ? line.at : rawIndex.get(line)) > follows) break;
+    n += 1;
+  }
+  return n;
+}
+
+const HALF_EDGE_FIELD_NAMES = { origin: 'origin', face: 'face', next: 'next', prev: 'prev', halfedge: 'half-edge' };
+const halfEdgeLabel = (i) => (i < 0 ? '—' : `h${i + 1}`);
+const HALF_EDGE_REFERS = { origin: vLabel, face: fLabel, next: halfEdgeLabel, prev: halfEdgeLabel, halfedge: halfEdgeLabel };
+const HALF_EDGE_ROWS = { halfedge: ['half-edge table', halfEdgeLabel], vertex: ['vertex table', vLabel], face: ['face table', fLabel] };
+
+// One line per half-edge entry: "half-edge table, h5 · origin: v2 → v4" (— for none).
+export function halfEdgeStepText(s) {
+  const [table, row] = HALF_EDGE_ROWS[s.table];
+  const label = (x) => (x < 0 ? '—' : HALF_EDGE_REFERS[s.field](x));
+  return `${table}, ${row(s.row)} · ${HALF_EDGE_FIELD_NAMES[s.field]}: ${label(s.before)} → ${label(s.after)}`;
+}
+
+// A playback step's line, whichever structure it is of.
+export const playbackStepText = (s) => (s.table === 'halfedge' || s.field === 'halfedge' ? halfEdgeStepText(s) : assignmentText(s));
+
+/**
+ * The half-edge cells the playback has not reached at step `shown`, with the value they held
+ * before the edit: "table:row:field" -> before (what the half-edge tab shows over the view's
+ * final rows while an edit plays). O(the edit).
+ * @returns {Map<string, number>}
+ */
+export function halfEdgeUnmade(record, shown) {
+  const steps = halfEdgeSteps(record);
+  const out = new Map();
+  for (let i = Math.max(0, shown); i < steps.length; i += 1) out.set(`${steps[i].table}:${steps[i].row}:${steps[i].field}`, steps[i].before);
+  return out;
 }

@@ -10,7 +10,7 @@
 // other of the pair (API: edge e gives 2e and 2e + 1, twin(h) = h ^ 1).
 import { h } from '../../app/dom.js';
 import { sub } from '../../ui/mesh/tables.js';
-import { EDGE_FIELDS } from './edit-playback.js';
+import { EDGE_FIELDS, halfEdgeUnmade } from './edit-playback.js';
 
 // Rows of the half-edge view asked of the core per block, once per mesh version (lesson.js
 // resets derived.halfEdge with the topology), a few blocks kept: a million faces never
@@ -31,6 +31,8 @@ export const CORRESPONDENCE = Object.freeze({
   endLeft: ['edge of next(h)', 'h', 'next', 'edge'],
   endRight: ['edge of prev(twin(h))', 't', 'prev', 'edge'],
 });
+// The half-edge table's columns after its row header (target and twin are read, never stored).
+export const HALF_EDGE_COLUMNS = Object.freeze(['origin', 'target', 'face', 'next', 'prev', 'twin']);
 const HEADINGS = { start: 'S', end: 'E', left: 'L', right: 'R', startLeft: 'S:L', startRight: 'S:R', endLeft: 'E:L', endRight: 'E:R' };
 
 const H = (i) => (i >= 0 ? sub('h', i) : '—');
@@ -61,25 +63,38 @@ export function createHalfEdgeTab(ctx, { table, model, selection }) {
     }
     return { block, k: i - start };
   };
+  // While the edit player plays the edit's half-edge entries, the cells it has not reached
+  // show what they held before the edit (the core's rows are the view after it): made once per
+  // player step, O(the edit).
+  let unmade = { record: null, at: -1, values: new Map() };
+  const shown = (table, row, field, value) => {
+    const m = model();
+    if (!m.halfEdgePlayback || m.editStep >= m.editSteps) return value;
+    if (unmade.record !== m.lastOperation || unmade.at !== m.editStep) unmade = { record: m.lastOperation, at: m.editStep, values: halfEdgeUnmade(m.lastOperation, m.editStep) };
+    return unmade.values.get(`${table}:${row}:${field}`) ?? value;
+  };
   // One half-edge's fields from the core (its twin is in the same block: blocks start even).
   const halfEdge = (i) => {
     const { block, k } = blockAt(i);
-    const gap = block.origin[k] < 0;
-    return { origin: block.origin[k], target: block.origin[k ^ 1], face: block.face[k], next: block.next[k], prev: block.prev[k], twin: gap ? -1 : i ^ 1, gap };
+    const at = (x, field) => shown('halfedge', x, field, block[field][k + x - i]);
+    const origin = at(i, 'origin');
+    const gap = origin < 0;
+    return { origin, target: at(i ^ 1, 'origin'), face: at(i, 'face'), next: at(i, 'next'), prev: at(i, 'prev'), twin: gap ? -1 : i ^ 1, gap };
   };
 
   const tables = {
     halfedges: table({ id: 'he-halfedge-table', kind: 'halfedge', onPick: (i) => { pickedHalf = i; }, caption: 'Half-edges: eₖ gives h₂ₖ₋₁ = S → E and h₂ₖ = E → S',
-      head: [['', 'origin', 'target', 'face', 'next', 'prev', 'twin']],
+      head: [['', ...HALF_EDGE_COLUMNS]],
       rowLabel: (i) => sub('h', i),
       row: (i) => {
+        // A gap is -1 (—) in every field; while an edit plays, each field as it is assigned.
         const r = halfEdge(i);
-        return r.gap ? ['—', '—', '—', '—', '—', '—'] : [V(r.origin), V(r.target), F(r.face), H(r.next), H(r.prev), H(r.twin)];
+        return [V(r.origin), V(r.target), F(r.face), H(r.next), H(r.prev), H(r.twin)];
       } }),
     vertices: table({ id: 'he-vertex-table', kind: 'vertex', caption: 'Vertices: one outgoing half-edge each',
-      head: [['', 'half-edge']], rowLabel: (i) => sub('v', i), row: (i) => { const { block, k } = blockAt(i); return [H(block.vertexHalfedge[k])]; } }),
+      head: [['', 'half-edge']], rowLabel: (i) => sub('v', i), row: (i) => { const { block, k } = blockAt(i); return [H(shown('vertex', i, 'halfedge', block.vertexHalfedge[k]))]; } }),
     faces: table({ id: 'he-face-table', kind: 'face', caption: 'Faces: one of their half-edges each',
-      head: [['', 'half-edge']], rowLabel: (i) => sub('F', i), row: (i) => { const { block, k } = blockAt(i); return [H(block.faceHalfedge[k])]; } }),
+      head: [['', 'half-edge']], rowLabel: (i) => sub('F', i), row: (i) => { const { block, k } = blockAt(i); return [H(shown('face', i, 'halfedge', block.faceHalfedge[k]))]; } }),
   };
 
   // The half-edge row picked last (its edge is the lesson's pick): the correspondence names

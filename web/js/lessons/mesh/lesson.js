@@ -9,7 +9,7 @@ import { importedMesh } from '../../app/imported-mesh.js';
 import { createMeshSource, cacheKeys } from '../../ui/mesh/mesh-source.js';
 import { faceCsr } from '../../ui/mesh/mesh-choice.js';
 import { MESH_KINDS, MESH_SIZES, IMPORTED_CONTENT } from './choices.js';
-import { playedArrays, playedToEnd, visibleSteps } from './edit-playback.js';
+import { playedArrays, playedToEnd, visibleSteps, playbackSteps, wingedStepAt } from './edit-playback.js';
 import { normaliseSteps, walkFrames } from '../../ui/mesh/walk.js';
 import { followEdit, followFaces, followRows, recordEdges } from '../../ui/mesh/winged-arrays.js';
 import { drawMesh, createBaseCache } from '../../ui/mesh/draw.js';
@@ -222,8 +222,14 @@ function compute(view, state, ctx) {
   derived.gaps ??= edited ? entry.mesh.gaps() : { vertices: [], edges: [], faces: [] };
   const gaps = derived.gaps.vertices.length + derived.gaps.edges.length + derived.gaps.faces.length;
   const record = entry.lastOperation;
-  const editSteps = visibleSteps(record).length;
+  // The player's steps are the tab's: on the half-edge tab the edit's half-edge entries, and
+  // the picture shows the winged-edge step the current one follows.
+  const playback = playbackSteps(record, state.tab);
+  const editSteps = playback.length;
   const editStep = state.editStep < 0 || state.editStep > editSteps ? editSteps : state.editStep;
+  const halfEdgePlayback = Boolean(record?.halfEdge) && state.tab === 'half-edge';
+  const wingedSteps = visibleSteps(record).length;
+  const wingedStep = halfEdgePlayback ? (editStep < editSteps ? wingedStepAt(record, editStep) : wingedSteps) : editStep;
   const V = we.vertexEdge.length;
   const F = we.faceEdge.length;
   const E = we.edges.length / 8;
@@ -236,9 +242,11 @@ function compute(view, state, ctx) {
   // While the edit player is inside an edit the picture shows the tables as they stood: an
   // edge whose S or E is not written yet is not drawn (like a gap). Only the edit's edges
   // can be so.
-  const weShown = record && editStep < editSteps ? (derived.played = playedArrays(derived.played, we, record, editStep)).arrays : we;
+  const weShown = record && wingedStep < wingedSteps ? (derived.played = playedArrays(derived.played, we, record, wingedStep)).arrays : we;
   const edgeGap = weShown !== we ? unwritten(weShown, recordEdges(record), derived.gapMarks?.edge.slice() ?? new Uint8Array(E)) : derived.gapMarks?.edge ?? null;
-  const current = weShown !== we && editStep > 0 ? visibleSteps(record)[editStep - 1] : null;
+  const step = record && editStep > 0 && editStep < editSteps ? playback[editStep - 1] : null;
+  // A half-edge entry marks its edge (a half-edge row) or its vertex or face on the canvas.
+  const current = step && halfEdgePlayback ? { table: step.table === 'halfedge' ? 'edge' : step.table, row: step.table === 'halfedge' ? step.row >> 1 : step.row } : step;
   const removed = walkKind === 'vertex' ? vertexGap?.[walkElement] : csr.offsets[walkElement + 1] === csr.offsets[walkElement];
   const frames = walkElement >= 0 && !removed ? stepsOf(derived, entry, walkKind, walkElement) : [];
   const frame = frames[Math.min(state.step, frames.length - 1)] ?? null;
@@ -309,6 +317,9 @@ function compute(view, state, ctx) {
     lastOperation: record,
     lastEdit: lastEditOf(state.ops),
     editStep,
+    // How many steps the player has on this tab, and whether they are the half-edge entries.
+    editSteps,
+    halfEdgePlayback,
     editCount: state.ops.filter((o) => o.op !== 'move-vertex').length,
     editCost: record?.costs ?? null,
     gaps,

@@ -12,7 +12,6 @@ import { createRepresentationTabs } from './tabs.js';
 import { createEditPanel } from './edit-panel.js';
 import { createTurnControls, MAX_TILT } from '../../ui/turn-controls.js';
 import { exists, whyNot } from './live-elements.js';
-import { visibleSteps } from './edit-playback.js';
 
 const BIG_TABLES = 100000; // faces: from this size a new mesh's tables fill a task after its first frame
 
@@ -180,7 +179,7 @@ export function setupPanels(ctx, selection) {
       shownSource = model.source;
       walk.update(model, s);
       edit.update(model);
-      ctx.panels.toggleAttribute('data-edit-playing', Boolean(model.lastOperation) && model.editStep < visibleSteps(model.lastOperation).length);
+      ctx.panels.toggleAttribute('data-edit-playing', Boolean(model.lastOperation) && model.editStep < model.editSteps);
       // The tables of a newly chosen big mesh fill in a task of their own, after the frame
       // that shows it (no task over 50 ms when a million faces arrive).
       if (newMesh && model.F > BIG_TABLES) {

@@ -11,9 +11,9 @@ import { createStoredEdgeControl } from './stored-edge.js';
 import { findDescriptor } from '../../core/tables.js';
 import { VERTEX_EDGE_COLUMN, FACE_EDGE_COLUMN } from '../../ui/mesh/walk.js';
 import { num, sub, NOTATION, headOf, rowCells, describedTable, createWingedTables } from '../../ui/mesh/tables.js';
-import { visibleSteps, rowsNotYetWritten, EDGE_FIELDS, COORDINATES } from './edit-playback.js';
+import { visibleSteps, rowsNotYetWritten, halfEdgeSteps, EDGE_FIELDS, COORDINATES } from './edit-playback.js';
 import { queryTarget, whyNot } from './live-elements.js';
-import { createHalfEdgeTab } from './half-edge.js';
+import { createHalfEdgeTab, HALF_EDGE_COLUMNS } from './half-edge.js';
 
 const F = (i) => sub('F', i);
 // Representation tables longer than this show their first rows and say so (the winged-edge
@@ -231,7 +231,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
     if (!model) return;
     const frame = model.frame;
     const tab = ctx.state.tab;
-    showWalkRow(frame, model.lastOperation && model.editStep < visibleSteps(model.lastOperation).length);
+    showWalkRow(frame, model.lastOperation && model.editStep < model.editSteps);
     // Every table's marks are written first and the rows scrolled into view after, so the
     // layout is read once for all tables, not once per table between their marks.
     const reveals = [];
@@ -248,7 +248,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       if (kind === 'halfedge' && selection.hover?.kind === 'edge') rows['is-hovered'].push(2 * selection.hover.index, 2 * selection.hover.index + 1);
       if (kind === 'halfedge' && selection.pick?.kind === 'edge') rows['is-picked'].push(2 * selection.pick.index, 2 * selection.pick.index + 1);
       // While the edit player is inside an edit, its cell is the one marked, not the walk's.
-      const inEdit = model.lastOperation && model.editStep < visibleSteps(model.lastOperation).length;
+      const inEdit = model.lastOperation && model.editStep < model.editSteps;
       // The walk's row in this table, if the frame reads one of its rows.
       let walkRow = null;
       if (frame && tab === 'winged' && !inEdit) {
@@ -266,7 +266,8 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
         read.push([heRead.row, heRead.read]);
       }
       if (walkRow !== null) rows['is-highlighted'].push(walkRow);
-      const editCell = tab === 'winged' ? markEdit(name, kind, rows, read, inEdit) : null;
+      const editCell = tab === 'winged' ? markEdit(name, kind, rows, read, inEdit)
+        : model.halfEdgePlayback ? markHalfEdgeEdit(name, rows, read, inEdit) : null;
       // A number a removed element left (until compact): its row stays, struck through.
       const gapList = model.gapLists?.[`${kind === 'vertex' ? 'vertices' : kind === 'edge' || kind === 'halfedge' ? 'edges' : 'faces'}`];
       if (gapList?.length) rows['is-gap'] = kind === 'halfedge' ? Array.from(gapList).flatMap((e) => [2 * e, 2 * e + 1]) : Array.from(gapList);
@@ -287,7 +288,7 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
           revealed[name] = key;
           revealedEdit[name] = editKey;
           // Revealing again after the column changed size shows what was shown before it.
-          const toEdit = Boolean(editCell && (inEdit || editMoved || !frame || (again && revealedWhat[name] === 'edit')));
+          const toEdit = Boolean(editCell && (inEdit || editMoved || !frame || (tab === 'half-edge' && walkRow === null) || (again && revealedWhat[name] === 'edit')));
           revealedWhat[name] = toEdit ? 'edit' : 'walk';
           const target = toEdit ? editCell : [walkRow ?? frame.row, null];
           reveals.push(() => {
@@ -322,6 +323,27 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
     if (!current || current.table !== table) return null;
     const cell = [current.row, table === 'edge' ? 1 + EDGE_FIELDS.indexOf(current.field)
       : current.coordinate ? 1 + COORDINATES.indexOf(current.field) : table === 'vertex' ? VERTEX_EDGE_COLUMN : FACE_EDGE_COLUMN];
+    if (inEdit) rows['is-highlighted'].push(current.row);
+    read.push(cell);
+    return cell;
+  }
+
+  // The same marks in half-edge table `name` while the player plays the edit's half-edge
+  // entries (model.halfEdgePlayback): the rows written so far, the rows of the elements the
+  // edit added that no entry has reached yet, and the current entry's cell.
+  function markHalfEdgeEdit(name, rows, read, inEdit) {
+    const table = { heHalfedge: 'halfedge', heVertex: 'vertex', heFace: 'face' }[name];
+    const steps = halfEdgeSteps(model.lastOperation);
+    if (!table || !steps.length) return null;
+    rows['is-edited'] = [];
+    const written = new Set();
+    for (let i = 0; i < model.editStep; i += 1) if (steps[i].table === table) { rows['is-edited'].push(steps[i].row); written.add(steps[i].row); }
+    const added = model.lastOperation.added ?? {};
+    const addedRows = table === 'halfedge' ? Array.from(added.edges ?? []).flatMap((e) => [2 * e, 2 * e + 1]) : Array.from(added[table === 'vertex' ? 'vertices' : 'faces'] ?? []);
+    rows['is-pending'] = addedRows.filter((r) => !written.has(r));
+    const current = steps[model.editStep - 1];
+    if (!current || current.table !== table) return null;
+    const cell = [current.row, table === 'halfedge' ? 1 + HALF_EDGE_COLUMNS.indexOf(current.field) : 1];
     if (inEdit) rows['is-highlighted'].push(current.row);
     read.push(cell);
     return cell;

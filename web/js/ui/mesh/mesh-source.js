@@ -60,7 +60,14 @@ function applyOne(mesh, operation, previous, newest) {
     mesh.compact();
     return null;
   }
-  return mesh.apply(operation, { costs: newest });
+  // The newest edit is also stated in half-edge terms (its record's halfEdge, for the player).
+  // Above COUNTED_COSTS_FACES only when the half-edge view was already kept (the Half-edge tab
+  // was shown): making it is a pass over the mesh, and it holds 8 int32 per edge.
+  if (newest === 'winged-edge') {
+    const change = mesh.apply(operation, { costs: newest });
+    return { ...change, halfEdge: mesh.lastHalfEdgeChange(change) };
+  }
+  return mesh.apply(operation, { costs: newest, halfEdge: newest === true });
 }
 
 export function createMeshSource() {
