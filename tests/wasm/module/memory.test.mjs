@@ -236,8 +236,8 @@ const cases = [
   // The half-edge view, made once per topology version and kept in the mesh's entry.
   ['mesh half-edge view', REDUCED, () => {
     lecture.halfEdge(); lecture.halfEdgeArrays({ offset: 2, limit: 4 }); lecture.halfEdgeTraversalSteps(1); lecture.halfEdgeFaceSteps(1);
-    lecture.halfEdgeQuery('edges-of-face', 1); lecture.halfEdgeStorage();
-  }, [['disposed', () => gone.halfEdge()], ['invalid-argument', () => lecture.halfEdgeArrays({ offset: -1 })],
+    lecture.halfEdgeQuery('edges-of-face', 1); lecture.halfEdgeStorage(); lecture.lastHalfEdgeChange();
+  }, [['disposed', () => gone.halfEdge()], ['disposed', () => gone.lastHalfEdgeChange()], ['invalid-argument', () => lecture.halfEdgeArrays({ offset: -1 })],
     ['invalid-element', () => lecture.halfEdgeTraversalSteps(V_MISSING)], ['invalid-element', () => lecture.halfEdgeFaceSteps(V_MISSING)],
     ['invalid-element', () => lecture.halfEdgeQuery('edges-of-face', V_MISSING)], ['disposed', () => gone.halfEdgeStorage()]]],
   ['hooks.timeNormalsInCore', REDUCED, () => hooks.timeNormalsInCore(lecture, 1), [['invalid-argument', () => hooks.timeNormalsInCore(lecture, 0)]]],
