@@ -4,17 +4,12 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline, WingsplineError } from 'wingspline';
+import { withValidMesh } from '../../helpers/wasm-mesh.mjs';
 
 const api = await loadWingspline();
 
-function withMesh(input, body) {
-  const mesh = api.buildMesh(input);
-  try {
-    return body(mesh);
-  } finally {
-    mesh.dispose();
-  }
-}
+// Every mesh built here is validated first and disposed after (tests/helpers/wasm-mesh.mjs).
+const withMesh = (input, body) => withValidMesh(api, input, body);
 
 // 'h3' -> 2, 'v2' -> 1, 'F1' -> 0, '-' -> -1: the slides' 1-based labels.
 const label = (s) => (s === '-' ? -1 : Number(s.slice(1)) - 1);
