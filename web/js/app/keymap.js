@@ -5,6 +5,16 @@
 
 export function createKeymap() {
   const bindings = [];
+  // Whether each panel a binding belongs to is rendered, as a ResizeObserver last saw it (a
+  // panel under display: none has no box: size 0). Asking the element itself
+  // (getClientRects, checkVisibility) brings the page's style and layout up to date first: a
+  // key pressed before the last frame's marks were laid out (a remote held down) then laid
+  // out the whole page in the key handler. Until the observer has seen a panel, it is asked.
+  const seenShown = new Map();
+  const sizes = typeof ResizeObserver === 'undefined' ? null : new ResizeObserver((entries) => {
+    for (const e of entries) seenShown.set(e.target, e.contentRect.width > 0 || e.contentRect.height > 0 || e.target.getClientRects().length > 0);
+  });
+  const shown = (el) => seenShown.get(el) ?? el.getClientRects().length > 0;
   let dialog = null;
   let opener = null;
 
@@ -36,14 +46,13 @@ export function createKeymap() {
     if (target instanceof HTMLButtonElement && (event.key === ' ' || event.key === 'Enter')) return;
     for (const b of bindings) {
       if (!b.action || (b.when && !b.when(event))) continue;
+      if (!matches(b, event)) continue;
       // A binding of a panel acts only while the panel is shown (an embed without it: the
       // key is then free, for the slides around the embed).
-      if (b.shownWith && b.shownWith.getClientRects().length === 0) continue;
-      if (matches(b, event)) {
-        event.preventDefault();
-        b.action(event);
-        return;
-      }
+      if (b.shownWith && !shown(b.shownWith)) continue;
+      event.preventDefault();
+      b.action(event);
+      return;
     }
   }
 
@@ -112,6 +121,7 @@ export function createKeymap() {
     /** @param {{ keys: string[], label: string, group?: string, when?: (event: KeyboardEvent) => boolean, action?: (event: KeyboardEvent) => void, shownWith?: Element }} binding */
     add({ keys, label, action, group = 'Lesson', when, shownWith }) {
       bindings.push({ keys, label, action, group, when, shownWith });
+      if (shownWith && sizes && !seenShown.has(shownWith)) sizes.observe(shownWith);
     },
     showDialog,
     list: () => bindings.map(({ keys, label, group }) => ({ keys, label, group })),

@@ -27,17 +27,20 @@ export function headRows(head) {
       : h('th', { scope: cell.scope ?? 'col', colspan: cell.colspan, rowspan: cell.rowspan, class: cell.class }, cell.text))));
 }
 
+// rowKey(i), optional: plain data (JSON) that is the same exactly when row i's cells and
+// label are: with it a row's cells are built only when the row changed (without it they
+// are built and compared as text);
 // rowAttributes(i): extra attributes of row i's <tr> (e.g. data-representation);
 // cellClasses[k]: the class of every row's k-th <td>; className: the <table>'s classes.
 // onRowEnter, onRowLeave and onRowClick are optional (a table nobody picks from has none).
 /**
  * @param {{ id: string, caption: string,
  *   head: Array<Array<string | { text: string, colspan?: number, rowspan?: number, scope?: string, class?: string }>>,
- *   row: (i: number) => unknown[], rowLabel: (i: number) => unknown,
+ *   row: (i: number) => unknown[], rowLabel: (i: number) => unknown, rowKey?: ((i: number) => unknown) | null,
  *   onRowEnter?: (i: number) => void, onRowLeave?: () => void, onRowClick?: (i: number) => void,
  *   rowAttributes?: ((i: number) => Record<string, unknown>) | null, cellClasses?: string[], className?: string }} spec
  */
-export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnter, onRowLeave, onRowClick,
+export function createVirtualTable({ id, caption, head, row, rowLabel, rowKey = null, onRowEnter, onRowLeave, onRowClick,
   rowAttributes = null, cellClasses = [], className = 'data-table mesh-table' }) {
   // Header rows are rows 1..head.length of the whole table for assistive technology; data
   // row i is row head.length + i + 1 (aria-rowindex), the table has head.length + total rows
@@ -79,6 +82,14 @@ export function createVirtualTable({ id, caption, head, row, rowLabel, onRowEnte
   const keyOf = (i, label, cells) => JSON.stringify([rowAttributes?.(i) ?? null, contentKey(label), cells.map(contentKey)]);
 
   function rowFor(i) {
+    if (rowKey) {
+      // The row's data as a key: a row that did not change is found without building its
+      // cells (elements) only to compare them.
+      const key = JSON.stringify([rowAttributes?.(i) ?? null, rowKey(i)]);
+      const old = drawn.get(i);
+      if (old?.key === key) return old;
+      return { el: cellsOf(i, rowLabel(i), row(i)), key };
+    }
     const cells = row(i);
     const label = rowLabel(i);
     const key = keyOf(i, label, cells);

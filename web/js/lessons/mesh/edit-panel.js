@@ -102,6 +102,7 @@ export function createEditPanel(ctx, selection, { pick }) {
   };
   const phaseList = h('ol', { class: 'pseudocode edit-phases', id: 'edit-phases', 'aria-label': 'The algorithm of the last edit' });
   const stepList = h('ol', { class: 'pseudocode edit-steps', id: 'edit-steps', 'aria-label': 'Pointer assignments of the last edit' });
+  let scrollFrame = 0; // the step list's scroll, waiting for the next frame
   const stepLabel = h('span', { class: 'walk-step', id: 'edit-step' });
   // The assignment the player is at, in one line under its buttons: the player and this line
   // sit at the top of the side column (panels.js), above the walk, which folds away while
@@ -278,12 +279,17 @@ export function createEditPanel(ctx, selection, { pick }) {
     phaseList.hidden = !phaseList.children.length;
     stepList.hidden = !steps.length;
     // The current line within the list's own box only (the column scrolls to the table's
-    // rewritten cell, tabs.js; the page never scrolls).
-    const currentItem = stepList.querySelector('.is-current');
-    if (currentItem && !stepList.hidden) {
-      const r = currentItem.getBoundingClientRect();
-      const b = stepList.getBoundingClientRect();
-      if (r.top < b.top || r.bottom > b.bottom) stepList.scrollTop += r.top - b.top - (b.height - r.height) / 2;
+    // rewritten cell, tabs.js; the page never scrolls), at the start of the next frame: the
+    // list is laid out by then, so its place is read without a layout of its own.
+    if (!scrollFrame) {
+      scrollFrame = requestAnimationFrame(() => {
+        scrollFrame = 0;
+        const currentItem = stepList.querySelector('.is-current');
+        if (!currentItem || stepList.hidden) return;
+        const r = currentItem.getBoundingClientRect();
+        const b = stepList.getBoundingClientRect();
+        if (r.top < b.top || r.bottom > b.bottom) stepList.scrollTop += r.top - b.top - (b.height - r.height) / 2;
+      });
     }
     refreshCosts(model, record);
   }

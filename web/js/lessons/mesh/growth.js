@@ -49,8 +49,8 @@ const SUPERSCRIPT = '⁰¹²³⁴⁵⁶⁷⁸⁹';
 const power = (k) => `10${String(k).split('').map((d) => (d === '-' ? '⁻' : SUPERSCRIPT[Number(d)])).join('')}`;
 
 // A log-log plot of the series against faces, decade grid lines, a marker per size.
-function drawGrowth(canvas, { sizes, series }, { colors, names, yLabel }) {
-  const rect = canvas.getBoundingClientRect();
+// rect: the canvas's size in CSS pixels.
+function drawGrowth(canvas, rect, { sizes, series }, { colors, names, yLabel }) {
   const dpr = window.devicePixelRatio || 1;
   const width = Math.max(1, rect.width); const height = Math.max(1, rect.height);
   canvas.width = Math.round(width * dpr); canvas.height = Math.round(height * dpr);
@@ -106,16 +106,19 @@ export function createGrowthPlot(ctx, { id, caption, yLabel, names, faces = GROW
     row: (i) => rows[i][1].map((x) => x.toLocaleString('en')) });
   const details = h('details', { class: 'growth-numbers' }, h('summary', {}, 'The numbers'), table.root);
   const root = h('figure', { class: 'growth', id }, h('figcaption', {}, caption), canvas, legend, details);
+  // The canvas's size as its ResizeObserver last saw it (none while hidden): asked of the
+  // canvas on every update, it laid out the whole page in the middle of an edit's frame.
+  let size = null;
   function draw() {
-    if (!data || !root.isConnected || !canvas.getBoundingClientRect().width) return;
-    const keys = drawGrowth(canvas, data, { colors: ctx.colors, names, yLabel });
+    if (!data || !root.isConnected || !size?.width) return;
+    const keys = drawGrowth(canvas, size, data, { colors: ctx.colors, names, yLabel });
     legend.replaceChildren(...keys.map((k) => {
       const swatch = h('span', { class: `swatch${k.dashed ? ' dashed' : ''}` });
       swatch.style.borderColor = k.colour;
       return h('li', {}, swatch, k.name);
     }));
   }
-  new ResizeObserver(draw).observe(canvas);
+  new ResizeObserver(([entry]) => { size = { width: entry.contentRect.width, height: entry.contentRect.height }; draw(); }).observe(canvas);
   return {
     root,
     get data() { return data; },

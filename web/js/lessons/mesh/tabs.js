@@ -201,6 +201,8 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
   const revealed = {}; // table name -> the walk position whose row it last scrolled into view
   const revealedEdit = {}; // table name -> the edit player's position when it last revealed
   const revealedWhat = {}; // table name -> 'edit' or 'walk': which of the two it last revealed
+  let pendingReveals = []; // rows to scroll into view at the next frame (markElements)
+  let revealFrame = 0;
 
   // The row the walk reads at this step, with its table's head, right under the walk's
   // narration (panels.js): on a phone the tables are far below the walk's buttons, so the
@@ -304,7 +306,21 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
         }
       }
     }
-    for (const run of reveals) run();
+    if (reveals.length) {
+      // The rows are scrolled into view at the start of the next frame, when the browser has
+      // laid this one out: a row's place is then read without a layout of its own. Read here,
+      // right after the marks were written, it forced a layout of the whole page on every
+      // walk step and edit (about a third of a lecture-mesh step).
+      pendingReveals.push(...reveals);
+      if (!revealFrame) {
+        revealFrame = requestAnimationFrame(() => {
+          revealFrame = 0;
+          const runs = pendingReveals;
+          pendingReveals = [];
+          for (const run of runs) run();
+        });
+      }
+    }
   }
 
   // The edit player's marks (edit-panel.js) in winged-edge table `name`: the rows written so

@@ -73,8 +73,9 @@ export function rowCells(d, row, letters) {
 
 // What createVirtualTable (ui/virtual-table.js) needs to show descriptor d: rowOf(i) is the
 // Table (readTable) that holds row i.
+// rowKey is the row's values: its cells are drawn from them alone (the letters are the table's).
 export function describedTable(d, letters, rowOf) {
-  return { caption: d.title, head: headOf(d), rowLabel: (i) => sub(letters[d.rows], i), row: (i) => rowCells(d, rowOf(i).row(i), letters) };
+  return { caption: d.title, head: headOf(d), rowLabel: (i) => sub(letters[d.rows], i), row: (i) => rowCells(d, rowOf(i).row(i), letters), rowKey: (i) => rowOf(i).row(i) };
 }
 
 // The winged-edge tables of a mesh's arrays, read once per arrays object (a mesh version,
