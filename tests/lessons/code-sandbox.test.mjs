@@ -7,60 +7,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createNodeSandbox, runInNode } from '../../web/js/code/quickjs-node.js';
 import { traceEntries, TRACE_LIMIT } from '../../web/js/code/runner.js';
-
-// Lecture 000's mesh: F1 = (v1 v2 v3), F2 = (v2 v4 v3), F3 = (v2 v5 v4), all CCW.
-//
-//   v3 (0,1) ---- v4 (1,1) ---- v5 (2,1)
-//      |  \   F2    |  \   F3  /
-//      |   \        |    \    /
-//      | F1  \      |     \  /      (F2 and F3 are drawn loosely; the
-//      |       \    |      /         positions below are what counts)
-//   v1 (0,0) ---- v2 (1,0)
-//
-// The lecture's winged-edge table, 0-based (e1 -> 0, v1 -> 0, F1 -> 0, blank -> -1):
-//         S   E   L   R  S:L S:R E:L E:R
-// e1      v1  v3  -   F1  e2  e2  e4  e3
-// e2      v1  v2  F1  -   e1  e1  e3  e6
-// e3      v2  v3  F1  F2  e2  e5  e1  e4
-// e4      v3  v4  -   F2  e1  e3  e7  e5
-// e5      v2  v4  F2  F3  e3  e6  e4  e7
-// e6      v2  v5  F3  -   e5  e2  e7  e7
-// e7      v4  v5  -   F3  e4  e5  e6  e6
-const EDGE_FIELDS = ['start', 'end', 'left', 'right', 'startLeft', 'startRight', 'endLeft', 'endRight'];
-const LECTURE_EDGES = [
-  [0, 2, -1, 0, 1, 1, 3, 2],
-  [0, 1, 0, -1, 0, 0, 2, 5],
-  [1, 2, 0, 1, 1, 4, 0, 3],
-  [2, 3, -1, 1, 0, 2, 6, 4],
-  [1, 3, 1, 2, 2, 5, 3, 6],
-  [1, 4, 2, -1, 4, 1, 6, 6],
-  [3, 4, -1, 2, 3, 4, 5, 5],
-];
-const FACES = [[0, 1, 2], [1, 3, 2], [1, 4, 3]];
-
-function lectureWinged() {
-  return {
-    positions: new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0]),
-    vertexEdge: new Int32Array([0, 5, 2, 4, 5]), // v1 e1, v2 e6, v3 e3, v4 e5, v5 e6
-    edges: new Int32Array(LECTURE_EDGES.flat()),
-    faceEdge: new Int32Array([0, 2, 4]), // F1 e1, F2 e3, F3 e5
-    edgeFields: EDGE_FIELDS.slice(),
-  };
-}
-
-// The same mesh as half-edges: pair 2e, 2e+1 for edge e; 2e runs S -> E with L on its left,
-// 2e+1 runs E -> S with R on its left. Boundary half-edges (face -1) are chained around the
-// outside: h0 v1->v3, h6 v3->v4, h12 v4->v5, h11 v5->v2, h3 v2->v1.
-function lectureHalfEdge() {
-  return {
-    origin: new Int32Array([0, 2, 0, 1, 1, 2, 2, 3, 1, 3, 1, 4, 3, 4]),
-    face: new Int32Array([-1, 0, 0, -1, 0, 1, -1, 1, 1, 2, 2, -1, -1, 2]),
-    next: new Int32Array([6, 2, 4, 0, 1, 8, 12, 5, 7, 10, 13, 3, 11, 9]),
-    prev: new Int32Array([3, 4, 1, 11, 2, 7, 0, 8, 5, 13, 9, 12, 6, 10]),
-    vertexHalfedge: new Int32Array([0, 3, 6, 12, 11]),
-    faceHalfedge: new Int32Array([2, 8, 10]),
-  };
-}
+import { EDGE_FIELDS, LECTURE_EDGES, FACES, lectureWinged, lectureHalfEdge, CCW_WALK } from '../helpers/lecture-code.mjs';
 
 const wingedMesh = () => ({ winged: lectureWinged() });
 
@@ -89,20 +36,6 @@ test('the hand-written tables agree with the faces (each directed side of a face
     assert.equal(h.face[i], i % 2 === 0 ? left : right);
   }
 });
-
-// The lecture's rule: if v is the Start of e, the next CCW edge is S:L; otherwise E:R.
-const CCW_WALK = `function edgesAroundVertex(mesh, v) {
-  const first = mesh.vertex(v).edge;
-  const ring = [];
-  let e = first;
-  do {
-    ring.push(e);
-    if (mesh.edge(e).start === v) e = mesh.edge(e).startLeft;
-    else e = mesh.edge(e).endRight;
-  } while (e !== first);
-  return ring;
-}
-`;
 
 const run = (source, cases, extra = {}) => runInNode({ source, entry: extra.entry ?? 'edgesAroundVertex', cases, ...extra });
 const one = async (source, extra = {}) => {

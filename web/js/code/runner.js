@@ -29,6 +29,7 @@
  * @typedef {{ args?: unknown[], mesh: MeshSnapshot }} RunCase
  * @typedef {{ source: string, entry: string, cases: RunCase[], writable?: boolean, budgetMs?: number }} RunRequest
  * @typedef {'syntax'|'runtime'|'timeout'|'memory'|'result'|'request'|'engine'} ErrorKind
+ *   request: a malformed request; engine: the engine itself failed (the next run loads a new one)
  * @typedef {{ kind: ErrorKind, message: string, line: number|null, column: number|null }} RunError
  * @typedef {{ count: number, total: number, cut: boolean, limit: number,
  *   names: { op: readonly string[], table: readonly string[], field: readonly string[] },
