@@ -80,6 +80,8 @@ test('the sandbox runs a walk in its worker, stops an infinite loop at its line 
     running = false;
     clearInterval(interval);
     const again = await sandbox.run(request(CCW_WALK));
+    // The worker's host stack must outlast QuickJS's own stack limit: a clean error, not a crash.
+    const deep = await sandbox.run(request('function edgesAroundVertex(mesh, v) {\n  return 1 + edgesAroundVertex(mesh, v + 1);\n}'));
     sandbox.dispose();
 
     // A worker that never answers (a module with no message handler): the watchdog ends it
@@ -93,7 +95,7 @@ test('the sandbox runs a walk in its worker, stops an infinite loop at its line 
     const startedForSilent = window.__workersStarted - before;
     silent.dispose();
     return { walk: walk.results?.[0] ?? walk, loop: loop.results?.[0] ?? loop, busy, again: again.results?.[0] ?? again,
-      loopMs, frames, ticks, hung, hungMs, hungAgain, startedForSilent, violations: window.__cspViolations };
+      deep: deep.results?.[0] ?? deep, loopMs, frames, ticks, hung, hungMs, hungAgain, startedForSilent, violations: window.__cspViolations };
   }, { LECTURE, CCW_WALK, LOOP });
 
   assert.equal(out.walk.ok, true, JSON.stringify(out.walk));
@@ -112,6 +114,9 @@ test('the sandbox runs a walk in its worker, stops an infinite loop at its line 
 
   assert.equal(out.again.ok, true, JSON.stringify(out.again));
   assert.deepEqual(out.again.value, [5, 4, 2, 1]);
+
+  assert.deepEqual([out.deep.ok, out.deep.error?.kind, out.deep.error?.line, out.deep.engineFailed], [false, 'runtime', 2, undefined], JSON.stringify(out.deep.error));
+  assert.match(out.deep.error.message, /too much recursion/);
 
   assert.equal(out.hung.error.kind, 'timeout');
   assert.ok(out.hungMs >= 1600 && out.hungMs < 4000, `the watchdog answered after ${Math.round(out.hungMs)} ms`);
