@@ -251,6 +251,13 @@ test('an infinite loop stops within 2 s with kind timeout and the loop\'s line',
   assert.ok(Date.now() - t0 < 2000, `stopped after ${Date.now() - t0} ms`);
 });
 
+test('a timeout names the loop that was running: one-line functions, a top-level loop below a function with a loop', async () => {
+  const oneLine = await one('function f(){ while(true){} } function g(){ f() }\nfunction edgesAroundVertex(mesh, v) { g(); }', { budgetMs: 300 });
+  assert.deepEqual([oneLine.error.kind, oneLine.error.line, oneLine.error.column], ['timeout', 1, 15]);
+  const below = await one('function edgesAroundVertex(mesh, v) {\n  for (let i = 0; i < 3; i++) {}\n  return 0;\n}\n/* while */\nwhile (true) {}\n', { budgetMs: 300 });
+  assert.deepEqual([below.error.kind, below.error.line, below.error.column], ['timeout', 6, 1]);
+});
+
 test('deep recursion stops cleanly, and the engine runs the next case', async () => {
   const out = await run('function edgesAroundVertex(mesh, v) {\n  return edgesAroundVertex(mesh, v + 1) + 1;\n}', [{ args: [1], mesh: wingedMesh() }]);
   const r = out.results[0];

@@ -512,25 +512,35 @@ function stackFrames(stack) {
  * Where the loop that ran out of time starts. QuickJS stops a loop at its backward jump and
  * reports the last position it recorded before the loop's head (often the function's first
  * line: an empty loop body records none), so the loop is the first `for`, `while` or `do` at
- * or after that position; comments and strings are skipped.
- * @param {string} source @param {number} line @param {number} column
+ * or after that position, comments and strings skipped. For the top level (topLevel), loops
+ * outside any braces come first, since the functions above it are not running.
+ * @param {string} source @param {number} line @param {number} column @param {boolean} [topLevel]
+ * @returns {{ line: number, column: number }}
  */
-export function loopAfter(source, line, column) {
+export function loopAfter(source, line, column, topLevel = false) {
   const lines = source.split('\n');
   let offset = 0;
   for (let i = 0; i < line - 1 && i < lines.length; i++) offset += lines[i].length + 1;
   offset += Math.max(0, column - 1);
-  const re = /\/\/[^\n]*|\/\*[\s\S]*?\*\/|'(?:\\.|[^'\\\n])*'|"(?:\\.|[^"\\\n])*"|`(?:\\.|[^`\\])*`|(?<![.\w$])(for|while|do)(?![\w$])/g;
-  re.lastIndex = 0;
+  const re = /\/\/[^\n]*|\/\*[\s\S]*?\*\/|'(?:\\.|[^'\\\n])*'|"(?:\\.|[^"\\\n])*"|`(?:\\.|[^`\\])*`|([{}])|(?<![.\w$])(for|while|do)(?![\w$])/g;
+  let depth = 0;
+  /** @type {number | null} */
+  let first = null;
+  /** @type {number | null} */
+  let outermost = null;
   let m;
   while ((m = re.exec(source))) {
-    if (m[1] && m.index >= offset) {
-      const before = source.slice(0, m.index);
-      const l = before.split('\n').length;
-      return { line: l, column: m.index - before.lastIndexOf('\n') };
+    if (m[1]) depth += m[1] === '{' ? 1 : -1;
+    else if (m[2] && m.index >= offset) {
+      first ??= m.index;
+      if (depth === 0) { outermost = m.index; break; }
+      if (!topLevel) break;
     }
   }
-  return { line, column };
+  const found = topLevel ? (outermost ?? first) : first;
+  if (found === null) return { line, column };
+  const before = source.slice(0, found);
+  return { line: before.split('\n').length, column: found - before.lastIndexOf('\n') };
 }
 
 /**
@@ -580,7 +590,7 @@ function runError(parts, how, budgetMs) {
   let column = index >= 0 ? frames[index].column : null;
   if (how.interrupted) {
     // The innermost frame is the student's own: its position is the stale one (see loopAfter).
-    if (index === 0) ({ line, column } = loopAfter(how.source, line, column));
+    if (index === 0) ({ line, column } = loopAfter(how.source, line, column, frames[0].name === '<eval>'));
     const seconds = budgetMs / 1000;
     return { kind: 'timeout', line, column,
       message: at(line, column, `your code ran longer than ${seconds} s and was stopped: is there a loop that never ends?`) };
