@@ -6,7 +6,9 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createNodeSandbox, runInNode } from '../../web/js/code/quickjs-node.js';
-import { traceEntries, TRACE_LIMIT } from '../../web/js/code/runner.js';
+import { newQuickJSWASMModuleFromVariant } from 'quickjs-emscripten-core';
+import releaseSync from '@jitl/quickjs-wasmfile-release-sync';
+import { runStudentCode, traceEntries, TRACE_LIMIT } from '../../web/js/code/runner.js';
 import { EDGE_FIELDS, LECTURE_EDGES, FACES, lectureWinged, lectureHalfEdge, CCW_WALK } from '../helpers/lecture-code.mjs';
 
 const wingedMesh = () => ({ winged: lectureWinged() });
@@ -379,4 +381,48 @@ test('a malformed request is refused before anything runs', async () => {
   assert.equal(out.error.kind, 'request');
   const bad = await runInNode({ source: 'x', entry: 'f', cases: [{ mesh: { winged: { ...lectureWinged(), edges: [1, 2] } } }] });
   assert.equal(bad.error.kind, 'request');
+});
+
+test('every runtime and context is disposed, whatever the case ended with, and the engine\'s memory does not grow', async () => {
+  // The module, with every runtime it makes recorded (quickjs-emscripten's own test wrapper
+  // does not see runtimes freed in this version) and every context those runtimes make.
+  const base = await newQuickJSWASMModuleFromVariant(releaseSync);
+  const runtimes = [];
+  const contexts = [];
+  const engine = {
+    newRuntime(options) {
+      const runtime = base.newRuntime(options);
+      runtimes.push(runtime);
+      const newContext = runtime.newContext.bind(runtime);
+      runtime.newContext = (o) => { const c = newContext(o); contexts.push(c); return c; };
+      return runtime;
+    },
+  };
+  const assertAllDisposed = () => {
+    assert.ok(runtimes.length > 0 && contexts.length > 0);
+    assert.deepEqual(runtimes.filter((r) => r.alive).length, 0, 'no runtime left alive');
+    assert.deepEqual(contexts.filter((c) => c.alive).length, 0, 'no context left alive');
+  };
+  const programs = [
+    [CCW_WALK, {}],
+    ['function edgesAroundVertex(mesh, v) {\n  return mesh.edge(99).start;\n}', {}],
+    ['function edgesAroundVertex(mesh, v) {\n  for (;;) {}\n}', { budgetMs: 100 }],
+    ['function edgesAroundVertex(mesh, v) {\n  mesh.edge(0).start = 1;\n  return [mesh.addEdge(), () => 1];\n}', { writable: true }],
+    ['function edgesAroundVertex(mesh, v) {\n  throw "plain text";\n}', {}],
+    ['function edgesAroundVertex(mesh, v) {\n  return edgesAroundVertex(mesh, v);\n}', {}],
+    ['function edgesAroundVertex(mesh, v) {\n  return 1 +;\n}', {}],
+  ];
+  const runAll = () => {
+    for (const [source, extra] of programs) {
+      const out = runStudentCode(engine, { source, entry: 'edgesAroundVertex', cases: [{ args: [1], mesh: wingedMesh() }], ...extra });
+      assert.ok(out.results || out.error.kind === 'syntax');
+      for (const r of out.results ?? []) assert.equal(r.engineFailed, undefined, JSON.stringify(r.error));
+    }
+  };
+  runAll();
+  assertAllDisposed();
+  const bytes = base.getWasmMemory().buffer.byteLength;
+  for (let i = 0; i < 10; i++) runAll();
+  assertAllDisposed();
+  assert.equal(base.getWasmMemory().buffer.byteLength, bytes, 'the wasm memory did not grow over 70 more runs');
 });
