@@ -7,6 +7,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
+import crypto from 'node:crypto';
 import path from 'node:path';
 import { useSiteAndBrowser, repoRoot } from '../../helpers/browser.mjs';
 import { createStaticServer, listen } from '../../../scripts/lib/static-server.mjs';
@@ -125,4 +126,20 @@ test('the sandbox runs a walk in its worker, stops an infinite loop at its line 
 
   assert.deepEqual(out.violations, []);
   assert.deepEqual(problems, []);
+});
+
+test('the service worker precaches the sandbox\'s worker bundle and QuickJS\'s wasm, byte for byte', () => {
+  const text = fs.readFileSync(path.join(repoRoot, 'dist', 'sw-manifest.js'), 'utf8');
+  const manifest = JSON.parse(text.slice(text.indexOf('{'), text.lastIndexOf('}') + 1));
+  for (const file of ['js/code/sandbox-worker.js', 'js/code/sandbox.js', 'wasm/quickjs.wasm']) {
+    const bytes = fs.readFileSync(path.join(repoRoot, 'dist', file));
+    assert.equal(manifest.files[file], crypto.createHash('sha256').update(bytes).digest('hex'), file);
+  }
+  // The wasm is the npm package's, unchanged.
+  const shipped = fs.readFileSync(path.join(repoRoot, 'node_modules', '@jitl', 'quickjs-wasmfile-release-sync', 'dist', 'emscripten-module.wasm'));
+  assert.ok(fs.readFileSync(path.join(repoRoot, 'dist', 'wasm', 'quickjs.wasm')).equals(shipped));
+  // The bundle is self-contained: no bare import left, no code built from text.
+  const bundle = fs.readFileSync(path.join(repoRoot, 'dist', 'js', 'code', 'sandbox-worker.js'), 'utf8');
+  assert.doesNotMatch(bundle, /\bimport\s*\(?\s*["'][^./]|\bfrom\s*["'][^./]/);
+  assert.doesNotMatch(bundle, /\beval\s*\(|new\s+Function\s*\(/);
 });
