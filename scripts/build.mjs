@@ -4,7 +4,8 @@
 //   dist/         the static site: web/ with its scripts and style sheets minified (esbuild:
 //                 whitespace, comments and local names; every file keeps its path and its
 //                 imports), each lesson page's scripts bundled under dist/js/bundle/, and the
-//                 wasm modules under dist/wasm/
+//                 wasm modules under dist/wasm/; the code sandbox's worker bundled with QuickJS
+//                 (dist/js/code/sandbox-worker.js) and QuickJS's wasm (dist/wasm/quickjs.wasm)
 // `npm start` and `npm test` run build(). The native build (build/native: the core, the
 // Catch2 tests and the native benchmark, g++) is buildNative(), run by what needs it: the
 // native test layer (scripts/lib/test-layers.mjs) and `npm run bench`; the sanitizer and
@@ -129,6 +130,23 @@ async function bundleLessonPages(esbuild, dist, pages) {
   });
 }
 
+// The code sandbox's worker imports npm packages (QuickJS), so it is bundled on its own, to
+// dist/js/code/sandbox-worker.js over the minified unbundled copy the mirror wrote. Its one
+// address: sandbox.js asks for '../code/sandbox-worker.js' from import.meta.url, which is that
+// file from dist/js/code/sandbox.js and from a lesson bundle in dist/js/bundle/ alike (both two
+// folders under dist/). The worker finds the QuickJS wasm the same way, at
+// '../../wasm/quickjs.wasm' (copied below from the npm package, never fetched from elsewhere).
+// The service worker's manifest lists both, as every file of dist/, so the sandbox works offline.
+const QUICKJS_WASM = ['@jitl', 'quickjs-wasmfile-release-sync', 'dist', 'emscripten-module.wasm'];
+async function bundleSandboxWorker(esbuild, dist) {
+  await esbuild.build({
+    entryPoints: [path.join(repoRoot, 'web', 'js', 'code', 'sandbox-worker.js')],
+    outfile: path.join(dist, 'js', 'code', 'sandbox-worker.js'),
+    bundle: true, format: 'esm', platform: 'browser', minify: process.env.WINGSPLINE_READABLE !== '1',
+    legalComments: 'none', target: 'es2022', logLevel: 'warning', external: ['node:*'],
+  });
+}
+
 export function assembleSite() {
   return withBuildLock('dist', assembleSiteNow);
 }
@@ -142,6 +160,7 @@ async function assembleSiteNow() {
   const guides = guidePages();
   mirror(esbuild, path.join(repoRoot, 'web'), dist, new Set(['wasm', 'sw-manifest.js', 'guide', ...pages.map((p) => p.file), ...guides.map((p) => p.file)]), new Set(['templates']));
   await bundleLessonPages(esbuild, dist, pages);
+  await bundleSandboxWorker(esbuild, dist);
   pages.push(...guides);
   fs.mkdirSync(path.join(dist, 'guide'), { recursive: true });
   for (const name of fs.readdirSync(path.join(dist, 'guide'))) {
@@ -155,7 +174,10 @@ async function assembleSiteNow() {
   fs.mkdirSync(wasmOut, { recursive: true });
   const shipped = SHIPPED_MODULES.flatMap((m) => [`${m}.js`, `${m}.wasm`]);
   // A module no longer shipped (a renamed one) leaves dist/ too.
-  for (const name of fs.readdirSync(wasmOut)) if (!shipped.includes(name)) fs.rmSync(path.join(wasmOut, name), { force: true });
+  for (const name of fs.readdirSync(wasmOut)) if (!shipped.includes(name) && name !== 'quickjs.wasm') fs.rmSync(path.join(wasmOut, name), { force: true });
+  const quickjs = path.join(repoRoot, 'node_modules', ...QUICKJS_WASM);
+  const quickjsOut = path.join(wasmOut, 'quickjs.wasm');
+  if (!fs.existsSync(quickjsOut) || !fs.readFileSync(quickjsOut).equals(fs.readFileSync(quickjs))) fs.copyFileSync(quickjs, quickjsOut);
   for (const file of shipped) {
     const from = path.join(repoRoot, 'build', 'wasm', file);
     const to = path.join(wasmOut, file);

@@ -63,7 +63,7 @@ function npmPackagesCurrent() {
   if (!fs.existsSync(installed)) return false;
   if (fs.existsSync(lock) && fs.statSync(lock).mtimeMs > fs.statSync(installed).mtimeMs) return false;
   const pkg = JSON.parse(fs.readFileSync(path.join(repoRoot, 'package.json'), 'utf8'));
-  return Object.keys(pkg.devDependencies ?? {}).every((name) =>
+  return [...Object.keys(pkg.dependencies ?? {}), ...Object.keys(pkg.devDependencies ?? {})].every((name) =>
     fs.existsSync(path.join(repoRoot, 'node_modules', name, 'package.json')));
 }
 

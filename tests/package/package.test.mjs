@@ -1,7 +1,8 @@
 // Package and scripts: `npm pack` gives a tarball a student installs in an empty
 // folder; `import { loadWingspline } from 'wingspline'` then works in Node, and the same
 // installed files work from a page without a bundler. Packed once and installed once
-// (offline: the package has no runtime dependencies) for the whole file.
+// (offline: its two runtime dependencies, QuickJS for the code sandbox, come from npm's cache,
+// where setup's `npm ci` put them) for the whole file.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
@@ -76,7 +77,11 @@ test('npm pack builds first (prepack) and the tarball holds the built module, th
   const stray = packed.filter((f) => (/^(tests|build|node_modules|core|scripts|web)\//.test(f) && f !== 'scripts/wingspline.mjs') || f.endsWith('.tgz'));
   assert.deepEqual(stray, [], 'no tests, build output, sources or dependencies in the tarball');
   const manifest = JSON.parse(fs.readFileSync(path.join(installed, 'package.json'), 'utf8'));
-  assert.deepEqual(Object.keys(manifest.dependencies ?? {}), [], 'no runtime dependencies: it installs offline');
+  // QuickJS for the code sandbox (web/js/code/), pinned: the grader runs submissions in it.
+  assert.deepEqual(manifest.dependencies, { '@jitl/quickjs-wasmfile-release-sync': '0.32.0', 'quickjs-emscripten-core': '0.32.0' });
+  for (const file of ['dist/js/code/sandbox-worker.js', 'dist/js/code/runner.js', 'dist/wasm/quickjs.wasm']) {
+    assert.ok(packed.includes(file), `${file} is in the tarball`);
+  }
 });
 
 test('installed in an empty folder, `import { loadWingspline } from \'wingspline\'` works in Node: a curve point, the slide\'s walk, dispose', () => {

@@ -78,7 +78,8 @@ export function hostCommandOf(event) {
   const name = event.key.length === 1 ? event.key.toLowerCase() : event.key;
   const command = HOST_KEYS[event.shiftKey ? `Shift+${name}` : name];
   if (!command) return null;
-  const target = event.target;
+  // The element the key went to, inside a shadow root too (the code editor's).
+  const target = event.composedPath?.()[0] ?? event.target;
   if (!(target instanceof Element)) return command;
   if (target instanceof HTMLElement && target.isContentEditable) return null;
   if (['INPUT', 'TEXTAREA', 'SELECT'].includes(target.tagName)) return null;

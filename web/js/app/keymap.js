@@ -38,7 +38,9 @@ export function createKeymap() {
   }
 
   function onKeyDown(event) {
-    const target = event.target;
+    // The element the key went to, inside a shadow root too (the code editor's), where
+    // event.target is only the shadow root's host.
+    const target = event.composedPath?.()[0] ?? event.target;
     if (target instanceof HTMLElement && (target.isContentEditable || ['INPUT', 'TEXTAREA', 'SELECT'].includes(target.tagName))) {
       if (event.key !== 'Escape') return;
     }

@@ -8,7 +8,8 @@ import { lesson as continuityLesson } from './continuity/lesson.js';
 import { lesson as comparisonLesson } from './comparison/lesson.js';
 import { lesson as surfacesLesson } from './surfaces/lesson.js';
 import { subdivisionLesson } from './subdivision/lesson.js';
+import { codeLesson } from './code/lesson.js';
 
 /** @type {Readonly<Record<string, import('../app/contract.js').Lesson>>} */
 export const LESSON_OBJECTS = Object.freeze(Object.fromEntries(
-  [meshLesson, curvesLesson, continuityLesson, comparisonLesson, surfacesLesson, subdivisionLesson].map((l) => [l.id, l])));
+  [meshLesson, curvesLesson, continuityLesson, comparisonLesson, surfacesLesson, subdivisionLesson, codeLesson].map((l) => [l.id, l])));

@@ -50,4 +50,15 @@ export const lessons = [
     summary: 'Loop and Catmull-Clark one phase at a time on the winged edge: every new point with its mask, levels 0 to 5, limit positions; beside it Chaikin and cubic subdivision of a polygon converging to its B-spline.',
     ready: true,
   },
+  {
+    id: 'code',
+    title: 'Program the structure',
+    page: 'code.html',
+    lectures: '000, 003',
+    summary: 'Write the winged-edge and half-edge walks yourself: your code runs in a sandbox, every entry it reads lights up in the tables, and it is graded on the slide\'s mesh and on hidden meshes.',
+    ready: true,
+    // It carries a code editor (docs/architecture.md, "Module size"); the sandbox's engine
+    // is fetched on the first Run and is not part of the page's load.
+    weightBudget: 400_000,
+  },
 ];

@@ -1,0 +1,249 @@
+// The tasks of "Program the structure" (web/js/lessons/code/), graded as the page grades them:
+// the cases the core builds (cases.js), the student's code in the QuickJS sandbox under Node
+// (web/js/code/quickjs-node.js), the grade (grading.js). For every task: the lecture's rule
+// written as a student would passes every case for many seeds, and the trace of that rule
+// reads exactly as many entries as the core's counting reader says the lecture's rule reads
+// (two independent counts); typical wrong solutions fail, at the case the test expects, with
+// the message naming the mesh, the element and where the answers part.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { loadWingspline } from '../../dist/js/core/wingspline.js';
+import { TASKS, taskOf } from '../../web/js/lessons/code/tasks.js';
+import { makeCases, lectureCase, HIDDEN_KINDS, seeded } from '../../web/js/lessons/code/cases.js';
+import { gradeRun, failureText, partsAt, tablesAfter } from '../../web/js/lessons/code/grading.js';
+import { createNodeSandbox } from '../../web/js/code/quickjs-node.js';
+
+const api = await loadWingspline({ parts: ['mesh', 'exercises'] });
+const sandbox = createNodeSandbox();
+
+// The lecture's rules, as a student would write them.
+const CORRECT = {
+  'edges-around-vertex': `function edgesAroundVertex(mesh, v) {
+  const edges = [];
+  const first = mesh.vertex(v).edge;
+  let e = first;
+  do {
+    edges.push(e);
+    const r = mesh.edge(e);
+    e = r.start === v ? r.startLeft : r.endRight;
+  } while (e !== first);
+  return edges;
+}`,
+  'edges-of-face': `function edgesOfFace(mesh, f) {
+  const edges = [];
+  const first = mesh.face(f).edge;
+  let e = first;
+  do {
+    edges.push(e);
+    const r = mesh.edge(e);
+    e = r.left === f ? r.endLeft : r.startRight;
+  } while (e !== first);
+  return edges;
+}`,
+  'faces-around-vertex': `function facesAroundVertex(mesh, v) {
+  const faces = [];
+  const first = mesh.vertex(v).edge;
+  let e = first;
+  do {
+    const r = mesh.edge(e);
+    const atStart = r.start === v;
+    const f = atStart ? r.left : r.right;
+    if (f !== -1) faces.push(f);
+    e = atStart ? r.startLeft : r.endRight;
+  } while (e !== first);
+  return faces;
+}`,
+  'euler-characteristic': `function eulerCharacteristic(mesh) {
+  let V = 0, E = 0, F = 0;
+  for (let v = 0; v < mesh.vertexCount; v++) if (mesh.vertex(v).edge !== -1) V++;
+  for (let e = 0; e < mesh.edgeCount; e++) if (mesh.edge(e).start !== -1) E++;
+  for (let f = 0; f < mesh.faceCount; f++) if (mesh.face(f).edge !== -1) F++;
+  return V - E + F;
+}`,
+  'half-edges-around-vertex': `function halfEdgesAroundVertex(mesh, v) {
+  const out = [];
+  const first = mesh.vertex(v).halfEdge;
+  let h = first;
+  do {
+    out.push(h);
+    h = mesh.halfEdge(mesh.halfEdge(h).prev).twin;
+  } while (h !== first);
+  return out;
+}`,
+  'half-edges-of-face': `function halfEdgesOfFace(mesh, f) {
+  const out = [];
+  const first = mesh.face(f).halfEdge;
+  let h = first;
+  do {
+    out.push(h);
+    h = mesh.halfEdge(h).next;
+  } while (h !== first);
+  return out;
+}`,
+  // The flip worked out from the winged-edge record (docs/architecture.md, "The lesson Program
+  // the structure"): sides a = S-c and d = E-c in L, b = S-d and c = d-E in R, before.
+  'flip-edge': `function flipEdge(mesh, e) {
+  const r = mesh.edge(e);
+  const S = r.start, E = r.end, L = r.left, R = r.right;
+  const a = r.startLeft, b = r.startRight, c = r.endRight, d = r.endLeft;
+  const other = (x, v) => { const y = mesh.edge(x); return y.start === v ? y.end : y.start; };
+  const cv = other(a, S), dv = other(b, S);
+  const setFace = (x, from, to) => { const y = mesh.edge(x); if (y.left === from) y.left = to; else y.right = to; };
+  const setWing = (x, v, f, value) => {
+    const y = mesh.edge(x);
+    if (y.start === v) { if (y.left === f) y.startLeft = value; else y.startRight = value; }
+    else { if (y.left === f) y.endLeft = value; else y.endRight = value; }
+  };
+  setFace(b, R, L);
+  setFace(d, L, R);
+  setWing(a, S, L, b); setWing(a, cv, L, e);
+  setWing(b, S, L, a); setWing(b, dv, L, e);
+  setWing(c, E, R, d); setWing(c, dv, R, e);
+  setWing(d, E, R, c); setWing(d, cv, R, e);
+  r.start = dv; r.end = cv;
+  r.startLeft = b; r.startRight = c; r.endLeft = a; r.endRight = d;
+  if (mesh.vertex(S).edge === e) mesh.vertex(S).edge = a;
+  if (mesh.vertex(E).edge === e) mesh.vertex(E).edge = c;
+  if (mesh.face(L).edge === d) mesh.face(L).edge = e;
+  if (mesh.face(R).edge === b) mesh.face(R).edge = e;
+}`,
+};
+
+// Typical mistakes, and the first case each must fail on (0: the slide's mesh).
+const WRONG = {
+  'edges-around-vertex': [
+    // The wrong wing at the start: clockwise on the slide's v2 already.
+    { source: CORRECT['edges-around-vertex'].replace('r.startLeft', 'r.startRight'), firstFail: 0 },
+    // Never turning at the end vertex: fine while v is every edge's start, wrong on the slide's v2 (e2 ends there).
+    { source: CORRECT['edges-around-vertex'].replace("r.start === v ? r.startLeft : r.endRight", 'r.startLeft'), firstFail: 0 },
+  ],
+  'edges-of-face': [{ source: CORRECT['edges-of-face'].replace('r.endLeft', 'r.startLeft'), firstFail: 0 }],
+  'faces-around-vertex': [
+    // Keeping the boundary's none: the slide's v2 is on the boundary (e2 has no right face).
+    { source: CORRECT['faces-around-vertex'].replace('if (f !== -1) faces.push(f);', 'faces.push(f);'), firstFail: 0 },
+  ],
+  'euler-characteristic': [
+    // Testing an index for truth: edge 0 is falsy, so the slide's v1 (it stores e1, edge 0) is not counted.
+    { source: CORRECT['euler-characteristic'].replace('if (mesh.vertex(v).edge !== -1) V++', 'if (mesh.vertex(v).edge > 0) V++'), firstFail: 0 },
+  ],
+  'half-edges-around-vertex': [{ source: CORRECT['half-edges-around-vertex'].replace('.prev).twin', '.next).twin'), firstFail: 0 }],
+  'half-edges-of-face': [{ source: CORRECT['half-edges-of-face'].replace('.next;', '.twin;'), firstFail: 0 }],
+  'flip-edge': [
+    // Forgetting what the end vertex stores: the slide's v3 stores e3 itself.
+    { source: CORRECT['flip-edge'].replace('if (mesh.vertex(E).edge === e) mesh.vertex(E).edge = c;', ''), firstFail: 0 },
+    // Turning e the wrong way round (c -> d) with the same wings.
+    { source: CORRECT['flip-edge'].replace('r.start = dv; r.end = cv;', 'r.start = cv; r.end = dv;'), firstFail: 0 },
+  ],
+};
+
+// An edit is checked as the page checks it: the core's table check against the faces of the
+// core's own edit of the same mesh.
+const checkEdit = (c, r) => api.checkMeshTableAnswer(
+  { faceOffsets: c.expected.faceOffsets, faceVertices: c.expected.faceVertices, vertexCount: c.expected.vertexCount },
+  'winged-edge', tablesAfter(c.snapshot, r.transaction));
+
+async function grade(task, source, seed) {
+  const cases = makeCases(api, task, seed);
+  const answer = await sandbox.run({
+    source, entry: task.entry, budgetMs: 1500, writable: task.writable === true,
+    cases: cases.filter((c) => c.args).map((c) => ({ args: c.args, mesh: c.snapshot })),
+  });
+  assert.ok(!answer.error, answer.error?.message);
+  return gradeRun(task, cases, answer.results, { checkEdit });
+}
+
+test('the cases: the slide\'s mesh first, then one of each hidden kind, all valid, the same for the same seed', () => {
+  for (const task of TASKS) {
+    const a = makeCases(api, task, 7);
+    const b = makeCases(api, task, 7);
+    assert.equal(a.length, 1 + HIDDEN_KINDS.length);
+    assert.equal(a[0].label, 'the slide\'s mesh (lecture 000)');
+    assert.deepEqual(a[0].args, task.lectureArgs);
+    assert.deepEqual(a.map((c) => [c.args, c.expected]), b.map((c) => [c.args, c.expected]));
+    // A case not asked is one whose mesh has no element the task's edit accepts.
+    for (const c of a.filter((x) => !x.args)) assert.ok(task.answer === 'edit' && /no edge of it/.test(c.skipped), c.label);
+  }
+  // The slide's answers, as the statements and lecture 000 give them.
+  assert.deepEqual(lectureCase(api, taskOf('edges-around-vertex')).expected, [5, 4, 2, 1]); // e6 e5 e3 e2
+  assert.deepEqual(lectureCase(api, taskOf('edges-of-face')).expected, [0, 1, 2]); // e1 e2 e3
+  assert.deepEqual(lectureCase(api, taskOf('faces-around-vertex')).expected, [2, 1, 0]); // F3 F2 F1
+  assert.equal(lectureCase(api, taskOf('euler-characteristic')).expected, 1); // 5 - 7 + 3
+  // Flipping e3 of the slide (v2 -> v3 between F1 and F2) joins v4 and v1: F1 = (v1 v2 v4), F2 = (v4 v3 v1).
+  const flip = lectureCase(api, taskOf('flip-edge')).expected;
+  const facesAfter = [0, 1, 2].map((f) => Array.from(flip.faceVertices.subarray(flip.faceOffsets[f], flip.faceOffsets[f + 1])));
+  const rotated = (face, first) => { const k = face.indexOf(first); return [...face.slice(k), ...face.slice(0, k)]; };
+  assert.deepEqual(rotated(facesAfter[0], 0), [0, 1, 3]);
+  assert.deepEqual(rotated(facesAfter[1], 3), [3, 2, 0]);
+  assert.equal(api.liveMeshCount(), 0, 'every case mesh is disposed');
+});
+
+test('a removed element\'s row reads -1 in every entry of the snapshot', () => {
+  const cases = makeCases(api, taskOf('euler-characteristic'), 3);
+  const joined = cases[5];
+  const w = joined.snapshot.winged;
+  const removedFaces = [...w.faceEdge].filter((x) => x === -1).length;
+  assert.ok(removedFaces >= 1, 'the joined grid has removed faces');
+  // V - E + F counted from the live rows is the core's Euler characteristic (a disc: 1).
+  const V = [...w.vertexEdge].filter((x) => x !== -1).length;
+  let E = 0;
+  for (let e = 0; e < w.edges.length / 8; e += 1) {
+    const row = w.edges.subarray(8 * e, 8 * e + 8);
+    if (row[0] === -1) assert.ok(row.every((x) => x === -1), `removed edge ${e}: every entry -1`);
+    else E += 1;
+  }
+  const F = w.faceEdge.length - removedFaces;
+  assert.equal(V - E + F, 1);
+  assert.equal(joined.expected, 1);
+});
+
+for (const task of TASKS) {
+  test(`${task.id}: the lecture's rule passes every case for 12 seeds, reading what the core says the rule reads`, async () => {
+    for (let seed = 1; seed <= 12; seed += 1) {
+      const g = await grade(task, CORRECT[task.id], seed * 7919);
+      assert.equal(g.firstFail, null, `seed ${seed}: ${g.firstFail !== null ? failureText(task, g.cases[g.firstFail]) : ''}`);
+      // A walk reads what the core's counting reader says the lecture's rule reads; an edit's
+      // reference is the core's own writes, compared with nothing (another order is as right).
+      if (task.answer !== 'edit') for (const c of g.cases) assert.equal(c.reads, c.referenceReads, `${c.label}: traced reads against the core's count`);
+      else assert.ok(g.asked >= 5, `${g.asked} meshes asked`);
+    }
+  });
+  test(`${task.id}: typical mistakes fail where they must, with the mesh, the element and the difference named`, async () => {
+    for (const { source, firstFail } of WRONG[task.id]) {
+      const g = await grade(task, source, 12345);
+      assert.equal(g.firstFail, firstFail, source);
+      const failed = g.cases[firstFail];
+      const text = failureText(task, failed);
+      assert.match(text, new RegExp(`^On ${failed.label.replace(/[()]/g, '\\$&')}`));
+      if (failed.check) {
+        assert.match(text, /the tables your function left are not the winged edge of the mesh after the flip, so nothing was applied\. (The vertex|The edge|The face|Row)/);
+      } else if (!failed.error) {
+        assert.match(text, /expected .* your function returned/);
+        assert.equal(partsAt(failed.expected, failed.value), failed.partsAt);
+      }
+    }
+  });
+}
+
+test('an endless walk (the stop condition never met) stops on every case with the loop\'s line, and the run goes on', async () => {
+  const task = taskOf('edges-around-vertex');
+  const source = CORRECT['edges-around-vertex'].replace('} while (e !== first);', '} while (e !== -2);');
+  const cases = makeCases(api, task, 1).slice(0, 2);
+  const t0 = performance.now();
+  const answer = await sandbox.run({ source, entry: task.entry, budgetMs: 300, cases: cases.map((c) => ({ args: c.args, mesh: c.snapshot })) });
+  const g = gradeRun(task, cases, answer.results);
+  assert.ok(performance.now() - t0 < 4000);
+  assert.equal(g.firstFail, 0);
+  for (const c of g.cases) {
+    assert.equal(c.error?.kind, 'timeout');
+    assert.ok([4, 5, 6, 7, 8, 9].includes(c.error.line), `line ${c.error.line}`);
+  }
+});
+
+test('the seeded generator: the same seed, the same numbers; spread over [0, 1)', () => {
+  const a = seeded(42); const b = seeded(42);
+  const xs = Array.from({ length: 1000 }, () => a.next());
+  assert.deepEqual(xs, Array.from({ length: 1000 }, () => b.next()));
+  assert.ok(xs.every((x) => x >= 0 && x < 1));
+  const mean = xs.reduce((s, x) => s + x, 0) / xs.length;
+  assert.ok(Math.abs(mean - 0.5) < 0.05, `mean ${mean}`);
+});

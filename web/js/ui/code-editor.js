@@ -1,0 +1,113 @@
+// @ts-check
+// A code editor for a student's JavaScript: CodeMirror 6 (bundled into the page at build
+// time by esbuild, so no CDN and no inline script), with line numbers, JavaScript highlighting, bracket
+// matching, undo, Tab to indent (Escape then Tab leaves the editor, CodeMirror's own
+// convention for keyboard users), an error marked at its line and column, and a line lit
+// while a trace is stepped through.
+// The editor lives in a shadow root: CodeMirror writes its styles as a <style> element into a
+// document, which the page's CSP (style-src 'self') refuses, and as a constructed style sheet
+// into a shadow root, which it allows. Its look (THEME) uses the page's colour variables, which
+// reach into the shadow root.
+// Offers: createCodeEditor({parent, label, doc, onChange, onRun}) (onRun: Ctrl/Cmd+Enter) -> {view, text, setText(text),
+//   showError({line, column, message} | null), markLine(line | null), focus()}.
+import { EditorView, keymap, lineNumbers, highlightActiveLine, highlightActiveLineGutter, drawSelection, Decoration } from '@codemirror/view';
+import { EditorState, StateEffect, StateField } from '@codemirror/state';
+import { defaultKeymap, history, historyKeymap, indentWithTab } from '@codemirror/commands';
+import { javascript } from '@codemirror/lang-javascript';
+import { syntaxHighlighting, defaultHighlightStyle, bracketMatching, indentOnInput } from '@codemirror/language';
+import { setDiagnostics, lintGutter } from '@codemirror/lint';
+
+// The line the trace is at: a line decoration, moved by an effect.
+/** @type {import('@codemirror/state').StateEffectType<number | null>} */
+const setTraceLine = StateEffect.define();
+const traceLine = StateField.define({
+  create: () => Decoration.none,
+  update(deco, tr) {
+    let next = deco.map(tr.changes);
+    for (const e of tr.effects) {
+      if (e.is(setTraceLine)) {
+        const line = /** @type {number | null} */ (e.value);
+        next = line === null || line < 1 || line > tr.state.doc.lines ? Decoration.none
+          : Decoration.set([Decoration.line({ class: 'cm-trace-line' }).range(tr.state.doc.line(line).from)]);
+      }
+    }
+    return next;
+  },
+  provide: (f) => EditorView.decorations.from(f),
+});
+
+const THEME = EditorView.theme({
+  '&': { border: '1px solid var(--line)', borderRadius: 'var(--radius, 4px)', background: 'var(--panel)', color: 'var(--ink)', fontSize: '0.95rem', maxHeight: '55vh' },
+  '&.cm-focused': { outline: '3px solid var(--focus)', outlineOffset: '1px' },
+  '.cm-scroller': { fontFamily: "ui-monospace, 'DejaVu Sans Mono', monospace", lineHeight: '1.45' },
+  '.cm-content, .cm-gutter': { minHeight: '11.5rem' },
+  '.cm-content': { caretColor: 'var(--ink)' },
+  '.cm-gutters': { background: 'var(--bg)', color: 'var(--muted)', borderRight: '1px solid var(--line)' },
+  '.cm-activeLine': { background: 'color-mix(in srgb, var(--accent) 8%, transparent)' },
+  '.cm-activeLineGutter': { background: 'color-mix(in srgb, var(--accent) 14%, transparent)' },
+  '.cm-trace-line': { background: 'color-mix(in srgb, var(--c4) 28%, transparent)' },
+  '&.cm-focused .cm-selectionBackground, .cm-selectionBackground': { background: 'color-mix(in srgb, var(--accent) 30%, transparent)' },
+});
+
+/**
+ * @param {{ parent: HTMLElement, label: string, doc: string, onChange: (text: string) => void, onRun?: () => void }} options
+ */
+export function createCodeEditor({ parent, label, doc, onChange, onRun }) {
+  let quiet = false; // true while setText writes: not the student's change
+  const host = document.createElement('div');
+  host.className = 'code-editor-host';
+  parent.append(host);
+  const root = host.attachShadow({ mode: 'open' });
+  const mount = document.createElement('div');
+  root.append(mount);
+  const view = new EditorView({
+    root,
+    parent: mount,
+    state: EditorState.create({
+      doc,
+      extensions: [
+        lineNumbers(), highlightActiveLineGutter(), history(), drawSelection(), indentOnInput(), bracketMatching(),
+        highlightActiveLine(), syntaxHighlighting(defaultHighlightStyle, { fallback: true }), javascript(), lintGutter(),
+        traceLine, THEME, EditorState.tabSize.of(2),
+        keymap.of([{ key: 'Mod-Enter', run: () => { onRun?.(); return true; } }, ...defaultKeymap, ...historyKeymap, indentWithTab]),
+        // tabindex 0 on the editable text (already in the tab order): checkers such as axe
+        // then see that the scrolling box has keyboard access.
+        EditorView.contentAttributes.of({ 'aria-label': label, spellcheck: 'false', autocapitalize: 'off', autocorrect: 'off', tabindex: '0' }),
+        EditorView.updateListener.of((u) => { if (u.docChanged && !quiet) onChange(u.state.doc.toString()); }),
+      ],
+    }),
+  });
+  const pos = (line, column) => {
+    const doc = view.state.doc;
+    const l = doc.line(Math.min(Math.max(1, line), doc.lines));
+    return Math.min(l.from + Math.max(0, (column ?? 1) - 1), l.to);
+  };
+  return {
+    view,
+    get text() { return view.state.doc.toString(); },
+    setText(text) {
+      if (text === view.state.doc.toString()) return;
+      quiet = true;
+      try {
+        view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: text } });
+      } finally {
+        quiet = false;
+      }
+    },
+    /** @param {{ line: number, column?: number, message: string } | null} error */
+    showError(error) {
+      if (!error || !error.line) { view.dispatch(setDiagnostics(view.state, [])); return; }
+      const from = pos(error.line, error.column);
+      const to = Math.max(from, view.state.doc.lineAt(from).to);
+      view.dispatch(setDiagnostics(view.state, [{ from, to, severity: 'error', message: error.message }]));
+    },
+    /** @param {number | null} line */
+    markLine(line) {
+      view.dispatch({ effects: setTraceLine.of(line) });
+      if (line !== null && line >= 1 && line <= view.state.doc.lines) {
+        view.dispatch({ effects: EditorView.scrollIntoView(view.state.doc.line(line).from, { y: 'nearest' }) });
+      }
+    },
+    focus() { view.focus(); },
+  };
+}
