@@ -9,7 +9,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadWingspline } from '../../dist/js/core/wingspline.js';
 import { TASKS, taskOf } from '../../web/js/lessons/code/tasks.js';
-import { makeCases, lectureCase, HIDDEN_KINDS, seeded } from '../../web/js/lessons/code/cases.js';
+import { makeCases, lectureCase, sandboxMesh, HIDDEN_KINDS, seeded } from '../../web/js/lessons/code/cases.js';
 import { gradeRun, failureText, partsAt, tablesAfter } from '../../web/js/lessons/code/grading.js';
 import { createNodeSandbox } from '../../web/js/code/quickjs-node.js';
 
@@ -146,7 +146,7 @@ async function grade(task, source, seed) {
   const cases = makeCases(api, task, seed);
   const answer = await sandbox.run({
     source, entry: task.entry, budgetMs: 1500, writable: task.writable === true,
-    cases: cases.filter((c) => c.args).map((c) => ({ args: c.args, mesh: c.snapshot })),
+    cases: cases.filter((c) => c.args).map((c) => ({ args: c.args, mesh: sandboxMesh(task, c) })),
   });
   assert.ok(!answer.error, answer.error?.message);
   return gradeRun(task, cases, answer.results, { checkEdit });
@@ -229,14 +229,23 @@ test('an endless walk (the stop condition never met) stops on every case with th
   const source = CORRECT['edges-around-vertex'].replace('} while (e !== first);', '} while (e !== -2);');
   const cases = makeCases(api, task, 1).slice(0, 2);
   const t0 = performance.now();
-  const answer = await sandbox.run({ source, entry: task.entry, budgetMs: 300, cases: cases.map((c) => ({ args: c.args, mesh: c.snapshot })) });
+  const answer = await sandbox.run({ source, entry: task.entry, budgetMs: 300, cases: cases.map((c) => ({ args: c.args, mesh: sandboxMesh(task, c) })) });
   const g = gradeRun(task, cases, answer.results);
   assert.ok(performance.now() - t0 < 4000);
   assert.equal(g.firstFail, 0);
   for (const c of g.cases) {
     assert.equal(c.error?.kind, 'timeout');
-    assert.ok([4, 5, 6, 7, 8, 9].includes(c.error.line), `line ${c.error.line}`);
+    // The do ... while loop spans lines 5 to 9 of the source.
+    assert.ok(c.error.line >= 5 && c.error.line <= 9, `line ${c.error.line}`);
   }
+});
+
+test('a half-edge task is given the half-edge only: reading a winged-edge pointer is an error at its line', async () => {
+  const task = taskOf('half-edges-around-vertex');
+  const c = lectureCase(api, task);
+  const answer = await sandbox.run({ source: 'function halfEdgesAroundVertex(mesh, v) {\n  return [mesh.vertex(v).edge];\n}', entry: task.entry, budgetMs: 1500, cases: [{ args: c.args, mesh: sandboxMesh(task, c) }] });
+  assert.equal(answer.results[0].ok, false);
+  assert.match(answer.results[0].error.message, /^Line 2, column \d+: this task gives the half-edge only/);
 });
 
 test('the seeded generator: the same seed, the same numbers; spread over [0, 1)', () => {

@@ -23,11 +23,17 @@ function serve(scope) {
   const wasmLocation = new URL('../../wasm/quickjs.wasm', import.meta.url).href;
   /** @type {Promise<QuickJSWASMModule> | null} */
   let engine = null;
+  const load = () => (engine ??= newQuickJSWASMModuleFromVariant(newVariant(releaseSync, { wasmLocation })));
+  // Loaded at once and announced ({ready}): the page's watchdog then times the student's code,
+  // not the engine's download and compilation (slow on a school network or laptop).
+  load().then(() => scope.postMessage({ ready: true }, []), (err) => {
+    engine = null;
+    scope.postMessage({ ready: false, message: String(err?.message ?? err) }, []);
+  });
   scope.addEventListener('message', async (event) => {
     const { id, request } = event.data ?? {};
     try {
-      engine ??= newQuickJSWASMModuleFromVariant(newVariant(releaseSync, { wasmLocation }));
-      const out = runStudentCode(await engine, request);
+      const out = runStudentCode(await load(), request);
       // A case that broke the engine at the host level leaves it unusable: load a new one.
       if ('results' in out && out.results.some((r) => r.engineFailed)) engine = null;
       scope.postMessage({ id, ...out }, 'results' in out ? traceBuffers(out.results) : []);

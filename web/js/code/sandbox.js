@@ -1,9 +1,9 @@
 // @ts-check
 // The page's side of the code sandbox: a module worker (sandbox-worker.js) runs the student's
 // code, so the page stays responsive, and a watchdog ends a worker that does not answer in
-// time (budgetMs per case + 1.5 s): the run resolves with a timeout error and the next run
-// starts a fresh worker. One run at a time; a second run while one is going resolves with a
-// 'busy' error at once.
+// time (budgetMs per case + 1.5 s, counted from the moment the worker has loaded its engine):
+// the run resolves with a timeout error and the next run starts a fresh worker. One run at a
+// time; a second run while one is going resolves with a 'busy' error at once.
 //
 // The worker's address is '../code/sandbox-worker.js' from this module: from
 // dist/js/code/sandbox.js and from a lesson bundle in dist/js/bundle/ alike (both two folders
@@ -15,6 +15,7 @@
 
 const WATCHDOG_SLACK_MS = 1500;
 const DEFAULT_BUDGET_MS = 1500;
+const ENGINE_LOAD_MS = 60_000;
 
 /**
  * @param {{ url?: string | URL }} [options] the worker's address (tests; default above)
@@ -30,10 +31,28 @@ export function createSandbox({ url } = {}) {
   /** @type {((answer: SandboxAnswer) => void) | null} */
   let settleCurrent = null;
 
+  /** @type {Promise<true | string> | null} the engine loaded (true) or why not */
+  let ready = null;
   const stop = () => {
     worker?.terminate();
     worker = null;
+    ready = null;
   };
+  // Resolves when the worker has loaded its engine, or with why it could not (in
+  // ENGINE_LOAD_MS at most, so a run never waits for ever).
+  /** @param {Worker} w @returns {Promise<true | string>} */
+  const readyOf = (w) => new Promise((resolve) => {
+    const give = setTimeout(() => resolve(`the sandbox's engine did not load within ${ENGINE_LOAD_MS / 1000} s: check the connection and run again`), ENGINE_LOAD_MS);
+    /** @param {MessageEvent} event */
+    const onReady = (event) => {
+      if (event.data?.ready === undefined) return;
+      clearTimeout(give);
+      w.removeEventListener('message', onReady);
+      resolve(event.data.ready === true ? true : `the sandbox's engine could not be loaded (${event.data.message}): reload the page`);
+    };
+    w.addEventListener('message', onReady);
+    w.addEventListener('error', () => { clearTimeout(give); resolve('the sandbox could not be started: reload the page'); }, { once: true });
+  });
   /** @param {SandboxError['kind']} kind @param {string} message @returns {SandboxAnswer} */
   const failure = (kind, message) => ({ error: { kind, message, line: null, column: null } });
 
@@ -42,8 +61,12 @@ export function createSandbox({ url } = {}) {
       if (disposed) return Promise.resolve(failure('disposed', 'this sandbox was closed'));
       if (busy) return Promise.resolve(failure('busy', 'your code is still running: wait for that run to finish'));
       busy = true;
-      worker ??= new Worker(workerUrl, { type: 'module', name: 'code-sandbox' });
+      if (!worker) {
+        worker = new Worker(workerUrl, { type: 'module', name: 'code-sandbox' });
+        ready = readyOf(worker);
+      }
       const w = worker;
+      const loaded = ready;
       const id = nextId++;
       const cases = Array.isArray(request?.cases) ? request.cases.length : 0;
       const limit = (request?.budgetMs ?? DEFAULT_BUDGET_MS) * Math.max(1, cases) + WATCHDOG_SLACK_MS;
@@ -73,14 +96,19 @@ export function createSandbox({ url } = {}) {
           resolve(answer);
         };
         settleCurrent = settle;
-        timer = setTimeout(() => {
-          stop();
-          settle(failure('timeout', `your code did not finish within ${limit / 1000} s and was stopped: is there a loop that never ends?`));
-        }, limit);
         w.addEventListener('message', onMessage);
         w.addEventListener('error', onError);
         w.addEventListener('messageerror', onError);
-        w.postMessage({ id, request });
+        // The watchdog starts once the engine is loaded (the worker says so), not before.
+        loaded?.then((ok) => {
+          if (settleCurrent !== settle) return;
+          if (ok !== true) { stop(); settle(failure('engine', ok)); return; }
+          timer = setTimeout(() => {
+            stop();
+            settle(failure('timeout', `your code did not finish within ${limit / 1000} s and was stopped: is there a loop that never ends?`));
+          }, limit);
+          w.postMessage({ id, request });
+        });
       });
     },
     dispose() {

@@ -14,7 +14,8 @@ import { EditorView, keymap, lineNumbers, highlightActiveLine, highlightActiveLi
 import { EditorState, StateEffect, StateField } from '@codemirror/state';
 import { defaultKeymap, history, historyKeymap, indentWithTab } from '@codemirror/commands';
 import { javascript } from '@codemirror/lang-javascript';
-import { syntaxHighlighting, defaultHighlightStyle, bracketMatching, indentOnInput } from '@codemirror/language';
+import { syntaxHighlighting, HighlightStyle, bracketMatching, indentOnInput } from '@codemirror/language';
+import { tags } from '@lezer/highlight';
 import { setDiagnostics, lintGutter } from '@codemirror/lint';
 
 // The line the trace is at: a line decoration, moved by an effect.
@@ -35,6 +36,18 @@ const traceLine = StateField.define({
   },
   provide: (f) => EditorView.decorations.from(f),
 });
+
+// Highlighting in the page's colours (web/css/code.css sets --code-* for the light and the
+// dark theme, each readable on the editor's background): CodeMirror's default colours are
+// for a light background only.
+const HIGHLIGHT = HighlightStyle.define([
+  { tag: [tags.keyword, tags.controlKeyword, tags.definitionKeyword, tags.moduleKeyword, tags.operatorKeyword], color: 'var(--code-keyword)' },
+  { tag: [tags.string, tags.special(tags.string), tags.regexp], color: 'var(--code-string)' },
+  { tag: [tags.number, tags.bool, tags.null, tags.atom], color: 'var(--code-number)' },
+  { tag: [tags.comment, tags.lineComment, tags.blockComment], color: 'var(--code-comment)', fontStyle: 'italic' },
+  { tag: [tags.function(tags.variableName), tags.definition(tags.variableName), tags.definition(tags.propertyName)], color: 'var(--code-definition)' },
+  { tag: tags.invalid, color: 'var(--error-line)' },
+]);
 
 const THEME = EditorView.theme({
   '&': { border: '1px solid var(--line)', borderRadius: 'var(--radius, 4px)', background: 'var(--panel)', color: 'var(--ink)', fontSize: '0.95rem', maxHeight: '55vh' },
@@ -67,7 +80,7 @@ export function createCodeEditor({ parent, label, doc, onChange, onRun }) {
       doc,
       extensions: [
         lineNumbers(), highlightActiveLineGutter(), history(), drawSelection(), indentOnInput(), bracketMatching(),
-        highlightActiveLine(), syntaxHighlighting(defaultHighlightStyle, { fallback: true }), javascript(), lintGutter(),
+        highlightActiveLine(), syntaxHighlighting(HIGHLIGHT), javascript(), lintGutter(),
         traceLine, THEME, EditorState.tabSize.of(2),
         keymap.of([{ key: 'Mod-Enter', run: () => { onRun?.(); return true; } }, ...defaultKeymap, ...historyKeymap, indentWithTab]),
         // tabindex 0 on the editable text (already in the tab order): checkers such as axe

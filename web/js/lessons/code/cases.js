@@ -9,7 +9,7 @@
 
 // The kinds of hidden meshes, in the order they are tried, as the lesson names them.
 export const HIDDEN_KINDS = [
-  'an open fan of 6 triangles, asked at its centre on the boundary',
+  'an open fan of 6 triangles (a vertex task asks at its centre, on the boundary)',
   'a tetrahedron (every vertex of valence 3)',
   'a cube of quads',
   'a sphere of 50 slices (its poles have valence 50)',
@@ -41,16 +41,24 @@ export function snapshotOf(mesh) {
   const vertexEdge = Int32Array.from(w.vertexEdge);
   const faceEdge = Int32Array.from(w.faceEdge);
   for (const e of gaps.edges) edges.fill(-1, 8 * e, 8 * e + 8);
-  for (const v of gaps.vertices) vertexEdge[v] = -1;
+  const positions = Float64Array.from(w.positions);
+  for (const v of gaps.vertices) { vertexEdge[v] = -1; positions.fill(-1, 3 * v, 3 * v + 3); }
   for (const f of gaps.faces) faceEdge[f] = -1;
   const he = mesh.halfEdgeArrays();
   return {
-    winged: { positions: Float64Array.from(w.positions), vertexEdge, edges, faceEdge, edgeFields: [...w.edgeFields] },
+    winged: { positions, vertexEdge, edges, faceEdge, edgeFields: [...w.edgeFields] },
     halfEdge: {
       origin: Int32Array.from(he.origin), face: Int32Array.from(he.face), next: Int32Array.from(he.next), prev: Int32Array.from(he.prev),
       vertexHalfedge: Int32Array.from(he.vertexHalfedge), faceHalfedge: Int32Array.from(he.faceHalfedge),
     },
   };
+}
+
+// What the sandbox is given of a case: the structure the task reads, and only that (a
+// half-edge task's function cannot read the winged edge's pointers; a winged-edge task's the
+// half-edge's).
+export function sandboxMesh(task, c) {
+  return task.structure === 'half-edge' ? { halfEdge: c.snapshot.halfEdge } : { winged: c.snapshot.winged };
 }
 
 const live = (count, removed) => {

@@ -91,7 +91,8 @@ export function failureText(task, g) {
   if (g.error) {
     // The sandbox's messages begin with "Line 3, column 9: " when they have a place.
     const at = g.error.line && !/^Line \d/.test(g.error.message) ? ` (line ${g.error.line}${g.error.column ? `, column ${g.error.column}` : ''})` : '';
-    return `On ${where}: ${g.error.message}${at}`.replace(/([^.?!])$/, '$1.');
+    const said = g.error.message || 'your code threw a value that is not an Error (throw new Error("...") says what went wrong)';
+    return `On ${where}: ${said}${at}`.replace(/([^.?!])$/, '$1.');
   }
   if (g.check) {
     const first = g.check.findings[0];

@@ -16,7 +16,7 @@ import { createSandbox } from '../../code/sandbox.js';
 import { loadWingspline } from '../../core/wingspline.js';
 import { elementLabel } from '../../core/element-labels.js';
 import { TASKS, TASK_IDS, taskOf, API_REFERENCE } from './tasks.js';
-import { makeCases, lectureCase, HIDDEN_KINDS } from './cases.js';
+import { makeCases, lectureCase, sandboxMesh, HIDDEN_KINDS } from './cases.js';
 import { gradeRun, failureText, describeAnswer, countsAsRead, tablesAfter } from './grading.js';
 import { projectCase, drawCase } from './draw.js';
 
@@ -77,6 +77,7 @@ export const codeLesson = {
       projected: new WeakMap(), // case -> its screen-plane positions
       commitTimer: 0,
       typing: false, // keys typed and not yet committed to the state
+      focusCase: null, // the case button to focus again after the list is redrawn
       editor: null,
       tables: null,
     };
@@ -143,8 +144,10 @@ export const codeLesson = {
     }
     function commitCode(source) {
       clearTimeout(view.commitTimer);
-      view.typing = false;
       const state = ctx.state;
+      // Refused (too long), the text stays the editor's: typing stays true, so no update
+      // writes the older saved code over it.
+      view.typing = source.length > MAX_CODE_CHARS;
       if (sourceOf(state) === source) return true;
       if (source.length > MAX_CODE_CHARS) {
         ctx.message.warn(`Your code is ${source.length.toLocaleString('en')} characters long; a saved lesson keeps at most ${MAX_CODE_CHARS.toLocaleString('en')} per task. Shorten it to keep it.`);
@@ -157,7 +160,10 @@ export const codeLesson = {
       commitCode(currentSource());
       ctx.commit({ ...ctx.state, task: id, shown: 0, step: 0 });
     }
+    // A change to the code from outside the editor drops the typing not yet committed.
+    const dropTyping = () => { clearTimeout(view.commitTimer); view.typing = false; };
     function resetCode() {
+      dropTyping();
       const state = ctx.state;
       const { [state.task]: _old, ...rest } = state.code;
       if (ctx.commit({ ...state, code: rest, shown: 0, step: 0 })) ctx.message.info('Back to the starter. Undo (Ctrl+Z outside the editor, or the History) brings your code back.');
@@ -184,19 +190,19 @@ export const codeLesson = {
         view.sandbox ??= createSandbox();
         // One mesh at a time, the slide's first: an endless loop stops the run at the mesh it
         // was found on (each would take the whole budget), and the status counts the meshes.
-        const meshOf = (c) => (task.structure === 'half-edge' ? { halfEdge: c.snapshot.halfEdge, winged: c.snapshot.winged } : { winged: c.snapshot.winged });
         /** @type {{ results: any[], error?: any }} */
         const answer = { results: [] };
         const asked = cases.filter((c) => c.args);
         for (const c of asked) {
           status.textContent = `Running on mesh ${answer.results.length + 1} of ${asked.length}…`;
-          const one = await view.sandbox.run({ source, entry: task.entry, writable: task.writable === true, budgetMs: BUDGET_MS, cases: [{ args: c.args, mesh: meshOf(c) }] });
+          const one = await view.sandbox.run({ source, entry: task.entry, writable: task.writable === true, budgetMs: BUDGET_MS, cases: [{ args: c.args, mesh: sandboxMesh(task, c) }] });
           if (one.error) { answer.error = one.error; break; }
           answer.results.push(one.results[0]);
           if (one.results[0]?.error?.kind === 'timeout') break;
         }
         if (answer.error) {
           view.run = { task: task.id, source, cases, grade: null, error: answer.error };
+          if (ctx.state.task !== task.id) return;
           view.editor?.showError(answer.error.line ? answer.error : null);
           status.textContent = answer.error.line ? `Line ${answer.error.line}${answer.error.column ? `, column ${answer.error.column}` : ''}: ${answer.error.message}` : answer.error.message;
         } else {
@@ -209,6 +215,8 @@ export const codeLesson = {
             'winged-edge', tablesAfter(c.snapshot, r.transaction));
           const grade = gradeRun(task, cases, answer.results, { checkEdit });
           view.run = { task: task.id, source, cases, grade, error: null };
+          // Switched to another task meanwhile: the results wait for it, the page stays put.
+          if (ctx.state.task !== task.id) return;
           const failed = grade.firstFail;
           const err = failed !== null ? grade.cases[failed].error : null;
           view.editor?.showError(err?.line ? err : null);
@@ -231,7 +239,7 @@ export const codeLesson = {
     ctx.keymap.add({ keys: ['End'], label: 'after the last read', group: 'Code', shownWith: codeBody, action: () => stepBy(Infinity) });
     ctx.setPresenter({ next: () => stepBy(1), prev: () => stepBy(-1), reset: () => stepBy(-Infinity) });
 
-    Object.assign(view, { taskSelect, statement, rule, status, caseList, verdict, failure, apiBody, traceLine, readsLine, tablesBox, runNow, stepBy, chooseCase: (i) => { if (ctx.commit({ ...ctx.state, shown: i, step: 0 }, { history: false })) ctx.fitView(); } });
+    Object.assign(view, { taskSelect, statement, rule, status, caseList, verdict, failure, apiBody, traceLine, readsLine, tablesBox, runNow, stepBy, chooseCase: (i) => { view.focusCase = i; if (ctx.commit({ ...ctx.state, shown: i, step: 0 }, { history: false })) ctx.fitView(); } });
     return view;
   },
 
@@ -245,8 +253,11 @@ export const codeLesson = {
 
   fitView(view, model, stage) {
     const P = projected(view, model.shown.case);
+    const held = model.shown.case.snapshot.winged.vertexEdge; // -1: a removed vertex, not drawn
     let minX = Infinity; let minY = Infinity; let maxX = -Infinity; let maxY = -Infinity;
-    for (let k = 0; k < P.length; k += 3) {
+    for (let v = 0; v < held.length; v += 1) {
+      if (held[v] < 0) continue;
+      const k = 3 * v;
       minX = Math.min(minX, P[k]); maxX = Math.max(maxX, P[k]); minY = Math.min(minY, P[k + 1]); maxY = Math.max(maxY, P[k + 1]);
     }
     return stage.fit(minX, minY, maxX, maxY, 0.12);
@@ -280,14 +291,20 @@ export const codeLesson = {
     view.caseList.replaceChildren(...(grade?.cases ?? []).map((g, i) => h('li', { class: !g.asked ? 'is-skipped' : g.ok ? 'is-passed' : 'is-failed', 'aria-current': i === state.shown ? 'true' : null },
       h('button', { type: 'button', class: 'link-button', 'data-case': i, onclick: () => view.chooseCase(i) }, `${!g.asked ? '–' : g.ok ? '✓' : '✗'} ${g.label}`),
       !g.asked ? ` — not asked: ${g.skipped}` : g.error?.kind === 'skipped' ? ' — not run' : counted(g))));
+    // The list is drawn again: the case a person chose by keyboard keeps the focus.
+    if (view.focusCase !== null) {
+      /** @type {HTMLElement | null} */ (view.caseList.querySelector(`[data-case="${view.focusCase}"]`))?.focus();
+      view.focusCase = null;
+    }
 
     // The trace at the step, and the case's tables.
     const trace = shown.grade?.trace ?? [];
     const step = Math.min(state.step, trace.length);
     const current = step > 0 ? trace[step - 1] : null;
     const readsSoFar = trace.slice(0, step).filter(countsAsRead).length;
-    view.traceLine.textContent = !shown.grade ? `${shown.case.label}. Run your code to trace what it reads.`
-      : !shown.grade.asked ? `${shown.case.label}: not asked.`
+    const label = shown.case.label.charAt(0).toUpperCase() + shown.case.label.slice(1);
+    view.traceLine.textContent = !shown.grade ? `${label}: run your code to trace what it reads.`
+      : !shown.grade.asked ? `${label}: not asked.`
       : current ? `Read ${step} of ${trace.length}: ${stepText(current)}` : `${trace.length} entries read on ${shown.case.label}. Step to follow them.`;
     const g = shown.grade;
     view.readsLine.textContent = !g || !g.asked ? (g?.skipped ? `Not asked: ${g.skipped}.` : '')
@@ -345,6 +362,8 @@ export const codeLesson = {
   }],
   importers: {
     js: (view, source, state) => {
+      clearTimeout(view.commitTimer);
+      view.typing = false;
       if (source.length > MAX_CODE_CHARS) throw new Error(`the file has ${source.length.toLocaleString('en')} characters; a task keeps at most ${MAX_CODE_CHARS.toLocaleString('en')}`);
       return { ...state, code: { ...state.code, [state.task]: source }, shown: 0, step: 0 };
     },

@@ -277,7 +277,10 @@ export function createRepresentationTabs(ctx, labels, { pickElement, selection }
       // A table with nothing of the walk's or the player's marked forgets what it revealed, so
       // a step back to a row it showed before reveals that row again.
       if (!rows['is-highlighted'].length && !editCell) { delete revealed[name]; delete revealedEdit[name]; }
-      if (reveal && selection.pick?.kind === kind) reveals.push(() => tables[name].reveal(selection.pick.index));
+      if (reveal && selection.pick?.kind === kind) {
+        const picked = selection.pick.index; // read now: the reveal runs at the next frame
+        reveals.push(() => tables[name].reveal(picked));
+      }
       else if ((frame || editCell) && (tab === 'winged' || tab === 'half-edge') && (rows['is-highlighted'].length || editCell)) {
         // The walk's (or the edit player's) row is scrolled into view when it moves, not on
         // every mark (a hover, a re-render): a person who scrolled the table keeps the place.
