@@ -210,13 +210,25 @@ test('code that reaches for the page, storage, the network or the prototypes get
   assert.deepEqual(page.problems, []);
 });
 
+test('what the function prints with console.log is shown under the drawing, for the case shown', async () => {
+  const page = await openCode();
+  await typeCode(page, 'function edgesAroundVertex(mesh, v) {\nconsole.log("asked", v, mesh.vertex(v).edge);\nreturn [];\n}');
+  await run(page);
+  // The slide's case fails first (an empty ring): v2 (index 1) stores e6 (index 5).
+  await page.waitForFunction(() => !document.querySelector('#code-logs').hidden);
+  assert.equal(await text(page, '#code-logs'), 'console.log:\nasked 1 5');
+  assert.deepEqual(page.problems, []);
+});
+
 test('a syntax error is named with its line and column, under the editor and in it', async () => {
   const page = await openCode();
   await typeCode(page, 'function edgesAroundVertex(mesh, v) {\nconst x = ;\nreturn [];\n}');
   await run(page);
   const status = await text(page, '#code-status');
   assert.match(status, /^Line 2, column \d+: /, status);
-  await page.waitForSelector('#code-editor .cm-lintRange-error');
+  // The error's place is marked in the editor, on line 2.
+  await page.waitForSelector('#code-editor .cm-error-mark');
+  assert.equal(await page.locator('#code-editor .cm-error-mark').evaluate((el) => el.closest('.cm-line') === el.closest('.cm-content').children[1]), true);
   assert.deepEqual(page.problems, []);
 });
 

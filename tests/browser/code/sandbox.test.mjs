@@ -2,8 +2,8 @@
 // lesson pages' CSP both as the page's meta tag and, on every response, as a header (so the
 // module worker, whose policy comes from its own response, runs under the same one): a
 // correct walk through the worker, an infinite loop stopped by the budget with the loop's
-// line while the page keeps drawing frames, a worker that never answers ended by the
-// watchdog and replaced on the next run, and no CSP violation anywhere.
+// line while the page keeps drawing frames, a worker that never loads its engine ended when
+// the load time is up and replaced on the next run, and no CSP violation anywhere.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
@@ -87,7 +87,9 @@ test('the sandbox runs a walk in its worker, stops an infinite loop at its line 
 
     // A worker that never answers (a module with no message handler): the watchdog ends it
     // after budgetMs + 1.5 s and the next run starts another.
-    const silent = createSandbox({ url: new URL('js/code/runner.js', location.href) });
+    // A worker that never says its engine is loaded (the runner module alone: it answers
+    // nothing): the run ends when the load time is up, and the next run starts a fresh worker.
+    const silent = createSandbox({ url: new URL('js/code/runner.js', location.href), loadMs: 1500 });
     const before = window.__workersStarted;
     const t0 = performance.now();
     const hung = await silent.run({ ...request(CCW_WALK), budgetMs: 200 });
@@ -119,9 +121,10 @@ test('the sandbox runs a walk in its worker, stops an infinite loop at its line 
   assert.deepEqual([out.deep.ok, out.deep.error?.kind, out.deep.error?.line, out.deep.engineFailed], [false, 'runtime', 2, undefined], JSON.stringify(out.deep.error));
   assert.match(out.deep.error.message, /too much recursion/);
 
-  assert.equal(out.hung.error.kind, 'timeout');
-  assert.ok(out.hungMs >= 1600 && out.hungMs < 4000, `the watchdog answered after ${Math.round(out.hungMs)} ms`);
-  assert.equal(out.hungAgain.error.kind, 'timeout');
+  assert.equal(out.hung.error.kind, 'engine');
+  assert.match(out.hung.error.message, /^the sandbox's engine did not load within 1\.5 s/);
+  assert.ok(out.hungMs >= 1400 && out.hungMs < 4000, `the wait ended after ${Math.round(out.hungMs)} ms`);
+  assert.equal(out.hungAgain.error.kind, 'engine');
   assert.equal(out.startedForSilent, 2, 'the run after the watchdog started a fresh worker');
 
   assert.deepEqual(out.violations, []);

@@ -18,10 +18,11 @@ const DEFAULT_BUDGET_MS = 1500;
 const ENGINE_LOAD_MS = 60_000;
 
 /**
- * @param {{ url?: string | URL }} [options] the worker's address (tests; default above)
+ * @param {{ url?: string | URL, loadMs?: number }} [options] the worker's address (tests; default
+ *   above) and how long its engine may take to load (default ENGINE_LOAD_MS)
  * @returns {{ run(request: RunRequest): Promise<SandboxAnswer>, dispose(): void }}
  */
-export function createSandbox({ url } = {}) {
+export function createSandbox({ url, loadMs = ENGINE_LOAD_MS } = {}) {
   const workerUrl = url ?? new URL('../code/sandbox-worker.js', import.meta.url);
   /** @type {Worker | null} */
   let worker = null;
@@ -38,11 +39,11 @@ export function createSandbox({ url } = {}) {
     worker = null;
     ready = null;
   };
-  // Resolves when the worker has loaded its engine, or with why it could not (in
-  // ENGINE_LOAD_MS at most, so a run never waits for ever).
+  // Resolves when the worker has loaded its engine, or with why it could not (in loadMs at
+  // most, so a run never waits for ever).
   /** @param {Worker} w @returns {Promise<true | string>} */
   const readyOf = (w) => new Promise((resolve) => {
-    const give = setTimeout(() => resolve(`the sandbox's engine did not load within ${ENGINE_LOAD_MS / 1000} s: check the connection and run again`), ENGINE_LOAD_MS);
+    const give = setTimeout(() => resolve(`the sandbox's engine did not load within ${loadMs / 1000} s: check the connection and run again`), loadMs);
     /** @param {MessageEvent} event */
     const onReady = (event) => {
       if (event.data?.ready === undefined) return;

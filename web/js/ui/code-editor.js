@@ -1,22 +1,39 @@
 // @ts-check
 // A code editor for a student's JavaScript: CodeMirror 6 (bundled into the page at build
 // time by esbuild, so no CDN and no inline script), with line numbers, JavaScript highlighting, bracket
-// matching, undo, Tab to indent (Escape then Tab leaves the editor, CodeMirror's own
-// convention for keyboard users), an error marked at its line and column, and a line lit
-// while a trace is stepped through.
+// matching, undo, Ctrl+/ to comment, Tab to indent (Escape then Tab leaves the editor, CodeMirror's own
+// convention for keyboard users), an error marked at its line and column, and that line lit.
 // The editor lives in a shadow root: CodeMirror writes its styles as a <style> element into a
 // document, which the page's CSP (style-src 'self') refuses, and as a constructed style sheet
 // into a shadow root, which it allows. Its look (THEME) uses the page's colour variables, which
 // reach into the shadow root.
 // Offers: createCodeEditor({parent, label, doc, onChange, onRun}) (onRun: Ctrl/Cmd+Enter) -> {view, text, setText(text),
 //   showError({line, column, message} | null), markLine(line | null), focus()}.
-import { EditorView, keymap, lineNumbers, highlightActiveLine, highlightActiveLineGutter, drawSelection, Decoration } from '@codemirror/view';
+import { EditorView, keymap, lineNumbers, highlightActiveLine, Decoration } from '@codemirror/view';
 import { EditorState, StateEffect, StateField } from '@codemirror/state';
-import { defaultKeymap, history, historyKeymap, indentWithTab } from '@codemirror/commands';
-import { javascript } from '@codemirror/lang-javascript';
+import { standardKeymap, history, historyKeymap, indentWithTab, toggleComment, indentMore, indentLess } from '@codemirror/commands';
+import { javascriptLanguage } from '@codemirror/lang-javascript';
 import { syntaxHighlighting, HighlightStyle, bracketMatching, indentOnInput } from '@codemirror/language';
 import { tags } from '@lezer/highlight';
-import { setDiagnostics, lintGutter } from '@codemirror/lint';
+
+// The error's place: a wavy mark from its column to the end of its line (a small decoration
+// of our own: CodeMirror's lint package would add 8 KB for one diagnostic at a time).
+/** @type {import('@codemirror/state').StateEffectType<{ from: number, to: number, message: string } | null>} */
+const setErrorMark = StateEffect.define();
+const errorMark = StateField.define({
+  create: () => Decoration.none,
+  update(deco, tr) {
+    let next = deco.map(tr.changes);
+    for (const e of tr.effects) {
+      if (e.is(setErrorMark)) {
+        const at = /** @type {{ from: number, to: number, message: string } | null} */ (e.value);
+        next = !at ? Decoration.none : Decoration.set([Decoration.mark({ class: 'cm-error-mark', attributes: { title: at.message } }).range(at.from, Math.max(at.to, at.from + 1))]);
+      }
+    }
+    return next;
+  },
+  provide: (f) => EditorView.decorations.from(f),
+});
 
 // The line the trace is at: a line decoration, moved by an effect.
 /** @type {import('@codemirror/state').StateEffectType<number | null>} */
@@ -46,7 +63,7 @@ const HIGHLIGHT = HighlightStyle.define([
   { tag: [tags.number, tags.bool, tags.null, tags.atom], color: 'var(--code-number)' },
   { tag: [tags.comment, tags.lineComment, tags.blockComment], color: 'var(--code-comment)', fontStyle: 'italic' },
   { tag: [tags.function(tags.variableName), tags.definition(tags.variableName), tags.definition(tags.propertyName)], color: 'var(--code-definition)' },
-  { tag: tags.invalid, color: 'var(--error-line)' },
+  { tag: tags.invalid, color: 'var(--code-invalid)', textDecoration: 'underline wavy' },
 ]);
 
 const THEME = EditorView.theme({
@@ -57,9 +74,8 @@ const THEME = EditorView.theme({
   '.cm-content': { caretColor: 'var(--ink)' },
   '.cm-gutters': { background: 'var(--bg)', color: 'var(--muted)', borderRight: '1px solid var(--line)' },
   '.cm-activeLine': { background: 'color-mix(in srgb, var(--accent) 8%, transparent)' },
-  '.cm-activeLineGutter': { background: 'color-mix(in srgb, var(--accent) 14%, transparent)' },
   '.cm-trace-line': { background: 'color-mix(in srgb, var(--c4) 28%, transparent)' },
-  '&.cm-focused .cm-selectionBackground, .cm-selectionBackground': { background: 'color-mix(in srgb, var(--accent) 30%, transparent)' },
+  '.cm-error-mark': { textDecoration: 'underline wavy var(--code-invalid)', textDecorationSkipInk: 'none', background: 'color-mix(in srgb, var(--code-invalid) 12%, transparent)' },
 });
 
 /**
@@ -79,10 +95,11 @@ export function createCodeEditor({ parent, label, doc, onChange, onRun }) {
     state: EditorState.create({
       doc,
       extensions: [
-        lineNumbers(), highlightActiveLineGutter(), history(), drawSelection(), indentOnInput(), bracketMatching(),
-        highlightActiveLine(), syntaxHighlighting(HIGHLIGHT), javascript(), lintGutter(),
+        lineNumbers(), history(), indentOnInput(), bracketMatching(),
+        highlightActiveLine(), syntaxHighlighting(HIGHLIGHT), javascriptLanguage, errorMark,
         traceLine, THEME, EditorState.tabSize.of(2),
-        keymap.of([{ key: 'Mod-Enter', run: () => { onRun?.(); return true; } }, ...defaultKeymap, ...historyKeymap, indentWithTab]),
+        keymap.of([{ key: 'Mod-Enter', run: () => { onRun?.(); return true; } }, ...standardKeymap, ...historyKeymap, indentWithTab,
+          { key: 'Mod-/', run: toggleComment }, { key: 'Mod-]', run: indentMore }, { key: 'Mod-[', run: indentLess }]),
         // tabindex 0 on the editable text (already in the tab order): checkers such as axe
         // then see that the scrolling box has keyboard access.
         EditorView.contentAttributes.of({ 'aria-label': label, spellcheck: 'false', autocapitalize: 'off', autocorrect: 'off', tabindex: '0' }),
@@ -109,10 +126,10 @@ export function createCodeEditor({ parent, label, doc, onChange, onRun }) {
     },
     /** @param {{ line: number, column?: number, message: string } | null} error */
     showError(error) {
-      if (!error || !error.line) { view.dispatch(setDiagnostics(view.state, [])); return; }
+      if (!error || !error.line) { view.dispatch({ effects: setErrorMark.of(null) }); return; }
       const from = pos(error.line, error.column);
-      const to = Math.max(from, view.state.doc.lineAt(from).to);
-      view.dispatch(setDiagnostics(view.state, [{ from, to, severity: 'error', message: error.message }]));
+      const to = Math.min(view.state.doc.length, Math.max(from + 1, view.state.doc.lineAt(from).to));
+      view.dispatch({ effects: setErrorMark.of(from < to ? { from, to, message: error.message } : null) });
     },
     /** @param {number | null} line */
     markLine(line) {

@@ -69,9 +69,9 @@ export function gradeRun(task, cases, results, { checkEdit } = {}) {
     if (!r || !r.ok) {
       // No result: the run stopped at an earlier mesh's endless loop (each would take the whole budget).
       const error = r?.error ?? { kind: 'skipped', message: 'not run: the run stopped at the endless loop of an earlier mesh', line: null, column: null };
-      return { index: i, label: c.label, args: c.args, asked: true, ok: false, error, expected: c.expected, reads, writes: r?.writes ?? 0, referenceReads: c.referenceReads, trace, partsAt: 0 };
+      return { index: i, label: c.label, args: c.args, asked: true, ok: false, error, expected: c.expected, reads, writes: r?.writes ?? 0, referenceReads: c.referenceReads, trace, partsAt: 0, logs: r?.logs ?? [] };
     }
-    const base = { index: i, label: c.label, args: c.args, asked: true, value: r.value, expected: c.expected, reads, writes: r.writes ?? 0, referenceReads: c.referenceReads, trace, traceCut: Boolean(r.trace?.cut) };
+    const base = { index: i, label: c.label, args: c.args, asked: true, value: r.value, expected: c.expected, reads, writes: r.writes ?? 0, referenceReads: c.referenceReads, trace, traceCut: Boolean(r.trace?.cut), logs: r.logs ?? [] };
     if (task.answer === 'edit') {
       const check = checkEdit?.(c, r) ?? { correct: false, findings: [{ message: 'the edit could not be checked' }] };
       return { ...base, ok: check.correct, check, partsAt: check.correct ? -1 : 0 };

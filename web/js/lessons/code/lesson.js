@@ -132,7 +132,9 @@ export const codeLesson = {
     const traceLine = h('p', { class: 'trace-line', id: 'trace-line', 'aria-live': 'polite' });
     const readsLine = h('p', { class: 'reads-line', id: 'reads-line' });
     const tablesBox = h('div', { class: 'code-tables', id: 'code-tables' });
-    ctx.controls.replaceChildren(h('div', { class: 'code-under' }, traceLine, readsLine, tablesBox));
+    // What the function printed with console.log on the case shown (the sandbox keeps 200 lines).
+    const logs = h('pre', { class: 'code-logs', id: 'code-logs', hidden: true, 'aria-label': 'What your function printed (console.log)' });
+    ctx.controls.replaceChildren(h('div', { class: 'code-under' }, traceLine, readsLine, logs, tablesBox));
 
     // ------------------------------------------------------------------ actions
     const currentSource = () => view.editor?.text ?? sourceOf(ctx.state);
@@ -204,6 +206,7 @@ export const codeLesson = {
           view.run = { task: task.id, source, cases, grade: null, error: answer.error };
           if (ctx.state.task !== task.id) return;
           view.editor?.showError(answer.error.line ? answer.error : null);
+          view.editor?.markLine(answer.error.line ?? null);
           status.textContent = answer.error.line ? `Line ${answer.error.line}${answer.error.column ? `, column ${answer.error.column}` : ''}: ${answer.error.message}` : answer.error.message;
         } else {
           // An edit is checked by the core's table check against the faces of the core's own
@@ -220,6 +223,7 @@ export const codeLesson = {
           const failed = grade.firstFail;
           const err = failed !== null ? grade.cases[failed].error : null;
           view.editor?.showError(err?.line ? err : null);
+          view.editor?.markLine(err?.line ?? null);
           status.textContent = failed === null ? `All ${grade.asked} meshes passed.` : `${grade.passed} of ${grade.asked} meshes passed; the first that did not is shown.`;
           if (ctx.commit({ ...ctx.state, shown: failed ?? 0, step: 0 }, { history: false })) ctx.fitView();
         }
@@ -239,7 +243,7 @@ export const codeLesson = {
     ctx.keymap.add({ keys: ['End'], label: 'after the last read', group: 'Code', shownWith: codeBody, action: () => stepBy(Infinity) });
     ctx.setPresenter({ next: () => stepBy(1), prev: () => stepBy(-1), reset: () => stepBy(-Infinity) });
 
-    Object.assign(view, { taskSelect, statement, rule, status, caseList, verdict, failure, apiBody, traceLine, readsLine, tablesBox, runNow, stepBy, chooseCase: (i) => { view.focusCase = i; if (ctx.commit({ ...ctx.state, shown: i, step: 0 }, { history: false })) ctx.fitView(); } });
+    Object.assign(view, { taskSelect, statement, rule, status, caseList, verdict, failure, apiBody, traceLine, readsLine, logs, tablesBox, runNow, stepBy, chooseCase: (i) => { view.focusCase = i; if (ctx.commit({ ...ctx.state, shown: i, step: 0 }, { history: false })) ctx.fitView(); } });
     return view;
   },
 
@@ -311,6 +315,9 @@ export const codeLesson = {
       : task.answer === 'edit'
         ? `Your function read ${g.reads} entr${g.reads === 1 ? 'y' : 'ies'}${step ? ` (${readsSoFar} so far)` : ''} and wrote ${g.writes}; the core's ${task.op} writes ${g.referenceReads}. ${g.error ? 'It stopped with an error.' : g.ok ? 'The tables it left are the edited mesh\'s winged edge: applied.' : 'The tables it left were refused: nothing was applied.'}`
         : `Your function read ${g.reads} entr${g.reads === 1 ? 'y' : 'ies'}${step ? ` (${readsSoFar} so far)` : ''}; the lecture's rule reads ${g.referenceReads}. It returned ${g.error ? 'an error' : describeAnswer(task, g.value)}; expected ${describeAnswer(task, shown.case.expected)}.`;
+    const printed = g?.logs ?? [];
+    view.logs.hidden = printed.length === 0;
+    view.logs.textContent = printed.length ? `console.log:\n${printed.join('\n')}` : '';
     // An edit's tables show the entries written up to the step.
     const written = new Map();
     for (const t of trace.slice(0, step)) if (t.op === 'write') written.set(`${t.table}:${t.row}:${t.field}`, t.value);
