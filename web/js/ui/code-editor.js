@@ -16,43 +16,30 @@ import { javascriptLanguage } from '@codemirror/lang-javascript';
 import { syntaxHighlighting, HighlightStyle, bracketMatching, indentOnInput } from '@codemirror/language';
 import { tags } from '@lezer/highlight';
 
-// The error's place: a wavy mark from its column to the end of its line (a small decoration
-// of our own: CodeMirror's lint package would add 8 KB for one diagnostic at a time).
-/** @type {import('@codemirror/state').StateEffectType<{ from: number, to: number, message: string } | null>} */
-const setErrorMark = StateEffect.define();
-const errorMark = StateField.define({
+// A set of decorations that an effect replaces (null: none), mapped through edits meanwhile.
+/** @param {import('@codemirror/state').StateEffectType<any>} effect @param {(value: any, state: EditorState) => import('@codemirror/view').DecorationSet} make */
+const decorationsOf = (effect, make) => StateField.define({
   create: () => Decoration.none,
   update(deco, tr) {
     let next = deco.map(tr.changes);
-    for (const e of tr.effects) {
-      if (e.is(setErrorMark)) {
-        const at = /** @type {{ from: number, to: number, message: string } | null} */ (e.value);
-        next = !at ? Decoration.none : Decoration.set([Decoration.mark({ class: 'cm-error-mark', attributes: { title: at.message } }).range(at.from, Math.max(at.to, at.from + 1))]);
-      }
-    }
+    for (const e of tr.effects) if (e.is(effect)) next = e.value === null ? Decoration.none : make(e.value, tr.state);
     return next;
   },
   provide: (f) => EditorView.decorations.from(f),
 });
 
-// The line the trace is at: a line decoration, moved by an effect.
+// The error's place: a wavy mark from its column to the end of its line (a small decoration
+// of our own: CodeMirror's lint package would add 8 KB for one diagnostic at a time).
+/** @type {import('@codemirror/state').StateEffectType<{ from: number, to: number, message: string } | null>} */
+const setErrorMark = StateEffect.define();
+const errorMark = decorationsOf(setErrorMark, (at) => Decoration.set([
+  Decoration.mark({ class: 'cm-error-mark', attributes: { title: at.message } }).range(at.from, Math.max(at.to, at.from + 1))]));
+
+// The line lit (the error's): a line decoration.
 /** @type {import('@codemirror/state').StateEffectType<number | null>} */
 const setTraceLine = StateEffect.define();
-const traceLine = StateField.define({
-  create: () => Decoration.none,
-  update(deco, tr) {
-    let next = deco.map(tr.changes);
-    for (const e of tr.effects) {
-      if (e.is(setTraceLine)) {
-        const line = /** @type {number | null} */ (e.value);
-        next = line === null || line < 1 || line > tr.state.doc.lines ? Decoration.none
-          : Decoration.set([Decoration.line({ class: 'cm-trace-line' }).range(tr.state.doc.line(line).from)]);
-      }
-    }
-    return next;
-  },
-  provide: (f) => EditorView.decorations.from(f),
-});
+const traceLine = decorationsOf(setTraceLine, (line, state) => (line < 1 || line > state.doc.lines ? Decoration.none
+  : Decoration.set([Decoration.line({ class: 'cm-trace-line' }).range(state.doc.line(line).from)])));
 
 // Highlighting in the page's colours (web/css/code.css sets --code-* for the light and the
 // dark theme, each readable on the editor's background): CodeMirror's default colours are
