@@ -139,7 +139,7 @@ export function makeCases(api, task, seed) {
         }
         return most > 3 ? best[rng.int(best.length)] : faces[rng.int(faces.length)];
       });
-      if (args.includes(null)) made.push({ label, args: null, skipped: `no edge of it can take the ${task.op}`, ...picture(mesh) });
+      if (args.includes(null)) made.push({ label, args: null, skipped: `no edge of it can take the ${task.editName ?? task.op}`, ...picture(mesh) });
       else made.push(caseOf(mesh, task, label, args));
     } finally {
       mesh.dispose();
