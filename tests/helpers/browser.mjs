@@ -124,9 +124,12 @@ export function closingContexts(getBrowser) {
     await Promise.all(contexts.map((context) => context.close()));
   });
   const tracker = {
-    // A fresh context (playwright's options; no defaults added).
+    // A fresh context (playwright's options) without the service worker unless the options
+    // say `serviceWorkers: 'allow'`: the worker's install fetches and hashes the whole site
+    // (about 270 files) in every fresh context, beside the page under test; only the tests of
+    // the offline copy need it.
     async newContext(options = {}) {
-      const context = await getBrowser().newContext(options);
+      const context = await getBrowser().newContext({ serviceWorkers: 'block', ...options });
       open.add(context);
       context.on('close', () => open.delete(context));
       return context;

@@ -5,13 +5,13 @@
 // every operation); the page is asked where things are, never what the answer is.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { openPage, screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
+import { screenshot, useSiteAndBrowser } from '../../helpers/browser.mjs';
 import { clickToPick, edgeMiddle } from '../../helpers/mesh-page.mjs';
 
 const env = useSiteAndBrowser();
 
 async function openLesson(url = `${env.site.url}mesh.html`) {
-  const page = await openPage(env.browser, url);
+  const page = await env.openPage(url);
   await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
   return page;
 }
@@ -153,7 +153,7 @@ test('flipping e3 and flipping it back gives the lecture mesh\'s faces again; a 
 });
 
 test('on a touch screen: tap F2 and poke it, collapse e7 (its rows stay as struck-through gaps), compact, export the edited mesh', async () => {
-  const page = await openPage(env.browser, `${env.site.url}mesh.html`, { hasTouch: true, isMobile: false });
+  const page = await env.openPage(`${env.site.url}mesh.html`, { hasTouch: true, isMobile: false });
   await page.waitForSelector('body[data-ready=true]', { timeout: 15000 });
   // The centroid of F2 = (v2 v4 v3), asked of the page, tapped with a finger.
   const point = await page.evaluate(() => {

@@ -48,7 +48,7 @@ function settledCaches(page, expected) {
 
 // A new browser context whose page at `siteUrl` works and is controlled by the worker.
 async function openControlled(siteUrl) {
-  const context = await contexts.newContext();
+  const context = await contexts.newContext({ serviceWorkers: 'allow' });
   const page = trap(await context.newPage());
   await page.goto(siteUrl);
   await pageWorks(page, 'index.html');
@@ -70,7 +70,7 @@ async function pageWorks(page, file) {
 }
 
 async function offlineRoundTrip(siteUrl, prefixPath) {
-  const context = await contexts.newContext();
+  const context = await contexts.newContext({ serviceWorkers: 'allow' });
   const page = trap(await context.newPage());
   await page.goto(siteUrl);
   await pageWorks(page, 'index.html');
@@ -103,7 +103,7 @@ test('the site works from a sub-path of a static host, online and offline', asyn
   const site = await startSite({ prefix });
   try {
     assert.ok(site.url.endsWith(prefix));
-    const context = await contexts.newContext();
+    const context = await contexts.newContext({ serviceWorkers: 'allow' });
     const page = trap(await context.newPage());
     assert.equal((await fetch(site.origin)).status, 404, 'nothing is served outside the sub-path');
     for (const file of distPages) {
@@ -212,7 +212,7 @@ test('two deployments on one origin keep each other\'s offline copies', async ()
   writeServiceWorkerManifest(course2);
   const site = await startDeployments({ '/course/': course, '/course2/': course2 });
   try {
-    const context = await contexts.newContext();
+    const context = await contexts.newContext({ serviceWorkers: 'allow' });
     const page = trap(await context.newPage());
     for (const prefix of ['/course/', '/course2/']) {
       await page.goto(new URL(prefix, site.origin).href);
@@ -318,7 +318,7 @@ test('install refuses a file whose bytes differ from the manifest, and caches no
   await onDeployment(async (site, root) => {
     // Changed after the manifest was written: the deployment is inconsistent (or tampered).
     fs.appendFileSync(path.join(root, 'css', 'site.css'), '\n.not-in-the-manifest { color: red; }\n');
-    const context = await contexts.newContext();
+    const context = await contexts.newContext({ serviceWorkers: 'allow' });
     const page = trap(await context.newPage());
     await page.addInitScript(() => {
       const register = navigator.serviceWorker.register.bind(navigator.serviceWorker);

@@ -149,6 +149,11 @@ async function dragFirstHandle(page, frame) {
   await settle(frame);
 }
 
+// The shell's own parts of the embed (its parameters, the snippet it copies) run the same
+// code for every lesson: they are checked on these two (a mesh and a curve lesson); what
+// shows the lesson's state runs on every lesson.
+const EMBED_SHELL_LESSONS = new Set(['mesh', 'curves']);
+
 for (const lesson of readyLessons) {
   test(`${lesson.id}: the embed at 800x500 from another origin shows the prepared state fitted; drag, Reset; the saved work untouched`, async () => {
     const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
@@ -245,7 +250,8 @@ for (const lesson of readyLessons) {
     assert.equal(await app.evaluate(() => localStorage.getItem('wingspline:theme')), 'light');
   });
 
-  test(`${lesson.id}: tampered embed parameters give one clear line, and the lesson still opens embedded`, async () => {
+  // The embed's parameters are read by the shell before the lesson sees them: two lessons.
+  if (EMBED_SHELL_LESSONS.has(lesson.id)) test(`${lesson.id}: tampered embed parameters give one clear line, and the lesson still opens embedded`, async () => {
     const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
     const { link, prepared } = await prepare(context, lesson);
     const tampered = `&theme=${encodeURIComponent(payloads.img)}&present=yes&panels=${encodeURIComponent(`no-such-panel,${payloads.script}`)}`;
@@ -267,7 +273,7 @@ for (const lesson of readyLessons) {
 const snippetPattern = /^<iframe src="([^"<>]+)" width="800" height="500" title="([^"<>]+)" loading="lazy" style="border:0"><\/iframe>$/;
 const unescapeAttr = (text) => text.replace(/&quot;/g, '"').replace(/&lt;/g, '<').replace(/&gt;/g, '>').replace(/&amp;/g, '&');
 
-for (const lesson of readyLessons) {
+for (const lesson of readyLessons.filter((l) => EMBED_SHELL_LESSONS.has(l.id))) {
   test(`${lesson.id}: Copy embed code copies an iframe snippet whose src opens the same state (clipboard granted)`, async () => {
     const context = await env.newContext({ viewport: { width: 1280, height: 800 } });
     await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(env.site.url).origin });

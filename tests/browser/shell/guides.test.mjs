@@ -139,7 +139,7 @@ test('on a phone (390 x 844) no guide and not the landing page is wider than the
 test('the guides are in the offline copy: listed in the service worker\'s manifest, and open offline after a visit', async () => {
   const manifest = fs.readFileSync(path.join(repoRoot, 'dist', 'sw-manifest.js'), 'utf8');
   for (const guide of guides) assert.ok(manifest.includes(`"guide/${guide.name}.html"`), `guide/${guide.name}.html is precached`);
-  const context = await env.newContext();
+  const context = await env.newContext({ serviceWorkers: 'allow' });
   const page = await context.newPage();
   await page.goto(env.site.url);
   await page.evaluate(async () => {

@@ -75,9 +75,28 @@ for (const { id, page: file } of lessons.filter((l) => l.ready)) {
     assert.deepEqual(page.problems, []);
   });
 
-  test(`${id}: one finger on a handle drags it, and the page does not scroll`, async () => {
+  test(`${id}: one finger on a handle drags it, and the page does not scroll (on a handle that only selects, it scrolls the page and moves nothing)`, async () => {
     const { page, touch } = await openPhone(id, file);
     const { handles, box, scrollY } = await layout(page);
+    if (!handles.some((hd) => hd.draggable)) {
+      // A lesson whose handles only select (the code lesson's vertices): the finger is the
+      // page's, as away from the handles.
+      const target = handles.find((hd) => hd.x >= box.left + 20 && hd.x <= box.right - 20 && hd.y >= box.top + 60 && hd.y <= box.bottom - 60);
+      assert.ok(target, 'a handle on screen');
+      const maxScroll = await page.evaluate(() => document.documentElement.scrollHeight - innerHeight);
+      const dir = scrollY < maxScroll ? -1 : 1;
+      const before = withoutView(await lessonState(page));
+      await touch('touchStart', [[target.x, target.y]]);
+      for (let k = 1; k <= 8; k += 1) await touch('touchMove', [[target.x, target.y + dir * 20 * k]]);
+      await touch('touchEnd');
+      await frames(page, 4);
+      assert.notEqual(await page.evaluate(() => window.scrollY), scrollY, 'the page scrolled');
+      const after = await page.evaluate((hid) => window.wingspline.handles().find((hd) => hd.id === hid), target.id);
+      assert.deepEqual(after.world, target.world, `${target.label} stayed where it was`);
+      assert.deepEqual(withoutView(await lessonState(page)), before, 'the lesson state is unchanged');
+      assert.deepEqual(page.problems, []);
+      return;
+    }
     // A draggable handle on screen whose nearest other handle is more than 30 px away, so
     // the finger can only mean that one; 50 px of room above or below it inside the canvas
     // (a vertical move: the one the browser would take as a page scroll).
