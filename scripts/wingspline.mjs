@@ -81,9 +81,13 @@ async function grade(args) {
   const { gradeFiles, gradebookCsv, gradebookMarkdown, gradebookTotalsCsv, RESULTS } = await import('../dist/js/exercise/grade.js');
   const { GRADERS } = await import('../dist/js/exercise/graders.js');
   const { LESSON_OBJECTS } = await import('../dist/js/lessons/all.js');
+  // Submitted code (the code kind) runs in the site's QuickJS sandbox, in this process; the
+  // engine is loaded at the first function graded.
+  const { createNodeSandbox } = await import('../dist/js/code/quickjs-node.js');
+  const sandbox = createNodeSandbox();
   const api = await loadWingspline();
   const files = names.map((name) => ({ name, size: fs.statSync(name).size, read: () => fs.readFileSync(name, 'utf8') }));
-  const { rows, exercises, problems } = await gradeFiles({ api, files, lessons: LESSON_OBJECTS, graders: GRADERS });
+  const { rows, exercises, problems } = await gradeFiles({ api, files, lessons: LESSON_OBJECTS, graders: GRADERS, run: (request) => sandbox.run(request) });
   for (const p of problems) process.stderr.write(`wingspline: ${p}\n`);
   if (!exercises.length) fail('no exercise file could be used: give the exercise files (format "wingspline-exercise") first, then the submissions', 1);
 

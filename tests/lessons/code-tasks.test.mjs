@@ -12,102 +12,12 @@ import { TASKS, taskOf } from '../../web/js/lessons/code/tasks.js';
 import { makeCases, lectureCase, sandboxMesh, HIDDEN_KINDS, seeded } from '../../web/js/lessons/code/cases.js';
 import { gradeRun, failureText, partsAt, tablesAfter } from '../../web/js/lessons/code/grading.js';
 import { createNodeSandbox } from '../../web/js/code/quickjs-node.js';
+import { CORRECT } from '../helpers/code-solutions.mjs';
 
 const api = await loadWingspline({ parts: ['mesh', 'exercises'] });
 const sandbox = createNodeSandbox();
 
-// The lecture's rules, as a student would write them.
-const CORRECT = {
-  'edges-around-vertex': `function edgesAroundVertex(mesh, v) {
-  const edges = [];
-  const first = mesh.vertex(v).edge;
-  let e = first;
-  do {
-    edges.push(e);
-    const r = mesh.edge(e);
-    e = r.start === v ? r.startLeft : r.endRight;
-  } while (e !== first);
-  return edges;
-}`,
-  'edges-of-face': `function edgesOfFace(mesh, f) {
-  const edges = [];
-  const first = mesh.face(f).edge;
-  let e = first;
-  do {
-    edges.push(e);
-    const r = mesh.edge(e);
-    e = r.left === f ? r.endLeft : r.startRight;
-  } while (e !== first);
-  return edges;
-}`,
-  'faces-around-vertex': `function facesAroundVertex(mesh, v) {
-  const faces = [];
-  const first = mesh.vertex(v).edge;
-  let e = first;
-  do {
-    const r = mesh.edge(e);
-    const atStart = r.start === v;
-    const f = atStart ? r.left : r.right;
-    if (f !== -1) faces.push(f);
-    e = atStart ? r.startLeft : r.endRight;
-  } while (e !== first);
-  return faces;
-}`,
-  'euler-characteristic': `function eulerCharacteristic(mesh) {
-  let V = 0, E = 0, F = 0;
-  for (let v = 0; v < mesh.vertexCount; v++) if (mesh.vertex(v).edge !== -1) V++;
-  for (let e = 0; e < mesh.edgeCount; e++) if (mesh.edge(e).start !== -1) E++;
-  for (let f = 0; f < mesh.faceCount; f++) if (mesh.face(f).edge !== -1) F++;
-  return V - E + F;
-}`,
-  'half-edges-around-vertex': `function halfEdgesAroundVertex(mesh, v) {
-  const out = [];
-  const first = mesh.vertex(v).halfEdge;
-  let h = first;
-  do {
-    out.push(h);
-    h = mesh.halfEdge(mesh.halfEdge(h).prev).twin;
-  } while (h !== first);
-  return out;
-}`,
-  'half-edges-of-face': `function halfEdgesOfFace(mesh, f) {
-  const out = [];
-  const first = mesh.face(f).halfEdge;
-  let h = first;
-  do {
-    out.push(h);
-    h = mesh.halfEdge(h).next;
-  } while (h !== first);
-  return out;
-}`,
-  // The flip worked out from the winged-edge record (docs/architecture.md, "The lesson Program
-  // the structure"): sides a = S-c and d = E-c in L, b = S-d and c = d-E in R, before.
-  'flip-edge': `function flipEdge(mesh, e) {
-  const r = mesh.edge(e);
-  const S = r.start, E = r.end, L = r.left, R = r.right;
-  const a = r.startLeft, b = r.startRight, c = r.endRight, d = r.endLeft;
-  const other = (x, v) => { const y = mesh.edge(x); return y.start === v ? y.end : y.start; };
-  const cv = other(a, S), dv = other(b, S);
-  const setFace = (x, from, to) => { const y = mesh.edge(x); if (y.left === from) y.left = to; else y.right = to; };
-  const setWing = (x, v, f, value) => {
-    const y = mesh.edge(x);
-    if (y.start === v) { if (y.left === f) y.startLeft = value; else y.startRight = value; }
-    else { if (y.left === f) y.endLeft = value; else y.endRight = value; }
-  };
-  setFace(b, R, L);
-  setFace(d, L, R);
-  setWing(a, S, L, b); setWing(a, cv, L, e);
-  setWing(b, S, L, a); setWing(b, dv, L, e);
-  setWing(c, E, R, d); setWing(c, dv, R, e);
-  setWing(d, E, R, c); setWing(d, cv, R, e);
-  r.start = dv; r.end = cv;
-  r.startLeft = b; r.startRight = c; r.endLeft = a; r.endRight = d;
-  if (mesh.vertex(S).edge === e) mesh.vertex(S).edge = a;
-  if (mesh.vertex(E).edge === e) mesh.vertex(E).edge = c;
-  if (mesh.face(L).edge === d) mesh.face(L).edge = e;
-  if (mesh.face(R).edge === b) mesh.face(R).edge = e;
-}`,
-};
+// The lecture's rules, as a student would write them: tests/helpers/code-solutions.mjs.
 
 // Typical mistakes, and the first case each must fail on (0: the slide's mesh).
 const WRONG = {

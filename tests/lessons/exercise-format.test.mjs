@@ -18,11 +18,12 @@ import { lesson as continuityLesson } from '../../web/js/lessons/continuity/less
 import { lesson as comparisonLesson } from '../../web/js/lessons/comparison/lesson.js';
 import { lesson as surfacesLesson } from '../../web/js/lessons/surfaces/lesson.js';
 import { subdivisionLesson } from '../../web/js/lessons/subdivision/lesson.js';
+import { codeLesson } from '../../web/js/lessons/code/lesson.js';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const dir = path.join(root, 'web', 'exercises');
 const lessonIds = lessons.map((l) => l.id);
-const LESSONS = Object.fromEntries([meshLesson, curvesLesson, continuityLesson, comparisonLesson, surfacesLesson, subdivisionLesson].map((l) => [l.id, l]));
+const LESSONS = Object.fromEntries([meshLesson, curvesLesson, continuityLesson, comparisonLesson, surfacesLesson, subdivisionLesson, codeLesson].map((l) => [l.id, l]));
 const shipped = fs.readdirSync(dir).filter((f) => f.endsWith('.json')).map((f) => ({ file: f, text: fs.readFileSync(path.join(dir, f), 'utf8') }));
 
 test('every shipped exercise reads, with its lesson state, and its id is its file name', () => {

@@ -26,14 +26,18 @@ import { lesson as continuityLesson } from '../../web/js/lessons/continuity/less
 import { lesson as comparisonLesson } from '../../web/js/lessons/comparison/lesson.js';
 import { lesson as surfacesLesson } from '../../web/js/lessons/surfaces/lesson.js';
 import { subdivisionLesson } from '../../web/js/lessons/subdivision/lesson.js';
+import { codeLesson } from '../../web/js/lessons/code/lesson.js';
+import { createNodeSandbox } from '../../web/js/code/quickjs-node.js';
 import { slideRows, SLIDE_VERTEX_EDGES, SLIDE_FACE_EDGES, slideWalk, SLIDE_HALF_EDGES, SLIDE_HALF_EDGE_VERTICES, SLIDE_HALF_EDGE_FACES } from '../helpers/lecture-slide.mjs';
 
 const api = await loadWingspline();
-const LESSONS = Object.fromEntries([meshLesson, curvesLesson, continuityLesson, comparisonLesson, surfacesLesson, subdivisionLesson].map((l) => [l.id, l]));
+const LESSONS = Object.fromEntries([meshLesson, curvesLesson, continuityLesson, comparisonLesson, surfacesLesson, subdivisionLesson, codeLesson].map((l) => [l.id, l]));
+const sandbox = createNodeSandbox();
 const lessonIds = lessons.map((l) => l.id);
 // The grader's registry, and the kinds named here, must agree: a kind the grader cannot grade fails this test.
 const GRADE = GRADERS;
-const WORKED = { table: workedTable, walk: workedWalk, joint: workedJoint, value: workedValue, property: workedProperty, subdivide: workedSubdivide, edit: workedEdit };
+const WORKED = { table: workedTable, walk: workedWalk, joint: workedJoint, value: workedValue, property: workedProperty, subdivide: workedSubdivide, edit: workedEdit,
+  code: ({ check }) => codeLesson.exercise.code.worked(check.task, null) };
 const readText = (id) => fs.readFileSync(new URL(`../../web/exercises/${id}.json`, import.meta.url), 'utf8');
 
 // As the grader opens an exercise: headless, view {}, the model from the lesson's compute.
@@ -41,20 +45,26 @@ function opened(id) {
   const exercise = parseExercise(readText(id), { lessonIds });
   const lesson = LESSONS[exercise.lesson];
   const state = readExerciseState(lesson, exercise);
-  const model = lesson.compute({}, state, { api });
+  // (the code lesson's subject is its state alone, as the grader asks it; its compute needs a page)
+  const model = lesson.id === 'code' ? null : lesson.compute({}, state, { api });
   return { exercise, check: exercise.check, subject: lesson.exercise.subject({}, model, state, { api }) };
 }
 const shippedIds = fs.readdirSync(new URL('../../web/exercises/', import.meta.url)).filter((f) => f.endsWith('.json')).map((f) => f.slice(0, -5));
 
-test('every gallery exercise grades headless: a bad answer shape is a result, never an exception; the worked answer has lines', () => {
+test('every gallery exercise grades headless: a bad answer shape is a result, never an exception; the worked answer has lines', async () => {
   for (const id of shippedIds) {
-    const { check, subject } = opened(id);
-    for (const bad of [undefined, null, 42, 'x'.repeat(500), [], { picks: 'e1' }, { parametric: 'C1' }, { 'edge:0:start': 7 }]) {
-      const r = GRADE[check.kind]({ api, check, subject, answer: bad });
+    const { exercise, check, subject } = opened(id);
+    const support = LESSONS[exercise.lesson].exercise;
+    // The code kind's answer is the state's code (its subject); the others' the answer given.
+    const bads = check.kind === 'code'
+      ? [undefined, null, {}, { code: null }, { code: 'x' }, { code: { task: check.task, sources: 42 } }].map((s) => ({ subject: s, answer: null }))
+      : [undefined, null, 42, 'x'.repeat(500), [], { picks: 'e1' }, { parametric: 'C1' }, { 'edge:0:start': 7 }].map((a) => ({ subject, answer: a }));
+    for (const { subject: asked, answer: bad } of bads) {
+      const r = await GRADE[check.kind]({ api, check, subject: asked, answer: bad, support, run: (request) => sandbox.run(request) });
       assert.equal(typeof r.correct, 'boolean', `${id}: ${JSON.stringify(bad)}`);
       assert.ok(Array.isArray(r.findings), id);
       for (const f of r.findings) assert.equal(typeof f.text, 'string', id);
-      if (check.kind !== 'property') assert.equal(r.correct, false, `${id}: ${JSON.stringify(bad)?.slice(0, 40)}`);
+      if (check.kind !== 'property') assert.equal(r.correct, false, `${id}: ${JSON.stringify(bad ?? asked)?.slice(0, 40)}`);
     }
     const worked = WORKED[check.kind]({ api, check, subject });
     assert.ok(worked.lines.length >= 1 && worked.lines.every((l) => typeof l === 'string'), id);

@@ -3,53 +3,42 @@
 // the failing case read off the page. Expected answers come from the lecture (the slide's
 // winged-edge table, lecture 000) and the statements, not from the page.
 import { test } from 'node:test';
+import fs from 'node:fs';
 import assert from 'node:assert/strict';
 import { useSiteAndBrowser, screenshot, downloadedBytes } from '../../helpers/browser.mjs';
+import { CORRECT, typed } from '../../helpers/code-solutions.mjs';
 
 const env = useSiteAndBrowser();
 
-// The lecture's rules and a typical mistake for each task, written without indentation: the
-// editor indents as it is typed.
+// The lecture's rules (tests/helpers/code-solutions.mjs) and a typical mistake for each task,
+// written without indentation: the editor indents as it is typed.
 const SOLUTIONS = {
   'edges-around-vertex': {
-    right: 'function edgesAroundVertex(mesh, v) {\nconst edges = [];\nconst first = mesh.vertex(v).edge;\nlet e = first;\ndo {\nedges.push(e);\nconst r = mesh.edge(e);\ne = r.start === v ? r.startLeft : r.endRight;\n} while (e !== first);\nreturn edges;\n}',
+    right: typed(CORRECT['edges-around-vertex']),
     wrong: 'function edgesAroundVertex(mesh, v) {\nconst edges = [];\nconst first = mesh.vertex(v).edge;\nlet e = first;\ndo {\nedges.push(e);\nconst r = mesh.edge(e);\ne = r.start === v ? r.startRight : r.endLeft;\n} while (e !== first);\nreturn edges;\n}',
   },
   'edges-of-face': {
-    right: 'function edgesOfFace(mesh, f) {\nconst out = [];\nconst first = mesh.face(f).edge;\nlet e = first;\ndo {\nout.push(e);\nconst r = mesh.edge(e);\ne = r.left === f ? r.endLeft : r.startRight;\n} while (e !== first);\nreturn out;\n}',
+    right: typed(CORRECT['edges-of-face']),
     wrong: 'function edgesOfFace(mesh, f) {\nreturn [mesh.face(f).edge];\n}',
   },
   'faces-around-vertex': {
-    right: 'function facesAroundVertex(mesh, v) {\nconst out = [];\nconst first = mesh.vertex(v).edge;\nlet e = first;\ndo {\nconst r = mesh.edge(e);\nconst s = r.start === v;\nconst f = s ? r.left : r.right;\nif (f !== -1) out.push(f);\ne = s ? r.startLeft : r.endRight;\n} while (e !== first);\nreturn out;\n}',
+    right: typed(CORRECT['faces-around-vertex']),
     wrong: 'function facesAroundVertex(mesh, v) {\nconst out = [];\nconst first = mesh.vertex(v).edge;\nlet e = first;\ndo {\nconst r = mesh.edge(e);\nconst s = r.start === v;\nout.push(s ? r.left : r.right);\ne = s ? r.startLeft : r.endRight;\n} while (e !== first);\nreturn out;\n}',
   },
   'euler-characteristic': {
-    right: 'function eulerCharacteristic(mesh) {\nlet n = 0;\nfor (let v = 0; v < mesh.vertexCount; v++) if (mesh.vertex(v).edge !== -1) n++;\nfor (let e = 0; e < mesh.edgeCount; e++) if (mesh.edge(e).start !== -1) n--;\nfor (let f = 0; f < mesh.faceCount; f++) if (mesh.face(f).edge !== -1) n++;\nreturn n;\n}',
+    right: typed(CORRECT['euler-characteristic']),
     wrong: 'function eulerCharacteristic(mesh) {\nlet n = 0;\nfor (let v = 0; v < mesh.vertexCount; v++) if (mesh.vertex(v).edge) n++;\nfor (let e = 0; e < mesh.edgeCount; e++) if (mesh.edge(e).start !== -1) n--;\nfor (let f = 0; f < mesh.faceCount; f++) if (mesh.face(f).edge !== -1) n++;\nreturn n;\n}',
   },
   'half-edges-around-vertex': {
-    right: 'function halfEdgesAroundVertex(mesh, v) {\nconst out = [];\nconst first = mesh.vertex(v).halfEdge;\nlet h = first;\ndo {\nout.push(h);\nh = mesh.halfEdge(mesh.halfEdge(h).prev).twin;\n} while (h !== first);\nreturn out;\n}',
+    right: typed(CORRECT['half-edges-around-vertex']),
     wrong: 'function halfEdgesAroundVertex(mesh, v) {\nconst out = [];\nconst first = mesh.vertex(v).halfEdge;\nlet h = first;\ndo {\nout.push(h);\nh = mesh.halfEdge(mesh.halfEdge(h).twin).next;\n} while (h !== first);\nreturn out;\n}',
   },
   'half-edges-of-face': {
-    right: 'function halfEdgesOfFace(mesh, f) {\nconst out = [];\nconst first = mesh.face(f).halfEdge;\nlet h = first;\ndo {\nout.push(h);\nh = mesh.halfEdge(h).next;\n} while (h !== first);\nreturn out;\n}',
+    right: typed(CORRECT['half-edges-of-face']),
     wrong: 'function halfEdgesOfFace(mesh, f) {\nconst out = [];\nconst first = mesh.face(f).halfEdge;\nlet h = first;\ndo {\nout.push(h);\nh = mesh.halfEdge(h).prev;\n} while (h !== first);\nreturn out;\n}',
   },
   'flip-edge': {
-    right: ['function flipEdge(mesh, e) {', 'const r = mesh.edge(e);', 'const S = r.start, E = r.end, L = r.left, R = r.right;',
-      'const a = r.startLeft, b = r.startRight, c = r.endRight, d = r.endLeft;',
-      'const other = (x, v) => { const y = mesh.edge(x); return y.start === v ? y.end : y.start; };',
-      'const cv = other(a, S), dv = other(b, S);',
-      'const setFace = (x, from, to) => { const y = mesh.edge(x); if (y.left === from) y.left = to; else y.right = to; };',
-      'const setWing = (x, v, f, value) => {', 'const y = mesh.edge(x);',
-      'if (y.start === v) { if (y.left === f) y.startLeft = value; else y.startRight = value; }',
-      'else { if (y.left === f) y.endLeft = value; else y.endRight = value; }', '};',
-      'setFace(b, R, L);', 'setFace(d, L, R);',
-      'setWing(a, S, L, b); setWing(a, cv, L, e);', 'setWing(b, S, L, a); setWing(b, dv, L, e);',
-      'setWing(c, E, R, d); setWing(c, dv, R, e);', 'setWing(d, E, R, c); setWing(d, cv, R, e);',
-      'r.start = dv; r.end = cv;', 'r.startLeft = b; r.startRight = c; r.endLeft = a; r.endRight = d;',
-      'if (mesh.vertex(S).edge === e) mesh.vertex(S).edge = a;', 'if (mesh.vertex(E).edge === e) mesh.vertex(E).edge = c;',
-      'if (mesh.face(L).edge === d) mesh.face(L).edge = e;', 'if (mesh.face(R).edge === b) mesh.face(R).edge = e;', '}'].join('\n'),
+    right: typed(CORRECT['flip-edge']),
     // Only e's own row: the sides around it still point at the old e.
     wrong: 'function flipEdge(mesh, e) {\nconst r = mesh.edge(e);\nconst a = r.startLeft, b = r.startRight;\nconst other = (x, v) => { const y = mesh.edge(x); return y.start === v ? y.end : y.start; };\nconst S = r.start;\nconst cv = other(a, S), dv = other(b, S);\nr.start = dv;\nr.end = cv;\n}',
   },
@@ -237,7 +226,7 @@ test('the code is kept: reload, a share link in a fresh tab, the .js export and 
   const source = SOLUTIONS['edges-of-face'].right;
   await page.selectOption('#code-task', 'edges-of-face');
   await typeCode(page, source);
-  await page.waitForFunction(() => /return out/.test(window.wingspline.state.code['edges-of-face'] ?? ''));
+  await page.waitForFunction(() => /return edges/.test(window.wingspline.state.code['edges-of-face'] ?? ''));
   const kept = await page.evaluate(() => window.wingspline.state.code['edges-of-face']);
   await page.reload();
   await page.waitForSelector('#code-editor[data-ready=true]', { timeout: 20000 });
@@ -263,4 +252,63 @@ test('the code is kept: reload, a share link in a fresh tab, the .js export and 
   await page.waitForFunction(() => /r\.endLeft/.test(document.querySelector('.code-editor-host').shadowRoot.querySelector('.cm-content').innerText));
   assert.deepEqual(page.problems, []);
   assert.deepEqual(other.problems, []);
+});
+
+test('the code exercise from the gallery: a wrong walk is named on the slide\'s mesh without the core\'s answer; the right one solves it; the hand-in carries the code and the grader, running it in Node, agrees', async () => {
+  const context = await env.newContext({ viewport: { width: 1280, height: 800 }, acceptDownloads: true });
+  const page = await context.newPage();
+  page.problems = [];
+  page.on('pageerror', (err) => page.problems.push(err.message));
+  await page.goto(`${env.site.url}exercises.html`);
+  await page.waitForSelector('body[data-ready="true"]');
+  await page.locator('[data-exercise="code-edges-around-vertex"] a').click();
+  await page.waitForSelector('#exercise-panel');
+  await page.waitForSelector('#code-editor[data-ready=true]', { timeout: 20000 });
+  assert.equal(await page.evaluate(() => window.wingspline.state.task), 'edges-around-vertex');
+  // The starter is in the editor, nobody's solution.
+  assert.match(await page.textContent('#code-editor .cm-content'), /Walk counter-clockwise around v/);
+
+  const check = async () => {
+    await page.locator('#exercise-check').click();
+    await page.waitForFunction(() => ['right', 'wrong', 'partial'].includes(document.querySelector('#exercise-feedback')?.dataset.result ?? ''), null, { timeout: 20000 });
+    return page.locator('#exercise-feedback').innerText();
+  };
+  await typeCode(page, SOLUTIONS['edges-around-vertex'].wrong);
+  const wrong = await check();
+  // The slide's v2: the clockwise walk from e6 meets e2 second (lecture 000: e6 e5 e3 e2 CCW).
+  assert.match(wrong, /On the slide's mesh \(lecture 000\), v2: your function returned \[e6 e2 e3 e5\]\. It parts from the core's answer at entry 2\./);
+  assert.doesNotMatch(wrong, /e6 e5 e3 e2/, 'the core\'s answer is not shown at level hint before the hints');
+  assert.equal(await page.locator('#exercise-feedback').getAttribute('data-result'), 'wrong');
+  // The lesson's own results show the same run.
+  assert.match(await page.textContent('#code-verdict'), /✗ \d of \d meshes passed/);
+  await typeCode(page, SOLUTIONS['edges-around-vertex'].right);
+  assert.match(await check(), /Right\. All \d+ meshes passed\./);
+  assert.equal(await page.locator('#exercise-status').getAttribute('data-status'), 'solved');
+
+  // Reload: the code and the progress are kept with the exercise.
+  await page.evaluate(() => window.wingspline.flush());
+  await page.reload();
+  await page.waitForSelector('#exercise-panel');
+  assert.equal(await page.locator('#exercise-status').getAttribute('data-status'), 'solved');
+  assert.match(await page.evaluate(() => window.wingspline.state.code['edges-around-vertex']), /r\.startLeft/);
+
+  // Handed in, and graded by the grader in Node from the file.
+  await page.goto(`${env.site.url}exercises.html`);
+  await page.waitForSelector('body[data-ready="true"]');
+  await page.locator('#hand-in-name').fill('Grace');
+  const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#hand-in-export').click()]);
+  const submission = (await downloadedBytes(download)).toString('utf8');
+  const { gradeFiles, RESULTS } = await import('../../../web/js/exercise/grade.js');
+  const { GRADERS } = await import('../../../web/js/exercise/graders.js');
+  const { LESSON_OBJECTS } = await import('../../../web/js/lessons/all.js');
+  const { createNodeSandbox } = await import('../../../web/js/code/quickjs-node.js');
+  const { loadWingspline } = await import('../../../dist/js/core/wingspline.js');
+  const sandbox = createNodeSandbox();
+  const exercise = fs.readFileSync(new URL('../../../web/exercises/code-edges-around-vertex.json', import.meta.url), 'utf8');
+  const { rows } = await gradeFiles({
+    api: await loadWingspline(), lessons: LESSON_OBJECTS, graders: GRADERS, run: (request) => sandbox.run(request),
+    files: [{ name: 'ex.json', size: exercise.length, read: () => exercise }, { name: 'grace.json', size: submission.length, read: () => submission }],
+  });
+  assert.deepEqual(rows.map((r) => [r.student, r.result]), [['Grace', RESULTS.right]]);
+  assert.deepEqual(page.problems, []);
 });

@@ -193,14 +193,24 @@
  * marks the new point a subdivide exercise asks about; `suggest`: the authoring dialog's
  * starting check, hidden panels and question for a kind, from the view shown (and, where the
  * exercise starts from another drawing, its state: an edit's question starts before the edit).
+ * `code`: the code lesson's tasks for the code kind: `check` runs the page's Run (resolving to
+ * the run, null when none was made), `result` and `worked` read a run as a check result and
+ * a worked answer, `grade` runs a submitted state's code with the grader's sandbox `run`.
  * @typedef {{
  *   kinds: string[],
- *   subject(view: View, model: Model, state: State, ctx: Ctx): { mesh?: any, loaded?: any, edits?: any[], curve?: any, curves?: Object<string, any>, joints?: Array<{ a: any, b: any }>, patch?: any, subdivision?: any },
+ *   subject(view: View, model: Model, state: State, ctx: Ctx): { mesh?: any, loaded?: any, edits?: any[], curve?: any, curves?: Object<string, any>, joints?: Array<{ a: any, b: any }>, patch?: any, subdivision?: any, code?: { task: string, sources: Object<string, string> } },
  *   keepsState?: string[],
  *   usesModel?: boolean,
  *   showWalk?: (ctx: Ctx, around: string, element: number) => void,
  *   markSubdividePoint?: (ctx: Ctx, painter: Painter, colors: any, asked: { corners: number[], type: string, label: string }) => void,
  *   suggest?: (kind: string, state: State, asked: { api: any, subject: any }) => { check: any, hide: string[], question: string, state?: State },
+ *   code?: {
+ *     tasks: Array<{ id: string, title: string, entry: string, params: string[] }>,
+ *     check(view: View, task: string): Promise<any>,
+ *     result(task: string, ran: any): any,
+ *     worked(task: string, ran: any): { lines: string[] },
+ *     grade(parts: { api: any, task: string, subject: any, run: (request: any) => Promise<any> }): Promise<any>,
+ *   },
  * }} ExerciseSupport
  */
 

@@ -25,6 +25,7 @@ function fieldsOf(kind, subject) {
       { name: 'given', label: 'Columns given (comma-separated: start, end, left, …; empty for none)', type: 'list' }];
   }
   if (kind === 'edit') return []; // the operation is the lesson's last edit (its suggestion)
+  if (kind === 'code') return []; // the task is the one shown (its suggestion)
   if (kind === 'walk') {
     return [pick('around', 'Walk', { vertex: 'around a vertex', face: 'along a face' }), num('element', 'Vertex or face number (1-based)', { min: 1, step: 1 }),
       pick('structure', 'Structure walked', WALK_STRUCTURES)];
@@ -123,7 +124,7 @@ export async function openAuthorDialog({ ctx, lesson, view, message }) {
 
   // The check as typed (empty numbers left out; a quantity's unused fields left out).
   function checkOf(kind) {
-    if (kind === 'edit') return { ...suggested?.check, kind };
+    if (kind === 'edit' || kind === 'code') return { ...suggested?.check, kind };
     const check = { kind };
     const property = {};
     for (const [name, input] of inputs) {
@@ -159,7 +160,7 @@ export async function openAuthorDialog({ ctx, lesson, view, message }) {
     const read = parseExercise(stringifyExact(exercise), { lessonIds });
     readExerciseState(lesson, read);
     const asked = suggested?.state ? support.subject(view, ctx.model, suggested.state, ctx) : subject;
-    CREATE[kind]({ api, check: read.check, subject: () => asked, support, ctx });
+    CREATE[kind]({ api, check: read.check, subject: () => asked, support, ctx, view: () => view });
     return read;
   }
 

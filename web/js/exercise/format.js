@@ -68,6 +68,7 @@ export const KINDS = Object.freeze({
   property: { label: 'Move control points until a property holds' },
   subdivide: { label: 'One subdivision step by hand' },
   edit: { label: 'Write the rows an edit rewrites' },
+  code: { label: 'Write the code' },
 });
 
 // What a check tells the student (the author chooses; docs/exercises.md, "Feedback levels"):
@@ -118,6 +119,8 @@ const CHECKS = {
     point: object({ type: oneOf('vertex', 'edge', 'face'), element: ordinal }), steps: integer({ min: 1, max: 4 }),
   }, ['point', 'steps']],
   edit: [{ kind: oneOf('edit'), op: (v, path) => readEditOperation(v, path), structure: oneOf('winged-edge', 'half-edge') }, ['structure']],
+  // The task is one of the code lesson's (its tasks.js ids); the lesson names an unknown one.
+  code: [{ kind: oneOf('code'), task: text({ maxLength: 64 }) }, []],
 };
 
 // Kind subdivide: a mask question names its new point (and no steps: it is about one step);

@@ -92,11 +92,12 @@ async function sortFiles(files) {
 }
 
 /**
- * Grades submission files against exercise files.
- * @param {{ api: any, files: GradeFile[], lessons: Record<string, any>, graders: Record<string, Function> }} parts
+ * Grades submission files against exercise files. `run`: the code sandbox's (web/js/code/
+ * quickjs-node.js under Node), for the code kind's submitted functions.
+ * @param {{ api: any, files: GradeFile[], lessons: Record<string, any>, graders: Record<string, Function>, run?: (request: any) => Promise<any> }} parts
  * @returns {Promise<{ rows: any[], exercises: any[], problems: string[] }>}
  */
-export async function gradeFiles({ api, files, lessons, graders }) {
+export async function gradeFiles({ api, files, lessons, graders, run }) {
   const sorted = await sortFiles(files);
   const lessonIds = Object.keys(lessons);
   const problems = [];
@@ -118,11 +119,11 @@ export async function gradeFiles({ api, files, lessons, graders }) {
     }
   }
   const rows = [];
-  for (const file of sorted.submissions) rows.push(...await gradeSubmission({ api, file, exercises, lessons, graders }));
+  for (const file of sorted.submissions) rows.push(...await gradeSubmission({ api, file, exercises, lessons, graders, run }));
   return { rows, exercises, problems };
 }
 
-async function gradeSubmission({ api, file, exercises, lessons, graders }) {
+async function gradeSubmission({ api, file, exercises, lessons, graders, run }) {
   const fileRow = (result, reason) => row({ file: file.name, result, reason });
   if (file.unreadable !== undefined) return [fileRow(RESULTS.damaged, `the file cannot be read from the disk: ${file.unreadable}`)];
   if (file.exercise) {
@@ -167,7 +168,7 @@ async function gradeSubmission({ api, file, exercises, lessons, graders }) {
       continue;
     }
     if (byId) entryNotes.push('the file does not say which version of the exercise was answered (saved before submissions carried it); graded against your copy');
-    const graded = gradeEntry({ api, x, entry, lessons, graders });
+    const graded = await gradeEntry({ api, x, entry, lessons, graders, run });
     if (graded.result === RESULTS.wrong && entry.status === 'solved') entryNotes.push('the file says solved; the check says not');
     out.push(row({ ...base, ...facts, ...graded, note: entryNotes.join('; ') }));
   }
@@ -176,7 +177,7 @@ async function gradeSubmission({ api, file, exercises, lessons, graders }) {
 
 // One answer checked again: the subject from the lecturer's exercise (or, for the kinds whose
 // drawing is the answer, from the drawing in the file, read through the lesson's schema).
-function gradeEntry({ api, x, entry, lessons, graders }) {
+async function gradeEntry({ api, x, entry, lessons, graders, run }) {
   const { exercise } = x;
   const lesson = lessons[exercise.lesson];
   const kind = exercise.check.kind;
@@ -202,7 +203,7 @@ function gradeEntry({ api, x, entry, lessons, graders }) {
     }
     const model = support.usesModel ? lesson.compute({}, state, { api }) : null;
     const subject = support.subject({}, model, state, { api });
-    const r = grade({ api, check: exercise.check, subject, answer: entry.answer ?? null });
+    const r = await grade({ api, check: exercise.check, subject, answer: entry.answer ?? null, support, run });
     if (r.correct) return { result: RESULTS.right, score: 1 };
     const findings = (r.findings ?? []).map((f) => (typeof f === 'string' ? f : f.text));
     const reason = findings.slice(0, MAX_FINDINGS).join(' | ') + (findings.length > MAX_FINDINGS ? ` | … and ${findings.length - MAX_FINDINGS} more` : '');

@@ -10,8 +10,11 @@ import { gradeValue } from './kinds/value.js';
 import { gradeProperty } from './kinds/property.js';
 import { gradeSubdivide } from './kinds/subdivide.js';
 import { gradeEdit } from './kinds/edit.js';
+import { gradeCode } from './kinds/code.js';
 
-/** @type {Readonly<Record<string, (parts: { api: any, check: any, subject: any, answer: any }) => { correct: boolean, partial?: boolean, incomplete?: boolean, findings: Array<{ text: string, hint?: string } | string>, note?: string }>>} */
+// A grade function may return a promise (code: the function runs in the sandbox, `run`);
+// `support` is the lesson's exercise support.
+/** @type {Readonly<Record<string, (parts: { api: any, check: any, subject: any, answer: any, support?: any, run?: (request: any) => Promise<any> }) => GradeResult | Promise<GradeResult>>>} */
 export const GRADERS = Object.freeze({
   table: gradeTable,
   walk: gradeWalk,
@@ -20,4 +23,7 @@ export const GRADERS = Object.freeze({
   property: gradeProperty,
   subdivide: gradeSubdivide,
   edit: gradeEdit,
+  code: gradeCode,
 });
+
+/** @typedef {{ correct: boolean, partial?: boolean, incomplete?: boolean, findings: Array<{ text: string, hint?: string } | string>, note?: string }} GradeResult */

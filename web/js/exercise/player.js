@@ -16,6 +16,7 @@ import { createValueKind } from './kinds/value.js';
 import { createPropertyKind } from './kinds/property.js';
 import { createEditKind } from './kinds/edit.js';
 import { createSubdivideKind } from './kinds/subdivide.js';
+import { createCodeKind } from './kinds/code.js';
 
 // What this exercise's feedback will and will not tell, in one line (the author's level).
 export function levelSentence({ level, hintAfter }) {
@@ -29,7 +30,7 @@ export function levelSentence({ level, hintAfter }) {
 const plain = (key, value) => (ArrayBuffer.isView(value) ? Array.from(/** @type {any} */ (value)) : value);
 
 export const CREATE = { table: createTableKind, walk: createWalkKind, joint: createJointKind, value: createValueKind, property: createPropertyKind, subdivide: createSubdivideKind,
-  edit: createEditKind };
+  edit: createEditKind, code: createCodeKind };
 
 /**
  * The lesson state of an exercise, read like a share link's (migrated, validated); a field
@@ -63,7 +64,8 @@ export function mountExercise({ api, ctx, lesson, view, exercise, key, hash = nu
   // taken once, as the exercise opens; only "move points until it holds" asks the drawing as
   // it is now. If the drawing is changed meanwhile, the panel says so and offers it back.
   const live = () => support.subject(view(), ctx.model, ctx.state, ctx);
-  const asksNow = check.kind === 'property';
+  // (code: the answer is the code in the state, typed after the exercise opened)
+  const asksNow = check.kind === 'property' || check.kind === 'code';
   const keepsState = Boolean(support.keepsState?.includes(check.kind));
   const asOpened = asksNow ? null : live();
   const subject = asksNow ? live : () => asOpened;
@@ -81,7 +83,7 @@ export function mountExercise({ api, ctx, lesson, view, exercise, key, hash = nu
   let leaving = false; // Start again: the page reloads, nothing more is saved
   let saveTimer = 0;
 
-  const kind = CREATE[check.kind]({ api, check, subject, support, ctx });
+  const kind = CREATE[check.kind]({ api, check, subject, support, ctx, view });
   if (loaded.progress) kind.restore(progress.answer);
 
   const checkButton = h('button', { type: 'button', class: 'primary', id: 'exercise-check', onclick: () => runCheck() }, 'Check');
@@ -138,14 +140,31 @@ export function mountExercise({ api, ctx, lesson, view, exercise, key, hash = nu
       unsaved ? ' · this browser does not keep progress (its storage is full or disabled): your answer stays on this page until you leave it' : ' · kept in this browser');
   }
 
+  // A kind's check is a result, or a promise of one (code: the function runs in the sandbox);
+  // Check is disabled while it runs.
   function runCheck() {
     let result;
     try {
       result = kind.check();
     } catch (err) {
-      setChildren(feedback, h('p', { class: 'exercise-wrong' }, `This answer could not be checked: ${err.message}`));
-      return null;
+      return cannotCheck(err);
     }
+    if (result && typeof result.then === 'function') {
+      checkButton.disabled = true;
+      feedback.dataset.result = 'running';
+      setChildren(feedback, h('p', {}, 'Checking…'));
+      return result.then(showResult, cannotCheck).finally(() => { checkButton.disabled = false; });
+    }
+    return showResult(result);
+  }
+
+  function cannotCheck(err) {
+    delete feedback.dataset.result;
+    setChildren(feedback, h('p', { class: 'exercise-wrong' }, `This answer could not be checked: ${err?.message ?? err}`));
+    return null;
+  }
+
+  function showResult(result) {
     // A wrong check: something named wrong (a walk's wrong pick after right steps too).
     const wrong = !result.correct && !result.incomplete && result.findings.length > 0;
     if (!result.incomplete) {

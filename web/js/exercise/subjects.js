@@ -8,6 +8,8 @@
 //   { mesh, loaded, edits }  the mesh lesson: `mesh` the mesh as drawn after the edits (its
 //               numbering included), `loaded` the mesh as loaded and `edits` the lesson
 //               state's operations, which the edit kind's check replays in the core
+//   { code }    the code lesson: { task, sources } the task shown and the student's code per
+//               task (kind code runs the task's code, the starter where there is none)
 // Only data is arranged here; every value is the core's.
 import { ExerciseError, MAX_EXERCISE_ELEMENTS } from './format.js';
 

@@ -16,13 +16,13 @@ import { createSandbox } from '../../code/sandbox.js';
 import { loadWingspline } from '../../core/wingspline.js';
 import { elementLabel } from '../../core/element-labels.js';
 import { TASKS, TASK_IDS, taskOf, API_REFERENCE } from './tasks.js';
-import { makeCases, lectureCase, sandboxMesh, HIDDEN_KINDS } from './cases.js';
-import { gradeRun, failureText, describeAnswer, countsAsRead, tablesAfter } from './grading.js';
+import { lectureCase, HIDDEN_KINDS } from './cases.js';
+import { failureText, describeAnswer, countsAsRead } from './grading.js';
+import { runTask, resultOfRun, workedLines } from './check.js';
 import { projectCase, drawCase } from './draw.js';
 
 // The longest program a state keeps per task (a share link carries the state: docs/code-lesson.md).
 export const MAX_CODE_CHARS = 20000;
-const BUDGET_MS = 1500; // per case: an endless loop stops after this (web/js/code/runner.js)
 const COMMIT_AFTER_MS = 400; // typing is committed to the state this long after the last key
 
 const codeSchema = object(Object.fromEntries(TASK_IDS.map((id) => [id, text({ maxLength: MAX_CODE_CHARS })])), { optional: TASK_IDS });
@@ -67,6 +67,36 @@ export const codeLesson = {
   },
   defaultState,
   summarize: (state) => `${taskOf(state.task).title}${state.code[state.task] ? ', your code' : ', the starter'}`,
+
+  // A code exercise (exercise/kinds/code.js): write one task's function; the code in the
+  // state is the answer, checked as Run checks it (check.js), on the page and by the grader.
+  exercise: {
+    kinds: ['code'],
+    keepsState: ['code'],
+    subject: (view, model, state) => ({ code: { task: state.task, sources: state.code } }),
+    // The exercise starts from the starter: the code in the author's editor (a solution,
+    // perhaps) is not handed out.
+    suggest: (kind, state) => {
+      const task = taskOf(state.task);
+      return { check: { kind: 'code', task: task.id }, hide: [], question: `Write ${task.entry} in the editor. ${task.statement[0]}`, state: { ...state, code: {}, shown: 0, step: 0 } };
+    },
+    code: {
+      tasks: TASKS.map(({ id, title, entry, params }) => ({ id, title, entry, params })),
+      // The page: the lesson's own Run (its results, trace and Step stay on the page).
+      check: (view) => view.runNow(),
+      result: (id, ran) => resultOfRun(taskOf(id), ran),
+      worked: (id, ran) => workedLines(taskOf(id), ran),
+      // The grader: the code the submission's state holds for the task (the starter when it
+      // holds none), on hidden meshes from a seed of this grading.
+      grade: async ({ api, task: id, subject, run }) => {
+        const task = taskOf(id);
+        const written = subject.code.sources?.[id];
+        const source = typeof written === 'string' ? written : task.starter;
+        const seed = globalThis.crypto.getRandomValues(new Uint32Array(1))[0];
+        return resultOfRun(task, await runTask({ api, checker: () => api, task, source, seed, run }));
+      },
+    },
+  },
 
   setup(ctx) {
     const view = {
@@ -177,10 +207,12 @@ export const codeLesson = {
       const step = Math.max(0, Math.min(n, ctx.state.step + delta));
       ctx.commit({ ...ctx.state, step }, { history: false });
     }
+    // Resolves to the run (check.js runTask's {cases, grade, error}), or null when none was
+    // made (a run already going, code too long to keep).
     async function runNow() {
-      if (view.running) return;
+      if (view.running) return null;
       const source = currentSource();
-      if (!commitCode(source) && sourceOf(ctx.state) !== source) return;
+      if (!commitCode(source) && sourceOf(ctx.state) !== source) return null;
       const task = taskOf(ctx.state.task);
       view.running = true;
       runButton.disabled = true;
@@ -188,38 +220,26 @@ export const codeLesson = {
       status.textContent = 'Running on the slide\'s mesh and the hidden meshes…';
       try {
         const seed = crypto.getRandomValues(new Uint32Array(1))[0];
-        const cases = makeCases(ctx.api, task, seed);
         view.sandbox ??= createSandbox();
-        // One mesh at a time, the slide's first: an endless loop stops the run at the mesh it
-        // was found on (each would take the whole budget), and the status counts the meshes.
-        /** @type {{ results: any[], error?: any }} */
-        const answer = { results: [] };
-        const asked = cases.filter((c) => c.args);
-        for (const c of asked) {
-          status.textContent = `Running on mesh ${answer.results.length + 1} of ${asked.length}…`;
-          const one = await view.sandbox.run({ source, entry: task.entry, writable: task.writable === true, budgetMs: BUDGET_MS, cases: [{ args: c.args, mesh: sandboxMesh(task, c) }] });
-          if (one.error) { answer.error = one.error; break; }
-          answer.results.push(one.results[0]);
-          if (one.results[0]?.error?.kind === 'timeout') break;
-        }
+        const sandbox = view.sandbox;
+        const answer = await runTask({
+          api: ctx.api, task, source, seed,
+          checker: () => loadWingspline({ parts: [...codeLesson.core, 'exercises'] }),
+          run: (request) => sandbox.run(request),
+          onMesh: (k, of) => { status.textContent = `Running on mesh ${k} of ${of}…`; },
+        });
+        const { cases } = answer;
         if (answer.error) {
           view.run = { task: task.id, source, cases, grade: null, error: answer.error };
-          if (ctx.state.task !== task.id) return;
+          if (ctx.state.task !== task.id) return answer;
           view.editor?.showError(answer.error.line ? answer.error : null);
           view.editor?.markLine(answer.error.line ?? null);
           status.textContent = answer.error.line ? `Line ${answer.error.line}${answer.error.column ? `, column ${answer.error.column}` : ''}: ${answer.error.message}` : answer.error.message;
         } else {
-          // An edit is checked by the core's table check against the faces of the core's own
-          // edit of the same mesh (any consistent choice of stored edges is right); the
-          // exercise checkers are a part of the core of their own, fetched the first time.
-          const checker = task.answer === 'edit' ? await loadWingspline({ parts: [...codeLesson.core, 'exercises'] }) : null;
-          const checkEdit = (c, r) => checker.checkMeshTableAnswer(
-            { faceOffsets: c.expected.faceOffsets, faceVertices: c.expected.faceVertices, vertexCount: c.expected.vertexCount },
-            'winged-edge', tablesAfter(c.snapshot, r.transaction));
-          const grade = gradeRun(task, cases, answer.results, { checkEdit });
+          const { grade } = answer;
           view.run = { task: task.id, source, cases, grade, error: null };
           // Switched to another task meanwhile: the results wait for it, the page stays put.
-          if (ctx.state.task !== task.id) return;
+          if (ctx.state.task !== task.id) return answer;
           const failed = grade.firstFail;
           const err = failed !== null ? grade.cases[failed].error : null;
           view.editor?.showError(err?.line ? err : null);
@@ -227,8 +247,10 @@ export const codeLesson = {
           status.textContent = failed === null ? `All ${grade.asked} meshes passed.` : `${grade.passed} of ${grade.asked} meshes passed; the first that did not is shown.`;
           if (ctx.commit({ ...ctx.state, shown: failed ?? 0, step: 0 }, { history: false })) ctx.fitView();
         }
+        return answer;
       } catch (err) {
         status.textContent = `The run could not finish: ${err?.message ?? err}`;
+        return { cases: [], grade: null, error: { kind: 'host', message: `The run could not finish: ${err?.message ?? err}`, line: null, column: null } };
       } finally {
         view.running = false;
         runButton.disabled = false;
@@ -243,7 +265,7 @@ export const codeLesson = {
     ctx.keymap.add({ keys: ['End'], label: 'after the last read', group: 'Code', shownWith: codeBody, action: () => stepBy(Infinity) });
     ctx.setPresenter({ next: () => stepBy(1), prev: () => stepBy(-1), reset: () => stepBy(-Infinity) });
 
-    Object.assign(view, { taskSelect, statement, rule, status, caseList, verdict, failure, apiBody, traceLine, readsLine, logs, tablesBox, runNow, stepBy, chooseCase: (i) => { view.focusCase = i; if (ctx.commit({ ...ctx.state, shown: i, step: 0 }, { history: false })) ctx.fitView(); } });
+    Object.assign(view, { taskSelect, statement, rule, status, caseList, verdict, failure, apiBody, traceLine, readsLine, logs, tablesBox, runNow, stepBy, focusEditor: () => view.editor?.focus(), chooseCase: (i) => { view.focusCase = i; if (ctx.commit({ ...ctx.state, shown: i, step: 0 }, { history: false })) ctx.fitView(); } });
     return view;
   },
 
