@@ -91,6 +91,71 @@ export const CORRECT = {
   if (mesh.face(L).edge === d) mesh.face(L).edge = e;
   if (mesh.face(R).edge === b) mesh.face(R).edge = e;
 }`,
+  // The split from the record: n takes e's place at E; a = the edge after e in L (e's E:L),
+  // b = the edge before e in R (e's E:R) meet n instead of e there.
+  'split-edge': `function splitEdge(mesh, e) {
+  const r = mesh.edge(e);
+  const S = r.start, E = r.end, L = r.left, R = r.right;
+  const [sx, sy, sz] = mesh.vertex(S).position, [ex, ey, ez] = mesh.vertex(E).position;
+  const m = mesh.addVertex([(sx + ex) / 2, (sy + ey) / 2, (sz + ez) / 2]);
+  const n = mesh.addEdge();
+  const a = r.endLeft, b = r.endRight;
+  const setWing = (x, v, f, value) => {
+    const y = mesh.edge(x);
+    if (y.start === v) { if (y.left === f) y.startLeft = value; else y.startRight = value; }
+    else { if (y.left === f) y.endLeft = value; else y.endRight = value; }
+  };
+  const rn = mesh.edge(n);
+  rn.start = m; rn.end = E; rn.left = L; rn.right = R;
+  rn.startLeft = e; rn.startRight = e; rn.endLeft = a; rn.endRight = b;
+  setWing(a, E, L, n);
+  setWing(b, E, R, n);
+  r.end = m; r.endLeft = n; r.endRight = n;
+  mesh.vertex(m).edge = n;
+  if (mesh.vertex(E).edge === e) mesh.vertex(E).edge = n;
+}`,
+  // Loop's edge point: c and d are the other ends of the wings at S (startLeft in L,
+  // startRight in R); the boundary's edge point is the midpoint.
+  'loop-edge-point': `function loopEdgePoint(mesh, e) {
+  const r = mesh.edge(e);
+  const S = mesh.vertex(r.start).position, E = mesh.vertex(r.end).position;
+  if (r.left === -1 || r.right === -1) return [0, 1, 2].map((k) => (S[k] + E[k]) / 2);
+  const other = (x, v) => { const y = mesh.edge(x); return y.start === v ? y.end : y.start; };
+  const c = mesh.vertex(other(r.startLeft, r.start)).position;
+  const d = mesh.vertex(other(r.startRight, r.start)).position;
+  return [0, 1, 2].map((k) => 3 / 8 * (S[k] + E[k]) + 1 / 8 * (c[k] + d[k]));
+}`,
+  // Loop's vertex point: the walk around v gives the neighbours; an edge with a face missing
+  // is a boundary edge, and its other end one of the two boundary neighbours.
+  'loop-vertex-point': `function loopVertexPoint(mesh, v) {
+  const P = mesh.vertex(v).position;
+  const ring = [], boundary = [];
+  const first = mesh.vertex(v).edge;
+  let e = first;
+  do {
+    const r = mesh.edge(e);
+    const u = r.start === v ? r.end : r.start;
+    ring.push(mesh.vertex(u).position);
+    if (r.left === -1 || r.right === -1) boundary.push(mesh.vertex(u).position);
+    e = r.start === v ? r.startLeft : r.endRight;
+  } while (e !== first);
+  if (boundary.length === 2) return [0, 1, 2].map((k) => boundary[0][k] / 8 + 6 / 8 * P[k] + boundary[1][k] / 8);
+  const n = ring.length;
+  const beta = (5 / 8 - Math.pow(3 / 8 + Math.cos(2 * Math.PI / n) / 4, 2)) / n;
+  return [0, 1, 2].map((k) => (1 - n * beta) * P[k] + beta * ring.reduce((s, q) => s + q[k], 0));
+}`,
+  'catmull-clark-face-point': `function faceCentroid(mesh, f) {
+  let x = 0, y = 0, z = 0, n = 0;
+  const first = mesh.face(f).edge;
+  let e = first;
+  do {
+    const r = mesh.edge(e);
+    const [px, py, pz] = mesh.vertex(r.left === f ? r.start : r.end).position;
+    x += px; y += py; z += pz; n += 1;
+    e = r.left === f ? r.endLeft : r.startRight;
+  } while (e !== first);
+  return [x / n, y / n, z / n];
+}`,
 };
 
 // A solution as typed into the editor, which indents each new line itself.

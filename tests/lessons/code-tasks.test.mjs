@@ -10,11 +10,12 @@ import assert from 'node:assert/strict';
 import { loadWingspline } from '../../dist/js/core/wingspline.js';
 import { TASKS, taskOf } from '../../web/js/lessons/code/tasks.js';
 import { makeCases, lectureCase, sandboxMesh, HIDDEN_KINDS, seeded } from '../../web/js/lessons/code/cases.js';
-import { gradeRun, failureText, partsAt, tablesAfter } from '../../web/js/lessons/code/grading.js';
+import { gradeRun, failureText, partsAt } from '../../web/js/lessons/code/grading.js';
 import { createNodeSandbox } from '../../web/js/code/quickjs-node.js';
 import { CORRECT } from '../helpers/code-solutions.mjs';
+import { runTask } from '../../web/js/lessons/code/check.js';
 
-const api = await loadWingspline({ parts: ['mesh', 'exercises'] });
+const api = await loadWingspline({ parts: ['mesh', 'subdivision', 'exercises'] });
 const sandbox = createNodeSandbox();
 
 // The lecture's rules, as a student would write them: tests/helpers/code-solutions.mjs.
@@ -38,6 +39,33 @@ const WRONG = {
   ],
   'half-edges-around-vertex': [{ source: CORRECT['half-edges-around-vertex'].replace('.prev).twin', '.next).twin'), firstFail: 0 }],
   'half-edges-of-face': [{ source: CORRECT['half-edges-of-face'].replace('.next;', '.twin;'), firstFail: 0 }],
+  'split-edge': [
+    // The edges at E keep pointing at e: the slide's e3 has neighbours at its end.
+    { source: CORRECT['split-edge'].replace('setWing(a, E, L, n);', ''), firstFail: 0 },
+    // The new vertex a third of the way: the tables are right, its position is not.
+    { source: CORRECT['split-edge'].replace('(sx + ex) / 2', '(sx + ex) / 3'), firstFail: 0, message: /its position is not the midpoint/ },
+  ],
+  'loop-edge-point': [
+    // The midpoint everywhere: right on the boundary, and on the slide's e3 too (v1 v2 v4 v3 is
+    // a parallelogram, so c + d = S + E there); wrong on the tetrahedron, the third case.
+    { source: CORRECT['loop-edge-point'].replace('if (r.left === -1 || r.right === -1) return', 'return'), firstFail: 2 },
+    // The weights swapped, 1/8 (S + E) + 3/8 (c + d): the same point where c + d = S + E (the
+    // slide's e3 again), wrong on the tetrahedron.
+    { source: CORRECT['loop-edge-point'].replace('3 / 8 * (S[k] + E[k]) + 1 / 8 * (c[k] + d[k])', '1 / 8 * (S[k] + E[k]) + 3 / 8 * (c[k] + d[k])'), firstFail: 2 },
+  ],
+  'loop-vertex-point': [
+    // The interior rule on the boundary too: the slide's v2 is on the boundary.
+    { source: CORRECT['loop-vertex-point'].replace('if (boundary.length === 2) return', 'if (false) return'), firstFail: 0 },
+    // 3/(8n) instead of Loop's weight: the two agree at valence 6 only (both 1/16); on the
+    // boundary (the slide's v2, the fan's centre) neither is used; the tetrahedron's valence 3
+    // gives 1/8 against Loop's 3/16: the third case.
+    { source: CORRECT['loop-vertex-point'].replace('const beta = (5 / 8 - Math.pow(3 / 8 + Math.cos(2 * Math.PI / n) / 4, 2)) / n;', 'const beta = 3 / (8 * n);'), firstFail: 2 },
+  ],
+  'catmull-clark-face-point': [
+    // The edge's start whatever the side: the slide's F1 lies right of e1 (v1 -> v3), so v1 is
+    // counted twice and v3 not at all.
+    { source: CORRECT['catmull-clark-face-point'].replace('r.left === f ? r.start : r.end', 'r.start'), firstFail: 0 },
+  ],
   'flip-edge': [
     // Forgetting what the end vertex stores: the slide's v3 stores e3 itself.
     { source: CORRECT['flip-edge'].replace('if (mesh.vertex(E).edge === e) mesh.vertex(E).edge = c;', ''), firstFail: 0 },
@@ -46,20 +74,13 @@ const WRONG = {
   ],
 };
 
-// An edit is checked as the page checks it: the core's table check against the faces of the
-// core's own edit of the same mesh.
-const checkEdit = (c, r) => api.checkMeshTableAnswer(
-  { faceOffsets: c.expected.faceOffsets, faceVertices: c.expected.faceVertices, vertexCount: c.expected.vertexCount },
-  'winged-edge', tablesAfter(c.snapshot, r.transaction));
-
+// Graded as the page and the grader grade: check.js runTask, one mesh at a time; an edit by
+// the core's table check against the faces of the core's own edit of the same mesh (and the
+// new vertices' positions against the core's).
 async function grade(task, source, seed) {
-  const cases = makeCases(api, task, seed);
-  const answer = await sandbox.run({
-    source, entry: task.entry, budgetMs: 1500, writable: task.writable === true,
-    cases: cases.filter((c) => c.args).map((c) => ({ args: c.args, mesh: sandboxMesh(task, c) })),
-  });
-  assert.ok(!answer.error, answer.error?.message);
-  return gradeRun(task, cases, answer.results, { checkEdit });
+  const ran = await runTask({ api, checker: () => api, task, source, seed, run: (request) => sandbox.run(request) });
+  assert.ok(!ran.error, ran.error?.message);
+  return ran.grade;
 }
 
 test('the cases: the slide\'s mesh first, then one of each hidden kind, all valid, the same for the same seed', () => {
@@ -71,7 +92,11 @@ test('the cases: the slide\'s mesh first, then one of each hidden kind, all vali
     assert.deepEqual(a[0].args, task.lectureArgs);
     assert.deepEqual(a.map((c) => [c.args, c.expected]), b.map((c) => [c.args, c.expected]));
     // A case not asked is one whose mesh has no element the task's edit accepts.
-    for (const c of a.filter((x) => !x.args)) assert.ok(task.answer === 'edit' && /no edge of it/.test(c.skipped), c.label);
+    // (or, for Loop's points, a mesh with faces that are not triangles: the cube, the joined grid,
+    // a sphere after splits).
+    for (const c of a.filter((x) => !x.args)) {
+      assert.ok((task.answer === 'edit' && /no edge of it/.test(c.skipped)) || (task.scheme === 'loop' && /not triangles/.test(c.skipped)), `${task.id}: ${c.label}`);
+    }
   }
   // The slide's answers, as the statements and lecture 000 give them.
   assert.deepEqual(lectureCase(api, taskOf('edges-around-vertex')).expected, [5, 4, 2, 1]); // e6 e5 e3 e2
@@ -84,6 +109,15 @@ test('the cases: the slide\'s mesh first, then one of each hidden kind, all vali
   const rotated = (face, first) => { const k = face.indexOf(first); return [...face.slice(k), ...face.slice(0, k)]; };
   assert.deepEqual(rotated(facesAfter[0], 0), [0, 1, 3]);
   assert.deepEqual(rotated(facesAfter[1], 3), [3, 2, 0]);
+  // Splitting e3 (v2 -> v3, F1 on its left, F2 on its right) puts v6 between v2 and v3 in both:
+  // F1 = (v1 v2 v6 v3), F2 = (v2 v4 v3 v6); v6 is the midpoint of the slide's v2 and v3.
+  const split = lectureCase(api, taskOf('split-edge')).expected;
+  const splitFaces = [0, 1].map((f) => Array.from(split.faceVertices.subarray(split.faceOffsets[f], split.faceOffsets[f + 1])));
+  assert.deepEqual(rotated(splitFaces[0], 0), [0, 1, 5, 2]);
+  assert.deepEqual(rotated(splitFaces[1], 1), [1, 3, 2, 5]);
+  assert.equal(split.vertexCount, 6);
+  const P = api.lectureExample().positions;
+  assert.deepEqual(split.newPositions[0], [0, 1, 2].map((k) => (P[3 + k] + P[6 + k]) / 2));
   assert.equal(api.liveMeshCount(), 0, 'every case mesh is disposed');
 });
 
@@ -113,22 +147,25 @@ for (const task of TASKS) {
       assert.equal(g.firstFail, null, `seed ${seed}: ${g.firstFail !== null ? failureText(task, g.cases[g.firstFail]) : ''}`);
       // A walk reads what the core's counting reader says the lecture's rule reads; an edit's
       // reference is the core's own writes, compared with nothing (another order is as right).
-      if (task.answer !== 'edit') for (const c of g.cases) assert.equal(c.reads, c.referenceReads, `${c.label}: traced reads against the core's count`);
-      else assert.ok(g.asked >= 5, `${g.asked} meshes asked`);
+      // A subdivision point has no counting reader in the core: its cases are asked, that is all.
+      if (task.answer === 'edit' || task.answer === 'position') assert.ok(g.asked >= 5, `${g.asked} meshes asked`);
+      else for (const c of g.cases) assert.equal(c.reads, c.referenceReads, `${c.label}: traced reads against the core's count`);
     }
   });
   test(`${task.id}: typical mistakes fail where they must, with the mesh, the element and the difference named`, async () => {
-    for (const { source, firstFail } of WRONG[task.id]) {
+    for (const { source, firstFail, message } of WRONG[task.id]) {
       const g = await grade(task, source, 12345);
       assert.equal(g.firstFail, firstFail, source);
       const failed = g.cases[firstFail];
       const text = failureText(task, failed);
       assert.match(text, new RegExp(`^On ${failed.label.replace(/[()]/g, '\\$&')}`));
       if (failed.check) {
-        assert.match(text, /the tables your function left are not the winged edge of the mesh after the flip, so nothing was applied\. (The vertex|The edge|The face|Row)/);
+        assert.match(text, new RegExp(`the tables your function left are not the winged edge of the mesh after the ${task.editName}, so nothing was applied\\. (The vertex|The edge|The face|Row)`));
+        if (message) assert.match(text, message);
       } else if (!failed.error) {
         assert.match(text, /expected .* your function returned/);
-        assert.equal(partsAt(failed.expected, failed.value), failed.partsAt);
+        if (task.answer === 'position') assert.match(text, /expected \(-?[\d.e-]+, -?[\d.e-]+, -?[\d.e-]+\), your function returned \(/);
+        else assert.equal(partsAt(failed.expected, failed.value), failed.partsAt);
       }
     }
   });

@@ -50,6 +50,9 @@ const PRELUDE_FILE = 'wingspline-mesh.js';
 const ENTRY_FILE = 'wingspline-entry.js';
 
 export const DEFAULT_BUDGET_MS = 1500;
+// The prelude (the mesh object, the removed globals) before the student's code: ours, and quick;
+// this only stops an engine that would hang in it.
+const PRELUDE_BUDGET_MS = 10_000;
 export const MEMORY_LIMIT_BYTES = 32 * 1024 * 1024;
 // QuickJS counts the stack in its own frames, while the host's (V8's) stack holds the wasm
 // frames of the interpreter: measured under Node, 128 KB of QuickJS stack could overflow the
@@ -737,8 +740,11 @@ function runCase(QuickJS, request, c) {
     ...(writable ? { transaction: store.transaction } : {}),
     ...(engineFailed ? { engineFailed } : {}),
   });
-  const how = { interrupted: false, source: request.source };
-  const deadline = Date.now() + budgetMs;
+  // The student's budget starts when the prelude is built (evaluate sets how.deadline): on a
+  // slow or busy machine the prelude's own time never counts against the student's code (a
+  // 100 ms budget was once spent before the student's first line). The prelude has its own,
+  // generous limit.
+  const how = { interrupted: false, source: request.source, deadline: Date.now() + PRELUDE_BUDGET_MS };
   let runtime;
   try {
     runtime = QuickJS.newRuntime();
@@ -750,7 +756,7 @@ function runCase(QuickJS, request, c) {
     runtime.setMemoryLimit(MEMORY_LIMIT_BYTES);
     runtime.setMaxStackSize(STACK_LIMIT_BYTES);
     runtime.setInterruptHandler(() => {
-      if (Date.now() > deadline) how.interrupted = true;
+      if (Date.now() > how.deadline) how.interrupted = true;
       return how.interrupted;
     });
     const ctx = runtime.newContext();
@@ -782,7 +788,7 @@ function runCase(QuickJS, request, c) {
 /**
  * @param {QuickJSContext} ctx @param {(h: QuickJSHandle) => QuickJSHandle} keep
  * @param {ReturnType<typeof createStore>} store @param {string[]} logs @param {RunRequest} request
- * @param {RunCase} c @param {boolean} writable @param {{ interrupted: boolean, source: string }} how @param {number} budgetMs
+ * @param {RunCase} c @param {boolean} writable @param {{ interrupted: boolean, source: string, deadline: number }} how @param {number} budgetMs
  * @returns {CaseOutcome}
  */
 function evaluate(ctx, keep, store, logs, request, c, writable, how, budgetMs) {
@@ -827,6 +833,7 @@ function evaluate(ctx, keep, store, logs, request, c, writable, how, budgetMs) {
   if (made.error) { const parts = errorParts(ctx, made.error); made.error.dispose(); throw new Error(`prelude: ${parts.message}`); }
   const api = keep(made.value);
   const call = keep(ctx.getProp(api, 'call'));
+  how.deadline = Date.now() + budgetMs; // the student's code starts now
 
   /** @param {QuickJSHandle} errorHandle @returns {CaseOutcome} */
   const failed = (errorHandle) => {

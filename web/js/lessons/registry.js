@@ -59,6 +59,6 @@ export const lessons = [
     ready: true,
     // It carries a code editor (docs/architecture.md, "Module size"); the sandbox's engine
     // is fetched on the first Run and is not part of the page's load.
-    weightBudget: 410_000,
+    weightBudget: 450_000,
   },
 ];

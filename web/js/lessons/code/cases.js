@@ -116,8 +116,9 @@ export function makeCases(api, task, seed) {
       const counts = mesh.counts();
       const vertices = live(counts.vertices + gaps.vertices.length, gaps.vertices);
       const faces = live(counts.faces + gaps.faces.length, gaps.faces);
-      // An edit's cases have no removed rows (the check reads the tables whole): compacted.
-      if (task.answer === 'edit' && (gaps.vertices.length || gaps.edges.length || gaps.faces.length)) {
+      // An edit's cases have no removed rows (the check reads the tables whole), nor a
+      // subdivision point's (the core subdivides a mesh without gaps): compacted.
+      if ((task.answer === 'edit' || task.answer === 'position') && (gaps.vertices.length || gaps.edges.length || gaps.faces.length)) {
         mesh.compact();
         build(label, { ...mesh.faceSet(), positions: mesh.wingedEdgeArrays().positions }, { pickVertex });
         return;
@@ -126,7 +127,7 @@ export function makeCases(api, task, seed) {
         if (kind === 'vertex') return pickVertex ?? vertices[rng.int(vertices.length)];
         if (kind === 'edge') {
           // An edge the task's operation accepts (the core's check), or none: not asked.
-          const edges = live(counts.edges + gaps.edges.length, gaps.edges).filter((e) => !task.op || mesh.check({ op: task.op, e }).ok);
+          const edges = live(counts.edges + gaps.edges.length, gaps.edges).filter((e) => !task.op || mesh.check({ op: task.op, e, ...task.opArgs }).ok);
           return edges.length ? edges[rng.int(edges.length)] : null;
         }
         // The face with the most sides (ties: the seed), or any face.
@@ -139,8 +140,11 @@ export function makeCases(api, task, seed) {
         }
         return most > 3 ? best[rng.int(best.length)] : faces[rng.int(faces.length)];
       });
-      if (args.includes(null)) made.push({ label, args: null, skipped: `no edge of it can take the ${task.editName ?? task.op}`, ...picture(mesh) });
-      else made.push(caseOf(mesh, task, label, args));
+      // Loop's rules are for triangles: a mesh with polygons is not asked.
+      const polygons = task.scheme === 'loop' && !triangles(mesh);
+      if (polygons) made.push({ label, args: null, skipped: 'it has faces that are not triangles, and Loop\'s rules are for triangles', ...picture(mesh) });
+      else if (args.includes(null)) made.push({ label, args: null, skipped: `no edge of it can take the ${task.editName ?? task.op}`, ...picture(mesh) });
+      else made.push(caseOf(api, mesh, task, label, args));
     } finally {
       mesh.dispose();
     }
@@ -172,7 +176,7 @@ export function makeCases(api, task, seed) {
 export function lectureCase(api, task) {
   const mesh = api.buildMesh(api.lectureExample());
   try {
-    return caseOf(mesh, task, 'the slide\'s mesh (lecture 000)', task.lectureArgs);
+    return caseOf(api, mesh, task, 'the slide\'s mesh (lecture 000)', task.lectureArgs);
   } finally {
     mesh.dispose();
   }
@@ -180,11 +184,18 @@ export function lectureCase(api, task) {
 
 // One case of a built mesh: its tables (snapshot), its picture (positions, faces), the
 // arguments, and the core's answer and read count.
-function caseOf(mesh, task, label, args) {
+function caseOf(api, mesh, task, label, args) {
   const shown = picture(mesh);
   // The answer last: an edit task's expected() edits the mesh.
-  const expected = task.expected(mesh, args);
+  const expected = task.expected(mesh, args, api);
   return { label, args, ...shown, expected, referenceReads: task.referenceReads(mesh, args, expected) };
+}
+
+// Every face a triangle (the faces as the core lists them).
+function triangles(mesh) {
+  const { faceOffsets } = mesh.faceSet();
+  for (let f = 0; f + 1 < faceOffsets.length; f += 1) if (faceOffsets[f + 1] - faceOffsets[f] !== 3) return false;
+  return true;
 }
 
 // What the page draws and the sandbox reads of a mesh as it is.

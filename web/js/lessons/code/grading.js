@@ -13,10 +13,24 @@ const KIND_OF_ANSWER = { edges: 'edge', faces: 'face', 'half-edges': 'halfedge' 
 export function describeAnswer(task, value) {
   if (value === undefined) return 'nothing (undefined)';
   if (task.answer === 'number') return typeof value === 'number' ? String(value) : JSON.stringify(value);
+  if (task.answer === 'position') {
+    return isPoint(value) ? `(${value.map((x) => String(Number(x.toPrecision(12)))).join(', ')})` : `${JSON.stringify(value)?.slice(0, 80) ?? String(value)} (not a point [x, y, z])`;
+  }
   if (!Array.isArray(value)) return `${JSON.stringify(value)?.slice(0, 80) ?? String(value)} (not a list)`;
   const kind = KIND_OF_ANSWER[task.answer];
   const shown = value.slice(0, 60).map((x) => (Number.isInteger(x) && x >= 0 ? elementLabel(kind, x) : JSON.stringify(x)));
   return `[${shown.join(' ')}${value.length > 60 ? ` … (${value.length} in all)` : ''}]`;
+}
+
+const isPoint = (v) => Array.isArray(v) && v.length === 3 && v.every((x) => typeof x === 'number' && Number.isFinite(x));
+
+// A point returned is the core's when each coordinate is within 1e-9 of the largest
+// coordinate's size (at least 1): the student's sums and the core's differ by rounding only,
+// whatever the mesh's scale.
+export function samePoint(expected, value) {
+  if (!isPoint(value)) return false;
+  const tolerance = 1e-9 * Math.max(1, ...expected.map(Math.abs));
+  return value.every((x, i) => Math.abs(x - expected[i]) <= tolerance);
 }
 
 // Where a returned list first differs from the expected one (0-based), or -1 when equal.
@@ -50,6 +64,17 @@ export function tablesAfter(snapshot, transaction) {
   return { edges, vertexEdges, faceEdges };
 }
 
+// Where the vertices a writing function added end up, in row order: the position each was
+// added with, or the last one written to it.
+export function addedPositions(snapshot, transaction) {
+  const first = snapshot.winged.vertexEdge.length;
+  const out = (transaction?.added?.vertex ?? []).map((p) => Array.from(p));
+  for (const { table, row, field, value } of transaction?.writes ?? []) {
+    if (table === 'vertex' && field === 'position' && row >= first) out[row - first] = Array.from(/** @type {number[]} */ (value));
+  }
+  return out;
+}
+
 /**
  * @param {import('./tasks.js').Task} task
  * @param {Array<{ label: string, args: number[] | null, expected?: any, referenceReads?: number, skipped?: string }>} cases
@@ -76,6 +101,10 @@ export function gradeRun(task, cases, results, { checkEdit } = {}) {
       const check = checkEdit?.(c, r) ?? { correct: false, findings: [{ message: 'the edit could not be checked' }] };
       return { ...base, ok: check.correct, check, partsAt: check.correct ? -1 : 0 };
     }
+    if (task.answer === 'position') {
+      const ok = samePoint(c.expected, r.value);
+      return { ...base, ok, partsAt: ok ? -1 : 0 };
+    }
     const at = partsAt(c.expected, r.value);
     return { ...base, ok: at === -1, partsAt: at };
   });
@@ -101,7 +130,7 @@ export function failureText(task, g) {
     // reason (the right value) is not shown: the student finds it.
     return `On ${where}: the tables your function left are not the winged edge of the mesh after the ${task.editName ?? 'edit'}, so nothing was applied. ${first?.message ?? ''}${first?.hint ? ` ${first.hint}` : ''}${more}`;
   }
-  const part = Array.isArray(g.expected) && g.partsAt >= 0
+  const part = task.answer !== 'position' && Array.isArray(g.expected) && g.partsAt >= 0
     ? ` The answers part at entry ${g.partsAt + 1}: expected ${g.partsAt < g.expected.length ? describeAnswer(task, [g.expected[g.partsAt]]).slice(1, -1) : 'the end of the list'}, yours ${Array.isArray(g.value) && g.partsAt < g.value.length ? describeAnswer(task, [g.value[g.partsAt]]).slice(1, -1) : 'ends there'}.`
     : '';
   return `On ${where}: expected ${describeAnswer(task, g.expected)}, your function returned ${describeAnswer(task, g.value)}.${part}`;

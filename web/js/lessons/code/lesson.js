@@ -55,7 +55,8 @@ function stepText(step) {
 export const codeLesson = {
   id: 'code',
   title: 'Program the structure',
-  core: ['mesh'],
+  // The subdivision tasks ask the core's subdivision step: the module with every mesh binding.
+  core: ['mesh', 'subdivision'],
   stateVersion: 1,
   inspector: false,
   schema: {
@@ -313,7 +314,7 @@ export const codeLesson = {
     view.failure.textContent = failed ? failureText(task, failed) : '';
     const counted = (g) => (task.answer === 'edit'
       ? ` — ${g.reads} read${g.reads === 1 ? '' : 's'}, ${g.writes} written (the core's edit writes ${g.referenceReads})`
-      : ` — ${g.reads} read${g.reads === 1 ? '' : 's'} (the lecture's rule: ${g.referenceReads})`);
+      : ` — ${g.reads} read${g.reads === 1 ? '' : 's'}${g.referenceReads === null ? '' : ` (the lecture's rule: ${g.referenceReads})`}`);
     view.caseList.replaceChildren(...(grade?.cases ?? []).map((g, i) => h('li', { class: !g.asked ? 'is-skipped' : g.ok ? 'is-passed' : 'is-failed', 'aria-current': i === state.shown ? 'true' : null },
       h('button', { type: 'button', class: 'link-button', 'data-case': i, onclick: () => view.chooseCase(i) }, `${!g.asked ? '–' : g.ok ? '✓' : '✗'} ${g.label}`),
       !g.asked ? ` — not asked: ${g.skipped}` : g.error?.kind === 'skipped' ? ' — not run' : counted(g))));
@@ -336,7 +337,7 @@ export const codeLesson = {
     view.readsLine.textContent = !g || !g.asked ? (g?.skipped ? `Not asked: ${g.skipped}.` : '')
       : task.answer === 'edit'
         ? `Your function read ${g.reads} entr${g.reads === 1 ? 'y' : 'ies'}${step ? ` (${readsSoFar} so far)` : ''} and wrote ${g.writes}; the core's ${task.op} writes ${g.referenceReads}. ${g.error ? 'It stopped with an error.' : g.ok ? 'The tables it left are the edited mesh\'s winged edge: applied.' : 'The tables it left were refused: nothing was applied.'}`
-        : `Your function read ${g.reads} entr${g.reads === 1 ? 'y' : 'ies'}${step ? ` (${readsSoFar} so far)` : ''}; the lecture's rule reads ${g.referenceReads}. It returned ${g.error ? 'an error' : describeAnswer(task, g.value)}; expected ${describeAnswer(task, shown.case.expected)}.`;
+        : `Your function read ${g.reads} entr${g.reads === 1 ? 'y' : 'ies'}${step ? ` (${readsSoFar} so far)` : ''}${g.referenceReads === null ? '' : `; the lecture's rule reads ${g.referenceReads}`}. It returned ${g.error ? 'an error' : describeAnswer(task, g.value)}; expected ${describeAnswer(task, shown.case.expected)}.`;
     const printed = g?.logs ?? [];
     view.logs.hidden = printed.length === 0;
     view.logs.textContent = printed.length ? `console.log:\n${printed.join('\n')}` : '';

@@ -6,22 +6,26 @@
 // task never computes an answer itself.
 //
 // A task: {id, title, structure ('winged-edge' | 'half-edge'), entry (the function's name),
-// params (what each argument is: 'vertex' | 'face'), answer ('edges' | 'faces' | 'half-edges'
-// | 'number': what the returned value lists), statement (paragraphs, the lecture's words),
+// params (what each argument is: 'vertex' | 'face' | 'edge'), answer ('edges' | 'faces' |
+// 'half-edges' | 'number': what the returned value lists; 'position': a point [x, y, z] of the
+// core's subdivision step by `scheme`; 'edit': the tables the function leaves), statement
+// (paragraphs, the lecture's words),
 // rule (the lecture's rule, one line per step), starter (the code a student starts from),
 // lectureArgs (the arguments on the lecture mesh, 0-based), pick (which element of a hidden
 // mesh a case asks about: 'boundary' prefers a boundary vertex, 'largest' the face with most
-// sides), expected(mesh, args) and referenceReads(mesh, args): answers of the core.
+// sides), expected(mesh, args, api) and referenceReads(mesh, args): answers of the core
+// (null where the core has no counting reader for the rule: the subdivision points).
 
 /** @typedef {'vertex' | 'face' | 'edge'} ParamKind */
 /**
  * @typedef {{
  *   id: string, title: string, structure: 'winged-edge' | 'half-edge', entry: string,
- *   params: ParamKind[], answer: 'edges' | 'faces' | 'half-edges' | 'number' | 'edit',
+ *   params: ParamKind[], answer: 'edges' | 'faces' | 'half-edges' | 'number' | 'edit' | 'position',
  *   lecture: string, statement: string[], rule: string[], starter: string,
- *   lectureArgs: number[], writable?: boolean, op?: string, editName?: string,
- *   expected: (mesh: any, args: number[]) => any,
- *   referenceReads: (mesh: any, args: number[], expected: any) => number,
+ *   lectureArgs: number[], writable?: boolean, op?: string, opArgs?: Object<string, number>, editName?: string, positionRule?: string,
+ *   scheme?: 'loop' | 'catmull-clark',
+ *   expected: (mesh: any, args: number[], api: any) => any,
+ *   referenceReads: (mesh: any, args: number[], expected: any) => number | null,
  * }} Task
  */
 
@@ -175,7 +179,116 @@ export const TASKS = [
     },
     referenceReads: (mesh, args, expected) => expected.written,
   },
+  {
+    id: 'split-edge',
+    title: 'Split an edge (winged edge, an edit)',
+    structure: 'winged-edge',
+    entry: 'splitEdge',
+    params: ['edge'],
+    answer: 'edit',
+    writable: true,
+    op: 'split-edge',
+    opArgs: { t: 0.5 },
+    editName: 'split',
+    positionRule: 'the midpoint of e\'s start and end, (S + E) / 2',
+    lecture: '000',
+    statement: [
+      'Split edge e at its midpoint: a new vertex m halfway between its start S and its end E, and a new edge n from m to E. The faces on either side, L and R, keep their rows and gain m as a corner (one side more each).',
+      'Add the new rows: m = mesh.addVertex([x, y, z]) with m at (S + E) / 2, n = mesh.addEdge(); each returns its new row\'s number, every entry none (-1) until you write it. Then e runs from S to m, n from m to E with the same faces; at m the two edges are each other\'s wings; at E, n takes over the wings e had there, and every record at E that pointed at e now points at n.',
+      'When your function returns, the whole table is checked as the winged edge of the split mesh and m\'s position as the midpoint; only then is it applied: the mesh is never left half-edited.',
+    ],
+    // The core's own phases of its split (euler_ops.cpp), as the mesh lesson's edit player shows them.
+    rule: ['A new vertex m at (S + E) / 2 and a new edge n; m stores n', 'n: m → E, the faces L and R of e; its wings at m are e on both sides, at E the wings e had there', 'e now ends at m; its wings at its end are n on both sides', 'The edges at E that pointed at e now point at n (and E stores n if it stored e)'],
+    starter: 'function splitEdge(mesh, e) {\n  const r = mesh.edge(e);\n  const S = r.start, E = r.end;\n  const [sx, sy, sz] = mesh.vertex(S).position, [ex, ey, ez] = mesh.vertex(E).position;\n  // A new vertex at the midpoint and a new edge: mesh.addVertex([x, y, z]), mesh.addEdge().\n\n  // Write n\'s row, e\'s new end and wings, and what pointed at e at E.\n}\n',
+    lectureArgs: [2],
+    // The core's split of the same mesh: its faces after, the new vertex's position (the
+    // check's references) and how many entries the core's split writes.
+    expected: (mesh, [e]) => {
+      const record = mesh.apply({ op: 'split-edge', e, t: 0.5 });
+      const after = mesh.faceSet();
+      const { positions } = mesh.wingedEdgeArrays();
+      const m = mesh.counts().vertices - 1; // the new vertex: the last row (the case has no gaps)
+      return {
+        faceOffsets: Int32Array.from(after.faceOffsets), faceVertices: Int32Array.from(after.faceVertices), vertexCount: mesh.counts().vertices,
+        newPositions: [Array.from(positions.subarray(3 * m, 3 * m + 3))], written: record.steps.length,
+      };
+    },
+    referenceReads: (mesh, args, expected) => expected.written,
+  },
+  {
+    id: 'loop-edge-point',
+    title: 'Loop\'s new edge point',
+    structure: 'winged-edge',
+    entry: 'loopEdgePoint',
+    params: ['edge'],
+    answer: 'position',
+    scheme: 'loop',
+    lecture: '000',
+    statement: [
+      'One step of Loop\'s subdivision puts a new point on every edge (the Subdivision lesson shows its mask). For edge e from S to E between two triangles, the edge point is 3/8 (S + E) + 1/8 (c + d), where c and d are the corners opposite e: c in its left triangle L, d in its right triangle R. On the boundary (L or R is none) it is the midpoint (S + E) / 2.',
+      'Find c and d from the wings: the wing at S on the left, startLeft, is the side of L from S to c, so c is its other end; startRight gives d in R. Read the positions with mesh.vertex(v).position and return [x, y, z].',
+      'The core computes the same point in its own subdivision step; each coordinate must agree within 1e-9 of the largest coordinate\'s size. (On the slide\'s mesh the corners opposite an inner edge add up to S + E, so its edge points are midpoints as well: the hidden meshes tell the rules apart.)',
+    ],
+    rule: ['S, E, L, R from e\'s row', 'c: the other end of startLeft (in L); d: the other end of startRight (in R)', 'interior: 3/8 (S + E) + 1/8 (c + d); boundary: (S + E) / 2'],
+    starter: 'function loopEdgePoint(mesh, e) {\n  const r = mesh.edge(e);\n  const S = mesh.vertex(r.start).position, E = mesh.vertex(r.end).position;\n  // On the boundary (r.left or r.right is -1): the midpoint. Inside: find the opposite corners c and d.\n\n  return [0, 0, 0];\n}\n',
+    lectureArgs: [2],
+    // The edge point of e is vertex V + e of the core's Loop step (subdivision.h).
+    expected: (mesh, [e], api) => newPoint(api, mesh, 'loop', mesh.counts().vertices + e),
+    referenceReads: () => null,
+  },
+  {
+    id: 'loop-vertex-point',
+    title: 'Loop\'s new vertex point',
+    structure: 'winged-edge',
+    entry: 'loopVertexPoint',
+    params: ['vertex'],
+    answer: 'position',
+    scheme: 'loop',
+    lecture: '000',
+    statement: [
+      'Loop\'s step also moves every old vertex v. Inside the mesh, with n neighbours: (1 − nβ) v + β (the sum of the neighbours), β = (1/n)(5/8 − (3/8 + cos(2π/n)/4)²) (Loop\'s own weight). On the boundary: 1/8 a + 6/8 v + 1/8 b, where a and b are v\'s two neighbours along the boundary.',
+      'Walk the edges around v (the first task\'s walk) to meet its neighbours; an edge with no face on one side (left or right is -1) is on the boundary. Return [x, y, z].',
+      'The core computes the same point in its own subdivision step; each coordinate must agree within 1e-9 of the largest coordinate\'s size.',
+    ],
+    rule: ['Walk the edges around v; each edge\'s other end is a neighbour', 'inside: β = (1/n)(5/8 − (3/8 + cos(2π/n)/4)²), (1 − nβ) v + β Σ neighbours', 'boundary: 1/8 a + 6/8 v + 1/8 b (its two boundary neighbours)'],
+    starter: 'function loopVertexPoint(mesh, v) {\n  const P = mesh.vertex(v).position;\n  const neighbours = [];\n  // Walk the edges around v; collect the other ends, and note the boundary ones.\n\n  return P;\n}\n',
+    lectureArgs: [1],
+    // Old vertex v keeps its number in the core's Loop step: its new position is the vertex point.
+    expected: (mesh, [v], api) => newPoint(api, mesh, 'loop', v),
+    referenceReads: () => null,
+  },
+  {
+    id: 'catmull-clark-face-point',
+    title: 'Catmull-Clark\'s face point',
+    structure: 'winged-edge',
+    entry: 'faceCentroid',
+    params: ['face'],
+    answer: 'position',
+    scheme: 'catmull-clark',
+    lecture: '000',
+    statement: [
+      'One step of Catmull-Clark\'s subdivision puts a new point in every face: the face point, the average (centroid) of the face\'s corners. A face may have any number of sides.',
+      'Walk the edges of f (the second task\'s walk): the corner where each side starts, as you go around f, is the edge\'s start when f is its left face and its end when f is its right face. Average the corners\' positions and return [x, y, z].',
+      'The core computes the same point in its own subdivision step; each coordinate must agree within 1e-9 of the largest coordinate\'s size.',
+    ],
+    rule: ['Walk the edges of f', 'the corner at each: start if f is the left face, end if it is the right face', 'the face point: the sum of the corners / their number'],
+    starter: 'function faceCentroid(mesh, f) {\n  let x = 0, y = 0, z = 0, n = 0;\n  // Walk around f and add each corner\'s position.\n\n  return [x / n, y / n, z / n];\n}\n',
+    lectureArgs: [0],
+    // The face point of f is vertex V + E + f of the core's Catmull-Clark step (subdivision.h).
+    expected: (mesh, [f], api) => { const c = mesh.counts(); return newPoint(api, mesh, 'catmull-clark', c.vertices + c.edges + f); },
+    referenceReads: () => null,
+  },
 ];
+
+// Vertex `index` of the core's subdivision step of `mesh` by `scheme`: [x, y, z].
+function newPoint(api, mesh, scheme, index) {
+  const finer = api.subdivide(mesh, { scheme, steps: 1 });
+  try {
+    return Array.from(finer.wingedEdgeArrays().positions.subarray(3 * index, 3 * index + 3));
+  } finally {
+    finer.dispose();
+  }
+}
 
 export const TASK_IDS = TASKS.map((t) => t.id);
 
