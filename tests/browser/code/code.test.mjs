@@ -301,8 +301,10 @@ test('the code exercise from the gallery: a wrong walk is named on the slide\'s 
   assert.match(wrong, /On the slide's mesh \(lecture 000\), v2: your function returned \[e6 e2 e3 e5\]\. It parts from the core's answer at entry 2\./);
   assert.doesNotMatch(wrong, /e6 e5 e3 e2/, 'the core\'s answer is not shown at level hint before the hints');
   assert.equal(await page.locator('#exercise-feedback').getAttribute('data-result'), 'wrong');
-  // The lesson's own results show the same run.
+  // The lesson's own results show the same run, without the core's answer either.
   assert.match(await page.textContent('#code-verdict'), /✗ \d of \d meshes passed/);
+  assert.match(await page.textContent('#reads-line'), /It returned \[e6 e2 e3 e5\], not the core's answer\./);
+  for (const sel of ['#reads-line', '#code-failure']) assert.doesNotMatch(await page.textContent(sel), /e6 e5 e3 e2/, sel);
   await typeCode(page, SOLUTIONS['edges-around-vertex'].right);
   assert.match(await check(), /Right\. All \d+ meshes passed\./);
   assert.equal(await page.locator('#exercise-status').getAttribute('data-status'), 'solved');

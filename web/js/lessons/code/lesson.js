@@ -311,7 +311,10 @@ export const codeLesson = {
     view.verdict.dataset.passed = grade ? String(grade.firstFail === null) : '';
     const failed = grade && grade.firstFail !== null ? grade.cases[grade.firstFail] : null;
     view.failure.hidden = !failed;
-    view.failure.textContent = failed ? failureText(task, failed) : '';
+    // While a code exercise is answered the core's answers stay hidden (its feedback levels):
+    // the failure and the reads line say what the function returned and where, not the answer.
+    const exercise = ctx.ui.exercise === 'code';
+    view.failure.textContent = !failed ? '' : exercise ? resultOfRun(task, { grade, error: null }).findings[0].text : failureText(task, failed);
     const counted = (g) => (task.answer === 'edit'
       ? ` — ${g.reads} read${g.reads === 1 ? '' : 's'}, ${g.writes} written (the core's edit writes ${g.referenceReads})`
       : ` — ${g.reads} read${g.reads === 1 ? '' : 's'}${g.referenceReads === null ? '' : ` (the lecture's rule: ${g.referenceReads})`}`);
@@ -337,7 +340,7 @@ export const codeLesson = {
     view.readsLine.textContent = !g || !g.asked ? (g?.skipped ? `Not asked: ${g.skipped}.` : '')
       : task.answer === 'edit'
         ? `Your function read ${g.reads} entr${g.reads === 1 ? 'y' : 'ies'}${step ? ` (${readsSoFar} so far)` : ''} and wrote ${g.writes}; the core's ${task.op} writes ${g.referenceReads}. ${g.error ? 'It stopped with an error.' : g.ok ? 'The tables it left are the edited mesh\'s winged edge: applied.' : 'The tables it left were refused: nothing was applied.'}`
-        : `Your function read ${g.reads} entr${g.reads === 1 ? 'y' : 'ies'}${step ? ` (${readsSoFar} so far)` : ''}${g.referenceReads === null ? '' : `; the lecture's rule reads ${g.referenceReads}`}. It returned ${g.error ? 'an error' : describeAnswer(task, g.value)}; expected ${describeAnswer(task, shown.case.expected)}.`;
+        : `Your function read ${g.reads} entr${g.reads === 1 ? 'y' : 'ies'}${step ? ` (${readsSoFar} so far)` : ''}${g.referenceReads === null ? '' : `; the lecture's rule reads ${g.referenceReads}`}. It returned ${g.error ? 'an error' : describeAnswer(task, g.value)}${exercise ? (g.ok ? ', the core\'s answer' : ', not the core\'s answer') : `; expected ${describeAnswer(task, shown.case.expected)}`}.`;
     const printed = g?.logs ?? [];
     view.logs.hidden = printed.length === 0;
     view.logs.textContent = printed.length ? `console.log:\n${printed.join('\n')}` : '';
