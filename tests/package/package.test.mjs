@@ -13,6 +13,7 @@ import { createHash } from 'node:crypto';
 import { repoRoot, startSite, launchBrowser } from '../helpers/browser.mjs';
 import { csvObjects } from '../helpers/csv.mjs';
 import { slideWalk, FLIP_E3 } from '../helpers/lecture-slide.mjs';
+import { CORRECT } from '../helpers/code-solutions.mjs';
 
 const pageDir = path.join(repoRoot, 'tests', 'package', 'page');
 let tmp;
@@ -302,4 +303,38 @@ test('`npx wingspline grade` in the empty folder: right, wrong, tampered, damage
   assert.match(none.stderr, /no exercise file could be used/);
   const help = spawnSync('npx', ['--offline', 'wingspline', '--help'], { cwd: work, encoding: 'utf8' });
   assert.match(help.stdout, /Usage: wingspline grade/);
+});
+
+// Code handed in: the code exercise's submissions hold the code lesson's state (the code per
+// task), and the installed grader runs it in the package's QuickJS sandbox (its runtime
+// dependencies, installed from the local npm cache like the rest).
+test('`npx wingspline grade` over a folder of code submissions: the lecture\'s rule right, the starter and an endless loop wrong with their reasons', () => {
+  const app = path.dirname(path.dirname(installed));
+  const work = path.join(app, 'course-code');
+  const exercises = path.join(work, 'homework-code');
+  const uploads = path.join(work, 'uploads');
+  fs.mkdirSync(exercises, { recursive: true });
+  fs.mkdirSync(uploads, { recursive: true });
+  const id = 'code-edges-around-vertex';
+  fs.writeFileSync(path.join(exercises, `${id}.json`), galleryFile(id));
+  const { state } = JSON.parse(galleryFile(id));
+  const handIn = (student, code) => submissionText({ student, exercises: [entry(id, null, { kind: 'code', lesson: 'code', state: { ...state, code } })] });
+  fs.writeFileSync(path.join(uploads, 'grace.json'), handIn('Grace', { 'edges-around-vertex': CORRECT['edges-around-vertex'] }));
+  fs.writeFileSync(path.join(uploads, 'alan.json'), handIn('Alan', {}));
+  fs.writeFileSync(path.join(uploads, 'mallory.json'), handIn('Mallory', { 'edges-around-vertex': 'function edgesAroundVertex(mesh, v) {\n  while (true) {}\n}' }));
+  const out = path.join(work, 'grades');
+  const started = Date.now();
+  const r = spawnSync('npx', ['--offline', 'wingspline', 'grade', 'homework-code', 'uploads', '--out', out], { cwd: work, encoding: 'utf8' });
+  assert.equal(r.status, 0, r.stderr);
+  assert.match(r.stdout, /Graded 3 submission files against 1 exercise: 1 of 3 answers right/);
+  const rows = csvObjects(fs.readFileSync(path.join(out, 'gradebook.csv'), 'utf8'));
+  const of = (file) => rows.find((x) => x['submission file'].endsWith(file));
+  assert.equal(of('grace.json').result, 'right');
+  // The starter returns []: the slide's v2 is asked first (its walk is e6 e5 e3 e2).
+  assert.equal(of('alan.json').result, 'wrong');
+  assert.match(of('alan.json').reason, /^On the slide's mesh \(lecture 000\), v2: your function returned \[\]\./);
+  assert.equal(of('mallory.json').result, 'wrong');
+  assert.match(of('mallory.json').reason, /line 2/i);
+  // The endless loop costs one mesh's budget (1.5 s), not one per mesh.
+  assert.ok(Date.now() - started < 60_000, `${Date.now() - started} ms`);
 });
