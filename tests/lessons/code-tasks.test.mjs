@@ -10,7 +10,7 @@ import assert from 'node:assert/strict';
 import { loadWingspline } from '../../dist/js/core/wingspline.js';
 import { TASKS, taskOf } from '../../web/js/lessons/code/tasks.js';
 import { makeCases, lectureCase, sandboxMesh, HIDDEN_KINDS, seeded } from '../../web/js/lessons/code/cases.js';
-import { gradeRun, failureText, partsAt } from '../../web/js/lessons/code/grading.js';
+import { gradeRun, failureText, partsAt, samePoint, meshScale } from '../../web/js/lessons/code/grading.js';
 import { createNodeSandbox } from '../../web/js/code/quickjs-node.js';
 import { CORRECT } from '../helpers/code-solutions.mjs';
 import { runTask } from '../../web/js/lessons/code/check.js';
@@ -202,4 +202,17 @@ test('the seeded generator: the same seed, the same numbers; spread over [0, 1)'
   assert.ok(xs.every((x) => x >= 0 && x < 1));
   const mean = xs.reduce((s, x) => s + x, 0) / xs.length;
   assert.ok(Math.abs(mean - 0.5) < 0.05, `mean ${mean}`);
+});
+
+test('a point is compared against the mesh\'s size: the same verdicts on a mesh a million times smaller or larger', () => {
+  for (const s of [1e-6, 1, 1e6]) {
+    // A triangle (0,0,0) (2s,0,0) (0,3s,0): its size is 3s; the point asked lies on an axis, so
+    // one of its coordinates is 0 and cannot set the tolerance itself.
+    const snapshot = { winged: { positions: Float64Array.from([0, 0, 0, 2 * s, 0, 0, 0, 3 * s, 0]) } };
+    assert.equal(meshScale(snapshot), 3 * s);
+    const want = [0, 1.5 * s, 0];
+    assert.ok(samePoint(want, [1e-12 * s, 1.5 * s * (1 + 1e-15), 0], meshScale(snapshot)), `${s}: rounding-sized differences pass`);
+    assert.ok(!samePoint(want, [1e-6 * s, 1.5 * s, 0], meshScale(snapshot)), `${s}: a millionth of the mesh does not`);
+    for (const bad of [[0, 1.5 * s], [NaN, 1.5 * s, 0], [0, Infinity, 0], '0,1,0', null]) assert.equal(samePoint(want, bad, meshScale(snapshot)), false, `${s}: ${bad}`);
+  }
 });

@@ -5,7 +5,7 @@
 // Node), every answer graded against the core's (grading.js). An edit is checked by the
 // core's winged-edge table check against the faces of the core's own edit of the same mesh.
 import { makeCases, sandboxMesh } from './cases.js';
-import { gradeRun, failureText, describeAnswer, tablesAfter, addedPositions, samePoint } from './grading.js';
+import { gradeRun, failureText, describeAnswer, tablesAfter, addedPositions, samePoint, meshScale } from './grading.js';
 import { elementLabel } from '../../core/element-labels.js';
 
 // Per mesh: an endless loop stops after this (web/js/code/runner.js).
@@ -48,13 +48,12 @@ export async function runTask({ api, checker, task, source, seed, run, onMesh })
 }
 
 // The vertices an edit adds are where the core's edit puts them (a split: the midpoint),
-// each coordinate within 1e-9 of the largest coordinate's size (the positions are sums of two
-// coordinates and a halving: a few rounding steps, whatever the mesh's scale).
+// each coordinate within 1e-9 of the mesh's size (samePoint: a few rounding steps).
 function checkNewPositions(task, c, transaction) {
   const got = addedPositions(c.snapshot, transaction);
   const first = c.snapshot.winged.vertexEdge.length;
   for (let k = 0; k < c.expected.newPositions.length; k += 1) {
-    if (!samePoint(c.expected.newPositions[k], got[k])) {
+    if (!samePoint(c.expected.newPositions[k], got[k], meshScale(c.snapshot))) {
       return {
         correct: false,
         findings: [{ message: `The vertex table, row ${elementLabel('vertex', first + k)}: its position is not ${task.positionRule ?? 'where the edit puts it'}.`, hint: 'Re-read the statement: the new vertex\'s position is given there.' }],
@@ -85,7 +84,7 @@ export function resultOfRun(task, ran) {
   const hint = `Choose that mesh under Results and Step through it: every entry your function read is marked in its tables. The lecture's rule: ${task.rule.join('; ')}.`;
   if (g.error || g.check) return { correct: false, findings: [{ text: `${failureText(task, g)} ${where}`, hint }] };
   const asked = failureText(task, { ...g, error: null, check: null }).replace(/: expected .*$/, '');
-  const part = task.answer === 'position' ? ' It is not the core\'s point (each coordinate within 1e-9 of the largest coordinate\'s size).'
+  const part = task.answer === 'position' ? ' It is not the core\'s point (each coordinate within 1e-9 of the mesh\'s size, its largest coordinate).'
     : Array.isArray(g.expected) && g.partsAt >= 0 ? ` It parts from the core's answer at entry ${g.partsAt + 1}.` : ' It is not the core\'s answer.';
   return { correct: false, findings: [{ text: `${asked}: your function returned ${describeAnswer(task, g.value)}.${part} ${where}`, hint }] };
 }

@@ -24,12 +24,20 @@ export function describeAnswer(task, value) {
 
 const isPoint = (v) => Array.isArray(v) && v.length === 3 && v.every((x) => typeof x === 'number' && Number.isFinite(x));
 
-// A point returned is the core's when each coordinate is within 1e-9 of the largest
-// coordinate's size (at least 1): the student's sums and the core's differ by rounding only,
-// whatever the mesh's scale.
-export function samePoint(expected, value) {
+// The size of a case's mesh: its largest coordinate, in absolute value.
+export function meshScale(snapshot) {
+  let scale = 0;
+  for (const x of snapshot.winged.positions) scale = Math.max(scale, Math.abs(x));
+  return scale;
+}
+
+// A point returned is the core's when each coordinate is within 1e-9 of the mesh's size
+// (`scale`, meshScale): the student's sums and the core's differ by rounding only, and the
+// test means the same on a mesh a million times smaller or larger (a point near the origin is
+// measured against the mesh, not against itself).
+export function samePoint(expected, value, scale) {
   if (!isPoint(value)) return false;
-  const tolerance = 1e-9 * Math.max(1, ...expected.map(Math.abs));
+  const tolerance = 1e-9 * Math.max(scale, ...expected.map(Math.abs));
   return value.every((x, i) => Math.abs(x - expected[i]) <= tolerance);
 }
 
@@ -77,7 +85,7 @@ export function addedPositions(snapshot, transaction) {
 
 /**
  * @param {import('./tasks.js').Task} task
- * @param {Array<{ label: string, args: number[] | null, expected?: any, referenceReads?: number, skipped?: string }>} cases
+ * @param {Array<{ label: string, args: number[] | null, expected?: any, referenceReads?: number | null, skipped?: string, snapshot?: any }>} cases
  *   a case with args null was not asked (skipped says why: no element of it suits the task)
  * @param {Array<any>} results the sandbox's, one per asked case in order (value or error, trace)
  * @param {{ checkEdit?: (c: any, result: any) => { correct: boolean, findings: any[] } }} [options]
@@ -102,7 +110,7 @@ export function gradeRun(task, cases, results, { checkEdit } = {}) {
       return { ...base, ok: check.correct, check, partsAt: check.correct ? -1 : 0 };
     }
     if (task.answer === 'position') {
-      const ok = samePoint(c.expected, r.value);
+      const ok = samePoint(c.expected, r.value, meshScale(c.snapshot));
       return { ...base, ok, partsAt: ok ? -1 : 0 };
     }
     const at = partsAt(c.expected, r.value);

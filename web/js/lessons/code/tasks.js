@@ -227,7 +227,7 @@ export const TASKS = [
     statement: [
       'One step of Loop\'s subdivision puts a new point on every edge (the Subdivision lesson shows its mask). For edge e from S to E between two triangles, the edge point is 3/8 (S + E) + 1/8 (c + d), where c and d are the corners opposite e: c in its left triangle L, d in its right triangle R. On the boundary (L or R is none) it is the midpoint (S + E) / 2.',
       'Find c and d from the wings: the wing at S on the left, startLeft, is the side of L from S to c, so c is its other end; startRight gives d in R. Read the positions with mesh.vertex(v).position and return [x, y, z].',
-      'The core computes the same point in its own subdivision step; each coordinate must agree within 1e-9 of the largest coordinate\'s size. (On the slide\'s mesh the corners opposite an inner edge add up to S + E, so its edge points are midpoints as well: the hidden meshes tell the rules apart.)',
+      'The core computes the same point in its own subdivision step; each coordinate must agree within 1e-9 of the mesh\'s size (its largest coordinate). (On the slide\'s mesh the corners opposite an inner edge add up to S + E, so its edge points are midpoints as well: the hidden meshes tell the rules apart.)',
     ],
     rule: ['S, E, L, R from e\'s row', 'c: the other end of startLeft (in L); d: the other end of startRight (in R)', 'interior: 3/8 (S + E) + 1/8 (c + d); boundary: (S + E) / 2'],
     starter: 'function loopEdgePoint(mesh, e) {\n  const r = mesh.edge(e);\n  const S = mesh.vertex(r.start).position, E = mesh.vertex(r.end).position;\n  // On the boundary (r.left or r.right is -1): the midpoint. Inside: find the opposite corners c and d.\n\n  return [0, 0, 0];\n}\n',
@@ -248,7 +248,7 @@ export const TASKS = [
     statement: [
       'Loop\'s step also moves every old vertex v. Inside the mesh, with n neighbours: (1 − nβ) v + β (the sum of the neighbours), β = (1/n)(5/8 − (3/8 + cos(2π/n)/4)²) (Loop\'s own weight). On the boundary: 1/8 a + 6/8 v + 1/8 b, where a and b are v\'s two neighbours along the boundary.',
       'Walk the edges around v (the first task\'s walk) to meet its neighbours; an edge with no face on one side (left or right is -1) is on the boundary. Return [x, y, z].',
-      'The core computes the same point in its own subdivision step; each coordinate must agree within 1e-9 of the largest coordinate\'s size.',
+      'The core computes the same point in its own subdivision step; each coordinate must agree within 1e-9 of the mesh\'s size (its largest coordinate).',
     ],
     rule: ['Walk the edges around v; each edge\'s other end is a neighbour', 'inside: β = (1/n)(5/8 − (3/8 + cos(2π/n)/4)²), (1 − nβ) v + β Σ neighbours', 'boundary: 1/8 a + 6/8 v + 1/8 b (its two boundary neighbours)'],
     starter: 'function loopVertexPoint(mesh, v) {\n  const P = mesh.vertex(v).position;\n  const neighbours = [];\n  // Walk the edges around v; collect the other ends, and note the boundary ones.\n\n  return P;\n}\n',
@@ -269,7 +269,7 @@ export const TASKS = [
     statement: [
       'One step of Catmull-Clark\'s subdivision puts a new point in every face: the face point, the average (centroid) of the face\'s corners. A face may have any number of sides.',
       'Walk the edges of f (the second task\'s walk): the corner where each side starts, as you go around f, is the edge\'s start when f is its left face and its end when f is its right face. Average the corners\' positions and return [x, y, z].',
-      'The core computes the same point in its own subdivision step; each coordinate must agree within 1e-9 of the largest coordinate\'s size.',
+      'The core computes the same point in its own subdivision step; each coordinate must agree within 1e-9 of the mesh\'s size (its largest coordinate).',
     ],
     rule: ['Walk the edges of f', 'the corner at each: start if f is the left face, end if it is the right face', 'the face point: the sum of the corners / their number'],
     starter: 'function faceCentroid(mesh, f) {\n  let x = 0, y = 0, z = 0, n = 0;\n  // Walk around f and add each corner\'s position.\n\n  return [x / n, y / n, z / n];\n}\n',
