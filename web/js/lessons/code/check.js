@@ -5,7 +5,7 @@
 // Node), every answer graded against the core's (grading.js). An edit is checked by the
 // core's winged-edge table check against the faces of the core's own edit of the same mesh.
 import { makeCases, sandboxMesh } from './cases.js';
-import { gradeRun, failureText, describeAnswer, tablesAfter, addedPositions, samePoint, meshScale } from './grading.js';
+import { gradeRun, failureText, caseWhere, describeAnswer, tablesAfter, addedPositions, samePoint, meshScale } from './grading.js';
 import { elementLabel } from '../../core/element-labels.js';
 
 // Per mesh: an endless loop stops after this (web/js/code/runner.js).
@@ -83,7 +83,7 @@ export function resultOfRun(task, ran) {
   const where = `${grade.passed} of ${grade.asked} meshes passed.`;
   const hint = `Choose that mesh under Results and Step through it: every entry your function read is marked in its tables. The lecture's rule: ${task.rule.join('; ')}.`;
   if (g.error || g.check) return { correct: false, findings: [{ text: `${failureText(task, g)} ${where}`, hint }] };
-  const asked = failureText(task, { ...g, error: null, check: null }).replace(/: expected .*$/, '');
+  const asked = `On ${caseWhere(task, g)}`;
   const part = task.answer === 'position' ? ' It is not the core\'s point (each coordinate within 1e-9 of the mesh\'s size, its largest coordinate).'
     : Array.isArray(g.expected) && g.partsAt >= 0 ? ` It parts from the core's answer at entry ${g.partsAt + 1}.` : ' It is not the core\'s answer.';
   return { correct: false, findings: [{ text: `${asked}: your function returned ${describeAnswer(task, g.value)}.${part} ${where}`, hint }] };

@@ -122,9 +122,14 @@ export function gradeRun(task, cases, results, { checkEdit } = {}) {
 }
 
 // One sentence on a failed case, in the lesson's words.
-export function failureText(task, g) {
+// The mesh and the element a case asks about: "the slide's mesh (lecture 000), v2".
+export function caseWhere(task, g) {
   const asked = task.params.map((kind, k) => elementLabel(kind, g.args[k])).join(', ');
-  const where = `${g.label}${asked ? `, ${asked}` : ''}`;
+  return `${g.label}${asked ? `, ${asked}` : ''}`;
+}
+
+export function failureText(task, g) {
+  const where = caseWhere(task, g);
   if (g.error) {
     // The sandbox's messages begin with "Line 3, column 9: " when they have a place.
     const at = g.error.line && !/^Line \d/.test(g.error.message) ? ` (line ${g.error.line}${g.error.column ? `, column ${g.error.column}` : ''})` : '';
